@@ -1,0 +1,38 @@
+"""femcam: finite-element contact-stress analysis of cam-follower mechanisms.
+
+The pipeline, in module order: materials -> kinematics -> profile -> loads -> hertz ->
+mesh -> fe -> sweep -> wear -> io / viz / cli. SI units and radians throughout the library;
+degrees, rpm, mm and MPa appear only at the edges (CLI, scene files, plot labels).
+
+``import femcam`` needs numpy/scipy only: gmsh and pyvista are imported inside the functions
+that use them.
+"""
+
+__version__ = "0.1.0"
+
+from .errors import (
+    ConvergenceError,
+    FemcamError,
+    HertzValidityError,
+    InputError,
+    LiftOffError,
+    PhysicsError,
+    SceneError,
+    UndercutError,
+)
+from .materials import STEEL, Material, effective_modulus
+
+__all__ = [
+    "__version__",
+    "ConvergenceError",
+    "FemcamError",
+    "HertzValidityError",
+    "InputError",
+    "LiftOffError",
+    "PhysicsError",
+    "SceneError",
+    "UndercutError",
+    "Material",
+    "STEEL",
+    "effective_modulus",
+]

@@ -1,0 +1,76 @@
+"""Command-line interface: ``femcam <subcommand> ...``.
+
+Each subcommand lives in its own module in this package and exposes
+``register(subparsers) -> None``, which adds an argparse sub-parser and sets
+``func=<callable(args) -> int>`` as its default. Nothing heavy is imported at import time;
+each subcommand imports what it needs inside its ``func``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+from ..errors import FemcamError
+
+#: subcommand modules, in the order they appear in ``femcam --help``
+SUBCOMMANDS = ("run", "sweep", "wear", "synth")
+
+
+def _versions() -> str:
+    from .. import __version__
+
+    parts = [f"femcam {__version__}"]
+    for mod, attr in (("skfem", "__version__"), ("gmsh", "__version__"), ("numpy", "__version__")):
+        try:
+            m = importlib.import_module(mod)
+            parts.append(f"{'scikit-fem' if mod == 'skfem' else mod} {getattr(m, attr, '?')}")
+        except Exception:  # pragma: no cover - a missing optional dependency
+            parts.append(f"{mod} (not installed)")
+    return ", ".join(parts)
+
+
+class _VersionAction(argparse.Action):
+    def __init__(self, option_strings, dest, **kw):
+        super().__init__(option_strings, dest, nargs=0, help="print femcam, scikit-fem and gmsh versions")
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        print(_versions())
+        parser.exit()
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="femcam",
+        description="Finite-element contact-stress analysis of cam-follower mechanisms.",
+    )
+    parser.add_argument("--version", action=_VersionAction)
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    for name in SUBCOMMANDS:
+        try:
+            mod = importlib.import_module(f".{name}", __name__)
+        except ModuleNotFoundError as exc:
+            if exc.name == f"{__name__}.{name}":
+                continue  # subcommand not implemented yet
+            raise
+        mod.register(sub)
+    return parser
+
+
+def main(argv=None) -> int:
+    """Entry point of the ``femcam`` console script; returns the exit code."""
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    if not getattr(args, "func", None):
+        parser.print_help()
+        return 2
+    try:
+        return int(args.func(args) or 0)
+    except FemcamError as exc:
+        print(f"femcam {args.command}: error: {exc}", file=sys.stderr)
+        return 1
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

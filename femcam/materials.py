@@ -1,0 +1,85 @@
+"""Elastic materials and the combined moduli of a contact pair.
+
+Symbols
+-------
+=========  ==========================================  ======  ==========================
+symbol     meaning                                      unit    source
+=========  ==========================================  ======  ==========================
+E          Young's modulus                              Pa
+nu         Poisson's ratio, -1 < nu < 0.5               -
+E_star     contact modulus, 1/E* = sum (1-nu_i^2)/E_i   Pa      Johnson (1985) eq. 4.22;
+                                                                seed 002 eq. 10
+H          hardness (for Archard wear), optional        Pa      seed 000
+=========  ==========================================  ======  ==========================
+
+Plane strain (long cylinders) uses E/(1-nu^2); plane stress (thin discs) uses E.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _validate as V
+
+PLANES = ("strain", "stress")
+
+
+@dataclass(frozen=True, kw_only=True)
+class Material:
+    """An isotropic linear-elastic material (SI units).
+
+    >>> Material(E=210e9, nu=0.3, name="steel").E
+    210000000000.0
+    """
+
+    E: float
+    nu: float
+    name: str = ""
+    hardness: float | None = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "E", V.positive("E", self.E, "Pa"))
+        object.__setattr__(self, "nu", V.in_range("nu", self.nu, -1.0, 0.5, "", lo_open=True,
+                                                  hi_open=True))
+        if self.hardness is not None:
+            object.__setattr__(self, "hardness", V.positive("hardness", self.hardness, "Pa"))
+
+    def modulus(self, plane: str = "strain") -> float:
+        """E' = E/(1-nu^2) in plane strain, E in plane stress (Pa)."""
+        V.choice("plane", plane, PLANES)
+        return self.E / (1.0 - self.nu**2) if plane == "strain" else self.E
+
+
+STEEL = Material(E=210e9, nu=0.3, name="steel")
+
+
+def effective_modulus(m1: Material, m2: Material, plane: str = "strain") -> float:
+    r"""Contact modulus E* of two bodies (Pa).
+
+    .. math:: \frac{1}{E^*} = \frac{1-\nu_1^2}{E_1} + \frac{1-\nu_2^2}{E_2}
+
+    (plane strain; Johnson, *Contact Mechanics*, 1985, eq. 4.22 with 4.43; seed 002 eq. 10).
+    In plane stress the (1 - nu^2) factors are dropped.
+
+    >>> round(effective_modulus(STEEL, STEEL) / 1e9, 2)
+    115.38
+    """
+    return 1.0 / (1.0 / m1.modulus(plane) + 1.0 / m2.modulus(plane))
+
+
+def lame_parameters(E, nu, plane: str = "strain"):
+    r"""Lamé parameters (lambda, mu) for 2D elasticity (Pa).
+
+    Plane strain: :math:`\lambda = E\nu/((1+\nu)(1-2\nu))`; plane stress uses the reduced
+    :math:`\lambda^* = 2\lambda\mu/(\lambda + 2\mu) = E\nu/(1-\nu^2)`.
+    """
+    E = np.asarray(E, dtype=float)
+    mu = E / (2.0 * (1.0 + nu))
+    lam = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
+    if plane == "stress":
+        lam = 2.0 * lam * mu / (lam + 2.0 * mu)
+    elif plane != "strain":
+        raise V.fail("plane", plane, "", f"must be one of {list(PLANES)}")
+    return lam, mu

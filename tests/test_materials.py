@@ -1,0 +1,38 @@
+import numpy as np
+import pytest
+
+from femcam import InputError, Material, effective_modulus
+from femcam.materials import lame_parameters
+
+
+def test_effective_modulus_steel_pair_plane_strain():
+    # 1/E* = 2 (1 - 0.09) / 210 GPa  ->  E* = 115.3846 GPa (Johnson 1985 eq. 4.22)
+    m = Material(E=210e9, nu=0.3)
+    assert effective_modulus(m, m) == pytest.approx(210e9 / (2 * 0.91), rel=1e-12)
+    assert effective_modulus(m, m, "stress") == pytest.approx(105e9, rel=1e-12)
+
+
+def test_effective_modulus_symmetric():
+    a, b = Material(E=210e9, nu=0.3), Material(E=3e9, nu=0.4)
+    assert effective_modulus(a, b) == effective_modulus(b, a)
+
+
+def test_lame_plane_strain_and_stress():
+    lam, mu = lame_parameters(200e9, 0.25)
+    assert mu == pytest.approx(80e9)
+    assert lam == pytest.approx(80e9)
+    lam_s, _ = lame_parameters(200e9, 0.25, "stress")
+    assert lam_s == pytest.approx(200e9 * 0.25 / (1 - 0.25**2))
+
+
+@pytest.mark.parametrize("kw, text", [
+    (dict(E=-1.0, nu=0.3), "E = -1 Pa"),
+    (dict(E=210e9, nu=0.5), "nu = 0.5"),
+    (dict(E=210e9, nu=-1.2), "nu = -1.2"),
+    (dict(E=float("nan"), nu=0.3), "E = nan Pa"),
+])
+def test_bad_material_is_a_clear_value_error(kw, text):
+    with pytest.raises(InputError, match=text.replace(".", r"\.")):
+        Material(**kw)
+    assert issubclass(InputError, ValueError)
+    assert np.isfinite(210e9)
