@@ -1,0 +1,21 @@
+"""The analytic chain must import without gmsh, pyvista or matplotlib (docs/architecture.md)."""
+
+import subprocess
+import sys
+
+import pytest
+
+ANALYTIC = ["femcam", "femcam.materials", "femcam.kinematics", "femcam.profile", "femcam.loads",
+            "femcam.hertz", "femcam.scene", "femcam.wear"]
+HEAVY = ["gmsh", "pyvista", "vtk", "matplotlib", "skfem", "dask"]
+
+
+@pytest.mark.parametrize("module", ANALYTIC)
+def test_analytic_module_imports_without_heavy_dependencies(module):
+    code = (
+        "import importlib, sys\n"
+        f"importlib.import_module({module!r})\n"
+        f"print(','.join(m for m in {HEAVY!r} if m in sys.modules))\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "", f"{module} pulled in {out.stdout.strip()}"
