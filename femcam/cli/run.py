@@ -1,0 +1,194 @@
+"""``femcam run SCENE.toml``: the analytic chain of a scene (kinematics -> profile -> loads).
+
+Prints the cam program with its junction report, a table of s, v, a, j, phi, rho and Fc
+against cam angle, and a summary (max phi, min rho, max Fc, lift-off intervals). Writes
+``DIR/analytic.csv`` (every angle; units in the column names; provenance header),
+``DIR/summary.txt`` and, unless ``--no-plots``, PNG plots ``DIR/{svaj,phi,rho,fc,cam}.png``.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import shlex
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from .. import _validate as V  # noqa: N812
+from ..errors import InputError
+
+#: CSV columns: (name with unit, SceneState attribute, factor from SI)
+COLUMNS = (
+    ("theta_deg", "theta", 180.0 / math.pi),
+    ("s_mm", "s", 1e3),
+    ("v_m_s", "v", 1.0),
+    ("a_m_s2", "a", 1.0),
+    ("j_m_s3", "j", 1.0),
+    ("phi_deg", "phi", 180.0 / math.pi),
+    ("rho_mm", "rho", 1e3),
+    ("Fc_N", "Fc", 1.0),
+    ("contact_x_mm", "contact_x", 1e3),
+    ("contact_y_mm", "contact_y", 1e3),
+    ("liftoff", "liftoff", 1),
+    ("undercut", "undercut", 1),
+)
+
+
+def register(subparsers) -> None:
+    p = subparsers.add_parser(
+        "run", help="kinematics, profile and load tables of a scene, with PNG plots",
+        description=__doc__.split("\n\n")[0])
+    p.add_argument("scene", metavar="SCENE.toml", help="scene file (see examples/)")
+    p.add_argument("--out", default=None, metavar="DIR",
+                   help="output directory (default: femcam-out/<scene name>)")
+    p.add_argument("--angles-deg", default="0:360:0.5", metavar="START:STOP:STEP",
+                   help="cam angles in degrees, stop exclusive (default 0:360:0.5)")
+    p.add_argument("--print-every-deg", type=float, default=10.0, metavar="STEP",
+                   help="angle step of the printed table in degrees (default 10); the CSV has all")
+    p.add_argument("--law", default=None, metavar="NAME",
+                   help="override the rise/fall motion law of the scene (e.g. bezier7)")
+    p.add_argument("--phi-limit-deg", type=float, default=30.0, metavar="DEG",
+                   help="pressure-angle limit drawn and checked in the summary (default 30)")
+    p.add_argument("--allow-undercut", action="store_true",
+                   help="report an undercut profile as a warning instead of an error")
+    p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    p.set_defaults(func=_run)
+
+
+def parse_angles_deg(text: str) -> np.ndarray:
+    """``"start:stop:step"`` in degrees (stop exclusive) -> angles in rad."""
+    parts = str(text).split(":")
+    if len(parts) != 3:
+        raise InputError(f"--angles-deg = {text!r} deg: must be START:STOP:STEP, e.g. 0:360:0.5")
+    try:
+        a, b, h = (float(x) for x in parts)
+    except ValueError:
+        raise InputError(f"--angles-deg = {text!r} deg: START, STOP and STEP must be numbers") from None
+    V.positive("--angles-deg step", h, "deg")
+    if not (math.isfinite(a) and math.isfinite(b)) or b <= a:
+        raise InputError(f"--angles-deg = {text!r} deg: need START < STOP")
+    n = int(math.ceil((b - a) / h - 1e-9))
+    if n > 1_000_000:
+        raise InputError(f"--angles-deg = {text!r} deg: {n} angles is too many (max 1e6)")
+    return np.radians(a + h * np.arange(n))
+
+
+def _intervals_deg(iv) -> str:
+    return ", ".join(f"{math.degrees(a):.2f}-{math.degrees(b):.2f} deg" for a, b in iv) or "none"
+
+
+def summary_lines(scene, st, phi_limit_deg: float = 30.0) -> list[str]:
+    """Summary of a SceneState: max |phi|, min |rho|, Fc range, lift-off and undercut."""
+    phi = np.degrees(np.abs(st.phi))
+    i_phi = int(np.argmax(phi))
+    rho = np.asarray(st.rho, float)
+    i_rho = int(np.argmin(np.abs(rho)))
+    conv = rho > 0
+    i_max, i_min = int(np.argmax(st.Fc)), int(np.argmin(st.Fc))
+    deg = lambda i: math.degrees(st.theta[i])  # noqa: E731
+    concave = (f"yes, tightest rho {np.max(rho[~conv]) * 1e3:.4g} mm" if (~conv).any() else "no")
+    lines = [
+        f"max |phi|      = {phi[i_phi]:.3f} deg at theta = {deg(i_phi):.2f} deg "
+        f"({'OK' if phi[i_phi] <= phi_limit_deg else 'EXCEEDS'} limit {phi_limit_deg:g} deg)",
+        f"min |rho|      = {abs(rho[i_rho]) * 1e3:.4g} mm at theta = {deg(i_rho):.2f} deg"
+        f" ({'convex' if rho[i_rho] > 0 else 'concave'})",
+        f"min convex rho = {np.min(rho[conv]) * 1e3:.4g} mm" if conv.any() else "min convex rho = none",
+        f"concave        = {concave}",
+        f"max Fc         = {st.Fc[i_max]:.2f} N at theta = {deg(i_max):.2f} deg",
+        f"min Fc         = {st.Fc[i_min]:.2f} N at theta = {deg(i_min):.2f} deg",
+        f"lift-off       = {_intervals_deg(st.loads.liftoff_intervals)}",
+        f"undercut       = {_intervals_deg(st.profile.undercut_intervals)}",
+    ]
+    if scene.follower.kind == "flat_faced":
+        lines.append(f"min face width = {st.profile.face_width_min * 1e3:.3f} mm (face centred on the axis)")
+    return lines
+
+
+def _table(st, every_deg: float) -> str:
+    th = np.degrees(st.theta)
+    if every_deg > 0:
+        k = np.round((th - th[0]) / every_deg)
+        pick = np.flatnonzero(np.isclose(th - th[0], k * every_deg, atol=1e-6))
+    else:
+        pick = np.arange(th.size)
+    cols = COLUMNS[:8]
+    head = "".join(f"{n:>12s}" for n, _, _ in cols)
+    rows = []
+    for i in pick:
+        vals = [float(np.asarray(getattr(st, a))[i]) * f for _, a, f in cols]
+        rows.append("".join(f"{v:12.5g}" for v in vals) + ("  LIFT-OFF" if st.liftoff[i] else ""))
+    return "\n".join([head, *rows])
+
+
+def write_csv(path, scene, st, command: str) -> Path:
+    """All angles, unit-suffixed columns, ``#`` provenance header."""
+    from .. import __version__
+
+    path = Path(path)
+    cols = [(n, np.asarray(getattr(st, a), float) * f) for n, a, f in COLUMNS]
+    with open(path, "w", newline="") as fh:
+        fh.write(f"# femcam {__version__} analytic chain (units in the column names)\n")
+        fh.write(f"# scene: {scene.source_path} ({scene.name})\n")
+        fh.write(f"# command: {command}\n")
+        fh.write(f"# omega = {scene.omega:.9g} rad/s ({scene.rpm:.6g} rpm); follower {scene.follower!r}\n")
+        w = csv.writer(fh)
+        w.writerow([n for n, _ in cols])
+        for i in range(st.theta.size):
+            w.writerow([f"{c[i]:.10g}" if n not in ("liftoff", "undercut") else int(c[i])
+                        for n, c in cols])
+    return path
+
+
+def _run(args) -> int:
+    from ..scene import load_scene
+
+    theta = parse_angles_deg(args.angles_deg)
+    scene = load_scene(args.scene)
+    if args.law:
+        scene = scene.with_law(args.law)
+    st = scene.analyse(theta, allow_undercut=args.allow_undercut)
+    out = Path(args.out) if args.out else Path("femcam-out") / scene.name
+    out.mkdir(parents=True, exist_ok=True)
+    # rebuilt from the parsed options (sys.argv is not ours when main() is called in-process)
+    opts = ["--out", str(out), "--angles-deg", args.angles_deg]
+    opts += ["--law", args.law] if args.law else []
+    opts += ["--allow-undercut"] if args.allow_undercut else []
+    command = shlex.join(["femcam", "run", str(args.scene), *opts])
+
+    fo = scene.follower
+    geo = f"Rb = {fo.Rb * 1e3:g} mm" + (f", Rr = {fo.Rr * 1e3:g} mm" if fo.kind == "roller" else "") \
+        + f", e = {fo.e * 1e3:g} mm"
+    print(f"femcam run: {scene.name}  ({scene.source_path})")
+    if scene.description:
+        print(f"  {scene.description}")
+    print(f"  {fo.kind} follower, {geo}; omega = {scene.omega:.6g} rad/s ({scene.rpm:.6g} rpm); "
+          f"m = {scene.dynamics.m:g} kg, k = {scene.dynamics.k:g} N/m, Fpl = {scene.dynamics.Fpl:g} N, "
+          f"c = {scene.dynamics.c:.4g} N s/m")
+    print()
+    print(scene.program.table())
+    print()
+    print(f"Kinematics, profile and loads (every {args.print_every_deg:g} deg; all angles in the CSV):")
+    print(_table(st, args.print_every_deg))
+    print()
+    summ = summary_lines(scene, st, args.phi_limit_deg)
+    print("Summary:")
+    for ln in summ:
+        print("  " + ln)
+    if st.profile.undercut.any():
+        print("WARNING: the profile is undercut (see 'undercut' above); rho there is not realisable",
+              file=sys.stderr)
+
+    files = [write_csv(out / "analytic.csv", scene, st, command)]
+    (out / "summary.txt").write_text("\n".join([f"scene: {scene.source_path}", scene.program.table(),
+                                                "Summary:", *summ]) + "\n")
+    files.append(out / "summary.txt")
+    if not args.no_plots:
+        from ..viz.analytic import plot_all
+
+        files += plot_all(st, out, "", Rr=fo.Rr if fo.kind == "roller" else 0.0,
+                          limit_deg=args.phi_limit_deg, title=scene.name)
+    print()
+    print("Wrote: " + ", ".join(str(f) for f in files))
+    return 0

@@ -1,0 +1,151 @@
+r"""Follower dynamics and the cam-follower contact force (seed 002 eq. 11).
+
+A single-degree-of-freedom follower train: mass ``m`` held on the cam by a spring of rate
+``k`` with preload ``Fpl`` and a viscous damper ``c``. With the follower rigidly following the
+cam (s, v, a are the kinematic values at cam speed omega), the force along the follower axis
+is ``m a + c v + k s + Fpl``; the cam pushes along the contact normal, which is tilted by the
+pressure angle ``phi`` from the axis, so the normal contact force is that divided by cos phi.
+
+Symbols
+-------
+======  =================================================  ======  =======================
+symbol  meaning                                            unit    source
+======  =================================================  ======  =======================
+m       effective mass of the follower train               kg      seed 002 Table 1 (tracker)
+k       spring rate ("equivalent rigidity")                N/m     seed 002 Table 1
+Fpl     spring preload at s = 0                            N       seed 002 Table 1
+c       viscous damping coefficient                        N s/m   seed 002 Table 1
+zeta    damping ratio, c = zeta c_c, c_c = 2 sqrt(k m)     -       seed 002 Table 1 ("0.06 c_c")
+s,v,a   follower lift, velocity, acceleration              m, m/s, m/s^2
+phi     pressure angle                                     rad     femcam.profile
+Fc      normal contact force (> 0 pushes)                  N       seed 002 eq. 11
+======  =================================================  ======  =======================
+
+Seed 002 writes eq. 11 with theta-derivatives, ``(a m w^2 + v c w + s k + Fpl)/cos phi``;
+with ``a = s'' w^2`` and ``v = s' w`` in time units it is the same expression as here.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from . import _validate as V  # noqa: N812
+from .errors import InputError
+from .profile import bool_intervals
+
+
+@dataclass(frozen=True, kw_only=True)
+class FollowerDynamics:
+    """Mass ``m`` (kg), spring ``k`` (N/m), preload ``Fpl`` (N), damping ``c`` (N s/m) **or**
+    damping ratio ``zeta`` (exactly one of them).
+
+    >>> round(FollowerDynamics(m=0.2, k=800.0, Fpl=1500.0, zeta=0.06).c, 6)
+    1.517893
+    """
+
+    m: float
+    k: float
+    Fpl: float
+    c: float | None = None
+    zeta: float | None = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "m", V.nonnegative("m", self.m, "kg"))
+        object.__setattr__(self, "k", V.nonnegative("k", self.k, "N/m"))
+        object.__setattr__(self, "Fpl", V.nonnegative("Fpl", self.Fpl, "N"))
+        if (self.c is None) == (self.zeta is None):
+            raise InputError(f"c = {self.c!r} N s/m, zeta = {self.zeta!r}: give exactly one of the "
+                             "damping coefficient c or the damping ratio zeta")
+        if self.zeta is not None:
+            zeta = V.nonnegative("zeta", self.zeta, "")
+            object.__setattr__(self, "zeta", zeta)
+            object.__setattr__(self, "c", zeta * self.c_critical)
+        else:
+            c = V.nonnegative("c", self.c, "N s/m")
+            object.__setattr__(self, "c", c)
+            cc = self.c_critical
+            object.__setattr__(self, "zeta", c / cc if cc > 0 else math.inf if c > 0 else 0.0)
+
+    @property
+    def c_critical(self) -> float:
+        r"""Critical damping :math:`c_c = 2\sqrt{k m}` (N s/m)."""
+        return 2.0 * math.sqrt(self.k * self.m)
+
+    @property
+    def natural_frequency(self) -> float:
+        r""":math:`\omega_n = \sqrt{k/m}` (rad/s); inf for a massless follower."""
+        return math.sqrt(self.k / self.m) if self.m > 0 else math.inf
+
+
+@dataclass(frozen=True)
+class LoadResult:
+    """Contact force along the cam cycle.
+
+    ``F_axial`` is the force along the follower axis ``m a + c v + k s + Fpl`` (N), ``Fc`` the
+    normal contact force (N); ``liftoff`` flags ``Fc <= 0`` (the spring cannot keep the
+    follower on the cam); ``liftoff_angles`` are the flagged theta (rad) and
+    ``liftoff_intervals`` their contiguous runs ``[(start, end), ...]`` (rad, grid order).
+    """
+
+    theta: np.ndarray
+    Fc: np.ndarray
+    F_axial: np.ndarray
+    F_inertia: np.ndarray
+    F_damping: np.ndarray
+    F_spring: np.ndarray
+    liftoff: np.ndarray
+    liftoff_angles: np.ndarray
+    liftoff_intervals: list = field(default_factory=list)
+
+    @property
+    def any_liftoff(self) -> bool:
+        return bool(np.any(self.liftoff))
+
+    @property
+    def Fc_max(self) -> float:
+        return float(np.max(self.Fc)) if self.Fc.size else 0.0
+
+    @property
+    def Fc_min(self) -> float:
+        return float(np.min(self.Fc)) if self.Fc.size else 0.0
+
+
+def contact_force(dyn: FollowerDynamics, theta, s, v, a, phi) -> LoadResult:
+    r"""Normal cam-follower contact force (N), seed 002 eq. 11.
+
+    .. math:: F_c = \frac{m a + c v + k s + F_{pl}}{\cos\varphi}
+
+    ``theta`` (rad), ``s`` (m), ``v`` (m/s), ``a`` (m/s^2) and ``phi`` (rad, |phi| < 90 deg)
+    broadcast together.
+
+    >>> r = contact_force(FollowerDynamics(m=0.2, k=800.0, Fpl=1500.0, c=0.0),
+    ...                   0.0, 0.01, 0.0, 100.0, 0.0)
+    >>> float(r.Fc)    # 0.2*100 + 800*0.01 + 1500
+    1528.0
+    """
+    if not isinstance(dyn, FollowerDynamics):
+        raise InputError(f"dyn = {dyn!r}: must be a FollowerDynamics")
+    theta = V.finite_array("theta", theta, "rad")
+    s = V.finite_array("s", s, "m")
+    v = V.finite_array("v", v, "m/s")
+    a = V.finite_array("a", a, "m/s^2")
+    phi = V.finite_array("phi", phi, "rad")
+    if np.any(np.abs(phi) >= 0.5 * math.pi):
+        bad = float(phi[np.abs(phi) >= 0.5 * math.pi].flat[0])
+        raise V.fail("phi", bad, "rad", f"pressure angle ({math.degrees(bad):.4g} deg) must satisfy "
+                     "|phi| < 90 deg")
+    try:
+        theta, s, v, a, phi = (np.array(x, dtype=float) for x in np.broadcast_arrays(theta, s, v, a, phi))
+    except ValueError:
+        raise InputError("theta, s, v, a, phi: shapes must broadcast together") from None
+    F_in = dyn.m * a
+    F_d = dyn.c * v
+    F_s = dyn.k * s + dyn.Fpl
+    F_ax = F_in + F_d + F_s
+    Fc = F_ax / np.cos(phi)
+    lift = Fc <= 0.0
+    return LoadResult(theta=theta, Fc=Fc, F_axial=F_ax, F_inertia=F_in, F_damping=F_d, F_spring=F_s,
+                      liftoff=lift, liftoff_angles=theta[lift], liftoff_intervals=bool_intervals(theta, lift))

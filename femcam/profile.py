@@ -1,0 +1,473 @@
+r"""Follower geometry: cam surface, pressure angle and radius of curvature.
+
+Pure vectorised functions of the cam angle ``theta`` and the follower motion ``s(theta)`` with
+its theta-derivatives ``s1 = ds/dtheta`` and ``s2 = d2s/dtheta2`` (from
+:meth:`femcam.kinematics.CamProgram.derivatives`). Nothing here depends on the cam speed.
+
+Frames and sign conventions
+---------------------------
+The cam turns **counter-clockwise** about the origin; ``theta`` is its rotation angle. The
+*fixed frame* has the follower translating along +y; its axis is the line ``x = e``
+(offset ``e``, positive to +x, which lowers the pressure angle on the rise: Norton's
+convention). The *cam frame* turns with the cam and coincides with the fixed frame at
+``theta = 0``; a fixed-frame point ``P`` has cam-frame coordinates ``R(-theta) P``.
+
+The pitch point (roller centre, or knife tip) is at ``(e, d + s)`` in the fixed frame with
+``d = sqrt(Rp^2 - e^2)`` and ``Rp`` the prime-circle radius (``Rb + Rr`` for a roller, ``Rb``
+for a knife edge). Its cam-frame trace is the pitch curve, traversed clockwise as theta grows.
+
+Symbols
+-------
+=========  ==================================================  =======  ===========================
+symbol     meaning                                              unit     source
+=========  ==================================================  =======  ===========================
+theta      cam angle                                            rad
+s          follower lift above the base circle                  m
+s1, s2     ds/dtheta, d2s/dtheta2                               m/rad^k
+Rb         base-circle radius (smallest cam radius)             m        Norton ch. 8
+Rr         roller radius                                        m
+Rp         prime-circle radius, Rb + Rr (roller)                m        Norton ch. 8; seed 002 "Ro"
+e          follower offset (eccentricity)                       m        Norton eq. 8.31
+d          sqrt(Rp^2 - e^2), pitch height at s = 0              m
+phi        pressure angle (signed; > 0 on an in-line rise)      rad      Norton eq. 8.31; seed 002 eq. 24
+rho        cam SURFACE radius of curvature at the contact       m        > 0 convex, < 0 concave,
+                                                                         +inf flat
+rho_pitch  radius of curvature of the pitch curve               m        Chen (1982) ch. 4
+=========  ==================================================  =======  ===========================
+
+References
+----------
+* R. L. Norton, *Design of Machinery*, ch. 8 (pressure angle eq. 8.31, radius of curvature
+  and undercutting, flat-faced follower eq. 8.24-8.27: ``rho = Rb + s + s''``).
+* F. Y. Chen, *Mechanics and Design of Cam Mechanisms*, Pergamon, 1982, ch. 4.
+* Seed 002 eq. 24, ``phi = atan(s'/(s + Ro))``: the in-line (e = 0) case of Norton 8.31 with
+  the prime-circle radius ``Ro``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from . import _validate as V  # noqa: N812
+from .errors import InputError, UndercutError
+
+FOLLOWER_KINDS = ("roller", "knife_edge", "flat_faced")
+
+
+# --------------------------------------------------------------------------------------------
+# followers
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True, kw_only=True)
+class RollerFollower:
+    """Translating roller follower: base radius ``Rb``, roller radius ``Rr``, offset ``e`` (m).
+
+    >>> RollerFollower(Rb=0.01, Rr=0.01).Rp
+    0.02
+    """
+
+    Rb: float
+    Rr: float
+    e: float = 0.0
+    kind = "roller"
+
+    def __post_init__(self):
+        object.__setattr__(self, "Rb", V.positive("Rb", self.Rb, "m"))
+        object.__setattr__(self, "Rr", V.positive("Rr", self.Rr, "m"))
+        object.__setattr__(self, "e", V.number("e", self.e, "m"))
+        if abs(self.e) >= self.Rp:
+            raise V.fail("e", self.e, "m", f"offset must satisfy |e| < Rb + Rr = {self.Rp:g} m")
+
+    @property
+    def Rp(self) -> float:
+        """Prime-circle radius ``Rb + Rr`` (m)."""
+        return self.Rb + self.Rr
+
+
+@dataclass(frozen=True, kw_only=True)
+class KnifeEdgeFollower:
+    """Translating knife-edge follower: base radius ``Rb`` and offset ``e`` (m)."""
+
+    Rb: float
+    e: float = 0.0
+    kind = "knife_edge"
+
+    def __post_init__(self):
+        object.__setattr__(self, "Rb", V.positive("Rb", self.Rb, "m"))
+        object.__setattr__(self, "e", V.number("e", self.e, "m"))
+        if abs(self.e) >= self.Rb:
+            raise V.fail("e", self.e, "m", f"offset must satisfy |e| < Rb = {self.Rb:g} m")
+
+    @property
+    def Rr(self) -> float:
+        return 0.0
+
+    @property
+    def Rp(self) -> float:
+        return self.Rb
+
+
+@dataclass(frozen=True, kw_only=True)
+class FlatFacedFollower:
+    """Translating flat-faced follower (face perpendicular to its axis), base radius ``Rb`` (m).
+
+    The axis offset ``e`` does not change the cam shape; it only moves the contact point
+    along the face (the contact sits ``s1 - e`` from the axis).
+    """
+
+    Rb: float
+    e: float = 0.0
+    kind = "flat_faced"
+
+    def __post_init__(self):
+        object.__setattr__(self, "Rb", V.positive("Rb", self.Rb, "m"))
+        object.__setattr__(self, "e", V.number("e", self.e, "m"))
+
+    @property
+    def Rr(self) -> float:
+        return 0.0
+
+
+Follower = RollerFollower | KnifeEdgeFollower | FlatFacedFollower
+
+
+def make_follower(kind: str, *, Rb: float, Rr: float = 0.0, e: float = 0.0) -> Follower:
+    """Build a follower from its kind name (``"roller"``, ``"knife_edge"``, ``"flat_faced"``)."""
+    V.choice("follower kind", kind, FOLLOWER_KINDS)
+    if kind == "roller":
+        return RollerFollower(Rb=Rb, Rr=Rr, e=e)
+    if kind == "knife_edge":
+        return KnifeEdgeFollower(Rb=Rb, e=e)
+    return FlatFacedFollower(Rb=Rb, e=e)
+
+
+# --------------------------------------------------------------------------------------------
+# result
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class CamProfile:
+    """Cam geometry sampled at ``theta`` (all arrays share theta's shape; SI units).
+
+    ``x, y`` are cam-surface points in the cam frame; ``contact_x, contact_y`` the contact point
+    in the fixed frame; ``pitch_x, pitch_y`` the pitch curve in the cam frame (equal to the
+    surface for knife-edge; for flat-faced it is the contact point too). ``undercut`` flags
+    samples where the generated surface is not realisable (roller: ``0 < rho_pitch <= Rr``;
+    flat-faced: ``Rb + s + s2 <= 0``); ``cusp`` is True when any sample is undercut (the
+    generated envelope then folds over itself and has cusps). ``face_offset`` is the contact
+    position along a flat face measured from the follower axis (``s1 - e``; zero otherwise) and
+    ``face_width_min`` the width of a face centred on the axis that keeps the contact on it.
+    """
+
+    follower: Follower
+    theta: np.ndarray
+    s: np.ndarray
+    phi: np.ndarray
+    rho: np.ndarray
+    rho_pitch: np.ndarray
+    x: np.ndarray
+    y: np.ndarray
+    pitch_x: np.ndarray
+    pitch_y: np.ndarray
+    contact_x: np.ndarray
+    contact_y: np.ndarray
+    undercut: np.ndarray
+    face_offset: np.ndarray
+    face_width_min: float
+    undercut_intervals: list = field(default_factory=list)
+
+    @property
+    def cusp(self) -> bool:
+        return bool(np.any(self.undercut))
+
+    @property
+    def phi_max(self) -> float:
+        """Largest |phi| (rad)."""
+        return float(np.max(np.abs(self.phi))) if self.phi.size else 0.0
+
+    @property
+    def rho_min(self) -> float:
+        """Smallest |rho| over the samples (m); concave and convex alike."""
+        return float(np.min(np.abs(self.rho))) if self.rho.size else math.inf
+
+
+# --------------------------------------------------------------------------------------------
+# formulas
+# --------------------------------------------------------------------------------------------
+def pressure_angle(s, s1, Rp, e=0.0):
+    r"""Pressure angle of a translating roller or knife-edge follower (rad, signed).
+
+    .. math:: \varphi = \arctan\frac{s' - e}{s + \sqrt{R_p^2 - e^2}}
+
+    Norton, *Design of Machinery*, eq. 8.31; seed 002 eq. 24 is the case ``e = 0``,
+    ``Rp = Ro``. Derivation: the pitch-curve tangent, written in the fixed frame at angle
+    theta, is ``(d + s, s1 - e)``; the contact normal is perpendicular to it.
+
+    >>> round(math.degrees(float(pressure_angle(0.0, 0.02, 0.02))), 6)
+    45.0
+    """
+    d = math.sqrt(Rp * Rp - e * e)
+    return np.arctan2(np.asarray(s1, float) - e, d + np.asarray(s, float))
+
+
+def pitch_curvature(s, s1, s2, Rp, e=0.0):
+    r"""Signed curvature of the pitch curve (1/m, > 0 convex).
+
+    .. math:: \kappa_p = \frac{(d+s)^2 + (s'-e)(2s'-e) - s''(d+s)}
+                             {\left[(d+s)^2 + (s'-e)^2\right]^{3/2}}, \quad d = \sqrt{R_p^2-e^2}
+
+    The curvature of the parametric curve ``p(theta) = R(-theta) (e, d + s)`` (Chen 1982 ch. 4;
+    Norton ch. 8). For ``e = 0`` it is the polar formula ``(r^2 + 2r'^2 - r r'')/(r^2 + r'^2)^{3/2}``
+    with ``r = Rp + s``.
+
+    >>> round(float(pitch_curvature(0.0, 0.0, 0.0, 0.02)), 6)   # base circle: 1/Rp
+    50.0
+    """
+    d = math.sqrt(Rp * Rp - e * e)
+    r = d + np.asarray(s, float)
+    q = np.asarray(s1, float) - e
+    num = r * r + q * (2.0 * np.asarray(s1, float) - e) - np.asarray(s2, float) * r
+    return num / (r * r + q * q) ** 1.5
+
+
+def flat_face_radius(s, s2, Rb):
+    r"""Cam radius of curvature under a flat-faced translating follower (m).
+
+    .. math:: \rho = R_b + s + s''
+
+    Norton eq. 8.25 (envelope of the face lines ``n(theta) . P = Rb + s``).
+
+    >>> float(flat_face_radius(0.001, -0.002, 0.01))
+    0.009
+    """
+    return Rb + np.asarray(s, float) + np.asarray(s2, float)
+
+
+def _rot(theta, x, y):
+    """Fixed-frame (x, y) at cam angle theta -> cam-frame coordinates, i.e. R(-theta) (x, y)."""
+    c, sn = np.cos(theta), np.sin(theta)
+    return c * x + sn * y, -sn * x + c * y
+
+
+def bool_intervals(theta, mask):
+    """Contiguous runs of True in ``mask`` as ``[(theta_start, theta_end), ...]`` (grid order)."""
+    theta = np.ravel(theta)
+    m = np.ravel(np.asarray(mask, bool))
+    if not m.any():
+        return []
+    edges = np.diff(np.concatenate(([0], m.astype(np.int8), [0])))
+    starts = np.flatnonzero(edges == 1)
+    ends = np.flatnonzero(edges == -1) - 1
+    return [(float(theta[a]), float(theta[b])) for a, b in zip(starts, ends, strict=True)]
+
+
+def _fmt_intervals_deg(intervals) -> str:
+    return ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}] deg" for a, b in intervals)
+
+
+def cam_profile(f: Follower, theta, s, s1, s2, *, allow_undercut: bool = False) -> CamProfile:
+    """Cam surface, pressure angle and radius of curvature for follower ``f``.
+
+    ``theta`` (rad) and ``s, s1, s2`` (m, m/rad, m/rad^2) broadcast together. Raises
+    :class:`~femcam.errors.UndercutError` (with the angle ranges in degrees and the smallest
+    radius) if the profile is undercut or cusped, unless ``allow_undercut=True``, which returns
+    the result with ``undercut`` flags set.
+
+    Roller: ``rho_cam = rho_pitch - Rr`` (inner offset of the pitch curve; Norton ch. 8),
+    computed as ``kappa/(1 - Rr kappa)`` so that an inflection of the pitch curve gives
+    ``rho = inf`` without a division warning. Knife edge: ``rho = rho_pitch``. Flat-faced:
+    ``phi = 0``, ``rho = Rb + s + s2``, contact at ``x = s1`` in the fixed frame.
+    """
+    if not isinstance(f, RollerFollower | KnifeEdgeFollower | FlatFacedFollower):
+        raise InputError(f"follower = {f!r}: must be a RollerFollower, KnifeEdgeFollower or "
+                         "FlatFacedFollower")
+    theta = V.finite_array("theta", theta, "rad")
+    s = V.finite_array("s", s, "m")
+    s1 = V.finite_array("s1", s1, "m/rad")
+    s2 = V.finite_array("s2", s2, "m/rad^2")
+    try:
+        theta, s, s1, s2 = np.broadcast_arrays(theta, s, s1, s2)
+    except ValueError:
+        raise InputError(f"theta, s, s1, s2 have shapes {theta.shape}, {s.shape}, {s1.shape}, "
+                         f"{s2.shape}: must broadcast together") from None
+    theta, s, s1, s2 = (np.array(a, dtype=float) for a in (theta, s, s1, s2))
+
+    if isinstance(f, FlatFacedFollower):
+        rho = flat_face_radius(s, s2, f.Rb)
+        rho_pitch = rho
+        phi = np.zeros_like(s)
+        cx, cy = s1.copy(), f.Rb + s
+        x, y = _rot(theta, cx, cy)
+        px, py = x, y
+        undercut = rho <= 0.0
+        face_offset = s1 - f.e
+        face_width = 2.0 * float(np.max(np.abs(face_offset))) if face_offset.size else 0.0
+        detail = "radius of curvature Rb + s + s'' <= 0"
+        worst = float(np.min(rho)) if rho.size else 0.0
+    else:
+        Rp, e, Rr = f.Rp, f.e, f.Rr
+        d = math.sqrt(Rp * Rp - e * e)
+        if np.any(d + s <= 0.0):
+            bad = float(s[d + s <= 0.0].flat[0])
+            raise V.fail("s", bad, "m", f"pitch point passes the cam centre: need s > -{d:g} m")
+        phi = pressure_angle(s, s1, Rp, e)
+        kappa = pitch_curvature(s, s1, s2, Rp, e)
+        with np.errstate(divide="ignore"):
+            rho_pitch = np.where(kappa == 0.0, np.inf, 1.0 / np.where(kappa == 0.0, 1.0, kappa))
+            denom = 1.0 - Rr * kappa
+            k_cam = np.where(denom == 0.0, np.inf, kappa / np.where(denom == 0.0, 1.0, denom))
+            rho = np.where(k_cam == 0.0, np.inf, 1.0 / np.where(k_cam == 0.0, 1.0, k_cam))
+        pxf, pyf = e + 0.0 * s, d + s
+        # contact = pitch point - Rr * n_hat, n_hat = (-sin phi, cos phi) outward normal
+        cx, cy = pxf + Rr * np.sin(phi), pyf - Rr * np.cos(phi)
+        px, py = _rot(theta, pxf, pyf)
+        x, y = _rot(theta, cx, cy)
+        undercut = (Rr * kappa >= 1.0) if Rr > 0 else np.zeros(s.shape, bool)
+        face_offset = np.zeros_like(s)
+        face_width = 0.0
+        detail = f"pitch-curve radius of curvature <= roller radius Rr = {Rr * 1e3:g} mm"
+        worst = float(np.min(rho_pitch[undercut])) if np.any(undercut) else math.inf
+
+    intervals = bool_intervals(theta, undercut)
+    if intervals and not allow_undercut:
+        raise UndercutError(
+            f"{f.kind} cam profile is undercut (cusped) for theta in {_fmt_intervals_deg(intervals)}: "
+            f"{detail}; smallest radius there {worst * 1e3:.4g} mm. Increase the base radius Rb "
+            f"(now {f.Rb * 1e3:g} mm), use a smaller roller or a longer segment angle beta, "
+            "or pass allow_undercut=True to get the flagged profile.")
+    return CamProfile(follower=f, theta=theta, s=s, phi=phi, rho=rho, rho_pitch=rho_pitch, x=x, y=y,
+                      pitch_x=px, pitch_y=py, contact_x=cx, contact_y=cy, undercut=undercut,
+                      face_offset=face_offset, face_width_min=face_width, undercut_intervals=intervals)
+
+
+# --------------------------------------------------------------------------------------------
+# smallest base circle
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class BaseRadiusResult:
+    """Result of :func:`min_base_radius` (SI). ``float(result)`` is ``Rb``.
+
+    ``binding`` says which requirement set ``Rb``: ``"pressure_angle"``, ``"undercut"``
+    (roller/knife: convex radius of curvature >= ``rho_min``), ``"curvature"`` (flat-faced
+    ``rho > rho_min``) or ``"none"`` (no constraint is active; ``Rb`` is 0).
+    """
+
+    Rb: float
+    kind: str
+    binding: str
+    phi_max: float
+    rho_min: float
+    theta_critical: float
+    n_theta: int
+    iterations: int = 0
+    message: str = ""
+
+    def __float__(self) -> float:
+        return self.Rb
+
+
+def _derivs(program, theta):
+    d = program.derivatives(theta)
+    get = (lambda k: d[k]) if isinstance(d, dict) else (lambda k: getattr(d, k))
+    return (np.asarray(get("s"), float), np.asarray(get("s1"), float), np.asarray(get("s2"), float))
+
+
+def min_base_radius(kind: str, program, *, phi_max: float = math.radians(30.0), Rr: float = 0.0,
+                    e: float = 0.0, rho_min: float = 0.0, n_theta: int = 7200) -> BaseRadiusResult:
+    r"""Smallest base-circle radius for which ``max |phi| <= phi_max`` and the cam is not undercut.
+
+    ``kind`` is ``"roller"``, ``"knife_edge"`` or ``"flat_faced"``; ``program`` anything with
+    ``derivatives(theta)`` giving ``s, s1, s2`` (a :class:`femcam.kinematics.CamProgram`).
+
+    Roller/knife edge: :math:`|\tan\varphi| \le \tan\varphi_{max}` at every theta is
+    equivalent to
+
+    .. math:: d \ge d^* = \max_\theta \left(\frac{|s' - e|}{\tan\varphi_{max}} - s\right),
+              \qquad R_b = \sqrt{d^{*2} + e^2} - R_r,
+
+    evaluated on ``n_theta`` samples and polished with a bounded Brent search around the
+    worst sample (closed form, so no bisection on phi is needed). If the cam is then undercut
+    (convex pitch radius ``< Rr + rho_min``), ``Rb`` is raised by ``brentq`` on
+    ``1 - (Rr + rho_min) max kappa_p(Rb) = 0``.
+
+    Flat-faced: ``phi = 0``, and ``rho = Rb + s + s'' > rho_min`` everywhere gives
+    ``Rb = rho_min - min(s + s'')`` (the infimum; Norton eq. 8.27).
+    """
+    from scipy.optimize import brentq, minimize_scalar
+
+    V.choice("kind", kind, FOLLOWER_KINDS)
+    phi_lim = V.in_range("phi_max", phi_max, 0.0, math.pi / 2, "rad", lo_open=True, hi_open=True)
+    Rr = V.nonnegative("Rr", Rr, "m")
+    e = V.number("e", e, "m")
+    rho_min = V.nonnegative("rho_min", rho_min, "m")
+    if kind == "roller" and Rr <= 0.0:
+        raise V.fail("Rr", Rr, "m", "must be > 0 for a roller follower")
+    n = int(V.positive("n_theta", n_theta, ""))
+    theta = np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
+    s, s1, s2 = _derivs(program, theta)
+
+    if kind == "flat_faced":
+        g = s + s2
+        i = int(np.argmin(g))
+        Rb = rho_min - float(g[i])
+        binding = "curvature"
+        if Rb <= 0.0:
+            Rb, binding = 0.0, "none"
+        return BaseRadiusResult(Rb=Rb, kind=kind, binding=binding, phi_max=0.0,
+                                rho_min=Rb + float(g[i]), theta_critical=float(theta[i]), n_theta=n,
+                                message="rho = Rb + s + s'' is the binding constraint")
+
+    tan_lim = math.tan(phi_lim)
+    need = np.abs(s1 - e) / tan_lim - s
+    i = int(np.argmax(need))
+    dtheta = 2.0 * math.pi / n
+
+    def neg_need(t):
+        ss, ss1, _ = _derivs(program, np.array([t]))
+        return -(abs(ss1[0] - e) / tan_lim - ss[0])
+
+    res = minimize_scalar(neg_need, bounds=(theta[i] - dtheta, theta[i] + dtheta), method="bounded",
+                          options={"xatol": 1e-12})
+    d_star = max(float(need[i]), -float(res.fun))
+    theta_c = float(res.x) if -res.fun >= need[i] else float(theta[i])
+    Rb = math.sqrt(max(d_star, 0.0) ** 2 + e * e) - Rr
+    # Rp must exceed |e| strictly; a non-positive Rb means phi never binds
+    binding = "pressure_angle"
+    if Rb <= 0.0 or d_star <= 0.0:
+        Rb, binding = max(Rb, 0.0), "none"
+
+    reach = Rr + rho_min
+
+    def margin(Rb_):
+        Rp = Rb_ + Rr
+        if Rp <= abs(e):
+            return -1.0
+        return 1.0 - reach * float(np.max(pitch_curvature(s, s1, s2, Rp, e)))
+
+    iterations = 0
+    if reach > 0.0 and (Rb <= 0.0 or margin(Rb) <= 0.0):
+        lo = Rb if Rb > 0.0 else 1e-9
+        hi = max(2.0 * lo, reach, float(np.max(np.abs(s))) + 1e-6)
+        while margin(hi) <= 0.0:
+            hi *= 2.0
+            iterations += 1
+            if hi > 1e3:  # pragma: no cover - pathological program
+                raise UndercutError("no base radius below 1 km avoids undercutting")
+        Rb, r = brentq(margin, lo, hi, xtol=1e-12, rtol=1e-12, full_output=True)
+        Rb *= 1.0 + 1e-9  # step just onto the safe side of the root
+        iterations += r.iterations
+        binding = "undercut"
+    if Rb <= 0.0:
+        return BaseRadiusResult(Rb=0.0, kind=kind, binding="none", phi_max=0.0, rho_min=math.inf,
+                                theta_critical=float("nan"), n_theta=n,
+                                message="neither pressure angle nor curvature constrains Rb")
+    Rp = Rb + Rr
+    phi = pressure_angle(s, s1, Rp, e)
+    kap = pitch_curvature(s, s1, s2, Rp, e)
+    conv = kap > 0
+    rho_c = float(np.min(1.0 / kap[conv] - Rr)) if np.any(conv) else math.inf
+    return BaseRadiusResult(Rb=float(Rb), kind=kind, binding=binding,
+                            phi_max=float(np.max(np.abs(phi))), rho_min=rho_c,
+                            theta_critical=theta_c, n_theta=n, iterations=iterations,
+                            message=f"{binding} sets Rb")

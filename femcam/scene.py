@@ -1,0 +1,403 @@
+"""Scene files: one TOML file describes a whole cam-follower case, with units in the key names.
+
+``load_scene(path) -> Scene`` reads the file, checks every key and converts to SI; a bad file
+raises one :class:`~femcam.errors.SceneError` that lists each problem with its dotted key
+(``program.segment[1].beta_deg``), the value found and the expected unit. ``Scene.analyse``
+runs the analytic chain (kinematics -> profile -> loads) at given cam angles.
+
+Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table)::
+
+    name, description?, source?
+    [operating]        rpm | omega_rad_s
+    [program]          law?  (default law of rise/fall segments), control_points?
+    [[program.segment]] kind = "rise"|"dwell"|"fall", beta_deg, lift_mm (rise/fall),
+                        law? | control_points?
+    [follower]         type = "roller"|"knife_edge"|"flat_faced", base_radius_mm,
+                       roller_radius_mm (roller), offset_mm?, face_width_mm
+    [dynamics]         mass_kg, spring_N_per_m, preload_N, damping_N_s_per_m | damping_ratio
+    [materials.cam], [materials.roller] (alias [materials.follower]):
+                       E_GPa, nu, hardness_MPa?, name?
+    [contact]?         friction?, plane? = "strain"|"stress", sliding? = "+x"|"-x"
+    [fe]?, [wear]?     passed through unchanged (dicts) to the FE/sweep and wear layers
+
+Only numpy/scipy and the standard library (``tomllib``) are imported.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import difflib
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .errors import InputError, SceneError
+from .kinematics import CamProgram, dwell, fall, law, rise
+from .loads import FollowerDynamics, LoadResult, contact_force
+from .materials import Material
+from .profile import CamProfile, cam_profile, make_follower
+
+try:  # Python >= 3.11
+    import tomllib
+except ModuleNotFoundError:  # pragma: no cover - Python 3.10
+    import tomli as tomllib
+
+
+# --------------------------------------------------------------------------------------------
+# schema: key -> (unit shown to the user, SI factor, check, required)
+# check: "pos" > 0, "nonneg" >= 0, "num" any finite, "nu" in (-1, 0.5), "str", "list"
+# --------------------------------------------------------------------------------------------
+_TOP = {"name": ("", None, "str", True), "description": ("", None, "str", False),
+        "source": ("", None, "str", False)}
+_TABLES = ("operating", "program", "follower", "dynamics", "materials", "contact", "fe", "wear")
+_OPERATING = {"rpm": ("rpm", 2.0 * math.pi / 60.0, "pos", False),
+              "omega_rad_s": ("rad/s", 1.0, "pos", False)}
+_PROGRAM = {"law": ("", None, "str", False), "control_points": ("", None, "list", False),
+            "segment": ("", None, "seglist", True)}
+_SEGMENT = {"kind": ("", None, "str", True), "beta_deg": ("deg", math.pi / 180.0, "pos", True),
+            "lift_mm": ("mm", 1e-3, "pos", False), "law": ("", None, "str", False),
+            "control_points": ("", None, "list", False)}
+_FOLLOWER = {"type": ("", None, "str", True), "base_radius_mm": ("mm", 1e-3, "pos", True),
+             "roller_radius_mm": ("mm", 1e-3, "pos", False), "offset_mm": ("mm", 1e-3, "num", False),
+             "face_width_mm": ("mm", 1e-3, "pos", True)}
+_DYNAMICS = {"mass_kg": ("kg", 1.0, "nonneg", True), "spring_N_per_m": ("N/m", 1.0, "nonneg", True),
+             "preload_N": ("N", 1.0, "nonneg", True),
+             "damping_N_s_per_m": ("N s/m", 1.0, "nonneg", False),
+             "damping_ratio": ("(dimensionless)", 1.0, "nonneg", False)}
+_MATERIAL = {"E_GPa": ("GPa", 1e9, "pos", True), "nu": ("(dimensionless)", 1.0, "nu", True),
+             "hardness_MPa": ("MPa", 1e6, "pos", False), "name": ("", None, "str", False)}
+_CONTACT = {"friction": ("(dimensionless)", 1.0, "nonneg", False), "plane": ("", None, "str", False),
+            "sliding": ("", None, "str", False)}
+_CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", "flat_faced"),
+            "plane": ("strain", "stress"), "sliding": ("+x", "-x")}
+
+
+def _fmt(v) -> str:
+    return repr(v) if isinstance(v, str) else str(v).lower() if isinstance(v, bool) else f"{v}"
+
+
+class _Checker:
+    """Collects every problem of a scene file, then raises one SceneError."""
+
+    def __init__(self, path: str):
+        self.path = path
+        self.problems: list[str] = []
+
+    def add(self, key: str, msg: str) -> None:
+        # "key = value unit: condition" (like femcam._validate), or "key: message"
+        self.problems.append(f"{key} {msg}" if msg.startswith("= ") else f"{key}: {msg}")
+
+    def table(self, raw, key: str, spec: dict, *, extra: tuple = ()) -> dict:
+        """Check one table: types, ranges, unknown and missing keys. Returns SI values."""
+        out = {}
+        if not isinstance(raw, dict):
+            self.add(key, f"= {_fmt(raw)}: must be a table [{key}]")
+            return out
+        for k, v in raw.items():
+            dk = f"{key}.{k}" if key else k
+            if k in extra:
+                continue
+            if k not in spec:
+                self.add(dk, f"= {_fmt(v)}: unknown key{self._hint(k, spec)}")
+                continue
+            unit, factor, check, _ = spec[k]
+            val = self.value(dk, k, v, unit, factor, check)
+            if val is not None:
+                out[k] = val
+        for k, (unit, _, _, required) in spec.items():
+            if required and k not in raw:
+                u = f" (unit: {unit})" if unit else ""
+                self.add(f"{key}.{k}" if key else k, f"missing required key{u}")
+        return out
+
+    @staticmethod
+    def _hint(k: str, spec: dict) -> str:
+        pref = [n for n in spec if n.startswith(k + "_")]
+        near = pref or difflib.get_close_matches(k, list(spec), n=1, cutoff=0.6)
+        if not near:
+            return f"; valid keys: {', '.join(spec)}"
+        unit = spec[near[0]][0]
+        why = " (units go in the key name)" if pref else ""
+        return f"; did you mean {near[0]!r}{' in ' + unit if unit else ''}?{why}"
+
+    def value(self, dk, k, v, unit, factor, check):
+        u = f" {unit}" if unit else ""
+        if check == "str":
+            if not isinstance(v, str):
+                self.add(dk, f"= {_fmt(v)}: must be a string")
+                return None
+            if k in _CHOICES and v not in _CHOICES[k]:
+                self.add(dk, f"= {v!r}: must be one of {', '.join(map(repr, _CHOICES[k]))}")
+                return None
+            return v
+        if check == "list":
+            ok = isinstance(v, list) and all(isinstance(x, int | float) and not isinstance(x, bool)
+                                             for x in v)
+            if not ok:
+                self.add(dk, f"= {_fmt(v)}: must be a list of numbers")
+                return None
+            return [float(x) for x in v]
+        if check == "seglist":
+            return v  # handled by the caller
+        if isinstance(v, bool) or not isinstance(v, int | float):
+            self.add(dk, f"= {_fmt(v)}: must be a number in{u or ' (dimensionless)'}")
+            return None
+        x = float(v)
+        bad = None
+        if not math.isfinite(x):
+            bad = "must be finite"
+        elif check == "pos" and x <= 0:
+            bad = "must be > 0"
+        elif check == "nonneg" and x < 0:
+            bad = "must be >= 0"
+        elif check == "nu" and not (-1.0 < x < 0.5):
+            bad = "Poisson's ratio must be in (-1, 0.5)"
+        if bad:
+            self.add(dk, f"= {_fmt(v)}{u}: {bad}")
+            return None
+        return x * factor
+
+    def raise_if_any(self):
+        if self.problems:
+            n = len(self.problems)
+            head = f"scene file {self.path}: {n} problem{'s' if n > 1 else ''}"
+            raise SceneError(head + "\n  " + "\n  ".join(self.problems))
+
+
+# --------------------------------------------------------------------------------------------
+# scene
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class SceneState:
+    """The analytic chain at cam angles ``theta`` (rad); SI units throughout."""
+
+    theta: np.ndarray
+    s: np.ndarray
+    v: np.ndarray
+    a: np.ndarray
+    j: np.ndarray
+    s1: np.ndarray
+    s2: np.ndarray
+    phi: np.ndarray
+    rho: np.ndarray
+    Fc: np.ndarray
+    liftoff: np.ndarray
+    contact_x: np.ndarray
+    contact_y: np.ndarray
+    profile: CamProfile
+    loads: LoadResult
+
+    @property
+    def undercut(self) -> np.ndarray:
+        return self.profile.undercut
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A cam-follower case in SI units (built by :func:`load_scene`).
+
+    ``length`` is the axial contact length (face width / cam thickness, m); ``cam`` and
+    ``roller`` are the cam and follower materials; ``fe`` and ``wear`` are the optional
+    pass-through tables, ``raw`` the parsed TOML.
+    """
+
+    name: str
+    program: CamProgram
+    follower: object
+    dynamics: FollowerDynamics
+    omega: float
+    cam: Material
+    roller: Material
+    length: float
+    mu: float = 0.0
+    plane: str = "strain"
+    sliding: str | None = None
+    description: str = ""
+    source: str = ""
+    fe: dict = field(default_factory=dict)
+    wear: dict = field(default_factory=dict)
+    source_path: str = ""
+    raw: dict = field(default_factory=dict, repr=False)
+
+    @property
+    def rpm(self) -> float:
+        return self.omega * 60.0 / (2.0 * math.pi)
+
+    def analyse(self, theta, *, allow_undercut: bool = False) -> SceneState:
+        """Kinematics, profile and contact force at cam angles ``theta`` (rad), vectorised.
+
+        Raises :class:`~femcam.errors.UndercutError` for an undercut profile unless
+        ``allow_undercut=True``.
+        """
+        d = self.program.derivatives(theta)
+        w = self.omega
+        v, a, j = w * d.s1, w**2 * d.s2, w**3 * d.s3
+        p = cam_profile(self.follower, d.theta, d.s, d.s1, d.s2, allow_undercut=allow_undercut)
+        r = contact_force(self.dynamics, d.theta, d.s, v, a, p.phi)
+        return SceneState(theta=np.asarray(d.theta, float), s=d.s, v=v, a=a, j=j, s1=d.s1, s2=d.s2,
+                          phi=p.phi, rho=p.rho, Fc=r.Fc, liftoff=r.liftoff, contact_x=p.contact_x,
+                          contact_y=p.contact_y, profile=p, loads=r)
+
+    def with_law(self, name: str, **params) -> Scene:
+        """The same scene with every rise/fall segment using motion law ``name``."""
+        lw = law(name, **params)
+        segs = [s if s.law is None else dataclasses.replace(s, law=lw) for s in self.program.segments]
+        return dataclasses.replace(self, program=CamProgram(segs))
+
+
+def _law_from(ck: _Checker, key: str, tab: dict, default):
+    if "law" in tab and "control_points" in tab:
+        ck.add(key, "give either law or control_points, not both")
+        return None
+    if "control_points" in tab:
+        try:
+            return law("bezier", control_points=tab["control_points"])
+        except InputError as exc:
+            ck.add(f"{key}.control_points", str(exc))
+            return None
+    if "law" in tab:
+        try:
+            return law(tab["law"])
+        except InputError as exc:
+            ck.add(f"{key}.law", str(exc))
+            return None
+    return default
+
+
+def load_scene(path) -> Scene:
+    """Read a scene TOML file (units in key names) and convert it to SI.
+
+    Raises :class:`~femcam.errors.SceneError` listing every problem (dotted key, value,
+    expected unit) if the file is malformed.
+    """
+    path = Path(path)
+    try:
+        with open(path, "rb") as fh:
+            raw = tomllib.load(fh)
+    except FileNotFoundError:
+        raise SceneError(f"scene file {path}: not found") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(f"scene file {path}: not valid TOML: {exc}") from None
+    ck = _Checker(str(path))
+    top = ck.table({k: v for k, v in raw.items() if k not in _TABLES}, "", _TOP)
+    for t in ("operating", "program", "follower", "dynamics", "materials"):
+        if t not in raw:
+            ck.add(t, f"missing required table [{t}]")
+    g = lambda t: raw.get(t, {})  # noqa: E731
+
+    # operating speed
+    op = ck.table(g("operating"), "operating", _OPERATING)
+    if "operating" in raw and isinstance(raw["operating"], dict):
+        given = [k for k in _OPERATING if k in raw["operating"]]
+        if len(given) != 1:
+            ck.add("operating", "give exactly one of rpm (rpm) or omega_rad_s (rad/s); "
+                   f"got {given or 'none'}")
+    omega = op.get("rpm", op.get("omega_rad_s"))
+
+    # program
+    prog_tab = ck.table(g("program"), "program", _PROGRAM)
+    default_law = _law_from(ck, "program", prog_tab, None)
+    segments = []
+    segs_raw = g("program").get("segment", []) if isinstance(g("program"), dict) else []
+    if "program" in raw and not (isinstance(segs_raw, list) and segs_raw):
+        ck.add("program.segment", "must be an array of tables [[program.segment]] with at least one segment")
+        segs_raw = []
+    for i, sr in enumerate(segs_raw):
+        key = f"program.segment[{i}]"
+        sg = ck.table(sr, key, _SEGMENT)
+        kind = sg.get("kind")
+        if kind is None or "beta_deg" not in sg:
+            continue
+        if kind == "dwell":
+            for k in ("lift_mm", "law", "control_points"):
+                if k in sg:
+                    ck.add(f"{key}.{k}", f"= {_fmt(sr[k])}: a dwell takes only kind and beta_deg")
+            segments.append(dwell(sg["beta_deg"]))
+            continue
+        if "lift_mm" not in sg:
+            if isinstance(sr, dict) and "lift_mm" not in sr:
+                ck.add(f"{key}.lift_mm", f"missing required key for a {kind} (unit: mm)")
+            continue
+        lw = _law_from(ck, key, sg, default_law)
+        if lw is None:
+            if "law" not in sg and "control_points" not in sg:
+                ck.add(f"{key}.law", "missing: give law (e.g. 'cycloidal') or control_points, "
+                       "here or in [program]")
+            continue
+        segments.append((rise if kind == "rise" else fall)(sg["beta_deg"], sg["lift_mm"], lw))
+    program = None
+    if segments and len(segments) == len(segs_raw) and not ck.problems:
+        try:
+            program = CamProgram(segments)
+        except InputError as exc:
+            ck.add("program.segment", str(exc))
+
+    # follower
+    fo = ck.table(g("follower"), "follower", _FOLLOWER)
+    ftype = fo.get("type")
+    follower = None
+    if ftype == "roller" and "roller_radius_mm" not in g("follower"):
+        ck.add("follower.roller_radius_mm", "missing required key for a roller follower (unit: mm)")
+    elif ftype in ("knife_edge", "flat_faced") and "roller_radius_mm" in g("follower"):
+        ck.add("follower.roller_radius_mm", f"= {_fmt(g('follower')['roller_radius_mm'])}: "
+               f"a {ftype} follower has no roller")
+    elif (ftype and isinstance(g("follower"), dict) and set(g("follower")) <= set(fo)
+            and "base_radius_mm" in fo):
+        try:
+            follower = make_follower(ftype, Rb=fo["base_radius_mm"], Rr=fo.get("roller_radius_mm", 0.0),
+                                     e=fo.get("offset_mm", 0.0))
+        except InputError:  # only the offset can fail here: |e| < prime radius
+            Rr_m = fo.get("roller_radius_mm", 0.0) if ftype == "roller" else 0.0
+            Rp_mm = (fo["base_radius_mm"] + Rr_m) * 1e3
+            ck.add("follower.offset_mm", f"= {_fmt(g('follower')['offset_mm'])} mm: must satisfy "
+                   f"|offset| < prime-circle radius {Rp_mm:g} mm")
+
+    # dynamics
+    dy = ck.table(g("dynamics"), "dynamics", _DYNAMICS)
+    dyn = None
+    if isinstance(g("dynamics"), dict) and "dynamics" in raw:
+        given = [k for k in ("damping_N_s_per_m", "damping_ratio") if k in g("dynamics")]
+        if len(given) != 1:
+            ck.add("dynamics", "give exactly one of damping_N_s_per_m (N s/m) or damping_ratio "
+                   f"(dimensionless); got {given or 'none'}")
+        elif all(k in dy for k in ("mass_kg", "spring_N_per_m", "preload_N", given[0])):
+            dyn = FollowerDynamics(m=dy["mass_kg"], k=dy["spring_N_per_m"], Fpl=dy["preload_N"],
+                                   c=dy.get("damping_N_s_per_m"), zeta=dy.get("damping_ratio"))
+
+    # materials
+    mats = {}
+    mraw = g("materials")
+    if isinstance(mraw, dict):
+        for k in mraw:
+            if k not in ("cam", "roller", "follower"):
+                ck.add(f"materials.{k}", "unknown material table; use [materials.cam] and "
+                       "[materials.roller] (or [materials.follower])")
+        if "roller" in mraw and "follower" in mraw:
+            ck.add("materials", "give [materials.roller] or its alias [materials.follower], not both")
+        for k, alias in (("cam", "cam"), ("roller", "roller"), ("roller", "follower")):
+            if alias in mraw:
+                m = ck.table(mraw[alias], f"materials.{alias}", _MATERIAL)
+                if "E_GPa" in m and "nu" in m:
+                    mats[k] = Material(E=m["E_GPa"], nu=m["nu"], name=m.get("name", alias),
+                                       hardness=m.get("hardness_MPa"))
+        if "materials" in raw:
+            for k in ("cam", "roller"):
+                if k not in mraw and not (k == "roller" and "follower" in mraw):
+                    ck.add(f"materials.{k}", "missing required table (keys E_GPa, nu)")
+    elif "materials" in raw:
+        ck.add("materials", f"= {_fmt(mraw)}: must be a table")
+
+    # contact and pass-through tables
+    co = ck.table(g("contact"), "contact", _CONTACT)
+    for t in ("fe", "wear"):
+        if t in raw and not isinstance(raw[t], dict):
+            ck.add(t, f"= {_fmt(raw[t])}: must be a table [{t}]")
+    ck.raise_if_any()
+
+    return Scene(name=top["name"], description=top.get("description", ""), source=top.get("source", ""),
+                 program=program, follower=follower, dynamics=dyn, omega=omega, cam=mats["cam"],
+                 roller=mats["roller"], length=fo["face_width_mm"], mu=co.get("friction", 0.0),
+                 plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=dict(g("fe")),
+                 wear=dict(g("wear")), source_path=str(path), raw=raw)

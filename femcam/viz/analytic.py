@@ -1,0 +1,169 @@
+"""Plots of the analytic chain against cam angle (degrees): SVAJ, pressure angle, radius of
+curvature, contact force, and the cam shape. matplotlib is imported inside each function
+(Agg backend), so importing this module is cheap and headless.
+
+Every function takes a :class:`femcam.scene.SceneState` (``st``) and a PNG path and returns
+the path. Labels carry units: mm, m/s, m/s^2, m/s^3, deg, N.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+
+def _plt():
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def _deg(st):
+    return np.degrees(np.asarray(st.theta, float))
+
+
+def _save(fig, path):
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=100)
+    _plt().close(fig)
+    return path
+
+
+def _xaxis(ax, th):
+    ax.set_xlim(th.min(), th.max())
+    if th.max() - th.min() >= 180:
+        ax.set_xticks(np.arange(math.floor(th.min() / 45) * 45, th.max() + 1, 45))
+    ax.grid(True, alpha=0.3)
+
+
+def plot_svaj(st, path, title: str = ""):
+    """Four stacked panels: lift s (mm), velocity v (m/s), acceleration a (m/s^2), jerk j (m/s^3)."""
+    plt = _plt()
+    th = _deg(st)
+    fig, axs = plt.subplots(4, 1, sharex=True, figsize=(7.0, 8.0))
+    data = [(np.asarray(st.s) * 1e3, "s (mm)"), (st.v, "v (m/s)"), (st.a, "a (m/s$^2$)"),
+            (st.j, "j (m/s$^3$)")]
+    for ax, (y, lab), c in zip(axs, data, ("C0", "C1", "C2", "C3"), strict=True):
+        ax.plot(th, y, color=c, lw=1.4)
+        ax.axhline(0.0, color="k", lw=0.5)
+        ax.set_ylabel(lab)
+        _xaxis(ax, th)
+    axs[-1].set_xlabel("cam angle theta (deg)")
+    axs[0].set_title(title or "Follower displacement, velocity, acceleration and jerk")
+    fig.tight_layout()
+    return _save(fig, path)
+
+
+def plot_pressure_angle(st, path, title: str = "", limit_deg: float = 30.0):
+    """Pressure angle phi (deg) with the +-limit lines (30 deg by default)."""
+    plt = _plt()
+    th = _deg(st)
+    fig, ax = plt.subplots(figsize=(7.0, 3.4))
+    ax.plot(th, np.degrees(st.phi), lw=1.4)
+    for sgn in (1, -1):
+        ax.axhline(sgn * limit_deg, color="r", ls="--", lw=0.8)
+    ax.text(th.min(), limit_deg, f" limit {limit_deg:g} deg", color="r", va="bottom", fontsize=8)
+    pm = float(np.max(np.abs(np.degrees(st.phi)))) if np.size(st.phi) else 0.0
+    ax.set_ylabel("pressure angle phi (deg)")
+    ax.set_xlabel("cam angle theta (deg)")
+    ax.set_title(title or f"Pressure angle (max |phi| = {pm:.2f} deg)")
+    _xaxis(ax, th)
+    fig.tight_layout()
+    return _save(fig, path)
+
+
+def plot_rho(st, path, title: str = "", Rr: float = 0.0, clip_mm: float | None = None):
+    """Cam-surface radius of curvature rho (mm); concave parts are negative. Near an inflection
+    |rho| grows without bound, so values beyond ``clip_mm`` (default 4 x the median convex
+    radius) are clipped and marked."""
+    plt = _plt()
+    th = _deg(st)
+    rho = np.asarray(st.rho, float) * 1e3
+    fin = np.isfinite(rho)
+    if clip_mm is None:
+        pos = rho[fin & (rho > 0)]
+        clip_mm = 4.0 * float(np.median(pos)) if pos.size else 100.0
+    shown = np.clip(np.where(fin, rho, np.sign(rho) * np.inf), -clip_mm, clip_mm)
+    fig, ax = plt.subplots(figsize=(7.0, 3.4))
+    ax.plot(th, shown, lw=1.4, label="rho (cam surface)")
+    if np.any(np.abs(rho) > clip_mm):
+        ax.axhline(clip_mm, color="0.6", lw=0.6, ls=":")
+        ax.axhline(-clip_mm, color="0.6", lw=0.6, ls=":")
+        ax.text(th.min(), clip_mm, f" |rho| > {clip_mm:.0f} mm clipped (nearly flat)", fontsize=8,
+                va="top", color="0.4")
+    if Rr > 0:
+        ax.axhline(Rr * 1e3, color="C3", ls="--", lw=0.8, label=f"roller radius {Rr * 1e3:g} mm")
+    ax.axhline(0.0, color="k", lw=0.5)
+    fmin = float(np.min(np.abs(rho[fin]))) if fin.any() else math.inf
+    ax.set_ylabel("radius of curvature rho (mm)")
+    ax.set_xlabel("cam angle theta (deg)")
+    ax.set_title(title or f"Cam radius of curvature at the contact (min |rho| = {fmin:.2f} mm)")
+    ax.legend(fontsize=8, loc="lower right")
+    _xaxis(ax, th)
+    fig.tight_layout()
+    return _save(fig, path)
+
+
+def plot_contact_force(st, path, title: str = ""):
+    """Contact force Fc (N, seed 002 eq. 11) with lift-off (Fc <= 0) shaded."""
+    plt = _plt()
+    th = _deg(st)
+    fig, ax = plt.subplots(figsize=(7.0, 3.4))
+    ax.plot(th, st.Fc, lw=1.4, color="C2")
+    ax.axhline(0.0, color="k", lw=0.5)
+    lift = np.asarray(st.liftoff, bool)
+    if lift.any():
+        ax.fill_between(th, 0, 1, where=lift, transform=ax.get_xaxis_transform(), color="r",
+                        alpha=0.15, label="lift-off (Fc <= 0)")
+        ax.legend(fontsize=8)
+    ax.set_ylabel("contact force Fc (N)")
+    ax.set_xlabel("cam angle theta (deg)")
+    ax.set_title(title or f"Contact force (max {np.max(st.Fc):.1f} N, min {np.min(st.Fc):.1f} N)")
+    _xaxis(ax, th)
+    fig.tight_layout()
+    return _save(fig, path)
+
+
+def plot_cam(st, path, title: str = ""):
+    """Cam shape (cam frame, mm) with the pitch curve, base circle and undercut points."""
+    plt = _plt()
+    p = st.profile
+    fig, ax = plt.subplots(figsize=(5.0, 5.0))
+    ax.plot(np.r_[p.x, p.x[:1]] * 1e3, np.r_[p.y, p.y[:1]] * 1e3, lw=1.6, label="cam surface")
+    if p.follower.kind == "roller":
+        ax.plot(p.pitch_x * 1e3, p.pitch_y * 1e3, "--", lw=0.8, label="pitch curve")
+    t = np.linspace(0, 2 * np.pi, 361)
+    Rb = p.follower.Rb * 1e3
+    ax.plot(Rb * np.cos(t), Rb * np.sin(t), ":", color="0.5", lw=0.8, label="base circle")
+    if p.undercut.any():
+        ax.plot(p.x[p.undercut] * 1e3, p.y[p.undercut] * 1e3, "r.", ms=3, label="undercut")
+    ax.plot(0, 0, "k+")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("y (mm)")
+    ax.set_title(title or f"Cam profile ({p.follower.kind})")
+    ax.legend(fontsize=7, loc="upper right")
+    ax.grid(True, alpha=0.3)
+    fig.tight_layout()
+    return _save(fig, path)
+
+
+def plot_all(st, outdir, prefix: str = "", *, Rr: float = 0.0, limit_deg: float = 30.0,
+             title: str = "") -> list[Path]:
+    """All analytic plots into ``outdir`` as ``[<prefix>_]{svaj,phi,rho,fc,cam}.png``."""
+    outdir = Path(outdir)
+    name = (lambda k: outdir / (f"{prefix}_{k}.png" if prefix else f"{k}.png"))  # noqa: E731
+    pre = f"{title}: " if title else ""
+    return [
+        plot_svaj(st, name("svaj"), title=f"{pre}s, v, a, j" if title else ""),
+        plot_pressure_angle(st, name("phi"), limit_deg=limit_deg),
+        plot_rho(st, name("rho"), Rr=Rr),
+        plot_contact_force(st, name("fc")),
+        plot_cam(st, name("cam")),
+    ]
