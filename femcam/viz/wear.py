@@ -1,0 +1,99 @@
+"""Wear plots (matplotlib, imported inside the functions): depth against cam angle and arc
+length, a polar view of the cam with the wear magnified, and a motion-law comparison."""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def _plt():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def plot_wear_map(wm, path, *, title: str = ""):
+    """Two panels: depth after ``wm.cycles`` revolutions vs cam angle (deg) and vs arc length (mm)."""
+    plt = _plt()
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(6.4, 5.2))
+    c = wm.cycles
+    ax1.plot(np.degrees(wm.theta), wm.depth_at_theta * c * 1e6, label="map (moving Hertz ellipse)")
+    ax1.plot(np.degrees(wm.theta), wm.depth_pass * c * 1e6, "--", label="closed form k w v_slip / V_cam")
+    ax1.set_xlabel("cam angle theta (deg)")
+    ax1.set_ylabel(f"cam wear depth after {c:g} rev (um)")
+    ax1.legend(fontsize=8)
+    ax2.plot(wm.x_cam * 1e3, wm.depth_cam * c * 1e6)
+    ax2.axvline(wm.x_max * 1e3, color="r", lw=0.8)
+    ax2.set_xlabel("cam arc length from the contact at theta = 0 (mm)")
+    ax2.set_ylabel("depth (um)")
+    ax2.set_title(f"max {wm.max_depth * 1e6:.3g} um at arc {wm.x_max * 1e3:.2f} mm", fontsize=9)
+    if title:
+        fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return path
+
+
+def worn_profile(wm, x, y, magnify: float):
+    """Cam-frame points of the profile moved inward by ``magnify x depth`` (m)."""
+    x = np.asarray(x, float)
+    y = np.asarray(y, float)
+    seg = np.hypot(np.diff(x, append=x[0]), np.diff(y, append=y[0]))
+    arc = np.concatenate(([0.0], np.cumsum(seg)[:-1]))
+    # the profile's own arc length is rescaled to the map's perimeter (same curve, same origin)
+    arc = arc * wm.perimeter / seg.sum()
+    h = np.interp(arc, wm.x_cam, wm.depth_cam * wm.cycles, period=wm.perimeter)
+    tx = np.gradient(x)
+    ty = np.gradient(y)
+    nrm = np.hypot(tx, ty)
+    # inward normal of a counter-clockwise-ordered closed curve is (-ty, tx); orient by the centroid
+    nx, ny = -ty / nrm, tx / nrm
+    if np.mean(nx * (x - x.mean()) + ny * (y - y.mean())) > 0:
+        nx, ny = -nx, -ny
+    return x + magnify * h * nx, y + magnify * h * ny
+
+
+def plot_wear_polar(wm, x, y, path, *, magnify: float | None = None, title: str = ""):
+    """The cam profile (cam frame) and the worn profile with the wear magnified."""
+    plt = _plt()
+    hmax = wm.max_depth
+    if magnify is None:
+        size = np.ptp(np.asarray(x))
+        magnify = 0.05 * size / hmax if hmax > 0 else 1.0
+    xw, yw = worn_profile(wm, x, y, magnify)
+    fig, ax = plt.subplots(figsize=(5, 5))
+    ax.plot(np.asarray(x) * 1e3, np.asarray(y) * 1e3, "k-", lw=0.8, label="new profile")
+    ax.plot(xw * 1e3, yw * 1e3, "r-", lw=1.0, label=f"worn, depth x {magnify:.3g}")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("y (mm)")
+    ax.legend(fontsize=8, loc="lower right")
+    ax.set_title((title + "\n" if title else "") + f"{wm.cycles:g} rev, max depth {hmax * 1e6:.3g} um",
+                 fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return path
+
+
+def plot_wear_comparison(maps: dict, path, *, title: str = ""):
+    """Depth vs cam angle for several motion laws (``{label: WearMap}``)."""
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(6.4, 3.6))
+    for label, wm in maps.items():
+        ax.plot(np.degrees(wm.theta), wm.depth_at_theta * wm.cycles * 1e6,
+                label=f"{label}: max {wm.max_depth * 1e6:.3g} um")
+    ax.set_xlabel("cam angle theta (deg)")
+    c = next(iter(maps.values())).cycles
+    ax.set_ylabel(f"cam wear depth after {c:g} rev (um)")
+    ax.legend(fontsize=8)
+    if title:
+        ax.set_title(title, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return path
