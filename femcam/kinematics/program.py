@@ -327,7 +327,10 @@ class CamProgram:
             tol = _JUMP_RTOL * np.maximum(L.scale(), R.scale())
             jump = np.where(np.abs(jump) <= tol, 0.0, jump)  # round-off, e.g. sin(2 pi)
             inf_a = bool(jump[0] != 0.0)
-            out.append(Junction(theta=float((self._starts[k] + L.beta) % TWO_PI),
+            th = (self._starts[k] + L.beta) % TWO_PI
+            if TWO_PI - th <= 1e-9 * TWO_PI:  # segment sum a hair under 2 pi: the wrap join is 0
+                th = 0.0
+            out.append(Junction(theta=float(th),
                                 left=L.name, right=R.name, jump_s1=float(jump[0]),
                                 jump_s2=float(jump[1]), jump_s3=float(jump[2]),
                                 infinite_acceleration=inf_a,
