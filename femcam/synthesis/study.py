@@ -1,0 +1,160 @@
+"""Seed 003 case study, parameter studies (Figs. 6-9) and the comparison with direct synthesis.
+
+The case (seed 003 section 5): in-line knife-edge follower, rise 120 deg to 3 mm, dwell 90 deg,
+fall 90 deg, dwell 60 deg, 3-4-5 polynomial (eq. 39 with zero velocity and acceleration at the
+segment ends), base circle 5 mm.
+
+* :func:`seed003_program` builds the cam program with :mod:`femcam.kinematics`.
+* :func:`direct_profile` is the direct analytic synthesis (:func:`femcam.profile.cam_profile`,
+  knife edge: polar radius ``Rb + s(theta)``, ``phi = atan(s'/(Rb + s))``).
+* :func:`compare_direct` measures the FE curve against it at the same polar angles.
+* :func:`study_k` and :func:`study_k_over_mu` sweep k and k/mu (seed 003 Figs. 6-9).
+
+Only numpy/scipy (and femcam's analytic chain) are imported.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from .. import _validate as V  # noqa: N812
+from ..errors import ConvergenceError
+from .pefem import SynthesisOptions, SynthesisResult, synthesize_knife_edge
+
+#: seed 003's base circle (m) and printed results (section 5)
+SEED003_RB = 5.0e-3
+SEED003_PHI_MAX_DEG = 29.3619
+SEED003_MAX_ERROR = 5.4363e-5          # printed without a unit; the paper's lengths are in mm
+
+
+def seed003_program(h: float = 3.0e-3, law: str = "poly345"):
+    """Rise 120 deg to ``h`` (m), dwell 90, fall 90, dwell 60 deg (seed 003 section 5)."""
+    from ..kinematics import CamProgram, dwell, fall, rise
+
+    h = V.positive("h", h, "m")
+    r = math.radians
+    return CamProgram([rise(r(120.0), h, law), dwell(r(90.0)), fall(r(90.0), h, law),
+                       dwell(r(60.0))])
+
+
+def derivatives(program, theta):
+    """``(s, s1, s2)`` of ``program`` at ``theta`` (m, m/rad, m/rad^2)."""
+    d = program.derivatives(theta)
+    get = (lambda n: d[n]) if isinstance(d, dict) else (lambda n: getattr(d, n))
+    return tuple(np.asarray(get(n), float) for n in ("s", "s1", "s2"))
+
+
+def direct_profile(program, Rb: float, theta):
+    """Direct analytic knife-edge synthesis at cam angles ``theta`` (rad).
+
+    Returns ``(r, phi)``: the polar radius of the cam point in contact at ``theta``
+    (``r = |(x, y)| = Rb + s``) and the pressure angle, both from
+    :func:`femcam.profile.cam_profile` (Norton eq. 8.31).
+    """
+    from ..profile import KnifeEdgeFollower, cam_profile
+
+    s, s1, s2 = derivatives(program, theta)
+    p = cam_profile(KnifeEdgeFollower(Rb=Rb), theta, s, s1, s2, allow_undercut=True)
+    return np.hypot(p.x, p.y), p.phi
+
+
+@dataclass(frozen=True)
+class Comparison:
+    """FE curve vs direct synthesis at the FE sample angles (SI, rad, seconds)."""
+
+    max_radius_deviation: float      # max |r_FE - r_direct| (m)
+    rms_radius_deviation: float      # rms of the same (m)
+    phi_max_fe: float                # max |phi| of the FE curve (rad)
+    phi_max_direct: float            # max |phi| of the direct profile, dense grid (rad)
+    max_phi_deviation: float         # max |phi_FE - phi_direct| at the same angles (rad)
+    time_fe: float                   # FE Newton solve (s)
+    time_direct: float               # direct profile at the same number of angles (s)
+
+
+def compare_direct(result: SynthesisResult, program, *, n_dense: int = 72001) -> Comparison:
+    """Compare a converged FE curve with :func:`direct_profile` of the same program."""
+    t0 = time.perf_counter()
+    r_d, phi_d = direct_profile(program, result.Rb, result.theta)
+    t_direct = time.perf_counter() - t0
+    th = np.linspace(0.0, 2 * np.pi, int(n_dense))
+    phi_dense = direct_profile(program, result.Rb, th)[1]
+    dev = result.r - r_d
+    return Comparison(
+        max_radius_deviation=float(np.max(np.abs(dev))),
+        rms_radius_deviation=float(np.sqrt(np.mean(dev**2))),
+        phi_max_fe=result.phi_max, phi_max_direct=float(np.max(np.abs(phi_dense))),
+        max_phi_deviation=float(np.max(np.abs(result.phi - phi_d))),
+        time_fe=result.solve_time, time_direct=t_direct)
+
+
+@dataclass(frozen=True)
+class StudyRow:
+    """One point of a parameter study (SI units; ``error`` is max |y - y_o| in m)."""
+
+    k: float
+    mu: float
+    n_elements: int
+    max_error: float
+    node_error: float
+    phi_max: float
+    iterations: int
+    condition: float
+    time: float
+    converged: bool
+    message: str = ""
+
+    @property
+    def k_over_mu(self) -> float:
+        return self.k / self.mu
+
+
+def _row(program, Rb, opt) -> StudyRow:
+    try:
+        r = synthesize_knife_edge(program, Rb=Rb, options=opt)
+    except ConvergenceError as exc:
+        return StudyRow(k=opt.k, mu=opt.mu, n_elements=opt.n_elements, max_error=math.nan,
+                        node_error=math.nan, phi_max=math.nan, iterations=len(exc.history) - 1,
+                        condition=math.nan, time=math.nan, converged=False, message=str(exc))
+    return StudyRow(k=opt.k, mu=opt.mu, n_elements=opt.n_elements, max_error=r.max_error,
+                    node_error=float(np.max(np.abs(r.node_error))), phi_max=r.phi_max,
+                    iterations=r.iterations, condition=r.condition_estimate, time=r.solve_time,
+                    converged=True, message=r.message)
+
+
+def study_k(program, *, Rb: float, ks, mu: float = 1.0,
+            options: SynthesisOptions | None = None) -> list[StudyRow]:
+    """Error and pressure angle against k at fixed mu (seed 003 Figs. 6 and 7)."""
+    base = options or SynthesisOptions()
+    return [_row(program, Rb, replace(base, k=float(k), mu=float(mu))) for k in ks]
+
+
+def study_k_over_mu(program, *, Rb: float, ratios, k: float = 1.0e6,
+                    options: SynthesisOptions | None = None) -> list[StudyRow]:
+    """Error and pressure angle against k/mu at fixed k (seed 003 Figs. 8 and 9).
+
+    Continuation starts at ``k_start mu``, so it is lowered with mu to keep the first stage
+    at k/mu = 1e4 or less."""
+    base = options or SynthesisOptions()
+    return [_row(program, Rb, replace(base, k=float(k), mu=float(k) / float(q)))
+            for q in ratios]
+
+
+def format_table(rows, *, key: str = "k") -> str:
+    """Markdown table of a study (errors in mm, angles in deg)."""
+    head = ("| k | mu | k/mu | elements | max error (mm) | max node error (mm) | phi max (deg) "
+            "| iterations | cond. est. | time (s) |")
+    lines = [head, "|" + "---|" * 10]
+    for r in rows:
+        if r.converged:
+            lines.append(f"| {r.k:.0e} | {r.mu:.3g} | {r.k_over_mu:.0e} | {r.n_elements} | "
+                         f"{r.max_error * 1e3:.3e} | {r.node_error * 1e3:.3e} | "
+                         f"{math.degrees(r.phi_max):.4f} | {r.iterations} | {r.condition:.1e} | "
+                         f"{r.time:.3f} |")
+        else:
+            lines.append(f"| {r.k:.0e} | {r.mu:.3g} | {r.k_over_mu:.0e} | {r.n_elements} | "
+                         f"ConvergenceError | | | {r.iterations} | | |")
+    return "\n".join(lines)
