@@ -1,0 +1,193 @@
+"""Plane linear elasticity of one body with scikit-fem: assembly, supports, factorisation.
+
+Symbols: ``K`` stiffness matrix (N/m per unit thickness), ``u`` nodal displacements (m),
+``lam, mu_L`` Lamé parameters (Pa; :func:`femcam.materials.lame_parameters`, the plane-stress
+``lambda*`` when ``plane="stress"``). Weak form (scikit-fem ``linear_elasticity``):
+
+.. math:: \\int_\\Omega \\sigma(u) : \\varepsilon(v)\\,d\\Omega, \\qquad
+          \\sigma = \\lambda\\,\\mathrm{tr}(\\varepsilon) I + 2\\mu\\,\\varepsilon
+
+Rigid-body modes are removed by clamping every DOF on the body's fixed support (far from the
+contact). The free block ``K_ff`` is factorised once with SuperLU (``scipy.sparse.linalg.splu``)
+using an explicit column ordering: ``MMD_AT_PLUS_A`` is the ordering for symmetric matrices,
+the SciPy default ``COLAMD`` is meant for unsymmetric ones and fills in far more (measured in
+``benchmarks/bench_fe.py``).
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+from ..errors import FemcamError
+from ..materials import Material, lame_parameters
+from ..mesh import BodyMesh
+
+ELEMENTS = ("P1", "P2")
+ORDERINGS = ("MMD_AT_PLUS_A", "MMD_ATA", "COLAMD", "NATURAL")
+#: right-hand sides per SuperLU triangular solve (see Body.solve)
+CHUNK = 20
+
+
+@dataclass(frozen=True, eq=False)
+class Body:
+    """One assembled, supported and factorised elastic body.
+
+    mesh: skfem MeshTri; basis: vector basis; K: full stiffness (csr); free: free DOF indices;
+    lu: SuperLU factor of K[free][:, free]; lam, mu_L: Lamé parameters (Pa); t_assembly,
+    t_factor: seconds.
+    """
+
+    name: str
+    geometry: BodyMesh
+    material: Material
+    plane: str
+    element: str
+    mesh: object
+    basis: object
+    K: sp.csr_matrix
+    free: np.ndarray
+    lu: object
+    lam: float
+    mu_L: float
+    t_assembly: float
+    t_factor: float
+
+    @property
+    def n_dofs(self) -> int:
+        return int(self.basis.N)
+
+    def solve(self, f: np.ndarray) -> np.ndarray:
+        """Displacements for nodal forces ``f`` (N; shape (N,) or (N, k)); zero on supports."""
+        f = np.asarray(f, dtype=float)
+        u = np.zeros_like(f)
+        if f.ndim == 1:
+            u[self.free] = self.lu.solve(f[self.free])
+            return u
+        # blocks of CHUNK columns: SuperLU's multi-RHS solve was measured fastest in blocks of
+        # ~20 (0.18 s vs 0.25 s for all 101 at once and 0.46 s one by one, 21k DOFs) and the
+        # all-at-once solve degraded badly (5-30x) on the loaded 2-core test machine
+        ff = f[self.free]
+        uf = np.empty_like(ff)
+        for j in range(0, ff.shape[1], CHUNK):
+            uf[:, j:j + CHUNK] = self.lu.solve(np.asfortranarray(ff[:, j:j + CHUNK]))
+        u[self.free] = uf
+        return u
+
+
+def _element(element: str):
+    from skfem import ElementTriP1, ElementTriP2, ElementVector
+
+    return ElementVector(ElementTriP2() if element == "P2" else ElementTriP1())
+
+
+def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strain",
+                  element: str = "P2", ordering: str = "MMD_AT_PLUS_A") -> Body:
+    """Assemble ``K`` of one body, clamp its fixed support and factorise the free block."""
+    from skfem import Basis, MeshTri, asm
+    from skfem.models.elasticity import linear_elasticity
+
+    t0 = time.perf_counter()
+    mesh = MeshTri(geometry.points, geometry.triangles, validate=False, sort_t=False)
+    basis = Basis(mesh, _element(element))
+    lam, mu_L = lame_parameters(material.E, material.nu, plane)
+    K = asm(linear_elasticity(float(lam), float(mu_L)), basis).tocsr()
+    fixed_nodes = np.zeros(mesh.p.shape[1], dtype=bool)
+    fixed_nodes[geometry.fixed] = True
+    fac = np.nonzero(fixed_nodes[mesh.facets].all(axis=0))[0]
+    fixed = basis.get_dofs(fac).all()
+    free = np.setdiff1d(np.arange(basis.N), fixed)
+    t1 = time.perf_counter()
+    Kff = K[free][:, free].tocsc()
+    try:
+        lu = spla.splu(Kff, permc_spec=ordering, diag_pivot_thresh=0.0,
+                       options={"SymmetricMode": True})
+    except RuntimeError as exc:  # singular: support missing
+        raise FemcamError(f"stiffness of body {geometry.name} is singular ({exc}); "
+                          "is its fixed support meshed?") from None
+    t2 = time.perf_counter()
+    return Body(name=geometry.name, geometry=geometry, material=material, plane=plane,
+                element=element, mesh=mesh, basis=basis, K=K, free=free, lu=lu, lam=float(lam),
+                mu_L=float(mu_L), t_assembly=t1 - t0, t_factor=t2 - t1)
+
+
+def stress_from_displacement(body: Body, u: np.ndarray):
+    """Nodal stresses (sxx, syy, sxy, szz) in Pa at the P2 (or P1) DOF locations.
+
+    Element strains are evaluated at each element's own nodes and averaged over the elements
+    sharing a node (nodal averaging of the discontinuous P(k-1) stress). ``szz`` is the
+    out-of-plane stress: ``nu (sxx + syy)`` in plane strain, 0 in plane stress.
+    """
+    return stress_operator(body) @ np.asarray(u)
+
+
+def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matrix:
+    """Sparse operator ``S`` with ``S @ u = [sxx; syy; sxy]`` at scalar-DOF nodes (stacked).
+
+    ``nodes`` selects scalar nodes (indices into the scalar DOF numbering of ``body.basis``,
+    vertices first then edge midpoints for P2); default all. Built from the reference-element
+    shape-function gradients at the element nodes, then averaged over neighbouring elements.
+    """
+    b = body.basis
+    mesh = body.mesh
+    elem = b.elem.elem  # scalar element
+    # local node coordinates on the reference triangle (vertices, then edges for P2)
+    ref = np.asarray(elem.doflocs, dtype=float).T
+    nloc = ref.shape[1]
+    # reference gradients dphi_j/dxi at node k: (nloc_j, 2, nloc_k)
+    G = np.zeros((nloc, 2, nloc))
+    for j in range(nloc):
+        _, dphi = elem.lbasis(ref, j)
+        G[j] = dphi
+    p = mesh.p
+    t = mesh.t
+    x0 = p[:, t[0]]
+    J = np.stack([p[:, t[1]] - x0, p[:, t[2]] - x0], axis=2)  # (2, nel, 2): dx_i/dxi_k
+    detJ = J[0, :, 0] * J[1, :, 1] - J[0, :, 1] * J[1, :, 0]
+    invJ = np.empty_like(J)  # dxi_k/dx_i stored as (k, nel, i)
+    invJ[0, :, 0] = J[1, :, 1] / detJ
+    invJ[0, :, 1] = -J[0, :, 1] / detJ
+    invJ[1, :, 0] = -J[1, :, 0] / detJ
+    invJ[1, :, 1] = J[0, :, 0] / detJ
+    # physical gradients: (nloc_j, 2[i], nel, nloc_k)
+    dphi = np.einsum("jkn,kei->jien", G, invJ)
+    # scalar dofs of each element (local order matches elem.lbasis order)
+    sdofs = b.element_dofs[::2] // 2  # vector dofs interleaved (ux, uy) per scalar node
+    nel = t.shape[1]
+    lam, mu = body.lam, body.mu_L
+    rows, cols, vals = [], [], []
+    nscal = b.N // 2
+    # counts for averaging
+    cnt = np.bincount(sdofs.ravel(), minlength=nscal).astype(float)
+    for k in range(nloc):  # node at which stress is evaluated
+        node = sdofs[k]
+        w = 1.0 / cnt[node]
+        for j in range(nloc):
+            dx = dphi[j, 0, :, k]
+            dy = dphi[j, 1, :, k]
+            ux = b.element_dofs[2 * j]
+            uy = b.element_dofs[2 * j + 1]
+            # sxx = (lam+2mu) du/dx + lam dv/dy ; syy = lam du/dx + (lam+2mu) dv/dy ; sxy = mu(du/dy+dv/dx)
+            for comp, cu, cv in ((0, (lam + 2 * mu) * dx, lam * dy),
+                                 (1, lam * dx, (lam + 2 * mu) * dy),
+                                 (2, mu * dy, mu * dx)):
+                r = comp * nscal + node
+                rows += [r, r]
+                cols += [ux, uy]
+                vals += [w * cu, w * cv]
+    del nel
+    S = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
+                      shape=(3 * nscal, b.N))
+    if nodes is not None:
+        nodes = np.asarray(nodes)
+        S = S[np.concatenate([nodes, nodes + nscal, nodes + 2 * nscal])]
+    return S
+
+
+def scalar_node_coordinates(body: Body) -> np.ndarray:
+    """(2, nscal) coordinates of the scalar nodes (vertices, then edge midpoints for P2)."""
+    return body.basis.doflocs[:, ::2]

@@ -1,0 +1,115 @@
+r"""Stress recovery near the contact, half-width fit, stress maxima.
+
+Stresses are reported in Johnson's frame of each body: ``x`` along the surface, ``z >= 0`` depth
+into the body, tension positive (``sx, sz, txz``; ``sy`` is the out-of-plane stress,
+``nu (sx + sz)`` in plane strain). The cam occupies ``y < 0`` in the FE frame, so there
+``z = y_s(x) - y`` and ``txz = -s_xy``; the roller occupies ``y > 0``: ``z = y - y_s(x)``,
+``txz = s_xy``.
+
+Derived quantities (Johnson 1985 §4.2, §7.1):
+
+.. math:: \tau_1 = \sqrt{\left(\tfrac{\sigma_x - \sigma_z}{2}\right)^2 + \tau_{xz}^2},\qquad
+          \sigma_{vM} = \sqrt{\tfrac12[(\sigma_x-\sigma_z)^2 + (\sigma_z-\sigma_y)^2
+          + (\sigma_y-\sigma_x)^2] + 3\tau_{xz}^2}
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..mesh import surface_height
+from .elasticity import Body, scalar_node_coordinates, stress_operator
+
+
+@dataclass(frozen=True)
+class EvalSet:
+    """Precomputed stress operators on the scalar nodes of one body near the contact.
+
+    Sn, St: (3, n_eval, n_c) arrays mapping unit nodal pressure / unit friction traction
+    (already with this body's sign: pressure into the body, friction in the model's sliding
+    sense) to (sx, sz, txz) in Pa. ``surface`` indexes the eval nodes on the contact surface
+    (sorted by x).
+    """
+
+    body: str
+    nodes: np.ndarray
+    x: np.ndarray
+    z: np.ndarray
+    Sn: np.ndarray
+    St: np.ndarray
+    surface: np.ndarray
+
+
+def johnson_frame(body: Body, sxx, syy, sxy):
+    """(sx, sz, txz) of a body in its own Johnson frame from FE-frame stresses."""
+    sign = -1.0 if body.name == "cam" else 1.0
+    return sxx, syy, sign * sxy
+
+
+def depth(body: Body, xy: np.ndarray) -> np.ndarray:
+    """Depth z >= 0 below the body's contact surface of FE-frame points (2, n)."""
+    ys = surface_height(xy[0], body.geometry.R)
+    return (-ys - xy[1]) if body.name == "cam" else (xy[1] - ys)
+
+
+def build_eval_set(body: Body, Un: np.ndarray, Ut: np.ndarray, half_width: float,
+                   max_depth: float) -> EvalSet:
+    """Stress operators at the scalar nodes with ``|x| <= half_width`` and ``z <= max_depth``."""
+    xy = scalar_node_coordinates(body)
+    z = depth(body, xy)
+    tol = 1e-9 * half_width
+    sel = np.nonzero((np.abs(xy[0]) <= half_width + tol) & (z <= max_depth + tol))[0]
+    S = stress_operator(body, sel)
+    ne = sel.size
+    Sn = (S @ Un).reshape(3, ne, -1)
+    St = (S @ Ut).reshape(3, ne, -1)
+    sx_n, sz_n, txz_n = johnson_frame(body, Sn[0], Sn[1], Sn[2])
+    sx_t, sz_t, txz_t = johnson_frame(body, St[0], St[1], St[2])
+    Sn = np.stack([sx_n, sz_n, txz_n])
+    St = np.stack([sx_t, sz_t, txz_t])
+    zs = z[sel]
+    surf = np.nonzero(np.abs(zs) <= 1e-6 * half_width)[0]
+    surf = surf[np.argsort(xy[0, sel][surf])]
+    return EvalSet(body=body.name, nodes=sel, x=xy[0, sel], z=np.maximum(zs, 0.0), Sn=Sn, St=St,
+                   surface=surf)
+
+
+def derived(sx, sz, txz, sy):
+    """(tau1, von_mises) from the stress components (Pa)."""
+    tau1 = np.sqrt((0.5 * (sx - sz)) ** 2 + txz**2)
+    vm = np.sqrt(0.5 * ((sx - sz) ** 2 + (sz - sy) ** 2 + (sy - sx) ** 2) + 3.0 * txz**2)
+    return tau1, vm
+
+
+def fit_half_width(x: np.ndarray, p: np.ndarray, threshold: float = 0.2):
+    r"""Least-squares fit of the Hertz ellipse to the nodal pressure.
+
+    .. math:: p^2 = c\,(a^2 - (x - x_0)^2) = \alpha + \beta x + \gamma x^2
+
+    over the nodes with ``p > threshold * max(p)``; returns ``(a, x0, p0_fit)`` with
+    ``p0_fit = sqrt(c) a``. Robust against the discrete edge of the loaded zone (the last loaded
+    node would be a grid quantity, not the half-width).
+    """
+    pm = float(np.max(p)) if p.size else 0.0
+    if pm <= 0.0:
+        return 0.0, 0.0, 0.0
+    sel = p > threshold * pm
+    if np.count_nonzero(sel) < 3:
+        i = int(np.argmax(p))
+        return 0.0, float(x[i]), pm
+    xs = x[sel]
+    xc = np.mean(xs)
+    sc = np.ptp(xs) or 1.0
+    t = (xs - xc) / sc
+    V = np.stack([np.ones_like(t), t, t**2], axis=1)
+    al, be, ga = np.linalg.lstsq(V, p[sel] ** 2, rcond=None)[0]
+    if ga >= 0.0:  # not a cap: fall back to the nodal maximum
+        i = int(np.argmax(p))
+        return 0.0, float(x[i]), pm
+    c = -ga
+    t0 = be / (2 * c)
+    a2 = (al + c * t0**2) / c
+    a = float(np.sqrt(max(a2, 0.0)) * sc)
+    return a, float(xc + t0 * sc), float(np.sqrt(c * max(a2, 0.0)))

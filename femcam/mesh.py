@@ -1,0 +1,283 @@
+"""gmsh mesh of the contact region of a cam-roller pair (one mesh per body).
+
+Geometry (local contact frame, SI units)
+----------------------------------------
+The two bodies touch at the origin; ``x`` runs along the common tangent, ``y`` points from the
+cam into the roller. Each body is meshed on its own (no shared nodes):
+
+* **cam** (below, ``y <= 0``): surface arc of signed radius ``rho`` (> 0 convex, < 0 concave,
+  ``inf`` flat), ``y_s(x) = -kappa x^2 / (1 + sqrt(1 - kappa^2 x^2))`` with ``kappa = 1/rho``
+  (this is ``-(rho - sqrt(rho^2 - x^2))`` written so that it stays exact as ``kappa -> 0``);
+  the arc spans ``|x| <= W = 0.9 L``, vertical sides run down to ``y = -L`` and the bottom
+  ``y = -L`` is the fixed support (``"cam_fixed"``).
+* **roller** (above): the same construction with radius ``Rr`` mirrored to ``y >= 0``; its
+  far cut ``y = L`` is fixed (``"roller_fixed"``). With ``L = Rr`` the roller is a disk sector
+  clamped along (most of) its diameter: the bore/pin far from the contact.
+
+``L = min(|R|, Lcap)`` per body with ``Lcap = MeshOptions.domain_over_a * a_ref`` (default: no
+cap for the roller, ``Rr`` for a flat or large cam), so the finite-body effect is a parameter
+that can be studied (``docs/fe.md``).
+
+Mesh: linear triangles. The surface is split at ``x = +-c a_ref`` (``c = fine_half_width``); the
+middle curve is transfinite with a uniform vertex spacing ``h = a_ref / a_over_h`` and its
+vertices are snapped to the exact uniform abscissae ``x_i = -c a_ref + i h`` on the arc, so that
+the cam and roller contact vertices pair one to one. A gmsh ``Threshold`` field on the distance
+to that curve keeps ``h`` within ``fine_depth * a_ref`` of it and then grows linearly with slope
+``growth`` up to ``L / 8``. Size-from-points/curvature/boundary are switched off because they
+override the field. Arc-centre points that gmsh returns unreferenced are dropped.
+
+Defaults of every parameter are recorded in ``meshes/contact_region.toml``; the same geometry
+as a gmsh ``.geo`` file with ``DefineConstant`` sliders is ``meshes/contact_region.geo``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _validate as chk
+from .errors import FemcamError, InputError
+
+#: physical names written into the gmsh model (one set per body)
+PHYSICAL_NAMES = ("roller_contact", "cam_contact", "roller_fixed", "cam_fixed", "roller", "cam")
+
+
+@dataclass(frozen=True, kw_only=True)
+class MeshOptions:
+    """Mesh parameters, all relative to the reference half-width ``a_ref``.
+
+    a_over_h: number of elements per half-width in the fine zone (h = a_ref / a_over_h).
+    fine_half_width: fine zone spans |x| <= fine_half_width * a_ref along each contact curve.
+    fine_depth: the mesh stays at size h up to this distance (x a_ref) from the fine curve.
+    growth: slope d(size)/d(distance) beyond the fine band (0.05 .. 1).
+    domain_over_a: body size cap L <= domain_over_a * a_ref (None: roller L = Rr,
+        cam L = min(|rho|, Rr)).
+    max_size_fraction: largest element size as a fraction of the body size L.
+    """
+
+    a_over_h: float = 20.0
+    fine_half_width: float = 2.5
+    fine_depth: float = 0.6
+    growth: float = 0.3
+    domain_over_a: float | None = None
+    max_size_fraction: float = 0.125
+
+    def __post_init__(self):
+        chk.in_range("a_over_h", self.a_over_h, 2.0, 400.0, "")
+        chk.in_range("fine_half_width", self.fine_half_width, 1.2, 20.0, "(x a_ref)")
+        chk.in_range("fine_depth", self.fine_depth, 0.0, 20.0, "(x a_ref)")
+        chk.in_range("growth", self.growth, 0.05, 1.0, "")
+        if self.domain_over_a is not None:
+            chk.in_range("domain_over_a", self.domain_over_a, 5.0 * self.fine_half_width, 1e7, "(x a_ref)")
+        chk.in_range("max_size_fraction", self.max_size_fraction, 0.01, 0.5, "")
+
+
+@dataclass(frozen=True)
+class BodyMesh:
+    """Linear triangle mesh of one body.
+
+    points (2, N) m; triangles (3, T) counter-clockwise; fixed (nodes on the fixed support);
+    contact (fine-zone vertex nodes, sorted by x); contact_x their abscissae (m, uniform);
+    surface (all nodes on the contact surface curve); L body size (m); R surface radius (m,
+    signed, inf for flat).
+    """
+
+    name: str
+    points: np.ndarray
+    triangles: np.ndarray
+    fixed: np.ndarray
+    contact: np.ndarray
+    contact_x: np.ndarray
+    surface: np.ndarray
+    L: float
+    R: float
+
+
+@dataclass(frozen=True)
+class ContactMesh:
+    """The two body meshes and the parameters they were built with."""
+
+    cam: BodyMesh
+    roller: BodyMesh
+    Rr: float
+    rho: float
+    a_ref: float
+    h: float
+    options: MeshOptions
+
+    @property
+    def n_nodes(self) -> int:
+        return self.cam.points.shape[1] + self.roller.points.shape[1]
+
+
+def surface_height(x, R):
+    r"""Depth of a circular arc of signed radius ``R`` below its tangent at x = 0 (m).
+
+    .. math:: \delta(x) = R - \sqrt{R^2 - x^2} = \frac{\kappa x^2}{1 + \sqrt{1 - \kappa^2 x^2}},
+              \quad \kappa = 1/R
+
+    exact for every ``R`` including ``inf`` (flat, 0) and ``R < 0`` (concave, negative).
+
+    >>> round(float(surface_height(0.006, 0.01)) * 1e3, 6)
+    2.0
+    """
+    x = np.asarray(x, dtype=float)
+    k = 0.0 if math.isinf(R) else 1.0 / R
+    return k * x**2 / (1.0 + np.sqrt(np.maximum(1.0 - (k * x) ** 2, 0.0)))
+
+
+def _body_size(R: float, cap: float | None, default_cap: float) -> float:
+    L = abs(R) if math.isfinite(R) else math.inf
+    c = cap if cap is not None else default_cap
+    return min(L, c)
+
+
+def _mesh_body(gmsh, name: str, R: float, L: float, a_ref: float, opts: MeshOptions) -> BodyMesh:
+    """Mesh one body in the cam orientation (below y = 0); caller mirrors the roller."""
+    h = a_ref / opts.a_over_h
+    xf = opts.fine_half_width * a_ref
+    n_fine = int(round(2 * xf / h))
+    xf = 0.5 * n_fine * h  # exact multiple of h
+    W = 0.9 * L
+    if W <= xf * 1.5:
+        raise InputError(f"body size L = {L:g} m is too small for the fine zone |x| <= {xf:g} m "
+                         f"({name}); increase domain_over_a or reduce fine_half_width")
+    gmsh.model.add(name)
+    geo = gmsh.model.geo
+    ys = -surface_height(np.array([-W, -xf, xf, W]), R)
+    lc = L * opts.max_size_fraction
+    p = [geo.addPoint(x, y, 0.0, lc) for x, y in zip((-W, -xf, xf, W), ys, strict=True)]
+    if math.isinf(R):
+        arcs = [geo.addLine(p[0], p[1]), geo.addLine(p[1], p[2]), geo.addLine(p[2], p[3])]
+    else:
+        c = geo.addPoint(0.0, -R, 0.0, lc)
+        arcs = [geo.addCircleArc(p[i], c, p[i + 1]) for i in range(3)]
+    br = geo.addPoint(W, -L, 0.0, lc)
+    bl = geo.addPoint(-W, -L, 0.0, lc)
+    right = geo.addLine(p[3], br) if ys[3] > -L + 1e-12 * L else None
+    bottom = geo.addLine(br if right else p[3], bl)
+    left = geo.addLine(bl, p[0]) if ys[0] > -L + 1e-12 * L else None
+    # loop must be closed: if a side has zero length, the arc end is the bottom corner
+    loop = arcs + [c_ for c_ in (right, bottom, left) if c_ is not None]
+    if right is None or left is None:
+        raise InputError(f"body {name}: arc reaches the fixed support; use a larger |R| or smaller W")
+    cl = geo.addCurveLoop(loop)
+    s = geo.addPlaneSurface([cl])
+    geo.mesh.setTransfiniteCurve(arcs[1], n_fine + 1)
+    geo.synchronize()
+    gmsh.model.addPhysicalGroup(1, arcs, name=f"{name}_contact")
+    gmsh.model.addPhysicalGroup(1, [bottom], name=f"{name}_fixed")
+    gmsh.model.addPhysicalGroup(2, [s], name=name)
+    f = gmsh.model.mesh.field
+    fd = f.add("Distance")
+    f.setNumbers(fd, "CurvesList", [arcs[1]])
+    f.setNumber(fd, "Sampling", max(2 * n_fine, 100))
+    ft = f.add("Threshold")
+    f.setNumber(ft, "InField", fd)
+    f.setNumber(ft, "SizeMin", h)
+    f.setNumber(ft, "SizeMax", lc)
+    f.setNumber(ft, "DistMin", opts.fine_depth * a_ref)
+    f.setNumber(ft, "DistMax", opts.fine_depth * a_ref + (lc - h) / opts.growth)
+    f.setAsBackgroundMesh(ft)
+    gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
+    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
+    gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
+    gmsh.option.setNumber("Mesh.Algorithm", 6)  # Frontal-Delaunay: good quality graded meshes
+    gmsh.option.setNumber("Mesh.ElementOrder", 1)
+    gmsh.model.mesh.generate(2)
+
+    tags, xyz, _ = gmsh.model.mesh.getNodes()
+    pts = xyz.reshape(-1, 3)[:, :2]
+    index = np.full(int(tags.max()) + 1, -1, dtype=np.int64)
+    index[tags.astype(np.int64)] = np.arange(tags.size)
+    _, _, ntri = gmsh.model.mesh.getElements(2, s)
+    tri = index[np.asarray(ntri[0], dtype=np.int64)].reshape(-1, 3)
+
+    def curve_nodes(curves):
+        out = []
+        for cv in curves:
+            nt = gmsh.model.mesh.getNodes(1, cv, includeBoundary=True)[0]
+            out.append(index[nt.astype(np.int64)])
+        return np.unique(np.concatenate(out))
+
+    fine = curve_nodes([arcs[1]])
+    surf = curve_nodes(arcs)
+    fixed = curve_nodes([bottom])
+    gmsh.model.remove()
+
+    # drop unreferenced nodes (arc centres, geometry-only points)
+    used = np.unique(tri)
+    renum = np.full(pts.shape[0], -1, dtype=np.int64)
+    renum[used] = np.arange(used.size)
+    pts = pts[used]
+    tri = renum[tri]
+    fine, surf, fixed = renum[fine], renum[surf], renum[fixed]
+    # snap fine-zone vertices to the uniform abscissae on the exact arc
+    order = np.argsort(pts[fine, 0])
+    fine = fine[order]
+    if fine.size != n_fine + 1:
+        raise FemcamError(f"gmsh returned {fine.size} fine-zone nodes, expected {n_fine + 1}")
+    xs = -xf + h * np.arange(n_fine + 1)
+    pts[fine, 0] = xs
+    pts[fine, 1] = -surface_height(xs, R)
+    # counter-clockwise triangles
+    d = pts[tri]
+    det = (d[:, 1, 0] - d[:, 0, 0]) * (d[:, 2, 1] - d[:, 0, 1]) - \
+          (d[:, 2, 0] - d[:, 0, 0]) * (d[:, 1, 1] - d[:, 0, 1])
+    tri[det < 0] = tri[det < 0][:, [0, 2, 1]]
+    return BodyMesh(name=name, points=pts.T.copy(), triangles=tri.T.copy(), fixed=fixed,
+                    contact=fine, contact_x=xs, surface=surf, L=float(L), R=float(R))
+
+
+def _mirror(b: BodyMesh) -> BodyMesh:
+    pts = b.points.copy()
+    pts[1] *= -1.0
+    tri = b.triangles[[0, 2, 1]].copy()
+    return BodyMesh(name=b.name, points=pts, triangles=tri, fixed=b.fixed, contact=b.contact,
+                    contact_x=b.contact_x, surface=b.surface, L=b.L, R=b.R)
+
+
+def build_contact_mesh(*, Rr: float, rho: float, a_ref: float,
+                       options: MeshOptions | None = None) -> ContactMesh:
+    """Mesh the cam and roller bodies around the contact (see module docstring).
+
+    Rr roller radius (m, > 0); rho cam surface radius of curvature (m; < 0 concave, inf flat);
+    a_ref the contact half-width the mesh is graded for (m).
+    """
+    opts = options or MeshOptions()
+    Rr = chk.positive("Rr", Rr, "m")
+    a_ref = chk.positive("a_ref", a_ref, "m")
+    rho = float(rho)
+    if math.isnan(rho) or rho == 0.0:
+        raise chk.fail("rho", rho, "m", "must be nonzero (use inf for a flat cam)")
+    if math.isfinite(rho) and rho < 0 and -rho <= Rr:
+        raise chk.fail("rho", rho, "m", f"a concave cam needs |rho| > Rr = {Rr:g} m (else the roller "
+                     "does not fit)")
+    if opts.fine_half_width * a_ref > 0.5 * Rr:
+        raise chk.fail("a_ref", a_ref, "m", f"must be <= Rr/(2 fine_half_width) = "
+                     f"{Rr / (2 * opts.fine_half_width):g} m: the contact zone would not be small "
+                     "against the roller (far outside Hertz theory and this mesh layout)")
+    cap = None if opts.domain_over_a is None else opts.domain_over_a * a_ref
+    L_roller = _body_size(Rr, cap, math.inf)
+    L_cam = _body_size(rho, cap, Rr)
+    import gmsh
+
+    init_here = not gmsh.isInitialized()
+    if init_here:
+        gmsh.initialize(["-nopopup"], readConfigFiles=False)
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.option.setNumber("General.Verbosity", 1)
+        cam = _mesh_body(gmsh, "cam", rho, L_cam, a_ref, opts)
+        roller = _mirror(_mesh_body(gmsh, "roller", Rr, L_roller, a_ref, opts))
+    except FemcamError:
+        raise
+    except Exception as exc:  # gmsh raises plain Exception
+        raise FemcamError(f"gmsh failed to mesh the contact region: {exc}") from None
+    finally:
+        if init_here:
+            gmsh.finalize()
+    return ContactMesh(cam=cam, roller=roller, Rr=Rr, rho=rho, a_ref=a_ref,
+                       h=a_ref / opts.a_over_h, options=opts)

@@ -1,0 +1,42 @@
+"""Off-screen pyvista rendering of an FE contact solution (von Mises near the contact)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+
+def plot_von_mises(result, path, *, window: float = 3.0, size=(760, 640), scalar: str = "von_mises",
+                   show_edges: bool = False):
+    """Render ``scalar`` (default von Mises, shown in MPa) over ``|x|, |y| <= window * a`` to a PNG.
+
+    ``result`` is a :class:`femcam.fe.ContactResult`; lengths are shown in mm. Returns the path.
+    """
+    import pyvista as pv
+
+    from ..fe.export import scene_arrays
+
+    points, cells, cell_type, data, body = scene_arrays(result)
+    ctype = pv.CellType.QUADRATIC_TRIANGLE if cell_type == "triangle6" else pv.CellType.TRIANGLE
+    grid = pv.UnstructuredGrid({ctype: cells}, points * 1e3)  # mm
+    grid.point_data[f"{scalar} (MPa)"] = data[scalar] / 1e6
+    a = (result.a if result.a > 0 else result.model.a_ref) * 1e3
+    L = window * a
+    clip = grid.clip_box([-L, L, -L, L, -1.0, 1.0], invert=False)
+    pl = pv.Plotter(off_screen=True, window_size=list(size))
+    pl.add_mesh(clip, scalars=f"{scalar} (MPa)", cmap="viridis", show_edges=False,
+                scalar_bar_args={"title": f"{scalar.replace('_', ' ')} (MPa)", "vertical": False,
+                                   "position_x": 0.2, "position_y": 0.02, "width": 0.6})
+    if show_edges:
+        pl.add_mesh(clip.extract_all_edges(), color="white", opacity=0.08, line_width=0.5)
+    pl.add_text(f"F = {result.F:g} N, rho = {result.rho * 1e3:g} mm, mu = {result.mu:g}, "
+                f"a = {result.a * 1e3:.4f} mm, p0 = {result.p0 / 1e6:.0f} MPa (x, y in mm)",
+                font_size=9, position="upper_left")
+    pl.view_xy()
+    pl.camera.zoom(1.1)
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    pl.screenshot(str(path))
+    pl.close()
+    return path
+
+

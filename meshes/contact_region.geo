@@ -1,0 +1,54 @@
+// femcam contact-region body (the cam; the roller is the same body with R = Rr mirrored to y > 0).
+// Same construction as femcam.mesh._mesh_body; defaults from contact_region.toml. Units: mm.
+// Open in the gmsh GUI and move the sliders:  gmsh meshes/contact_region.geo
+SetFactory("Built-in");
+DefineConstant[
+  R = {20.0, Min -100, Max 100, Step 0.5, Name "Geometry/Surface radius R (mm, <0 concave)"},
+  a_ref = {0.105, Min 0.001, Max 1, Step 0.005, Name "Geometry/Reference half-width a_ref (mm)"},
+  L_cap = {10.0, Min 0.5, Max 100, Step 0.5, Name "Geometry/Body size cap (mm)"},
+  a_over_h = {20, Min 2, Max 80, Step 1, Name "Mesh/a_ref over h"},
+  fine_half_width = {2.5, Min 1.2, Max 10, Step 0.1, Name "Mesh/fine zone half-width (x a_ref)"},
+  fine_depth = {0.6, Min 0, Max 5, Step 0.1, Name "Mesh/fine band depth (x a_ref)"},
+  growth = {0.3, Min 0.05, Max 1, Step 0.05, Name "Mesh/size growth slope"}
+];
+L = (Fabs(R) < L_cap) ? Fabs(R) : L_cap;
+W = 0.9 * L;
+h = a_ref / a_over_h;
+n_fine = Round(2 * fine_half_width * a_ref / h);
+xf = 0.5 * n_fine * h;
+lc = L / 8;
+k = 1 / R;
+// surface y_s(x) = -k x^2 / (1 + sqrt(1 - k^2 x^2))
+Point(1) = {-W, -k * W^2 / (1 + Sqrt(1 - k^2 * W^2)), 0, lc};
+Point(2) = {-xf, -k * xf^2 / (1 + Sqrt(1 - k^2 * xf^2)), 0, lc};
+Point(3) = {xf, -k * xf^2 / (1 + Sqrt(1 - k^2 * xf^2)), 0, lc};
+Point(4) = {W, -k * W^2 / (1 + Sqrt(1 - k^2 * W^2)), 0, lc};
+Point(5) = {0, -R, 0, lc};      // arc centre (not meshed; femcam drops it)
+Point(6) = {W, -L, 0, lc};
+Point(7) = {-W, -L, 0, lc};
+Circle(1) = {1, 5, 2};
+Circle(2) = {2, 5, 3};
+Circle(3) = {3, 5, 4};
+Line(4) = {4, 6};
+Line(5) = {6, 7};
+Line(6) = {7, 1};
+Curve Loop(1) = {1, 2, 3, 4, 5, 6};
+Plane Surface(1) = {1};
+Transfinite Curve{2} = n_fine + 1;
+Physical Curve("cam_contact") = {1, 2, 3};
+Physical Curve("cam_fixed") = {5};
+Physical Surface("cam") = {1};
+Field[1] = Distance;
+Field[1].CurvesList = {2};
+Field[1].Sampling = 2 * n_fine;
+Field[2] = Threshold;
+Field[2].InField = 1;
+Field[2].SizeMin = h;
+Field[2].SizeMax = lc;
+Field[2].DistMin = fine_depth * a_ref;
+Field[2].DistMax = fine_depth * a_ref + (lc - h) / growth;
+Background Field = 2;
+Mesh.MeshSizeFromPoints = 0;
+Mesh.MeshSizeFromCurvature = 0;
+Mesh.MeshSizeExtendFromBoundary = 0;
+Mesh.Algorithm = 6;
