@@ -1,0 +1,37 @@
+"""FE sweep over cam angle: per-angle pipeline, chunked/resumable store, parallel executors.
+
+>>> from femcam.sweep import sweep            # doctest: +SKIP
+>>> r = sweep("examples/seed002_study_model.toml", out="out", workers=2)  # doctest: +SKIP
+
+Modules: :mod:`~femcam.sweep.pipeline` (per-angle chain), :mod:`~femcam.sweep.families` (model
+families, per-process model cache),
+:mod:`~femcam.sweep.store` (chunked atomic store, resume), :mod:`~femcam.sweep.parallel`
+(serial / process pool / Dask), :mod:`~femcam.sweep.result` (:class:`SweepResult`, columns),
+:mod:`~femcam.sweep.run` (:func:`sweep`).
+"""
+
+from .parallel import Progress, run_tasks
+from .pipeline import SweepOptions, plan_families, run_chunk
+from .result import COLUMNS, SweepResult
+from .run import parse_angles_deg, sweep
+
+__all__ = ["COLUMNS", "Progress", "SweepOptions", "SweepResult", "parse_angles_deg",
+           "plan_families", "run_chunk", "run_tasks", "sweep"]
+
+
+# ``femcam.sweep`` is both this package and the entry point: ``femcam.sweep(scene, ...)`` calls
+# :func:`sweep`. A callable module keeps ``import femcam.sweep.pipeline`` and
+# ``femcam.sweep(...)`` both working, where re-exporting the function under the package's own
+# name would shadow the package.
+def _install_callable_module():
+    import sys
+    import types
+
+    class _SweepModule(types.ModuleType):
+        def __call__(self, scene, **kwargs):
+            return sweep(scene, **kwargs)
+
+    sys.modules[__name__].__class__ = _SweepModule
+
+
+_install_callable_module()

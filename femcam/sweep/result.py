@@ -1,0 +1,162 @@
+"""The sweep's result table and :class:`SweepResult`.
+
+One row per cam angle. Inside the library every column is SI (rad, m, m/s, N, Pa, s); the
+CSV writer in :mod:`femcam.io` converts to the unit written in the column name through
+:data:`COLUMNS`.
+
+Per-angle ``status``:
+
+* ``"ok"``        -- contact, the requested method answered;
+* ``"liftoff"``   -- Fc <= 0: no contact, stresses are 0, Hertz/FE widths NaN;
+* ``"failed"``    -- the FE solve at this angle failed; ``message`` says why, the sweep went on.
+
+``flags`` is a ``;``-separated list of remarks: ``hertz_invalid`` (1/R <= 0, e.g. a concave
+cam nearly conformal with the roller: the FE still answers but there is no Hertz reference),
+``hertz_large_a`` (a/R not small: Hertz itself is questionable), ``rebuilt`` (the model of the
+angle's family did not cover it and a model was built for this angle alone).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+#: (internal SI name, CSV column name, factor SI -> CSV unit). Order = CSV column order.
+COLUMNS: tuple[tuple[str, str, float], ...] = (
+    ("theta", "theta_deg", 180.0 / np.pi),
+    ("s", "s_mm", 1e3),
+    ("v", "v_m_s", 1.0),
+    ("a", "a_m_s2", 1.0),
+    ("j", "j_m_s3", 1.0),
+    ("phi", "phi_deg", 180.0 / np.pi),
+    ("rho", "rho_mm", 1e3),
+    ("Fc", "Fc_N", 1.0),
+    ("a_hertz", "a_hertz_um", 1e6),
+    ("p0_hertz", "p0_hertz_MPa", 1e-6),
+    ("a_fe", "a_fe_um", 1e6),
+    ("p0_fe", "p0_fe_MPa", 1e-6),
+    ("err_a", "err_a_pct", 100.0),
+    ("err_p0", "err_p0_pct", 100.0),
+    ("vm_max", "vm_max_MPa", 1e-6),
+    ("vm_depth", "vm_depth_um", 1e6),
+    ("tau1_max", "tau1_max_MPa", 1e-6),
+    ("tau1_depth", "tau1_depth_um", 1e6),
+    ("sx_min", "sx_min_MPa", 1e-6),
+    ("sx_max", "sx_max_MPa", 1e-6),
+    ("sz_min", "sz_min_MPa", 1e-6),
+    ("txz_absmax", "txz_absmax_MPa", 1e-6),
+    ("fe_time", "fe_time_ms", 1e3),
+)
+
+#: string columns (CSV keeps them verbatim)
+TEXT_COLUMNS = ("status", "flags", "message")
+
+#: numeric diagnostics stored in the NPZ only
+EXTRA_COLUMNS = ("iterations", "residual", "n_dofs", "family")
+
+NUMERIC = tuple(c[0] for c in COLUMNS) + EXTRA_COLUMNS
+STATUSES = ("ok", "liftoff", "failed")
+
+
+def empty_rows(n: int) -> dict[str, np.ndarray]:
+    """A table of ``n`` rows: NaN numbers, empty strings."""
+    rows = {name: np.full(n, np.nan) for name in NUMERIC}
+    for name in TEXT_COLUMNS:
+        rows[name] = np.full(n, "", dtype=object)
+    return rows
+
+
+def concat_rows(parts: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
+    """Stack chunk tables (already in angle order)."""
+    if not parts:
+        return {k: np.asarray(v) for k, v in empty_rows(0).items()}
+    out = {}
+    for name in NUMERIC:
+        out[name] = np.concatenate([np.asarray(p[name], dtype=float) for p in parts])
+    for name in TEXT_COLUMNS:
+        out[name] = np.concatenate([np.asarray(p[name]).astype(str) for p in parts])
+    return out
+
+
+@dataclass(frozen=True)
+class SweepResult:
+    """Everything a sweep produced.
+
+    Attributes
+    ----------
+    table : dict[str, ndarray]
+        One array per column (SI names from :data:`COLUMNS`, plus ``status``, ``flags``,
+        ``message`` and the diagnostics ``iterations``, ``residual``, ``n_dofs``, ``family``).
+    method : ``"fe"`` or ``"hertz"``.
+    provenance : dict
+        femcam/gmsh/scikit-fem/numpy versions, scene file and hash, command line, date, options.
+    paths : dict[str, str]
+        Files written (``csv``, ``npz``, ``pvd``, plots ...); empty for an in-memory sweep.
+    timings : dict[str, float]
+        Wall times in s: ``analytic``, ``compute`` (all chunks), ``total``; ``n_models`` built.
+    n_chunks_computed, n_chunks_resumed : how many chunks this call computed / loaded from disk.
+    """
+
+    table: dict
+    method: str
+    provenance: dict = field(default_factory=dict)
+    paths: dict = field(default_factory=dict)
+    timings: dict = field(default_factory=dict)
+    n_chunks_computed: int = 0
+    n_chunks_resumed: int = 0
+
+    def __getitem__(self, name):
+        return self.table[name]
+
+    @property
+    def theta(self) -> np.ndarray:
+        return self.table["theta"]
+
+    @property
+    def status(self) -> np.ndarray:
+        return self.table["status"]
+
+    @property
+    def n_angles(self) -> int:
+        return int(self.table["theta"].size)
+
+    @property
+    def ok(self) -> np.ndarray:
+        """Rows with contact and an answer."""
+        return self.table["status"] == "ok"
+
+    @property
+    def n_failed(self) -> int:
+        return int(np.count_nonzero(self.table["status"] == "failed"))
+
+    def worst_index(self, column: str = "p0_fe") -> int:
+        """Row index of the largest value of ``column`` among ``ok`` rows (falls back to Hertz p0)."""
+        vals = np.where(self.ok, self.table[column], np.nan)
+        if not np.any(np.isfinite(vals)):
+            vals = np.where(self.ok, self.table["p0_hertz"], np.nan)
+        if not np.any(np.isfinite(vals)):
+            return 0
+        return int(np.nanargmax(vals))
+
+    def summary(self) -> dict:
+        """Peak values over the cycle (SI), for tables and reports."""
+        t = self.table
+        ok = self.ok
+
+        def peak(name):
+            v = np.where(ok, np.abs(t[name]), np.nan)
+            return float(np.nanmax(v)) if np.any(np.isfinite(v)) else float("nan")
+
+        return {
+            "Fc_max": peak("Fc"),
+            "phi_max": peak("phi"),
+            "p0_hertz_max": peak("p0_hertz"),
+            "p0_fe_max": peak("p0_fe"),
+            "vm_max": peak("vm_max"),
+            "tau1_max": peak("tau1_max"),
+            "err_p0_absmax": peak("err_p0"),
+            "err_a_absmax": peak("err_a"),
+            "n_liftoff": int(np.count_nonzero(t["status"] == "liftoff")),
+            "n_failed": self.n_failed,
+        }

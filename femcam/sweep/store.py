@@ -1,0 +1,133 @@
+"""Chunked, atomic, resumable on-disk store of a sweep.
+
+Layout of ``DIR/chunks/``::
+
+    manifest.json        scene hash, angle hash, options, chunk boundaries
+    chunk_00000.npz      rows of chunk 0 (written to a temporary file, then os.replace)
+    ...
+
+Why: a sweep of thousands of FE solves can be killed (ctrl-C, a cluster pre-emption, a full
+disk). Each chunk is written atomically -- a reader sees either the whole chunk or none of it --
+so ``resume`` loads every finished chunk and computes only the missing ones. The manifest makes
+sure a resume continues *the same* sweep: a different scene, angle set or option refuses with a
+message instead of silently mixing results.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import InputError
+from .result import NUMERIC, TEXT_COLUMNS
+
+MANIFEST = "manifest.json"
+FORMAT_VERSION = 1
+
+
+def array_hash(arr) -> str:
+    """SHA-256 of a float array's bytes (stable across runs and machines of one endianness)."""
+    a = np.ascontiguousarray(np.asarray(arr, dtype="<f8"))
+    return hashlib.sha256(a.tobytes()).hexdigest()
+
+
+def _atomic_write_bytes(path: Path, write) -> None:
+    """Call ``write(fileobj)`` on a temp file next to ``path``, fsync, then rename over ``path``."""
+    fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as f:
+            write(f)
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+
+
+def atomic_write_text(path, text: str) -> None:
+    _atomic_write_bytes(Path(path), lambda f: f.write(text.encode("utf-8")))
+
+
+class ChunkStore:
+    """Chunks of a sweep in ``root`` (a directory), keyed by a manifest.
+
+    ``key`` is a JSON-able dict (scene hash, angle hash, method, options) that identifies the
+    sweep; ``bounds`` are the chunk boundaries ``[(start, stop), ...]`` in row indices.
+    """
+
+    def __init__(self, root, key: dict, bounds: list[tuple[int, int]]):
+        self.root = Path(root)
+        self.key = json.loads(json.dumps(key, sort_keys=True))
+        self.bounds = [(int(a), int(b)) for a, b in bounds]
+
+    # -- manifest -----------------------------------------------------------------------
+    def _manifest(self) -> dict:
+        return {"format": FORMAT_VERSION, "key": self.key, "bounds": self.bounds}
+
+    def open(self, resume: bool) -> set[int]:
+        """Prepare the directory; return the ids of chunks already finished (resume only).
+
+        Without ``resume`` old chunks are deleted. With ``resume`` a manifest for a different
+        sweep raises :class:`InputError` naming what differs.
+        """
+        self.root.mkdir(parents=True, exist_ok=True)
+        mpath = self.root / MANIFEST
+        for tmp in self.root.glob("*.tmp"):  # leftovers of a killed write
+            tmp.unlink(missing_ok=True)
+        if resume and mpath.exists():
+            try:
+                old = json.loads(mpath.read_text())
+            except (OSError, ValueError):
+                old = None
+            if old is not None and old != json.loads(json.dumps(self._manifest(), sort_keys=True)):
+                diff = sorted(k for k in set(old.get("key", {})) | set(self.key)
+                              if old.get("key", {}).get(k) != self.key.get(k))
+                if old.get("bounds") != self.bounds:
+                    diff.append("chunk bounds")
+                raise InputError(
+                    f"resume = True: {mpath} belongs to a different sweep (differs in: "
+                    f"{', '.join(diff) or 'format'}); rerun without --resume or use another --out")
+            if old is not None:
+                return {i for i in range(len(self.bounds)) if self._readable(i)}
+        # fresh sweep: drop old chunks, write the manifest
+        for p in self.root.glob("chunk_*.npz"):
+            p.unlink()
+        atomic_write_text(mpath, json.dumps(self._manifest(), indent=1, sort_keys=True))
+        return set()
+
+    # -- chunks -------------------------------------------------------------------------
+    def path(self, i: int) -> Path:
+        return self.root / f"chunk_{i:05d}.npz"
+
+    def _readable(self, i: int) -> bool:
+        p = self.path(i)
+        if not p.exists():
+            return False
+        try:
+            rows = self.load(i)
+        except Exception:  # truncated/corrupt file (should not happen with atomic writes)
+            return False
+        start, stop = self.bounds[i]
+        return rows["theta"].shape == (stop - start,)
+
+    def write(self, i: int, rows: dict) -> Path:
+        """Write chunk ``i`` atomically."""
+        arrays = {name: np.asarray(rows[name], dtype=float) for name in NUMERIC}
+        for name in TEXT_COLUMNS:
+            arrays[name] = np.asarray(rows[name]).astype(str)
+        p = self.path(i)
+        _atomic_write_bytes(p, lambda f: np.savez(f, **arrays))
+        return p
+
+    def load(self, i: int) -> dict:
+        with np.load(self.path(i), allow_pickle=False) as z:
+            return {name: z[name] for name in z.files}

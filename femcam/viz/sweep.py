@@ -1,0 +1,147 @@
+"""PNG plots of a sweep (matplotlib, Agg; imported lazily).
+
+* ``p0_vs_angle.png``       -- peak pressure against cam angle: Hertz (line) and FE (points);
+* ``surface_stress_worst.png`` -- surface sx, sz, txz along x at the worst angle, FE points and
+  Hertz lines (as seed 002 Figs. 3-5);
+* ``maxima_vs_angle.png``   -- von Mises and tau1 maxima against cam angle (FE points, Hertz lines);
+* ``svaj_loads.png``        -- s, v, a, j and phi, rho, Fc against cam angle.
+
+Units on the axes: degrees, mm, MPa, N, um.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+
+def _plt():
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def _save(fig, path: Path) -> str:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=90)
+    _plt().close(fig)
+    return str(path)
+
+
+def plot_p0(result, path) -> str:
+    plt = _plt()
+    t = result.table
+    deg = np.degrees(t["theta"])
+    fe = result.method == "fe"
+    fig, axs = plt.subplots(2 if fe else 1, 1, figsize=(7, 5 if fe else 3.4), sharex=True,
+                            squeeze=False, gridspec_kw={"height_ratios": [2.2, 1] if fe else [1]})
+    ax = axs[0, 0]
+    ax.plot(deg, t["p0_hertz"] / 1e6, "-", color="C0", label="Hertz (Johnson eq. 4.45)")
+    if fe:
+        ax.plot(deg, t["p0_fe"] / 1e6, ".", color="C3", ms=3, label="FE")
+        axs[1, 0].plot(deg, 100 * t["err_p0"], "-", color="C3", lw=1)
+        axs[1, 0].axhline(0, color="0.5", lw=0.5)
+        axs[1, 0].set_ylabel("FE/Hertz - 1 (%)")
+        axs[1, 0].grid(alpha=0.3)
+    lo = t["status"] == "liftoff"
+    if np.any(lo):
+        ax.plot(deg[lo], np.zeros(lo.sum()), "x", color="k", ms=3, label="lift-off")
+    axs[-1, 0].set_xlabel("cam angle theta (deg)")
+    ax.set_ylabel("peak pressure p0 (MPa)")
+    ax.legend(loc="best", fontsize=8)
+    ax.grid(alpha=0.3)
+    ax.set_title("Peak contact pressure over the cam cycle")
+    fig.tight_layout()
+    return _save(fig, Path(path))
+
+
+def plot_maxima(result, path) -> str:
+    plt = _plt()
+    t = result.table
+    deg = np.degrees(t["theta"])
+    fig, ax = plt.subplots(figsize=(7, 3.6))
+    k = result.provenance.get("hertz_factors")
+    if result.method == "fe":
+        ax.plot(deg, t["vm_max"] / 1e6, ".", ms=3, color="C3", label="von Mises max (FE)")
+        ax.plot(deg, t["tau1_max"] / 1e6, ".", ms=3, color="C2", label="tau1 max (FE)")
+    if k is not None:
+        ax.plot(deg, k["von_mises"][0] * t["p0_hertz"] / 1e6, "-", color="C3", lw=1,
+                label="von Mises max (Hertz)")
+        ax.plot(deg, k["tau1"][0] * t["p0_hertz"] / 1e6, "-", color="C2", lw=1,
+                label="tau1 max (Hertz)")
+    ax.set_xlabel("cam angle theta (deg)")
+    ax.set_ylabel("stress (MPa)")
+    ax.legend(loc="upper left", fontsize=8)
+    ax.set_title("Subsurface stress maxima over the cam cycle")
+    fig.tight_layout()
+    return _save(fig, Path(path))
+
+
+def plot_svaj_loads(result, path) -> str:
+    plt = _plt()
+    t = result.table
+    deg = np.degrees(t["theta"])
+    fig, axs = plt.subplots(4, 2, figsize=(9, 7.5), sharex=True)
+    panels = [("s", 1e3, "s (mm)"), ("v", 1, "v (m/s)"), ("a", 1, "a (m/s^2)"),
+              ("j", 1, "j (m/s^3)"), ("phi", 180 / np.pi, "phi (deg)"),
+              ("rho", 1e3, "rho (mm)"), ("Fc", 1, "Fc (N)"), ("p0_hertz", 1e-6, "p0 Hertz (MPa)")]
+    for ax, (name, f, label) in zip(axs.T.ravel(), panels, strict=True):
+        y = t[name] * f
+        if name == "rho":
+            y = np.clip(y, -200, 200)
+            label += ", clipped to +-200"
+        ax.plot(deg, y, "-", lw=1)
+        ax.set_ylabel(label, fontsize=8)
+        ax.grid(alpha=0.3)
+    for ax in axs[-1]:
+        ax.set_xlabel("cam angle theta (deg)")
+    fig.suptitle("Kinematics (SVAJ), geometry and load over the cam cycle")
+    fig.tight_layout()
+    return _save(fig, Path(path))
+
+
+def plot_surface_worst(result, scene, path, profile=None) -> str:
+    """Surface stresses along x at the worst angle; ``profile`` = ``worst_surface_profile(...)``."""
+    from ..sweep.pipeline import worst_surface_profile
+
+    plt = _plt()
+    if profile is None:
+        profile = worst_surface_profile(result, scene)
+    fig, axs = plt.subplots(1, 3, figsize=(11, 3.4), sharex=True)
+    a = profile["a_hertz"]
+    for ax, name, label in zip(axs, ("sx", "sz", "txz"),
+                               ("sigma_x (MPa)", "sigma_z (MPa)", "tau_xz (MPa)"), strict=True):
+        ax.plot(profile["x_hertz"] / a, profile[name + "_hertz"] / 1e6, "-", color="C0",
+                label="Hertz, seed 002 eqs. 5-7")
+        if "x_fe" in profile:
+            ax.plot(profile["x_fe"] / a, profile[name + "_fe"] / 1e6, ".", color="C3", ms=4,
+                    label="FE")
+        ax.set_xlabel("x / a_Hertz")
+        ax.set_ylabel(label)
+        ax.grid(alpha=0.3)
+    axs[0].legend(fontsize=8)
+    fig.suptitle(f"Surface stresses at the worst angle theta = {profile['theta_deg']:.1f} deg "
+                 f"(Fc = {profile['Fc']:.0f} N, mu = {profile['mu']:g})")
+    fig.tight_layout()
+    return _save(fig, Path(path))
+
+
+def plot_sweep(result, scene, out) -> dict[str, str]:
+    """All sweep plots into ``out/plots``; returns ``{name: path}``."""
+    from ..sweep.pipeline import contact_params, hertz_shape_factors
+
+    cp = contact_params(scene)
+    prov = dict(result.provenance)
+    prov["hertz_factors"] = hertz_shape_factors(cp.mu, cp.cam.nu, cp.plane)
+    r = type(result)(**{**result.__dict__, "provenance": prov})
+    d = Path(out) / "plots"
+    paths = {"plot_p0": plot_p0(r, d / "p0_vs_angle.png"),
+             "plot_maxima": plot_maxima(r, d / "maxima_vs_angle.png"),
+             "plot_svaj": plot_svaj_loads(r, d / "svaj_loads.png")}
+    if np.any(result.ok):
+        paths["plot_surface"] = plot_surface_worst(r, scene, d / "surface_stress_worst.png")
+    return paths
