@@ -10,6 +10,7 @@ that use them.
 
 __version__ = "0.1.0"
 
+from . import sweep  # noqa: E402  (a callable package: femcam.sweep(scene, angles=...))
 from .errors import (
     ConvergenceError,
     FemcamError,
@@ -35,4 +36,5 @@ __all__ = [
     "Material",
     "STEEL",
     "effective_modulus",
+    "sweep",
 ]

@@ -266,7 +266,12 @@ def build_contact_mesh(*, Rr: float, rho: float, a_ref: float,
 
     init_here = not gmsh.isInitialized()
     if init_here:
-        gmsh.initialize(["-nopopup"], readConfigFiles=False)
+        # gmsh installs a SIGINT handler, which Python allows only in the main thread (Dask
+        # runs tasks in worker threads)
+        import threading
+
+        gmsh.initialize(["-nopopup"], readConfigFiles=False,
+                        interruptible=threading.current_thread() is threading.main_thread())
     try:
         gmsh.option.setNumber("General.Terminal", 0)
         gmsh.option.setNumber("General.Verbosity", 1)
