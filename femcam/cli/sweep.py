@@ -1,8 +1,8 @@
 """``femcam sweep SCENE.toml --out DIR``: the FE (or Hertz) sweep over cam angle.
 
 Writes ``DIR/sweep.csv`` (units in the column names, provenance header), ``DIR/sweep.npz``
-(SI), ``DIR/chunks/`` (the resumable store), optional ``DIR/sweep.pvd`` + ``DIR/vtk/*.vtu``
-(``--vtk-every K``) and PNG plots in ``DIR/plots/`` (unless ``--no-plots``).
+(SI), ``DIR/chunks/`` (the resumable store), ``DIR/sweep.pvd`` + ``DIR/vtk/*.vtu``
+(every 10th angle by default; ``--vtk-every K``) and PNG plots in ``DIR/plots/`` (unless ``--no-plots``).
 """
 
 from __future__ import annotations
@@ -31,8 +31,9 @@ def register(subparsers) -> None:
                    help="relative p0 error allowed from reusing a model across angles (default 2e-3)")
     p.add_argument("--chunk-size", type=int, default=30, metavar="N",
                    help="angles per chunk on disk / per parallel task (default 30)")
-    p.add_argument("--vtk-every", type=int, default=0, metavar="K",
-                   help="write a .vtu every K angles plus sweep.pvd (default 0 = none)")
+    p.add_argument("--vtk-every", type=int, default=10, metavar="K",
+                   help="write a .vtu (both bodies, ~1 MB) every K angles plus sweep.pvd "
+                        "(default 10; 1 = every angle; 0 = none)")
     p.add_argument("--method", choices=("fe", "hertz"), default="fe",
                    help="fe: FE contact solve (default); hertz: analytic only")
     p.add_argument("--law", default=None, metavar="NAME",
