@@ -239,9 +239,11 @@ def test_cli_writes_csv_and_png(tmp_path):
 
 
 def test_plain_newton_fold_is_refused_not_returned():
-    """The paper's plain Newton (full steps from the base circle) lands on a folded curve at
-    k = 1e4 with 60 elements; that must raise, never return a wrong curve."""
-    with pytest.raises(ConvergenceError, match="folded curve") as ei:
+    """The paper's plain Newton (full steps from the base circle, no line search) at k = 1e4
+    with 60 elements either lands on a folded curve (a saddle of Pi) or wanders without
+    converging; which of the two depends on round-off in the first steps (the BLAS kernel).
+    Both must raise with the residual history, never return a wrong curve."""
+    with pytest.raises(ConvergenceError, match="folded curve|did not converge") as ei:
         synthesize_knife_edge(seed003_program(), Rb=RB,
                               options=SynthesisOptions(n_elements=60, k=1e4, line_search=False))
     assert len(ei.value.history) > 2
