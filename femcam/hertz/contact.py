@@ -46,7 +46,9 @@ class HertzValidityWarning(UserWarning):
 
 
 def effective_radius(R1, R2):
-    r"""Effective radius of two cylinders (m), ``inf`` for flat-on-flat, ``<= 0`` if non-Hertzian.
+    r"""Effective radius of two cylinders (m): ``inf`` when ``1/R = 0`` (flat on flat, or the
+    exactly conformal ``R1 = -R2``), ``< 0`` if non-Hertzian. Validity is judged on the curvature
+    ``1/R <= 0`` by :class:`LineContact`, which tells the two ``inf`` cases apart.
 
     .. math:: \frac{1}{R} = \frac{1}{R_1} + \frac{1}{R_2}
 
