@@ -1,9 +1,15 @@
 """``femcam synth``: knife-edge cam curve by potential-energy FE (seed 003).
 
 ``femcam synth [SCENE.toml | --case seed003] --out DIR [--elements N] [--k K] [--mu MU]
-[--study]`` writes ``DIR/synth_curve.csv`` (theta_deg, r_mm, x_mm, y_mm, error_mm, phi_deg,
-phi_exact_deg; provenance header), ``DIR/synth_curve.png``, ``DIR/synth_error_phi.png`` and,
-with ``--study``, ``DIR/synth_study_k.{md,png}`` and ``DIR/synth_study_k_mu.{md,png}``.
+[--base-radius-mm auto|RB_MM] [--max-iter N] [--study]`` writes ``DIR/synth_curve.csv``
+(theta_deg, r_mm, x_mm, y_mm, error_mm, phi_deg, phi_exact_deg; provenance header),
+``DIR/synth_curve.png``, ``DIR/synth_error_phi.png`` and, with ``--study``,
+``DIR/synth_study_k.{md,csv,png}`` and ``DIR/synth_study_k_mu.{md,csv,png}``.
+
+``--base-radius-mm auto`` takes the smallest base circle whose exact maximum pressure angle
+is 30 deg (:func:`femcam.profile.min_base_radius`); the default is the case's 5 mm (seed
+003) or the scene's ``Rb``. A failed Newton solve exits with code 1 and one message that
+ends with the last residuals of the history.
 """
 
 from __future__ import annotations
@@ -15,7 +21,13 @@ import shlex
 import sys
 from pathlib import Path
 
-from ..errors import InputError
+from .. import _validate as V  # noqa: N812
+from ..errors import ConvergenceError, InputError
+
+#: design limit used by ``--base-radius-mm auto`` (seed 003 section 5: phi <= 30 deg)
+AUTO_PHI_MAX_DEG = 30.0
+#: residuals shown when Newton fails
+N_RESIDUALS_SHOWN = 5
 
 
 def register(subparsers) -> None:
@@ -27,8 +39,12 @@ def register(subparsers) -> None:
     p.add_argument("--elements", type=int, default=180, help="quadratic elements (default 180)")
     p.add_argument("--k", type=float, default=1e6, help="penalty constant k (dimensionless)")
     p.add_argument("--mu", type=float, default=1.0, help="stabilisation parameter mu")
-    p.add_argument("--base-radius-mm", type=float, default=None,
-                   help="override the base circle radius (mm)")
+    p.add_argument("--base-radius-mm", default=None, metavar="auto|RB_MM",
+                   help="base circle radius in mm, or 'auto': the smallest one with max "
+                        "pressure angle <= 30 deg (femcam.profile.min_base_radius); default: "
+                        "the case's 5 mm or the scene's Rb")
+    p.add_argument("--max-iter", type=int, default=50,
+                   help="Newton iterations per k stage before giving up (default 50)")
     p.add_argument("--study", action="store_true", help="also run the k and k/mu studies")
     p.set_defaults(func=run)
 
@@ -50,23 +66,56 @@ def _case(args):
     return sc.name, sc.program, sc.follower.Rb
 
 
+def _base_radius(value, Rb_default, program, default_source):
+    """``(Rb in m, description)`` from the ``--base-radius-mm`` string (None: the default)."""
+    if value is None:
+        return Rb_default, default_source
+    if str(value).strip().lower() == "auto":
+        from ..profile import min_base_radius
+
+        br = min_base_radius("knife_edge", program, phi_max=math.radians(AUTO_PHI_MAX_DEG))
+        return br.Rb, (f"auto: min_base_radius, exact max phi = {AUTO_PHI_MAX_DEG:g} deg at "
+                       f"theta = {math.degrees(br.theta_critical):.2f} deg")
+    try:
+        rb_mm = float(value)
+    except ValueError:
+        raise V.fail("--base-radius-mm", value, "mm",
+                     "must be 'auto' or a finite number > 0") from None
+    if not math.isfinite(rb_mm) or rb_mm <= 0.0:
+        raise V.fail("--base-radius-mm", value, "mm", "must be 'auto' or a finite number > 0")
+    return rb_mm * 1e-3, "given"
+
+
+def _residual_tail(history, n=N_RESIDUALS_SHOWN) -> str:
+    h = list(history)
+    if not h:
+        return "no residual history"
+    tail = ", ".join(f"{v:.1e}" for v in h[-n:])
+    return f"residuals (last {min(n, len(h))} of {len(h)}): {tail}"
+
+
 def run(args) -> int:
     from .. import io
     from ..synthesis import SynthesisOptions, compare_direct, synthesize_knife_edge
-    from ..synthesis.study import format_table, study_k, study_k_over_mu
+    from ..synthesis.study import format_table, study_k, study_k_over_mu, write_study_csv
     from ..viz import synthesis as vz
 
     name, program, Rb = _case(args)
-    if args.base_radius_mm is not None:
-        Rb = args.base_radius_mm * 1e-3
-    opt = SynthesisOptions(n_elements=args.elements, k=args.k, mu=args.mu)
-    res = synthesize_knife_edge(program, Rb=Rb, options=opt)
+    Rb, rb_source = _base_radius(args.base_radius_mm, Rb, program,
+                                 "seed 003 case" if args.case else "scene")
+    opt = SynthesisOptions(n_elements=args.elements, k=args.k, mu=args.mu, max_iter=args.max_iter)
+    try:
+        res = synthesize_knife_edge(program, Rb=Rb, options=opt)
+    except ConvergenceError as exc:   # one message, ending with the last residuals
+        raise ConvergenceError(f"{exc} (Rb = {Rb * 1e3:.6g} mm); {_residual_tail(exc.history)}",
+                               exc.history) from None
     cmp_ = compare_direct(res, program)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     prov = io.provenance(scene_path=args.scene, command="femcam " + shlex.join(sys.argv[1:]),
                          options={"n_elements": opt.n_elements, "k": opt.k, "mu": opt.mu,
-                                  "Rb_mm": Rb * 1e3})
+                                  "max_iter": opt.max_iter, "Rb_mm": Rb * 1e3,
+                                  "Rb_source": rb_source})
     with open(out / "synth_curve.csv", "w", newline="") as f:
         f.write(f"# femcam synth (seed 003 potential-energy FE), case {name}\n")
         f.write("# " + json.dumps(prov, sort_keys=True) + "\n")
@@ -78,8 +127,8 @@ def run(args) -> int:
                         f"{math.degrees(row[5]):.10g}", f"{math.degrees(row[6]):.10g}"])
     vz.plot_curve(res, out / "synth_curve.png", direct_r=res.Rb + (res.r - res.Rb - res.error))
     vz.plot_error_phi(res, out / "synth_error_phi.png")
-    print(f"femcam synth: {name}, Rb = {Rb * 1e3:g} mm, {opt.n_elements} elements, k = {opt.k:g}, "
-          f"mu = {opt.mu:g}")
+    print(f"femcam synth: {name}, Rb = {Rb * 1e3:.6g} mm ({rb_source}), {opt.n_elements} "
+          f"elements, k = {opt.k:g}, mu = {opt.mu:g}")
     print(f"  {res.message}; residuals: " + " ".join(f"{h:.1e}" for h in res.residual_history))
     print(f"  max transfer-function error {res.max_error * 1e3:.4e} mm; max phi FE "
           f"{math.degrees(res.phi_max):.4f} deg, exact {math.degrees(cmp_.phi_max_direct):.4f} deg")
@@ -92,9 +141,16 @@ def run(args) -> int:
                                 options=opt)
         (out / "synth_study_k.md").write_text(format_table(rows) + "\n")
         (out / "synth_study_k_mu.md").write_text(format_table(rows2) + "\n")
+        head = [f"femcam synth study (seed 003), case {name}, Rb = {Rb * 1e3:.6g} mm",
+                json.dumps(prov, sort_keys=True)]
+        write_study_csv(rows, out / "synth_study_k.csv",
+                        comments=[head[0] + ", mu = 1, k varied", head[1]])
+        write_study_csv(rows2, out / "synth_study_k_mu.csv",
+                        comments=[head[0] + ", k = 1e6, mu = k/(k/mu)", head[1]])
         vz.plot_study(rows, out / "synth_study_k.png", x="k")
         vz.plot_study(rows2, out / "synth_study_k_mu.png", x="k/mu")
         print(format_table(rows))
         print(format_table(rows2))
-    print(f"  wrote {out}/synth_curve.csv and PNGs")
+    print(f"  wrote {out}/synth_curve.csv and PNGs" + (" and study tables (.md, .csv)"
+                                                       if args.study else ""))
     return 0

@@ -8,7 +8,8 @@
 
 Modules: :mod:`~femcam.synthesis.pefem` (energy, quadratic elements, residual, consistent
 tangent, Newton-Raphson) and :mod:`~femcam.synthesis.study` (the seed-003 case, parameter
-studies, comparison with the direct analytic profile). Only numpy/scipy are imported.
+studies as Markdown and CSV tables, comparison with the direct analytic profile). Only
+numpy/scipy are imported.
 """
 
 from .pefem import (
@@ -27,6 +28,7 @@ from .study import (
     seed003_program,
     study_k,
     study_k_over_mu,
+    write_study_csv,
 )
 
 __all__ = [
@@ -43,4 +45,5 @@ __all__ = [
     "seed003_program",
     "study_k",
     "study_k_over_mu",
+    "write_study_csv",
 ]

@@ -32,7 +32,12 @@ phi             pressure angle, angle between d and curve normal     rad      eq
 ==============  ===================================================  =======  ================
 
 Lengths are scaled by R_b inside the energy, so ``k`` and ``mu`` are dimensionless and
-only ``k/mu`` and the mesh set the accuracy (seed 003 Figs. 6-9).
+only ``k/mu`` and the mesh set the accuracy (seed 003 Figs. 6-9). In the paper's eq. 13 the
+penalty carries a length^2 and the stabilisation none, so a k/mu computed with lengths in a
+unit l is ``(k/mu)_femcam / (R_b/l)^2`` (l = 1 mm, R_b = 5 mm: a factor 25; see
+docs/synthesis.md). While the penalty dominates, the error is
+``e ~ -R_b (lam^2 - 1) (R_b kappa) cos(phi) mu/k`` (uniform stretch lam = perimeter /
+(2 pi R_b), kappa the curvature of the exact curve).
 
 Derivation and the seed's typos (checked against a finite-difference Jacobian in the tests)
 -----------------------------------------------------------------------------------------

@@ -8,16 +8,20 @@ segment ends), base circle 5 mm.
 * :func:`direct_profile` is the direct analytic synthesis (:func:`femcam.profile.cam_profile`,
   knife edge: polar radius ``Rb + s(theta)``, ``phi = atan(s'/(Rb + s))``).
 * :func:`compare_direct` measures the FE curve against it at the same polar angles.
-* :func:`study_k` and :func:`study_k_over_mu` sweep k and k/mu (seed 003 Figs. 6-9).
+* :func:`study_k` and :func:`study_k_over_mu` sweep k and k/mu (seed 003 Figs. 6-9);
+  :func:`format_table` (Markdown) and :func:`write_study_csv` (CSV, units in the column
+  names) write them.
 
 Only numpy/scipy (and femcam's analytic chain) are imported.
 """
 
 from __future__ import annotations
 
+import csv
 import math
 import time
 from dataclasses import dataclass, replace
+from pathlib import Path
 
 import numpy as np
 
@@ -158,3 +162,40 @@ def format_table(rows, *, key: str = "k") -> str:
             lines.append(f"| {r.k:.0e} | {r.mu:.3g} | {r.k_over_mu:.0e} | {r.n_elements} | "
                          f"ConvergenceError | | | {r.iterations} | | |")
     return "\n".join(lines)
+
+
+#: columns of :func:`write_study_csv` (unit after the last underscore; ``nondim``: dimensionless)
+STUDY_CSV_COLUMNS = ("k_nondim", "mu_nondim", "k_over_mu_nondim", "n_elements", "max_error_mm",
+                     "max_node_error_mm", "phi_max_deg", "newton_iterations", "cond_est_nondim",
+                     "solve_time_s", "converged", "message")
+
+
+def write_study_csv(rows, path, *, comments=()) -> Path:
+    """Write a study as CSV with :data:`STUDY_CSV_COLUMNS` (errors in mm, angles in deg).
+
+    ``comments`` are written first as ``# ...`` lines (provenance). A row whose solve raised
+    :class:`ConvergenceError` has ``converged = False``, ``nan`` results and the error message.
+
+    >>> import io, tempfile, os
+    >>> row = StudyRow(k=1e3, mu=1.0, n_elements=30, max_error=5e-6, node_error=4e-6,
+    ...                phi_max=0.5, iterations=10, condition=1e5, time=0.02, converged=True)
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     p = write_study_csv([row], os.path.join(d, "s.csv"))
+    ...     print(p.read_text().splitlines()[1])
+    1000,1,1000,30,0.005,0.004,28.64788976,10,100000,0.02,True,
+    """
+    path = Path(path)
+    with open(path, "w", newline="") as f:
+        for c in comments:
+            f.write(f"# {c}\n")
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(STUDY_CSV_COLUMNS)
+        for r in rows:
+            ok = r.converged
+            w.writerow([f"{r.k:.10g}", f"{r.mu:.10g}", f"{r.k_over_mu:.10g}", r.n_elements,
+                        f"{r.max_error * 1e3:.10g}" if ok else "nan",
+                        f"{r.node_error * 1e3:.10g}" if ok else "nan",
+                        f"{math.degrees(r.phi_max):.10g}" if ok else "nan", r.iterations,
+                        f"{r.condition:.6g}" if ok else "nan",
+                        f"{r.time:.6g}" if ok else "nan", ok, "" if ok else r.message])
+    return path
