@@ -86,3 +86,31 @@ def choice(name: str, value, options) -> str:
     if value not in options:
         raise InputError(f"{name} = {value!r}: must be one of {sorted(options)}")
     return value
+
+
+def integer(name: str, value, lo: int | None = None, unit: str = "") -> int:
+    """An integer (``int`` or an integral ``numpy`` integer; not bool, not float) ``>= lo``."""
+    if isinstance(value, bool) or not isinstance(value, int | np.integer):
+        raise fail(name, value, unit, "must be an integer" + (f" >= {lo}" if lo is not None else ""))
+    n = int(value)
+    if lo is not None and n < lo:
+        raise fail(name, value, unit, f"must be an integer >= {lo}")
+    return n
+
+
+def positive_array(name: str, value, unit: str = "") -> np.ndarray:
+    """A float array (or scalar) of finite numbers, all > 0."""
+    arr = finite_array(name, value, unit)
+    if np.any(arr <= 0.0):
+        raise fail(name, float(arr[arr <= 0.0].flat[0]), unit, "must be > 0")
+    return arr
+
+
+def in_range_array(name: str, value, lo: float, hi: float, unit: str = "", *,
+                   lo_open: bool = False, hi_open: bool = False) -> np.ndarray:
+    """A float array (or scalar) of finite numbers, all in [lo, hi] (ends open on request)."""
+    arr = finite_array(name, value, unit)
+    bad = (arr <= lo if lo_open else arr < lo) | (arr >= hi if hi_open else arr > hi)
+    if np.any(bad):
+        in_range(name, float(arr[bad].flat[0]), lo, hi, unit, lo_open=lo_open, hi_open=hi_open)
+    return arr

@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import _validate as V  # noqa: N812
-from .errors import InputError
+from .errors import InputError, LiftOffError
 from .profile import bool_intervals
 
 
@@ -41,6 +41,10 @@ from .profile import bool_intervals
 class FollowerDynamics:
     """Mass ``m`` (kg), spring ``k`` (N/m), preload ``Fpl`` (N), damping ``c`` (N s/m) **or**
     damping ratio ``zeta`` (exactly one of them).
+
+    ``zeta > 0`` needs ``k > 0`` and ``m > 0``: with ``c_c = 2 sqrt(k m) = 0`` a ratio cannot
+    set ``c`` and :class:`~femcam.errors.InputError` asks for ``c`` instead (``zeta = 0`` is
+    accepted and gives ``c = 0``).
 
     >>> round(FollowerDynamics(m=0.2, k=800.0, Fpl=1500.0, zeta=0.06).c, 6)
     1.517893
@@ -61,6 +65,12 @@ class FollowerDynamics:
                              "damping coefficient c or the damping ratio zeta")
         if self.zeta is not None:
             zeta = V.nonnegative("zeta", self.zeta, "")
+            if zeta > 0.0 and self.c_critical == 0.0:
+                raise InputError(
+                    f"zeta (damping_ratio) = {zeta:g}: the critical damping c_c = 2 sqrt(k m) = "
+                    f"2 sqrt({self.k:g} N/m * {self.m:g} kg) = 0 N s/m, so a damping ratio cannot set "
+                    "the damping; give the damping coefficient c in N s/m instead "
+                    "(scene key damping_N_s_per_m)")
             object.__setattr__(self, "zeta", zeta)
             object.__setattr__(self, "c", zeta * self.c_critical)
         else:
@@ -113,13 +123,20 @@ class LoadResult:
         return float(np.min(self.Fc)) if self.Fc.size else 0.0
 
 
-def contact_force(dyn: FollowerDynamics, theta, s, v, a, phi) -> LoadResult:
+_LIFTOFF_MODES = ("flag", "raise")
+
+
+def contact_force(dyn: FollowerDynamics, theta, s, v, a, phi, *,
+                  on_liftoff: str = "flag") -> LoadResult:
     r"""Normal cam-follower contact force (N), seed 002 eq. 11.
 
     .. math:: F_c = \frac{m a + c v + k s + F_{pl}}{\cos\varphi}
 
     ``theta`` (rad), ``s`` (m), ``v`` (m/s), ``a`` (m/s^2) and ``phi`` (rad, |phi| < 90 deg)
-    broadcast together.
+    broadcast together. Lift-off (``Fc <= 0``) is flagged in the result
+    (``on_liftoff="flag"``, the default) or, with ``on_liftoff="raise"``, raises
+    :class:`~femcam.errors.LiftOffError` listing the lift-off intervals in degrees and the
+    smallest ``Fc``.
 
     >>> r = contact_force(FollowerDynamics(m=0.2, k=800.0, Fpl=1500.0, c=0.0),
     ...                   0.0, 0.01, 0.0, 100.0, 0.0)
@@ -128,6 +145,7 @@ def contact_force(dyn: FollowerDynamics, theta, s, v, a, phi) -> LoadResult:
     """
     if not isinstance(dyn, FollowerDynamics):
         raise InputError(f"dyn = {dyn!r}: must be a FollowerDynamics")
+    V.choice("on_liftoff", on_liftoff, _LIFTOFF_MODES)
     theta = V.finite_array("theta", theta, "rad")
     s = V.finite_array("s", s, "m")
     v = V.finite_array("v", v, "m/s")
@@ -147,5 +165,14 @@ def contact_force(dyn: FollowerDynamics, theta, s, v, a, phi) -> LoadResult:
     F_ax = F_in + F_d + F_s
     Fc = F_ax / np.cos(phi)
     lift = Fc <= 0.0
+    intervals = bool_intervals(theta, lift)
+    if intervals and on_liftoff == "raise":
+        iv = ", ".join(f"[{math.degrees(p):.2f}, {math.degrees(q):.2f}] deg" for p, q in intervals)
+        i = int(np.argmin(Fc))
+        raise LiftOffError(
+            f"the follower lifts off the cam (Fc <= 0) for theta in {iv}; smallest Fc = "
+            f"{float(Fc.flat[i]):.4g} N at theta = {math.degrees(float(theta.flat[i])):.2f} deg. "
+            f"Raise the spring rate k (now {dyn.k:g} N/m) or preload Fpl (now {dyn.Fpl:g} N), or "
+            "lower the speed; on_liftoff='flag' returns the flagged result")
     return LoadResult(theta=theta, Fc=Fc, F_axial=F_ax, F_inertia=F_in, F_damping=F_d, F_spring=F_s,
-                      liftoff=lift, liftoff_angles=theta[lift], liftoff_intervals=bool_intervals(theta, lift))
+                      liftoff=lift, liftoff_angles=theta[lift], liftoff_intervals=intervals)

@@ -19,9 +19,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
-
-from . import _validate as V
+from . import _validate as V  # noqa: N812
 
 PLANES = ("strain", "stress")
 
@@ -72,14 +70,19 @@ def effective_modulus(m1: Material, m2: Material, plane: str = "strain") -> floa
 def lame_parameters(E, nu, plane: str = "strain"):
     r"""Lamé parameters (lambda, mu) for 2D elasticity (Pa).
 
-    Plane strain: :math:`\lambda = E\nu/((1+\nu)(1-2\nu))`; plane stress uses the reduced
-    :math:`\lambda^* = 2\lambda\mu/(\lambda + 2\mu) = E\nu/(1-\nu^2)`.
+    Plane strain: :math:`\lambda = E\nu/((1+\nu)(1-2\nu))`, :math:`\mu = E/(2(1+\nu))`; plane
+    stress uses the reduced :math:`\lambda^* = 2\lambda\mu/(\lambda + 2\mu) = E\nu/(1-\nu^2)`.
+    ``E`` (Pa) must be > 0 and ``nu`` in (-1, 0.5) (scalars or arrays); otherwise
+    :class:`~femcam.errors.InputError` (``nu = 0.5`` would give an infinite lambda).
+
+    >>> [round(float(x) / 1e9, 6) for x in lame_parameters(200e9, 0.25)]
+    [80.0, 80.0]
     """
-    E = np.asarray(E, dtype=float)
+    V.choice("plane", plane, PLANES)
+    E = V.positive_array("E", E, "Pa")
+    nu = V.in_range_array("nu", nu, -1.0, 0.5, "", lo_open=True, hi_open=True)
     mu = E / (2.0 * (1.0 + nu))
     lam = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
     if plane == "stress":
         lam = 2.0 * lam * mu / (lam + 2.0 * mu)
-    elif plane != "strain":
-        raise V.fail("plane", plane, "", f"must be one of {list(PLANES)}")
     return lam, mu

@@ -33,11 +33,11 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import InputError, SceneError
+from .errors import InputError, SceneError, UndercutError
 from .kinematics import CamProgram, dwell, fall, law, rise
 from .loads import FollowerDynamics, LoadResult, contact_force
 from .materials import Material
-from .profile import CamProfile, cam_profile, make_follower
+from .profile import CamProfile, bool_intervals, cam_profile, make_follower
 
 try:  # Python >= 3.11
     import tomllib
@@ -49,6 +49,9 @@ except ModuleNotFoundError:  # pragma: no cover - Python 3.10
 # schema: key -> (unit shown to the user, SI factor, check, required)
 # check: "pos" > 0, "nonneg" >= 0, "num" any finite, "nu" in (-1, 0.5), "str", "list"
 # --------------------------------------------------------------------------------------------
+#: angles of the dense undercut check of Scene.analyse over one revolution (0.05 deg apart)
+UNDERCUT_CHECK_N = 7200
+
 _TOP = {"name": ("", None, "str", True), "description": ("", None, "str", False),
         "source": ("", None, "str", False)}
 _TABLES = ("operating", "program", "follower", "dynamics", "materials", "contact", "fe", "wear")
@@ -188,9 +191,12 @@ class SceneState:
     contact_y: np.ndarray
     profile: CamProfile
     loads: LoadResult
+    undercut_intervals: list = field(default_factory=list)
 
     @property
     def undercut(self) -> np.ndarray:
+        """Undercut flags at the analysed angles ``theta`` (see ``undercut_intervals`` for the
+        whole revolution)."""
         return self.profile.undercut
 
 
@@ -225,20 +231,60 @@ class Scene:
     def rpm(self) -> float:
         return self.omega * 60.0 / (2.0 * math.pi)
 
+    def undercut_check(self, theta=None, undercut=None) -> list:
+        """Undercut intervals ``[(start, end), ...]`` (rad, in [0, 2 pi)) of the whole cam.
+
+        The profile is checked on a dense grid of ``UNDERCUT_CHECK_N`` angles over one
+        revolution (0.05 deg apart) merged with ``theta`` (taken mod 2 pi; ``undercut``, if
+        given, are its already computed flags), so a narrow undercut band between coarse
+        analysis angles is still found. Vectorised; about 2 ms.
+        """
+        dense = np.linspace(0.0, 2.0 * math.pi, UNDERCUT_CHECK_N, endpoint=False)
+        dd = self.program.derivatives(dense)
+        flags = cam_profile(self.follower, dense, dd.s, dd.s1, dd.s2, allow_undercut=True).undercut
+        th, fl = dense, flags
+        if theta is not None:
+            extra = np.mod(np.ravel(np.asarray(theta, float)), 2.0 * math.pi)
+            if undercut is None:
+                de = self.program.derivatives(extra)
+                undercut = cam_profile(self.follower, extra, de.s, de.s1, de.s2,
+                                       allow_undercut=True).undercut
+            order = np.argsort(np.concatenate([dense, extra]), kind="stable")
+            th = np.concatenate([dense, extra])[order]
+            fl = np.concatenate([flags, np.ravel(undercut)])[order]
+        return bool_intervals(th, fl)
+
     def analyse(self, theta, *, allow_undercut: bool = False) -> SceneState:
         """Kinematics, profile and contact force at cam angles ``theta`` (rad), vectorised.
 
-        Raises :class:`~femcam.errors.UndercutError` for an undercut profile unless
-        ``allow_undercut=True``.
+        Undercut is a property of the whole cam, so besides ``theta`` the profile is checked on a
+        dense grid over one revolution (:meth:`undercut_check`). Raises
+        :class:`~femcam.errors.UndercutError` (with the angle ranges in degrees) for an
+        undercut cam unless ``allow_undercut=True``; the intervals found are
+        ``SceneState.undercut_intervals`` (rad, in [0, 2 pi)).
         """
         d = self.program.derivatives(theta)
         w = self.omega
         v, a, j = w * d.s1, w**2 * d.s2, w**3 * d.s3
         p = cam_profile(self.follower, d.theta, d.s, d.s1, d.s2, allow_undercut=allow_undercut)
+        intervals = self.undercut_check(d.theta, p.undercut)
+        if intervals and not allow_undercut:
+            # the analysed angles missed it: raise the standard message on the dense grid
+            dense = np.linspace(0.0, 2.0 * math.pi, UNDERCUT_CHECK_N, endpoint=False)
+            dd = self.program.derivatives(dense)
+            try:
+                cam_profile(self.follower, dense, dd.s, dd.s1, dd.s2)
+            except UndercutError as exc:
+                raise UndercutError(f"{exc} (found by the dense check on {UNDERCUT_CHECK_N} angles "
+                                    "over one revolution; the analysed angles miss it)") from None
+            raise UndercutError(  # pragma: no cover - a band narrower than the dense step
+                f"{self.follower.kind} cam profile is undercut for theta in "
+                + ", ".join(f"[{math.degrees(a_):.3f}, {math.degrees(b_):.3f}] deg"
+                            for a_, b_ in intervals))
         r = contact_force(self.dynamics, d.theta, d.s, v, a, p.phi)
         return SceneState(theta=np.asarray(d.theta, float), s=d.s, v=v, a=a, j=j, s1=d.s1, s2=d.s2,
                           phi=p.phi, rho=p.rho, Fc=r.Fc, liftoff=r.liftoff, contact_x=p.contact_x,
-                          contact_y=p.contact_y, profile=p, loads=r)
+                          contact_y=p.contact_y, profile=p, loads=r, undercut_intervals=intervals)
 
     def with_law(self, name: str, **params) -> Scene:
         """The same scene with every rise/fall segment using motion law ``name``."""
@@ -281,7 +327,14 @@ def load_scene(path) -> Scene:
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(f"scene file {path}: not valid TOML: {exc}") from None
     ck = _Checker(str(path))
-    top = ck.table({k: v for k, v in raw.items() if k not in _TABLES}, "", _TOP)
+    for k, v in raw.items():  # a table that is not one of ours: "[contactt]"
+        if k not in _TABLES and k not in _TOP and isinstance(v, dict):
+            near = difflib.get_close_matches(k, _TABLES, n=1, cutoff=0.6)
+            hint = (f"; did you mean [{near[0]}]?" if near
+                    else f"; valid tables: {', '.join(f'[{n}]' for n in _TABLES)}")
+            ck.add(k, f"unknown table [{k}]{hint}")
+    top = ck.table({k: v for k, v in raw.items()
+                    if k not in _TABLES and (k in _TOP or not isinstance(v, dict))}, "", _TOP)
     for t in ("operating", "program", "follower", "dynamics", "materials"):
         if t not in raw:
             ck.add(t, f"missing required table [{t}]")
@@ -300,6 +353,7 @@ def load_scene(path) -> Scene:
     prog_tab = ck.table(g("program"), "program", _PROGRAM)
     default_law = _law_from(ck, "program", prog_tab, None)
     segments = []
+    closure = []  # same betas and lifts, a placeholder law where the law is bad: closure check
     segs_raw = g("program").get("segment", []) if isinstance(g("program"), dict) else []
     if "program" in raw and not (isinstance(segs_raw, list) and segs_raw):
         ck.add("program.segment", "must be an array of tables [[program.segment]] with at least one segment")
@@ -315,24 +369,33 @@ def load_scene(path) -> Scene:
                 if k in sg:
                     ck.add(f"{key}.{k}", f"= {_fmt(sr[k])}: a dwell takes only kind and beta_deg")
             segments.append(dwell(sg["beta_deg"]))
+            closure.append(segments[-1])
             continue
         if "lift_mm" not in sg:
             if isinstance(sr, dict) and "lift_mm" not in sr:
                 ck.add(f"{key}.lift_mm", f"missing required key for a {kind} (unit: mm)")
             continue
+        make = rise if kind == "rise" else fall
         lw = _law_from(ck, key, sg, default_law)
+        closure.append(make(sg["beta_deg"], sg["lift_mm"], lw or "cycloidal"))
         if lw is None:
-            if "law" not in sg and "control_points" not in sg:
+            prog_law = isinstance(g("program"), dict) and ("law" in g("program")
+                                                           or "control_points" in g("program"))
+            if "law" not in sg and "control_points" not in sg and not prog_law:  # else reported
                 ck.add(f"{key}.law", "missing: give law (e.g. 'cycloidal') or control_points, "
                        "here or in [program]")
             continue
-        segments.append((rise if kind == "rise" else fall)(sg["beta_deg"], sg["lift_mm"], lw))
+        segments.append(make(sg["beta_deg"], sg["lift_mm"], lw))
     program = None
-    if segments and len(segments) == len(segs_raw) and not ck.problems:
+    if closure and len(closure) == len(segs_raw):
+        # closure (sum of beta = 360 deg, rises = falls) depends on betas and lifts only, so it is
+        # reported even when other keys (a law, another table) have problems too
         try:
-            program = CamProgram(segments)
+            program = CamProgram(closure)
         except InputError as exc:
             ck.add("program.segment", str(exc))
+        else:
+            program = CamProgram(segments) if len(segments) == len(segs_raw) else None
 
     # follower
     fo = ck.table(g("follower"), "follower", _FOLLOWER)
@@ -363,8 +426,15 @@ def load_scene(path) -> Scene:
             ck.add("dynamics", "give exactly one of damping_N_s_per_m (N s/m) or damping_ratio "
                    f"(dimensionless); got {given or 'none'}")
         elif all(k in dy for k in ("mass_kg", "spring_N_per_m", "preload_N", given[0])):
-            dyn = FollowerDynamics(m=dy["mass_kg"], k=dy["spring_N_per_m"], Fpl=dy["preload_N"],
-                                   c=dy.get("damping_N_s_per_m"), zeta=dy.get("damping_ratio"))
+            try:
+                dyn = FollowerDynamics(m=dy["mass_kg"], k=dy["spring_N_per_m"], Fpl=dy["preload_N"],
+                                       c=dy.get("damping_N_s_per_m"), zeta=dy.get("damping_ratio"))
+            except InputError:  # only a damping ratio with c_c = 2 sqrt(k m) = 0 fails here
+                ck.add("dynamics.damping_ratio",
+                       f"= {_fmt(g('dynamics')['damping_ratio'])} (dimensionless): the critical "
+                       f"damping c_c = 2 sqrt(k m) = 2 sqrt({dy['spring_N_per_m']:g} N/m * "
+                       f"{dy['mass_kg']:g} kg) = 0 N s/m, so a ratio cannot set the damping; give "
+                       "damping_N_s_per_m (N s/m) instead")
 
     # materials
     mats = {}

@@ -69,3 +69,41 @@ def test_run_bad_input_gives_clear_error(tmp_path, capsys):
     assert "dynamics.mass_kg = -1 kg: must be >= 0" in err
     assert main(["run", str(EXAMPLES / "seed000_rise.toml"), "--angles-deg", "0:360"]) == 1
     assert "START:STOP:STEP" in capsys.readouterr().err
+
+
+def test_run_prints_junction_jumps_in_si_and_no_negative_zero(tmp_path, capsys):
+    assert main(["run", str(EXAMPLES / "seed003_knife_edge.toml"), "--out", str(tmp_path / "o"),
+                 "--no-plots", "--angles-deg", "0:360:1"]) == 0
+    text = capsys.readouterr().out
+    # 3-4-5 rise (h = 3 mm, beta = 120 deg) into a dwell at 300 rpm: jerk j = 60 h w^3/beta^3 at the
+    # rise end, 0 on the dwell -> jump -60 h w^3/beta^3 (m/s^3), by hand
+    w, h, beta = 10 * math.pi, 0.003, math.radians(120)
+    jump = -60 * h * w**3 / beta**3
+    assert f"omega = {w:.6g} rad/s" in text
+    assert f"j = {jump:+.4g} m/s^3" in text and "m/s^2" in text and "v = +0 m/s" in text
+    assert f"{jump:+.4g}" == "-607.5"
+    summary = (tmp_path / "o" / "summary.txt").read_text()
+    assert f"j = {jump:+.4g} m/s^3" in summary
+    # the seed 000 table has exact zeros that used to print as "-0"
+    assert main(["run", str(EXAMPLES / "seed000_rise.toml"), "--out", str(tmp_path / "z"),
+                 "--no-plots"]) == 0
+    tokens = capsys.readouterr().out.split()
+    assert "-0" not in tokens
+
+
+def test_run_reports_narrow_undercut_missed_by_coarse_angles(tmp_path, capsys):
+    # seed 002's cam with Rb = 2.5 mm under a 20 mm roller: undercut only near 75.2-77.2 deg and
+    # 202.8-204.8 deg (pitch radius of curvature < Rr; see tests/test_scene.py), between 10-deg angles
+    text = (EXAMPLES / "seed002_study_model.toml").read_text()
+    text = text.replace("roller_radius_mm = 10.0", "roller_radius_mm = 20.0").replace(
+        "base_radius_mm = 10.0", "base_radius_mm = 2.5")
+    scene = tmp_path / "narrow.toml"
+    scene.write_text(text)
+    args = ["run", str(scene), "--out", str(tmp_path / "o"), "--no-plots", "--angles-deg", "0:360:10"]
+    assert main(args) == 1
+    assert "undercut" in capsys.readouterr().err
+    assert main([*args, "--allow-undercut"]) == 0
+    out = capsys.readouterr()
+    line = next(ln for ln in out.out.splitlines() if ln.strip().startswith("undercut"))
+    assert "75." in line and "77." in line and "202." in line and "204." in line
+    assert "WARNING" in out.err

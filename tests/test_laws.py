@@ -288,3 +288,12 @@ def test_junction_flags_from_end_values():
     assert law("uniform_velocity").v_end_nonzero
     assert not law("shm").v_end_nonzero and law("shm").a_end_nonzero
     assert not law("cycloidal").v_end_nonzero and not law("cycloidal").a_end_nonzero
+
+
+def test_plot_laws_writes_png(tmp_path):
+    pytest.importorskip("matplotlib")
+    from femcam.viz.analytic import LAWS_FIGURE, plot_laws
+
+    path = plot_laws(tmp_path / "laws.png")
+    assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and path.stat().st_size > 10_000
+    assert set(LAWS_FIGURE) <= set(LAW_NAMES)

@@ -1,11 +1,12 @@
 """femcam.loads: seed 002 eq. 11 against hand calculations and analytic lift-off angles."""
 
 import math
+import re
 
 import numpy as np
 import pytest
 
-from femcam.errors import InputError
+from femcam.errors import InputError, LiftOffError, PhysicsError
 from femcam.loads import FollowerDynamics, contact_force
 
 
@@ -59,3 +60,43 @@ def test_bad_pressure_angle():
     dyn = FollowerDynamics(m=0.1, k=1.0, Fpl=1.0, c=0.0)
     with pytest.raises(InputError, match=r"phi = .* rad: pressure angle \(90 deg\)"):
         contact_force(dyn, [0, 1], 0.0, 0.0, 0.0, [0.0, math.pi / 2])
+
+
+def test_liftoff_raise_lists_intervals_in_degrees():
+    # same harmonic follower as above: lift-off on [t0, 2 pi - t0], t0 = acos(-(kE + Fpl)/(mEw^2 - kE))
+    m, k, Fpl, E, w = 0.5, 200.0, 5.0, 0.005, 150.0
+    t = np.linspace(0, 2 * np.pi, 36001)
+    dyn = FollowerDynamics(m=m, k=k, Fpl=Fpl, c=0.0)
+    args = (t, E * (1 - np.cos(t)), E * w * np.sin(t), E * w**2 * np.cos(t), 0.0)
+    flagged = contact_force(dyn, *args)  # default: flag, as before
+    assert flagged.any_liftoff
+    t0 = math.degrees(math.acos(-(k * E + Fpl) / (m * E * w**2 - k * E)))
+    with pytest.raises(LiftOffError) as info:
+        contact_force(dyn, *args, on_liftoff="raise")
+    msg = str(info.value)
+    nums = [float(x) for x in re.findall(r"\[([-\d.]+), ([-\d.]+)\] deg", msg)[0]]
+    dt = 360.0 / 36000
+    assert nums[0] == pytest.approx(t0, abs=dt + 0.01) and nums[1] == pytest.approx(360 - t0, abs=dt + 0.01)
+    # smallest Fc by hand, at theta = 180 deg: -m E w^2 + 2 k E + Fpl
+    assert f"{-m * E * w**2 + 2 * k * E + Fpl:.4g} N at theta = 180.00 deg" in msg
+    assert isinstance(info.value, PhysicsError) and not isinstance(info.value, ValueError)
+    # no lift-off: "raise" returns the result
+    ok = contact_force(FollowerDynamics(m=m, k=k, Fpl=1e4, c=0.0), *args, on_liftoff="raise")
+    assert not ok.any_liftoff
+
+
+def test_bad_on_liftoff():
+    dyn = FollowerDynamics(m=0.1, k=1.0, Fpl=1.0, c=0.0)
+    with pytest.raises(InputError, match="on_liftoff = 'warn'"):
+        contact_force(dyn, 0.0, 0.0, 0.0, 0.0, 0.0, on_liftoff="warn")
+
+
+@pytest.mark.parametrize("m,k", [(0.0, 800.0), (0.2, 0.0), (0.0, 0.0)])
+def test_damping_ratio_without_critical_damping(m, k):
+    # c_c = 2 sqrt(k m) = 0: a ratio cannot set c (it used to give c = 0 silently)
+    with pytest.raises(InputError, match=r"^zeta \(damping_ratio\) = 0.06: .*c_c = 2 sqrt\(k m\).*= 0 N s/m"
+                       r".*damping coefficient c in N s/m"):
+        FollowerDynamics(m=m, k=k, Fpl=1.0, zeta=0.06)
+    # zeta = 0 is unambiguous (no damping); an explicit c is always fine
+    assert FollowerDynamics(m=m, k=k, Fpl=1.0, zeta=0.0).c == 0.0
+    assert FollowerDynamics(m=m, k=k, Fpl=1.0, c=2.5).c == 2.5

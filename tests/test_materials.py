@@ -35,4 +35,23 @@ def test_bad_material_is_a_clear_value_error(kw, text):
     with pytest.raises(InputError, match=text.replace(".", r"\.")):
         Material(**kw)
     assert issubclass(InputError, ValueError)
-    assert np.isfinite(210e9)
+
+
+@pytest.mark.parametrize("E,nu,text", [
+    (210e9, 0.5, r"^nu = 0\.5: must be in \(-1, 0\.5\)"),  # used to return inf + RuntimeWarning
+    (210e9, -1.0, r"^nu = -1: must be in \(-1, 0\.5\)"),
+    (0.0, 0.3, r"^E = 0 Pa: must be > 0"),
+    (-5.0, 0.3, r"^E = -5 Pa: must be > 0"),
+    (float("inf"), 0.3, r"^E = inf Pa: must be finite"),
+    ([210e9, -1.0], 0.3, r"^E = -1 Pa: must be > 0"),
+])
+def test_lame_parameters_validate(E, nu, text):
+    with pytest.raises(InputError, match=text):
+        lame_parameters(E, nu)
+
+
+def test_lame_parameters_near_incompressible_is_finite():
+    # nu -> 0.5: lambda = E nu/((1 + nu)(1 - 2 nu)) grows like 1/(1 - 2 nu) but stays finite
+    lam, mu = lame_parameters(1.0, 0.4999)
+    assert lam == pytest.approx(0.4999 / (1.4999 * 0.0002), rel=1e-12) and np.isfinite(lam)
+    assert mu == pytest.approx(1.0 / (2 * 1.4999), rel=1e-14)

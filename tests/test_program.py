@@ -226,3 +226,44 @@ def test_law_object_accepted():
     p = CamProgram([rise(pi, H, L), fall(pi, H, L)])
     assert p.segments[0].law is L
     np.testing.assert_allclose(p.derivatives(pi / 2).s, H * L.s(0.5), rtol=1e-14)
+
+
+# --- junction jumps in SI at a cam speed ------------------------------------------------------
+W = 20 * pi  # rad/s (600 rpm)
+
+
+def test_shm_junction_acceleration_step_in_si():
+    # SHM rise next to a dwell: a = (pi^2/2) h omega^2/beta^2 cos(pi u) (Norton eq. 3.5), so at the
+    # rise end a = -(pi^2/2) h omega^2/beta^2 and the step onto the dwell (a = 0) is +pi^2 h w^2/(2 b^2)
+    js = rdfd("shm", "shm").junctions(omega=W)
+    step = pi**2 * H * W**2 / (2 * B[0] ** 2)
+    assert js[0].jump_a == pytest.approx(step, rel=1e-12)  # m/s^2
+    assert js[-1].jump_a == pytest.approx(step, rel=1e-12)  # dwell -> rise start: a = +step
+    assert js[0].jump_v == 0.0 and js[0].jump_j == 0.0
+    assert js[0].omega == W and js[0].jump_s2 == pytest.approx(step / W**2, rel=1e-12)  # per rad kept
+    assert f"a = {step:+.4g} m/s^2" in js[0].describe() and "INFINITE JERK" in js[0].describe()
+
+
+def test_uniform_velocity_and_cycloidal_junction_jumps_in_si():
+    # uniform velocity: v = h omega/beta on the ramp -> velocity step -h omega/beta at the rise end
+    js = rdfd("uniform_velocity", "uniform_velocity").junctions(W)
+    assert js[0].jump_v == pytest.approx(-H * W / B[0], rel=1e-12)
+    assert js[2].jump_v == pytest.approx(H * W / B[2], rel=1e-12)  # fall end -> dwell
+    assert "m/s," in js[0].describe()
+    # cycloidal: j = 4 pi^2 h omega^3/beta^3 cos(2 pi u) -> jerk step -4 pi^2 h w^3/b^3 at the rise end
+    jc = rdfd().junctions(omega=W)[0]
+    assert jc.jump_j == pytest.approx(-4 * pi**2 * H * W**3 / B[0] ** 3, rel=1e-12)
+    assert "m/s^3" in jc.describe()
+
+
+def test_junctions_without_omega_have_only_per_radian_jumps():
+    j = rdfd("shm", "shm").junctions()[0]
+    assert j.omega is None and j.jump_v is None and j.jump_a is None and j.jump_j is None
+    assert j.jump_s2 == pytest.approx(pi**2 / 2 * H / B[0] ** 2, rel=1e-12)
+    assert "m/rad^2" in j.describe()
+    assert "per-rad units" in junction_report(rdfd().junctions())
+    rep = junction_report(rdfd().junctions(W))
+    assert f"omega = {W:.6g} rad/s" in rep and "m/s^3" in rep
+    assert "m/s^2" in rdfd("shm", "shm").table(omega=W)
+    with pytest.raises(InputError, match=r"omega = -1 rad/s"):
+        rdfd().junctions(omega=-1.0)

@@ -79,6 +79,12 @@ def _intervals_deg(iv) -> str:
     return ", ".join(f"{math.degrees(a):.2f}-{math.degrees(b):.2f} deg" for a, b in iv) or "none"
 
 
+def _undercut_intervals(st):
+    """Undercut intervals of the whole cam (dense check of Scene.analyse) or, for a SceneState
+    built elsewhere, of the analysed angles."""
+    return getattr(st, "undercut_intervals", None) or st.profile.undercut_intervals
+
+
 def summary_lines(scene, st, phi_limit_deg: float = 30.0) -> list[str]:
     """Summary of a SceneState: max |phi|, min |rho|, Fc range, lift-off and undercut."""
     phi = np.degrees(np.abs(st.phi))
@@ -99,7 +105,7 @@ def summary_lines(scene, st, phi_limit_deg: float = 30.0) -> list[str]:
         f"max Fc         = {st.Fc[i_max]:.2f} N at theta = {deg(i_max):.2f} deg",
         f"min Fc         = {st.Fc[i_min]:.2f} N at theta = {deg(i_min):.2f} deg",
         f"lift-off       = {_intervals_deg(st.loads.liftoff_intervals)}",
-        f"undercut       = {_intervals_deg(st.profile.undercut_intervals)}",
+        f"undercut       = {_intervals_deg(_undercut_intervals(st))} (whole revolution, 0.05 deg check)",
     ]
     if scene.follower.kind == "flat_faced":
         lines.append(f"min face width = {st.profile.face_width_min * 1e3:.3f} mm (face centred on the axis)")
@@ -118,7 +124,8 @@ def _table(st, every_deg: float) -> str:
     rows = []
     for i in pick:
         vals = [float(np.asarray(getattr(st, a))[i]) * f for _, a, f in cols]
-        rows.append("".join(f"{v:12.5g}" for v in vals) + ("  LIFT-OFF" if st.liftoff[i] else ""))
+        # + 0.0 turns -0.0 into 0.0, so the table never shows "-0"
+        rows.append("".join(f"{v + 0.0:12.5g}" for v in vals) + ("  LIFT-OFF" if st.liftoff[i] else ""))
     return "\n".join([head, *rows])
 
 
@@ -167,7 +174,7 @@ def _run(args) -> int:
           f"m = {scene.dynamics.m:g} kg, k = {scene.dynamics.k:g} N/m, Fpl = {scene.dynamics.Fpl:g} N, "
           f"c = {scene.dynamics.c:.4g} N s/m")
     print()
-    print(scene.program.table())
+    print(scene.program.table(omega=scene.omega))  # junction jumps in m/s, m/s^2, m/s^3
     print()
     print(f"Kinematics, profile and loads (every {args.print_every_deg:g} deg; all angles in the CSV):")
     print(_table(st, args.print_every_deg))
@@ -176,12 +183,13 @@ def _run(args) -> int:
     print("Summary:")
     for ln in summ:
         print("  " + ln)
-    if st.profile.undercut.any():
+    if st.profile.undercut.any() or _undercut_intervals(st):
         print("WARNING: the profile is undercut (see 'undercut' above); rho there is not realisable",
               file=sys.stderr)
 
     files = [write_csv(out / "analytic.csv", scene, st, command)]
-    (out / "summary.txt").write_text("\n".join([f"scene: {scene.source_path}", scene.program.table(),
+    (out / "summary.txt").write_text("\n".join([f"scene: {scene.source_path}",
+                                                scene.program.table(omega=scene.omega),
                                                 "Summary:", *summ]) + "\n")
     files.append(out / "summary.txt")
     if not args.no_plots:

@@ -25,7 +25,10 @@ omega          cam angular speed (constant)            rad/s
 Junctions
 ---------
 At every join (including the wrap-around at 2 pi) :meth:`CamProgram.junctions` compares the
-left limit (end of one segment) with the right limit (start of the next). A step in s' (a
+left limit (end of one segment) with the right limit (start of the next): per radian always
+(``jump_s1, jump_s2, jump_s3``), and in SI when the cam speed is given,
+``junctions(omega)``: ``jump_v = omega jump_s1`` (m/s), ``jump_a = omega^2 jump_s2`` (m/s^2),
+``jump_j = omega^3 jump_s3`` (m/s^3). A step in s' (a
 velocity step) makes the acceleration a delta function: *infinite acceleration*, and its
 derivative, the jerk, is infinite too. A step in s'' (an acceleration step, e.g. SHM next to
 a dwell) makes the jerk a delta: *infinite jerk*. A step in s''' is a finite jerk jump.
@@ -143,7 +146,14 @@ class SVAJ:
 
 @dataclass(frozen=True)
 class Junction:
-    """A join between two segments; jumps are right limit minus left limit, per-rad units."""
+    """A join between two segments; jumps are right limit minus left limit.
+
+    ``jump_s1``, ``jump_s2``, ``jump_s3`` are the per-radian jumps of ds/dtheta (m/rad),
+    d2s/dtheta2 (m/rad^2) and d3s/dtheta3 (m/rad^3); they do not depend on the speed.
+    With the cam speed ``omega`` (rad/s; from ``CamProgram.junctions(omega)``) the physical
+    jumps are ``jump_v = omega jump_s1`` (m/s), ``jump_a = omega^2 jump_s2`` (m/s^2) and
+    ``jump_j = omega^3 jump_s3`` (m/s^3); without it they are ``None``.
+    """
 
     theta: float  # rad, in [0, 2 pi)
     left: str
@@ -154,19 +164,23 @@ class Junction:
     infinite_acceleration: bool
     infinite_jerk: bool
     index: int = 0  # junction k joins segment k and segment (k+1) mod n
+    omega: float | None = None  # rad/s; None: only the per-radian jumps are known
 
-    # aliases used in docs/architecture.md
+    # SI jumps at speed omega (None without omega)
     @property
-    def jump_v(self) -> float:
-        return self.jump_s1
-
-    @property
-    def jump_a(self) -> float:
-        return self.jump_s2
+    def jump_v(self) -> float | None:
+        """Velocity jump omega * jump_s1 (m/s), or None without omega."""
+        return None if self.omega is None else self.omega * self.jump_s1
 
     @property
-    def jump_j(self) -> float:
-        return self.jump_s3
+    def jump_a(self) -> float | None:
+        """Acceleration jump omega^2 * jump_s2 (m/s^2), or None without omega."""
+        return None if self.omega is None else self.omega**2 * self.jump_s2
+
+    @property
+    def jump_j(self) -> float | None:
+        """Jerk jump omega^3 * jump_s3 (m/s^3), or None without omega."""
+        return None if self.omega is None else self.omega**3 * self.jump_s3
 
     @property
     def infinite_a(self) -> bool:
@@ -186,25 +200,38 @@ class Junction:
         return "finite jerk step" if self.jump_s3 != 0.0 else "smooth"
 
     def describe(self) -> str:
-        """One line for humans, e.g. ``theta = 90 deg: rise(shm) -> dwell: ... infinite jerk``."""
+        """One line for humans, e.g. ``theta = 90 deg: rise(shm) -> dwell: ... infinite jerk``.
+
+        With ``omega`` the jumps are in m/s, m/s^2, m/s^3; without it, per radian."""
         msg = {
             "infinite acceleration": "INFINITE ACCELERATION (velocity step; jerk infinite too)",
             "infinite jerk": "INFINITE JERK (acceleration step)",
             "finite jerk step": "finite jerk step",
             "smooth": "smooth (s, v, a, j continuous)",
         }[self.kind]
-        return (f"theta = {degrees(self.theta):8.3f} deg: {self.left} -> {self.right}: "
-                f"jump s' = {self.jump_s1:+.4g} m/rad, s'' = {self.jump_s2:+.4g} m/rad^2, "
-                f"s''' = {self.jump_s3:+.4g} m/rad^3; {msg}")
+        if self.omega is None:  # + 0.0 turns -0.0 into 0.0 (no "-0" in the report)
+            jumps = (f"jump s' = {self.jump_s1 + 0.0:+.4g} m/rad, s'' = {self.jump_s2 + 0.0:+.4g} "
+                     f"m/rad^2, s''' = {self.jump_s3 + 0.0:+.4g} m/rad^3")
+        else:
+            jumps = (f"jump v = {self.jump_v + 0.0:+.4g} m/s, a = {self.jump_a + 0.0:+.4g} m/s^2, "
+                     f"j = {self.jump_j + 0.0:+.4g} m/s^3")
+        return f"theta = {degrees(self.theta):8.3f} deg: {self.left} -> {self.right}: {jumps}; {msg}"
 
     def __str__(self):
         return self.describe()
 
 
 def junction_report(junctions) -> str:
-    """Text report of a junction list (for the CLI); velocity/acceleration/jerk jumps scale by
-    omega, omega^2, omega^3."""
-    lines = ["Junctions (jumps = right - left, per-rad units):"]
+    """Text report of a junction list (for the CLI). Jumps are in m/s, m/s^2, m/s^3 when the
+    junctions carry the cam speed (``CamProgram.junctions(omega)``), else per radian (the
+    velocity/acceleration/jerk jumps are then omega, omega^2, omega^3 times these)."""
+    junctions = list(junctions)
+    omegas = {jn.omega for jn in junctions}
+    if junctions and None not in omegas and len(omegas) == 1:
+        head = f"Junctions (jumps = right - left, at omega = {omegas.pop():.6g} rad/s):"
+    else:
+        head = "Junctions (jumps = right - left, per-rad units):"
+    lines = [head]
     lines += [f"  {k + 1:2d}. {jn.describe()}" for k, jn in enumerate(junctions)]
     n_a = sum(jn.infinite_acceleration for jn in junctions)
     n_j = sum(jn.infinite_jerk and not jn.infinite_acceleration for jn in junctions)
@@ -316,8 +343,14 @@ class CamProgram:
         return SVAJ(d.theta, d.s, w * d.s1, w**2 * d.s2, w**3 * d.s3, w)
 
     # --- junctions ---------------------------------------------------------------------
-    def junctions(self) -> list[Junction]:
-        """One :class:`Junction` per join, in order, the last one being the wrap at 2 pi."""
+    def junctions(self, omega: float | None = None) -> list[Junction]:
+        """One :class:`Junction` per join, in order, the last one being the wrap at 2 pi.
+
+        Each carries the per-radian jumps ``jump_s1, jump_s2, jump_s3``; with the cam speed
+        ``omega`` (rad/s) also the SI jumps ``jump_v = omega jump_s1`` (m/s),
+        ``jump_a = omega^2 jump_s2`` (m/s^2) and ``jump_j = omega^3 jump_s3`` (m/s^3).
+        """
+        w = None if omega is None else vd.positive("omega", omega, "rad/s")
         segs = self.segments
         n = len(segs)
         out = []
@@ -334,17 +367,18 @@ class CamProgram:
                                 left=L.name, right=R.name, jump_s1=float(jump[0]),
                                 jump_s2=float(jump[1]), jump_s3=float(jump[2]),
                                 infinite_acceleration=inf_a,
-                                infinite_jerk=inf_a or bool(jump[1] != 0.0), index=k))
+                                infinite_jerk=inf_a or bool(jump[1] != 0.0), index=k, omega=w))
         return out
 
-    def table(self) -> str:
-        """Readable report: the segments, then the junctions."""
+    def table(self, omega: float | None = None) -> str:
+        """Readable report: the segments, then the junctions (in SI at ``omega`` rad/s if given,
+        else per radian)."""
         lines = ["Cam program (theta in deg, lift in mm):"]
         for k, (sg, th0, h0) in enumerate(zip(self.segments, self._starts, self._h0, strict=True)):
             end = h0 + sg.sign * sg.h
             lines.append(f"  {k + 1:2d}. {sg.name:28s} {degrees(th0):8.3f} -> "
                          f"{degrees(th0 + sg.beta):8.3f} deg, lift {h0 * 1e3:.4g} -> {end * 1e3:.4g} mm")
-        lines.append(junction_report(self.junctions()))
+        lines.append(junction_report(self.junctions(omega)))
         return "\n".join(lines)
 
     def __str__(self):

@@ -3,7 +3,8 @@ curvature, contact force, and the cam shape. matplotlib is imported inside each 
 (Agg backend), so importing this module is cheap and headless.
 
 Every function takes a :class:`femcam.scene.SceneState` (``st``) and a PNG path and returns
-the path. Labels carry units: mm, m/s, m/s^2, m/s^3, deg, N.
+the path. Labels carry units: mm, m/s, m/s^2, m/s^3, deg, N. :func:`plot_laws` (the
+normalised motion laws, ``docs/img/kinematics_laws.png``) needs no scene.
 """
 
 from __future__ import annotations
@@ -167,3 +168,38 @@ def plot_all(st, outdir, prefix: str = "", *, Rr: float = 0.0, limit_deg: float 
         plot_contact_force(st, name("fc")),
         plot_cam(st, name("cam")),
     ]
+
+
+#: the laws drawn by :func:`plot_laws` (the figure docs/img/kinematics_laws.png)
+LAWS_FIGURE = ("shm", "cycloidal", "poly345", "poly4567", "modified_sine", "modified_trapezoid",
+               "bezier9")
+
+
+def plot_laws(path, names=LAWS_FIGURE, n: int = 401, title: str = ""):
+    """Normalised motion laws (unit lift) against u = theta/beta: four panels s, v = ds/du,
+    a = d2s/du2 and j = d3s/du3 (dimensionless), one curve per law in ``names``.
+
+    This draws ``docs/img/kinematics_laws.png``::
+
+        python -c "from femcam.viz.analytic import plot_laws; plot_laws('docs/img/kinematics_laws.png')"
+    """
+    from ..kinematics import law
+
+    plt = _plt()
+    u = np.linspace(0.0, 1.0, n)
+    fig, axs = plt.subplots(2, 2, sharex=True, figsize=(6.4, 4.2))
+    panels = [("s", "s (lift / h)"), ("v", "v = ds/du"), ("a", "a = d\u00b2s/du\u00b2"),
+              ("j", "j = d\u00b3s/du\u00b3")]
+    for name in names:
+        L = law(name)
+        for ax, (k, _) in zip(axs.flat, panels, strict=True):
+            ax.plot(u, getattr(L, k)(u), lw=1.0, label=name)
+    for ax, (_, lab) in zip(axs.flat, panels, strict=True):
+        ax.set_ylabel(lab)
+        ax.grid(True, alpha=0.3)
+    for ax in axs[-1]:
+        ax.set_xlabel("u = \u03b8/\u03b2 (-)")
+    axs[0, 0].legend(fontsize=6)
+    fig.suptitle(title or "femcam normalised motion laws (unit lift)", fontsize=10)
+    fig.tight_layout()
+    return _save(fig, path)
