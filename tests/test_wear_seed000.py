@@ -87,11 +87,81 @@ def test_jerk_and_continuity():
     assert t.row("shm").Cj == pytest.approx(math.pi**3 / 2, rel=1e-6)
     assert t.row("cycloidal").Cj == pytest.approx(4 * math.pi**2, rel=1e-6)
     assert t.row("poly345").Cj == pytest.approx(60.0, rel=1e-6)
-    assert t.row("cycloidal").peak_jerk > t.row("shm").peak_jerk   # magnitude claim fails
+    assert t.row("cycloidal").interior_peak_jerk > t.row("shm").interior_peak_jerk  # magnitude claim fails
     assert t.row("uniform_velocity").junction.startswith("velocity jump")
     assert t.row("shm").junction.startswith("acceleration jump")
     assert t.row("cycloidal").junction == "finite jerk jump"
     assert t.row("poly4567").junction == "jerk continuous"
+
+
+def test_peak_jerk_interior_and_with_dwells():
+    # hand values, h = 10 mm, beta = pi, omega = 1 rad/s: j_max = Cj h omega^3 / beta^3 (mm/s^3)
+    h_b3 = 10.0 / math.pi**3
+    interior = {"uniform_velocity": 0.0, "shm": math.pi**3 / 2 * h_b3, "cycloidal": 4 * math.pi**2 * h_b3,
+                "poly345": 60.0 * h_b3, "poly4567": 52.5 * h_b3}
+    # next to a dwell: a velocity step (UV) or an acceleration step (SHM) makes the jerk infinite
+    with_dwell = dict(interior, uniform_velocity=math.inf, shm=math.inf)
+    t = seed000_table(list(interior))
+    for name in interior:
+        r = t.row(name)
+        assert r.interior_peak_jerk * 1e3 == pytest.approx(interior[name], rel=1e-6, abs=1e-12), name
+        assert r.peak_jerk * 1e3 == pytest.approx(with_dwell[name], rel=1e-6, abs=1e-12), name
+    assert t.row("shm").interior_peak_jerk * 1e3 == pytest.approx(5.0, rel=1e-12)   # 10 pi^3/(2 pi^3)
+    txt = format_table3(t)
+    for pretty, expect in (("Uniform Velocity", ["0.0000", "inf"]), ("SHM", ["5.0000", "inf"]),
+                           ("Cycloidal", ["12.7324", "12.7324"])):
+        ln = next(ln for ln in txt.splitlines() if ln.startswith(pretty) and "jerk" in ln)
+        # columns after the name: int v^2 du, quad rel.diff, Cj, interior, with dwells
+        assert ln[len(pretty):].split()[3:5] == expect, ln
+
+
+def test_cli_csv_jerk_columns(tmp_path):
+    import csv
+
+    from femcam.cli import main
+
+    assert main(["wear", "seed000", "--csv", str(tmp_path / "t.csv")]) == 0
+    lines = (tmp_path / "t.csv").read_text().splitlines()[1:]
+    rows = {r["law"]: r for r in csv.DictReader(lines)}
+    assert float(rows["uniform_velocity"]["interior_peak_jerk_mm_s3"]) == 0.0
+    assert float(rows["uniform_velocity"]["peak_jerk_with_dwells_mm_s3"]) == math.inf
+    assert float(rows["shm"]["interior_peak_jerk_mm_s3"]) == pytest.approx(5.0, rel=1e-5)
+    assert float(rows["shm"]["peak_jerk_with_dwells_mm_s3"]) == math.inf
+    cyc = 40.0 / math.pi    # 4 pi^2 x 10 / pi^3
+    assert float(rows["cycloidal"]["interior_peak_jerk_mm_s3"]) == pytest.approx(cyc, rel=1e-5)
+    assert float(rows["cycloidal"]["peak_jerk_with_dwells_mm_s3"]) == pytest.approx(cyc, rel=1e-5)
+
+
+def test_cli_all_laws(tmp_path, capsys):
+    """``--all-laws``: every named law is present, and the closed-form int v^2 du equals the
+    quadrature and the hand values (and v_rms = (h omega/beta) sqrt(I) with them)."""
+    import csv
+
+    from femcam.cli import main
+
+    assert main(["wear", "seed000", "--all-laws", "--csv", str(tmp_path / "all.csv")]) == 0
+    out = capsys.readouterr().out
+    lines = (tmp_path / "all.csv").read_text().splitlines()[1:]
+    rows = {r["law"]: r for r in csv.DictReader(lines)}
+    assert set(rows) == set(ALL_LAWS)
+    assert len(ALL_LAWS) == 10
+    for pretty in ("Uniform Velocity", "SHM", "Cycloidal", "3-4-5 polynomial", "4-5-6-7 polynomial",
+                   "Modified sine", "Modified trapezoid", "bezier5", "bezier7", "bezier9"):
+        assert pretty in out, pretty
+    # hand-derived I (module docstring; Bernstein product integral for the Bezier laws); the
+    # Bezier 9 value 1.814068 is checked against a 200001-point trapezoid below instead
+    hand = {"uniform_velocity": 1.0, "shm": math.pi**2 / 8, "cycloidal": 1.5, "poly345": 10 / 7,
+            "poly4567": 4900 / 3003, "bezier5": 10 / 7, "bezier7": 700 / 429}
+    u = np.linspace(0.0, 1.0, 200001)
+    for name, r in rows.items():
+        I_c, I_q = float(r["int_v2_du"]), float(r["int_v2_du_quad"])
+        assert I_c == pytest.approx(I_q, rel=1e-9), name              # closed form = quadrature
+        v = kin.law(name).v(u)
+        I_ref = hand.get(name, np.trapezoid(v * v, u))
+        assert I_c == pytest.approx(I_ref, rel=1e-8), name
+        v_rms = 10.0 / math.pi * math.sqrt(I_ref)                   # mm/s, h = 10 mm, beta = pi
+        assert float(r["v_rms_mm_s"]) == pytest.approx(v_rms, rel=1e-5), name
+        assert float(r["S_mm"]) == pytest.approx(10.0 * math.sqrt(I_ref / (math.pi**2 / 8)), rel=1e-5), name
 
 
 def test_format_and_inputs():

@@ -1,14 +1,16 @@
 """``femcam wear``: seed 000's Archard/RMS table, and the Archard wear map of a scene.
 
 * ``femcam wear seed000 [--csv FILE] [--all-laws]`` prints seed 000's Table 3 layout (v_rms in
-  mm/s, ratio to SHM, S in mm), the wear list (W in mm^3), peak jerk and junction continuity,
-  and the paper-vs-femcam differences.
-* ``femcam wear map SCENE.toml --out DIR [--cycles N] [--source hertz|fe] [--laws a,b,c]``
-  writes ``DIR/wear_<law>.csv`` (per cam angle), ``DIR/wear_<law>_surface.csv`` (cam arc
-  length grid), ``DIR/wear_summary.csv`` and PNG plots.
+  mm/s, ratio to SHM, S in mm), the wear list (W in mm^3), interior and with-dwell peak jerk and
+  junction continuity, and the paper-vs-femcam differences.
+* ``femcam wear map SCENE.toml --out DIR [--cycles N] [--source hertz|fe] [--laws a,b,c]
+  [--tip-radius-mm R]`` writes ``DIR/wear_<law>.csv`` (per cam angle),
+  ``DIR/wear_<law>_surface.csv`` (cam arc length grid), ``DIR/wear_<law>_follower.csv``
+  (follower surface grid), ``DIR/wear_summary.csv`` and PNG plots.
 
-Scene ``[wear]`` keys: ``K`` (dimensionless; with the cam's ``hardness_MPa``) or
-``k_mm3_per_N_m``; ``roller_model = "srr"|"inertia"``, ``srr``, ``J_kg_m2``; ``cycles``.
+Scene ``[wear]`` keys (checked; see :mod:`femcam.wear.options`): ``K`` (dimensionless; with the
+cam's ``hardness_MPa``) or ``k_mm3_per_N_m``; ``roller_model = "srr"|"inertia"``, ``srr``,
+``J_kg_m2``, ``T_drag_N_m``; ``tip_radius_mm`` (knife-edge); ``cycles``.
 """
 
 from __future__ import annotations
@@ -32,7 +34,7 @@ def register(subparsers) -> None:
     s.add_argument("--csv", default=None, metavar="FILE", help="also write the table as CSV")
     s.add_argument("--all-laws", action="store_true", help="every femcam motion law, not only the paper's 3")
     s.set_defaults(func=_seed000)
-    m = sub.add_parser("map", help="Archard wear depth on the cam of a scene")
+    m = sub.add_parser("map", help="Archard wear depth on the cam and the follower of a scene")
     m.add_argument("scene", metavar="SCENE.toml")
     m.add_argument("--out", required=True, metavar="DIR")
     m.add_argument("--cycles", type=float, default=None, metavar="N",
@@ -42,6 +44,9 @@ def register(subparsers) -> None:
     m.add_argument("--laws", default=None, metavar="A,B,C",
                    help="compare motion laws (comma-separated; default: the scene's)")
     m.add_argument("--step-deg", type=float, default=0.5, metavar="DEG", help="cam angle step (default 0.5)")
+    m.add_argument("--tip-radius-mm", type=float, default=None, metavar="R",
+                   help="knife-edge followers: tip radius in mm (default: scene [wear] tip_radius_mm); "
+                        "a sharp tip has no contact width, so the wear map needs one")
     m.add_argument("--no-plots", action="store_true")
     m.set_defaults(func=_map)
     p.set_defaults(func=lambda args: (p.print_help(), 2)[1])
@@ -71,58 +76,110 @@ def _seed000(args) -> int:
 
 
 def wear_coefficient(scene) -> float:
-    """k (m^3/(N m)) from the scene's [wear] table: ``k_mm3_per_N_m``, or ``K`` with the cam
-    hardness; default K = 1e-8 with H = 2000 N/mm^2 (seed 000)."""
-    from ..wear.archard import dimensional_coefficient
+    """k (m^3/(N m)) from the scene's checked [wear] table, see
+    :func:`femcam.wear.options.wear_coefficient_info` (which also says where k came from)."""
+    from ..wear.options import wear_coefficient_info
 
-    wr = scene.wear or {}
-    if "k_mm3_per_N_m" in wr:
-        from .. import _validate as vd
-
-        return vd.nonnegative("[wear] k_mm3_per_N_m", wr["k_mm3_per_N_m"], "mm^3/(N m)") * 1e-9
-    H = scene.cam.hardness or 2000e6
-    return dimensional_coefficient(wr.get("K", 1e-8), H)
+    return wear_coefficient_info(scene)[0]
 
 
-def scene_wear(scene, theta, *, source="hertz", cycles=1e6):
-    """(WearMap, SceneState, SlipResult) of a scene at angles theta (one revolution)."""
+def _tip_scene(scene, tip_radius):
+    """A knife-edge scene with tip radius r: the same scene with a roller of radius r (which the
+    slip model keeps from turning). Other followers: the scene itself (r must be None)."""
+    import dataclasses
+
+    kind = type(scene.follower).__name__
+    if kind != "KnifeEdgeFollower":
+        if tip_radius is not None:
+            raise InputError(f"tip radius = {tip_radius * 1e3:g} mm: applies to knife-edge followers only "
+                             f"(this scene's follower is a {scene.follower.kind} follower)")
+        return scene
+    if tip_radius is None:
+        raise InputError("follower type = knife_edge: a sharp tip has no contact width, so the contact "
+                         "pressure and the wear depth are undefined; give the tip radius: scene [wear] "
+                         "tip_radius_mm (mm) or --tip-radius-mm (mm)")
+    from ..profile import RollerFollower
+
+    f = scene.follower
+    return dataclasses.replace(scene, follower=RollerFollower(Rb=f.Rb, Rr=tip_radius, e=f.e))
+
+
+def scene_wear(scene, theta, *, source="hertz", cycles=1e6, tip_radius=None):
+    """(WearMap, SceneState, SlipResult) of a scene at angles theta (one revolution).
+
+    Knife-edge followers need ``tip_radius`` (m) or the scene's ``[wear] tip_radius_mm``: the
+    kinematics, pressure angle, contact force and cam curvature are then those of the cam cut for
+    the radiused tip (a roller of that radius that does not turn), the pressure is Hertz of the
+    cam against the tip radius, and the slip is :func:`femcam.wear.slip.radiused_tip`.
+    ``source="fe"`` runs an FE sweep (:func:`femcam.sweep`) at ``theta`` and uses its
+    ``a_fe``/``p0_fe``; angles whose FE solve failed are skipped with a warning.
+    """
     from ..wear.map import wear_map
+    from ..wear.options import wear_coefficient_info, wear_options
     from ..wear.slip import follower_slip
 
-    st = scene.analyse(theta)
+    opts = wear_options(scene)
+    if tip_radius is None:
+        tip_radius = opts.get("tip_radius_mm")
+    elif type(scene.follower).__name__ == "KnifeEdgeFollower":
+        from .. import _validate as vd
+
+        tip_radius = vd.positive("tip radius", tip_radius, "m")
+    sc = _tip_scene(scene, tip_radius)
+    st = sc.analyse(theta)
     Fc = np.clip(st.Fc, 0.0, None)
     if source == "fe":
         from ..sweep import sweep
 
-        res = sweep(scene, angles=theta, method="fe", progress=False)
-        table = {"theta": res.theta, "a": res["a_fe"], "p0": res["p0_fe"], "Fc": res["Fc"]}
+        table = sweep(sc, angles=theta, method="fe", progress=False)
+        pressure = "fe"
     else:
         from ..hertz import LineContact
 
-        R2 = scene.follower.Rr if type(scene.follower).__name__ == "RollerFollower" else math.inf
-        if type(scene.follower).__name__ == "KnifeEdgeFollower":
-            raise InputError("follower type = knife-edge: a sharp tip has no Hertz contact width; "
-                             "use a roller or flat-faced follower for the wear map")
-        hc = LineContact(F=Fc, length=scene.length, R1=st.rho, R2=R2, cam=scene.cam, roller=scene.roller)
+        R2 = sc.follower.Rr if type(sc.follower).__name__ == "RollerFollower" else math.inf
+        hc = LineContact(F=Fc, length=sc.length, R1=st.rho, R2=R2, cam=sc.cam, roller=sc.roller)
         table = {"theta": theta, "a": hc.a, "p0": hc.p0, "Fc": Fc}
-    wr = scene.wear or {}
+        pressure = "hertz"
     slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, omega=scene.omega, Fc=Fc,
-                         roller_model=wr.get("roller_model", "srr"), srr=float(wr.get("srr", 0.02)),
-                         mu=scene.mu or 0.1, J=wr.get("J_kg_m2"))
-    wm = wear_map(table, slip, k=wear_coefficient(scene), length=scene.length, cycles=cycles)
+                         roller_model=opts.get("roller_model", "srr"), srr=opts.get("srr", 0.02),
+                         mu=scene.mu or 0.1, J=opts.get("J_kg_m2"), T_drag=opts.get("T_drag_N_m", 0.0),
+                         tip_radius=tip_radius if sc is not scene else None)
+    k, _where = wear_coefficient_info(scene)
+    wm = wear_map(table, slip, k=k, length=scene.length, cycles=cycles, pressure=pressure)
     return wm, st, slip
+
+
+def _follower_coordinate(scene) -> tuple[str, str, str]:
+    """(CSV column name, plain-words description, plot label) of the follower surface coordinate."""
+    kind = type(scene.follower).__name__
+    if kind == "RollerFollower":
+        return "roller_arc_mm", ("arc along the roller circumference (0 .. 2 pi Rr) from the roller point "
+                                 "in contact at the first cam angle of the first revolution"), "roller arc"
+    if kind == "FlatFacedFollower":
+        return "face_x_mm", "distance along the flat face from the follower axis", "face position from axis"
+    return ("tip_arc_mm", "arc along the tip from the tip's axis point (r_tip x pressure angle)",
+            "tip arc r_tip phi")
 
 
 def _map(args) -> int:
     from ..scene import load_scene
+    from ..wear.options import describe_k, wear_coefficient_info, wear_options
 
     scene = load_scene(args.scene)
-    cycles = args.cycles if args.cycles is not None else float((scene.wear or {}).get("cycles", 1e6))
+    opts = wear_options(scene)
+    cycles = args.cycles if args.cycles is not None else float(opts.get("cycles", 1e6))
     step = float(args.step_deg)
     if not (0 < step <= 10):
         raise InputError(f"--step-deg = {step:g} deg: must be in (0, 10]")
+    tip = None
+    if args.tip_radius_mm is not None:
+        if not (math.isfinite(args.tip_radius_mm) and args.tip_radius_mm > 0):
+            raise InputError(f"--tip-radius-mm = {args.tip_radius_mm:g} mm: must be > 0")
+        tip = args.tip_radius_mm * 1e-3
     theta = np.radians(np.arange(0.0, 360.0, step))
     laws = [x.strip() for x in args.laws.split(",")] if args.laws else [None]
+    k, k_where = wear_coefficient_info(scene)
+    print(describe_k(k, k_where))
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     head = f"# femcam wear map; scene: {args.scene}; command: {shlex.join(sys.argv)}\n"
@@ -130,7 +187,7 @@ def _map(args) -> int:
     for name in laws:
         sc = scene.with_law(name) if name else scene
         label = name or "scene"
-        wm, st, slip = scene_wear(sc, theta, source=args.source, cycles=cycles)
+        wm, st, slip = scene_wear(sc, theta, source=args.source, cycles=cycles, tip_radius=tip)
         results[label] = (wm, st, slip)
         with (out / f"wear_{label}.csv").open("w", newline="") as fh:
             fh.write(head)
@@ -148,26 +205,56 @@ def _map(args) -> int:
             w.writerow(["arc_mm", "depth_per_rev_nm", f"depth_{cycles:g}_cycles_um"])
             for x, h in zip(wm.x_cam, wm.depth_cam, strict=True):
                 w.writerow([f"{x * 1e3:.6g}", f"{h * 1e9:.6g}", f"{h * cycles * 1e6:.6g}"])
+        col, words, _short = _follower_coordinate(sc)
+        with (out / f"wear_{label}_follower.csv").open("w", newline="") as fh:
+            fh.write(head)
+            drift = ""
+            if wm.follower_period is not None:
+                drift = (f"; the contact advances {wm.follower_drift * 1e3:.6g} mm of the "
+                         f"{wm.follower_period * 1e3:.6g} mm roller circumference per cam revolution: "
+                         f"depth_{cycles:g}_cycles sums the revolutions with that drift, "
+                         f"depth_{cycles:g}_cycles_no_drift is {cycles:g} x depth_per_rev "
+                         "(phase-locked bound)")
+            fh.write(f"# {col}: {words}; {slip.model}{drift}\n")
+            w = csv.writer(fh)
+            w.writerow([col, "depth_per_rev_nm", f"depth_{cycles:g}_cycles_um",
+                        f"depth_{cycles:g}_cycles_no_drift_um"])
+            tot = wm.depth_follower_cycles
+            if tot is None:
+                tot = cycles * wm.depth_follower
+            for x, h, hN in zip(wm.x_follower, wm.depth_follower, tot, strict=True):
+                w.writerow([f"{x * 1e3:.6g}", f"{h * 1e9:.6g}", f"{hN * 1e6:.6g}", f"{h * cycles * 1e6:.6g}"])
     with (out / "wear_summary.csv").open("w", newline="") as fh:
-        fh.write(head)
+        fh.write(f"{head.rstrip()}; {describe_k(k, k_where)}\n")
         w = csv.writer(fh)
         w.writerow(["law", "cycles", "max_depth_um", "theta_at_max_deg", "arc_at_max_mm", "volume_cam_mm3",
-                    "volume_follower_mm3", "volume_archard_mm3", "conservation_error", "slip_model"])
+                    "volume_follower_mm3", "volume_archard_mm3", "conservation_error",
+                    "max_depth_follower_um", "follower_x_at_max_mm", "max_depth_follower_no_drift_um",
+                    "follower_drift_mm_per_rev", "load_error", "skipped_angles_deg", "k_m3_per_N_m",
+                    "pressure", "slip_model"])
         print(f"{'law':<20}{'max depth um':>14}{'at theta deg':>14}{'arc mm':>9}{'V cam mm^3':>13}"
-              f"  (after {cycles:g} revolutions, k = {results[next(iter(results))][0].k:.3g} m^3/(N m))")
+              f"{'follower um':>13}{'at mm':>9}  (after {cycles:g} revolutions)")
         for label, (wm, _st, slip) in results.items():
+            skipped = " ".join(f"{math.degrees(wm.theta[i]):g}" for i in wm.skipped)
             w.writerow([label, f"{cycles:g}", f"{wm.max_depth * 1e6:.6g}",
                         f"{math.degrees(wm.theta_max):.3f}",
                         f"{wm.x_max * 1e3:.5g}", f"{wm.volume_cam * cycles * 1e9:.6g}",
                         f"{wm.volume_follower * cycles * 1e9:.6g}", f"{wm.volume_archard * cycles * 1e9:.6g}",
-                        f"{wm.conservation_error:.2e}", slip.model])
+                        f"{wm.conservation_error:.2e}", f"{wm.max_depth_follower * 1e6:.6g}",
+                        f"{wm.x_max_follower * 1e3:.5g}", f"{wm.max_depth_follower_locked * 1e6:.6g}",
+                        f"{wm.follower_drift * 1e3:.6g}", f"{wm.load_error:.2e}", skipped, f"{wm.k:.6g}",
+                        args.source, slip.model])
             print(f"{label:<20}{wm.max_depth * 1e6:>14.4g}{math.degrees(wm.theta_max):>14.2f}"
-                  f"{wm.x_max * 1e3:>9.3f}{wm.volume_cam * cycles * 1e9:>13.4g}")
+                  f"{wm.x_max * 1e3:>9.3f}{wm.volume_cam * cycles * 1e9:>13.4g}"
+                  f"{wm.max_depth_follower * 1e6:>13.4g}{wm.x_max_follower * 1e3:>9.3f}")
+            if wm.skipped:
+                print(f"  {label}: skipped {len(wm.skipped)} angle(s) with a failed FE solve: {skipped} deg")
     if not args.no_plots:
         from ..viz.wear import plot_wear_comparison, plot_wear_map, plot_wear_polar
 
         for label, (wm, st, _slip) in results.items():
-            plot_wear_map(wm, out / f"wear_{label}.png", title=f"{scene.name} ({label})")
+            plot_wear_map(wm, out / f"wear_{label}.png", title=f"{scene.name} ({label})",
+                          follower_label=_follower_coordinate(scene)[2])
             plot_wear_polar(wm, st.profile.x, st.profile.y, out / f"wear_{label}_polar.png",
                             title=f"{scene.name} ({label})")
         if len(results) > 1:

@@ -1,5 +1,6 @@
 """Wear plots (matplotlib, imported inside the functions): depth against cam angle and arc
-length, a polar view of the cam with the wear magnified, and a motion-law comparison."""
+length, the follower (roller) depth, a polar view of the cam with the wear magnified, and a
+motion-law comparison."""
 
 from __future__ import annotations
 
@@ -15,10 +16,15 @@ def _plt():
     return plt
 
 
-def plot_wear_map(wm, path, *, title: str = ""):
-    """Two panels: depth after ``wm.cycles`` revolutions vs cam angle (deg) and vs arc length (mm)."""
+def plot_wear_map(wm, path, *, title: str = "", follower_label: str | None = None):
+    """Three panels: cam depth after ``wm.cycles`` revolutions vs cam angle (deg) and vs arc
+    length (mm), and the follower (roller, face or tip) depth vs its surface coordinate (mm).
+
+    On a roller the follower panel shows the depth after ``cycles`` with the contact's drift
+    from one revolution to the next (``wm.depth_follower_cycles``) and the phase-locked bound
+    ``cycles x`` one revolution's depth (dashed)."""
     plt = _plt()
-    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(6.4, 5.2))
+    fig, (ax1, ax2, ax3) = plt.subplots(3, 1, figsize=(6.4, 7.6))
     c = wm.cycles
     ax1.plot(np.degrees(wm.theta), wm.depth_at_theta * c * 1e6, label="map (moving Hertz ellipse)")
     ax1.plot(np.degrees(wm.theta), wm.depth_pass * c * 1e6, "--", label="closed form k w v_slip / V_cam")
@@ -28,8 +34,22 @@ def plot_wear_map(wm, path, *, title: str = ""):
     ax2.plot(wm.x_cam * 1e3, wm.depth_cam * c * 1e6)
     ax2.axvline(wm.x_max * 1e3, color="r", lw=0.8)
     ax2.set_xlabel("cam arc length from the contact at theta = 0 (mm)")
-    ax2.set_ylabel("depth (um)")
-    ax2.set_title(f"max {wm.max_depth * 1e6:.3g} um at arc {wm.x_max * 1e3:.2f} mm", fontsize=9)
+    ax2.set_ylabel("cam depth (um)")
+    ax2.set_title(f"cam: max {wm.max_depth * 1e6:.3g} um at arc {wm.x_max * 1e3:.2f} mm", fontsize=9)
+    total = wm.depth_follower_cycles if wm.depth_follower_cycles is not None else c * wm.depth_follower
+    if wm.follower_period is not None:
+        ax3.plot(wm.x_follower * 1e3, total * 1e6,
+                 label=f"with drift {wm.follower_drift * 1e3:.3g} mm/rev")
+        ax3.plot(wm.x_follower * 1e3, c * wm.depth_follower * 1e6, "--", lw=0.8,
+                 label=f"{c:g} x one revolution (phase-locked bound)")
+        ax3.legend(fontsize=8)
+    else:
+        ax3.plot(wm.x_follower * 1e3, total * 1e6)
+    ax3.axvline(wm.x_max_follower * 1e3, color="r", lw=0.8)
+    ax3.set_xlabel(f"follower: {follower_label or 'surface coordinate'} (mm)", fontsize=8)
+    ax3.set_ylabel("follower depth (um)")
+    ax3.set_title(f"follower: max {wm.max_depth_follower * 1e6:.3g} um at {wm.x_max_follower * 1e3:.2f} mm",
+                  fontsize=9)
     if title:
         fig.suptitle(title, fontsize=10)
     fig.tight_layout()

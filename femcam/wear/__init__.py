@@ -3,21 +3,43 @@
 * :mod:`.archard` -- ``W = k L S``, ``k = K / H`` (k in m^3/(N m), K dimensionless, H in Pa).
 * :mod:`.seed000` -- seed 000's Table 3 (v_rms, S = h v_rms/v_rms,SHM, W = K L S/H) for every
   motion law, closed form and quadrature; peak jerk and junction continuity.
-* :mod:`.slip` -- sliding speed at the contact per follower type (knife-edge, flat-faced,
-  roller with a slide-to-roll ratio or the inertia-limited slip model).
-* :mod:`.map` -- Archard depth ``h(x) = k int p v_slip dt`` on the cam and follower surfaces.
+* :mod:`.slip` -- sliding speed at the contact per follower type (knife-edge, knife-edge with a
+  tip radius, flat-faced, roller with a slide-to-roll ratio or the inertia-limited slip model).
+* :mod:`.map` -- Archard depth ``h(x) = k int p v_slip dt`` on the cam and follower surfaces;
+  the roller's drift from one revolution to the next (:func:`drift_sum`).
+* :mod:`.options` -- a scene's ``[wear]`` table checked (units in key names) and the wear
+  coefficient used, with where it came from.
 
 numpy/scipy only.
 """
 
 from .archard import archard_volume, dimensional_coefficient, dimensionless_coefficient
-from .map import WearMap, depth_per_pass, surface_depth, wear_depth_per_angle, wear_map
+from .map import (
+    WearInputWarning,
+    WearMap,
+    depth_per_pass,
+    drift_sum,
+    surface_depth,
+    wear_depth_per_angle,
+    wear_map,
+)
+from .options import wear_coefficient_info, wear_options
 from .seed000 import Seed000Inputs, Seed000Table, format_table3, rms_velocity, seed000_table
-from .slip import SlipResult, flat_faced, follower_slip, knife_edge, roller_inertia, roller_srr
+from .slip import (
+    SlipResult,
+    flat_faced,
+    follower_slip,
+    knife_edge,
+    radiused_tip,
+    roller_inertia,
+    roller_srr,
+)
 
 __all__ = [
     "archard_volume", "dimensional_coefficient", "dimensionless_coefficient",
-    "WearMap", "depth_per_pass", "surface_depth", "wear_depth_per_angle", "wear_map",
+    "WearInputWarning", "WearMap", "depth_per_pass", "drift_sum", "surface_depth", "wear_depth_per_angle",
+    "wear_map", "wear_coefficient_info", "wear_options",
     "Seed000Inputs", "Seed000Table", "format_table3", "rms_velocity", "seed000_table",
-    "SlipResult", "flat_faced", "follower_slip", "knife_edge", "roller_inertia", "roller_srr",
+    "SlipResult", "flat_faced", "follower_slip", "knife_edge", "radiused_tip", "roller_inertia",
+    "roller_srr",
 ]

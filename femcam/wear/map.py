@@ -40,10 +40,28 @@ step with the step's mid values of ``a, p0, v_slip``; the time integral is then 
 so the map conserves volume to round-off: ``l int h dx = k sum F v_slip dt`` (Archard's
 ``W = k L S``), whatever the grid, as long as the grid resolves ``a``.
 
+**Pressure source.** Per pass the depth depends on the pressure only through ``w = int p dx``,
+which equilibrium fixes at ``F/l`` for any distribution; the distribution only smooths the map
+over ~``a`` where the load changes. With the FE sweep's ``a_fe``/``p0_fe`` the map rebuilds an
+ellipse whose ``pi a p0/2`` misses ``F/l`` by the FE's accuracy on ``a`` and ``p0``
+(``WearMap.load_error``, ~1 % for seed 002), so FE-based wear agrees with Hertz-based wear to
+that accuracy, not better. An angle with ``Fc > 0`` but no pressure (failed solve) raises, or is
+skipped with a warning (sweep results), see :func:`contact_columns`.
+
+**Roller drift.** The cam comes back to the same point after a revolution; the roller does not:
+the contact advances ``D = int V_follower dt`` (mod ``2 pi Rr``) per cam revolution, so
+revolution n lays the one-revolution roller pattern down shifted by ``n D``.
+``WearMap.depth_follower_cycles`` sums these shifts exactly (:func:`drift_sum`);
+``cycles x depth_follower`` is the phase-locked bound (``D`` a multiple of ``2 pi Rr``). A
+constant ``D`` is itself an idealisation (real slip varies from revolution to revolution): what is
+robust is the mean, ``cycles x mean(depth_follower)``, and for large N with ``D/(2 pi Rr)`` not
+close to a ratio of small integers the pattern flattens towards it.
+
 Assumptions: Archard wear with constant k (no running-in); pressure from Hertz or the FE sweep
 (elliptical profile with the sweep's ``a``/``p0``); the profile is not updated as it wears
-(linear in cycles: depth after N cycles = N x depth per revolution); wear is uniform across the
-face width; both bodies wear with the same k (give a different k per body by scaling).
+(linear in cycles: depth after N cycles = N x depth per revolution on the cam; the roller with
+its drift); wear is uniform across the face width; both bodies wear with the same k (give a
+different k per body by scaling).
 """
 
 from __future__ import annotations
@@ -138,6 +156,13 @@ _KEYS = {
     "fe": (("a_fe", "a"), ("p0_fe", "p0")),
 }
 
+#: what to do where the contact force is positive but the pressure is missing (NaN or <= 0)
+MISSING = ("raise", "skip", "zero")
+
+
+class WearInputWarning(UserWarning):
+    """Angles of a sweep result were skipped by the wear map (their FE solve failed)."""
+
 
 def _get(src, names):
     for n in names:
@@ -150,13 +175,42 @@ def _get(src, names):
     return None
 
 
-def contact_columns(source, *, pressure: str = "hertz"):
+def _get_text(src, name):
+    try:
+        val = src[name]
+    except (KeyError, IndexError, TypeError, ValueError):
+        val = getattr(src, name, None)
+    return None if val is None else np.asarray(val).astype(str)
+
+
+def _degrees(theta, idx, limit: int = 12) -> str:
+    d = [f"{np.degrees(theta[i]):g}" for i in idx[:limit]]
+    more = f" ... ({len(idx)} angles)" if len(idx) > limit else ""
+    return "[" + ", ".join(d) + "]" + more
+
+
+def contact_columns(source, *, pressure: str = "hertz", missing: str | None = None,
+                    skipped: list | None = None):
     """``(theta, a, p0, Fc)`` arrays (SI) from a SweepResult-like object or a mapping.
 
     ``pressure="fe"`` reads ``a_fe``/``p0_fe``, ``"hertz"`` reads ``a_hertz``/``p0_hertz``; both
-    fall back to plain ``a``/``p0``. Angles without contact (``Fc <= 0``, NaN width) carry no load.
+    fall back to plain ``a``/``p0``. Angles without contact (``Fc <= 0``) carry no load.
+
+    An angle with ``Fc > 0`` but no pressure (``a`` or ``p0`` NaN or <= 0: a failed FE solve, a
+    Hertz-invalid angle) is *not* silently taken as no contact. ``missing``:
+
+    * ``"raise"`` -- :class:`~femcam.errors.InputError` naming the angles (deg);
+    * ``"skip"`` -- a :class:`WearInputWarning` naming the angles, which then carry no load
+      (the wear there is underestimated); their indices are appended to ``skipped``;
+    * ``"zero"`` -- silently no load (the behaviour :func:`wear_depth_per_angle` keeps);
+    * ``None`` (default) -- ``"skip"`` for the rows of a sweep result whose ``status`` is
+      ``"failed"`` (the sweep's ``message`` is quoted), ``"raise"`` for everything else.
+
+    Without an ``Fc`` column, contact is read from the width alone (NaN or 0 = no contact).
     """
     vd.choice("pressure", pressure, tuple(_KEYS))
+    if missing is not None:
+        vd.choice("missing", missing, MISSING)
     (ka, kp) = _KEYS[pressure]
     theta = _get(source, ("theta",))
     a, p0, Fc = _get(source, ka), _get(source, kp), _get(source, ("Fc",))
@@ -170,7 +224,41 @@ def contact_columns(source, *, pressure: str = "hertz"):
     bad = np.isfinite(a) & (a < 0)
     if np.any(bad):
         raise vd.fail("a", float(a[bad][0]), "m", "must be >= 0 (contact half-width)")
-    noc = ~(np.isfinite(a) & np.isfinite(p0) & (Fc > 0))
+    loaded = np.isfinite(Fc) & (Fc > 0)
+    have = np.isfinite(a) & np.isfinite(p0) & (a > 0) & (p0 > 0)
+    lost = np.flatnonzero(loaded & ~have)
+    if lost.size and missing != "zero":
+        status = _get_text(source, "status")
+        failed = np.zeros(theta.size, bool) if status is None else (status == "failed")
+        if missing is None:
+            skip, stop = lost[failed[lost]], lost[~failed[lost]]
+        else:
+            skip, stop = (lost, lost[:0]) if missing == "skip" else (lost[:0], lost)
+        what = f"{ka[0]}/{kp[0]}"
+        if stop.size:
+            hint = ""
+            if status is not None and np.all(status[stop] == "ok"):
+                hint = (f"; the sweep has no {what} there (was it run with method='hertz'? then use "
+                        "pressure='hertz')" if pressure == "fe" else
+                        "; Hertz theory does not apply there (sweep flag hertz_invalid): use pressure='fe'")
+            raise vd.fail("theta", _degrees(theta, stop), "deg",
+                          f"contact force Fc > 0 but the contact pressure {what} is missing (NaN or "
+                          f"<= 0) at {stop.size} angle(s){hint}; wear there is unknown, not zero "
+                          "(missing='skip' skips such angles with a warning)")
+        if skip.size:
+            import warnings
+
+            msgs = _get_text(source, "message")
+            why = ""
+            if msgs is not None:
+                uniq = sorted({m for m in msgs[skip] if m})
+                why = "; sweep message(s): " + " | ".join(uniq[:3]) if uniq else ""
+            warnings.warn(f"wear map: skipped {skip.size} angle(s) theta = {_degrees(theta, skip)} deg "
+                          f"where Fc > 0 but {what} is missing (failed solve): they carry no load, "
+                          f"so the wear near them is underestimated{why}", WearInputWarning, stacklevel=3)
+            if skipped is not None:
+                skipped.extend(int(i) for i in skip)
+    noc = ~(loaded & have)
     a = np.where(noc, 0.0, a)
     p0 = np.where(noc, 0.0, np.clip(p0, 0.0, None))
     return theta, a, p0, np.where(noc, 0.0, Fc)
@@ -183,10 +271,26 @@ class WearMap:
 
     Per cam angle: ``xi_cam`` (arc position of the contact centre, m), ``depth_pass`` (closed
     form ``k w v_slip/V_cam``, m per revolution), ``depth_at_theta`` (map value at ``xi_cam``).
-    On grids: ``x_cam``/``depth_cam`` (m per revolution) and ``x_follower``/``depth_follower``.
+    On grids: ``x_cam``/``depth_cam`` (m per revolution) and ``x_follower``/``depth_follower``
+    (m per revolution; ``x_follower``: roller, arc from the roller point in contact at
+    ``theta[0]`` in the first revolution; flat face, distance from the follower axis; radiused
+    knife-edge tip, arc ``r_tip phi`` from the tip's axis point).
+
+    ``depth_follower_cycles`` is the follower depth after ``cycles`` revolutions. On a roller
+    the contact does not come back to the same roller point after a cam revolution: it has
+    advanced by ``follower_drift`` (m, modulo ``2 pi Rr``), so revolution n lays the one-
+    revolution pattern down shifted by ``n D``; the sum is evaluated exactly (Fourier series,
+    geometric sum), see :func:`drift_sum`. ``max_depth_follower_locked`` is the bound
+    ``cycles x max(depth_follower)`` a phase-locked roller (``D`` a multiple of ``2 pi Rr``)
+    would reach. Other followers do not drift (``depth_follower_cycles = cycles x
+    depth_follower``).
+
     Volumes per revolution (m^3): ``volume_cam = l int h dx``, ``volume_follower``, and the
     independent Archard total ``volume_archard = k sum F v_slip dt``; ``conservation_error`` is
-    their relative difference (cam). ``*_total`` properties multiply by ``cycles``.
+    their relative difference (cam). ``load_error`` is the largest ``|l pi a p0/2 - Fc| / Fc``
+    over the contact angles: 0 for Hertz, the fit error of an FE ``a``/``p0``. ``skipped``:
+    indices of angles skipped for a missing pressure. ``*_total`` properties multiply by
+    ``cycles``.
     """
 
     theta: np.ndarray
@@ -206,6 +310,11 @@ class WearMap:
     length: float
     cycles: float
     model: str
+    depth_follower_cycles: np.ndarray | None = None
+    follower_period: float | None = None
+    follower_drift: float = 0.0
+    load_error: float = 0.0
+    skipped: tuple = ()
 
     @property
     def depth_cam_total(self) -> np.ndarray:
@@ -230,11 +339,83 @@ class WearMap:
         """Cam angle (rad) at which the deepest point of the cam is in contact."""
         return float(self.theta[self.i_max])
 
+    @property
+    def _follower_total(self) -> np.ndarray:
+        if self.depth_follower_cycles is not None:
+            return self.depth_follower_cycles
+        return self.cycles * self.depth_follower
+
+    @property
+    def max_depth_follower(self) -> float:
+        """Largest follower wear depth after ``cycles`` revolutions (m), roller drift included."""
+        return float(np.max(self._follower_total)) if self.depth_follower.size else 0.0
+
+    @property
+    def x_max_follower(self) -> float:
+        """Position (m, coordinate of ``x_follower``) of the deepest follower wear after ``cycles``."""
+        return float(self.x_follower[int(np.argmax(self._follower_total))]) if self.depth_follower.size \
+            else 0.0
+
+    @property
+    def max_depth_follower_locked(self) -> float:
+        """``cycles x`` the largest follower depth of one revolution (m): the phase-locked bound."""
+        return float(self.cycles * np.max(self.depth_follower)) if self.depth_follower.size else 0.0
+
     def summary(self) -> dict:
         return {"max_depth_m": self.max_depth, "theta_max_rad": self.theta_max, "x_max_m": self.x_max,
+                "max_depth_follower_m": self.max_depth_follower,
+                "x_max_follower_m": self.x_max_follower,
+                "max_depth_follower_locked_m": self.max_depth_follower_locked,
+                "follower_drift_m": self.follower_drift,
                 "volume_cam_m3": self.cycles * self.volume_cam,
                 "volume_follower_m3": self.cycles * self.volume_follower,
-                "conservation_error": self.conservation_error, "cycles": self.cycles, "model": self.model}
+                "conservation_error": self.conservation_error, "load_error": self.load_error,
+                "skipped_angles_rad": [float(self.theta[i]) for i in self.skipped],
+                "cycles": self.cycles, "model": self.model}
+
+
+def drift_sum(h, period: float, drift: float, cycles: float) -> np.ndarray:
+    r"""Depth after ``cycles`` revolutions when each revolution shifts the pattern by ``drift``.
+
+    ``h`` is the one-revolution depth on a uniform periodic grid ``x_j = j period / M``; the
+    contact starts revolution n at ``n D`` (D = ``drift``), so
+
+    .. math:: h_N(x) = \sum_{n=0}^{N-1} h(x - nD),\qquad
+              \hat h_N(m) = \hat h(m)\,\frac{1 - z_m^N}{1 - z_m},\ z_m = e^{-2\pi i m D/P}
+
+    (Fourier coefficients ``hat h(m)`` by FFT; ``z_m = 1`` gives ``N``). The grid function is
+    interpreted as its trigonometric interpolant, so a shift by a non-grid ``D`` is exact for it.
+    A non-integer ``cycles = N + f`` adds ``f`` times the pattern shifted by ``N D`` (a partial
+    revolution as a share of the whole one, like ``cycles x depth`` does). The mean is
+    ``cycles x mean(h)`` for any ``D``; for large N and ``D/P`` not close to a ratio of small
+    integers the pattern smears towards that mean.
+
+    >>> import numpy as np
+    >>> h = np.array([1.0, 0.0, 0.0, 0.0])
+    >>> drift_sum(h, 4.0, 1.0, 4).round(12).tolist()       # shift by one cell per revolution
+    [1.0, 1.0, 1.0, 1.0]
+    >>> drift_sum(h, 4.0, 4.0, 3).round(12).tolist()       # D = period: phase-locked, 3 h
+    [3.0, 0.0, 0.0, 0.0]
+    """
+    h = np.asarray(h, dtype=float)
+    period = vd.positive("period", period, "m")
+    drift = vd.number("drift", drift, "m")
+    cycles = vd.nonnegative("cycles", cycles, "revolutions")
+    M = h.size
+    n_full = int(np.floor(cycles))
+    frac = cycles - n_full
+    H = np.fft.rfft(h)
+    m = np.arange(H.size)
+    # phases as fractions of a turn, reduced before multiplying by 2 pi (keeps N m D/P accurate)
+    f1 = np.mod(m * (drift / period), 1.0)
+    z = np.exp(-2j * np.pi * f1)
+    zN = np.exp(-2j * np.pi * np.mod(m * ((drift / period) * n_full % 1.0), 1.0))
+    one = np.abs(1.0 - z) < 1e-12
+    geo = np.where(one, float(n_full), (1.0 - zN) / np.where(one, 1.0, 1.0 - z))
+    total = geo + frac * zN
+    if M % 2 == 0:  # Nyquist term of a real signal: keep it real (cos of the shift)
+        total[-1] = total[-1].real
+    return np.fft.irfft(H * total, n=M)
 
 
 def _cumulative(theta_closed, f_closed):
@@ -243,18 +424,21 @@ def _cumulative(theta_closed, f_closed):
 
 
 def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressure: str = "hertz",
-             n_grid: int | None = None) -> WearMap:
+             n_grid: int | None = None, missing: str | None = None) -> WearMap:
     """Archard wear map of one revolution from per-angle contact data and a slip model.
 
     ``source``: SweepResult-like object or mapping with ``theta`` (rad, uniform over one
     revolution, endpoint excluded), ``a``/``p0`` (m, Pa; ``a_hertz``/``p0_hertz`` or
     ``a_fe``/``p0_fe``) and ``Fc`` (N). ``slip``: a :class:`~femcam.wear.slip.SlipResult` on the
-    same angles. ``k`` in m^3/(N m), ``length`` (face width) in m.
+    same angles. ``k`` in m^3/(N m), ``length`` (face width) in m. ``missing``: what to do at
+    angles with ``Fc > 0`` and no pressure, see :func:`contact_columns` (default: raise; skip
+    with a warning the ``failed`` rows of a sweep result).
     """
     k = vd.nonnegative("k", k, "m^3/(N m)")
     length = vd.positive("length", length, "m")
     cycles = vd.nonnegative("cycles", cycles, "revolutions")
-    theta, a, p0, Fc = contact_columns(source, pressure=pressure)
+    skipped: list = []
+    theta, a, p0, Fc = contact_columns(source, pressure=pressure, missing=missing, skipped=skipped)
     n = theta.size
     if slip.theta.shape != theta.shape or not np.allclose(slip.theta, theta, atol=1e-12):
         raise vd.fail("slip.theta", f"{slip.theta.size} angles", "rad",
@@ -273,7 +457,7 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
 
     xi_c = _cumulative(thc, closed(slip.V_cam) / omega)
     perimeter = float(xi_c[-1])
-    xi_f = _cumulative(thc, closed(slip.V_follower) / omega)
+    xi_f = _cumulative(thc, closed(slip.V_follower) / omega) + float(slip.follower_origin)
     dt = np.diff(thc) / omega
 
     def mid(f):
@@ -294,15 +478,16 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
     depth_cam = surface_depth(x_cam, xi_c, a_m, p_m, v_m, dt, k=k, period=perimeter)
 
     Pf = slip.follower_period
+    drift = 0.0
     if Pf is not None:
         x_f = np.linspace(0.0, Pf, int(n_grid), endpoint=False)
-        xi_fw = xi_f
+        drift = float(np.mod(xi_f[-1] - xi_f[0], Pf))
     else:
         amax = float(a_pos.max()) if a_pos.size else 0.0
         lo, hi = float(xi_f.min()) - 1.5 * amax, float(xi_f.max()) + 1.5 * amax
         x_f = np.linspace(lo, hi, int(n_grid))
-        xi_fw = xi_f
-    depth_f = surface_depth(x_f, xi_fw, a_m, p_m, v_m, dt, k=k, period=Pf)
+    depth_f = surface_depth(x_f, xi_f, a_m, p_m, v_m, dt, k=k, period=Pf)
+    depth_f_cycles = drift_sum(depth_f, Pf, drift, cycles) if Pf is not None else cycles * depth_f
 
     w_m = hertz_load_per_length(a_m, p_m)
     vol_archard = float(k * np.sum(w_m * length * v_m * dt))
@@ -312,19 +497,34 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
         float(length * np.trapezoid(depth_f, x_f))
     cons = abs(vol_cam - vol_archard) / vol_archard if vol_archard > 0 else 0.0
     w = hertz_load_per_length(a, p0)
+    on = (Fc > 0) & (w > 0)
+    load_err = float(np.max(np.abs(w[on] * length / Fc[on] - 1.0))) if np.any(on) else 0.0
     return WearMap(
         theta=theta, xi_cam=xi_c[:-1], depth_pass=depth_per_pass(k, w, slip.v_slip, slip.V_cam),
         depth_at_theta=np.interp(xi_c[:-1], x_cam, depth_cam, period=perimeter),
         x_cam=x_cam, depth_cam=depth_cam, x_follower=x_f, depth_follower=depth_f, perimeter=perimeter,
         volume_cam=vol_cam, volume_follower=vol_f, volume_archard=vol_archard, conservation_error=cons,
-        k=k, length=length, cycles=cycles, model=slip.model)
+        k=k, length=length, cycles=cycles, model=slip.model, depth_follower_cycles=depth_f_cycles,
+        follower_period=Pf, follower_drift=drift, load_error=load_err, skipped=tuple(skipped))
 
 
-def wear_depth_per_angle(theta, a, p0, Fc, slip: SlipResult, k):
+def wear_depth_per_angle(theta, a, p0, Fc, slip: SlipResult, k, *, missing: str = "zero"):
     """Sweep-facing closed form: cam wear depth per revolution at the contact of each angle (m).
 
     ``k w v_slip / V_cam`` with ``w = pi a p0 / 2``; zero where there is no contact (``Fc <= 0``
     or NaN width). Same length as ``theta``; for the sweep's CSV/VTK wear column.
+
+    ``missing`` (keyword, optional) says what an angle with ``Fc > 0`` but NaN ``a``/``p0`` (a
+    failed solve) gets: ``"zero"`` (default, unchanged behaviour), ``"nan"`` (NaN in that row:
+    unknown, not zero), or ``"raise"`` (:class:`~femcam.errors.InputError` naming the angles).
     """
-    _, a, p0, _ = contact_columns({"theta": theta, "a": a, "p0": p0, "Fc": Fc})
-    return depth_per_pass(k, hertz_load_per_length(a, p0), slip.v_slip, slip.V_cam)
+    vd.choice("missing", missing, ("zero", "nan", "raise"))
+    a_in, p_in, F_in = (np.asarray(x, dtype=float) for x in (a, p0, Fc))
+    _, a_, p_, _ = contact_columns({"theta": theta, "a": a_in, "p0": p_in, "Fc": F_in},
+                                   missing="raise" if missing == "raise" else "zero")
+    h = depth_per_pass(k, hertz_load_per_length(a_, p_), slip.v_slip, slip.V_cam)
+    if missing == "nan":
+        a_b, p_b, F_b = np.broadcast_arrays(a_in, p_in, F_in)
+        lost = (np.isfinite(F_b) & (F_b > 0)) & ~(np.isfinite(a_b) & np.isfinite(p_b) & (a_b > 0) & (p_b > 0))
+        h = np.where(lost, np.nan, h)
+    return h

@@ -260,6 +260,10 @@ def junction_continuity(law) -> str:
     return "jerk continuous"
 
 
+#: junction verdicts of :func:`junction_continuity` whose jerk is infinite (a step in v or a)
+_INFINITE_JERK = ("velocity jump: infinite acceleration and jerk", "acceleration jump: infinite jerk")
+
+
 @dataclass(frozen=True, kw_only=True)
 class Seed000Inputs:
     """Seed 000's inputs in SI: K = 1e-8, L = 500 N, H = 2000 N/mm^2, h = 10 mm, beta = 180 deg,
@@ -283,7 +287,14 @@ class Seed000Inputs:
 
 @dataclass(frozen=True)
 class Seed000Row:
-    """One law of the Table 3 layout, SI units (v in m/s, S in m, W in m^3, jerk in m/s^3)."""
+    """One law of the Table 3 layout, SI units (v in m/s, S in m, W in m^3, jerk in m/s^3).
+
+    Jerk: ``interior_peak_jerk = Cj h omega^3 / beta^3`` is the largest |jerk| *inside* the rise
+    (0 < u < 1). ``peak_jerk`` is the largest |jerk| of the rise *placed between two dwells*: it
+    is ``inf`` when the junction has a velocity or an acceleration jump (uniform velocity, SHM:
+    the jerk there is a Dirac spike, or worse), else equal to ``interior_peak_jerk`` (a finite
+    jerk jump at the junction is bounded by the interior peak). ``junction`` says which case.
+    """
 
     law: str
     I_closed: float
@@ -293,6 +304,7 @@ class Seed000Row:
     S: float
     W: float
     Cj: float
+    interior_peak_jerk: float
     peak_jerk: float
     junction: str
     quad_rel_diff: float
@@ -334,11 +346,14 @@ def seed000_table(laws=PAPER_LAWS, inputs: Seed000Inputs | None = None) -> Seed0
         ratio = v_rms / v_shm
         S = inp.h * ratio
         Cj = float(getattr(law, "Cj", float("nan")))
+        junction = junction_continuity(law)
+        interior = Cj * inp.h * inp.omega**3 / inp.beta**3
         rows.append(Seed000Row(
             law=getattr(law, "name", str(name)), I_closed=I_c, I_quad=I_q, v_rms=v_rms,
             ratio=ratio, S=S, W=archard_volume(k, inp.L, S), Cj=Cj,
-            peak_jerk=Cj * inp.h * inp.omega**3 / inp.beta**3,
-            junction=junction_continuity(law),
+            interior_peak_jerk=interior,
+            peak_jerk=math.inf if junction in _INFINITE_JERK else interior,
+            junction=junction,
             quad_rel_diff=abs(I_q - I_c) / I_c if math.isfinite(I_c) else float("nan"),
         ))
     return Seed000Table(inputs=inp, rows=tuple(rows))
@@ -364,11 +379,14 @@ def format_table3(table: Seed000Table) -> str:
     for r in table.rows:
         out.append(f"  {_PRETTY.get(r.law, r.law) + ':':<22} W = ({inp.K:g} x {inp.L:g} x "
                    f"{r.S * 1e3:.2f}) / {inp.H / 1e6:g} = {r.W * 1e9:.3e} mm^3")
-    out += ["", f"{'Motion Type':<22}{'int v^2 du':>12}{'quad rel.diff':>15}{'Cj':>9}"
-                f"{'peak jerk mm/s^3':>18}  junction with a dwell"]
+    out += ["", "Jerk: 'interior' = max |j| inside the rise (Cj h omega^3/beta^3); 'with dwells' = max |j| "
+                "of the rise between two dwells (inf: a step in v or a at the junction)",
+            f"{'Motion Type':<22}{'int v^2 du':>12}{'quad rel.diff':>15}{'Cj':>9}"
+            f"{'interior peak jerk mm/s^3':>27}{'peak jerk with dwells mm/s^3':>30}  junction with a dwell"]
     for r in table.rows:
         out.append(f"{_PRETTY.get(r.law, r.law):<22}{r.I_closed:>12.6f}{r.quad_rel_diff:>15.1e}"
-                   f"{r.Cj:>9.3f}{r.peak_jerk * 1e3:>18.4f}  {r.junction}")
+                   f"{r.Cj:>9.3f}{r.interior_peak_jerk * 1e3:>27.4f}{r.peak_jerk * 1e3:>30.4f}"
+                   f"  {r.junction}")
     paper_rows = [r for r in table.rows if r.law in table.paper]
     if paper_rows:
         out += ["", "Paper vs femcam (difference = femcam - paper)",
@@ -386,14 +404,18 @@ def format_table3(table: Seed000Table) -> str:
 
 
 def table_rows_for_csv(table: Seed000Table):
-    """(header, rows) with units in the column names, for ``csv.writer``."""
+    """(header, rows) with units in the column names, for ``csv.writer``.
+
+    ``peak_jerk_with_dwells_mm_s3`` is written ``inf`` where a junction step makes it infinite
+    (``float("inf")`` reads it back)."""
     header = ["law", "int_v2_du", "int_v2_du_quad", "v_rms_mm_s", "ratio_to_shm", "S_mm", "W_mm3",
-              "Cj", "peak_jerk_mm_s3", "junction", "paper_v_rms_mm_s", "paper_S_mm", "paper_W_mm3"]
+              "Cj", "interior_peak_jerk_mm_s3", "peak_jerk_with_dwells_mm_s3", "junction_with_dwell",
+              "paper_v_rms_mm_s", "paper_S_mm", "paper_W_mm3"]
     rows = []
     for r in table.rows:
         p = table.paper.get(r.law, {})
         rows.append([r.law, f"{r.I_closed:.10g}", f"{r.I_quad:.10g}", f"{r.v_rms * 1e3:.6g}",
                      f"{r.ratio:.6g}", f"{r.S * 1e3:.6g}", f"{r.W * 1e9:.6g}", f"{r.Cj:.6g}",
-                     f"{r.peak_jerk * 1e3:.6g}", r.junction, p.get("v_rms_mm_s", ""),
-                     p.get("S_mm", ""), p.get("W_mm3", "")])
+                     f"{r.interior_peak_jerk * 1e3:.6g}", f"{r.peak_jerk * 1e3:.6g}", r.junction,
+                     p.get("v_rms_mm_s", ""), p.get("S_mm", ""), p.get("W_mm3", "")])
     return header, rows

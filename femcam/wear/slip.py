@@ -21,6 +21,12 @@ Derivations (cam-fixed origin, ``d = sqrt(Rb^2 - e^2)``):
   :math:`v_{slip} = \omega\sqrt{(d+s)^2 + (s_1-e)^2}`; this is also ``omega |dP/dtheta|`` of the
   cam profile (the tip path in the cam frame): every point of the profile slides under the tip,
   ``V_cam = v_slip``, ``V_follower = 0`` (the tip is one point).
+* **Knife-edge with a tip radius** ``r`` (:func:`radiused_tip`): a sharp tip has no contact
+  width, so a wear depth needs a tip radius. The tip is a roller of radius ``r`` that does not
+  turn (``Omega = 0``): the cam is the one cut for it (same base circle and lift law; its
+  pitch curve has base radius ``Rb + r``), ``v_slip = r |Omega_req| = |V_p - omega r|``, and
+  the contact runs over the tip at ``r dphi/dt = V_cam + r Omega_req`` as the pressure angle
+  swings. ``r -> 0`` gives the sharp knife-edge.
 * **Flat-faced** (face ``y = Rb + s`` normal to the axis). The contact lies at distance ``s1``
   from the axis (the classic ``x = ds/dtheta`` result), cam material there moves at
   ``omega(-(Rb+s), s1)``, the face at ``(0, omega s1)``: relative velocity ``(omega(Rb+s), 0)``, so
@@ -51,6 +57,7 @@ radius of curvature, flat-faced contact at ``x = ds/dtheta``); Johnson, *Contact
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -81,6 +88,10 @@ class SlipResult:
     message: str = ""
     #: perimeter of the follower surface for a roller (2 pi Rr, m); None: open coordinate
     follower_period: float | None = None
+    #: position of the contact on the follower surface at ``theta[0]`` (m): flat face, distance
+    #: from the follower axis (``s1 - e``); radiused knife-edge tip, arc ``r_tip phi`` from the
+    #: tip's axis point; roller 0 (the roller coordinate starts at the point in contact at theta[0])
+    follower_origin: float = 0.0
 
     @property
     def slip_per_rolled_length(self) -> np.ndarray:
@@ -141,7 +152,7 @@ def flat_faced(theta, s, s1, s2, *, Rb, omega) -> SlipResult:
         raise UndercutError(f"flat-faced follower: cam radius of curvature Rb + s + s'' = {rho[i]:g} m "
                             f"<= 0 at theta = {theta[i]:g} rad (cusp); increase Rb")
     return SlipResult(theta=theta, v_slip=omega * (Rb + s), V_cam=omega * rho, V_follower=omega * s2,
-                      omega=omega, model="flat-faced: full sliding")
+                      omega=omega, model="flat-faced: full sliding", follower_origin=float(s1.flat[0]))
 
 
 def pitch_speed(s, s1, s2, *, Rb, Rr, e=0.0):
@@ -261,24 +272,62 @@ def roller_inertia(theta, s, s1, s2, Fc, *, Rb, Rr, omega, mu, J, T_drag=0.0, e=
                       follower_period=2 * np.pi * Rr)
 
 
+def radiused_tip(theta, s, s1, s2, *, Rb, r_tip, omega, e=0.0) -> SlipResult:
+    r"""Knife-edge follower with a tip of radius ``r_tip``: a roller of radius ``r_tip`` that
+    does not turn (``Omega = 0``), so it slides fully.
+
+    The tip centre follows the lift law on the pitch curve of base radius ``Rb + r_tip`` (the
+    cam is cut for the radiused tip: same base circle ``Rb``, same lift law; it tends to the
+    knife-edge cam as ``r_tip -> 0``). With the roller relations of this module at
+    ``Omega = 0``:
+
+    .. math:: v_{slip} = r_{tip}|\Omega_{req}| = |V_p - \omega r_{tip}|,\qquad
+              V_{cam} = V_p\,\frac{\rho}{\rho + r_{tip}},\qquad
+              V_{follower} = V_{cam} + r_{tip}\,\Omega_{req}
+
+    ``V_follower`` (signed) is the speed of the contact over the tip surface, ``r_tip dphi/dt``
+    (``phi`` the pressure angle of the pitch curve): the contact runs back and forth over the
+    tip as the pressure angle swings. ``r_tip -> 0`` gives :func:`knife_edge`.
+
+    >>> r = radiused_tip([0.0], [0.0], [0.0], [0.0], Rb=0.02, r_tip=0.001, omega=10.0)
+    >>> round(float(r.v_slip[0]), 12)          # base circle: omega (Rb + r) - omega r = omega Rb
+    0.2
+    """
+    r_tip = vd.positive("r_tip", r_tip, "m")
+    theta, s, omega, Rr, V_p, V_cam, Omega_req = _roller_kinematics(theta, s, s1, s2, Rb, r_tip, e, omega)
+    e, dp = _offset_distance(Rb + r_tip, e, "Rb + r_tip")
+    phi0 = float(np.arctan2(np.asarray(s1, dtype=float).flat[0] - e, dp + float(s.flat[0])))
+    return SlipResult(theta=theta, v_slip=r_tip * np.abs(Omega_req), V_cam=V_cam,
+                      V_follower=V_cam + r_tip * Omega_req, omega=omega,
+                      model=f"knife-edge with tip radius {r_tip * 1e3:g} mm: full sliding",
+                      Omega=np.zeros_like(Omega_req), Omega_req=Omega_req,
+                      follower_origin=r_tip * phi0)
+
+
 ROLLER_MODELS = ("srr", "inertia")
 
 
 def follower_slip(follower, theta, s, s1, s2, *, omega, Fc=None, roller_model: str = "srr",
                   srr: float = 0.02, mu: float = 0.1, J: float | None = None,
-                  T_drag: float = 0.0) -> SlipResult:
+                  T_drag: float = 0.0, tip_radius: float | None = None) -> SlipResult:
     """Dispatch on a :mod:`femcam.profile` follower (roller, knife-edge, flat-faced).
 
     Roller: ``roller_model="srr"`` (slide-to-roll ratio ``srr``, default 2 %) or ``"inertia"``
     (needs ``Fc`` in N, friction ``mu`` and polar inertia ``J`` in kg m^2; ``J=None`` takes a
     solid steel disc of the roller radius and a 10 mm width, ``J = pi rho l Rr^4/2``).
+    Knife-edge: ``tip_radius`` (m, optional) selects :func:`radiused_tip` instead of the sharp
+    tip of :func:`knife_edge`. Flat-faced: ``follower_origin`` is the contact's distance from
+    the follower axis at ``theta[0]`` (``s1 - e``).
     """
     kind = type(follower).__name__
     e = float(getattr(follower, "e", 0.0))
     if kind == "KnifeEdgeFollower":
+        if tip_radius is not None:
+            return radiused_tip(theta, s, s1, s2, Rb=follower.Rb, r_tip=tip_radius, omega=omega, e=e)
         return knife_edge(theta, s, s1, Rb=follower.Rb, omega=omega, e=e)
     if kind == "FlatFacedFollower":
-        return flat_faced(theta, s, s1, s2, Rb=follower.Rb, omega=omega)
+        r = flat_faced(theta, s, s1, s2, Rb=follower.Rb, omega=omega)
+        return dataclasses.replace(r, follower_origin=r.follower_origin - e)
     if kind != "RollerFollower":
         raise vd.fail("follower", kind, "",
                       "must be a RollerFollower, KnifeEdgeFollower or FlatFacedFollower")

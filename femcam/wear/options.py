@@ -1,0 +1,101 @@
+"""A scene's ``[wear]`` table: checked keys (units in the key names) and the wear coefficient used.
+
+The scene loader passes ``[wear]`` through unchecked; :func:`wear_options` checks it the way the
+scene loader checks its own tables (unknown key, value, expected unit, a "did you mean" hint),
+and raises one :class:`~femcam.errors.SceneError` listing every problem.
+
+Keys (all optional)
+-------------------
+=================  ==================  ===================================================
+key                unit                meaning
+=================  ==================  ===================================================
+K                  (dimensionless)     Archard coefficient; needs the cam's hardness_MPa
+k_mm3_per_N_m      mm^3/(N m)          dimensional coefficient k (instead of K)
+roller_model       "srr" | "inertia"   roller slip model (default "srr")
+srr                (dimensionless)     slide-to-roll ratio, -2 < srr < 2 (default 0.02)
+J_kg_m2            kg m^2              roller polar inertia (inertia model)
+T_drag_N_m         N m                 roller bearing drag torque (inertia model)
+tip_radius_mm      mm                  knife-edge tip radius (wear map of a knife-edge)
+cycles             revolutions         number of cam revolutions (default 1e6)
+=================  ==================  ===================================================
+
+Wear coefficient (:func:`wear_coefficient_info`), in this order: ``k_mm3_per_N_m``; ``K`` with
+``[materials.cam] hardness_MPa`` (``K`` without a hardness is an error: K alone has no unit of
+wear); neither: seed 000's K = 1e-8 with the cam hardness if the scene gives one, else with
+seed 000's H = 2000 N/mm^2. The returned text says which case applied.
+"""
+
+from __future__ import annotations
+
+#: key -> (unit shown to the user, SI factor, check, required) -- the scene loader's convention
+WEAR_KEYS = {
+    "K": ("(dimensionless)", 1.0, "nonneg", False),
+    "k_mm3_per_N_m": ("mm^3/(N m)", 1e-9, "nonneg", False),
+    "roller_model": ("", None, "str", False),
+    "srr": ("(dimensionless)", 1.0, "num", False),
+    "J_kg_m2": ("kg m^2", 1.0, "pos", False),
+    "T_drag_N_m": ("N m", 1.0, "nonneg", False),
+    "tip_radius_mm": ("mm", 1e-3, "pos", False),
+    "cycles": ("revolutions", 1.0, "nonneg", False),
+}
+
+#: seed 000's inputs, the defaults
+DEFAULT_K = 1e-8
+DEFAULT_H = 2000e6
+
+
+def wear_options(scene) -> dict:
+    """The scene's ``[wear]`` table checked and converted to SI (keys as in the table).
+
+    Raises :class:`~femcam.errors.SceneError` (an ``InputError``) naming every unknown key or
+    bad value with the expected unit, e.g. ``wear.k = 1e-17: unknown key; did you mean
+    'k_mm3_per_N_m' in mm^3/(N m)? (units go in the key name)``.
+    """
+    from ..scene import _Checker
+
+    raw = dict(getattr(scene, "wear", None) or {})
+    ck = _Checker(getattr(scene, "source_path", "") or getattr(scene, "name", "<scene>"))
+    out = ck.table(raw, "wear", WEAR_KEYS)
+    if "roller_model" in out and out["roller_model"] not in ("srr", "inertia"):
+        ck.add("wear.roller_model", f"= {out['roller_model']!r}: must be one of 'srr', 'inertia'")
+    if "srr" in out and not (-2.0 < out["srr"] < 2.0):
+        ck.add("wear.srr", f"= {raw['srr']} (dimensionless): must be in (-2, 2)")
+    if "K" in raw and "k_mm3_per_N_m" in raw:
+        ck.add("wear", "give either K (dimensionless, with the cam hardness_MPa) or k_mm3_per_N_m "
+               "(mm^3/(N m)), not both")
+    hardness = getattr(getattr(scene, "cam", None), "hardness", None)
+    if "K" in out and "k_mm3_per_N_m" not in raw and not hardness:
+        ck.add("wear.K", f"= {raw['K']} (dimensionless): needs the cam hardness "
+               "[materials.cam] hardness_MPa (MPa), k = K/H; or give k_mm3_per_N_m (mm^3/(N m))")
+    if ck.problems:
+        ck.raise_if_any()
+    return out
+
+
+def wear_coefficient_info(scene) -> tuple[float, str]:
+    """``(k, where)``: the dimensional wear coefficient (m^3/(N m)) the scene asks for, and a
+    sentence saying where it came from (scene key or default)."""
+    from .archard import dimensional_coefficient
+
+    opts = wear_options(scene)
+    hardness = getattr(getattr(scene, "cam", None), "hardness", None)
+    if "k_mm3_per_N_m" in opts:
+        k = opts["k_mm3_per_N_m"]
+        return k, f"scene [wear] k_mm3_per_N_m = {k * 1e9:g} mm^3/(N m)"
+    if "K" in opts:
+        k = dimensional_coefficient(opts["K"], hardness)
+        return k, (f"scene [wear] K = {opts['K']:g} / [materials.cam] hardness_MPa = "
+                   f"{hardness / 1e6:g} MPa")
+    if hardness:
+        return dimensional_coefficient(DEFAULT_K, hardness), (
+            f"default K = {DEFAULT_K:g} of seed 000, the scene gives no [wear] K or k_mm3_per_N_m; "
+            f"H from the scene's [materials.cam] hardness_MPa = {hardness / 1e6:g} MPa")
+    return dimensional_coefficient(DEFAULT_K, DEFAULT_H), (
+        f"default: seed 000's K = {DEFAULT_K:g} and H = {DEFAULT_H / 1e6:g} N/mm^2; the scene gives "
+        "no [wear] K or k_mm3_per_N_m and no [materials.cam] hardness_MPa")
+
+
+def describe_k(k: float, where: str) -> str:
+    """``k = 5e-18 m^3/(N m) = 5e-09 mm^3/(N m) (where)``."""
+    return f"k = {k:.4g} m^3/(N m) = {k * 1e9:.4g} mm^3/(N m) ({where})"
+
