@@ -26,14 +26,19 @@ to that curve keeps ``h`` within ``fine_depth * a_ref`` of it and then grows lin
 ``growth`` up to ``L / 8``. Size-from-points/curvature/boundary are switched off because they
 override the field. Arc-centre points that gmsh returns unreferenced are dropped.
 
+Physical groups (``PHYSICAL_NAMES``) are read back from gmsh before its model is removed and
+kept in ``BodyMesh.groups`` (dimension, tag, elements in the body's node numbering);
+``ContactMesh.write_msh`` writes both bodies with them to a gmsh ``.msh`` file.
+
 Defaults of every parameter are recorded in ``meshes/contact_region.toml``; the same geometry
-as a gmsh ``.geo`` file with ``DefineConstant`` sliders is ``meshes/contact_region.geo``.
+as a gmsh ``.geo`` file with ``DefineConstant`` sliders is ``meshes/contact_region.geo`` (one
+body; a flat cam needs its ``flat`` switch; no vertex snapping; see its header).
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -75,13 +80,34 @@ class MeshOptions:
 
 
 @dataclass(frozen=True)
+class PhysicalGroup:
+    """A gmsh physical group of one body, kept after the gmsh model is removed.
+
+    name (e.g. ``"cam_contact"``), dim (1 curve, 2 surface), tag (gmsh physical tag) and
+    elements (k, n): node indices of this body's mesh, k = 2 (line segments) or 3 (triangles,
+    counter-clockwise), as gmsh meshed them.
+    """
+
+    name: str
+    dim: int
+    tag: int
+    elements: np.ndarray
+
+    @property
+    def nodes(self) -> np.ndarray:
+        """Sorted unique node indices of the group."""
+        return np.unique(self.elements)
+
+
+@dataclass(frozen=True)
 class BodyMesh:
     """Linear triangle mesh of one body.
 
     points (2, N) m; triangles (3, T) counter-clockwise; fixed (nodes on the fixed support);
     contact (fine-zone vertex nodes, sorted by x); contact_x their abscissae (m, uniform);
     surface (all nodes on the contact surface curve); L body size (m); R surface radius (m,
-    signed, inf for flat).
+    signed, inf for flat); groups: the gmsh physical groups ``{name: PhysicalGroup}``
+    (``<body>_contact``, ``<body>_fixed`` curves and the ``<body>`` surface).
     """
 
     name: str
@@ -93,6 +119,7 @@ class BodyMesh:
     surface: np.ndarray
     L: float
     R: float
+    groups: dict = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -110,6 +137,39 @@ class ContactMesh:
     @property
     def n_nodes(self) -> int:
         return self.cam.points.shape[1] + self.roller.points.shape[1]
+
+    @property
+    def physical_groups(self) -> dict:
+        """``{name: PhysicalGroup}`` of both bodies (node indices are per body)."""
+        return {**self.cam.groups, **self.roller.groups}
+
+    def write_msh(self, path):
+        """Write both bodies (final snapped/mirrored nodes, m) to a gmsh 2.2 ASCII ``.msh`` with
+        the physical names ``roller_contact, cam_contact, roller_fixed, cam_fixed, roller, cam``
+        (via meshio; roller nodes follow the cam's). Returns the path."""
+        from pathlib import Path
+
+        import meshio
+
+        path = Path(path)
+        pts, cells, phys, geom, names = [], [], [], [], {}
+        off = 0
+        for b in (self.cam, self.roller):
+            pts.append(np.column_stack([b.points.T, np.zeros(b.points.shape[1])]))
+            for g in b.groups.values():
+                # tags unique over both bodies: cam groups keep theirs, roller's are shifted
+                tag = g.tag + (0 if b is self.cam else 100)
+                cells.append(("line" if g.dim == 1 else "triangle", g.elements.T + off))
+                phys.append(np.full(g.elements.shape[1], tag))
+                geom.append(np.full(g.elements.shape[1], tag))
+                names[g.name] = np.array([tag, g.dim])
+            off += b.points.shape[1]
+        mesh = meshio.Mesh(np.concatenate(pts), cells,
+                           cell_data={"gmsh:physical": phys, "gmsh:geometrical": geom},
+                           field_data=names)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        meshio.write(path, mesh, file_format="gmsh22", binary=False)
+        return path
 
 
 def surface_height(x, R):
@@ -205,6 +265,15 @@ def _mesh_body(gmsh, name: str, R: float, L: float, a_ref: float, opts: MeshOpti
     fine = curve_nodes([arcs[1]])
     surf = curve_nodes(arcs)
     fixed = curve_nodes([bottom])
+    groups = {}
+    for gdim, gtag in gmsh.model.getPhysicalGroups():
+        blocks = []
+        for ent in gmsh.model.getEntitiesForPhysicalGroup(gdim, gtag):
+            types, _, ntags = gmsh.model.mesh.getElements(gdim, int(ent))
+            for et, nt in zip(types, ntags, strict=True):
+                nn = gmsh.model.mesh.getElementProperties(et)[3]
+                blocks.append(index[np.asarray(nt, dtype=np.int64)].reshape(-1, nn))
+        groups[gmsh.model.getPhysicalName(gdim, gtag)] = (gdim, int(gtag), np.concatenate(blocks))
     gmsh.model.remove()
 
     # drop unreferenced nodes (arc centres, geometry-only points)
@@ -214,6 +283,7 @@ def _mesh_body(gmsh, name: str, R: float, L: float, a_ref: float, opts: MeshOpti
     pts = pts[used]
     tri = renum[tri]
     fine, surf, fixed = renum[fine], renum[surf], renum[fixed]
+    groups = {k: (d, t, renum[e]) for k, (d, t, e) in groups.items()}
     # snap fine-zone vertices to the uniform abscissae on the exact arc
     order = np.argsort(pts[fine, 0])
     fine = fine[order]
@@ -223,20 +293,32 @@ def _mesh_body(gmsh, name: str, R: float, L: float, a_ref: float, opts: MeshOpti
     pts[fine, 0] = xs
     pts[fine, 1] = -surface_height(xs, R)
     # counter-clockwise triangles
+    tri = _ccw(pts, tri)
+    phys = {k: PhysicalGroup(name=k, dim=d, tag=t, elements=(_ccw(pts, e) if d == 2 else e).T.copy())
+            for k, (d, t, e) in groups.items()}
+    return BodyMesh(name=name, points=pts.T.copy(), triangles=tri.T.copy(), fixed=fixed,
+                    contact=fine, contact_x=xs, surface=surf, L=float(L), R=float(R), groups=phys)
+
+
+def _ccw(pts: np.ndarray, tri: np.ndarray) -> np.ndarray:
+    """Triangles (T, 3) reordered counter-clockwise for points (N, 2)."""
+    tri = tri.copy()
     d = pts[tri]
     det = (d[:, 1, 0] - d[:, 0, 0]) * (d[:, 2, 1] - d[:, 0, 1]) - \
           (d[:, 2, 0] - d[:, 0, 0]) * (d[:, 1, 1] - d[:, 0, 1])
     tri[det < 0] = tri[det < 0][:, [0, 2, 1]]
-    return BodyMesh(name=name, points=pts.T.copy(), triangles=tri.T.copy(), fixed=fixed,
-                    contact=fine, contact_x=xs, surface=surf, L=float(L), R=float(R))
+    return tri
 
 
 def _mirror(b: BodyMesh) -> BodyMesh:
     pts = b.points.copy()
     pts[1] *= -1.0
     tri = b.triangles[[0, 2, 1]].copy()
+    groups = {k: PhysicalGroup(name=g.name, dim=g.dim, tag=g.tag,
+                               elements=g.elements[[0, 2, 1]].copy() if g.dim == 2 else g.elements)
+              for k, g in b.groups.items()}
     return BodyMesh(name=b.name, points=pts, triangles=tri, fixed=b.fixed, contact=b.contact,
-                    contact_x=b.contact_x, surface=b.surface, L=b.L, R=b.R)
+                    contact_x=b.contact_x, surface=b.surface, L=b.L, R=b.R, groups=groups)
 
 
 def build_contact_mesh(*, Rr: float, rho: float, a_ref: float,

@@ -2,7 +2,9 @@
 
 Reference: Hertz line contact (Johnson 1985 eq. 4.45, McEwen 1949 subsurface field; seed 002
 eqs. 5-7 for the friction surface stress). Slopes are fitted as
-``np.polyfit(log h, log |err|, 1)`` over a/h = 10, 14, 20, 28.
+``np.polyfit(log h, log |err|, 1)`` over a/h = 10, 14, 20, 28, and the finest level a/h = 28
+must meet: p0 0.15 %, a 1 %, rms(p - Hertz) 0.5 % of p0 (the issue's rms target; measured
+0.42 % at a/28, first met at a/24, see docs/fe.md), trailing-edge peak 25 %.
 """
 
 import numpy as np
@@ -50,8 +52,8 @@ def slope(study, key):
 @pytest.mark.parametrize("key, lo, hi, finest", [
     ("p0", 1.3, 2.8, 1.5e-3),   # measured slope ~1.9, 6.6e-5 at a/h = 28
     ("a", 1.3, 2.8, 1e-2),      # measured ~1.9 (fit of p^2 to an ellipse)
-    ("rms", 0.7, 1.5, 5e-3),    # measured ~1.0: the edge nodes dominate (sqrt edge of p)
-    ("peak", 0.3, 0.9, 0.25),   # measured ~0.5: trailing-edge tension, a sqrt(h) singular-edge rate
+    ("rms", 0.7, 1.5, 5e-3),    # measured ~1.0, 0.42 % at a/28: the edge nodes dominate (sqrt edge)
+    ("peak", 0.3, 0.9, 0.25),   # measured ~0.45, -18 % at a/28: trailing-edge tension, ~sqrt(h) rate
 ])
 def test_convergence_slopes(study, key, lo, hi, finest):
     s = slope(study, key)

@@ -1,6 +1,7 @@
 """Tests of femcam.mesh: the gmsh contact-region mesh (geometry checked against analytic areas)."""
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -101,21 +102,100 @@ def test_bad_options():
         MeshOptions(growth=3.0)
 
 
-def test_geo_file_matches_api_mesh():
-    """meshes/contact_region.geo (GUI source, mm) draws the same cam body as the API."""
-    from pathlib import Path
+GEO = Path(__file__).resolve().parents[1] / "meshes" / "contact_region.geo"
 
+
+def mesh_geo(**onelab):
+    """Mesh meshes/contact_region.geo with the given GUI parameters; (node count, fine-curve xy
+    in mm, physical groups {name: dim})."""
     import gmsh
 
-    geo = Path(__file__).resolve().parents[1] / "meshes" / "contact_region.geo"
     gmsh.initialize(["-nopopup"], readConfigFiles=False)
     try:
         gmsh.option.setNumber("General.Terminal", 0)
-        gmsh.open(str(geo))
+        for k, v in onelab.items():
+            gmsh.onelab.setNumber(k, [v])
+        gmsh.open(str(GEO))
         gmsh.model.mesh.generate(2)
         _, xyz, _ = gmsh.model.mesh.getNodes(2, -1, includeBoundary=True)
-        n_geo = xyz.size // 3
+        _, fine, _ = gmsh.model.mesh.getNodes(1, 2, includeBoundary=True)
+        groups = {gmsh.model.getPhysicalName(d, t): d for d, t in gmsh.model.getPhysicalGroups()}
+        return xyz.size // 3, fine.reshape(-1, 3)[:, :2], groups
     finally:
         gmsh.finalize()
+
+
+def test_geo_file_matches_api_mesh():
+    """meshes/contact_region.geo (GUI source, mm) draws the same cam body as the API."""
+    n_geo, fine, groups = mesh_geo()
     m = build_contact_mesh(Rr=0.01, rho=0.02, a_ref=0.105e-3)
     assert n_geo == pytest.approx(m.cam.points.shape[1], rel=0.02)
+    assert groups == {"cam_contact": 1, "cam_fixed": 1, "cam": 2}
+    # fine-curve nodes on the arc of radius 20 mm (circle sagitta)
+    np.testing.assert_allclose(fine[:, 1], -surface_height(fine[:, 0], 20.0), atol=1e-9)
+
+
+def test_geo_file_flat_switch():
+    """flat = 1 draws the flat cam (rho = inf) that k = 1/R cannot; R = 0 stops with a message."""
+    n_geo, fine, _ = mesh_geo(**{"Geometry/Flat surface": 1})
+    m = build_contact_mesh(Rr=0.01, rho=math.inf, a_ref=0.105e-3)
+    assert n_geo == pytest.approx(m.cam.points.shape[1], rel=0.02)
+    assert np.all(fine[:, 1] == 0.0), "flat surface y = 0"
+    with pytest.raises(Exception, match="R = 0"):
+        mesh_geo(**{"Geometry/Surface radius R (mm, <0 concave)": 0.0})
+
+
+def min_max_angles(b):
+    """Smallest and largest interior angle (degrees) of the triangles of a body mesh."""
+    p = b.points[:, b.triangles]  # (2, 3, T)
+    ang = []
+    for i in range(3):
+        u = p[:, (i + 1) % 3] - p[:, i]
+        v = p[:, (i + 2) % 3] - p[:, i]
+        c = (u * v).sum(0) / np.sqrt((u * u).sum(0) * (v * v).sum(0))
+        ang.append(np.degrees(np.arccos(np.clip(c, -1.0, 1.0))))
+    ang = np.array(ang)
+    return ang.min(), ang.max()
+
+
+@pytest.mark.parametrize("rho", [0.02, math.inf, -0.03])
+def test_physical_groups_and_quality(rho, tmp_path):
+    """The gmsh physical groups survive meshing (kept in BodyMesh.groups and written to .msh)
+    with the right dimension and nodes, and the graded mesh is well shaped: every angle in
+    [20, 130] degrees (measured 30.7-110 degrees for these cases)."""
+    import gmsh
+
+    m = build_contact_mesh(Rr=Rr, rho=rho, a_ref=a_ref, options=MeshOptions(a_over_h=10))
+    dims = {"roller_contact": 1, "cam_contact": 1, "roller_fixed": 1, "cam_fixed": 1, "roller": 2, "cam": 2}
+    assert {k: g.dim for k, g in m.physical_groups.items()} == dims
+    for b in (m.cam, m.roller):
+        g = b.groups
+        assert set(g) == {f"{b.name}_contact", f"{b.name}_fixed", b.name}
+        np.testing.assert_array_equal(g[f"{b.name}_contact"].nodes, np.sort(b.surface))
+        assert np.isin(b.contact, g[f"{b.name}_contact"].nodes).all(), "fine zone on the contact curve"
+        np.testing.assert_array_equal(g[f"{b.name}_fixed"].nodes, np.sort(b.fixed))
+        sign = -1.0 if b.name == "cam" else 1.0
+        np.testing.assert_allclose(b.points[1, b.fixed], sign * b.L, rtol=1e-12,
+                                   err_msg="fixed support on the far side y = -+L")
+        surf = g[b.name].elements
+        assert surf.shape == b.triangles.shape
+        def tri_set(t):
+            return {tuple(c) for c in np.sort(t, axis=0).T}
+
+        assert tri_set(surf) == tri_set(b.triangles), "surface group = the body's triangles"
+        lo, hi = min_max_angles(b)
+        assert lo > 20.0 and hi < 130.0, f"{b.name}: triangle angles {lo:.1f}-{hi:.1f} deg"
+    # the same groups read back by gmsh from the written .msh
+    path = m.write_msh(tmp_path / "contact.msh")
+    gmsh.initialize(["-nopopup"], readConfigFiles=False)
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.open(str(path))
+        got = {}
+        for d, t in gmsh.model.getPhysicalGroups():
+            n = sum(gmsh.model.mesh.getElements(d, e)[1][0].size
+                    for e in gmsh.model.getEntitiesForPhysicalGroup(d, t))
+            got[gmsh.model.getPhysicalName(d, t)] = (d, n)
+    finally:
+        gmsh.finalize()
+    assert got == {k: (g.dim, g.elements.shape[1]) for k, g in m.physical_groups.items()}

@@ -5,10 +5,20 @@ the contact vertices, active-set complementarity solve, stress recovery and VTU 
 
 Modules: ``elasticity`` (assembly, supports, factorisation), ``contact`` (consistent nodal
 forces, compliances, LCP), ``recovery`` (stresses, half-width fit), ``model`` (``ContactModel``,
-``ContactResult``, ``solve_contact``), ``export`` (VTU through meshio).
+``ContactResult`` with the stress maxima and both bodies' surface stresses, ``solve_contact``),
+``export`` (VTU through meshio).
 """
 
 from ..mesh import MeshOptions
-from .model import ContactModel, ContactResult, SolverOptions, StressMax, solve_contact
+from .model import (
+    MAXIMA_KEYS,
+    ContactModel,
+    ContactResult,
+    SolverOptions,
+    StressMax,
+    SurfaceStress,
+    solve_contact,
+)
 
-__all__ = ["ContactModel", "ContactResult", "MeshOptions", "SolverOptions", "StressMax", "solve_contact"]
+__all__ = ["MAXIMA_KEYS", "ContactModel", "ContactResult", "MeshOptions", "SolverOptions", "StressMax",
+           "SurfaceStress", "solve_contact"]

@@ -23,6 +23,7 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from .._threads import single_threaded_blas
 from ..errors import FemcamError
 from ..materials import Material, lame_parameters
 from ..mesh import BodyMesh
@@ -65,16 +66,20 @@ class Body:
         """Displacements for nodal forces ``f`` (N; shape (N,) or (N, k)); zero on supports."""
         f = np.asarray(f, dtype=float)
         u = np.zeros_like(f)
-        if f.ndim == 1:
-            u[self.free] = self.lu.solve(f[self.free])
-            return u
-        # blocks of CHUNK columns: SuperLU's multi-RHS solve was measured fastest in blocks of
-        # ~20 (0.18 s vs 0.25 s for all 101 at once and 0.46 s one by one, 21k DOFs) and the
-        # all-at-once solve degraded badly (5-30x) on the loaded 2-core test machine
-        ff = f[self.free]
-        uf = np.empty_like(ff)
-        for j in range(0, ff.shape[1], CHUNK):
-            uf[:, j:j + CHUNK] = self.lu.solve(np.asfortranarray(ff[:, j:j + CHUNK]))
+        # one BLAS thread: SuperLU's triangular solves call BLAS on small blocks, and OpenBLAS
+        # threads busy-wait against each other and other processes on a shared 2-core machine
+        # (condensation at a/h = 20: 5-8 s with the default threads, 0.9-1.9 s with one, load
+        # average ~2; docs/fe.md)
+        with single_threaded_blas():
+            if f.ndim == 1:
+                u[self.free] = self.lu.solve(f[self.free])
+                return u
+            # blocks of CHUNK columns: SuperLU's multi-RHS solve was measured fastest in blocks
+            # of ~20 (0.18 s vs 0.25 s for all 101 at once and 0.46 s one by one, 21k DOFs)
+            ff = f[self.free]
+            uf = np.empty_like(ff)
+            for j in range(0, ff.shape[1], CHUNK):
+                uf[:, j:j + CHUNK] = self.lu.solve(np.asfortranarray(ff[:, j:j + CHUNK]))
         u[self.free] = uf
         return u
 

@@ -5,7 +5,8 @@ the roller. P2 models are written as quadratic ``triangle6`` cells (skfem's loca
 -- vertices, then edges 01, 12, 20 -- is VTK's), P1 models as ``triangle``. Point data:
 ``displacement`` (m, 3 components), ``sx, sz, txz, sy, tau1, von_mises`` (Pa, each body in its
 own Johnson frame, see :mod:`femcam.fe.recovery`), ``depth`` (m) and ``contact_pressure`` (Pa,
-the P1 interpolant of the nodal pressure on the contact surface, 0 elsewhere). Cell data
+the P1 interpolant of the nodal pressure at the vertex and midside nodes of the fine-zone contact
+curve, 0 elsewhere). Cell data
 ``body``: 0 cam, 1 roller.
 """
 
@@ -20,6 +21,8 @@ FIELDS = ("sx", "sz", "txz", "sy", "tau1", "von_mises")
 
 def scene_arrays(result):
     """(points (n, 3), cells (nel, k), cell_type, point_data, body_id) for both bodies."""
+    from .recovery import surface_nodes
+
     model = result.model
     pts, cells, data, body_id = [], [], {k: [] for k in (*FIELDS, "displacement", "depth",
                                                           "contact_pressure")}, []
@@ -36,7 +39,10 @@ def scene_arrays(result):
             data[k].append(fld[k])
         data["displacement"].append(np.column_stack([u.T, np.zeros(n)]))
         data["depth"].append(fld["z"])
-        on = (np.abs(fld["z"]) <= 1e-9 * model.a_ref) & (np.abs(xy[0]) <= result.x[-1] * (1 + 1e-12))
+        # the fine-zone contact curve: vertices and P2 midside nodes (on the chords, so not
+        # exactly at depth 0); the pressure is zero beyond it
+        on = np.zeros(n, dtype=bool)
+        on[surface_nodes(b)] = True
         cp = np.zeros(n)
         cp[on] = np.interp(xy[0, on], result.x, result.p)
         data["contact_pressure"].append(cp)

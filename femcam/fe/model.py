@@ -73,6 +73,26 @@ class StressMax:
     body: str
 
 
+#: keys of ``ContactResult.max_by_body[body]``: the first three are maxima of non-negative
+#: quantities, ``<c>_max`` / ``<c>_min`` the largest / most negative value of component ``<c>``
+MAXIMA_KEYS = ("von_mises", "tau1", "txz_abs", "sx_max", "sx_min", "sz_max", "sz_min", "sy_max",
+               "sy_min")
+
+
+@dataclass(frozen=True, eq=False)
+class SurfaceStress:
+    """Stresses (Pa) on the contact surface (z = 0) of one body in its Johnson frame, sorted by x
+    (m), at the vertex and P2 midside nodes of the fine-zone contact curve
+    ``|x| <= fine_half_width * a_ref``; ``sy`` the out-of-plane stress."""
+
+    x: np.ndarray
+    sx: np.ndarray
+    sz: np.ndarray
+    txz: np.ndarray
+    sy: np.ndarray
+    body: str
+
+
 @dataclass(frozen=True, eq=False)
 class ContactResult:
     """Solution of one load case (per the model's face width ``length``).
@@ -80,8 +100,15 @@ class ContactResult:
     a, x0: fitted half-width and centre (m); p0: fitted peak (Pa); p0_nodal: max nodal pressure;
     x, p: contact vertex abscissae (m) and pressures (Pa); force: integral of p times length (N),
     force_error: relative error against F; delta: rigid approach (m); gap (m) at the vertices;
-    von_mises_max, tau1_max, txz_abs_max: StressMax over both bodies (also *_by_body dicts);
-    x_surface, sx, sz, txz: cam surface stresses (Johnson frame, Pa); iterations, residual,
+    von_mises_max, tau1_max, txz_abs_max: StressMax (largest value) over both bodies;
+    sx_max, sx_min, sz_max, sz_min, sy_max, sy_min: StressMax of the signed components (``_max``
+    the largest, e.g. the trailing-edge tension ``sx_max`` ~ 2 mu p0 at x = -a on the cam for
+    ``sliding = +1``; ``_min`` the most compressive, e.g. ``sz_min`` ~ -p0 at the surface);
+    max_by_body: ``{"cam"|"roller": {key: StressMax}}`` with the keys of :data:`MAXIMA_KEYS`;
+    all over the stress window ``|x| <= fine_half_width * a_ref``, ``z <= eval_depth * a_ref``;
+    x_surface, sx, sz, txz: cam surface stresses (Johnson frame, Pa); surface_by_body:
+    ``{"cam"|"roller": SurfaceStress}`` (the roller's in its own Johnson frame: its friction
+    traction acts in ``-sliding x``, so its tension peak is at x = +a); iterations, residual,
     history, active, converged; timings (s) per phase; n_dofs; hertz_a, hertz_p0 (if Hertz
     applies) and outside_hertz (a / min radius > 0.1).
     """
@@ -103,11 +130,18 @@ class ContactResult:
     von_mises_max: StressMax
     tau1_max: StressMax
     txz_abs_max: StressMax
+    sx_max: StressMax
+    sx_min: StressMax
+    sz_max: StressMax
+    sz_min: StressMax
+    sy_max: StressMax
+    sy_min: StressMax
     max_by_body: dict
     x_surface: np.ndarray
     sx: np.ndarray
     sz: np.ndarray
     txz: np.ndarray
+    surface_by_body: dict
     iterations: int
     residual: float
     history: tuple
@@ -288,8 +322,7 @@ class ContactModel:
         t1 = time.perf_counter()
         a, x0, p0 = fit_half_width(self.x, sol_p, self.options.fit_threshold)
         force = float(self.w @ sol_p) * self.length
-        maxima = {}
-        surf = None
+        maxima, surfaces = {}, {}
         for name, ev in self.evals.items():
             s = np.einsum("cij,j->ci", ev.Sn, sol_p)
             if mu > 0:
@@ -297,15 +330,22 @@ class ContactModel:
             sx, sz, txz = s
             sy = self._sy(name, sx, sz)
             tau1, vm = derived(sx, sz, txz, sy)
+            fields = {"von_mises": vm, "tau1": tau1, "txz_abs": np.abs(txz), "sx": sx, "sz": sz,
+                      "sy": sy}
             m = {}
-            for key, val in (("von_mises", vm), ("tau1", tau1), ("txz_abs", np.abs(txz))):
-                i = int(np.argmax(val))
+            for key in MAXIMA_KEYS:
+                comp, kind = key.rsplit("_", 1) if key.endswith(("_max", "_min")) else (key, "max")
+                val = fields[comp]
+                i = int(np.argmin(val) if kind == "min" else np.argmax(val))
                 m[key] = StressMax(float(val[i]), float(ev.x[i]), float(ev.z[i]), name)
             maxima[name] = m
-            if name == "cam":
-                surf = (ev.x[ev.surface], sx[ev.surface], sz[ev.surface], txz[ev.surface])
-        best = {k: max((maxima[b][k] for b in maxima), key=lambda s: s.value)
-                for k in ("von_mises", "tau1", "txz_abs")}
+            k = ev.surface
+            surfaces[name] = SurfaceStress(x=ev.x[k], sx=sx[k], sz=sz[k], txz=txz[k], sy=sy[k],
+                                           body=name)
+        best = {k: (min if k.endswith("_min") else max)((maxima[b][k] for b in maxima),
+                                                          key=lambda s: s.value)
+                for k in MAXIMA_KEYS}
+        surf = surfaces["cam"]
         t2 = time.perf_counter()
         timings = dict(self.timings, contact=t1 - t0, recovery=t2 - t1)
         outside = bool(math.isfinite(aH) and aH / min(self.Rr, abs(rho)) > 0.1)
@@ -314,7 +354,10 @@ class ContactModel:
             p0_nodal=float(sol_p.max()) if sol_p.size else 0.0, x=self.x, p=sol_p, gap=g,
             delta=float(delta), force=force, force_error=(abs(force - F) / F if F > 0 else 0.0),
             von_mises_max=best["von_mises"], tau1_max=best["tau1"], txz_abs_max=best["txz_abs"],
-            max_by_body=maxima, x_surface=surf[0], sx=surf[1], sz=surf[2], txz=surf[3],
+            sx_max=best["sx_max"], sx_min=best["sx_min"], sz_max=best["sz_max"],
+            sz_min=best["sz_min"], sy_max=best["sy_max"], sy_min=best["sy_min"],
+            max_by_body=maxima, x_surface=surf.x, sx=surf.sx, sz=surf.sz, txz=surf.txz,
+            surface_by_body=surfaces,
             iterations=it, residual=res, history=hist, active=active, converged=conv,
             timings=timings, n_dofs=self.n_dofs, hertz_a=aH, hertz_p0=p0H, outside_hertz=outside,
             model=self)

@@ -54,13 +54,26 @@ def depth(body: Body, xy: np.ndarray) -> np.ndarray:
     return (-ys - xy[1]) if body.name == "cam" else (xy[1] - ys)
 
 
+def surface_nodes(body: Body) -> np.ndarray:
+    """Scalar nodes on the fine-zone contact curve: its vertices and, for P2, the midside nodes
+    of its edges (these sit on the chords, a sagitta h^2 / (8 |R|) below the arc)."""
+    from .contact import edge_midside_dofs
+
+    v = np.asarray(body.geometry.contact)  # vertices come first in the scalar numbering
+    md = edge_midside_dofs(body, v)
+    return v if md is None else np.concatenate([v, md[0] // 2])
+
+
 def build_eval_set(body: Body, Un: np.ndarray, Ut: np.ndarray, half_width: float,
                    max_depth: float) -> EvalSet:
-    """Stress operators at the scalar nodes with ``|x| <= half_width`` and ``z <= max_depth``."""
+    """Stress operators at the scalar nodes with ``|x| <= half_width`` and ``z <= max_depth``,
+    and at every node of the fine-zone contact curve (:func:`surface_nodes`)."""
     xy = scalar_node_coordinates(body)
     z = depth(body, xy)
     tol = 1e-9 * half_width
-    sel = np.nonzero((np.abs(xy[0]) <= half_width + tol) & (z <= max_depth + tol))[0]
+    on_surface = np.zeros(xy.shape[1], dtype=bool)
+    on_surface[surface_nodes(body)] = True
+    sel = np.nonzero(((np.abs(xy[0]) <= half_width + tol) & (z <= max_depth + tol)) | on_surface)[0]
     S = stress_operator(body, sel)
     ne = sel.size
     Sn = (S @ Un).reshape(3, ne, -1)
@@ -70,7 +83,7 @@ def build_eval_set(body: Body, Un: np.ndarray, Ut: np.ndarray, half_width: float
     Sn = np.stack([sx_n, sz_n, txz_n])
     St = np.stack([sx_t, sz_t, txz_t])
     zs = z[sel]
-    surf = np.nonzero(np.abs(zs) <= 1e-6 * half_width)[0]
+    surf = np.nonzero(on_surface[sel])[0]
     surf = surf[np.argsort(xy[0, sel][surf])]
     return EvalSet(body=body.name, nodes=sel, x=xy[0, sel], z=np.maximum(zs, 0.0), Sn=Sn, St=St,
                    surface=surf)

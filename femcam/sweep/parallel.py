@@ -22,6 +22,7 @@ import time
 from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import ProcessPoolExecutor, as_completed
 
+from .._threads import limit_blas_threads, single_threaded_blas  # noqa: F401 - re-exported
 from ..errors import InputError
 
 
@@ -38,75 +39,6 @@ def run_tasks(fn: Callable, tasks: Iterable, *, workers: int = 1, scheduler=None
             yield i, fn(t)
     else:
         yield from _run_pool(fn, tasks, workers)
-
-
-_BLAS_PREFIXES = ("openblas_", "scipy_openblas_")
-_BLAS_SUFFIXES = ("", "64_")
-
-
-def _blas_libs():
-    """ctypes handles of the OpenBLAS builds loaded in this process (Linux /proc only)."""
-    import ctypes
-
-    try:
-        with open("/proc/self/maps") as f:
-            paths = {line.split()[-1] for line in f if ".so" in line and "openblas" in line.lower()}
-    except OSError:  # not Linux
-        return []
-    out = []
-    for p in sorted(paths):
-        try:
-            dll = ctypes.CDLL(p)
-        except OSError:
-            continue
-        for pre in _BLAS_PREFIXES:
-            for suf in _BLAS_SUFFIXES:
-                get = getattr(dll, f"{pre}get_num_threads{suf}", None)
-                put = getattr(dll, f"{pre}set_num_threads{suf}", None)
-                if get is not None and put is not None:
-                    out.append((get, put))
-                    break
-            else:
-                continue
-            break
-    return out
-
-
-def limit_blas_threads(n: int = 1) -> list[int]:
-    """Best effort: set the thread count of every loaded OpenBLAS; returns the previous counts.
-
-    Why: (1) worker processes forked from a parent inherit its BLAS thread pool (one thread per
-    core), and N workers x N BLAS threads on N cores busy-wait against each other (measured 2-4x
-    slower on 2 cores); (2) a threaded BLAS may sum in a different order, so results would
-    depend on the executor in the last bits. Environment variables are read only when the
-    library loads, so the running library is told directly (the calls threadpoolctl makes).
-    """
-    import ctypes
-
-    prev = []
-    for get, put in _blas_libs():
-        try:
-            prev.append(int(get()))
-            put(ctypes.c_int(int(n)))
-        except Exception:  # pragma: no cover - exotic builds
-            prev.append(-1)
-    return prev
-
-
-class single_threaded_blas:  # noqa: N801 - used like a function
-    """Context manager: one BLAS thread inside, the previous counts restored after."""
-
-    def __enter__(self):
-        self.prev = limit_blas_threads(1)
-        return self
-
-    def __exit__(self, *exc):
-        import ctypes
-
-        for (_, put), n in zip(_blas_libs(), self.prev, strict=False):
-            if n > 0:
-                put(ctypes.c_int(n))
-        return False
 
 
 def _worker_init():

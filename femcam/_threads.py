@@ -1,0 +1,129 @@
+"""BLAS thread control without extra dependencies (used by ``femcam.fe`` and ``femcam.sweep``).
+
+OpenBLAS reads ``OPENBLAS_NUM_THREADS`` only when it loads, so the running libraries are told
+directly through ``ctypes`` (the ``openblas_set_num_threads`` calls that threadpoolctl makes;
+threadpoolctl itself is not needed). Only OpenBLAS builds are handled (the NumPy and SciPy
+wheels ship ``scipy_openblas``); with another BLAS, or off Linux, these are no-ops.
+
+Why one thread: SuperLU's multi-right-hand-side triangular solves (the FE condensation) and the
+worker processes of a sweep call BLAS on small blocks; several BLAS threads per process on a
+shared 2-core machine busy-wait against each other and against other processes (measured: the
+FE condensation at a/h = 20 took 5-8 s with the default threads vs 0.9-1.9 s with one, load
+average ~2; see docs/fe.md). A threaded BLAS may also sum in a different order, so results
+would depend on the executor in the last bits.
+
+>>> from femcam._threads import single_threaded_blas
+>>> with single_threaded_blas():
+...     pass
+"""
+
+from __future__ import annotations
+
+import threading
+
+_BLAS_PREFIXES = ("openblas_", "scipy_openblas_")
+_BLAS_SUFFIXES = ("", "64_")
+
+
+def _blas_libs():
+    """ctypes handles ``(get, set)`` of the OpenBLAS builds loaded in this process (Linux only)."""
+    import ctypes
+
+    try:
+        with open("/proc/self/maps") as f:
+            paths = {line.split()[-1] for line in f if ".so" in line and "openblas" in line.lower()}
+    except OSError:  # not Linux
+        return []
+    out = []
+    for p in sorted(paths):
+        try:
+            dll = ctypes.CDLL(p)
+        except OSError:
+            continue
+        for pre in _BLAS_PREFIXES:
+            for suf in _BLAS_SUFFIXES:
+                get = getattr(dll, f"{pre}get_num_threads{suf}", None)
+                put = getattr(dll, f"{pre}set_num_threads{suf}", None)
+                if get is not None and put is not None:
+                    out.append((get, put))
+                    break
+            else:
+                continue
+            break
+    return out
+
+
+def blas_threads() -> list[int]:
+    """Current thread count of every loaded OpenBLAS (empty list if none is found)."""
+    out = []
+    for get, _ in _blas_libs():
+        try:
+            out.append(int(get()))
+        except Exception:  # pragma: no cover - exotic builds
+            out.append(-1)
+    return out
+
+
+def limit_blas_threads(n: int = 1) -> list[int]:
+    """Best effort: set the thread count of every loaded OpenBLAS; returns the previous counts.
+
+    Why: (1) worker processes forked from a parent inherit its BLAS thread pool (one thread per
+    core), and N workers x N BLAS threads on N cores busy-wait against each other (measured 2-4x
+    slower on 2 cores); (2) a threaded BLAS may sum in a different order, so results would
+    depend on the executor in the last bits. Environment variables are read only when the
+    library loads, so the running library is told directly (the calls threadpoolctl makes).
+    """
+    import ctypes
+
+    prev = []
+    for get, put in _blas_libs():
+        try:
+            prev.append(int(get()))
+            put(ctypes.c_int(int(n)))
+        except Exception:  # pragma: no cover - exotic builds
+            prev.append(-1)
+    return prev
+
+
+_lock = threading.Lock()
+_depth = 0
+_saved: list = []  # (set function, previous count) of each library changed by the outermost enter
+
+
+class single_threaded_blas:  # noqa: N801 - used like a function
+    """Context manager: one BLAS thread inside, the previous counts restored after.
+
+    Re-entrant and shared between threads: the counts are saved by the first ``__enter__`` and
+    restored by the last ``__exit__``, so nested uses (a sweep worker around an FE build) and
+    concurrent Dask worker threads never restore a multi-threaded pool while another one is
+    still inside.
+    """
+
+    def __enter__(self):
+        global _depth, _saved
+        with _lock:
+            if _depth == 0:
+                import ctypes
+
+                _saved = []
+                for get, put in _blas_libs():
+                    try:
+                        _saved.append((put, int(get())))
+                        put(ctypes.c_int(1))
+                    except Exception:  # pragma: no cover - exotic builds
+                        pass
+            _depth += 1
+        return self
+
+    def __exit__(self, *exc):
+        import ctypes
+
+        global _depth, _saved
+        with _lock:
+            _depth -= 1
+            if _depth == 0:
+                for put, n in _saved:
+                    if n > 0:
+                        put(ctypes.c_int(n))
+                _saved = []
+        return False
