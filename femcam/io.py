@@ -1,10 +1,15 @@
 """Writers: sweep tables (CSV with a provenance header, NPZ), VTU fields and PVD series.
 
-* CSV: ``# key: value`` comment lines (femcam/gmsh/scikit-fem/numpy versions, scene file and
-  SHA-256, command line, date, options), then one header row whose column names carry the unit
-  (``theta_deg``, ``p0_fe_MPa``, ...), then one row per cam angle. ``numpy.genfromtxt`` /
-  ``pandas.read_csv(comment="#")`` read it directly.
-* NPZ: the same table in SI (the internal column names) plus ``provenance_json``.
+* CSV: the first line is the header row, whose column names carry the unit (``theta_deg``,
+  ``p0_fe_MPa``, ...); then ``# key: value`` comment lines (femcam/gmsh/scikit-fem/numpy
+  versions, scene file and SHA-256, command line, date, options, model families, wear); then
+  one row per cam angle. Text fields never contain ``,``, ``#``, quotes or line breaks (they
+  are replaced by ``;``, ``No.``, ``'`` and spaces; the NPZ keeps the exact text), so
+  ``numpy.genfromtxt(path, delimiter=",", names=True, dtype=None, encoding="utf-8")`` and
+  ``pandas.read_csv(path, comment="#")`` read it directly, as does :func:`read_csv`.
+* NPZ: the same table in SI (the internal column names) plus ``provenance_json``,
+  ``scene_toml`` (the scene file's text, "" if the scene was built in code) and ``scene_repr``
+  (the parsed scene as the sweep used it, e.g. after ``--law``).
 * PVD: a ParaView collection; each ``DataSet`` is one ``.vtu`` whose ``timestep`` is the cam
   angle in degrees, so ParaView and pyvista play the sweep as an animation.
 """
@@ -48,8 +53,10 @@ def versions() -> dict[str, str]:
     return out
 
 
-def provenance(*, scene_path=None, scene_hash=None, command=None, options=None) -> dict:
-    """The provenance record written at the top of every output file."""
+def provenance(*, scene_path=None, scene_hash=None, command=None, options=None,
+               **extra) -> dict:
+    """The provenance record written at the top of every output file (``extra``: further
+    JSON-able entries, e.g. ``families``, ``wear``)."""
     rec = {"versions": versions(),
            "date": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds"),
            "machine": f"{platform.machine()} {platform.system()} {platform.release()}"}
@@ -60,6 +67,7 @@ def provenance(*, scene_path=None, scene_hash=None, command=None, options=None) 
     rec["command"] = command if command is not None else shlex.join(sys.argv)
     if options is not None:
         rec["options"] = options
+    rec.update({k: v for k, v in extra.items() if v is not None})
     return rec
 
 
@@ -67,28 +75,36 @@ def _header_lines(prov: dict) -> list[str]:
     lines = ["femcam sweep results (units in the column names)"]
     v = prov.get("versions", {})
     lines.append("versions: " + ", ".join(f"{k} {val}" for k, val in v.items()))
-    for key in ("scene", "scene_sha256", "command", "date", "machine"):
+    for key in ("scene", "scene_sha256", "scene_copy", "command", "date", "machine"):
         if key in prov:
             lines.append(f"{key}: {prov[key]}")
-    if "options" in prov:
-        lines.append("options: " + json.dumps(prov["options"], sort_keys=True))
-    return ["# " + s.replace("\n", " ") for s in lines]
+    for key in ("options", "families", "wear"):
+        if key in prov:
+            lines.append(f"{key}: " + json.dumps(prov[key], sort_keys=True))
+    return ["# " + s.replace("\n", " ").replace("\r", " ") for s in lines]
+
+
+_CSV_TEXT = str.maketrans({",": ";", "#": "No.", '"': "'", "\n": " ", "\r": " "})
+
+
+def csv_text(value) -> str:
+    """A text field as written to the CSV: no ``,``, ``#``, quotes or line breaks."""
+    return str(value).translate(_CSV_TEXT)
 
 
 def write_csv(path, table: dict, prov: dict | None = None) -> Path:
     """Write a sweep table as CSV (unit-suffixed columns, provenance header); atomic."""
     path = Path(path)
     buf = _io.StringIO()
+    names = [c[1] for c in COLUMNS] + list(TEXT_COLUMNS)
+    buf.write(",".join(names) + "\n")  # first line: numpy.genfromtxt(names=True) reads it
     for line in _header_lines(prov or {}):
         buf.write(line + "\n")
-    w = csv.writer(buf, lineterminator="\n")
-    names = [c[1] for c in COLUMNS] + ["status", "flags", "message"]
-    w.writerow(names)
     n = len(table["theta"])
     cols = [np.asarray(table[k], dtype=float) * f for k, _, f in COLUMNS]
-    text = [np.asarray(table[k]).astype(str) for k in TEXT_COLUMNS]
+    text = [[csv_text(v) for v in np.asarray(table[k]).astype(str)] for k in TEXT_COLUMNS]
     for i in range(n):
-        w.writerow([f"{c[i]:.10g}" for c in cols] + [t[i] for t in text])
+        buf.write(",".join([f"{c[i]:.10g}" for c in cols] + [t[i] for t in text]) + "\n")
     atomic_write_text(path, buf.getvalue())
     return path
 
@@ -118,12 +134,16 @@ def read_csv(path) -> tuple[dict, dict]:
     return cols, header
 
 
-def write_npz(path, table: dict, prov: dict | None = None) -> Path:
-    """The table in SI units (internal names) + ``provenance_json``; atomic."""
+def write_npz(path, table: dict, prov: dict | None = None, *, scene_toml: str = "",
+              scene_repr: str = "") -> Path:
+    """The table in SI units (internal names) + ``provenance_json``, ``scene_toml`` (the scene
+    file's text) and ``scene_repr``; atomic."""
     arrays = {k: np.asarray(table[k], dtype=float) for k in NUMERIC if k in table}
     for k in TEXT_COLUMNS:
         arrays[k] = np.asarray(table[k]).astype(str)
     arrays["provenance_json"] = np.array(json.dumps(prov or {}, sort_keys=True))
+    arrays["scene_toml"] = np.array(str(scene_toml))
+    arrays["scene_repr"] = np.array(str(scene_repr))
     path = Path(path)
     _atomic_write_bytes(path, lambda f: np.savez_compressed(f, **arrays))
     return path
@@ -148,10 +168,14 @@ def write_pvd(path, entries) -> Path:
     return path
 
 
-def write_vtu(path, points, cells, point_data: dict, field_data: dict | None = None) -> Path:
-    """A triangle/quad mesh with point data as ``.vtu`` through meshio (atomic write).
+def write_vtu(path, points, cells, point_data: dict, field_data: dict | None = None,
+              cell_data: dict | None = None) -> Path:
+    """A mesh with point (and cell) data as ``.vtu`` through meshio (atomic write).
 
-    ``points`` (n, 2) or (n, 3) in m; ``cells`` = ``[("triangle", conn), ...]``.
+    ``points`` (n, 2) or (n, 3) in m; ``cells`` = ``[("triangle", conn), ...]``;
+    ``field_data`` = ``{name: float or 1D array}``: VTK FieldData (one value per file, e.g. the
+    cam angle), which meshio's VTU writer drops, so it is inserted into the XML here (pyvista
+    ``mesh.field_data`` and ParaView read it).
     """
     import meshio
 
@@ -159,9 +183,32 @@ def write_vtu(path, points, cells, point_data: dict, field_data: dict | None = N
     if pts.shape[1] == 2:
         pts = np.column_stack([pts, np.zeros(len(pts))])
     mesh = meshio.Mesh(pts, cells, point_data={k: np.asarray(v) for k, v in point_data.items()},
-                       field_data=field_data or {})
+                       cell_data=cell_data or {})
     path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
     tmp = path.with_name(path.stem + ".part.vtu")
-    meshio.write(tmp, mesh, file_format="vtu")
+    meshio.write(tmp, mesh, file_format="vtu", binary=True)
+    if field_data:
+        _insert_field_data(tmp, field_data)
     tmp.replace(path)
     return path
+
+
+def _insert_field_data(path: Path, field_data: dict) -> None:
+    """Add a ``<FieldData>`` block (ASCII Float64 arrays) to a VTU written by meshio."""
+    from xml.sax.saxutils import escape
+
+    arrays = []
+    for name, val in field_data.items():
+        v = np.atleast_1d(np.asarray(val, dtype=float)).ravel()
+        txt = " ".join(repr(float(x)) for x in v)
+        arrays.append(f'<DataArray type="Float64" Name={quoteattr(str(name))} '
+                      f'NumberOfTuples="{v.size}" format="ascii">{escape(txt)}</DataArray>')
+    block = "<FieldData>\n" + "\n".join(arrays) + "\n</FieldData>\n"
+    data = path.read_bytes()
+    tag = b"<UnstructuredGrid>"
+    k = data.find(tag)
+    if k < 0:  # pragma: no cover - not a meshio VTU
+        return
+    k += len(tag)
+    path.write_bytes(data[:k] + b"\n" + block.encode() + data[k:])

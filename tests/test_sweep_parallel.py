@@ -21,10 +21,11 @@ import numpy as np
 import pytest
 
 from femcam.sweep import parse_angles_deg, pipeline, sweep
+from femcam.sweep.result import WALL_CLOCK
 
 ROOT = Path(__file__).resolve().parents[1]
 STUDY = ROOT / "examples" / "seed002_study_model.toml"
-SKIP = {"fe_time"}  # wall clock
+SKIP = set(WALL_CLOCK)  # fe_time, build_time: wall clock
 EXACT = {"iterations", "n_dofs", "family"}
 
 
@@ -49,11 +50,21 @@ def serial():
     return th, sweep(STUDY, angles=th, chunk_size=4).table
 
 
-def test_process_pool_equals_serial(serial):
+def test_process_pool_equals_serial(serial, tmp_path):
     th, ref = serial
-    pipeline.clear_model_cache()  # forked workers must build their own models
+    # the usual path: families verified in this process, forked workers inherit the models
     r = sweep(STUDY, angles=th, chunk_size=4, workers=2)
     assert_same(r.table, ref)
+    assert r.provenance["options"]["workers"] == 2
+    # workers that build and solve everything themselves: resume the stored plan with an
+    # empty model cache (nothing verified, nothing cached in this process)
+    sweep(STUDY, angles=th, chunk_size=4, out=tmp_path, workers=1)
+    for p in (tmp_path / "chunks").glob("chunk_*.npz"):
+        p.unlink()
+    pipeline.clear_model_cache()
+    r2 = sweep(STUDY, angles=th, chunk_size=4, out=tmp_path, resume=True, workers=2)
+    assert (r2.n_chunks_computed, r2.n_chunks_resumed) == (6, 0)
+    assert_same(r2.table, ref)
 
 
 def test_dask_local_cluster_equals_serial(serial, tmp_path):
@@ -73,7 +84,8 @@ def test_dask_local_cluster_equals_serial(serial, tmp_path):
                    "--chunk-size", "5", "--scheduler", cluster.scheduler_address, "--no-plots"])
         assert rc == 0
         with np.load(tmp_path / "sweep.npz") as z:
-            assert_same({k: z[k] for k in z.files if k != "provenance_json"}, ref)
+            assert_same({k: z[k] for k in z.files if k not in ("provenance_json", "scene_toml",
+                                                                "scene_repr")}, ref)
 
 
 def _cli(out, *extra, env=None):
@@ -82,22 +94,50 @@ def _cli(out, *extra, env=None):
             *extra]
 
 
-@pytest.mark.slow  # three interpreter start-ups: ~6-11 s on 2 shared cores
+def _kill_after(proc, chunks: Path, n: int) -> None:
+    t0 = time.monotonic()
+    try:
+        while len(list(chunks.glob("chunk_*.npz"))) < n:
+            assert proc.poll() is None, proc.communicate()
+            assert time.monotonic() - t0 < 120, "no chunks appeared"
+            time.sleep(0.02)
+        proc.send_signal(signal.SIGKILL)
+    finally:
+        proc.wait()
+    assert proc.returncode == -signal.SIGKILL
+
+
+def test_killed_subprocess_resumes_in_process(tmp_path):
+    """The fast version (default suite): one interpreter start, SIGKILL after the first chunk,
+    then ``resume`` through the API in this process. Hertz method, so that the subprocess
+    reaches its first chunk quickly (the store and resume logic are the same for both
+    methods; the FE version below also checks the stored family plan)."""
+    out = tmp_path / "run"
+    env = dict(os.environ, FEMCAM_SWEEP_TEST_DELAY_S="0.5")
+    proc = subprocess.Popen(_cli(out, "--method", "hertz", "--vtk-every", "0", "--workers", "1"),
+                            env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    _kill_after(proc, out / "chunks", 1)
+    n_done = len(list((out / "chunks").glob("chunk_*.npz")))
+    assert 1 <= n_done < 6, "the sweep should have been killed midway"
+    assert not (out / "sweep.csv").exists()
+    th = parse_angles_deg("0:360:20")
+    res = sweep(STUDY, angles=th, chunk_size=3, method="hertz", out=out, resume=True, workers=1)
+    assert (res.n_chunks_resumed, res.n_chunks_computed) == (n_done, 6 - n_done)
+    ref = sweep(STUDY, angles=th, chunk_size=3, method="hertz", workers=1)
+    assert_same(res.table, ref.table)
+    with np.load(out / "sweep.npz") as z:
+        assert_same({k: z[k] for k in z.files if k not in ("provenance_json", "scene_toml",
+                                                             "scene_repr")}, ref.table)
+
+
+@pytest.mark.slow  # three interpreter start-ups and FE family checks: ~10-15 s on 2 shared cores
 def test_killed_subprocess_resumes_to_identical_results(tmp_path):
     out = tmp_path / "run"
     env = dict(os.environ, FEMCAM_SWEEP_TEST_DELAY_S="0.3")  # slow each chunk down a little
     proc = subprocess.Popen(_cli(out), env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     chunks = out / "chunks"
-    t0 = time.monotonic()
-    try:
-        while len(list(chunks.glob("chunk_*.npz"))) < 2:
-            assert proc.poll() is None, proc.communicate()
-            assert time.monotonic() - t0 < 120, "no chunks appeared"
-            time.sleep(0.05)
-        proc.send_signal(signal.SIGKILL)
-    finally:
-        proc.wait()
-    assert proc.returncode == -signal.SIGKILL
+    _kill_after(proc, chunks, 2)
+    assert (chunks / "plan.json").exists()  # the verified families, reused by the resume
     n_done = len(list(chunks.glob("chunk_*.npz")))
     assert 2 <= n_done < 6, "the sweep should have been killed midway"
     assert not (out / "sweep.csv").exists()
@@ -108,5 +148,6 @@ def test_killed_subprocess_resumes_to_identical_results(tmp_path):
 
     ref = sweep(STUDY, angles=parse_angles_deg("0:360:20"), chunk_size=3)
     with np.load(out / "sweep.npz") as z:
-        resumed = {k: z[k] for k in z.files if k != "provenance_json"}
+        resumed = {k: z[k] for k in z.files if k not in ("provenance_json", "scene_toml",
+                                                          "scene_repr")}
     assert_same(resumed, ref.table)

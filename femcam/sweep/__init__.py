@@ -4,19 +4,21 @@
 >>> r = sweep("examples/seed002_study_model.toml", out="out", workers=2)  # doctest: +SKIP
 
 Modules: :mod:`~femcam.sweep.pipeline` (per-angle chain), :mod:`~femcam.sweep.families` (model
-families, per-process model cache),
-:mod:`~femcam.sweep.store` (chunked atomic store, resume), :mod:`~femcam.sweep.parallel`
-(serial / process pool / Dask), :mod:`~femcam.sweep.result` (:class:`SweepResult`, columns),
-:mod:`~femcam.sweep.run` (:func:`sweep`).
+families, verification of the reuse error against ``tolerance``, per-process model cache),
+:mod:`~femcam.sweep.wear` (Archard wear columns), :mod:`~femcam.sweep.store` (chunked atomic
+store, resume), :mod:`~femcam.sweep.parallel` (serial / process pool / Dask),
+:mod:`~femcam.sweep.result` (:class:`SweepResult`, columns), :mod:`~femcam.sweep.run`
+(:func:`sweep`, ``workers="auto"``).
 """
 
 from .parallel import Progress, run_tasks
-from .pipeline import SweepOptions, plan_families, run_chunk
+from .pipeline import SweepOptions, plan_families, run_chunk, verify_families
 from .result import COLUMNS, SweepResult
-from .run import parse_angles_deg, sweep
+from .run import auto_workers, parse_angles_deg, sweep
 
-__all__ = ["COLUMNS", "Progress", "SweepOptions", "SweepResult", "parse_angles_deg",
-           "plan_families", "run_chunk", "run_tasks", "sweep"]
+__all__ = ["COLUMNS", "Progress", "SweepOptions", "SweepResult", "auto_workers",
+           "parse_angles_deg", "plan_families", "run_chunk", "run_tasks", "sweep",
+           "verify_families"]
 
 
 # ``femcam.sweep`` is both this package and the entry point: ``femcam.sweep(scene, ...)`` calls

@@ -7,13 +7,27 @@ CSV writer in :mod:`femcam.io` converts to the unit written in the column name t
 Per-angle ``status``:
 
 * ``"ok"``        -- contact, the requested method answered;
-* ``"liftoff"``   -- Fc <= 0: no contact, stresses are 0, Hertz/FE widths NaN;
+* ``"liftoff"``   -- Fc <= 0: no contact. Contact half-widths, p0, stresses and wear are 0 (no
+  contact has zero width and zero pressure); depths of maxima and relative errors are NaN
+  (undefined);
+* ``"undercut"``  -- the cam is concave with ``|rho| <= Rr``: the roller does not fit the
+  concave cam (1/rho + 1/Rr <= 0; the pitch curve is undercut or the bodies interfere). No
+  contact solution exists, Hertz or FE; every result column is NaN and ``message`` says why;
 * ``"failed"``    -- the FE solve at this angle failed; ``message`` says why, the sweep went on.
 
-``flags`` is a ``;``-separated list of remarks: ``hertz_invalid`` (1/R <= 0, e.g. a concave
-cam nearly conformal with the roller: the FE still answers but there is no Hertz reference),
-``hertz_large_a`` (a/R not small: Hertz itself is questionable), ``rebuilt`` (the model of the
-angle's family did not cover it and a model was built for this angle alone).
+``flags`` is a ``;``-separated list of remarks on ``ok`` rows:
+
+* ``hertz_large_a`` -- Hertz a / min(Rr, |rho|) > 0.1 (``LineContact.valid`` is False, or the FE
+  result reports ``outside_hertz``): Hertz itself is questionable, the FE answer stands;
+* ``nearly_conformal`` -- a concave cam close to the roller radius, where Hertz's parabolic gap
+  is off by more than 0.1 % at the contact edge (quartic gap term / quadratic term at x = a,
+  :func:`femcam.sweep.pipeline.gap_nonparabolicity`); the FE uses the exact circular surfaces,
+  so ``err_a``/``err_p0`` there measure Hertz's error as much as the FE's;
+* ``rebuilt`` -- the model of the angle's family did not cover it (``model.covers``) and a
+  model was built for this angle alone (its reuse error is 0).
+
+Wear: ``wear_source`` says which pressure the ``wear_depth`` column used (``fe``, ``hertz`` or
+``none``), see :mod:`femcam.sweep.wear`.
 """
 
 from __future__ import annotations
@@ -46,17 +60,24 @@ COLUMNS: tuple[tuple[str, str, float], ...] = (
     ("sx_max", "sx_max_MPa", 1e-6),
     ("sz_min", "sz_min_MPa", 1e-6),
     ("txz_absmax", "txz_absmax_MPa", 1e-6),
+    ("v_slip", "v_slip_m_s", 1.0),
+    ("V_cam", "V_cam_m_s", 1.0),
+    ("wear_depth", "wear_depth_per_rev_nm", 1e9),
     ("fe_time", "fe_time_ms", 1e3),
+    ("build_time", "build_time_ms", 1e3),
 )
 
-#: string columns (CSV keeps them verbatim)
-TEXT_COLUMNS = ("status", "flags", "message")
+#: string columns (in the CSV with ``,``, ``#``, quotes and newlines replaced, see femcam.io)
+TEXT_COLUMNS = ("status", "flags", "wear_source", "message")
 
 #: numeric diagnostics stored in the NPZ only
 EXTRA_COLUMNS = ("iterations", "residual", "n_dofs", "family")
 
 NUMERIC = tuple(c[0] for c in COLUMNS) + EXTRA_COLUMNS
-STATUSES = ("ok", "liftoff", "failed")
+STATUSES = ("ok", "liftoff", "undercut", "failed")
+
+#: wall-clock columns (differ from run to run; excluded from equality checks)
+WALL_CLOCK = ("fe_time", "build_time")
 
 
 def empty_rows(n: int) -> dict[str, np.ndarray]:
@@ -87,14 +108,21 @@ class SweepResult:
     ----------
     table : dict[str, ndarray]
         One array per column (SI names from :data:`COLUMNS`, plus ``status``, ``flags``,
-        ``message`` and the diagnostics ``iterations``, ``residual``, ``n_dofs``, ``family``).
+        ``wear_source``, ``message`` and the diagnostics ``iterations``, ``residual``,
+        ``n_dofs``, ``family``). ``fe_time`` is the contact solve + stress recovery of the angle
+        (the solve's own timing, no model build, no file writing); ``build_time`` the model
+        builds this row caused in the process that computed it (0 when the model came from the
+        cache; the per-family build times are in ``families``).
     method : ``"fe"`` or ``"hertz"``.
     provenance : dict
-        femcam/gmsh/scikit-fem/numpy versions, scene file and hash, command line, date, options.
+        femcam/gmsh/scikit-fem/numpy versions, scene file and hash, command line, date, options,
+        ``families`` (one record per model family: references, checked reuse errors, build
+        time; see :func:`femcam.sweep.families.verify_families`) and ``wear`` (k, slip model).
     paths : dict[str, str]
         Files written (``csv``, ``npz``, ``pvd``, plots ...); empty for an in-memory sweep.
     timings : dict[str, float]
-        Wall times in s: ``analytic``, ``compute`` (all chunks), ``total``; ``n_models`` built.
+        Wall times in s: ``analytic``, ``verify`` (family planning and reuse checks, FE only),
+        ``compute`` (all chunks), ``total``.
     n_chunks_computed, n_chunks_resumed : how many chunks this call computed / loaded from disk.
     """
 
@@ -125,6 +153,20 @@ class SweepResult:
     def ok(self) -> np.ndarray:
         """Rows with contact and an answer."""
         return self.table["status"] == "ok"
+
+    @property
+    def families(self) -> list[dict]:
+        """Family records (``provenance["families"]``): ``id, rho_ref, a_ref, n_angles, a_ratio,
+        kappa, checks [(theta_deg, a/a_ref, Rr/rho, reuse_error)], reuse_error, build_time,
+        check_time, n_rebuilt``; empty for a Hertz sweep."""
+        return list(self.provenance.get("families", []))
+
+    @property
+    def reuse_error(self) -> float:
+        """Largest checked ``|p0(family model)/p0(fresh model) - 1|`` over all families (NaN if
+        none was checked)."""
+        errs = [f["reuse_error"] for f in self.families]
+        return float(max(errs)) if errs else float("nan")
 
     @property
     def n_failed(self) -> int:
@@ -159,4 +201,8 @@ class SweepResult:
             "err_a_absmax": peak("err_a"),
             "n_liftoff": int(np.count_nonzero(t["status"] == "liftoff")),
             "n_failed": self.n_failed,
+            "n_undercut": int(np.count_nonzero(t["status"] == "undercut")),
+            "n_families": len(self.families),
+            "reuse_error_max": self.reuse_error,
+            "wear_depth_max": peak("wear_depth"),
         }

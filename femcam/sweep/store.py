@@ -3,6 +3,7 @@
 Layout of ``DIR/chunks/``::
 
     manifest.json        scene hash, angle hash, options, chunk boundaries
+    plan.json            the verified model families (FE sweeps; reused on resume)
     chunk_00000.npz      rows of chunk 0 (written to a temporary file, then os.replace)
     ...
 
@@ -27,7 +28,8 @@ from ..errors import InputError
 from .result import NUMERIC, TEXT_COLUMNS
 
 MANIFEST = "manifest.json"
-FORMAT_VERSION = 1
+PLAN = "plan.json"
+FORMAT_VERSION = 2  # 2: wear and build-time columns, plan.json
 
 
 def array_hash(arr) -> str:
@@ -36,14 +38,34 @@ def array_hash(arr) -> str:
     return hashlib.sha256(a.tobytes()).hexdigest()
 
 
+def _umask() -> int:
+    """The process umask, read without changing it where possible (Linux /proc), else by the
+    classic set-and-restore."""
+    try:
+        with open("/proc/self/status") as f:
+            for line in f:
+                if line.startswith("Umask:"):
+                    return int(line.split()[1], 8)
+    except (OSError, ValueError, IndexError):
+        pass
+    old = os.umask(0o022)
+    os.umask(old)
+    return old
+
+
 def _atomic_write_bytes(path: Path, write) -> None:
-    """Call ``write(fileobj)`` on a temp file next to ``path``, fsync, then rename over ``path``."""
+    """Call ``write(fileobj)`` on a temp file next to ``path``, fsync, then rename over ``path``.
+
+    The file gets the mode an ordinary ``open(path, "w")`` would give (``0o666 & ~umask``), not
+    mkstemp's private 0600.
+    """
     fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=".tmp", dir=path.parent)
     try:
         with os.fdopen(fd, "wb") as f:
             write(f)
             f.flush()
             os.fsync(f.fileno())
+        os.chmod(tmp, 0o666 & ~_umask())
         os.replace(tmp, path)
     except BaseException:
         try:
@@ -98,11 +120,24 @@ class ChunkStore:
                     f"{', '.join(diff) or 'format'}); rerun without --resume or use another --out")
             if old is not None:
                 return {i for i in range(len(self.bounds)) if self._readable(i)}
-        # fresh sweep: drop old chunks, write the manifest
+        # fresh sweep: drop old chunks and plan, write the manifest
         for p in self.root.glob("chunk_*.npz"):
             p.unlink()
+        (self.root / PLAN).unlink(missing_ok=True)
         atomic_write_text(mpath, json.dumps(self._manifest(), indent=1, sort_keys=True))
         return set()
+
+    # -- the verified family plan ----------------------------------------------------
+    def save_plan(self, plan: dict) -> None:
+        """Store the verified family plan (JSON): a resume reuses it instead of re-verifying,
+        so the resumed chunks use exactly the same models."""
+        atomic_write_text(self.root / PLAN, json.dumps(plan, sort_keys=True))
+
+    def load_plan(self) -> dict | None:
+        try:
+            return json.loads((self.root / PLAN).read_text())
+        except (OSError, ValueError):
+            return None
 
     # -- chunks -------------------------------------------------------------------------
     def path(self, i: int) -> Path:

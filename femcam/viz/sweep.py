@@ -4,7 +4,13 @@
 * ``surface_stress_worst.png`` -- surface sx, sz, txz along x at the worst angle, FE points and
   Hertz lines (as seed 002 Figs. 3-5);
 * ``maxima_vs_angle.png``   -- von Mises and tau1 maxima against cam angle (FE points, Hertz lines);
-* ``svaj_loads.png``        -- s, v, a, j and phi, rho, Fc against cam angle.
+* ``svaj_loads.png``        -- s, v, a, j and phi, rho, Fc against cam angle;
+* ``wear_vs_angle.png``     -- Archard wear depth per revolution at the contact point and the
+  sliding speed against cam angle (the sweep's ``wear_depth`` and ``v_slip`` columns).
+
+The worst-angle surface plot re-solves that one angle with the model the sweep used for it
+(:func:`femcam.sweep.pipeline.worst_surface_profile`): in the same process it is the cached
+family model, no mesh is built.
 
 Units on the axes: degrees, mm, MPa, N, um.
 """
@@ -104,6 +110,29 @@ def plot_svaj_loads(result, path) -> str:
     return _save(fig, Path(path))
 
 
+def plot_wear(result, path) -> str:
+    plt = _plt()
+    t = result.table
+    deg = np.degrees(t["theta"])
+    fig, axs = plt.subplots(2, 1, figsize=(7, 4.6), sharex=True)
+    src = np.asarray(t["wear_source"]).astype(str)
+    for s_, c, lab in (("fe", "C3", "FE pressure"), ("hertz", "C0", "Hertz pressure")):
+        m = src == s_
+        if np.any(m):
+            axs[0].plot(deg[m], t["wear_depth"][m] * 1e9, ".", ms=3, color=c, label=lab)
+    k = result.provenance.get("wear", {}).get("k_m3_per_N_m")
+    axs[0].set_ylabel("wear depth per rev (nm)")
+    axs[0].set_title("Archard wear at the contact point" + (f" (k = {k:.3g} m^3/(N m))" if k else ""))
+    axs[0].legend(fontsize=8)
+    axs[0].grid(alpha=0.3)
+    axs[1].plot(deg, t["v_slip"], "-", lw=1)
+    axs[1].set_ylabel("sliding speed (m/s)")
+    axs[1].set_xlabel("cam angle theta (deg)")
+    axs[1].grid(alpha=0.3)
+    fig.tight_layout()
+    return _save(fig, Path(path))
+
+
 def plot_surface_worst(result, scene, path, profile=None) -> str:
     """Surface stresses along x at the worst angle; ``profile`` = ``worst_surface_profile(...)``."""
     from ..sweep.pipeline import worst_surface_profile
@@ -142,6 +171,8 @@ def plot_sweep(result, scene, out) -> dict[str, str]:
     paths = {"plot_p0": plot_p0(r, d / "p0_vs_angle.png"),
              "plot_maxima": plot_maxima(r, d / "maxima_vs_angle.png"),
              "plot_svaj": plot_svaj_loads(r, d / "svaj_loads.png")}
+    if np.any(np.isfinite(result.table["wear_depth"])):
+        paths["plot_wear"] = plot_wear(r, d / "wear_vs_angle.png")
     if np.any(result.ok):
         paths["plot_surface"] = plot_surface_worst(r, scene, d / "surface_stress_worst.png")
     return paths
