@@ -4,9 +4,12 @@
   mm/s, ratio to SHM, S in mm), the wear list (W in mm^3), interior and with-dwell peak jerk and
   junction continuity, and the paper-vs-femcam differences.
 * ``femcam wear map SCENE.toml --out DIR [--cycles N] [--source hertz|fe] [--laws a,b,c]
-  [--tip-radius-mm R]`` writes ``DIR/wear_<law>.csv`` (per cam angle),
+  [--tip-radius-mm R] [--evolve-blocks K]`` writes ``DIR/wear_<law>.csv`` (per cam angle),
   ``DIR/wear_<law>_surface.csv`` (cam arc length grid), ``DIR/wear_<law>_follower.csv``
-  (follower surface grid), ``DIR/wear_summary.csv`` and PNG plots.
+  (follower surface grid), ``DIR/wear_summary.csv`` and PNG plots. With ``--evolve-blocks K``
+  (roller followers) the profile is also evolved in blocks (:mod:`femcam.wear.evolution`) with
+  1, 2, 4, ... K blocks: ``DIR/wear_<law>_evolution.csv`` (convergence table) and
+  ``DIR/wear_<law>_evolution.png`` (evolved vs linear depth).
 
 Scene ``[wear]`` keys (checked; see :mod:`femcam.wear.options`): ``K`` (dimensionless; with the
 cam's ``hardness_MPa``) or ``k_mm3_per_N_m``; ``roller_model = "srr"|"inertia"``, ``srr``,
@@ -47,6 +50,9 @@ def register(subparsers) -> None:
     m.add_argument("--tip-radius-mm", type=float, default=None, metavar="R",
                    help="knife-edge followers: tip radius in mm (default: scene [wear] tip_radius_mm); "
                         "a sharp tip has no contact width, so the wear map needs one")
+    m.add_argument("--evolve-blocks", type=int, default=None, metavar="K",
+                   help="roller followers: also evolve the profile (wear -> geometry -> pressure -> wear) "
+                        "in 1, 2, 4, ... K blocks of cycles and write the convergence table")
     m.add_argument("--no-plots", action="store_true")
     m.set_defaults(func=_map)
     p.set_defaults(func=lambda args: (p.print_help(), 2)[1])
@@ -176,6 +182,9 @@ def _map(args) -> int:
         if not (math.isfinite(args.tip_radius_mm) and args.tip_radius_mm > 0):
             raise InputError(f"--tip-radius-mm = {args.tip_radius_mm:g} mm: must be > 0")
         tip = args.tip_radius_mm * 1e-3
+    if args.evolve_blocks is not None and args.evolve_blocks < 1:
+        raise InputError(f"--evolve-blocks = {args.evolve_blocks} (number of blocks): "
+                         "must be an integer >= 1")
     theta = np.radians(np.arange(0.0, 360.0, step))
     laws = [x.strip() for x in args.laws.split(",")] if args.laws else [None]
     k, k_where = wear_coefficient_info(scene)
@@ -260,5 +269,50 @@ def _map(args) -> int:
         if len(results) > 1:
             plot_wear_comparison({k: v[0] for k, v in results.items()}, out / "wear_laws.png",
                                  title=scene.name)
+    if args.evolve_blocks is not None:
+        for name in laws:
+            sc = scene.with_law(name) if name else scene
+            _evolution(sc, name or "scene", theta, cycles, args, out, head)
     print(f"wrote {out}/")
     return 0
+
+
+def _evolution(scene, label, theta, cycles, args, out, head) -> None:
+    """``--evolve-blocks K``: convergence table CSV and evolved-vs-linear PNG of one law."""
+    from ..wear.evolution import convergence_table, evolution_case
+
+    if args.source != "hertz":
+        raise InputError(f"--source = {args.source}: --evolve-blocks uses Hertz pressure (--source hertz)")
+    ct = convergence_table(evolution_case(scene, theta), cycles, args.evolve_blocks)
+    header, rows = ct.rows()
+    fin = ct.finest
+    with (out / f"wear_{label}_evolution.csv").open("w", newline="") as fh:
+        fh.write(f"{head.rstrip()}; profile evolution in blocks (explicit Euler), {cycles:g} revolutions, "
+                 f"linear max depth {ct.linear_max_depth * 1e6:.10g} um, largest Hertz a/R "
+                 f"{fin.a_over_R_max:.3g}\n")
+        w = csv.writer(fh)
+        w.writerow(header)
+        w.writerows(rows)
+    print(f"{label}: profile evolution over {cycles:g} revolutions (max cam depth, um; difference to "
+          f"{ct.blocks[-1]} blocks, nm; observed order)")
+    for r in rows:
+        print(f"  {r[0]:>6} blocks of {r[1]:>10} rev: {float(r[2]):.8g} um  {r[3]:>10} nm  order {r[5]}")
+    if not args.no_plots:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        fig, (a1, a2) = plt.subplots(2, 1, figsize=(6.4, 6.0), sharex=True)
+        x = fin.x_cam * 1e3
+        a1.plot(x, fin.depth_linear * 1e6, label="linear (unworn geometry) x N")
+        a1.plot(x, fin.depth_cam * 1e6, "--", label=f"evolved, {fin.blocks} blocks")
+        a1.set_ylabel("cam wear depth (um)")
+        a1.legend()
+        a1.set_title(f"{scene.name} ({label}): {cycles:g} revolutions")
+        a2.plot(x, (fin.depth_cam - fin.depth_linear) * 1e9)
+        a2.set_ylabel("evolved - linear (nm)")
+        a2.set_xlabel("cam arc length (mm)")
+        fig.tight_layout()
+        fig.savefig(out / f"wear_{label}_evolution.png", dpi=110)
+        plt.close(fig)

@@ -7,6 +7,8 @@
   tip radius, flat-faced, roller with a slide-to-roll ratio or the inertia-limited slip model).
 * :mod:`.map` -- Archard depth ``h(x) = k int p v_slip dt`` on the cam and follower surfaces;
   the roller's drift from one revolution to the next (:func:`drift_sum`).
+* :mod:`.evolution` -- the profile worn in blocks of cycles (wear -> worn curvature and lift ->
+  force and Hertz pressure -> wear), explicit Euler, and its convergence in the block size.
 * :mod:`.options` -- a scene's ``[wear]`` table checked (units in key names) and the wear
   coefficient used, with where it came from.
 
@@ -14,6 +16,15 @@ numpy/scipy only.
 """
 
 from .archard import archard_volume, dimensional_coefficient, dimensionless_coefficient
+from .evolution import (
+    ConvergenceTable,
+    EvolutionCase,
+    EvolutionResult,
+    convergence_table,
+    evolution_case,
+    evolve,
+    worn_curvature,
+)
 from .map import (
     WearInputWarning,
     WearMap,
@@ -37,6 +48,8 @@ from .slip import (
 
 __all__ = [
     "archard_volume", "dimensional_coefficient", "dimensionless_coefficient",
+    "ConvergenceTable", "EvolutionCase", "EvolutionResult", "convergence_table", "evolution_case", "evolve",
+    "worn_curvature",
     "WearInputWarning", "WearMap", "depth_per_pass", "drift_sum", "surface_depth", "wear_depth_per_angle",
     "wear_map", "wear_coefficient_info", "wear_options",
     "Seed000Inputs", "Seed000Table", "format_table3", "rms_velocity", "seed000_table",

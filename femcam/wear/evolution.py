@@ -1,0 +1,403 @@
+r"""Profile evolution: wear → geometry → load and Hertz pressure → wear, in blocks of cycles.
+
+:mod:`.map` is linear in cycles: the depth after N revolutions is N times the depth of one
+revolution of the *unworn* cam. Here the cam is worn in blocks of ``dN`` revolutions; before
+each block the contact is recomputed on the worn geometry (explicit Euler in N):
+
+.. math:: h_{b+1}(x) = h_b(x) + \Delta N\,\dot h\big(x;\,h_b\big),\qquad
+          \dot h(x; h) = k\int p_h\big(x-\xi(t)\big)\,v_{slip}(t)\,dt
+
+where ``dot h`` is :func:`~femcam.wear.map.wear_map`'s depth per revolution with the pressure
+``p_h`` of the worn geometry. The error after N revolutions is first order in ``dN``
+(:func:`convergence_table` measures the order).
+
+Symbols
+-------
+=========  ==================================================  =========  =========================
+symbol     meaning                                             unit       source
+=========  ==================================================  =========  =========================
+h(s)       cam wear depth, inward along the normal             m          this module
+s          arc length along the *unworn* cam surface           m          :mod:`.map` ``x_cam``
+kappa      unworn cam curvature ``1/rho`` (> 0 convex)         1/m        :mod:`femcam.profile`
+kappa_w    curvature of the worn surface                       1/m        eq. (1) below
+H_r        mean roller wear depth (uniform, see below)         m          :mod:`.map`, drift
+ds_f       follower lift lost to the wear                      m          eq. (2)
+Fc         normal contact force on the worn cam                N          seed 002 eq. 11
+a, p0      Hertz half-width and peak pressure                  m, Pa      Johnson §4.2, eq. 4.44
+k          Archard wear coefficient                            m^3/(N m)  Archard (1953)
+dN         block size                                          revs       this module
+=========  ==================================================  =========  =========================
+
+**(1) Curvature of the worn surface.** The worn surface is the unworn one moved inward by
+``h(s)`` along the normal, ``W(s) = C(s) + h(s) N(s)`` (``C`` arc-length parametrised, tangent
+``T``, inward normal ``N``; Frenet, do Carmo *Differential Geometry of Curves and Surfaces*
+§1-5: ``T' = kappa N``, ``N' = -kappa T``). Then ``W' = (1 - kappa h) T + h' N`` and
+``W'' = -(kappa' h + 2 kappa h') T + (kappa (1 - kappa h) + h'') N``, so the signed curvature
+``(W' x W'')/|W'|^3`` is, exactly,
+
+.. math:: \kappa_w = \frac{(1-\kappa h)\big[\kappa(1-\kappa h) + h''\big]
+                     + h'\,(\kappa' h + 2\kappa h')}{\big[(1-\kappa h)^2 + h'^2\big]^{3/2}}
+          \;\approx\; \frac{1}{\rho - h} + h''
+
+(primes: d/ds along the unworn surface). A worn-in dimple (``h'' < 0``) flattens the cam;
+``h'' > 0`` (the rim of a worn band) sharpens it. ``rho_w = 1/kappa_w`` goes into Hertz.
+
+**(2) Load.** The follower (roller) keeps touching the worn cam: its centre moves towards the
+cam by ``h + H_r`` along the contact normal, i.e. by ``ds_f = -(h + H_r)/cos phi`` along its
+axis (first order; the change of the pressure angle ``phi``, O(h'), is neglected). The force is
+seed 002 eq. 11 on the worn lift ``s + ds_f`` (spring ``k_s ds_f``, and the inertia and
+damping of its variation with the cam angle, ``m omega^2 ds_f''`` and ``c omega ds_f'``, by
+periodic central differences in theta):
+:math:`F_c = [m\omega^2(s_2 + \Delta s_f'') + c\,\omega(s_1 + \Delta s_f') + k_s(s + \Delta s_f)
++ F_{pl}]/\cos\varphi`.
+
+**Roller.** The roller's wear is the drift-summed pattern of :mod:`.map` (each block's
+revolutions laid down with the contact's drift ``D`` per revolution, from the block's starting
+phase). For the geometry it enters only as its mean depth ``H_r`` (the pattern flattens towards
+it, see :func:`~femcam.wear.map.drift_sum`): roller radius ``Rr - H_r`` and the lift loss (2).
+
+Assumptions: Archard, constant k, no running-in; Hertz line contact on the local radii (valid
+while ``a << rho_w, Rr``: the largest ``a/min(|rho_w|, Rr)`` is reported); the contact point and
+the slip (speeds, arc positions, drift) stay those of the unworn cam (their changes are
+O(h/rho)); quasi-static dynamics of the rigid follower train (seed 002 eq. 11); uniform wear
+across the face width. Roller followers only: a radiused knife-edge tip wears to a flat of
+about its own contact width (tens of µm against a = 6 µm, see docs/wear.md), a conformal
+contact that Hertz does not describe.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .. import _validate as vd
+from .map import WearMap, drift_sum, wear_map
+from .slip import SlipResult
+
+
+# --------------------------------------------------------------------------- geometry
+def worn_curvature(kappa, dkappa_ds, h, h1, h2):
+    r"""Signed curvature (1/m, > 0 convex) of a surface of curvature ``kappa`` worn by ``h(s)``.
+
+    ``h1 = dh/ds``, ``h2 = d^2h/ds^2`` along the unworn arc length; ``dkappa_ds`` the unworn
+    curvature's derivative. Exact for the offset curve ``C + h N`` (see the module text, eq. 1):
+
+    .. math:: \kappa_w = \frac{(1-\kappa h)[\kappa(1-\kappa h) + h''] + h'(\kappa' h + 2\kappa h')}
+                              {[(1-\kappa h)^2 + h'^2]^{3/2}}
+
+    >>> round(float(worn_curvature(1 / 0.02, 0.0, 1e-3, 0.0, 0.0)), 9)   # circle: 1/(rho - h)
+    52.631578947
+    """
+    kappa, dk, h, h1, h2 = (np.asarray(x, dtype=float) for x in (kappa, dkappa_ds, h, h1, h2))
+    q = 1.0 - kappa * h
+    return (q * (kappa * q + h2) + h1 * (dk * h + 2.0 * kappa * h1)) / (q * q + h1 * h1) ** 1.5
+
+
+def _periodic_d1_d2(f, dx):
+    """First and second periodic central differences of ``f`` on a uniform grid of step ``dx``."""
+    fp, fm = np.roll(f, -1), np.roll(f, 1)
+    return (fp - fm) / (2.0 * dx), (fp - 2.0 * f + fm) / (dx * dx)
+
+
+def _fourier_shift(h, period, d):
+    """``h(x - d)`` of a periodic uniform-grid function (trigonometric interpolant)."""
+    H = np.fft.rfft(h)
+    m = np.arange(H.size)
+    ph = np.exp(-2j * np.pi * np.mod(m * np.mod(d / period, 1.0), 1.0))
+    if h.size % 2 == 0:
+        ph[-1] = ph[-1].real
+    return np.fft.irfft(H * ph, n=h.size)
+
+
+# --------------------------------------------------------------------------- the case
+@dataclass(frozen=True)
+class EvolutionCase:
+    """The unworn state over one revolution (SI) that the evolution starts from.
+
+    ``theta`` uniform over one revolution (endpoint excluded); lift ``s`` (m) and its cam-angle
+    derivatives ``s1`` (m/rad), ``s2`` (m/rad^2); pressure angle ``phi`` (rad); cam surface
+    radius of curvature ``rho`` (m, signed, ``inf`` flat); ``slip`` on the same angles;
+    ``dynamics`` a :class:`~femcam.loads.FollowerDynamics`; roller radius ``Rr`` (m); face width
+    ``length`` (m); ``cam``/``roller`` materials; wear coefficient ``k`` (m^3/(N m)).
+    """
+
+    theta: np.ndarray
+    s: np.ndarray
+    s1: np.ndarray
+    s2: np.ndarray
+    phi: np.ndarray
+    rho: np.ndarray
+    slip: SlipResult
+    dynamics: object
+    omega: float
+    Rr: float
+    length: float
+    cam: object
+    roller: object
+    k: float
+    name: str = ""
+
+
+def evolution_case(scene, theta, *, k: float | None = None) -> EvolutionCase:
+    """The :class:`EvolutionCase` of a roller-follower scene at angles ``theta`` (rad).
+
+    Slip from the scene's ``[wear]`` table (as ``femcam wear map``); ``k`` (m^3/(N m)) defaults
+    to the scene's wear coefficient (:func:`~femcam.wear.options.wear_coefficient_info`).
+    Other followers raise :class:`~femcam.errors.InputError`.
+    """
+    from .options import wear_coefficient_info, wear_options
+    from .slip import follower_slip
+
+    kind = type(scene.follower).__name__
+    if kind != "RollerFollower":
+        raise vd.fail("follower type", getattr(scene.follower, "kind", kind), "",
+                      "profile evolution is implemented for roller followers only (a radiused "
+                      "knife-edge tip wears to a conformal flat that Hertz does not describe; a "
+                      "flat face is not modelled); run without --evolve-blocks")
+    opts = wear_options(scene)
+    if k is None:
+        k = wear_coefficient_info(scene)[0]
+    k = vd.nonnegative("k", k, "m^3/(N m)")
+    st = scene.analyse(theta)
+    Fc = np.clip(st.Fc, 0.0, None)
+    slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, omega=scene.omega, Fc=Fc,
+                         roller_model=opts.get("roller_model", "srr"), srr=opts.get("srr", 0.02),
+                         mu=scene.mu or 0.1, J=opts.get("J_kg_m2"), T_drag=opts.get("T_drag_N_m", 0.0))
+    return EvolutionCase(theta=np.asarray(st.theta, float), s=st.s, s1=st.s1, s2=st.s2, phi=st.phi,
+                         rho=st.rho, slip=slip, dynamics=scene.dynamics, omega=scene.omega,
+                         Rr=scene.follower.Rr, length=scene.length, cam=scene.cam, roller=scene.roller,
+                         k=k, name=scene.name)
+
+
+# --------------------------------------------------------------------------- result
+@dataclass(frozen=True)
+class EvolutionResult:
+    """Wear after ``cycles`` revolutions evolved in ``blocks`` blocks of ``block`` revolutions.
+
+    ``x_cam``/``depth_cam`` (m, total) on the cam arc grid of :mod:`.map`; ``depth_linear`` the
+    non-evolving map's ``cycles x`` depth per revolution (the first block's map).
+    ``x_follower``/``depth_follower`` the roller depth (m, total, drift included) and
+    ``depth_follower_linear`` the map's. Per block (rows): ``Fc_blocks`` (N), ``a_blocks`` (m),
+    ``p0_blocks`` (Pa), ``rho_blocks`` (worn cam radius at the contact, m). ``volume_cam`` =
+    ``l int h dx`` (m^3); ``volume_archard`` = ``sum_b dN k sum_j F v_slip dt`` over the blocks
+    with the evolving force (m^3). ``a_over_R_max``: largest Hertz ``a/min(|rho_w|, Rr)``.
+    """
+
+    cycles: float
+    block: float
+    blocks: int
+    theta: np.ndarray
+    x_cam: np.ndarray
+    depth_cam: np.ndarray
+    depth_linear: np.ndarray
+    x_follower: np.ndarray
+    depth_follower: np.ndarray
+    depth_follower_linear: np.ndarray
+    xi_cam: np.ndarray
+    Fc_blocks: np.ndarray
+    a_blocks: np.ndarray
+    p0_blocks: np.ndarray
+    rho_blocks: np.ndarray
+    volume_cam: float
+    volume_archard: float
+    a_over_R_max: float
+    maps: list = field(default_factory=list, repr=False)
+
+    @property
+    def max_depth(self) -> float:
+        return float(np.max(self.depth_cam))
+
+    @property
+    def max_depth_linear(self) -> float:
+        return float(np.max(self.depth_linear))
+
+    @property
+    def depth_at_theta(self) -> np.ndarray:
+        """Evolved cam depth at the contact of each cam angle (m)."""
+        return np.interp(self.xi_cam, self.x_cam, self.depth_cam, period=self.x_cam[-1] + self.x_cam[1])
+
+
+def _check_blocks(cycles, block):
+    cycles = vd.positive("cycles", cycles, "revolutions")
+    block = vd.positive("block", block, "revolutions")
+    if block > cycles * (1 + 1e-12):
+        raise vd.fail("block", block, "revolutions", f"must be <= cycles = {cycles:g} revolutions")
+    m = cycles / block
+    M = int(round(m))
+    if abs(m - M) > 1e-9 * max(1.0, m):
+        raise vd.fail("block", block, "revolutions",
+                      f"must divide cycles = {cycles:g} revolutions into a whole number of blocks "
+                      f"(cycles/block = {m:.6g})")
+    return cycles, block, M
+
+
+def evolve(case: EvolutionCase, cycles: float, block: float, *, n_grid: int | None = None) -> EvolutionResult:
+    """Evolve the cam (and roller) wear over ``cycles`` revolutions in blocks of ``block``.
+
+    Each block: worn curvature (eq. 1) and lift loss (eq. 2) from the current depths, the
+    contact force on the worn lift, Hertz ``a``, ``p0`` on the worn radii, then
+    :func:`~femcam.wear.map.wear_map` for ``block`` revolutions (explicit Euler). ``block =
+    cycles`` is the linear map. ``n_grid`` (cam and roller grid points) defaults to the first
+    block's choice in :func:`~femcam.wear.map.wear_map` and is kept for every block.
+
+    Raises :class:`~femcam.errors.InputError` for ``cycles <= 0``, ``block <= 0``,
+    ``block > cycles`` or ``cycles/block`` not a whole number, and
+    :class:`~femcam.hertz.HertzValidityError` if the worn cam becomes conformal (``1/R <= 0``).
+    """
+    from ..hertz import LineContact
+    from ..loads import contact_force
+
+    cycles, block, M = _check_blocks(cycles, block)
+    th, om, sl = case.theta, case.omega, case.slip
+    n = th.size
+    dth = 2.0 * math.pi / n
+    cphi = np.cos(case.phi)
+    rho = np.asarray(case.rho, float)
+    kappa = np.where(np.isfinite(rho), 1.0 / np.where(np.isfinite(rho) & (rho != 0), rho, np.inf), 0.0)
+    s_t = np.asarray(sl.V_cam, float) / om                 # ds/dtheta of the contact on the cam
+    if np.any(s_t <= 0):
+        raise vd.fail("slip.V_cam", float(np.min(s_t * om)), "m/s",
+                      "must be > 0 at every angle (the contact must move over the cam)")
+    s_tt = _periodic_d1_d2(s_t, dth)[0]
+    dkappa_ds = _periodic_d1_d2(kappa, dth)[0] / s_t
+    h_cam = None
+    h_fol = None
+    H_r = 0.0
+    rows = {"Fc": [], "a": [], "p0": [], "rho": []}
+    maps: list[WearMap] = []
+    vol_arch = 0.0
+    ratio = 0.0
+    lin_cam = lin_fol = None
+    for b in range(M):
+        if h_cam is None:
+            h_c = np.zeros(n)
+            kw = kappa
+        else:
+            # h at the contact of each cam angle, differentiated in theta (the map resolves the
+            # depth at the scale of the angle step, not below it: see the module text)
+            h_c = np.interp(maps[0].xi_cam, maps[0].x_cam, h_cam, period=maps[0].perimeter)
+            h_t, h_tt = _periodic_d1_d2(h_c, dth)
+            h1 = h_t / s_t
+            h2 = (h_tt - h1 * s_tt) / (s_t * s_t)
+            kw = worn_curvature(kappa, dkappa_ds, h_c, h1, h2)
+        ds_f = -(h_c + H_r) / cphi
+        d1f, d2f = _periodic_d1_d2(ds_f, dth)
+        loads = contact_force(case.dynamics, th, case.s + ds_f, om * (case.s1 + d1f),
+                              om * om * (case.s2 + d2f), case.phi)
+        Fc = np.clip(loads.Fc, 0.0, None)
+        R1 = np.where(kw != 0, 1.0 / np.where(kw != 0, kw, 1.0), np.inf)
+        import warnings
+
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")          # validity is reported as a_over_R_max
+            hc = LineContact(F=Fc, length=case.length, R1=R1, R2=case.Rr - H_r, cam=case.cam,
+                             roller=case.roller)
+        a, p0 = np.asarray(hc.a, float), np.asarray(hc.p0, float)
+        on = Fc > 0
+        if np.any(on):
+            rmin = np.minimum(np.abs(R1), case.Rr - H_r)
+            ratio = max(ratio, float(np.max(a[on] / rmin[on])))
+        wm = wear_map({"theta": th, "a": a, "p0": p0, "Fc": Fc}, sl, k=case.k, length=case.length,
+                      cycles=block, pressure="hertz", n_grid=n_grid)
+        if n_grid is None:
+            n_grid = wm.x_cam.size
+        maps.append(wm)
+        for key, val in (("Fc", Fc), ("a", a), ("p0", p0), ("rho", R1)):
+            rows[key].append(val)
+        vol_arch += block * wm.volume_archard
+        add_c = block * wm.depth_cam
+        add_f = wm.depth_follower_cycles
+        if wm.follower_period is not None and b > 0:
+            add_f = _fourier_shift(add_f, wm.follower_period, b * block * wm.follower_drift)
+        h_cam = add_c if h_cam is None else h_cam + add_c
+        h_fol = add_f if h_fol is None else h_fol + add_f
+        H_r = float(np.mean(h_fol)) if wm.follower_period is not None else 0.0
+        if b == 0:
+            lin_cam = cycles * wm.depth_cam
+            lin_fol = (drift_sum(wm.depth_follower, wm.follower_period, wm.follower_drift, cycles)
+                       if wm.follower_period is not None else cycles * wm.depth_follower)
+    wm0 = maps[0]
+    dx = wm0.x_cam[1] - wm0.x_cam[0]
+    return EvolutionResult(
+        cycles=cycles, block=block, blocks=M, theta=th, x_cam=wm0.x_cam, depth_cam=h_cam,
+        depth_linear=lin_cam, x_follower=wm0.x_follower, depth_follower=h_fol,
+        depth_follower_linear=lin_fol, xi_cam=wm0.xi_cam,
+        Fc_blocks=np.array(rows["Fc"]), a_blocks=np.array(rows["a"]), p0_blocks=np.array(rows["p0"]),
+        rho_blocks=np.array(rows["rho"]), volume_cam=float(case.length * np.sum(h_cam) * dx),
+        volume_archard=float(vol_arch), a_over_R_max=ratio, maps=maps)
+
+
+# --------------------------------------------------------------------------- convergence
+@dataclass(frozen=True)
+class ConvergenceTable:
+    """Evolutions with ``blocks[i]`` blocks (block size ``cycles/blocks[i]``).
+
+    ``max_depth`` (m) per row; ``diff_finest`` = max over the cam of ``|h_i - h_finest|`` (m);
+    ``diff_next`` = max ``|h_i - h_{i+1}|`` (m, NaN on the last row); ``order`` =
+    ``log2(diff_next[i-1]/diff_next[i])`` for halvings (NaN where undefined): 1 for explicit
+    Euler. ``linear_max_depth``: the non-evolving map's maximum (m).
+    """
+
+    cycles: float
+    blocks: list
+    results: list
+    max_depth: np.ndarray
+    diff_finest: np.ndarray
+    diff_next: np.ndarray
+    order: np.ndarray
+    linear_max_depth: float
+
+    @property
+    def finest(self) -> EvolutionResult:
+        return self.results[-1]
+
+    def rows(self):
+        """``(header, rows)`` for CSV (SI to µm/nm as named in the header)."""
+        head = ["blocks", "block_revolutions", "max_depth_um", "diff_to_finest_max_nm", "diff_to_next_max_nm",
+                "observed_order", "change_vs_linear_max_depth"]
+        out = []
+        for i, nb in enumerate(self.blocks):
+            out.append([nb, f"{self.cycles / nb:.8g}", f"{self.max_depth[i] * 1e6:.10g}",
+                        f"{self.diff_finest[i] * 1e9:.6g}", f"{self.diff_next[i] * 1e9:.6g}",
+                        f"{self.order[i]:.4g}", f"{self.max_depth[i] / self.linear_max_depth - 1:.6e}"])
+        return head, out
+
+
+def block_counts(max_blocks: int) -> list:
+    """1, 2, 4, ... (powers of two <= ``max_blocks``), then ``max_blocks`` if it is not one."""
+    max_blocks = vd.integer("blocks", max_blocks, 1, "(number of blocks)")
+    out, nb = [], 1
+    while nb <= max_blocks:
+        out.append(nb)
+        nb *= 2
+    if out[-1] != max_blocks:
+        out.append(max_blocks)
+    return out
+
+
+def convergence_table(case: EvolutionCase, cycles: float, max_blocks: int, *,
+                      n_grid: int | None = None) -> ConvergenceTable:
+    """Evolve with 1, 2, 4, ... blocks up to ``max_blocks`` (see :func:`block_counts`) and tabulate
+    the convergence in the block size (max-norm differences over the cam depth)."""
+    cycles = vd.positive("cycles", cycles, "revolutions")
+    counts = block_counts(max_blocks)
+    if n_grid is None:
+        n_grid = evolve(case, cycles, cycles).x_cam.size
+    res = [evolve(case, cycles, cycles / nb, n_grid=n_grid) for nb in counts]
+    H = [r.depth_cam for r in res]
+    md = np.array([r.max_depth for r in res])
+    dfin = np.array([float(np.max(np.abs(h - H[-1]))) for h in H])
+    dnext = np.array([float(np.max(np.abs(H[i] - H[i + 1]))) for i in range(len(H) - 1)] + [np.nan])
+    order = np.full(len(H), np.nan)
+    for i in range(1, len(H) - 1):
+        halving = counts[i] == 2 * counts[i - 1] and counts[i + 1] == 2 * counts[i]
+        if halving and dnext[i] > 0 and dnext[i - 1] > 0:
+            order[i] = math.log2(dnext[i - 1] / dnext[i])
+    return ConvergenceTable(cycles=cycles, blocks=counts, results=res, max_depth=md, diff_finest=dfin,
+                            diff_next=dnext, order=order, linear_max_depth=res[0].max_depth_linear)
+
+
+__all__ = ["EvolutionCase", "EvolutionResult", "ConvergenceTable", "evolution_case", "evolve",
+           "convergence_table", "block_counts", "worn_curvature"]
