@@ -510,8 +510,11 @@ def test_fe_resume_reuses_the_stored_family_plan(scene, tmp_path):
     again = sweep(scene, angles=th, out=tmp_path, chunk_size=2, resume=True)
     assert (again.n_chunks_computed, again.n_chunks_resumed) == (1, 1)
     assert again.families[0]["check_time"] == 12345.0
-    for k in ("p0_fe", "vm_max", "family", "wear_depth"):
-        np.testing.assert_array_equal(again[k], full[k])
+    np.testing.assert_array_equal(again["family"], full["family"])
+    # the same models: equal to rounding (another model would differ by ~1e-6, MESH_NOISE);
+    # bit-identity of a re-solve is not guaranteed (SIMD reduction order depends on alignment)
+    for k in ("p0_fe", "vm_max", "wear_depth"):
+        np.testing.assert_allclose(again[k], full[k], rtol=1e-12, atol=0, err_msg=k)
 
 
 def test_resume_in_process_reuses_chunks(scene, tmp_path):

@@ -98,12 +98,14 @@ def _kill_after(proc, chunks: Path, n: int) -> None:
     t0 = time.monotonic()
     try:
         while len(list(chunks.glob("chunk_*.npz"))) < n:
-            assert proc.poll() is None, proc.communicate()
+            assert proc.poll() is None, proc.communicate(timeout=60)
             assert time.monotonic() - t0 < 120, "no chunks appeared"
             time.sleep(0.02)
         proc.send_signal(signal.SIGKILL)
     finally:
-        proc.wait()
+        if proc.poll() is None:  # an assertion fired: never wait on a live (maybe stuck) child
+            proc.kill()
+        proc.communicate(timeout=60)  # reap it and drain/close its pipes
     assert proc.returncode == -signal.SIGKILL
 
 
@@ -134,7 +136,10 @@ def test_killed_subprocess_resumes_in_process(tmp_path):
 def test_killed_subprocess_resumes_to_identical_results(tmp_path):
     out = tmp_path / "run"
     env = dict(os.environ, FEMCAM_SWEEP_TEST_DELAY_S="0.3")  # slow each chunk down a little
-    proc = subprocess.Popen(_cli(out), env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    # --workers 1: "auto" picks a process pool on slow machines (timing-dependent), and a
+    # SIGKILLed parent leaves its forked pool workers orphaned, blocked for ever
+    proc = subprocess.Popen(_cli(out, "--workers", "1"), env=env, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE)
     chunks = out / "chunks"
     _kill_after(proc, chunks, 2)
     assert (chunks / "plan.json").exists()  # the verified families, reused by the resume
@@ -142,7 +147,8 @@ def test_killed_subprocess_resumes_to_identical_results(tmp_path):
     assert 2 <= n_done < 6, "the sweep should have been killed midway"
     assert not (out / "sweep.csv").exists()
 
-    res = subprocess.run(_cli(out, "--resume"), capture_output=True, text=True, timeout=300)
+    res = subprocess.run(_cli(out, "--workers", "1", "--resume"), capture_output=True, text=True,
+                         timeout=300)
     assert res.returncode == 0, res.stderr
     assert f"({n_done} chunks resumed, {6 - n_done} computed)" in res.stdout
 

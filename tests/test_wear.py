@@ -10,6 +10,9 @@ from femcam.errors import InputError
 from femcam.wear import map as wmap
 from femcam.wear import slip as wslip
 
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+STUDY = str(EXAMPLES / "seed002_study_model.toml")
+
 N = 720
 TH = np.linspace(0.0, 2 * np.pi, N, endpoint=False)
 
@@ -158,7 +161,7 @@ def test_scene_map_conservation_and_closed_form():
     hz = pytest.importorskip("femcam.hertz")
     from scipy.integrate import simpson
 
-    sc = sc_mod.load_scene("examples/seed002_study_model.toml")
+    sc = sc_mod.load_scene(STUDY)
     st = sc.analyse(TH)
     hc = hz.LineContact(F=np.clip(st.Fc, 0, None), length=sc.length, R1=st.rho, R2=sc.follower.Rr,
                         cam=sc.cam, roller=sc.roller)
@@ -210,7 +213,7 @@ def test_cli_seed000_and_map(tmp_path, capsys):
     assert "11.03" in out and "3.536" in out          # hand-derived S_cyc (mm), v_rms,SHM (mm/s)
     assert (tmp_path / "t.csv").read_text().count("\n") == 5
     pytest.importorskip("femcam.scene")
-    rc = main(["wear", "map", "examples/seed002_study_model.toml", "--out", str(tmp_path), "--step-deg", "1",
+    rc = main(["wear", "map", STUDY, "--out", str(tmp_path), "--step-deg", "1",
                "--cycles", "1000", "--no-plots"])
     assert rc == 0
     rows = (tmp_path / "wear_scene.csv").read_text().splitlines()
@@ -298,7 +301,7 @@ def test_drift_sum_against_explicit_shifts():
 def test_scene_roller_wear_drift_and_mean():
     sc_mod = pytest.importorskip("femcam.scene")
     hz = pytest.importorskip("femcam.hertz")
-    sc = sc_mod.load_scene("examples/seed002_study_model.toml")
+    sc = sc_mod.load_scene(STUDY)
     st = sc.analyse(TH)
     hc = hz.LineContact(F=np.clip(st.Fc, 0, None), length=sc.length, R1=st.rho, R2=sc.follower.Rr,
                         cam=sc.cam, roller=sc.roller)
@@ -350,7 +353,7 @@ def fe_study():
     """A coarse real FE sweep (24 angles) of the seed 002 study model and its slip (SRR 2 %)."""
     sc_mod = pytest.importorskip("femcam.scene")
     sw = pytest.importorskip("femcam.sweep")
-    sc = sc_mod.load_scene("examples/seed002_study_model.toml")
+    sc = sc_mod.load_scene(STUDY)
     th = np.radians(np.arange(0.0, 360.0, 15.0))
     res = sw.sweep(sc, angles=th, method="fe", progress=False)
     st = sc.analyse(th)
@@ -426,7 +429,7 @@ def test_law_comparison_explained_by_load_and_sliding():
     profile polygon, independently of femcam.wear."""
     sc_mod = pytest.importorskip("femcam.scene")
     hz = pytest.importorskip("femcam.hertz")
-    base = sc_mod.load_scene("examples/seed002_study_model.toml")
+    base = sc_mod.load_scene(STUDY)
     k, srr = 5e-18, 0.02
     g = 2 * srr / (2 + srr)
     got, ref_max, ref_vol = {}, {}, {}
@@ -479,7 +482,7 @@ def test_knife_edge_wear_map_needs_tip_radius():
     sc_mod = pytest.importorskip("femcam.scene")
     from femcam.cli.wear import scene_wear
 
-    sc = sc_mod.load_scene("examples/seed003_knife_edge.toml")
+    sc = sc_mod.load_scene(str(EXAMPLES / "seed003_knife_edge.toml"))
     with pytest.raises(InputError, match="tip_radius_mm"):
         scene_wear(sc, TH)
     rt = 1e-3
@@ -510,7 +513,7 @@ def test_wear_table_keys_and_k_source():
     from femcam.errors import SceneError
     from femcam.wear.options import wear_coefficient_info, wear_options
 
-    sc = sc_mod.load_scene("examples/seed002_study_model.toml")
+    sc = sc_mod.load_scene(STUDY)
     with pytest.raises(SceneError, match=r"wear.k = 1e-17: unknown key; did you mean 'k_mm3_per_N_m' in "
                                          r"mm\^3/\(N m\)\?"):
         wear_options(dataclasses.replace(sc, wear={"k": 1e-17}))
@@ -537,13 +540,13 @@ def test_wear_table_keys_and_k_source():
 def test_cli_map_checks_wear_keys_and_knife_edge(tmp_path, capsys):
     from femcam.cli import main
 
-    text = Path("examples/seed002_study_model.toml").read_text()
+    text = Path(STUDY).read_text()
     bad = tmp_path / "typo.toml"
     bad.write_text(text + "\n[wear]\nk = 1e-17\n")
     assert main(["wear", "map", str(bad), "--out", str(tmp_path / "o"), "--no-plots"]) == 1
     err = capsys.readouterr().err
     assert "wear.k = 1e-17: unknown key; did you mean 'k_mm3_per_N_m' in mm^3/(N m)?" in err
-    knife = "examples/seed003_knife_edge.toml"
+    knife = str(EXAMPLES / "seed003_knife_edge.toml")
     assert main(["wear", "map", knife, "--out", str(tmp_path / "k"), "--no-plots"]) == 1
     assert "tip_radius_mm" in capsys.readouterr().err
     assert main(["wear", "map", knife, "--out", str(tmp_path / "k"), "--no-plots", "--step-deg", "2",
@@ -562,7 +565,7 @@ def test_cli_map_fe_source(tmp_path):
     vals = {}
     for src in ("fe", "hertz"):
         out = tmp_path / src
-        assert main(["wear", "map", "examples/seed002_study_model.toml", "--out", str(out), "--source", src,
+        assert main(["wear", "map", STUDY, "--out", str(out), "--source", src,
                      "--step-deg", "10", "--cycles", "1000", "--no-plots"]) == 0
         summ = (out / "wear_summary.csv").read_text().splitlines()
         vals[src] = dict(zip(summ[1].split(","), summ[2].split(","), strict=True))

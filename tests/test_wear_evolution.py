@@ -1,6 +1,7 @@
 """Profile evolution in blocks of cycles (femcam.wear.evolution)."""
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -9,13 +10,16 @@ from femcam.errors import InputError
 from femcam.wear import evolution as ev
 from femcam.wear import slip as wslip
 
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+STUDY = str(EXAMPLES / "seed002_study_model.toml")
+
 TH2 = np.radians(np.arange(0.0, 360.0, 2.0))   # 180 angles: fast
 
 
 @pytest.fixture(scope="module")
 def seed002():
     sc_mod = pytest.importorskip("femcam.scene")
-    return sc_mod.load_scene("examples/seed002_study_model.toml")
+    return sc_mod.load_scene(STUDY)
 
 
 # --------------------------------------------------------------------------- a stiff-spring ring
@@ -172,7 +176,7 @@ def test_bad_block_inputs(cycles, block, text):
 
 def test_knife_edge_and_bad_block_count_refused():
     sc_mod = pytest.importorskip("femcam.scene")
-    sc = sc_mod.load_scene("examples/seed003_knife_edge.toml")
+    sc = sc_mod.load_scene(str(EXAMPLES / "seed003_knife_edge.toml"))
     with pytest.raises(InputError, match="follower type = 'knife_edge': profile evolution is implemented"):
         ev.evolution_case(sc, TH2)
     with pytest.raises(InputError, match=r"blocks = 0 \(number of blocks\): must be an integer >= 1"):
@@ -182,7 +186,7 @@ def test_knife_edge_and_bad_block_count_refused():
 def test_cli_evolve_blocks(tmp_path, capsys):
     from femcam.cli import main
 
-    rc = main(["wear", "map", "examples/seed002_study_model.toml", "--out", str(tmp_path), "--step-deg", "3",
+    rc = main(["wear", "map", STUDY, "--out", str(tmp_path), "--step-deg", "3",
                "--evolve-blocks", "4"])
     assert rc == 0
     rows = (tmp_path / "wear_scene_evolution.csv").read_text().splitlines()
@@ -191,6 +195,6 @@ def test_cli_evolve_blocks(tmp_path, capsys):
     assert [r.split(",")[0] for r in rows[2:]] == ["1", "2", "4"]
     assert (tmp_path / "wear_scene_evolution.png").stat().st_size > 1000
     assert "evolution" in capsys.readouterr().out
-    assert main(["wear", "map", "examples/seed002_study_model.toml", "--out", str(tmp_path),
+    assert main(["wear", "map", STUDY, "--out", str(tmp_path),
                  "--evolve-blocks", "0"]) == 1
     assert "--evolve-blocks = 0 (number of blocks): must be an integer >= 1" in capsys.readouterr().err
