@@ -17,7 +17,9 @@ per process, not once per chunk.
 from __future__ import annotations
 
 import multiprocessing
+import os
 import sys
+import threading
 import time
 from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -41,8 +43,24 @@ def run_tasks(fn: Callable, tasks: Iterable, *, workers: int = 1, scheduler=None
         yield from _run_pool(fn, tasks, workers)
 
 
-def _worker_init():
+def _worker_init(parent_pid: int | None = None):
     limit_blas_threads(1)
+    if parent_pid is not None:
+        threading.Thread(target=_exit_with_parent, args=(parent_pid,), daemon=True,
+                         name="femcam-parent-watch").start()
+
+
+def _exit_with_parent(parent_pid: int, period: float = 0.5) -> None:
+    """End this worker when the sweep process that started it is gone.
+
+    A pool worker blocks on its task queue, whose pipe it holds open itself, so it never sees
+    an EOF when the parent is killed (SIGKILL, OOM killer, a closed terminal): without this
+    watch it would stay orphaned for ever, holding memory and the parent's stdout. The chunks it
+    finished are already on disk (atomic writes), and ``--resume`` recomputes the rest."""
+    while True:
+        time.sleep(period)
+        if os.getppid() != parent_pid:
+            os._exit(1)
 
 
 def _run_pool(fn, tasks, workers):
@@ -50,7 +68,7 @@ def _run_pool(fn, tasks, workers):
     ctx = multiprocessing.get_context("fork" if sys.platform.startswith("linux") and "fork" in methods
                                       else "spawn")
     with ProcessPoolExecutor(max_workers=min(workers, len(tasks)), mp_context=ctx,
-                             initializer=_worker_init) as ex:
+                             initializer=_worker_init, initargs=(os.getpid(),)) as ex:
         futs = {ex.submit(fn, t): i for i, t in enumerate(tasks)}
         try:
             for f in as_completed(futs):
