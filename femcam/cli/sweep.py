@@ -24,9 +24,9 @@ def register(subparsers) -> None:
                    help="local worker processes; 1 = serial in this process; auto (default) = "
                         "processes only when the expected saving beats the pool start-up: the "
                         "model families are built and verified before the chunks run, so the "
-                        "chunks are only ~1-2 ms contact solves per angle: a 360-angle sweep "
-                        "without VTK runs serially, writing VTU files or ~1000+ angles or fine "
-                        "meshes use 2 processes")
+                        "chunks are only ~1-2 ms contact solves per angle: a sweep without VTK "
+                        "usually runs serially, while writing many VTU files pays on 2 "
+                        "processes")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="Dask scheduler address, e.g. tcp://host:8786 (needs femcam[dask])")
     p.add_argument("--resume", action="store_true",
