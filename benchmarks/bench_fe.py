@@ -59,8 +59,8 @@ def machine() -> str:
     from femcam._threads import blas_threads
 
     try:
-        cpu = next(line.split(":", 1)[1].strip() for line in open("/proc/cpuinfo")
-                   if line.startswith("model name"))
+        with open("/proc/cpuinfo") as f:
+            cpu = next(line.split(":", 1)[1].strip() for line in f if line.startswith("model name"))
     except (OSError, StopIteration):
         cpu = platform.processor() or platform.machine()
     load = " / ".join(f"{x:.2f}" for x in os.getloadavg())
@@ -157,7 +157,7 @@ def fresh_process(n=20):
 
 
 def section_orderings():
-    from femcam._threads import single_threaded_blas
+    from femcam.fe import elasticity as el  # el.single_threaded_blas: undone by --threaded-blas
     from femcam.fe.elasticity import assemble_body
     from femcam.mesh import build_contact_mesh
 
@@ -169,7 +169,7 @@ def section_orderings():
         b = assemble_body(cm.cam, STEEL, ordering=o)
         R = np.random.default_rng(0).standard_normal((b.free.size, 100))
         t = time.perf_counter()
-        with single_threaded_blas():  # as in Body.solve
+        with el.single_threaded_blas():  # as in Body.solve
             b.lu.solve(R)
         ts = time.perf_counter() - t
         print(f"| {o} | {b.n_dofs} | {b.t_factor:.2f} | {b.lu.L.nnz + b.lu.U.nnz} | {ts:.2f} |", flush=True)

@@ -64,6 +64,21 @@ def blas_threads() -> list[int]:
     return out
 
 
+def _set_threads(n: int) -> list[tuple]:
+    """Set every loaded OpenBLAS to ``n`` threads; ``[(set function, previous count), ...]``."""
+    import ctypes
+
+    changed = []
+    for get, put in _blas_libs():
+        try:
+            prev = int(get())
+            put(ctypes.c_int(int(n)))
+        except Exception:  # pragma: no cover - exotic builds
+            prev = -1
+        changed.append((put, prev))
+    return changed
+
+
 def limit_blas_threads(n: int = 1) -> list[int]:
     """Best effort: set the thread count of every loaded OpenBLAS; returns the previous counts.
 
@@ -73,16 +88,7 @@ def limit_blas_threads(n: int = 1) -> list[int]:
     depend on the executor in the last bits. Environment variables are read only when the
     library loads, so the running library is told directly (the calls threadpoolctl makes).
     """
-    import ctypes
-
-    prev = []
-    for get, put in _blas_libs():
-        try:
-            prev.append(int(get()))
-            put(ctypes.c_int(int(n)))
-        except Exception:  # pragma: no cover - exotic builds
-            prev.append(-1)
-    return prev
+    return [prev for _, prev in _set_threads(n)]
 
 
 _lock = threading.Lock()
@@ -103,15 +109,7 @@ class single_threaded_blas:  # noqa: N801 - used like a function
         global _depth, _saved
         with _lock:
             if _depth == 0:
-                import ctypes
-
-                _saved = []
-                for get, put in _blas_libs():
-                    try:
-                        _saved.append((put, int(get())))
-                        put(ctypes.c_int(1))
-                    except Exception:  # pragma: no cover - exotic builds
-                        pass
+                _saved = _set_threads(1)
             _depth += 1
         return self
 

@@ -102,7 +102,7 @@ def positive_array(name: str, value, unit: str = "") -> np.ndarray:
     """A float array (or scalar) of finite numbers, all > 0."""
     arr = finite_array(name, value, unit)
     if np.any(arr <= 0.0):
-        raise fail(name, float(arr[arr <= 0.0].flat[0]), unit, "must be > 0")
+        positive(name, float(arr[arr <= 0.0].flat[0]), unit)  # raises the scalar message
     return arr
 
 

@@ -146,13 +146,19 @@ class ContactMesh:
     def write_msh(self, path):
         """Write both bodies (final snapped/mirrored nodes, m) to a gmsh 2.2 ASCII ``.msh`` with
         the physical names ``roller_contact, cam_contact, roller_fixed, cam_fixed, roller, cam``
-        (via meshio; roller nodes follow the cam's). Returns the path."""
+        (via meshio; roller nodes follow the cam's). ``path`` must end in ``.msh``. Returns the
+        path."""
+        import os
         from pathlib import Path
 
         import meshio
 
+        if not isinstance(path, str | os.PathLike):
+            raise chk.fail("path", path, "", "must be a file path (str or os.PathLike) ending in .msh")
         path = Path(path)
-        pts, cells, phys, geom, names = [], [], [], [], {}
+        if path.suffix.lower() != ".msh":
+            raise chk.fail("path", str(path), "", "must end in .msh (gmsh 2.2 ASCII mesh)")
+        pts, cells, phys, names = [], [], [], {}
         off = 0
         for b in (self.cam, self.roller):
             pts.append(np.column_stack([b.points.T, np.zeros(b.points.shape[1])]))
@@ -161,11 +167,10 @@ class ContactMesh:
                 tag = g.tag + (0 if b is self.cam else 100)
                 cells.append(("line" if g.dim == 1 else "triangle", g.elements.T + off))
                 phys.append(np.full(g.elements.shape[1], tag))
-                geom.append(np.full(g.elements.shape[1], tag))
                 names[g.name] = np.array([tag, g.dim])
             off += b.points.shape[1]
         mesh = meshio.Mesh(np.concatenate(pts), cells,
-                           cell_data={"gmsh:physical": phys, "gmsh:geometrical": geom},
+                           cell_data={"gmsh:physical": phys, "gmsh:geometrical": phys},
                            field_data=names)
         path.parent.mkdir(parents=True, exist_ok=True)
         meshio.write(path, mesh, file_format="gmsh22", binary=False)

@@ -495,6 +495,13 @@ def min_base_radius(kind: str, program, *, phi_max: float = math.radians(30.0), 
             return -1.0
         return 1.0 - reach * float(np.max(pitch_curvature(s, s1, s2, Rp, e)))
 
+    def at_prime_radius(Rp):
+        """max |phi| (rad), smallest convex cam radius of curvature (m) and kappa_p at Rp."""
+        kap = pitch_curvature(s, s1, s2, Rp, e)
+        conv = kap > 0
+        rho_c = float(np.min(1.0 / kap[conv] - Rr)) if np.any(conv) else math.inf
+        return float(np.max(np.abs(pressure_angle(s, s1, Rp, e)))), rho_c, kap
+
     iterations = 0
     # margin(0) of a program with a base-circle point (s = s1 = s2 = 0) is 1 - Reach/Rr, i.e. 0 up
     # to round-off when rho_min = 0: that is "no constraint", not a root to polish
@@ -512,14 +519,8 @@ def min_base_radius(kind: str, program, *, phi_max: float = math.radians(30.0), 
         binding = "undercut"
     deg = math.degrees(phi_lim)
     if binding == "none":
-        Rp0 = Rr  # the limit Rb -> 0
-        if Rp0 > abs(e):
-            phi0 = float(np.max(np.abs(pressure_angle(s, s1, Rp0, e))))
-            kap0 = pitch_curvature(s, s1, s2, Rp0, e)
-            conv0 = kap0 > 0
-            rho0 = float(np.min(1.0 / kap0[conv0] - Rr)) if np.any(conv0) else math.inf
-        else:
-            phi0, rho0 = math.pi / 2, 0.0
+        # the limit Rb -> 0: prime radius Rr
+        phi0, rho0, _ = at_prime_radius(Rr) if Rr > abs(e) else (math.pi / 2, 0.0, None)
         if kind == "roller":
             why = (f"the roller radius Rr = {Rr * 1e3:g} mm alone is at least the prime radius "
                    f"{Rp_phi * 1e3:.6g} mm that phi <= {deg:g} deg needs, and no Rb > 0 undercuts "
@@ -532,11 +533,7 @@ def min_base_radius(kind: str, program, *, phi_max: float = math.radians(30.0), 
             message=f"no lower bound on Rb: {why}. Any Rb > 0 works; choose it for the shaft/hub "
             "and the contact stress (the cam's radius of curvature on the base circle equals Rb; "
             "pass rho_min to require a minimum)")
-    Rp = Rb + Rr
-    phi = pressure_angle(s, s1, Rp, e)
-    kap = pitch_curvature(s, s1, s2, Rp, e)
-    conv = kap > 0
-    rho_c = float(np.min(1.0 / kap[conv] - Rr)) if np.any(conv) else math.inf
+    phi_c, rho_c, kap = at_prime_radius(Rb + Rr)
     if binding == "undercut":
         theta_c = float(theta[int(np.argmax(kap))])
         msg = (f"undercut sets Rb: the convex cam radius of curvature must exceed rho_min = "
@@ -545,5 +542,5 @@ def min_base_radius(kind: str, program, *, phi_max: float = math.radians(30.0), 
     else:
         msg = f"pressure angle sets Rb: max |phi| = {deg:g} deg at theta = {math.degrees(theta_c):.3f} deg"
     return BaseRadiusResult(Rb=float(Rb), kind=kind, binding=binding,
-                            phi_max=float(np.max(np.abs(phi))), rho_min=rho_c,
+                            phi_max=phi_c, rho_min=rho_c,
                             theta_critical=theta_c, n_theta=n, iterations=iterations, message=msg)

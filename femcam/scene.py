@@ -29,6 +29,7 @@ import dataclasses
 import difflib
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
 
 import numpy as np
@@ -51,6 +52,12 @@ except ModuleNotFoundError:  # pragma: no cover - Python 3.10
 # --------------------------------------------------------------------------------------------
 #: angles of the dense undercut check of Scene.analyse over one revolution (0.05 deg apart)
 UNDERCUT_CHECK_N = 7200
+
+
+def _dense_theta() -> np.ndarray:
+    """The ``UNDERCUT_CHECK_N`` angles (rad) of the dense undercut check."""
+    return np.linspace(0.0, 2.0 * math.pi, UNDERCUT_CHECK_N, endpoint=False)
+
 
 _TOP = {"name": ("", None, "str", True), "description": ("", None, "str", False),
         "source": ("", None, "str", False)}
@@ -231,28 +238,43 @@ class Scene:
     def rpm(self) -> float:
         return self.omega * 60.0 / (2.0 * math.pi)
 
+    @cached_property
+    def _dense_undercut(self) -> tuple:
+        """``(flags, message)`` of the dense undercut check on :func:`_dense_theta` (``message``:
+        the :class:`~femcam.errors.UndercutError` text of :func:`~femcam.profile.cam_profile`,
+        or None). Computed once per scene (the scene is immutable), not per :meth:`analyse`
+        call (the sweep analyses chunk by chunk)."""
+        dense = _dense_theta()
+        dd = self.program.derivatives(dense)
+        try:
+            return cam_profile(self.follower, dense, dd.s, dd.s1, dd.s2).undercut, None
+        except UndercutError as exc:
+            flags = cam_profile(self.follower, dense, dd.s, dd.s1, dd.s2, allow_undercut=True).undercut
+            return flags, str(exc)
+
     def undercut_check(self, theta=None, undercut=None) -> list:
         """Undercut intervals ``[(start, end), ...]`` (rad, in [0, 2 pi)) of the whole cam.
 
         The profile is checked on a dense grid of ``UNDERCUT_CHECK_N`` angles over one
-        revolution (0.05 deg apart) merged with ``theta`` (taken mod 2 pi; ``undercut``, if
-        given, are its already computed flags), so a narrow undercut band between coarse
-        analysis angles is still found. Vectorised; about 2 ms.
+        revolution (0.05 deg apart; computed once per scene) merged with ``theta`` (taken mod
+        2 pi; ``undercut``, if given, are its already computed flags), so a narrow undercut band
+        between coarse analysis angles is still found. Vectorised.
         """
-        dense = np.linspace(0.0, 2.0 * math.pi, UNDERCUT_CHECK_N, endpoint=False)
-        dd = self.program.derivatives(dense)
-        flags = cam_profile(self.follower, dense, dd.s, dd.s1, dd.s2, allow_undercut=True).undercut
-        th, fl = dense, flags
-        if theta is not None:
-            extra = np.mod(np.ravel(np.asarray(theta, float)), 2.0 * math.pi)
-            if undercut is None:
-                de = self.program.derivatives(extra)
-                undercut = cam_profile(self.follower, extra, de.s, de.s1, de.s2,
-                                       allow_undercut=True).undercut
-            order = np.argsort(np.concatenate([dense, extra]), kind="stable")
-            th = np.concatenate([dense, extra])[order]
-            fl = np.concatenate([flags, np.ravel(undercut)])[order]
-        return bool_intervals(th, fl)
+        dense, flags = _dense_theta(), self._dense_undercut[0]
+        if theta is None:
+            return bool_intervals(dense, flags)
+        extra = np.mod(np.ravel(np.asarray(theta, float)), 2.0 * math.pi)
+        if undercut is None:
+            de = self.program.derivatives(extra)
+            undercut = cam_profile(self.follower, extra, de.s, de.s1, de.s2,
+                                   allow_undercut=True).undercut
+        undercut = np.ravel(np.asarray(undercut, bool))
+        if undercut.size != extra.size:
+            raise InputError(f"undercut has {undercut.size} flags: must have one per theta "
+                             f"({extra.size} angles)")
+        th = np.concatenate([dense, extra])
+        order = np.argsort(th, kind="stable")
+        return bool_intervals(th[order], np.concatenate([flags, undercut])[order])
 
     def analyse(self, theta, *, allow_undercut: bool = False) -> SceneState:
         """Kinematics, profile and contact force at cam angles ``theta`` (rad), vectorised.
@@ -269,18 +291,10 @@ class Scene:
         p = cam_profile(self.follower, d.theta, d.s, d.s1, d.s2, allow_undercut=allow_undercut)
         intervals = self.undercut_check(d.theta, p.undercut)
         if intervals and not allow_undercut:
-            # the analysed angles missed it: raise the standard message on the dense grid
-            dense = np.linspace(0.0, 2.0 * math.pi, UNDERCUT_CHECK_N, endpoint=False)
-            dd = self.program.derivatives(dense)
-            try:
-                cam_profile(self.follower, dense, dd.s, dd.s1, dd.s2)
-            except UndercutError as exc:
-                raise UndercutError(f"{exc} (found by the dense check on {UNDERCUT_CHECK_N} angles "
-                                    "over one revolution; the analysed angles miss it)") from None
-            raise UndercutError(  # pragma: no cover - a band narrower than the dense step
-                f"{self.follower.kind} cam profile is undercut for theta in "
-                + ", ".join(f"[{math.degrees(a_):.3f}, {math.degrees(b_):.3f}] deg"
-                            for a_, b_ in intervals))
+            # cam_profile passed on theta, so the dense grid found it (and holds the message)
+            raise UndercutError(f"{self._dense_undercut[1]} (found by the dense check on "
+                                f"{UNDERCUT_CHECK_N} angles over one revolution; the analysed "
+                                "angles miss it)")
         r = contact_force(self.dynamics, d.theta, d.s, v, a, p.phi)
         return SceneState(theta=np.asarray(d.theta, float), s=d.s, v=v, a=a, j=j, s1=d.s1, s2=d.s2,
                           phi=p.phi, rho=p.rho, Fc=r.Fc, liftoff=r.liftoff, contact_x=p.contact_x,

@@ -199,3 +199,12 @@ def test_physical_groups_and_quality(rho, tmp_path):
     finally:
         gmsh.finalize()
     assert got == {k: (g.dim, g.elements.shape[1]) for k, g in m.physical_groups.items()}
+
+
+def test_write_msh_bad_path(cm, tmp_path):
+    """write_msh names the parameter and value: a path not ending in .msh, or not a path."""
+    with pytest.raises(InputError, match=r"path = .*contact\.vtu.*must end in \.msh"):
+        cm.write_msh(tmp_path / "contact.vtu")
+    with pytest.raises(InputError, match=r"path = None: must be a file path"):
+        cm.write_msh(None)
+    assert not (tmp_path / "contact.vtu").exists()

@@ -76,7 +76,7 @@ def fresh_p0(sc, F, rho, a_over_h=10.0):
 
 def hertz_ref(F, rho, sc):
     """Johnson 1985 eq. 4.45 written out: a = sqrt(4 w R / (pi E*)), p0 = 2 w / (pi a)."""
-    E_star = 1.0 / ((1 - sc.cam.nu**2) / sc.cam.E + (1 - sc.roller.nu**2) / sc.roller.E)
+    E_star = E_star_of(sc)
     R = 1.0 / (1.0 / rho + 1.0 / sc.follower.Rr)
     w = F / sc.length
     a = np.sqrt(4 * w * R / (np.pi * E_star))
@@ -111,6 +111,8 @@ def test_bad_options_are_input_errors(scene):
         sweep(scene, angles=[0.0], tolerance=1e-5)
     with pytest.raises(InputError, match="workers"):
         sweep(scene, angles=[0.0], workers="many", method="hertz")
+    with pytest.raises(InputError, match=r"workers = 2.5 processes: must be an integer >= 1"):
+        sweep(scene, angles=[0.0], workers=2.5, method="hertz")
 
 
 def test_auto_workers_uses_processes_only_when_they_pay():
@@ -371,6 +373,23 @@ def test_wear_column_is_archard_per_pass_closed_form(scene):
     V_cam = sc.omega * np.hypot(Rb + Rr + st.s, st.s1) * st.rho / (st.rho + Rr)
     np.testing.assert_allclose(r["V_cam"], V_cam, rtol=1e-9)
     np.testing.assert_allclose(r["v_slip"], srr * 2 * V_cam / (2 + srr), rtol=1e-9)
+
+
+def test_wear_slip_uses_every_wear_key_like_the_wear_map(scene):
+    """The sweep's slip comes from the scene's checked [wear] table, all keys (here the
+    inertia model's bearing drag T_drag_N_m), as femcam.wear.slip.roller_inertia gives it."""
+    from femcam.wear.slip import roller_inertia
+
+    sc = dataclasses.replace(scene, wear={"roller_model": "inertia", "J_kg_m2": 5e-3,
+                                          "T_drag_N_m": 0.5})
+    th = np.radians(np.arange(0.0, 360.0, 1.0))
+    r = sweep(sc, angles=th, method="hertz")
+    st = sc.analyse(th)
+    f = sc.follower
+    ref = roller_inertia(th, st.s, st.s1, st.s2, np.clip(st.Fc, 0.0, None), Rb=f.Rb, Rr=f.Rr,
+                         omega=sc.omega, mu=sc.mu, J=5e-3, T_drag=0.5, e=f.e)
+    np.testing.assert_allclose(r["v_slip"], ref.v_slip, rtol=1e-12, atol=0)
+    assert np.max(ref.v_slip) > 0
 
 
 def _peak_p0_from_primitives(sc):

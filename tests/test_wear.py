@@ -156,16 +156,22 @@ def test_zero_sliding_and_no_contact_give_zero_wear():
     assert np.all(z2.depth_cam == 0)
 
 
-def test_scene_map_conservation_and_closed_form():
+def _study_hertz(srr):
+    """The seed 002 study model at ``TH``: (scene, state, Hertz line contact, slip at ``srr``)."""
     sc_mod = pytest.importorskip("femcam.scene")
     hz = pytest.importorskip("femcam.hertz")
-    from scipy.integrate import simpson
-
     sc = sc_mod.load_scene(STUDY)
     st = sc.analyse(TH)
     hc = hz.LineContact(F=np.clip(st.Fc, 0, None), length=sc.length, R1=st.rho, R2=sc.follower.Rr,
                         cam=sc.cam, roller=sc.roller)
-    slip = wslip.follower_slip(sc.follower, TH, st.s, st.s1, st.s2, omega=sc.omega, srr=0.05)
+    slip = wslip.follower_slip(sc.follower, TH, st.s, st.s1, st.s2, omega=sc.omega, srr=srr)
+    return sc, st, hc, slip
+
+
+def test_scene_map_conservation_and_closed_form():
+    from scipy.integrate import simpson
+
+    sc, st, hc, slip = _study_hertz(0.05)
     k = 5e-18
     wm = wmap.wear_map({"theta": TH, "a": hc.a, "p0": hc.p0, "Fc": st.Fc}, slip, k=k, length=sc.length)
     # independent Archard total: k * int Fc v_slip dt (Simpson on the periodic angle grid)
@@ -299,14 +305,9 @@ def test_drift_sum_against_explicit_shifts():
 
 
 def test_scene_roller_wear_drift_and_mean():
-    sc_mod = pytest.importorskip("femcam.scene")
-    hz = pytest.importorskip("femcam.hertz")
-    sc = sc_mod.load_scene(STUDY)
-    st = sc.analyse(TH)
-    hc = hz.LineContact(F=np.clip(st.Fc, 0, None), length=sc.length, R1=st.rho, R2=sc.follower.Rr,
-                        cam=sc.cam, roller=sc.roller)
-    srr, k, Rr = 0.02, 5e-18, sc.follower.Rr
-    slip = wslip.follower_slip(sc.follower, TH, st.s, st.s1, st.s2, omega=sc.omega, srr=srr)
+    srr, k = 0.02, 5e-18
+    sc, st, hc, slip = _study_hertz(srr)
+    Rr = sc.follower.Rr
     wm = wmap.wear_map({"theta": TH, "a": hc.a, "p0": hc.p0, "Fc": st.Fc}, slip, k=k, length=sc.length,
                        cycles=1e6)
     # drift: the roller surface runs (2 - SRR)/(2 + SRR) x the cam perimeter per revolution;
@@ -476,6 +477,13 @@ def test_radiused_tip_slip_is_relative_velocity():
     r0 = wslip.radiused_tip(TH, d.s, d.s1, d.s2, Rb=Rb, r_tip=1e-9, omega=w, e=e)
     k0 = wslip.knife_edge(TH, d.s, d.s1, Rb=Rb, omega=w, e=e)
     np.testing.assert_allclose(r0.v_slip, k0.v_slip, rtol=1e-6)
+
+
+def test_tip_radius_refused_for_a_roller():
+    prof = pytest.importorskip("femcam.profile")
+    z = np.zeros(N)
+    with pytest.raises(InputError, match=r"tip_radius = 0.001 m: applies to knife-edge followers only"):
+        wslip.follower_slip(prof.RollerFollower(Rb=0.02, Rr=0.01), TH, z, z, z, omega=10.0, tip_radius=1e-3)
 
 
 def test_knife_edge_wear_map_needs_tip_radius():

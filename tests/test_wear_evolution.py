@@ -198,3 +198,15 @@ def test_cli_evolve_blocks(tmp_path, capsys):
     assert main(["wear", "map", STUDY, "--out", str(tmp_path),
                  "--evolve-blocks", "0"]) == 1
     assert "--evolve-blocks = 0 (number of blocks): must be an integer >= 1" in capsys.readouterr().err
+
+
+def test_bad_grid_and_cli_source_refused(tmp_path, capsys):
+    with pytest.raises(InputError, match=r"n_grid = 0 \(grid points\): must be an integer >= 2"):
+        ev.evolve(_ring(1e-12), 1000.0, 100.0, n_grid=0)
+    from femcam.cli import main
+
+    # refused before any map is computed or written
+    assert main(["wear", "map", STUDY, "--out", str(tmp_path / "o"), "--source", "fe",
+                 "--evolve-blocks", "2"]) == 1
+    assert "--source = fe: --evolve-blocks uses Hertz pressure" in capsys.readouterr().err
+    assert not (tmp_path / "o").exists()

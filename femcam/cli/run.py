@@ -183,7 +183,7 @@ def _run(args) -> int:
     print("Summary:")
     for ln in summ:
         print("  " + ln)
-    if st.profile.undercut.any() or _undercut_intervals(st):
+    if _undercut_intervals(st):  # includes the analysed angles' own flags
         print("WARNING: the profile is undercut (see 'undercut' above); rho there is not realisable",
               file=sys.stderr)
 

@@ -58,17 +58,11 @@ def _check_args(args) -> None:
     from .. import _validate as V  # noqa: N812
     from ..sweep.families import TOLERANCE_FLOOR
 
-    def number(flag, value, unit):
-        try:
-            return V.number(flag, value, unit)
-        except Exception:
-            raise V.fail(flag, value, unit, "must be a finite number") from None
-
-    h = number("--mesh-size", args.mesh_size, "(elements per contact half-width, a/h)")
+    h = V.number("--mesh-size", args.mesh_size, "(elements per contact half-width, a/h)")
     if not 2.0 <= h <= 400.0:
         raise V.fail("--mesh-size", args.mesh_size, "(elements per contact half-width, a/h)",
                      "must be in [2, 400]; 10 (default) keeps p0 within 0.3 % of Hertz")
-    tol = number("--tolerance", args.tolerance, "(relative p0 reuse error)")
+    tol = V.number("--tolerance", args.tolerance, "(relative p0 reuse error)")
     if not TOLERANCE_FLOOR <= tol <= 0.5:
         raise V.fail("--tolerance", args.tolerance, "(relative p0 reuse error)",
                      f"must be in [{TOLERANCE_FLOOR:g}, 0.5]; below {TOLERANCE_FLOOR:g} nearly every "

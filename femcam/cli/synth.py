@@ -77,13 +77,10 @@ def _base_radius(value, Rb_default, program, default_source):
         return br.Rb, (f"auto: min_base_radius, exact max phi = {AUTO_PHI_MAX_DEG:g} deg at "
                        f"theta = {math.degrees(br.theta_critical):.2f} deg")
     try:
-        rb_mm = float(value)
-    except ValueError:
+        return V.positive("--base-radius-mm", value, "mm") * 1e-3, "given"
+    except InputError:
         raise V.fail("--base-radius-mm", value, "mm",
                      "must be 'auto' or a finite number > 0") from None
-    if not math.isfinite(rb_mm) or rb_mm <= 0.0:
-        raise V.fail("--base-radius-mm", value, "mm", "must be 'auto' or a finite number > 0")
-    return rb_mm * 1e-3, "given"
 
 
 def _residual_tail(history, n=N_RESIDUALS_SHOWN) -> str:
@@ -103,6 +100,7 @@ def run(args) -> int:
     name, program, Rb = _case(args)
     Rb, rb_source = _base_radius(args.base_radius_mm, Rb, program,
                                  "seed 003 case" if args.case else "scene")
+    V.integer("--max-iter", args.max_iter, 1, "iterations")
     opt = SynthesisOptions(n_elements=args.elements, k=args.k, mu=args.mu, max_iter=args.max_iter)
     try:
         res = synthesize_knife_edge(program, Rb=Rb, options=opt)

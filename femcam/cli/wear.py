@@ -121,7 +121,7 @@ def scene_wear(scene, theta, *, source="hertz", cycles=1e6, tip_radius=None):
     ``a_fe``/``p0_fe``; angles whose FE solve failed are skipped with a warning.
     """
     from ..wear.map import wear_map
-    from ..wear.options import wear_coefficient_info, wear_options
+    from ..wear.options import slip_kwargs, wear_coefficient_info, wear_options
     from ..wear.slip import follower_slip
 
     opts = wear_options(scene)
@@ -146,9 +146,7 @@ def scene_wear(scene, theta, *, source="hertz", cycles=1e6, tip_radius=None):
         hc = LineContact(F=Fc, length=sc.length, R1=st.rho, R2=R2, cam=sc.cam, roller=sc.roller)
         table = {"theta": theta, "a": hc.a, "p0": hc.p0, "Fc": Fc}
         pressure = "hertz"
-    slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, omega=scene.omega, Fc=Fc,
-                         roller_model=opts.get("roller_model", "srr"), srr=opts.get("srr", 0.02),
-                         mu=scene.mu or 0.1, J=opts.get("J_kg_m2"), T_drag=opts.get("T_drag_N_m", 0.0),
+    slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **slip_kwargs(scene, opts),
                          tip_radius=tip_radius if sc is not scene else None)
     k, _where = wear_coefficient_info(scene)
     wm = wear_map(table, slip, k=k, length=scene.length, cycles=cycles, pressure=pressure)
@@ -185,6 +183,8 @@ def _map(args) -> int:
     if args.evolve_blocks is not None and args.evolve_blocks < 1:
         raise InputError(f"--evolve-blocks = {args.evolve_blocks} (number of blocks): "
                          "must be an integer >= 1")
+    if args.evolve_blocks is not None and args.source != "hertz":
+        raise InputError(f"--source = {args.source}: --evolve-blocks uses Hertz pressure (--source hertz)")
     theta = np.radians(np.arange(0.0, 360.0, step))
     laws = [x.strip() for x in args.laws.split(",")] if args.laws else [None]
     k, k_where = wear_coefficient_info(scene)
@@ -228,10 +228,7 @@ def _map(args) -> int:
             w = csv.writer(fh)
             w.writerow([col, "depth_per_rev_nm", f"depth_{cycles:g}_cycles_um",
                         f"depth_{cycles:g}_cycles_no_drift_um"])
-            tot = wm.depth_follower_cycles
-            if tot is None:
-                tot = cycles * wm.depth_follower
-            for x, h, hN in zip(wm.x_follower, wm.depth_follower, tot, strict=True):
+            for x, h, hN in zip(wm.x_follower, wm.depth_follower, wm.depth_follower_total, strict=True):
                 w.writerow([f"{x * 1e3:.6g}", f"{h * 1e9:.6g}", f"{hN * 1e6:.6g}", f"{h * cycles * 1e6:.6g}"])
     with (out / "wear_summary.csv").open("w", newline="") as fh:
         fh.write(f"{head.rstrip()}; {describe_k(k, k_where)}\n")
@@ -281,8 +278,6 @@ def _evolution(scene, label, theta, cycles, args, out, head) -> None:
     """``--evolve-blocks K``: convergence table CSV and evolved-vs-linear PNG of one law."""
     from ..wear.evolution import convergence_table, evolution_case
 
-    if args.source != "hertz":
-        raise InputError(f"--source = {args.source}: --evolve-blocks uses Hertz pressure (--source hertz)")
     ct = convergence_table(evolution_case(scene, theta), cycles, args.evolve_blocks)
     header, rows = ct.rows()
     fin = ct.finest
@@ -298,21 +293,6 @@ def _evolution(scene, label, theta, cycles, args, out, head) -> None:
     for r in rows:
         print(f"  {r[0]:>6} blocks of {r[1]:>10} rev: {float(r[2]):.8g} um  {r[3]:>10} nm  order {r[5]}")
     if not args.no_plots:
-        import matplotlib
+        from ..viz.wear import plot_evolution
 
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-
-        fig, (a1, a2) = plt.subplots(2, 1, figsize=(6.4, 6.0), sharex=True)
-        x = fin.x_cam * 1e3
-        a1.plot(x, fin.depth_linear * 1e6, label="linear (unworn geometry) x N")
-        a1.plot(x, fin.depth_cam * 1e6, "--", label=f"evolved, {fin.blocks} blocks")
-        a1.set_ylabel("cam wear depth (um)")
-        a1.legend()
-        a1.set_title(f"{scene.name} ({label}): {cycles:g} revolutions")
-        a2.plot(x, (fin.depth_cam - fin.depth_linear) * 1e9)
-        a2.set_ylabel("evolved - linear (nm)")
-        a2.set_xlabel("cam arc length (mm)")
-        fig.tight_layout()
-        fig.savefig(out / f"wear_{label}_evolution.png", dpi=110)
-        plt.close(fig)
+        plot_evolution(fin, out / f"wear_{label}_evolution.png", title=f"{scene.name} ({label})")

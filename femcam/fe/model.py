@@ -73,10 +73,32 @@ class StressMax:
     body: str
 
 
-#: keys of ``ContactResult.max_by_body[body]``: the first three are maxima of non-negative
-#: quantities, ``<c>_max`` / ``<c>_min`` the largest / most negative value of component ``<c>``
-MAXIMA_KEYS = ("von_mises", "tau1", "txz_abs", "sx_max", "sx_min", "sz_max", "sz_min", "sy_max",
-               "sy_min")
+#: (key, field, arg-extremum) of ``ContactResult.max_by_body[body]``: the first three are maxima
+#: of non-negative quantities, ``<c>_max`` / ``<c>_min`` the largest / most negative value of
+#: component ``<c>``
+_EXTREMA = (("von_mises", "von_mises", np.argmax), ("tau1", "tau1", np.argmax),
+            ("txz_abs", "txz_abs", np.argmax), ("sx_max", "sx", np.argmax), ("sx_min", "sx", np.argmin),
+            ("sz_max", "sz", np.argmax), ("sz_min", "sz", np.argmin), ("sy_max", "sy", np.argmax),
+            ("sy_min", "sy", np.argmin))
+#: keys of ``ContactResult.max_by_body[body]`` (see ``_EXTREMA``)
+MAXIMA_KEYS = tuple(k for k, _, _ in _EXTREMA)
+
+
+def _over_bodies(key: str) -> property:
+    """Read-only ``ContactResult`` attribute: the :class:`StressMax` ``key`` over both bodies
+    (the most negative for ``*_min`` keys, else the largest; the cam's on a tie)."""
+    pick = min if key.endswith("_min") else max
+
+    def get(self) -> StressMax:
+        return pick((m[key] for m in self.max_by_body.values()), key=lambda s: s.value)
+
+    return property(get, doc=f"StressMax of ``{key}`` over both bodies")
+
+
+def _cam_surface(name: str) -> property:
+    """Read-only ``ContactResult`` attribute: field ``name`` of ``surface_by_body["cam"]``."""
+    return property(lambda self: getattr(self.surface_by_body["cam"], name),
+                    doc=f"cam surface ``{name}`` (``surface_by_body['cam'].{name}``)")
 
 
 @dataclass(frozen=True, eq=False)
@@ -104,9 +126,11 @@ class ContactResult:
     sx_max, sx_min, sz_max, sz_min, sy_max, sy_min: StressMax of the signed components (``_max``
     the largest, e.g. the trailing-edge tension ``sx_max`` ~ 2 mu p0 at x = -a on the cam for
     ``sliding = +1``; ``_min`` the most compressive, e.g. ``sz_min`` ~ -p0 at the surface);
-    max_by_body: ``{"cam"|"roller": {key: StressMax}}`` with the keys of :data:`MAXIMA_KEYS`;
+    max_by_body: ``{"cam"|"roller": {key: StressMax}}`` with the keys of :data:`MAXIMA_KEYS`
+    (the nine over both bodies above are read-only properties derived from it);
     all over the stress window ``|x| <= fine_half_width * a_ref``, ``z <= eval_depth * a_ref``;
-    x_surface, sx, sz, txz: cam surface stresses (Johnson frame, Pa); surface_by_body:
+    x_surface, sx, sz, txz: cam surface stresses (Johnson frame, Pa; properties, the arrays of
+    ``surface_by_body["cam"]``); surface_by_body:
     ``{"cam"|"roller": SurfaceStress}`` (the roller's in its own Johnson frame: its friction
     traction acts in ``-sliding x``, so its tension peak is at x = +a); iterations, residual,
     history, active, converged; timings (s) per phase; n_dofs; hertz_a, hertz_p0 (if Hertz
@@ -127,20 +151,7 @@ class ContactResult:
     delta: float
     force: float
     force_error: float
-    von_mises_max: StressMax
-    tau1_max: StressMax
-    txz_abs_max: StressMax
-    sx_max: StressMax
-    sx_min: StressMax
-    sz_max: StressMax
-    sz_min: StressMax
-    sy_max: StressMax
-    sy_min: StressMax
     max_by_body: dict
-    x_surface: np.ndarray
-    sx: np.ndarray
-    sz: np.ndarray
-    txz: np.ndarray
     surface_by_body: dict
     iterations: int
     residual: float
@@ -153,6 +164,21 @@ class ContactResult:
     hertz_p0: float
     outside_hertz: bool
     model: ContactModel = field(repr=False)
+
+    # derived from max_by_body / surface_by_body (not stored twice)
+    von_mises_max = _over_bodies("von_mises")
+    tau1_max = _over_bodies("tau1")
+    txz_abs_max = _over_bodies("txz_abs")
+    sx_max = _over_bodies("sx_max")
+    sx_min = _over_bodies("sx_min")
+    sz_max = _over_bodies("sz_max")
+    sz_min = _over_bodies("sz_min")
+    sy_max = _over_bodies("sy_max")
+    sy_min = _over_bodies("sy_min")
+    x_surface = _cam_surface("x")
+    sx = _cam_surface("sx")
+    sz = _cam_surface("sz")
+    txz = _cam_surface("txz")
 
     def field_at_nodes(self, body: str = "cam"):
         """Full-field (u (2, n), stress dict) at the scalar nodes of ``body`` (one back-solve)."""
@@ -324,6 +350,8 @@ class ContactModel:
         force = float(self.w @ sol_p) * self.length
         maxima, surfaces = {}, {}
         for name, ev in self.evals.items():
+            # einsum, not `@`: OpenBLAS's threaded gemv busy-waits on a loaded 2-core machine
+            # (Sn and St of one body at a/20 with two busy processes: 43 ms vs 6 ms einsum)
             s = np.einsum("cij,j->ci", ev.Sn, sol_p)
             if mu > 0:
                 s += (sliding * mu) * np.einsum("cij,j->ci", ev.St, sol_p)
@@ -333,19 +361,13 @@ class ContactModel:
             fields = {"von_mises": vm, "tau1": tau1, "txz_abs": np.abs(txz), "sx": sx, "sz": sz,
                       "sy": sy}
             m = {}
-            for key in MAXIMA_KEYS:
-                comp, kind = key.rsplit("_", 1) if key.endswith(("_max", "_min")) else (key, "max")
-                val = fields[comp]
-                i = int(np.argmin(val) if kind == "min" else np.argmax(val))
-                m[key] = StressMax(float(val[i]), float(ev.x[i]), float(ev.z[i]), name)
+            for key, comp, arg in _EXTREMA:
+                i = int(arg(fields[comp]))
+                m[key] = StressMax(float(fields[comp][i]), float(ev.x[i]), float(ev.z[i]), name)
             maxima[name] = m
             k = ev.surface
             surfaces[name] = SurfaceStress(x=ev.x[k], sx=sx[k], sz=sz[k], txz=txz[k], sy=sy[k],
                                            body=name)
-        best = {k: (min if k.endswith("_min") else max)((maxima[b][k] for b in maxima),
-                                                          key=lambda s: s.value)
-                for k in MAXIMA_KEYS}
-        surf = surfaces["cam"]
         t2 = time.perf_counter()
         timings = dict(self.timings, contact=t1 - t0, recovery=t2 - t1)
         outside = bool(math.isfinite(aH) and aH / min(self.Rr, abs(rho)) > 0.1)
@@ -353,11 +375,7 @@ class ContactModel:
             F=F, rho=rho, mu=mu, sliding=sliding, a=a, x0=x0, p0=p0,
             p0_nodal=float(sol_p.max()) if sol_p.size else 0.0, x=self.x, p=sol_p, gap=g,
             delta=float(delta), force=force, force_error=(abs(force - F) / F if F > 0 else 0.0),
-            von_mises_max=best["von_mises"], tau1_max=best["tau1"], txz_abs_max=best["txz_abs"],
-            sx_max=best["sx_max"], sx_min=best["sx_min"], sz_max=best["sz_max"],
-            sz_min=best["sz_min"], sy_max=best["sy_max"], sy_min=best["sy_min"],
-            max_by_body=maxima, x_surface=surf.x, sx=surf.sx, sz=surf.sz, txz=surf.txz,
-            surface_by_body=surfaces,
+            max_by_body=maxima, surface_by_body=surfaces,
             iterations=it, residual=res, history=hist, active=active, converged=conv,
             timings=timings, n_dofs=self.n_dofs, hertz_a=aH, hertz_p0=p0H, outside_hertz=outside,
             model=self)

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..mesh import surface_height
+from .contact import edge_midside_dofs
 from .elasticity import Body, scalar_node_coordinates, stress_operator
 
 
@@ -57,8 +58,6 @@ def depth(body: Body, xy: np.ndarray) -> np.ndarray:
 def surface_nodes(body: Body) -> np.ndarray:
     """Scalar nodes on the fine-zone contact curve: its vertices and, for P2, the midside nodes
     of its edges (these sit on the chords, a sagitta h^2 / (8 |R|) below the arc)."""
-    from .contact import edge_midside_dofs
-
     v = np.asarray(body.geometry.contact)  # vertices come first in the scalar numbering
     md = edge_midside_dofs(body, v)
     return v if md is None else np.concatenate([v, md[0] // 2])

@@ -24,7 +24,7 @@ import time
 from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import ProcessPoolExecutor, as_completed
 
-from .._threads import limit_blas_threads, single_threaded_blas  # noqa: F401 - re-exported
+from .._threads import limit_blas_threads
 from ..errors import InputError
 
 

@@ -309,7 +309,7 @@ def run_chunk(task: ChunkTask) -> dict:
     import multiprocessing
     import threading
 
-    from .parallel import single_threaded_blas
+    from .._threads import single_threaded_blas
 
     if multiprocessing.parent_process() is None and threading.current_thread() is threading.main_thread():
         return _run_chunk(task)
@@ -471,7 +471,7 @@ def write_hertz_vtu(path: Path, cp: ContactParams, F: float, rho: float, n: int 
     pts = np.column_stack([X.ravel(), -Z.ravel()])  # cam below the surface: y = -z
     data = {"sx": sf.sx, "sz": sf.sz, "txz": sf.txz, "sy": sf.sy, "tau1": sf.tau1,
             "von_mises": sf.von_mises}
-    p = np.where(Z == 0.0, float(hc.p0) * np.sqrt(np.clip(1.0 - (X / a) ** 2, 0.0, None)), 0.0).ravel()
+    p = np.where(Z == 0.0, hc.pressure(X), 0.0).ravel()
     data["contact_pressure"] = p
     if wear:
         data["wear_rate"] = wear["k"] * p * wear["v_slip"]

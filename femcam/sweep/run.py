@@ -178,7 +178,10 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
     if auto and workers != "auto":
         raise V.fail("workers", workers, "processes", "must be an integer >= 1 or 'auto'")
     if not auto:
-        workers = int(V.positive("workers", workers, "processes"))
+        w = V.positive("workers", workers, "processes")
+        if w != int(w):
+            raise V.fail("workers", workers, "processes", "must be an integer >= 1 or 'auto'")
+        workers = int(w)
     opts = SweepOptions(method=method, a_over_h=a_over_h, tolerance=tolerance,
                         chunk_size=chunk_size, vtk_every=vtk_every if out is not None else 0)
     if resume and out is None:
@@ -216,7 +219,7 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
 
     # model families, verified against the tolerance (FE only); a resume reuses the stored plan
     t0 = time.perf_counter()
-    family, refs, records = np.full(n, -1), {}, []
+    family, records = np.full(n, -1), []
     verified_here = False
     if opts.method == "fe":
         plan = store.load_plan() if (store is not None and resume) else None
@@ -227,12 +230,12 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
                        for r in plan["records"]]
         else:
             fit = contact & ~roller_does_not_fit(rows0["rho"], cp.Rr)
-            family, refs, records = verify_families(rows0["Fc"], rows0["rho"], angles, cp, opts, fit)
+            family, _, records = verify_families(rows0["Fc"], rows0["rho"], angles, cp, opts, fit)
             verified_here = True
             if store is not None:
                 store.save_plan({"family": family.tolist(),
                                  "records": [r.to_dict() for r in records]})
-        refs = {r.id: (r.rho_ref, r.a_ref) for r in records}
+    refs = {r.id: (r.rho_ref, r.a_ref) for r in records}
     t_verify = time.perf_counter() - t0
 
     tasks, task_chunk = [], []

@@ -13,8 +13,9 @@ Per angle, with the wear module's own functions used as they are:
   (no contact: depth 0; or no pressure at all, e.g. an undercut row: depth NaN).
 
 ``k`` (m^3/(N m)) comes from the scene's ``[wear]`` table through
-:func:`femcam.cli.wear.wear_coefficient` (``k_mm3_per_N_m``, or ``K`` with the cam hardness;
-default K = 1e-8, H = 2000 N/mm^2 as seed 000).
+:func:`femcam.wear.options.wear_coefficient_info` (``k_mm3_per_N_m``, or ``K`` with the cam
+hardness; default K = 1e-8, H = 2000 N/mm^2 as seed 000); the slip model's keys come from the
+same checked table through :func:`femcam.wear.options.slip_kwargs`, as in ``femcam wear map``.
 
 The per-pass depth depends on the pressure only through ``w = int p dx``; with the FE source it is
 the elliptic fit's ``pi a_fe p0_fe / 2``, which differs from the FE's exact ``F/l`` by about
@@ -24,7 +25,6 @@ the elliptic fit's ``pi a_fe p0_fe / 2``, which differs from the FE's exact ``F/
 from __future__ import annotations
 
 import dataclasses
-import types
 import warnings
 
 import numpy as np
@@ -58,16 +58,6 @@ class WearSetup:
                                       if hasattr(s, n)})
 
 
-def wear_coefficient_of(scene) -> float:
-    """k (m^3/(N m)) from the scene's ``[wear]`` table
-    (:func:`femcam.wear.options.wear_coefficient_info`)."""
-    from ..wear.options import wear_coefficient_info
-
-    if not hasattr(scene, "wear"):  # a scene-like object without a [wear] table
-        scene = types.SimpleNamespace(wear={}, cam=scene.cam)
-    return float(wear_coefficient_info(scene)[0])
-
-
 def _uniform_revolution(theta) -> bool:
     t = np.asarray(theta, float)
     if t.size < 4:
@@ -83,12 +73,11 @@ def slip_for_angles(scene, theta, st):
     The inertia-limited roller model integrates over one revolution on a uniform grid; for
     other angle sets it runs on a 0.5 deg grid and its speeds are interpolated (periodically).
     """
+    from ..wear.options import slip_kwargs
     from ..wear.slip import follower_slip
 
-    wr = dict(getattr(scene, "wear", None) or {})
-    model = wr.get("roller_model", "srr")
-    kw = dict(omega=scene.omega, roller_model=model, srr=float(wr.get("srr", 0.02)),
-              mu=float(getattr(scene, "mu", 0.0) or 0.1), J=wr.get("J_kg_m2"))
+    kw = slip_kwargs(scene)  # the checked [wear] table, as femcam wear map / evolution_case
+    model = kw["roller_model"]
     theta = np.asarray(theta, float)
     if model != "inertia" or _uniform_revolution(theta):
         return follower_slip(scene.follower, theta, st.s, st.s1, st.s2,
@@ -112,9 +101,10 @@ def wear_setup(scene, theta, st) -> WearSetup:
     """k and the slip for all sweep angles; on failure the wear columns are NaN (and why is
     recorded in the provenance, with a warning) -- wear never stops a contact sweep."""
     from ..errors import FemcamError
+    from ..wear.options import wear_coefficient_info
 
     try:
-        k = wear_coefficient_of(scene)
+        k = float(wear_coefficient_info(scene)[0])
         slip = slip_for_angles(scene, theta, st)
     except (FemcamError, AttributeError, ValueError, KeyError, TypeError) as exc:
         msg = f"wear columns not computed: {type(exc).__name__}: {exc}"

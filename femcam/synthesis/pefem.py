@@ -124,15 +124,11 @@ class SynthesisOptions:
     estimate_condition: bool = True
 
     def __post_init__(self):
-        n = self.n_elements
-        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 3:
-            raise V.fail("n_elements", n, "", "must be an integer >= 3")
+        V.integer("n_elements", self.n_elements, 3)
         q = self.quad_points
         if isinstance(q, bool) or not isinstance(q, (int, np.integer)) or not 2 <= q <= 5:
             raise V.fail("quad_points", q, "", "must be an integer in [2, 5]")
-        m = self.max_iter
-        if isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 1:
-            raise V.fail("max_iter", m, "", "must be an integer >= 1")
+        V.integer("max_iter", self.max_iter, 1)
         object.__setattr__(self, "k", V.positive("k", self.k, ""))
         object.__setattr__(self, "mu", V.positive("mu", self.mu, ""))
         object.__setattr__(self, "rtol", V.in_range("rtol", self.rtol, 0.0, 1.0, "", lo_open=True))

@@ -1,6 +1,6 @@
 """Wear plots (matplotlib, imported inside the functions): depth against cam angle and arc
-length, the follower (roller) depth, a polar view of the cam with the wear magnified, and a
-motion-law comparison."""
+length, the follower (roller) depth, a polar view of the cam with the wear magnified, a
+motion-law comparison, and the evolved vs linear depth of a profile evolution."""
 
 from __future__ import annotations
 
@@ -36,7 +36,7 @@ def plot_wear_map(wm, path, *, title: str = "", follower_label: str | None = Non
     ax2.set_xlabel("cam arc length from the contact at theta = 0 (mm)")
     ax2.set_ylabel("cam depth (um)")
     ax2.set_title(f"cam: max {wm.max_depth * 1e6:.3g} um at arc {wm.x_max * 1e3:.2f} mm", fontsize=9)
-    total = wm.depth_follower_cycles if wm.depth_follower_cycles is not None else c * wm.depth_follower
+    total = wm.depth_follower_total
     if wm.follower_period is not None:
         ax3.plot(wm.x_follower * 1e3, total * 1e6,
                  label=f"with drift {wm.follower_drift * 1e3:.3g} mm/rev")
@@ -115,5 +115,25 @@ def plot_wear_comparison(maps: dict, path, *, title: str = ""):
         ax.set_title(title, fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return path
+
+
+def plot_evolution(res, path, *, title: str = ""):
+    """Two panels of a :class:`~femcam.wear.evolution.EvolutionResult`: the evolved and the linear
+    cam depth after ``res.cycles`` revolutions vs arc length (um), and their difference (nm)."""
+    plt = _plt()
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(6.4, 6.0), sharex=True)
+    x = res.x_cam * 1e3
+    a1.plot(x, res.depth_linear * 1e6, label="linear (unworn geometry) x N")
+    a1.plot(x, res.depth_cam * 1e6, "--", label=f"evolved, {res.blocks} blocks")
+    a1.set_ylabel("cam wear depth (um)")
+    a1.legend()
+    a1.set_title(f"{title + ': ' if title else ''}{res.cycles:g} revolutions")
+    a2.plot(x, (res.depth_cam - res.depth_linear) * 1e9)
+    a2.set_ylabel("evolved - linear (nm)")
+    a2.set_xlabel("cam arc length (mm)")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
     plt.close(fig)
     return path

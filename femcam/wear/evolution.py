@@ -68,6 +68,7 @@ contact that Hertz does not describe.
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -147,7 +148,7 @@ def evolution_case(scene, theta, *, k: float | None = None) -> EvolutionCase:
     to the scene's wear coefficient (:func:`~femcam.wear.options.wear_coefficient_info`).
     Other followers raise :class:`~femcam.errors.InputError`.
     """
-    from .options import wear_coefficient_info, wear_options
+    from .options import slip_kwargs, wear_coefficient_info, wear_options
     from .slip import follower_slip
 
     kind = type(scene.follower).__name__
@@ -162,9 +163,7 @@ def evolution_case(scene, theta, *, k: float | None = None) -> EvolutionCase:
     k = vd.nonnegative("k", k, "m^3/(N m)")
     st = scene.analyse(theta)
     Fc = np.clip(st.Fc, 0.0, None)
-    slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, omega=scene.omega, Fc=Fc,
-                         roller_model=opts.get("roller_model", "srr"), srr=opts.get("srr", 0.02),
-                         mu=scene.mu or 0.1, J=opts.get("J_kg_m2"), T_drag=opts.get("T_drag_N_m", 0.0))
+    slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **slip_kwargs(scene, opts))
     return EvolutionCase(theta=np.asarray(st.theta, float), s=st.s, s1=st.s1, s2=st.s2, phi=st.phi,
                          rho=st.rho, slip=slip, dynamics=scene.dynamics, omega=scene.omega,
                          Rr=scene.follower.Rr, length=scene.length, cam=scene.cam, roller=scene.roller,
@@ -250,12 +249,14 @@ def evolve(case: EvolutionCase, cycles: float, block: float, *, n_grid: int | No
     from ..loads import contact_force
 
     cycles, block, M = _check_blocks(cycles, block)
+    if n_grid is not None:
+        n_grid = vd.integer("n_grid", n_grid, 2, "(grid points)")
     th, om, sl = case.theta, case.omega, case.slip
     n = th.size
     dth = 2.0 * math.pi / n
     cphi = np.cos(case.phi)
     rho = np.asarray(case.rho, float)
-    kappa = np.where(np.isfinite(rho), 1.0 / np.where(np.isfinite(rho) & (rho != 0), rho, np.inf), 0.0)
+    kappa = 1.0 / np.where(np.isfinite(rho) & (rho != 0), rho, np.inf)     # 0 where flat
     s_t = np.asarray(sl.V_cam, float) / om                 # ds/dtheta of the contact on the cam
     if np.any(s_t <= 0):
         raise vd.fail("slip.V_cam", float(np.min(s_t * om)), "m/s",
@@ -288,8 +289,6 @@ def evolve(case: EvolutionCase, cycles: float, block: float, *, n_grid: int | No
                               om * om * (case.s2 + d2f), case.phi)
         Fc = np.clip(loads.Fc, 0.0, None)
         R1 = np.where(kw != 0, 1.0 / np.where(kw != 0, kw, 1.0), np.inf)
-        import warnings
-
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")          # validity is reported as a_over_R_max
             hc = LineContact(F=Fc, length=case.length, R1=R1, R2=case.Rr - H_r, cam=case.cam,
@@ -383,9 +382,9 @@ def convergence_table(case: EvolutionCase, cycles: float, max_blocks: int, *,
     the convergence in the block size (max-norm differences over the cam depth)."""
     cycles = vd.positive("cycles", cycles, "revolutions")
     counts = block_counts(max_blocks)
-    if n_grid is None:
-        n_grid = evolve(case, cycles, cycles).x_cam.size
-    res = [evolve(case, cycles, cycles / nb, n_grid=n_grid) for nb in counts]
+    first = evolve(case, cycles, cycles, n_grid=n_grid)       # counts[0] == 1: the linear map
+    n_grid = first.x_cam.size
+    res = [first] + [evolve(case, cycles, cycles / nb, n_grid=n_grid) for nb in counts[1:]]
     H = [r.depth_cam for r in res]
     md = np.array([r.max_depth for r in res])
     dfin = np.array([float(np.max(np.abs(h - H[-1]))) for h in H])

@@ -183,6 +183,13 @@ def _get_text(src, name):
     return None if val is None else np.asarray(val).astype(str)
 
 
+def _loaded_have(a, p0, Fc):
+    """``(loaded, have)``: contact force ``Fc > 0``; a usable pressure (``a``, ``p0`` finite, > 0)."""
+    loaded = np.isfinite(Fc) & (Fc > 0)
+    have = np.isfinite(a) & np.isfinite(p0) & (a > 0) & (p0 > 0)
+    return loaded, have
+
+
 def _degrees(theta, idx, limit: int = 12) -> str:
     d = [f"{np.degrees(theta[i]):g}" for i in idx[:limit]]
     more = f" ... ({len(idx)} angles)" if len(idx) > limit else ""
@@ -224,8 +231,7 @@ def contact_columns(source, *, pressure: str = "hertz", missing: str | None = No
     bad = np.isfinite(a) & (a < 0)
     if np.any(bad):
         raise vd.fail("a", float(a[bad][0]), "m", "must be >= 0 (contact half-width)")
-    loaded = np.isfinite(Fc) & (Fc > 0)
-    have = np.isfinite(a) & np.isfinite(p0) & (a > 0) & (p0 > 0)
+    loaded, have = _loaded_have(a, p0, Fc)
     lost = np.flatnonzero(loaded & ~have)
     if lost.size and missing != "zero":
         status = _get_text(source, "status")
@@ -340,7 +346,8 @@ class WearMap:
         return float(self.theta[self.i_max])
 
     @property
-    def _follower_total(self) -> np.ndarray:
+    def depth_follower_total(self) -> np.ndarray:
+        """Follower depth after ``cycles`` revolutions (m), roller drift included."""
         if self.depth_follower_cycles is not None:
             return self.depth_follower_cycles
         return self.cycles * self.depth_follower
@@ -348,12 +355,12 @@ class WearMap:
     @property
     def max_depth_follower(self) -> float:
         """Largest follower wear depth after ``cycles`` revolutions (m), roller drift included."""
-        return float(np.max(self._follower_total)) if self.depth_follower.size else 0.0
+        return float(np.max(self.depth_follower_total)) if self.depth_follower.size else 0.0
 
     @property
     def x_max_follower(self) -> float:
         """Position (m, coordinate of ``x_follower``) of the deepest follower wear after ``cycles``."""
-        return float(self.x_follower[int(np.argmax(self._follower_total))]) if self.depth_follower.size \
+        return float(self.x_follower[int(np.argmax(self.depth_follower_total))]) if self.depth_follower.size \
             else 0.0
 
     @property
@@ -524,7 +531,6 @@ def wear_depth_per_angle(theta, a, p0, Fc, slip: SlipResult, k, *, missing: str 
                                    missing="raise" if missing == "raise" else "zero")
     h = depth_per_pass(k, hertz_load_per_length(a_, p_), slip.v_slip, slip.V_cam)
     if missing == "nan":
-        a_b, p_b, F_b = np.broadcast_arrays(a_in, p_in, F_in)
-        lost = (np.isfinite(F_b) & (F_b > 0)) & ~(np.isfinite(a_b) & np.isfinite(p_b) & (a_b > 0) & (p_b > 0))
-        h = np.where(lost, np.nan, h)
+        loaded, have = _loaded_have(*np.broadcast_arrays(a_in, p_in, F_in))
+        h = np.where(loaded & ~have, np.nan, h)
     return h

@@ -95,6 +95,15 @@ def wear_coefficient_info(scene) -> tuple[float, str]:
         "no [wear] K or k_mm3_per_N_m and no [materials.cam] hardness_MPa")
 
 
+def slip_kwargs(scene, opts: dict | None = None) -> dict:
+    """Keyword arguments of :func:`~femcam.wear.slip.follower_slip` from the scene (``omega``,
+    ``mu``) and its checked ``[wear]`` table ``opts`` (default: :func:`wear_options`)."""
+    if opts is None:
+        opts = wear_options(scene)
+    return dict(omega=scene.omega, roller_model=opts.get("roller_model", "srr"), srr=opts.get("srr", 0.02),
+                mu=scene.mu or 0.1, J=opts.get("J_kg_m2"), T_drag=opts.get("T_drag_N_m", 0.0))
+
+
 def describe_k(k: float, where: str) -> str:
     """``k = 5e-18 m^3/(N m) = 5e-09 mm^3/(N m) (where)``."""
     return f"k = {k:.4g} m^3/(N m) = {k * 1e9:.4g} mm^3/(N m) ({where})"

@@ -293,10 +293,11 @@ def radiused_tip(theta, s, s1, s2, *, Rb, r_tip, omega, e=0.0) -> SlipResult:
     >>> round(float(r.v_slip[0]), 12)          # base circle: omega (Rb + r) - omega r = omega Rb
     0.2
     """
+    from ..profile import pressure_angle
+
     r_tip = vd.positive("r_tip", r_tip, "m")
     theta, s, omega, Rr, V_p, V_cam, Omega_req = _roller_kinematics(theta, s, s1, s2, Rb, r_tip, e, omega)
-    e, dp = _offset_distance(Rb + r_tip, e, "Rb + r_tip")
-    phi0 = float(np.arctan2(np.asarray(s1, dtype=float).flat[0] - e, dp + float(s.flat[0])))
+    phi0 = float(pressure_angle(s.flat[0], np.asarray(s1, dtype=float).flat[0], Rb + r_tip, float(e)))
     return SlipResult(theta=theta, v_slip=r_tip * np.abs(Omega_req), V_cam=V_cam,
                       V_follower=V_cam + r_tip * Omega_req, omega=omega,
                       model=f"knife-edge with tip radius {r_tip * 1e3:g} mm: full sliding",
@@ -325,6 +326,8 @@ def follower_slip(follower, theta, s, s1, s2, *, omega, Fc=None, roller_model: s
         if tip_radius is not None:
             return radiused_tip(theta, s, s1, s2, Rb=follower.Rb, r_tip=tip_radius, omega=omega, e=e)
         return knife_edge(theta, s, s1, Rb=follower.Rb, omega=omega, e=e)
+    if tip_radius is not None:
+        raise vd.fail("tip_radius", tip_radius, "m", f"applies to knife-edge followers only (got a {kind})")
     if kind == "FlatFacedFollower":
         r = flat_faced(theta, s, s1, s2, Rb=follower.Rb, omega=omega)
         return dataclasses.replace(r, follower_origin=r.follower_origin - e)
