@@ -70,7 +70,13 @@ def in_range(name: str, value, lo: float, hi: float, unit: str = "", *,
 
 
 def finite_array(name: str, value, unit: str = "") -> np.ndarray:
-    """A float array with no NaN or inf."""
+    """A float array with no NaN or inf.
+
+    Text, ``None`` and booleans are refused (``numpy`` would read ``"1500"`` as 1500.0 and
+    ``None`` as NaN), so the message names what was passed, not a converted value.
+    """
+    if value is None or isinstance(value, str | bytes | bool):
+        raise fail(name, value, unit, "must be a number or an array of numbers")
     try:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError):

@@ -22,6 +22,8 @@ from dataclasses import dataclass
 from . import _validate as V  # noqa: N812
 
 PLANES = ("strain", "stress")
+#: accepted Young's moduli (Pa): soft elastomers to diamond, with margin
+E_MIN, E_MAX = 1e5, 2e12
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -38,7 +40,9 @@ class Material:
     hardness: float | None = None
 
     def __post_init__(self):
-        object.__setattr__(self, "E", V.positive("E", self.E, "Pa"))
+        # from soft elastomers (~1 MPa) to diamond (1.2e12 Pa); outside this range an input is a
+        # unit mistake (E_GPa given in Pa, say), and a 1e30 Pa body meshes a contact of zero width
+        object.__setattr__(self, "E", V.in_range("E", self.E, E_MIN, E_MAX, "Pa"))
         object.__setattr__(self, "nu", V.in_range("nu", self.nu, -1.0, 0.5, "", lo_open=True,
                                                   hi_open=True))
         if self.hardness is not None:

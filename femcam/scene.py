@@ -37,7 +37,7 @@ import numpy as np
 from .errors import InputError, SceneError, UndercutError
 from .kinematics import CamProgram, dwell, fall, law, rise
 from .loads import FollowerDynamics, LoadResult, contact_force
-from .materials import Material
+from .materials import E_MAX, E_MIN, Material
 from .profile import CamProfile, bool_intervals, cam_profile, make_follower
 
 try:  # Python >= 3.11
@@ -464,8 +464,12 @@ def load_scene(path) -> Scene:
             if alias in mraw:
                 m = ck.table(mraw[alias], f"materials.{alias}", _MATERIAL)
                 if "E_GPa" in m and "nu" in m:
-                    mats[k] = Material(E=m["E_GPa"], nu=m["nu"], name=m.get("name", alias),
-                                       hardness=m.get("hardness_MPa"))
+                    try:
+                        mats[k] = Material(E=m["E_GPa"], nu=m["nu"], name=m.get("name", alias),
+                                           hardness=m.get("hardness_MPa"))
+                    except InputError:  # E outside the physical range (Material.E_MIN/E_MAX)
+                        ck.add(f"materials.{alias}.E_GPa", f"= {_fmt(mraw[alias]['E_GPa'])} GPa: must be "
+                               f"in [{E_MIN / 1e9:g}, {E_MAX / 1e9:g}] GPa (soft elastomers to diamond)")
         if "materials" in raw:
             for k in ("cam", "roller"):
                 if k not in mraw and not (k == "roller" and "follower" in mraw):

@@ -269,3 +269,26 @@ def test_surface_has_no_warnings_at_edges_and_is_continuous():
         lo, hi = surface_stress(np.array([edge * (1 - 1e-12), edge * (1 + 1e-12)]), a, p0, mu=0.3)[0]
         assert lo == pytest.approx(hi, abs=1e-4 * p0), "sx continuous at |x| = a"
     assert np.all(p[np.abs(x) >= a] == 0.0)
+
+
+@pytest.mark.parametrize("kw, text", [
+    (dict(F=None), r"^F = None N: must be a number"),          # numpy would read None as NaN
+    (dict(F="1500"), r"^F = '1500' N: must be a number"),      # ... and "1500" as 1500.0
+    (dict(F=True), r"^F = True N: must be a number"),
+    (dict(R1=None), r"^R1 = None m: must be a number"),
+    (dict(F=np.ones(3), R1=np.full(2, 0.02)),
+     r"^F, R1, R2 = 'arrays of shapes \(3,\), \(2,\), \(\)': must broadcast"),
+])
+def test_non_numeric_or_mismatched_input_is_named(kw, text):
+    with pytest.raises(InputError, match=text):
+        steel_pair(**kw)
+
+
+def test_field_shape_mismatch_is_named():
+    hc = steel_pair(F=np.array([1000.0, 1500.0, 2000.0]))
+    with pytest.raises(InputError, match=r"^x, z and the load cases = 'arrays of shapes \(2,\), \(\), \(3,\)'"):
+        hc.stress(np.zeros(2), 1e-5)
+    with pytest.raises(InputError, match=r"^x and the load cases"):
+        hc.surface_stress(np.zeros(4))
+    with pytest.raises(InputError, match=r"^x = 'a' m: must be a number"):
+        hc.pressure("a")

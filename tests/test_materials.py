@@ -55,3 +55,11 @@ def test_lame_parameters_near_incompressible_is_finite():
     lam, mu = lame_parameters(1.0, 0.4999)
     assert lam == pytest.approx(0.4999 / (1.4999 * 0.0002), rel=1e-12) and np.isfinite(lam)
     assert mu == pytest.approx(1.0 / (2 * 1.4999), rel=1e-14)
+
+
+@pytest.mark.parametrize("E", [1e30, 1e3, 210e9 * 1e9])
+def test_unphysical_modulus_is_refused_naming_E(E):
+    # 1e30 Pa used to reach gmsh as a zero-width contact arc; a modulus in GPa typed as Pa (210)
+    # or in Pa typed as GPa (2.1e20) is a unit mistake, refused with the accepted range
+    with pytest.raises(InputError, match=r"^E = .* Pa: must be in \[100000, 2e\+12\]"):
+        Material(E=E, nu=0.3)

@@ -261,3 +261,17 @@ def test_narrow_undercut_found_between_coarse_angles(tmp_path):
     assert iv[0][0] == pytest.approx(a, abs=0.06) and iv[0][1] == pytest.approx(b, abs=0.06)
     # the fall (180 -> 280 deg) is the rise (0 -> 100 deg) mirrored: theta -> 280 - theta
     assert iv[1][0] == pytest.approx(280.0 - b, abs=0.06) and iv[1][1] == pytest.approx(280.0 - a, abs=0.06)
+
+
+def test_unphysical_modulus_in_scene_is_one_scene_error(tmp_path):
+    msg = _bad(tmp_path, "E_GPa = 210.0", "E_GPa = 1e30")
+    assert "materials.cam.E_GPa = 1e+30 GPa: must be in [0.0001, 2000] GPa" in msg, msg
+
+
+def test_python_m_femcam_import_runs_nothing():
+    import importlib
+    import sys
+
+    sys.modules.pop("femcam.__main__", None)
+    mod = importlib.import_module("femcam.__main__")  # used to call sys.exit(main()) on import
+    assert callable(mod.main)

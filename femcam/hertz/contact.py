@@ -102,9 +102,22 @@ def _scalar(x):
     return x[()] if x.ndim == 0 else x
 
 
-def _radius(name, value):
+def _broadcast(names: str, *arrays) -> tuple:
+    """The broadcast shape of ``arrays``, or an :class:`InputError` naming ``names`` and the
+    shapes (instead of numpy's broadcasting traceback)."""
     try:
-        arr = np.asarray(value, dtype=float) if not isinstance(value, str) else None
+        return np.broadcast_shapes(*(np.shape(a) for a in arrays))
+    except ValueError:
+        shapes = ", ".join(str(np.shape(a)) for a in arrays)
+        raise chk.fail(names, f"arrays of shapes {shapes}", "",
+                       "must broadcast against each other (one value, or one per load case)") from None
+
+
+def _radius(name, value):
+    if value is None or isinstance(value, bool):
+        raise chk.fail(name, value, "m", "must be a number (negative = concave, inf = flat)")
+    try:
+        arr = np.asarray(value, dtype=float) if not isinstance(value, str | bytes) else None
     except (TypeError, ValueError):
         arr = None
     if arr is None or np.any(np.isnan(arr)):
@@ -182,6 +195,7 @@ class LineContact:
         length = chk.positive("length", self.length, "m")
         R1 = _radius("R1", self.R1)
         R2 = _radius("R2", self.R2)
+        _broadcast("F, R1, R2", F, R1, R2)
         for name in ("cam", "roller"):
             if not isinstance(getattr(self, name), Material):
                 raise chk.fail(name, getattr(self, name), "", "must be a femcam.materials.Material")
@@ -241,11 +255,15 @@ class LineContact:
     def pressure(self, x):
         """Hertz pressure ``p(x) >= 0`` (Pa); ``x`` (m) broadcasts against :attr:`shape`."""
         from .surface import hertz_pressure
+        x = chk.finite_array("x", x, "m")
+        _broadcast("x and the load cases", x, self.a)
         return _scalar(hertz_pressure(x, self.a, self.p0))
 
     def surface_stress(self, x):
         """``(sx, sz, txz)`` (Pa) on ``z = 0`` for all ``x`` (m); seed 002 eqs. 5-7."""
         from .surface import surface_stress
+        x = chk.finite_array("x", x, "m")
+        _broadcast("x and the load cases", x, self.a)
         return tuple(_scalar(s) for s in surface_stress(x, self.a, self.p0, self.direction * self.mu))
 
     def stress(self, x, z, *, body: str = "cam"):
@@ -257,6 +275,9 @@ class LineContact:
         """
         from .subsurface import stress_field
         chk.choice("body", body, ("cam", "roller"))
+        x = chk.finite_array("x", x, "m")
+        z = chk.finite_array("z", z, "m")
+        _broadcast("x, z and the load cases", x, z, self.a)
         nu = (self.cam if body == "cam" else self.roller).nu
         return stress_field(x, z, self.a, self.p0, self.direction * self.mu, nu=nu, plane=self.plane)
 
