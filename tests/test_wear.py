@@ -488,7 +488,7 @@ def test_tip_radius_refused_for_a_roller():
 
 def test_knife_edge_wear_map_needs_tip_radius():
     sc_mod = pytest.importorskip("femcam.scene")
-    from femcam.cli.wear import scene_wear
+    from femcam.wear.scene import scene_wear
 
     sc = sc_mod.load_scene(str(EXAMPLES / "seed003_knife_edge.toml"))
     with pytest.raises(InputError, match="tip_radius_mm"):

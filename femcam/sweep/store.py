@@ -18,13 +18,12 @@ from __future__ import annotations
 
 import hashlib
 import json
-import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
 from ..errors import InputError
+from ..io import atomic_write_bytes, atomic_write_text
 from .result import NUMERIC, TEXT_COLUMNS
 
 MANIFEST = "manifest.json"
@@ -36,47 +35,6 @@ def array_hash(arr) -> str:
     """SHA-256 of a float array's bytes (stable across runs and machines of one endianness)."""
     a = np.ascontiguousarray(np.asarray(arr, dtype="<f8"))
     return hashlib.sha256(a.tobytes()).hexdigest()
-
-
-def _umask() -> int:
-    """The process umask, read without changing it where possible (Linux /proc), else by the
-    classic set-and-restore."""
-    try:
-        with open("/proc/self/status") as f:
-            for line in f:
-                if line.startswith("Umask:"):
-                    return int(line.split()[1], 8)
-    except (OSError, ValueError, IndexError):
-        pass
-    old = os.umask(0o022)
-    os.umask(old)
-    return old
-
-
-def _atomic_write_bytes(path: Path, write) -> None:
-    """Call ``write(fileobj)`` on a temp file next to ``path``, fsync, then rename over ``path``.
-
-    The file gets the mode an ordinary ``open(path, "w")`` would give (``0o666 & ~umask``), not
-    mkstemp's private 0600.
-    """
-    fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as f:
-            write(f)
-            f.flush()
-            os.fsync(f.fileno())
-        os.chmod(tmp, 0o666 & ~_umask())
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise
-
-
-def atomic_write_text(path, text: str) -> None:
-    _atomic_write_bytes(Path(path), lambda f: f.write(text.encode("utf-8")))
 
 
 class ChunkStore:
@@ -160,7 +118,7 @@ class ChunkStore:
         for name in TEXT_COLUMNS:
             arrays[name] = np.asarray(rows[name]).astype(str)
         p = self.path(i)
-        _atomic_write_bytes(p, lambda f: np.savez(f, **arrays))
+        atomic_write_bytes(p, lambda f: np.savez(f, **arrays))
         return p
 
     def load(self, i: int) -> dict:

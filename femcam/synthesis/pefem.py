@@ -77,7 +77,7 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from .. import _validate as V  # noqa: N812
+from .. import _validate
 from ..errors import ConvergenceError, InputError, PhysicsError
 
 STABILIZATIONS = ("sauer", "eq12")
@@ -124,22 +124,22 @@ class SynthesisOptions:
     estimate_condition: bool = True
 
     def __post_init__(self):
-        V.integer("n_elements", self.n_elements, 3)
+        _validate.integer("n_elements", self.n_elements, 3)
         q = self.quad_points
         if isinstance(q, bool) or not isinstance(q, (int, np.integer)) or not 2 <= q <= 5:
-            raise V.fail("quad_points", q, "", "must be an integer in [2, 5]")
-        V.integer("max_iter", self.max_iter, 1)
-        object.__setattr__(self, "k", V.positive("k", self.k, ""))
-        object.__setattr__(self, "mu", V.positive("mu", self.mu, ""))
-        object.__setattr__(self, "rtol", V.in_range("rtol", self.rtol, 0.0, 1.0, "", lo_open=True))
-        object.__setattr__(self, "xtol", V.nonnegative("xtol", self.xtol, ""))
-        object.__setattr__(self, "phi_limit", V.in_range("phi_limit", self.phi_limit, 0.0, np.pi / 2,
+            raise _validate.fail("quad_points", q, "", "must be an integer in [2, 5]")
+        _validate.integer("max_iter", self.max_iter, 1)
+        object.__setattr__(self, "k", _validate.positive("k", self.k, ""))
+        object.__setattr__(self, "mu", _validate.positive("mu", self.mu, ""))
+        object.__setattr__(self, "rtol", _validate.in_range("rtol", self.rtol, 0.0, 1.0, "", lo_open=True))
+        object.__setattr__(self, "xtol", _validate.nonnegative("xtol", self.xtol, ""))
+        object.__setattr__(self, "phi_limit", _validate.in_range("phi_limit", self.phi_limit, 0.0, np.pi / 2,
                                                          "rad", lo_open=True, hi_open=True))
-        V.choice("stabilization", self.stabilization, STABILIZATIONS)
-        object.__setattr__(self, "k_factor", V.number("k_factor", self.k_factor, ""))
+        _validate.choice("stabilization", self.stabilization, STABILIZATIONS)
+        object.__setattr__(self, "k_factor", _validate.number("k_factor", self.k_factor, ""))
         if self.k_factor < 1.0:
-            raise V.fail("k_factor", self.k_factor, "", "must be >= 1 (1: no k-continuation)")
-        object.__setattr__(self, "k_start", V.positive("k_start", self.k_start, ""))
+            raise _validate.fail("k_factor", self.k_factor, "", "must be >= 1 (1: no k-continuation)")
+        object.__setattr__(self, "k_start", _validate.positive("k_start", self.k_start, ""))
 
 
 @dataclass(frozen=True)
@@ -433,8 +433,8 @@ def synthesize_knife_edge(program, *, Rb, options: SynthesisOptions | None = Non
     angle above ``options.phi_limit`` on this base circle.
     """
     opt = options or SynthesisOptions()
-    Rb = V.positive("Rb", Rb, "m")
-    V.positive("samples_per_element", samples_per_element, "")
+    Rb = _validate.positive("Rb", Rb, "m")
+    _validate.positive("samples_per_element", samples_per_element, "")
     law_m = as_law(program)
     # refuse hopeless geometry before any iteration: exact phi on a fine grid
     th = np.linspace(0.0, 2 * np.pi, 20001)
@@ -517,7 +517,7 @@ def _check_solution(u, D, Kf, hist):
 
 def _postprocess(u, D, Rb, law_m, opt, m, converged, it, hist, ehist, msg, cond, solve_time):
     """Sample the converged curve: error and pressure angle at m points per element."""
-    V.positive("samples_per_element", m, "")
+    _validate.positive("samples_per_element", m, "")
     eta = -1.0 + 2.0 * np.arange(m) / m                # half-open, so no duplicates
     N = np.stack([eta * (eta - 1) / 2, 1 - eta**2, eta * (eta + 1) / 2], axis=1)
     dN = np.stack([eta - 0.5, -2 * eta, eta + 0.5], axis=1)

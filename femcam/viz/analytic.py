@@ -14,9 +14,11 @@ from pathlib import Path
 
 import numpy as np
 
+from ..kinematics import law
+
 
 def _plt():
-    import matplotlib
+    import matplotlib  # lazy: matplotlib is heavy and only the plots need it
 
     matplotlib.use("Agg", force=False)
     import matplotlib.pyplot as plt
@@ -183,8 +185,6 @@ def plot_laws(path, names=LAWS_FIGURE, n: int = 401, title: str = ""):
 
         python -c "from femcam.viz.analytic import plot_laws; plot_laws('docs/img/kinematics_laws.png')"
     """
-    from ..kinematics import law
-
     plt = _plt()
     u = np.linspace(0.0, 1.0, n)
     fig, axs = plt.subplots(2, 2, sharex=True, figsize=(6.4, 4.2))

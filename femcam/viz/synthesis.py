@@ -13,7 +13,7 @@ import numpy as np
 
 
 def _plt():
-    import matplotlib
+    import matplotlib  # lazy: matplotlib is heavy and only the plots need it
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
