@@ -81,7 +81,7 @@ def _run_pool(fn, tasks, workers):
 
 def _run_dask(fn, tasks, *, scheduler=None, client=None):
     try:
-        from dask.distributed import Client
+        from dask.distributed import Client  # lazy: dask is an optional extra (femcam[dask])
         from dask.distributed import as_completed as dask_completed
     except ImportError:  # pragma: no cover - optional dependency
         raise InputError("scheduler = "
