@@ -39,8 +39,8 @@ STUDY = ROOT / "examples" / "seed002_study_model.toml"
 
 
 @pytest.fixture(scope="module")
-def scene():
-    return load_scene(STUDY)
+def scene(study_scene):
+    return study_scene
 
 
 def E_star_of(sc):

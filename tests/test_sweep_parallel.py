@@ -66,6 +66,7 @@ def test_process_pool_equals_serial(serial, tmp_path):
     assert_same(r2.table, ref)
 
 
+@pytest.mark.slow  # starts a Dask LocalCluster (~5-10 s on 2 shared cores); the process pool runs by default
 def test_dask_local_cluster_equals_serial(serial, tmp_path):
     distributed = pytest.importorskip("dask.distributed")
     th, ref = serial

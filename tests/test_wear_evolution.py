@@ -17,9 +17,8 @@ TH2 = np.radians(np.arange(0.0, 360.0, 2.0))   # 180 angles: fast
 
 
 @pytest.fixture(scope="module")
-def seed002():
-    sc_mod = pytest.importorskip("femcam.scene")
-    return sc_mod.load_scene(STUDY)
+def seed002(study_scene):
+    return study_scene
 
 
 # --------------------------------------------------------------------------- a stiff-spring ring

@@ -197,6 +197,39 @@ def _degrees(theta, idx, limit: int = 12) -> str:
     return "[" + ", ".join(d) + "]" + more
 
 
+def _missing_pressure(source, theta, lost, missing, pressure, ka, kp, skipped) -> None:
+    """Angles ``lost`` have ``Fc > 0`` but no pressure: raise, or skip them with a warning
+    (see :func:`contact_columns`)."""
+    status = _get_text(source, "status")
+    failed = np.zeros(theta.size, bool) if status is None else (status == "failed")
+    if missing is None:
+        skip, stop = lost[failed[lost]], lost[~failed[lost]]
+    else:
+        skip, stop = (lost, lost[:0]) if missing == "skip" else (lost[:0], lost)
+    what = f"{ka[0]}/{kp[0]}"
+    if stop.size:
+        hint = ""
+        if status is not None and np.all(status[stop] == "ok"):
+            hint = (f"; the sweep has no {what} there (was it run with method='hertz'? then use "
+                    "pressure='hertz')" if pressure == "fe" else
+                    "; Hertz theory does not apply there (sweep flag hertz_invalid): use pressure='fe'")
+        raise _validate.fail("theta", _degrees(theta, stop), "deg",
+                      f"contact force Fc > 0 but the contact pressure {what} is missing (NaN or "
+                      f"<= 0) at {stop.size} angle(s){hint}; wear there is unknown, not zero "
+                      "(missing='skip' skips such angles with a warning)")
+    if skip.size:
+        msgs = _get_text(source, "message")
+        why = ""
+        if msgs is not None:
+            uniq = sorted({m for m in msgs[skip] if m})
+            why = "; sweep message(s): " + " | ".join(uniq[:3]) if uniq else ""
+        warnings.warn(f"wear map: skipped {skip.size} angle(s) theta = {_degrees(theta, skip)} deg "
+                      f"where Fc > 0 but {what} is missing (failed solve): they carry no load, "
+                      f"so the wear near them is underestimated{why}", WearInputWarning, stacklevel=4)
+        if skipped is not None:
+            skipped.extend(int(i) for i in skip)
+
+
 def contact_columns(source, *, pressure: str = "hertz", missing: str | None = None,
                     skipped: list | None = None):
     """``(theta, a, p0, Fc)`` arrays (SI) from a SweepResult-like object or a mapping.
@@ -235,34 +268,7 @@ def contact_columns(source, *, pressure: str = "hertz", missing: str | None = No
     loaded, have = _loaded_have(a, p0, Fc)
     lost = np.flatnonzero(loaded & ~have)
     if lost.size and missing != "zero":
-        status = _get_text(source, "status")
-        failed = np.zeros(theta.size, bool) if status is None else (status == "failed")
-        if missing is None:
-            skip, stop = lost[failed[lost]], lost[~failed[lost]]
-        else:
-            skip, stop = (lost, lost[:0]) if missing == "skip" else (lost[:0], lost)
-        what = f"{ka[0]}/{kp[0]}"
-        if stop.size:
-            hint = ""
-            if status is not None and np.all(status[stop] == "ok"):
-                hint = (f"; the sweep has no {what} there (was it run with method='hertz'? then use "
-                        "pressure='hertz')" if pressure == "fe" else
-                        "; Hertz theory does not apply there (sweep flag hertz_invalid): use pressure='fe'")
-            raise _validate.fail("theta", _degrees(theta, stop), "deg",
-                          f"contact force Fc > 0 but the contact pressure {what} is missing (NaN or "
-                          f"<= 0) at {stop.size} angle(s){hint}; wear there is unknown, not zero "
-                          "(missing='skip' skips such angles with a warning)")
-        if skip.size:
-            msgs = _get_text(source, "message")
-            why = ""
-            if msgs is not None:
-                uniq = sorted({m for m in msgs[skip] if m})
-                why = "; sweep message(s): " + " | ".join(uniq[:3]) if uniq else ""
-            warnings.warn(f"wear map: skipped {skip.size} angle(s) theta = {_degrees(theta, skip)} deg "
-                          f"where Fc > 0 but {what} is missing (failed solve): they carry no load, "
-                          f"so the wear near them is underestimated{why}", WearInputWarning, stacklevel=3)
-            if skipped is not None:
-                skipped.extend(int(i) for i in skip)
+        _missing_pressure(source, theta, lost, missing, pressure, ka, kp, skipped)
     noc = ~(loaded & have)
     a = np.where(noc, 0.0, a)
     p0 = np.where(noc, 0.0, np.clip(p0, 0.0, None))
