@@ -158,7 +158,8 @@ def check_correct(tab, what):
 
 def naive(scene, theta, a_over_h=10.0):
     """Fresh model per angle (exact rho and Hertz a), timed per angle."""
-    from femcam.sweep.families import build_model, hertz_half_width
+    from femcam.sweep.cache import build_model
+    from femcam.sweep.families import hertz_half_width
     from femcam.sweep.options import SweepOptions, contact_params
 
     cp = contact_params(scene)

@@ -27,11 +27,10 @@ from femcam.io import read_csv
 from femcam.loads import FollowerDynamics
 from femcam.mesh import MeshOptions
 from femcam.scene import Scene, load_scene
-from femcam.sweep import default_cache, parse_angles_deg, sweep
+from femcam.sweep import auto_workers, default_cache, parse_angles_deg, sweep
 from femcam.sweep.options import SweepOptions, contact_params
 from femcam.sweep.profile import worst_surface_profile
 from femcam.sweep.result import empty_rows
-from femcam.sweep.run import auto_workers
 from femcam.sweep.store import ChunkStore
 
 ROOT = Path(__file__).resolve().parents[1]

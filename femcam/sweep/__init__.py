@@ -5,7 +5,8 @@
 
 Modules: :mod:`~femcam.sweep.options` (:class:`SweepOptions`, the scene adapter),
 :mod:`~femcam.sweep.pipeline` (per-angle chain, one chunk), :mod:`~femcam.sweep.families` (model
-families, verification of the reuse error against ``tolerance``, :class:`ModelCache`),
+families, verification of the reuse error against ``tolerance``), :mod:`~femcam.sweep.cache`
+(:class:`ModelCache`: the process's FE models),
 :mod:`~femcam.sweep.profile` (the worst angle's surface stresses for the plot),
 :mod:`~femcam.sweep.wear` (Archard wear columns), :mod:`~femcam.sweep.store` (chunked atomic
 store, resume), :mod:`~femcam.sweep.parallel` (serial / process pool / Dask),
@@ -16,12 +17,13 @@ store, resume), :mod:`~femcam.sweep.parallel` (serial / process pool / Dask),
 import sys
 import types
 
-from .families import ModelCache, default_cache, plan_families, verify_families
+from .cache import ModelCache, default_cache
+from .families import plan_families, verify_families
 from .options import SweepOptions
-from .parallel import Progress, run_tasks
+from .parallel import Progress, auto_workers, run_tasks
 from .pipeline import run_chunk
 from .result import COLUMNS, SweepResult
-from .run import auto_workers, parse_angles_deg, sweep
+from .run import parse_angles_deg, sweep
 
 __all__ = ["COLUMNS", "ModelCache", "Progress", "SweepOptions", "SweepResult", "auto_workers",
            "default_cache", "parse_angles_deg", "plan_families", "run_chunk", "run_tasks", "sweep",

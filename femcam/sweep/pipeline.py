@@ -15,7 +15,7 @@ gap shape ``x^2 / 2R`` and the load change. So one mesh + factorisation serves e
 ``a`` (and ``Rr / rho``) stays close to the model's reference. The parent process plans the
 families and verifies the reuse error against ``tolerance`` with fresh models, splitting
 families until it holds (:func:`femcam.sweep.families.verify_families`); each worker process
-then builds a family's model once (:class:`~femcam.sweep.families.ModelCache`, one per
+then builds a family's model once (:class:`~femcam.sweep.cache.ModelCache`, one per
 process; forked workers inherit the parent's) and checks it with ``model.covers(F, rho)``; an
 angle it does not cover gets its own model (flag ``rebuilt``). Because the plan depends only on
 the set of angles (and is stored with the chunks for ``resume``), results do not depend on
@@ -48,7 +48,8 @@ from ..hertz.conformity import (
 )
 from ..io import vtu_name, write_fe_vtu, write_hertz_vtu
 from ..wear.slip import SlipResult
-from .families import ModelCache, default_cache, hertz_half_width
+from .cache import ModelCache, default_cache
+from .families import hertz_half_width
 from .options import ContactParams, SweepOptions, contact_params
 from .result import empty_rows
 from .wear import fill_wear

@@ -12,7 +12,8 @@ from __future__ import annotations
 import numpy as np
 
 from ..hertz.conformity import roller_does_not_fit
-from .families import ModelCache, default_cache, hertz_half_width
+from .cache import ModelCache, default_cache
+from .families import hertz_half_width
 from .options import ContactParams, SweepOptions
 from .pipeline import line_contact
 from .result import worst_row

@@ -8,8 +8,6 @@ planning, chunking, the executor, the on-disk store and the output files. The pe
 from __future__ import annotations
 
 import hashlib
-import os
-import sys
 import time
 from dataclasses import dataclass, replace
 from pathlib import Path
@@ -29,9 +27,10 @@ from ..io import (
 )
 from ..scene import Scene, load_scene
 from ..viz.sweep import plot_sweep
-from .families import FamilyRecord, default_cache, verify_families
+from .cache import default_cache
+from .families import FamilyRecord, verify_families
 from .options import SweepOptions, contact_params
-from .parallel import Progress, run_tasks
+from .parallel import AUTO_VTU_S, Progress, auto_workers, run_tasks
 from .pipeline import ChunkTask, analytic_rows, contact_mask, run_chunk
 from .profile import worst_surface_profile
 from .result import COLUMNS, NUMERIC, TEXT_COLUMNS, SweepResult, concat_rows
@@ -67,57 +66,6 @@ def _scene_hash(scene, scene_path) -> str:
         h.update(repr(scene).encode())  # also catches in-code changes such as --law
         return h.hexdigest()
     return hashlib.sha256(repr(scene).encode()).hexdigest()
-
-
-#: ``workers="auto"``: use processes only if they are expected to save at least this fraction
-AUTO_MIN_SAVING = 0.25
-#: ``workers="auto"``: fixed cost of starting a process pool and collecting its results (s)
-AUTO_POOL_OVERHEAD_S = 0.4
-
-
-def _cpu_count() -> int:
-    try:
-        return len(os.sched_getaffinity(0))
-    except (AttributeError, OSError):  # pragma: no cover - not Linux
-        return os.cpu_count() or 1
-
-
-#: ``workers="auto"``: estimated time to write one FE ``.vtu`` at a_over_h = 10 (s; full-field
-#: back-solves of both bodies and a ~1 MB file; measured ~0.09 s), scaled with (a_over_h/10)^2
-AUTO_VTU_S = 0.09
-
-
-def auto_workers(n_tasks: int, n_solves: int, t_solve: float, n_families: int, t_build: float,
-                 *, t_other: float = 0.0, cpus: int | None = None,
-                 fork: bool | None = None) -> tuple[int, str]:
-    """``workers="auto"``: how many local processes, and why (a one-line reason).
-
-    The chunks' work is ``n_solves`` contact solves of ``t_solve`` each, plus ``t_other`` s of
-    other work (writing the ``.vtu`` files): the family models are
-    built and verified before the chunks run, in this process, and the verification already
-    solves up to :data:`~femcam.sweep.families.MAX_SCAN` load cases per family (cached; forked
-    workers inherit models and results, spawned ones rebuild the ``n_families`` models at
-    ``t_build`` each). Processes are used only when they are expected to save at least
-    :data:`AUTO_MIN_SAVING` of that time after the pool's fixed cost
-    :data:`AUTO_POOL_OVERHEAD_S`. For the seed 002 study model (360 angles, ~1 ms per solve,
-    200 of them solved during the verification) serial wins when no VTK is written; writing
-    the CLI's default 36 ``.vtu`` files (~3 s) makes 2 processes pay (measured 5.6 s -> 4.4 s on
-    2 cores). Processes also pay for long angle lists, fine meshes (slower solves) and resumed
-    sweeps, which solve everything in the chunks.
-    """
-    cpus = _cpu_count() if cpus is None else int(cpus)
-    if fork is None:
-        fork = sys.platform.startswith("linux")
-    serial = n_solves * t_solve + t_other
-    w = max(1, min(cpus, n_tasks))
-    if w < 2:
-        return 1, f"serial: {cpus} core(s), {n_tasks} chunk(s)"
-    par = serial / w + AUTO_POOL_OVERHEAD_S + (0.0 if fork else n_families * t_build)
-    what = "solves" + (" and VTU files" if t_other > 0 else "")
-    if par <= (1.0 - AUTO_MIN_SAVING) * serial:
-        return w, f"{w} processes: ~{serial:.2f} s of {what} serially, ~{par:.2f} s expected in parallel"
-    return 1, (f"serial: ~{serial:.2f} s of {what} would take ~{par:.2f} s with {w} processes "
-               "(pool start-up" + ("" if fork else ", rebuilt models") + ")")
 
 
 def _scene_source(scene, scene_path):

@@ -133,13 +133,7 @@ def wear_setup(scene, theta, st) -> WearSetup:
     are NaN, the reason is recorded in the provenance and warned about: wear never stops a
     contact sweep. Programming errors (AttributeError, TypeError, ...) propagate.
 
-    Parameters
-    ----------
-    scene : femcam.scene.Scene
-    theta : ndarray, shape (n,)
-        Cam angles (rad).
-    st : femcam.scene.SceneState
-        ``scene.analyse(theta)``.
+    Parameters: as :func:`slip_for_angles`.
 
     Returns
     -------

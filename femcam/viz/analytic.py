@@ -38,6 +38,16 @@ def _save(fig, path):
     return path
 
 
+def _finish(fig, ax, th, ylabel: str, title: str, path):
+    """Label the cam-angle axis and ``ylabel``, title, lay out and save; returns the path."""
+    ax.set_ylabel(ylabel)
+    ax.set_xlabel("cam angle theta (deg)")
+    ax.set_title(title)
+    _xaxis(ax, th)
+    fig.tight_layout()
+    return _save(fig, path)
+
+
 def _xaxis(ax, th):
     ax.set_xlim(th.min(), th.max())
     if th.max() - th.min() >= 180:
@@ -73,12 +83,8 @@ def plot_pressure_angle(st, path, title: str = "", limit_deg: float = 30.0):
         ax.axhline(sgn * limit_deg, color="r", ls="--", lw=0.8)
     ax.text(th.min(), limit_deg, f" limit {limit_deg:g} deg", color="r", va="bottom", fontsize=8)
     pm = float(np.max(np.abs(np.degrees(st.phi)))) if np.size(st.phi) else 0.0
-    ax.set_ylabel("pressure angle phi (deg)")
-    ax.set_xlabel("cam angle theta (deg)")
-    ax.set_title(title or f"Pressure angle (max |phi| = {pm:.2f} deg)")
-    _xaxis(ax, th)
-    fig.tight_layout()
-    return _save(fig, path)
+    return _finish(fig, ax, th, "pressure angle phi (deg)",
+                   title or f"Pressure angle (max |phi| = {pm:.2f} deg)", path)
 
 
 def plot_rho(st, path, title: str = "", Rr: float = 0.0, clip_mm: float | None = None):
@@ -125,12 +131,9 @@ def plot_contact_force(st, path, title: str = ""):
         ax.fill_between(th, 0, 1, where=lift, transform=ax.get_xaxis_transform(), color="r",
                         alpha=0.15, label="lift-off (Fc <= 0)")
         ax.legend(fontsize=8)
-    ax.set_ylabel("contact force Fc (N)")
-    ax.set_xlabel("cam angle theta (deg)")
-    ax.set_title(title or f"Contact force (max {np.max(st.Fc):.1f} N, min {np.min(st.Fc):.1f} N)")
-    _xaxis(ax, th)
-    fig.tight_layout()
-    return _save(fig, path)
+    return _finish(fig, ax, th, "contact force Fc (N)",
+                   title or f"Contact force (max {np.max(st.Fc):.1f} N, min {np.min(st.Fc):.1f} N)",
+                   path)
 
 
 def plot_cam(st, path, title: str = ""):

@@ -31,6 +31,12 @@ def _plt():
     return plt
 
 
+def _table(result):
+    """``(pyplot, table, cam angle in degrees)`` of a sweep result."""
+    t = result.table
+    return _plt(), t, np.degrees(t["theta"])
+
+
 def _save(fig, path: Path) -> str:
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=90)
@@ -41,20 +47,10 @@ def _save(fig, path: Path) -> str:
 def plot_p0(result, path) -> str:
     """Peak pressure against cam angle: Hertz (line), FE (points) and FE/Hertz - 1.
 
-    Parameters
-    ----------
-    result : femcam.sweep.SweepResult
-    path : str or Path
-        Output PNG.
-
-    Returns
-    -------
-    str
-        The path written.
+    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG). Returns the
+    path written (str).
     """
-    plt = _plt()
-    t = result.table
-    deg = np.degrees(t["theta"])
+    plt, t, deg = _table(result)
     fe = result.method == "fe"
     fig, axs = plt.subplots(2 if fe else 1, 1, figsize=(7, 5 if fe else 3.4), sharex=True,
                             squeeze=False, gridspec_kw={"height_ratios": [2.2, 1] if fe else [1]})
@@ -82,20 +78,10 @@ def plot_maxima(result, path) -> str:
     """Von Mises and tau1 maxima (MPa) against cam angle: FE points, Hertz lines (when
     ``result.hertz_factors`` is set).
 
-    Parameters
-    ----------
-    result : femcam.sweep.SweepResult
-    path : str or Path
-        Output PNG.
-
-    Returns
-    -------
-    str
-        The path written.
+    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG). Returns the
+    path written (str).
     """
-    plt = _plt()
-    t = result.table
-    deg = np.degrees(t["theta"])
+    plt, t, deg = _table(result)
     fig, ax = plt.subplots(figsize=(7, 3.6))
     k = result.hertz_factors
     if result.method == "fe":
@@ -117,20 +103,10 @@ def plot_maxima(result, path) -> str:
 def plot_svaj_loads(result, path) -> str:
     """s, v, a, j, phi, rho, Fc and Hertz p0 against cam angle.
 
-    Parameters
-    ----------
-    result : femcam.sweep.SweepResult
-    path : str or Path
-        Output PNG.
-
-    Returns
-    -------
-    str
-        The path written.
+    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG). Returns the
+    path written (str).
     """
-    plt = _plt()
-    t = result.table
-    deg = np.degrees(t["theta"])
+    plt, t, deg = _table(result)
     fig, axs = plt.subplots(4, 2, figsize=(9, 7.5), sharex=True)
     panels = [("s", 1e3, "s (mm)"), ("v", 1, "v (m/s)"), ("a", 1, "a (m/s^2)"),
               ("j", 1, "j (m/s^3)"), ("phi", 180 / np.pi, "phi (deg)"),
@@ -153,20 +129,10 @@ def plot_svaj_loads(result, path) -> str:
 def plot_wear(result, path) -> str:
     """Archard wear depth per revolution (nm) and sliding speed (m/s) against cam angle.
 
-    Parameters
-    ----------
-    result : femcam.sweep.SweepResult
-    path : str or Path
-        Output PNG.
-
-    Returns
-    -------
-    str
-        The path written.
+    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG). Returns the
+    path written (str).
     """
-    plt = _plt()
-    t = result.table
-    deg = np.degrees(t["theta"])
+    plt, t, deg = _table(result)
     fig, axs = plt.subplots(2, 1, figsize=(7, 4.6), sharex=True)
     src = np.asarray(t["wear_source"]).astype(str)
     for s_, c, lab in (("fe", "C3", "FE pressure"), ("hertz", "C0", "Hertz pressure")):

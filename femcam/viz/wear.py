@@ -16,6 +16,14 @@ def _plt():
     return plt
 
 
+
+def _save(fig, path, dpi: int = 90):
+    """Lay out, write and close a figure; returns ``path``."""
+    fig.tight_layout()
+    fig.savefig(path, dpi=dpi)
+    _plt().close(fig)
+    return path
+
 def plot_wear_map(wm, path, *, title: str = "", follower_label: str | None = None):
     """Three panels: cam depth after ``wm.cycles`` revolutions vs cam angle (deg) and vs arc
     length (mm), and the follower (roller, face or tip) depth vs its surface coordinate (mm).
@@ -52,10 +60,7 @@ def plot_wear_map(wm, path, *, title: str = "", follower_label: str | None = Non
                   fontsize=9)
     if title:
         fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
 
 
 def worn_profile(wm, x, y, magnify: float):
@@ -94,10 +99,7 @@ def plot_wear_polar(wm, x, y, path, *, magnify: float | None = None, title: str 
     ax.legend(fontsize=8, loc="lower right")
     ax.set_title((title + "\n" if title else "") + f"{wm.cycles:g} rev, max depth {hmax * 1e6:.3g} um",
                  fontsize=9)
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
 
 
 def plot_wear_comparison(maps: dict, path, *, title: str = ""):
@@ -113,10 +115,7 @@ def plot_wear_comparison(maps: dict, path, *, title: str = ""):
     ax.legend(fontsize=8)
     if title:
         ax.set_title(title, fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
 
 
 def plot_evolution(res, path, *, title: str = ""):
@@ -133,7 +132,4 @@ def plot_evolution(res, path, *, title: str = ""):
     a2.plot(x, (res.depth_cam - res.depth_linear) * 1e9)
     a2.set_ylabel("evolved - linear (nm)")
     a2.set_xlabel("cam arc length (mm)")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return _save(fig, path, dpi=110)
