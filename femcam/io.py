@@ -96,7 +96,8 @@ def atomic_write_bytes(path, write: Callable) -> None:
 
 
 def atomic_write_text(path, text: str) -> None:
-    """Write ``text`` (UTF-8) to ``path`` atomically (:func:`atomic_write_bytes`)."""
+    """Write ``text`` (UTF-8, str) to ``path`` (str or Path) atomically
+    (:func:`atomic_write_bytes`)."""
     atomic_write_bytes(Path(path), lambda f: f.write(text.encode("utf-8")))
 
 
@@ -174,7 +175,11 @@ _CSV_TEXT = str.maketrans({",": ";", "#": "No.", '"': "'", "\n": " ", "\r": " "}
 
 
 def csv_text(value) -> str:
-    """A text field as written to the CSV: no ``,``, ``#``, quotes or line breaks."""
+    """A text field as written to the CSV: no ``,``, ``#``, quotes or line breaks.
+
+    >>> csv_text('a, "b" #1')
+    "a; 'b' No.1"
+    """
     return str(value).translate(_CSV_TEXT)
 
 
@@ -381,7 +386,11 @@ def _insert_field_data(path: Path, field_data: dict) -> None:
 # VTU of one solved angle (sweep): FE result or analytic Hertz field, plus wear
 # ---------------------------------------------------------------------------------------------
 def vtu_name(theta: float) -> str:
-    """File name of the ``.vtu`` of cam angle ``theta`` (rad): ``angle_<deg>deg.vtu``."""
+    """File name of the ``.vtu`` of cam angle ``theta`` (rad): ``angle_<deg>deg.vtu``.
+
+    >>> vtu_name(np.pi / 2)
+    'angle_0090.000deg.vtu'
+    """
     return f"angle_{np.degrees(theta):08.3f}deg.vtu"
 
 

@@ -120,7 +120,22 @@ class ModelCache:
 
     def fresh_p0(self, cp: ContactParams, rho: float, a: float, options: SweepOptions,
                  F: float) -> float:
-        """FE p0 (Pa) of a model built fresh for one load case (NaN if it cannot solve it)."""
+        """FE p0 of a model built fresh for one load case (remembered per load case).
+
+        Parameters
+        ----------
+        cp : ContactParams
+        rho, a : float
+            The load case's cam radius and Hertz half-width (m): the fresh mesh is graded to them.
+        options : SweepOptions
+        F : float
+            Contact force (N).
+
+        Returns
+        -------
+        float
+            p0 (Pa); NaN if the fresh model cannot be built or solved.
+        """
         key = (_key(cp, rho, a, options), F, cp.mu, cp.sliding)
         with self._lock:
             p0 = self._fresh_p0.get(key)
@@ -139,7 +154,8 @@ class ModelCache:
         return p0
 
     def forget(self, cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions) -> None:
-        """Drop one model (and its solved cases)."""
+        """Drop the model of references ``(rho_ref, a_ref)`` (m) and its solved cases (the
+        arguments as in :meth:`model_for`)."""
         with self._lock:
             m = self._models.pop(_key(cp, rho_ref, a_ref, options), None)
             if m is not None:
@@ -163,6 +179,10 @@ def default_cache() -> ModelCache:
     their tasks pickled (a cache of factorised models cannot travel with them), so a worker
     keeps the models it builds across chunks, and forked workers inherit the models and
     results the parent's verification built.
+
+    Returns
+    -------
+    ModelCache
     """
     return _PROCESS_CACHE
 

@@ -108,6 +108,18 @@ def family_spans(tolerance: float) -> tuple[float, float]:
     guess (calibrated on the study model at a_over_h = 10: ``a_span = 1 + 125 tol``,
     ``kappa_span = min(400 tol, 0.95)``); :func:`verify_families` then splits every family whose
     measured reuse error exceeds the tolerance.
+
+    Parameters
+    ----------
+    tolerance : float
+        Bound on the relative p0 reuse error.
+
+    Returns
+    -------
+    a_span : float
+        Largest ``max(a)/min(a)`` of a starting family (>= 1).
+    kappa_span : float
+        Largest spread of ``Rr/rho`` (dimensionless).
     """
     return 1.0 + 125.0 * tolerance, min(400.0 * tolerance, 0.95)
 
@@ -155,8 +167,25 @@ def plan_families(F, rho, cp: ContactParams, tolerance: float, contact: np.ndarr
 
     Greedy clustering of the contact angles, first in the Hertz half-width ``a`` (ratio
     ``a_span``), then in the curvature ratio ``kappa = Rr/rho`` (width ``kappa_span``), see
-    :func:`family_spans`. The plan depends only on the set of angles. Returns ``(family, refs)``
-    with ``refs[fid] = (rho_ref, a_ref)``. :func:`verify_families` refines it.
+    :func:`family_spans`. The plan depends only on the set of angles. :func:`verify_families`
+    refines it.
+
+    Parameters
+    ----------
+    F, rho : ndarray, shape (n,)
+        Contact force (N) and cam radius of curvature (m) per angle.
+    cp : ContactParams
+    tolerance : float
+        Reuse tolerance (sets the spans).
+    contact : ndarray of bool, shape (n,)
+        Angles with contact.
+
+    Returns
+    -------
+    family : ndarray of int, shape (n,)
+        Family id per angle (-1: no contact).
+    refs : dict[int, tuple[float, float]]
+        ``refs[fid] = (rho_ref (m), a_ref (m))``.
     """
     F = np.asarray(F, float)
     rho = np.asarray(rho, float)
@@ -206,6 +235,7 @@ class FamilyRecord:
     n_rebuilt: int = 0
 
     def to_dict(self) -> dict:
+        """The record as JSON-able lists and numbers (``plan.json``, provenance)."""
         return {"id": self.id, "rho_ref": self.rho_ref, "a_ref": self.a_ref,
                 "n_angles": self.n_angles, "a_ratio": list(self.a_ratio),
                 "kappa": list(self.kappa), "checks": [list(c) for c in self.checks],
@@ -240,6 +270,23 @@ def check_angles(a, kappa, a_ref, k_ref, x_nodes, n_checks: int = N_CHECKS,
     Then, or without ``e_hertz`` (Hertz does not apply): the largest edge offset from a mesh node
     and the family's extreme corner in the normalised (``ln(a/a_ref)``, ``kappa - k_ref``) plane,
     then the extremes of ``a`` and ``kappa``. Load cases equal to one already chosen are skipped.
+
+    Parameters
+    ----------
+    a, kappa : ndarray, shape (m,)
+        Hertz half-width (m) and ``Rr/rho`` of the family's covered angles.
+    a_ref, k_ref : float
+        The family model's reference half-width (m) and ``Rr/rho_ref``.
+    x_nodes : ndarray
+        Contact-surface node abscissae of the family mesh (m).
+    n_checks : int
+        How many angles to return at most.
+    e_hertz : ndarray, shape (m,), optional
+        ``p0 / p0_Hertz - 1`` of the family model (NaN where not solved).
+
+    Returns
+    -------
+    list of int
     """
     if a.size == 0:
         return []

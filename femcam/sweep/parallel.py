@@ -65,6 +65,32 @@ def auto_workers(n_tasks: int, n_solves: int, t_solve: float, n_families: int, t
     the CLI's default 36 ``.vtu`` files (~3 s) makes 2 processes pay (measured 5.6 s -> 4.4 s on
     2 cores). Processes also pay for long angle lists, fine meshes (slower solves) and resumed
     sweeps, which solve everything in the chunks.
+
+    Parameters
+    ----------
+    n_tasks : int
+        Chunks to compute.
+    n_solves : int
+        Contact solves the chunks still have to do.
+    t_solve : float
+        Time per solve (s).
+    n_families : int
+        Model families (rebuilt by spawned workers).
+    t_build : float
+        Time per model build (s).
+    t_other : float
+        Other work of the chunks (s), e.g. writing ``.vtu`` files.
+    cpus : int, optional
+        Usable cores (default: this process's affinity).
+    fork : bool, optional
+        Whether workers are forked (default: on Linux).
+
+    Returns
+    -------
+    workers : int
+        1 (serial) or the number of processes.
+    reason : str
+        One line saying why.
     """
     cpus = _cpu_count() if cpus is None else int(cpus)
     if fork is None:
@@ -84,7 +110,25 @@ def auto_workers(n_tasks: int, n_solves: int, t_solve: float, n_families: int, t
 
 def run_tasks(fn: Callable, tasks: Iterable, *, workers: int = 1, scheduler=None,
               client=None) -> Iterator[tuple[int, object]]:
-    """Run ``fn(task)`` for every task; yield ``(index in tasks, result)`` in completion order."""
+    """Run ``fn(task)`` for every task, serially, in a process pool or on Dask.
+
+    Parameters
+    ----------
+    fn : callable
+        A module-level (picklable) function of one task.
+    tasks : iterable
+        The tasks.
+    workers : int
+        Local processes (<= 1: serial in this process).
+    scheduler : str, optional
+        Dask scheduler address.
+    client : dask.distributed.Client or cluster, optional
+
+    Yields
+    ------
+    tuple[int, object]
+        ``(index in tasks, fn(task))`` in completion order.
+    """
     tasks = list(tasks)
     if not tasks:
         return
@@ -173,6 +217,7 @@ class Progress:
         self.t0 = time.perf_counter()
 
     def update(self, n: int) -> None:
+        """``n`` more angles are done: redraw the bar."""
         self.done += n
         if not self.enabled:
             return
@@ -186,6 +231,7 @@ class Progress:
         self.stream.flush()
 
     def close(self) -> None:
+        """End the bar's line."""
         if self.enabled:
             self.stream.write("\n")
             self.stream.flush()

@@ -195,7 +195,19 @@ def analytic_rows(scene, theta) -> tuple[dict, object]:
 
 
 def contact_mask(rows, st) -> np.ndarray:
-    """Angles in contact: no lift-off and ``Fc > 0`` (ndarray of bool, shape (n,))."""
+    """Angles in contact: no lift-off and ``Fc > 0``.
+
+    Parameters
+    ----------
+    rows : dict[str, ndarray]
+        The table with ``Fc`` (N).
+    st : femcam.scene.SceneState
+        With ``liftoff`` (bool, shape (n,)).
+
+    Returns
+    -------
+    ndarray of bool, shape (n,)
+    """
     return ~np.asarray(st.liftoff, dtype=bool) & (rows["Fc"] > 0.0)
 
 

@@ -81,7 +81,18 @@ WALL_CLOCK = ("fe_time", "build_time")
 
 
 def empty_rows(n: int) -> dict[str, np.ndarray]:
-    """A table of ``n`` rows: NaN numbers, empty strings."""
+    """A table of ``n`` rows: NaN numbers, empty strings.
+
+    Parameters
+    ----------
+    n : int
+        Rows.
+
+    Returns
+    -------
+    dict[str, ndarray]
+        Float arrays of shape (n,) for :data:`NUMERIC`, object arrays for :data:`TEXT_COLUMNS`.
+    """
     rows = {name: np.full(n, np.nan) for name in NUMERIC}
     for name in TEXT_COLUMNS:
         rows[name] = np.full(n, "", dtype=object)
@@ -112,7 +123,18 @@ def worst_row(table: dict, column: str = "p0_fe") -> int:
 
 
 def concat_rows(parts: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
-    """Stack chunk tables (already in angle order)."""
+    """Stack chunk tables (already in angle order).
+
+    Parameters
+    ----------
+    parts : list of dict[str, ndarray]
+        Chunk tables.
+
+    Returns
+    -------
+    dict[str, ndarray]
+        One table: float columns and ``str`` text columns.
+    """
     if not parts:
         return {k: np.asarray(v) for k, v in empty_rows(0).items()}
     out = {}
@@ -171,14 +193,17 @@ class SweepResult:
 
     @property
     def theta(self) -> np.ndarray:
+        """Cam angles (rad), shape (n,)."""
         return self.table["theta"]
 
     @property
     def status(self) -> np.ndarray:
+        """Per-angle status (``ok``, ``liftoff``, ``undercut``, ``failed``), shape (n,)."""
         return self.table["status"]
 
     @property
     def n_angles(self) -> int:
+        """Number of angles."""
         return int(self.table["theta"].size)
 
     @property
@@ -202,14 +227,34 @@ class SweepResult:
 
     @property
     def n_failed(self) -> int:
+        """Number of angles whose solve failed."""
         return int(np.count_nonzero(self.table["status"] == "failed"))
 
     def worst_index(self, column: str = "p0_fe") -> int:
-        """Row index of the largest value of ``column`` among ``ok`` rows (:func:`worst_row`)."""
+        """Row index of the largest ``column`` among ``ok`` rows (:func:`worst_row`).
+
+        Parameters
+        ----------
+        column : str
+            Column name (SI).
+
+        Returns
+        -------
+        int
+        """
         return worst_row(self.table, column)
 
     def summary(self) -> dict:
-        """Peak values over the cycle (SI), for tables and reports."""
+        """Peak values over the cycle, for tables and reports.
+
+        Returns
+        -------
+        dict
+            ``Fc_max`` (N), ``phi_max`` (rad), ``p0_hertz_max``, ``p0_fe_max``, ``vm_max``,
+            ``tau1_max`` (Pa), ``err_p0_absmax``, ``err_a_absmax`` (relative),
+            ``n_liftoff``, ``n_failed``, ``n_undercut``, ``n_families`` (counts),
+            ``reuse_error_max`` (relative), ``wear_depth_max`` (m per revolution).
+        """
         t = self.table
         ok = self.ok
 

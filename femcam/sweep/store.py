@@ -32,7 +32,18 @@ FORMAT_VERSION = 2  # 2: wear and build-time columns, plan.json
 
 
 def array_hash(arr) -> str:
-    """SHA-256 of a float array's bytes (stable across runs and machines of one endianness)."""
+    """SHA-256 of a float array's bytes (stable across runs and machines of one endianness).
+
+    Parameters
+    ----------
+    arr : array_like
+        Converted to little-endian float64.
+
+    Returns
+    -------
+    str
+        Hex digest.
+    """
     a = np.ascontiguousarray(np.asarray(arr, dtype="<f8"))
     return hashlib.sha256(a.tobytes()).hexdigest()
 
@@ -58,6 +69,16 @@ class ChunkStore:
 
         Without ``resume`` old chunks are deleted. With ``resume`` a manifest for a different
         sweep raises :class:`InputError` naming what differs.
+
+        Parameters
+        ----------
+        resume : bool
+            Keep the finished chunks of the same sweep.
+
+        Returns
+        -------
+        set of int
+            Finished chunk ids (empty without ``resume``).
         """
         self.root.mkdir(parents=True, exist_ok=True)
         mpath = self.root / MANIFEST
@@ -88,10 +109,11 @@ class ChunkStore:
     # -- the verified family plan ----------------------------------------------------
     def save_plan(self, plan: dict) -> None:
         """Store the verified family plan (JSON): a resume reuses it instead of re-verifying,
-        so the resumed chunks use exactly the same models."""
+        so the resumed chunks use exactly the same models. ``plan``: JSON-able dict."""
         atomic_write_text(self.root / PLAN, json.dumps(plan, sort_keys=True))
 
     def load_plan(self) -> dict | None:
+        """The stored family plan, or None (none stored, or unreadable)."""
         try:
             return json.loads((self.root / PLAN).read_text())
         except (OSError, ValueError):
@@ -99,6 +121,7 @@ class ChunkStore:
 
     # -- chunks -------------------------------------------------------------------------
     def path(self, i: int) -> Path:
+        """File of chunk ``i``."""
         return self.root / f"chunk_{i:05d}.npz"
 
     def _readable(self, i: int) -> bool:
@@ -113,7 +136,7 @@ class ChunkStore:
         return rows["theta"].shape == (stop - start,)
 
     def write(self, i: int, rows: dict) -> Path:
-        """Write chunk ``i`` atomically."""
+        """Write chunk ``i`` (rows: its table) atomically; returns the file written."""
         arrays = {name: np.asarray(rows[name], dtype=float) for name in NUMERIC}
         for name in TEXT_COLUMNS:
             arrays[name] = np.asarray(rows[name]).astype(str)
@@ -122,5 +145,6 @@ class ChunkStore:
         return p
 
     def load(self, i: int) -> dict:
+        """The table of chunk ``i`` (dict of arrays)."""
         with np.load(self.path(i), allow_pickle=False) as z:
             return {name: z[name] for name in z.files}

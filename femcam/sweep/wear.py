@@ -65,7 +65,18 @@ class WearSetup:
         return out
 
     def chunk(self, a: int, b: int) -> SlipResult | None:
-        """The SlipResult restricted to rows ``a:b`` (None if wear is not computed)."""
+        """The slip of rows ``a:b`` (a chunk).
+
+        Parameters
+        ----------
+        a, b : int
+            Row range.
+
+        Returns
+        -------
+        femcam.wear.slip.SlipResult or None
+            None if wear is not computed.
+        """
         if self.slip is None:
             return None
         s = self.slip
