@@ -3,6 +3,12 @@
 Each check returns the value as ``float`` (or a float array) and raises
 :class:`femcam.errors.InputError` with one message that names the parameter, its value and
 its unit: ``"<name> = <value> <unit>: must be <condition>"``.
+
+Parameters common to every check: ``name`` (str, the parameter as the user wrote it: an API
+argument, a CLI flag or a scene key), ``value`` (the input), ``unit`` (str, shown after the
+value; "" for none) and the bounds of the condition (``lo``, ``hi``, options). Returns: the
+checked value (``float``, ``int``, ``str`` or ``ndarray``, as each name says). Import it as
+``from femcam import _validate`` (one name everywhere).
 """
 
 from __future__ import annotations

@@ -41,6 +41,7 @@ class _VersionAction(argparse.Action):
 
 
 def build_parser() -> argparse.ArgumentParser:
+    """The ``femcam`` parser with one sub-parser per module of :data:`SUBCOMMANDS`."""
     parser = argparse.ArgumentParser(
         prog="femcam",
         description="Finite-element contact-stress analysis of cam-follower mechanisms.",
@@ -59,7 +60,19 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv=None) -> int:
-    """Entry point of the ``femcam`` console script; returns the exit code."""
+    """Entry point of the ``femcam`` console script.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        Arguments (default ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        Exit code: 0 success, 1 a :class:`~femcam.errors.FemcamError` (printed as one line),
+        2 usage.
+    """
     parser = build_parser()
     args = parser.parse_args(argv)
     if not getattr(args, "func", None):

@@ -38,6 +38,7 @@ COLUMNS = (
 
 
 def register(subparsers) -> None:
+    """Add the ``run`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
     p = subparsers.add_parser(
         "run", help="kinematics, profile and load tables of a scene, with PNG plots",
         description=__doc__.split("\n\n")[0])

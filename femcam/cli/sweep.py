@@ -19,6 +19,7 @@ from ..sweep.options import TOLERANCE_FLOOR
 
 
 def register(subparsers) -> None:
+    """Add the ``sweep`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
     p = subparsers.add_parser(
         "sweep", help="FE contact sweep over cam angle (CSV/NPZ, VTK series, plots)",
         description=__doc__.split("\n\n")[0])

@@ -43,6 +43,7 @@ N_RESIDUALS_SHOWN = 5
 
 
 def register(subparsers) -> None:
+    """Add the ``synth`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
     p = subparsers.add_parser("synth", help="knife-edge cam curve by potential-energy FE (seed 003)",
                               description=__doc__.split("\n\n")[0])
     p.add_argument("scene", nargs="?", help="scene TOML with a knife_edge follower")
@@ -98,6 +99,7 @@ def _residual_tail(history, n=N_RESIDUALS_SHOWN) -> str:
 
 
 def run(args) -> int:
+    """``femcam synth``: synthesise, compare with the direct profile, write CSV/PNG; exit code."""
     name, program, Rb = _case(args)
     Rb, rb_source = _base_radius(args.base_radius_mm, Rb, program,
                                  "seed 003 case" if args.case else "scene")

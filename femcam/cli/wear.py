@@ -39,6 +39,7 @@ from ..wear.seed000 import PAPER_LAWS, format_table3, seed000_table, table_rows_
 
 
 def register(subparsers) -> None:
+    """Add the ``wear`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
     p = subparsers.add_parser("wear", help="Archard wear: seed 000's table, or a wear map of a scene",
                               description=__doc__.split("\n\n")[0])
     sub = p.add_subparsers(dest="wear_command", metavar="WHAT")

@@ -348,10 +348,8 @@ def verify_families(F, rho, theta, cp: ContactParams, options: SweepOptions,
 
     Returns
     -------
-    family : ndarray of int, shape (n,)
-        Family id per angle (-1: no contact).
-    refs : dict[int, tuple[float, float]]
-        ``refs[fid] = (rho_ref (m), a_ref (m))``.
+    family, refs
+        As :func:`plan_families`, for the verified families.
     records : list of FamilyRecord
         One per family, ids in order.
     """

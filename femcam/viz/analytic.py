@@ -5,6 +5,8 @@ curvature, contact force, and the cam shape. matplotlib is imported inside each 
 Every function takes a :class:`femcam.scene.SceneState` (``st``) and a PNG path and returns
 the path. Labels carry units: mm, m/s, m/s^2, m/s^3, deg, N. :func:`plot_laws` (the
 normalised motion laws, ``docs/img/kinematics_laws.png``) needs no scene.
+
+Parameters and returns of the ``plot_*`` functions: see :mod:`femcam.viz`.
 """
 
 from __future__ import annotations
@@ -15,15 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from ..kinematics import law
-
-
-def _plt():
-    import matplotlib  # lazy: matplotlib is heavy and only the plots need it
-
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
-
-    return plt
+from ._mpl import pyplot
 
 
 def _deg(st):
@@ -34,7 +28,7 @@ def _save(fig, path):
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=100)
-    _plt().close(fig)
+    pyplot().close(fig)
     return path
 
 
@@ -57,7 +51,7 @@ def _xaxis(ax, th):
 
 def plot_svaj(st, path, title: str = ""):
     """Four stacked panels: lift s (mm), velocity v (m/s), acceleration a (m/s^2), jerk j (m/s^3)."""
-    plt = _plt()
+    plt = pyplot()
     th = _deg(st)
     fig, axs = plt.subplots(4, 1, sharex=True, figsize=(7.0, 8.0))
     data = [(np.asarray(st.s) * 1e3, "s (mm)"), (st.v, "v (m/s)"), (st.a, "a (m/s$^2$)"),
@@ -75,7 +69,7 @@ def plot_svaj(st, path, title: str = ""):
 
 def plot_pressure_angle(st, path, title: str = "", limit_deg: float = 30.0):
     """Pressure angle phi (deg) with the +-limit lines (30 deg by default)."""
-    plt = _plt()
+    plt = pyplot()
     th = _deg(st)
     fig, ax = plt.subplots(figsize=(7.0, 3.4))
     ax.plot(th, np.degrees(st.phi), lw=1.4)
@@ -91,7 +85,7 @@ def plot_rho(st, path, title: str = "", Rr: float = 0.0, clip_mm: float | None =
     """Cam-surface radius of curvature rho (mm); concave parts are negative. Near an inflection
     |rho| grows without bound, so values beyond ``clip_mm`` (default 4 x the median convex
     radius) are clipped and marked."""
-    plt = _plt()
+    plt = pyplot()
     th = _deg(st)
     rho = np.asarray(st.rho, float) * 1e3
     fin = np.isfinite(rho)
@@ -121,7 +115,7 @@ def plot_rho(st, path, title: str = "", Rr: float = 0.0, clip_mm: float | None =
 
 def plot_contact_force(st, path, title: str = ""):
     """Contact force Fc (N, seed 002 eq. 11) with lift-off (Fc <= 0) shaded."""
-    plt = _plt()
+    plt = pyplot()
     th = _deg(st)
     fig, ax = plt.subplots(figsize=(7.0, 3.4))
     ax.plot(th, st.Fc, lw=1.4, color="C2")
@@ -138,7 +132,7 @@ def plot_contact_force(st, path, title: str = ""):
 
 def plot_cam(st, path, title: str = ""):
     """Cam shape (cam frame, mm) with the pitch curve, base circle and undercut points."""
-    plt = _plt()
+    plt = pyplot()
     p = st.profile
     fig, ax = plt.subplots(figsize=(5.0, 5.0))
     ax.plot(np.r_[p.x, p.x[:1]] * 1e3, np.r_[p.y, p.y[:1]] * 1e3, lw=1.6, label="cam surface")
@@ -188,7 +182,7 @@ def plot_laws(path, names=LAWS_FIGURE, n: int = 401, title: str = ""):
 
         python -c "from femcam.viz.analytic import plot_laws; plot_laws('docs/img/kinematics_laws.png')"
     """
-    plt = _plt()
+    plt = pyplot()
     u = np.linspace(0.0, 1.0, n)
     fig, axs = plt.subplots(2, 2, sharex=True, figsize=(6.4, 4.2))
     panels = [("s", "s (lift / h)"), ("v", "v = ds/du"), ("a", "a = d\u00b2s/du\u00b2"),

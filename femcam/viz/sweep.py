@@ -21,26 +21,19 @@ from pathlib import Path
 
 import numpy as np
 
-
-def _plt():
-    import matplotlib  # lazy: matplotlib is heavy and only the plots need it
-
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
-
-    return plt
+from ._mpl import pyplot
 
 
 def _table(result):
     """``(pyplot, table, cam angle in degrees)`` of a sweep result."""
     t = result.table
-    return _plt(), t, np.degrees(t["theta"])
+    return pyplot(), t, np.degrees(t["theta"])
 
 
 def _save(fig, path: Path) -> str:
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=90)
-    _plt().close(fig)
+    pyplot().close(fig)
     return str(path)
 
 
@@ -167,7 +160,7 @@ def plot_surface_worst(profile: dict, path) -> str:
     str
         The path written.
     """
-    plt = _plt()
+    plt = pyplot()
     fig, axs = plt.subplots(1, 3, figsize=(11, 3.4), sharex=True)
     a = profile["a_hertz"]
     for ax, name, label in zip(axs, ("sx", "sz", "txz"),

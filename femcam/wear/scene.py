@@ -57,8 +57,20 @@ def tip_scene(scene, tip_radius: float | None):
 
 
 def scene_tip_radius(scene, tip_radius: float | None = None) -> float | None:
-    """The tip radius (m) to use: ``tip_radius`` (checked > 0 for a knife edge), else the
-    scene's ``[wear] tip_radius_mm`` (converted to m by :func:`femcam.wear.options.wear_options`)."""
+    """The tip radius to use.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+    tip_radius : float, optional
+        Tip radius (m), checked > 0 for a knife edge; default the scene's ``[wear]
+        tip_radius_mm`` (converted to m by :func:`femcam.wear.options.wear_options`).
+
+    Returns
+    -------
+    float or None
+        m.
+    """
     if tip_radius is None:
         return wear_options(scene).get("tip_radius_mm")
     if isinstance(scene.follower, KnifeEdgeFollower):
