@@ -129,7 +129,18 @@ class BodyMesh:
 
 @dataclass(frozen=True)
 class ContactMesh:
-    """The two body meshes and the parameters they were built with."""
+    """The two body meshes and the parameters they were built with.
+
+    Attributes
+    ----------
+    cam, roller : BodyMesh
+        The roller mirrored above y = 0.
+    Rr, rho : float
+        Roller and cam radii (m; rho < 0 concave, inf flat).
+    a_ref, h : float
+        Reference half-width and fine element size (m).
+    options : MeshOptions
+    """
 
     cam: BodyMesh
     roller: BodyMesh

@@ -186,7 +186,31 @@ class _Checker:
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class SceneState:
-    """The analytic chain at cam angles ``theta`` (rad); SI units throughout."""
+    """The analytic chain at cam angles ``theta``; SI units throughout.
+
+    Attributes
+    ----------
+    theta : ndarray, shape (n,), float
+        Cam angles (rad).
+    s, v, a, j : ndarray, shape (n,), float
+        Lift (m), velocity (m/s), acceleration (m/s^2), jerk (m/s^3) at ``omega``.
+    s1, s2 : ndarray, shape (n,), float
+        ds/dtheta (m/rad), d2s/dtheta2 (m/rad^2).
+    phi : ndarray, shape (n,), float
+        Pressure angle (rad).
+    rho : ndarray, shape (n,), float
+        Cam surface radius of curvature at the contact (m; < 0 concave, inf flat).
+    Fc : ndarray, shape (n,), float
+        Contact force (N; <= 0 at lift-off).
+    liftoff : ndarray, shape (n,), bool
+        Follower off the cam.
+    contact_x, contact_y : ndarray, shape (n,), float
+        Contact point in the cam frame (m).
+    profile : femcam.profile.CamProfile
+    loads : femcam.loads.LoadResult
+    undercut_intervals : list of (float, float)
+        Undercut angle intervals of the whole revolution (rad), from the dense check.
+    """
 
     theta: np.ndarray
     s: np.ndarray
@@ -216,9 +240,31 @@ class SceneState:
 class Scene:
     """A cam-follower case in SI units (built by :func:`load_scene`).
 
-    ``length`` is the axial contact length (face width / cam thickness, m); ``cam`` and
-    ``roller`` are the cam and follower materials; ``fe`` and ``wear`` are the optional
-    pass-through tables, ``raw`` the parsed TOML.
+    Attributes
+    ----------
+    name : str
+    program : femcam.kinematics.CamProgram
+    follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
+    dynamics : femcam.loads.FollowerDynamics
+    omega : float
+        Cam speed (rad/s).
+    cam, roller : femcam.materials.Material
+        Cam and follower materials.
+    length : float
+        Axial contact length (face width / cam thickness, m).
+    mu : float
+        Friction coefficient.
+    plane : str
+        ``"strain"`` or ``"stress"``.
+    sliding : str or None
+        ``"+x"`` or ``"-x"``: direction of the friction traction on the cam.
+    description, source : str
+    fe, wear : dict
+        The optional pass-through tables (``wear`` is checked by :mod:`femcam.wear.options`).
+    source_path : str
+        The scene file ("" if built in code).
+    raw : dict
+        The parsed TOML.
     """
 
     name: str
