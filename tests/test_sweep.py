@@ -117,6 +117,8 @@ def test_bad_options_are_input_errors(scene):
         sweep(scene, angles=[0.0], workers="many", method="hertz")
     with pytest.raises(InputError, match=r"workers = 2.5 processes: must be an integer >= 1"):
         sweep(scene, angles=[0.0], workers=2.5, method="hertz")
+    with pytest.raises(InputError, match=r"chunk_delay_s = -1 s: must be >= 0"):
+        sweep(scene, angles=[0.0], chunk_delay_s=-1, method="hertz")
 
 
 def test_auto_workers_uses_processes_only_when_they_pay():

@@ -91,6 +91,7 @@ class _Run:
     out: Path | None
     resume: bool
     bounds: list
+    delay_s: float = 0.0
     shash: str = ""
     contact: np.ndarray | None = None
     rows0: dict | None = None
@@ -157,14 +158,14 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
     """
     t_start = time.perf_counter()
     run = _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume, workers,
-                   vtk_every, scene_path)
+                   vtk_every, scene_path, chunk_delay_s)
     _analytic(run)
     t_analytic = time.perf_counter() - t_start
     _open_store(run)
     t0 = time.perf_counter()
     _plan(run)
     t_verify = time.perf_counter() - t0
-    tasks, task_chunk = _tasks(run, float(_validate.nonnegative("chunk_delay_s", chunk_delay_s, "s")))
+    tasks, task_chunk = _tasks(run)
     workers, workers_note = _choose_workers(run, tasks, task_chunk, scheduler, client)
     t0 = time.perf_counter()
     table = _compute(run, tasks, task_chunk, workers, scheduler, client, progress)
@@ -191,7 +192,7 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
 
 
 def _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume, workers,
-             vtk_every, scene_path) -> _Run:
+             vtk_every, scene_path, chunk_delay_s) -> _Run:
     """Check the inputs; load the scene file."""
     if isinstance(scene, (str, Path)):
         scene_path = scene
@@ -206,10 +207,12 @@ def _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume
                         chunk_size=chunk_size, vtk_every=vtk_every if out is not None else 0)
     if resume and out is None:
         raise _validate.fail("resume", resume, "", "needs an output directory (out)")
+    delay = _validate.nonnegative("chunk_delay_s", chunk_delay_s, "s")
     n = angles.size
     bounds = [(i, min(i + opts.chunk_size, n)) for i in range(0, n, opts.chunk_size)]
     return _Run(scene=scene, scene_path=scene_path, angles=angles, opts=opts, workers=workers,
-                out=Path(out) if out is not None else None, resume=bool(resume), bounds=bounds)
+                out=Path(out) if out is not None else None, resume=bool(resume), bounds=bounds,
+                delay_s=delay)
 
 
 def _analytic(run: _Run) -> None:
@@ -217,12 +220,13 @@ def _analytic(run: _Run) -> None:
     run.rows0, st0 = analytic_rows(run.scene, run.angles)
     run.contact = contact_mask(run.rows0, st0)
     run.wear = wear_setup(run.scene, run.angles, st0)
-    run.shash = _scene_hash(run.scene, run.scene_path)
 
 
 def _open_store(run: _Run) -> None:
-    """The on-disk chunk store (with ``out``): finished chunks on resume, stale files removed."""
+    """The scene hash; the on-disk chunk store (with ``out``): finished chunks on resume, stale
+    files removed."""
     n = run.angles.size
+    run.shash = _scene_hash(run.scene, run.scene_path)
     run.vtk_mask = np.zeros(n, bool)
     if run.out is None:
         return
@@ -262,7 +266,7 @@ def _plan(run: _Run) -> None:
                              "records": [r.to_dict() for r in run.records]})
 
 
-def _tasks(run: _Run, delay_s: float) -> tuple[list[ChunkTask], list[int]]:
+def _tasks(run: _Run) -> tuple[list[ChunkTask], list[int]]:
     """One task per chunk still to compute, and its chunk number."""
     refs = {r.id: (r.rho_ref, r.a_ref) for r in run.records}
     vtk_dir = str(run.out / "vtk") if (run.out is not None and run.opts.vtk_every) else None
@@ -274,7 +278,7 @@ def _tasks(run: _Run, delay_s: float) -> tuple[list[ChunkTask], list[int]]:
         sub = {int(f): refs[int(f)] for f in np.unique(fam) if f >= 0}
         tasks.append(ChunkTask(index=c, scene=run.scene, theta=run.angles[a:b], options=run.opts,
                                family=fam, refs=sub, vtk_dir=vtk_dir, vtk_mask=run.vtk_mask[a:b],
-                               slip=run.wear.chunk(a, b), wear_k=run.wear.k, delay_s=delay_s))
+                               slip=run.wear.chunk(a, b), wear_k=run.wear.k, delay_s=run.delay_s))
         task_chunk.append(c)
     return tasks, task_chunk
 
