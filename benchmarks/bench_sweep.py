@@ -158,12 +158,9 @@ def check_correct(tab, what):
 
 def naive(scene, theta, a_over_h=10.0):
     """Fresh model per angle (exact rho and Hertz a), timed per angle."""
-    from femcam.sweep.pipeline import (
-        SweepOptions,
-        build_model,
-        contact_params,
-        hertz_half_width_any,
-    )
+    from femcam.sweep.cache import build_model
+    from femcam.sweep.families import hertz_half_width
+    from femcam.sweep.options import SweepOptions, contact_params
 
     cp = contact_params(scene)
     st = scene.analyse(theta)
@@ -171,7 +168,7 @@ def naive(scene, theta, a_over_h=10.0):
     rows = []
     t0 = time.perf_counter()
     for F, rho in zip(st.Fc, st.rho, strict=True):
-        a = float(hertz_half_width_any(np.array([F]), np.array([rho]), cp)[0])
+        a = float(hertz_half_width(np.array([F]), np.array([rho]), cp)[0])
         m = build_model(cp, float(rho), a, opts)
         r = m.solve(F=float(F), rho=float(rho), mu=cp.mu, sliding=cp.sliding)
         rows.append((r.p0, r.a, r.von_mises_max.value, r.tau1_max.value, r.hertz_p0, r.hertz_a))

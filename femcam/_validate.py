@@ -3,6 +3,12 @@
 Each check returns the value as ``float`` (or a float array) and raises
 :class:`femcam.errors.InputError` with one message that names the parameter, its value and
 its unit: ``"<name> = <value> <unit>: must be <condition>"``.
+
+Parameters common to every check: ``name`` (str, the parameter as the user wrote it: an API
+argument, a CLI flag or a scene key), ``value`` (the input), ``unit`` (str, shown after the
+value; "" for none) and the bounds of the condition (``lo``, ``hi``, options). Returns: the
+checked value (``float``, ``int``, ``str`` or ``ndarray``, as each name says). Import it as
+``from femcam import _validate`` (one name everywhere).
 """
 
 from __future__ import annotations
@@ -120,3 +126,74 @@ def in_range_array(name: str, value, lo: float, hi: float, unit: str = "", *,
     if np.any(bad):
         in_range(name, float(arr[bad].flat[0]), lo, hi, unit, lo_open=lo_open, hi_open=hi_open)
     return arr
+
+
+def workers(name: str, value) -> int | str:
+    """A worker count: an integer >= 1, or ``"auto"`` (any case; also a numeric string).
+
+    Parameters
+    ----------
+    name : str
+        Parameter name for the message (``"workers"``, ``"--workers"``).
+    value : int, float or str
+        The requested number of processes.
+
+    Returns
+    -------
+    int or str
+        The count, or ``"auto"``.
+
+    >>> workers("workers", " AUTO "), workers("workers", "2"), workers("workers", 3.0)
+    ('auto', 2, 3)
+    """
+    if isinstance(value, str):
+        text = value.strip().lower()
+        if text == "auto":
+            return "auto"
+        try:
+            value = float(text)
+        except ValueError:
+            raise fail(name, value, "processes", "must be an integer >= 1 or 'auto'") from None
+    w = number(name, value, "processes")
+    if w < 1 or w != int(w):
+        raise fail(name, value, "processes", "must be an integer >= 1 or 'auto'")
+    return int(w)
+
+
+def angles_deg(name: str, spec, max_angles: int = 10_000_000) -> np.ndarray:
+    """``"start:stop:step"`` in degrees (stop exclusive, like ``numpy.arange``) -> radians.
+
+    Parameters
+    ----------
+    name : str
+        Parameter name for the message (``"--angles-deg"``).
+    spec : str
+        ``start:stop:step`` (deg), finite, ``step > 0``, ``stop > start``.
+    max_angles : int
+        Largest accepted number of angles.
+
+    Returns
+    -------
+    ndarray
+        The angles (rad).
+
+    >>> np.degrees(angles_deg("--angles-deg", "0:90:30")).round(6).tolist()
+    [0.0, 30.0, 60.0]
+    """
+    parts = str(spec).split(":")
+    if len(parts) != 3:
+        raise fail(name, spec, "deg", "must be start:stop:step, e.g. 0:360:1")
+    try:
+        start, stop, step = (float(p) for p in parts)
+    except ValueError:
+        raise fail(name, spec, "deg", "must be three numbers start:stop:step") from None
+    if not all(np.isfinite([start, stop, step])):
+        raise fail(name, spec, "deg", "must be finite numbers")
+    if step <= 0:
+        raise fail(name, spec, "deg", "step must be > 0")
+    if stop <= start:
+        raise fail(name, spec, "deg", "stop must be > start")
+    n = int(np.ceil((stop - start) / step - 1e-9))
+    if n > max_angles:
+        raise fail(name, spec, "deg", f"gives more than {max_angles:.0e} angles")
+    return np.radians(start + step * np.arange(n))

@@ -1,4 +1,10 @@
-"""Writers: sweep tables (CSV with a provenance header, NPZ), VTU fields and PVD series.
+"""Writers: result tables (CSV with a provenance header, NPZ), VTU fields, PVD series, and the
+atomic file writes every other writer (the sweep's chunk store included) goes through.
+
+This module knows no sweep: a table is a dict of arrays written through a column list
+``[(internal SI name, CSV column name, factor SI -> CSV unit), ...]`` that the caller owns
+(:data:`femcam.sweep.result.COLUMNS` for a sweep), so the writers sit below the sweep in the
+layer order (docs/architecture.md).
 
 * CSV: the first line is the header row, whose column names carry the unit (``theta_deg``,
   ``p0_fe_MPa``, ...); then ``# key: value`` comment lines (femcam/gmsh/scikit-fem/numpy
@@ -18,32 +24,97 @@ from __future__ import annotations
 
 import csv
 import datetime as _dt
-import hashlib
 import importlib
 import io as _io
 import json
+import os
 import platform
 import shlex
 import sys
+import tempfile
+from collections.abc import Callable, Sequence
 from pathlib import Path
-from xml.sax.saxutils import quoteattr
+from xml.sax.saxutils import escape, quoteattr
 
 import numpy as np
 
-from .sweep.result import COLUMNS, NUMERIC, TEXT_COLUMNS
-from .sweep.store import _atomic_write_bytes, atomic_write_text
+from .fe.export import scene_arrays
+from .hertz import LineContact
+
+#: one column of a written table: (internal SI name, CSV column name, factor SI -> CSV unit)
+Column = tuple[str, str, float]
 
 
-def file_hash(path) -> str:
-    """SHA-256 of a file's bytes."""
-    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+# ---------------------------------------------------------------------------------------------
+# atomic writes
+# ---------------------------------------------------------------------------------------------
+def _umask() -> int:
+    """The process umask, read without changing it where possible (Linux /proc), else by the
+    classic set-and-restore."""
+    try:
+        with open("/proc/self/status") as f:
+            for line in f:
+                if line.startswith("Umask:"):
+                    return int(line.split()[1], 8)
+    except (OSError, ValueError, IndexError):
+        pass
+    old = os.umask(0o022)
+    os.umask(old)
+    return old
 
 
+def atomic_write_bytes(path, write: Callable) -> None:
+    """Call ``write(fileobj)`` on a temp file next to ``path``, fsync, then rename over ``path``.
+
+    Parameters
+    ----------
+    path : str or Path
+        Destination file; a reader sees either the old file or the whole new one.
+    write : callable
+        ``write(f)`` writes the content to the binary file object ``f``.
+
+    Notes
+    -----
+    The file gets the mode an ordinary ``open(path, "w")`` would give (``0o666 & ~umask``), not
+    mkstemp's private 0600.
+    """
+    path = Path(path)
+    fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as f:
+            write(f)
+            f.flush()
+            os.fsync(f.fileno())
+        os.chmod(tmp, 0o666 & ~_umask())
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+
+
+def atomic_write_text(path, text: str) -> None:
+    """Write ``text`` (UTF-8, str) to ``path`` (str or Path) atomically
+    (:func:`atomic_write_bytes`)."""
+    atomic_write_bytes(Path(path), lambda f: f.write(text.encode("utf-8")))
+
+
+# ---------------------------------------------------------------------------------------------
+# provenance
+# ---------------------------------------------------------------------------------------------
 def versions() -> dict[str, str]:
-    """Versions of femcam and the libraries that shape the numbers (imported lazily)."""
-    from . import __version__
+    """Versions of femcam and the libraries that shape the numbers.
 
-    out = {"femcam": __version__, "python": platform.python_version()}
+    Returns
+    -------
+    dict[str, str]
+        ``{"femcam", "python", "numpy", "scipy", "scikit-fem", "gmsh", "meshio"}`` -> version.
+    """
+    # the package's own version: femcam/__init__.py is always imported before this submodule
+    # (a lookup, not an import: the root package sits above every layer)
+    out = {"femcam": sys.modules[__package__].__version__, "python": platform.python_version()}
     for mod, name in (("numpy", "numpy"), ("scipy", "scipy"), ("skfem", "scikit-fem"),
                       ("gmsh", "gmsh"), ("meshio", "meshio")):
         try:
@@ -55,8 +126,24 @@ def versions() -> dict[str, str]:
 
 def provenance(*, scene_path=None, scene_hash=None, command=None, options=None,
                **extra) -> dict:
-    """The provenance record written at the top of every output file (``extra``: further
-    JSON-able entries, e.g. ``families``, ``wear``)."""
+    """The provenance record written at the top of every output file.
+
+    Parameters
+    ----------
+    scene_path, scene_hash : str, optional
+        Scene file and its SHA-256.
+    command : str, optional
+        The command line (default: ``sys.argv``).
+    options : dict, optional
+        JSON-able options of the run.
+    **extra
+        Further JSON-able entries, e.g. ``families``, ``wear`` (``None`` values are dropped).
+
+    Returns
+    -------
+    dict
+        Versions, UTC date, machine, and the entries above.
+    """
     rec = {"versions": versions(),
            "date": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds"),
            "machine": f"{platform.machine()} {platform.system()} {platform.release()}"}
@@ -88,21 +175,45 @@ _CSV_TEXT = str.maketrans({",": ";", "#": "No.", '"': "'", "\n": " ", "\r": " "}
 
 
 def csv_text(value) -> str:
-    """A text field as written to the CSV: no ``,``, ``#``, quotes or line breaks."""
+    """A text field as written to the CSV: no ``,``, ``#``, quotes or line breaks.
+
+    >>> csv_text('a, "b" #1')
+    "a; 'b' No.1"
+    """
     return str(value).translate(_CSV_TEXT)
 
 
-def write_csv(path, table: dict, prov: dict | None = None) -> Path:
-    """Write a sweep table as CSV (unit-suffixed columns, provenance header); atomic."""
+def write_csv(path, table: dict, prov: dict | None = None, *, columns: Sequence[Column],
+              text_columns: Sequence[str] = ()) -> Path:
+    """Write a table as CSV (unit-suffixed columns, provenance header); atomic.
+
+    Parameters
+    ----------
+    path : str or Path
+        Output file.
+    table : dict[str, ndarray]
+        One array per column, SI units, all of one length n.
+    prov : dict, optional
+        Provenance (:func:`provenance`), written as ``# key: value`` lines.
+    columns : sequence of (name, csv_name, factor)
+        Numeric columns in CSV order; ``csv = SI * factor``.
+    text_columns : sequence of str
+        String columns written after the numeric ones (:func:`csv_text`).
+
+    Returns
+    -------
+    Path
+        ``path``.
+    """
     path = Path(path)
     buf = _io.StringIO()
-    names = [c[1] for c in COLUMNS] + list(TEXT_COLUMNS)
+    names = [c[1] for c in columns] + list(text_columns)
     buf.write(",".join(names) + "\n")  # first line: numpy.genfromtxt(names=True) reads it
     for line in _header_lines(prov or {}):
         buf.write(line + "\n")
     n = len(table["theta"])
-    cols = [np.asarray(table[k], dtype=float) * f for k, _, f in COLUMNS]
-    text = [[csv_text(v) for v in np.asarray(table[k]).astype(str)] for k in TEXT_COLUMNS]
+    cols = [np.asarray(table[k], dtype=float) * f for k, _, f in columns]
+    text = [[csv_text(v) for v in np.asarray(table[k]).astype(str)] for k in text_columns]
     for i in range(n):
         buf.write(",".join([f"{c[i]:.10g}" for c in cols] + [t[i] for t in text]) + "\n")
     atomic_write_text(path, buf.getvalue())
@@ -110,7 +221,21 @@ def write_csv(path, table: dict, prov: dict | None = None) -> Path:
 
 
 def read_csv(path) -> tuple[dict, dict]:
-    """Read a CSV written by :func:`write_csv`: ``(columns in CSV units, header dict)``."""
+    """Read a CSV written by :func:`write_csv`.
+
+    Parameters
+    ----------
+    path : str or Path
+        A file written by :func:`write_csv`.
+
+    Returns
+    -------
+    columns : dict[str, ndarray]
+        Numeric columns (float, CSV units) and text columns (str): a column is text when one of
+        its values is not a number.
+    header : dict[str, str]
+        The ``# key: value`` provenance lines.
+    """
     header, rows = {}, []
     with open(path, newline="") as f:
         lines = f.read().splitlines()
@@ -127,32 +252,61 @@ def read_csv(path) -> tuple[dict, dict]:
     cols = {}
     for j, name in enumerate(names):
         vals = [r[j] for r in rows]
-        if name in TEXT_COLUMNS:
-            cols[name] = np.array(vals, dtype=str)
-        else:
+        try:
             cols[name] = np.array(vals, dtype=float)
+        except ValueError:
+            cols[name] = np.array(vals, dtype=str)
     return cols, header
 
 
-def write_npz(path, table: dict, prov: dict | None = None, *, scene_toml: str = "",
-              scene_repr: str = "") -> Path:
-    """The table in SI units (internal names) + ``provenance_json``, ``scene_toml`` (the scene
-    file's text) and ``scene_repr``; atomic."""
-    arrays = {k: np.asarray(table[k], dtype=float) for k in NUMERIC if k in table}
-    for k in TEXT_COLUMNS:
+def write_npz(path, table: dict, prov: dict | None = None, *, numeric: Sequence[str],
+              text_columns: Sequence[str] = (), scene_toml: str = "", scene_repr: str = "") -> Path:
+    """The table in SI units (internal names) plus provenance and scene text; atomic.
+
+    Parameters
+    ----------
+    path : str or Path
+        Output ``.npz``.
+    table : dict[str, ndarray]
+        One array per column (SI).
+    prov : dict, optional
+        Provenance, stored as the JSON string ``provenance_json``.
+    numeric, text_columns : sequence of str
+        Names of the float and the string columns to store.
+    scene_toml, scene_repr : str
+        The scene file's text and the parsed scene's ``repr``.
+
+    Returns
+    -------
+    Path
+        ``path``.
+    """
+    arrays = {k: np.asarray(table[k], dtype=float) for k in numeric if k in table}
+    for k in text_columns:
         arrays[k] = np.asarray(table[k]).astype(str)
     arrays["provenance_json"] = np.array(json.dumps(prov or {}, sort_keys=True))
     arrays["scene_toml"] = np.array(str(scene_toml))
     arrays["scene_repr"] = np.array(str(scene_repr))
     path = Path(path)
-    _atomic_write_bytes(path, lambda f: np.savez_compressed(f, **arrays))
+    atomic_write_bytes(path, lambda f: np.savez_compressed(f, **arrays))
     return path
 
 
 def write_pvd(path, entries) -> Path:
-    """A ParaView collection: ``entries = [(timestep, vtu path), ...]``.
+    """A ParaView collection.
 
-    ``timestep`` is the cam angle in degrees; vtu paths are written relative to the pvd.
+    Parameters
+    ----------
+    path : str or Path
+        Output ``.pvd``.
+    entries : iterable of (float, path)
+        ``(timestep, vtu path)``; the timestep is the cam angle in degrees; vtu paths are
+        written relative to the pvd.
+
+    Returns
+    -------
+    Path
+        ``path``.
     """
     path = Path(path)
     out = ['<?xml version="1.0"?>',
@@ -172,12 +326,28 @@ def write_vtu(path, points, cells, point_data: dict, field_data: dict | None = N
               cell_data: dict | None = None) -> Path:
     """A mesh with point (and cell) data as ``.vtu`` through meshio (atomic write).
 
-    ``points`` (n, 2) or (n, 3) in m; ``cells`` = ``[("triangle", conn), ...]``;
-    ``field_data`` = ``{name: float or 1D array}``: VTK FieldData (one value per file, e.g. the
-    cam angle), which meshio's VTU writer drops, so it is inserted into the XML here (pyvista
-    ``mesh.field_data`` and ParaView read it).
+    Parameters
+    ----------
+    path : str or Path
+        Output ``.vtu``.
+    points : ndarray, shape (n, 2) or (n, 3)
+        Node coordinates (m).
+    cells : list of (str, ndarray)
+        ``[("triangle", conn (nel, 3)), ...]``.
+    point_data : dict[str, ndarray]
+        Arrays of length n.
+    field_data : dict[str, float or 1D array], optional
+        VTK FieldData (one value per file, e.g. the cam angle), which meshio's VTU writer drops,
+        so it is inserted into the XML here (pyvista ``mesh.field_data`` and ParaView read it).
+    cell_data : dict[str, list of ndarray], optional
+        meshio cell data.
+
+    Returns
+    -------
+    Path
+        ``path``.
     """
-    import meshio
+    import meshio  # lazy: meshio pulls in its many format plugins; only VTU writing needs it
 
     pts = np.asarray(points, dtype=float)
     if pts.shape[1] == 2:
@@ -196,8 +366,6 @@ def write_vtu(path, points, cells, point_data: dict, field_data: dict | None = N
 
 def _insert_field_data(path: Path, field_data: dict) -> None:
     """Add a ``<FieldData>`` block (ASCII Float64 arrays) to a VTU written by meshio."""
-    from xml.sax.saxutils import escape
-
     arrays = []
     for name, val in field_data.items():
         v = np.atleast_1d(np.asarray(val, dtype=float)).ravel()
@@ -212,3 +380,91 @@ def _insert_field_data(path: Path, field_data: dict) -> None:
         return
     k += len(tag)
     path.write_bytes(data[:k] + b"\n" + block.encode() + data[k:])
+
+
+# ---------------------------------------------------------------------------------------------
+# VTU of one solved angle (sweep): FE result or analytic Hertz field, plus wear
+# ---------------------------------------------------------------------------------------------
+def vtu_name(theta: float) -> str:
+    """File name of the ``.vtu`` of cam angle ``theta`` (rad): ``angle_<deg>deg.vtu``.
+
+    >>> vtu_name(np.pi / 2)
+    'angle_0090.000deg.vtu'
+    """
+    return f"angle_{np.degrees(theta):08.3f}deg.vtu"
+
+
+def _field_data(wear: dict | None) -> dict:
+    if not wear:
+        return {}
+    return {"theta_deg": wear["theta_deg"], "Fc_N": wear["Fc"], "wear_k_m3_per_N_m": wear["k"],
+            "v_slip_m_s": wear["v_slip"], "V_cam_m_s": wear["V_cam"],
+            "wear_depth_per_rev_m": wear["wear_depth_per_rev"]}
+
+
+def write_fe_vtu(path, r, wear: dict | None = None) -> Path:
+    """Both bodies of a solved angle (:func:`femcam.fe.export.scene_arrays`) plus wear.
+
+    Parameters
+    ----------
+    path : str or Path
+        Output ``.vtu``.
+    r : femcam.fe.ContactResult
+        The solved load case.
+    wear : dict, optional
+        ``{"k" (m^3/(N m)), "v_slip" (m/s), "V_cam" (m/s), "wear_depth_per_rev" (m),
+        "theta_deg" (deg), "Fc" (N)}``. Adds the point data ``wear_rate`` (m/s): Archard's local
+        rate ``k p v_slip`` on the contact surfaces (``p`` = the FE nodal contact pressure), 0
+        elsewhere, and the field data ``theta_deg``, ``Fc_N``, ``wear_k_m3_per_N_m``,
+        ``v_slip_m_s``, ``V_cam_m_s``, ``wear_depth_per_rev_m``.
+
+    Returns
+    -------
+    Path
+        ``path``.
+    """
+    points, cells, cell_type, point_data, body = scene_arrays(r)
+    if wear:
+        point_data = dict(point_data, wear_rate=wear["k"] * np.asarray(point_data["contact_pressure"])
+                          * wear["v_slip"])
+    return write_vtu(path, points, [(cell_type, cells)], point_data, field_data=_field_data(wear),
+                     cell_data={"body": [body]})
+
+
+def write_hertz_vtu(path, hc: LineContact, n: int = 41, wear: dict | None = None) -> Path:
+    """The analytic Hertz field in the cam on a structured grid ``|x| <= 3a``, ``0 <= z <= 3a``.
+
+    Parameters
+    ----------
+    path : str or Path
+        Output ``.vtu``.
+    hc : femcam.hertz.LineContact
+        One (scalar) load case.
+    n : int
+        Grid points in depth (``2 n - 1`` along x).
+    wear : dict, optional
+        As in :func:`write_fe_vtu`; adds ``wear_rate = k p v_slip`` (m/s) on the surface row.
+
+    Returns
+    -------
+    Path
+        ``path``. Point data ``sx, sz, txz, sy, tau1, von_mises, contact_pressure`` (Pa); the cam
+        lies below the surface (``y = -z``).
+    """
+    a = float(hc.a)
+    xs = np.linspace(-3 * a, 3 * a, 2 * n - 1)
+    zs = np.linspace(0.0, 3 * a, n)
+    X, Z = np.meshgrid(xs, zs)
+    sf = hc.stress(X.ravel(), Z.ravel())
+    ids = np.arange(X.size).reshape(Z.shape)
+    quads = np.column_stack([ids[:-1, :-1].ravel(), ids[:-1, 1:].ravel(), ids[1:, 1:].ravel(),
+                             ids[1:, :-1].ravel()])
+    pts = np.column_stack([X.ravel(), -Z.ravel()])  # cam below the surface: y = -z
+    data = {"sx": sf.sx, "sz": sf.sz, "txz": sf.txz, "sy": sf.sy, "tau1": sf.tau1,
+            "von_mises": sf.von_mises}
+    p = np.where(Z == 0.0, hc.pressure(X), 0.0).ravel()
+    data["contact_pressure"] = p
+    if wear:
+        data["wear_rate"] = wear["k"] * p * wear["v_slip"]
+    return write_vtu(path, pts, [("quad", quads)], {k: np.asarray(v, float) for k, v in data.items()},
+                     field_data=_field_data(wear))

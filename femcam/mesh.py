@@ -38,12 +38,16 @@ body; a flat cam needs its ``flat`` switch; no vertex snapping; see its header).
 from __future__ import annotations
 
 import math
+import os
+import threading
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import numpy as np
 
-from . import _validate as chk
+from . import _validate
 from .errors import FemcamError, InputError
+from .hertz.conformity import roller_does_not_fit
 
 #: physical names written into the gmsh model (one set per body)
 PHYSICAL_NAMES = ("roller_contact", "cam_contact", "roller_fixed", "cam_fixed", "roller", "cam")
@@ -70,13 +74,14 @@ class MeshOptions:
     max_size_fraction: float = 0.125
 
     def __post_init__(self):
-        chk.in_range("a_over_h", self.a_over_h, 2.0, 400.0, "")
-        chk.in_range("fine_half_width", self.fine_half_width, 1.2, 20.0, "(x a_ref)")
-        chk.in_range("fine_depth", self.fine_depth, 0.0, 20.0, "(x a_ref)")
-        chk.in_range("growth", self.growth, 0.05, 1.0, "")
+        _validate.in_range("a_over_h", self.a_over_h, 2.0, 400.0, "")
+        _validate.in_range("fine_half_width", self.fine_half_width, 1.2, 20.0, "(x a_ref)")
+        _validate.in_range("fine_depth", self.fine_depth, 0.0, 20.0, "(x a_ref)")
+        _validate.in_range("growth", self.growth, 0.05, 1.0, "")
         if self.domain_over_a is not None:
-            chk.in_range("domain_over_a", self.domain_over_a, 5.0 * self.fine_half_width, 1e7, "(x a_ref)")
-        chk.in_range("max_size_fraction", self.max_size_fraction, 0.01, 0.5, "")
+            _validate.in_range("domain_over_a", self.domain_over_a, 5.0 * self.fine_half_width, 1e7,
+                               "(x a_ref)")
+        _validate.in_range("max_size_fraction", self.max_size_fraction, 0.01, 0.5, "")
 
 
 @dataclass(frozen=True)
@@ -124,7 +129,18 @@ class BodyMesh:
 
 @dataclass(frozen=True)
 class ContactMesh:
-    """The two body meshes and the parameters they were built with."""
+    """The two body meshes and the parameters they were built with.
+
+    Attributes
+    ----------
+    cam, roller : BodyMesh
+        The roller mirrored above y = 0.
+    Rr, rho : float
+        Roller and cam radii (m; rho < 0 concave, inf flat).
+    a_ref, h : float
+        Reference half-width and fine element size (m).
+    options : MeshOptions
+    """
 
     cam: BodyMesh
     roller: BodyMesh
@@ -148,16 +164,13 @@ class ContactMesh:
         the physical names ``roller_contact, cam_contact, roller_fixed, cam_fixed, roller, cam``
         (via meshio; roller nodes follow the cam's). ``path`` must end in ``.msh``. Returns the
         path."""
-        import os
-        from pathlib import Path
-
-        import meshio
+        import meshio  # lazy: meshio loads its many format plugins; only .msh export needs it
 
         if not isinstance(path, str | os.PathLike):
-            raise chk.fail("path", path, "", "must be a file path (str or os.PathLike) ending in .msh")
+            raise _validate.fail("path", path, "", "must be a file path (str or os.PathLike) ending in .msh")
         path = Path(path)
         if path.suffix.lower() != ".msh":
-            raise chk.fail("path", str(path), "", "must end in .msh (gmsh 2.2 ASCII mesh)")
+            raise _validate.fail("path", str(path), "", "must end in .msh (gmsh 2.2 ASCII mesh)")
         pts, cells, phys, names = [], [], [], {}
         off = 0
         for b in (self.cam, self.roller):
@@ -209,10 +222,29 @@ def _mesh_body(gmsh, name: str, R: float, L: float, a_ref: float, opts: MeshOpti
     if W <= xf * 1.5:
         raise InputError(f"body size L = {L:g} m is too small for the fine zone |x| <= {xf:g} m "
                          f"({name}); increase domain_over_a or reduce fine_half_width")
+    lc = L * opts.max_size_fraction
     gmsh.model.add(name)
+    arcs, bottom, surface = _geometry(gmsh, name, R, L, W, xf, lc)
+    geo = gmsh.model.geo
+    geo.mesh.setTransfiniteCurve(arcs[1], n_fine + 1)
+    geo.synchronize()
+    gmsh.model.addPhysicalGroup(1, arcs, name=f"{name}_contact")
+    gmsh.model.addPhysicalGroup(1, [bottom], name=f"{name}_fixed")
+    gmsh.model.addPhysicalGroup(2, [surface], name=name)
+    _size_field(gmsh, arcs[1], n_fine, h, lc, a_ref, opts)
+    gmsh.model.mesh.generate(2)
+    pts, tri, fine, surf, fixed, groups = _extract(gmsh, surface, arcs, bottom)
+    gmsh.model.remove()
+    return _body_mesh(name, R, L, pts, tri, fine, surf, fixed, groups, n_fine, xf, h)
+
+
+def _geometry(gmsh, name: str, R: float, L: float, W: float, xf: float, lc: float):
+    """The body's outline: three surface arcs (the middle one is the fine zone ``|x| <= xf``),
+    the sides and the fixed bottom at ``y = -L``. Returns ``(arcs, bottom, surface)`` tags."""
     geo = gmsh.model.geo
     ys = -surface_height(np.array([-W, -xf, xf, W]), R)
-    lc = L * opts.max_size_fraction
+    if not (ys[3] > -L + 1e-12 * L and ys[0] > -L + 1e-12 * L):
+        raise InputError(f"body {name}: arc reaches the fixed support; use a larger |R| or smaller W")
     p = [geo.addPoint(x, y, 0.0, lc) for x, y in zip((-W, -xf, xf, W), ys, strict=True)]
     if math.isinf(R):
         arcs = [geo.addLine(p[0], p[1]), geo.addLine(p[1], p[2]), geo.addLine(p[2], p[3])]
@@ -221,23 +253,19 @@ def _mesh_body(gmsh, name: str, R: float, L: float, a_ref: float, opts: MeshOpti
         arcs = [geo.addCircleArc(p[i], c, p[i + 1]) for i in range(3)]
     br = geo.addPoint(W, -L, 0.0, lc)
     bl = geo.addPoint(-W, -L, 0.0, lc)
-    right = geo.addLine(p[3], br) if ys[3] > -L + 1e-12 * L else None
-    bottom = geo.addLine(br if right else p[3], bl)
-    left = geo.addLine(bl, p[0]) if ys[0] > -L + 1e-12 * L else None
-    # loop must be closed: if a side has zero length, the arc end is the bottom corner
-    loop = arcs + [c_ for c_ in (right, bottom, left) if c_ is not None]
-    if right is None or left is None:
-        raise InputError(f"body {name}: arc reaches the fixed support; use a larger |R| or smaller W")
-    cl = geo.addCurveLoop(loop)
-    s = geo.addPlaneSurface([cl])
-    geo.mesh.setTransfiniteCurve(arcs[1], n_fine + 1)
-    geo.synchronize()
-    gmsh.model.addPhysicalGroup(1, arcs, name=f"{name}_contact")
-    gmsh.model.addPhysicalGroup(1, [bottom], name=f"{name}_fixed")
-    gmsh.model.addPhysicalGroup(2, [s], name=name)
+    right = geo.addLine(p[3], br)
+    bottom = geo.addLine(br, bl)
+    left = geo.addLine(bl, p[0])
+    cl = geo.addCurveLoop(arcs + [right, bottom, left])
+    return arcs, bottom, geo.addPlaneSurface([cl])
+
+
+def _size_field(gmsh, fine_curve, n_fine: int, h: float, lc: float, a_ref: float,
+                opts: MeshOptions) -> None:
+    """Element size ``h`` within ``fine_depth * a_ref`` of the fine zone, growing to ``lc``."""
     f = gmsh.model.mesh.field
     fd = f.add("Distance")
-    f.setNumbers(fd, "CurvesList", [arcs[1]])
+    f.setNumbers(fd, "CurvesList", [fine_curve])
     f.setNumber(fd, "Sampling", max(2 * n_fine, 100))
     ft = f.add("Threshold")
     f.setNumber(ft, "InField", fd)
@@ -251,13 +279,16 @@ def _mesh_body(gmsh, name: str, R: float, L: float, a_ref: float, opts: MeshOpti
     gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
     gmsh.option.setNumber("Mesh.Algorithm", 6)  # Frontal-Delaunay: good quality graded meshes
     gmsh.option.setNumber("Mesh.ElementOrder", 1)
-    gmsh.model.mesh.generate(2)
 
+
+def _extract(gmsh, surface, arcs, bottom):
+    """Nodes, triangles, node sets (fine zone, surface, fixed) and physical groups of the meshed
+    model, in gmsh's node numbering mapped to 0-based indices."""
     tags, xyz, _ = gmsh.model.mesh.getNodes()
     pts = xyz.reshape(-1, 3)[:, :2]
     index = np.full(int(tags.max()) + 1, -1, dtype=np.int64)
     index[tags.astype(np.int64)] = np.arange(tags.size)
-    _, _, ntri = gmsh.model.mesh.getElements(2, s)
+    _, _, ntri = gmsh.model.mesh.getElements(2, surface)
     tri = index[np.asarray(ntri[0], dtype=np.int64)].reshape(-1, 3)
 
     def curve_nodes(curves):
@@ -267,9 +298,6 @@ def _mesh_body(gmsh, name: str, R: float, L: float, a_ref: float, opts: MeshOpti
             out.append(index[nt.astype(np.int64)])
         return np.unique(np.concatenate(out))
 
-    fine = curve_nodes([arcs[1]])
-    surf = curve_nodes(arcs)
-    fixed = curve_nodes([bottom])
     groups = {}
     for gdim, gtag in gmsh.model.getPhysicalGroups():
         blocks = []
@@ -279,8 +307,11 @@ def _mesh_body(gmsh, name: str, R: float, L: float, a_ref: float, opts: MeshOpti
                 nn = gmsh.model.mesh.getElementProperties(et)[3]
                 blocks.append(index[np.asarray(nt, dtype=np.int64)].reshape(-1, nn))
         groups[gmsh.model.getPhysicalName(gdim, gtag)] = (gdim, int(gtag), np.concatenate(blocks))
-    gmsh.model.remove()
+    return pts, tri, curve_nodes([arcs[1]]), curve_nodes(arcs), curve_nodes([bottom]), groups
 
+
+def _body_mesh(name, R, L, pts, tri, fine, surf, fixed, groups, n_fine, xf, h) -> BodyMesh:
+    """Drop unreferenced nodes, snap the fine zone to the exact arc, orient triangles."""
     # drop unreferenced nodes (arc centres, geometry-only points)
     used = np.unique(tri)
     renum = np.full(pts.shape[0], -1, dtype=np.int64)
@@ -334,29 +365,27 @@ def build_contact_mesh(*, Rr: float, rho: float, a_ref: float,
     a_ref the contact half-width the mesh is graded for (m).
     """
     opts = options or MeshOptions()
-    Rr = chk.positive("Rr", Rr, "m")
-    a_ref = chk.positive("a_ref", a_ref, "m")
+    Rr = _validate.positive("Rr", Rr, "m")
+    a_ref = _validate.positive("a_ref", a_ref, "m")
     rho = float(rho)
     if math.isnan(rho) or rho == 0.0:
-        raise chk.fail("rho", rho, "m", "must be nonzero (use inf for a flat cam)")
-    if math.isfinite(rho) and rho < 0 and -rho <= Rr:
-        raise chk.fail("rho", rho, "m", f"a concave cam needs |rho| > Rr = {Rr:g} m (else the roller "
+        raise _validate.fail("rho", rho, "m", "must be nonzero (use inf for a flat cam)")
+    if roller_does_not_fit(rho, Rr):
+        raise _validate.fail("rho", rho, "m", f"a concave cam needs |rho| > Rr = {Rr:g} m (else the roller "
                      "does not fit)")
     if opts.fine_half_width * a_ref > 0.5 * Rr:
-        raise chk.fail("a_ref", a_ref, "m", f"must be <= Rr/(2 fine_half_width) = "
+        raise _validate.fail("a_ref", a_ref, "m", f"must be <= Rr/(2 fine_half_width) = "
                      f"{Rr / (2 * opts.fine_half_width):g} m: the contact zone would not be small "
                      "against the roller (far outside Hertz theory and this mesh layout)")
     cap = None if opts.domain_over_a is None else opts.domain_over_a * a_ref
     L_roller = _body_size(Rr, cap, math.inf)
     L_cam = _body_size(rho, cap, Rr)
-    import gmsh
+    import gmsh  # lazy: gmsh is a large native library, loaded only to build meshes
 
     init_here = not gmsh.isInitialized()
     if init_here:
         # gmsh installs a SIGINT handler, which Python allows only in the main thread (Dask
         # runs tasks in worker threads)
-        import threading
-
         gmsh.initialize(["-nopopup"], readConfigFiles=False,
                         interruptible=threading.current_thread() is threading.main_thread())
     try:

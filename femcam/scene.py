@@ -133,7 +133,8 @@ class _Checker:
         return f"; did you mean {near[0]!r}{' in ' + unit if unit else ''}?{why}"
 
     def value(self, dk, k, v, unit, factor, check):
-        u = f" {unit}" if unit else ""
+        """One value checked by ``check`` and converted to SI with ``factor`` (None: a problem
+        was added)."""
         if check == "str":
             if not isinstance(v, str):
                 self.add(dk, f"= {_fmt(v)}: must be a string")
@@ -151,6 +152,10 @@ class _Checker:
             return [float(x) for x in v]
         if check == "seglist":
             return v  # handled by the caller
+        return self._number(dk, v, unit, factor, check)
+
+    def _number(self, dk, v, unit, factor, check):
+        u = f" {unit}" if unit else ""
         if isinstance(v, bool) or not isinstance(v, int | float):
             self.add(dk, f"= {_fmt(v)}: must be a number in{u or ' (dimensionless)'}")
             return None
@@ -181,7 +186,31 @@ class _Checker:
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class SceneState:
-    """The analytic chain at cam angles ``theta`` (rad); SI units throughout."""
+    """The analytic chain at cam angles ``theta``; SI units throughout.
+
+    Attributes
+    ----------
+    theta : ndarray, shape (n,), float
+        Cam angles (rad).
+    s, v, a, j : ndarray, shape (n,), float
+        Lift (m), velocity (m/s), acceleration (m/s^2), jerk (m/s^3) at ``omega``.
+    s1, s2 : ndarray, shape (n,), float
+        ds/dtheta (m/rad), d2s/dtheta2 (m/rad^2).
+    phi : ndarray, shape (n,), float
+        Pressure angle (rad).
+    rho : ndarray, shape (n,), float
+        Cam surface radius of curvature at the contact (m; < 0 concave, inf flat).
+    Fc : ndarray, shape (n,), float
+        Contact force (N; <= 0 at lift-off).
+    liftoff : ndarray, shape (n,), bool
+        Follower off the cam.
+    contact_x, contact_y : ndarray, shape (n,), float
+        Contact point in the cam frame (m).
+    profile : femcam.profile.CamProfile
+    loads : femcam.loads.LoadResult
+    undercut_intervals : list of (float, float)
+        Undercut angle intervals of the whole revolution (rad), from the dense check.
+    """
 
     theta: np.ndarray
     s: np.ndarray
@@ -211,9 +240,31 @@ class SceneState:
 class Scene:
     """A cam-follower case in SI units (built by :func:`load_scene`).
 
-    ``length`` is the axial contact length (face width / cam thickness, m); ``cam`` and
-    ``roller`` are the cam and follower materials; ``fe`` and ``wear`` are the optional
-    pass-through tables, ``raw`` the parsed TOML.
+    Attributes
+    ----------
+    name : str
+    program : femcam.kinematics.CamProgram
+    follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
+    dynamics : femcam.loads.FollowerDynamics
+    omega : float
+        Cam speed (rad/s).
+    cam, roller : femcam.materials.Material
+        Cam and follower materials.
+    length : float
+        Axial contact length (face width / cam thickness, m).
+    mu : float
+        Friction coefficient.
+    plane : str
+        ``"strain"`` or ``"stress"``.
+    sliding : str or None
+        ``"+x"`` or ``"-x"``: direction of the friction traction on the cam.
+    description, source : str
+    fe, wear : dict
+        The optional pass-through tables (``wear`` is checked by :mod:`femcam.wear.options`).
+    source_path : str
+        The scene file ("" if built in code).
+    raw : dict
+        The parsed TOML.
     """
 
     name: str
@@ -329,18 +380,55 @@ def _law_from(ck: _Checker, key: str, tab: dict, default):
 def load_scene(path) -> Scene:
     """Read a scene TOML file (units in key names) and convert it to SI.
 
-    Raises :class:`~femcam.errors.SceneError` listing every problem (dotted key, value,
-    expected unit) if the file is malformed.
+    Parameters
+    ----------
+    path : str or Path
+        The scene file.
+
+    Returns
+    -------
+    Scene
+
+    Raises
+    ------
+    SceneError
+        Listing every problem (dotted key, value, expected unit) if the file is malformed.
     """
     path = Path(path)
+    raw = _read_toml(path)
+    ck = _Checker(str(path))
+    top = _top_level(ck, raw)
+    omega = _operating(ck, raw)
+    program = _program(ck, raw)
+    fo, follower = _follower(ck, raw)
+    dyn = _dynamics(ck, raw)
+    mats = _materials(ck, raw)
+    # contact and pass-through tables
+    co = ck.table(raw.get("contact", {}), "contact", _CONTACT)
+    for t in ("fe", "wear"):
+        if t in raw and not isinstance(raw[t], dict):
+            ck.add(t, f"= {_fmt(raw[t])}: must be a table [{t}]")
+    ck.raise_if_any()
+
+    return Scene(name=top["name"], description=top.get("description", ""), source=top.get("source", ""),
+                 program=program, follower=follower, dynamics=dyn, omega=omega, cam=mats["cam"],
+                 roller=mats["roller"], length=fo["face_width_mm"], mu=co.get("friction", 0.0),
+                 plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=dict(raw.get("fe", {})),
+                 wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw)
+
+
+def _read_toml(path: Path) -> dict:
     try:
         with open(path, "rb") as fh:
-            raw = tomllib.load(fh)
+            return tomllib.load(fh)
     except FileNotFoundError:
         raise SceneError(f"scene file {path}: not found") from None
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(f"scene file {path}: not valid TOML: {exc}") from None
-    ck = _Checker(str(path))
+
+
+def _top_level(ck: _Checker, raw: dict) -> dict:
+    """Unknown and missing tables; the top-level keys (name, description, source)."""
     for k, v in raw.items():  # a table that is not one of ours: "[contactt]"
         if k not in _TABLES and k not in _TOP and isinstance(v, dict):
             near = difflib.get_close_matches(k, _TABLES, n=1, cutoff=0.6)
@@ -352,54 +440,34 @@ def load_scene(path) -> Scene:
     for t in ("operating", "program", "follower", "dynamics", "materials"):
         if t not in raw:
             ck.add(t, f"missing required table [{t}]")
-    g = lambda t: raw.get(t, {})  # noqa: E731
+    return top
 
-    # operating speed
-    op = ck.table(g("operating"), "operating", _OPERATING)
+
+def _operating(ck: _Checker, raw: dict):
+    """The operating speed omega (rad/s), from exactly one of rpm and omega_rad_s."""
+    op = ck.table(raw.get("operating", {}), "operating", _OPERATING)
     if "operating" in raw and isinstance(raw["operating"], dict):
         given = [k for k in _OPERATING if k in raw["operating"]]
         if len(given) != 1:
             ck.add("operating", "give exactly one of rpm (rpm) or omega_rad_s (rad/s); "
                    f"got {given or 'none'}")
-    omega = op.get("rpm", op.get("omega_rad_s"))
+    return op.get("rpm", op.get("omega_rad_s"))
 
-    # program
-    prog_tab = ck.table(g("program"), "program", _PROGRAM)
+
+def _program(ck: _Checker, raw: dict) -> CamProgram | None:
+    """The cam program from [program] and its [[program.segment]] tables."""
+    g = raw.get("program", {})
+    prog_tab = ck.table(g, "program", _PROGRAM)
     default_law = _law_from(ck, "program", prog_tab, None)
     segments = []
     closure = []  # same betas and lifts, a placeholder law where the law is bad: closure check
-    segs_raw = g("program").get("segment", []) if isinstance(g("program"), dict) else []
+    segs_raw = g.get("segment", []) if isinstance(g, dict) else []
     if "program" in raw and not (isinstance(segs_raw, list) and segs_raw):
         ck.add("program.segment", "must be an array of tables [[program.segment]] with at least one segment")
         segs_raw = []
+    prog_law = isinstance(g, dict) and ("law" in g or "control_points" in g)
     for i, sr in enumerate(segs_raw):
-        key = f"program.segment[{i}]"
-        sg = ck.table(sr, key, _SEGMENT)
-        kind = sg.get("kind")
-        if kind is None or "beta_deg" not in sg:
-            continue
-        if kind == "dwell":
-            for k in ("lift_mm", "law", "control_points"):
-                if k in sg:
-                    ck.add(f"{key}.{k}", f"= {_fmt(sr[k])}: a dwell takes only kind and beta_deg")
-            segments.append(dwell(sg["beta_deg"]))
-            closure.append(segments[-1])
-            continue
-        if "lift_mm" not in sg:
-            if isinstance(sr, dict) and "lift_mm" not in sr:
-                ck.add(f"{key}.lift_mm", f"missing required key for a {kind} (unit: mm)")
-            continue
-        make = rise if kind == "rise" else fall
-        lw = _law_from(ck, key, sg, default_law)
-        closure.append(make(sg["beta_deg"], sg["lift_mm"], lw or "cycloidal"))
-        if lw is None:
-            prog_law = isinstance(g("program"), dict) and ("law" in g("program")
-                                                           or "control_points" in g("program"))
-            if "law" not in sg and "control_points" not in sg and not prog_law:  # else reported
-                ck.add(f"{key}.law", "missing: give law (e.g. 'cycloidal') or control_points, "
-                       "here or in [program]")
-            continue
-        segments.append(make(sg["beta_deg"], sg["lift_mm"], lw))
+        _segment(ck, f"program.segment[{i}]", sr, default_law, prog_law, segments, closure)
     program = None
     if closure and len(closure) == len(segs_raw):
         # closure (sum of beta = 360 deg, rises = falls) depends on betas and lifts only, so it is
@@ -410,82 +478,118 @@ def load_scene(path) -> Scene:
             ck.add("program.segment", str(exc))
         else:
             program = CamProgram(segments) if len(segments) == len(segs_raw) else None
+    return program
 
-    # follower
-    fo = ck.table(g("follower"), "follower", _FOLLOWER)
+
+def _segment(ck: _Checker, key: str, sr, default_law, prog_law: bool, segments: list,
+             closure: list) -> None:
+    """One [[program.segment]]: appended to ``segments`` (if valid) and ``closure``."""
+    sg = ck.table(sr, key, _SEGMENT)
+    kind = sg.get("kind")
+    if kind is None or "beta_deg" not in sg:
+        return
+    if kind == "dwell":
+        for k in ("lift_mm", "law", "control_points"):
+            if k in sg:
+                ck.add(f"{key}.{k}", f"= {_fmt(sr[k])}: a dwell takes only kind and beta_deg")
+        segments.append(dwell(sg["beta_deg"]))
+        closure.append(segments[-1])
+        return
+    if "lift_mm" not in sg:
+        if isinstance(sr, dict) and "lift_mm" not in sr:
+            ck.add(f"{key}.lift_mm", f"missing required key for a {kind} (unit: mm)")
+        return
+    make = rise if kind == "rise" else fall
+    lw = _law_from(ck, key, sg, default_law)
+    closure.append(make(sg["beta_deg"], sg["lift_mm"], lw or "cycloidal"))
+    if lw is None:
+        if "law" not in sg and "control_points" not in sg and not prog_law:  # else reported
+            ck.add(f"{key}.law", "missing: give law (e.g. 'cycloidal') or control_points, "
+                   "here or in [program]")
+        return
+    segments.append(make(sg["beta_deg"], sg["lift_mm"], lw))
+
+
+def _follower(ck: _Checker, raw: dict):
+    """``(checked [follower] table in SI, follower or None)``."""
+    g = raw.get("follower", {})
+    fo = ck.table(g, "follower", _FOLLOWER)
     ftype = fo.get("type")
     follower = None
-    if ftype == "roller" and "roller_radius_mm" not in g("follower"):
+    if ftype == "roller" and "roller_radius_mm" not in g:
         ck.add("follower.roller_radius_mm", "missing required key for a roller follower (unit: mm)")
-    elif ftype in ("knife_edge", "flat_faced") and "roller_radius_mm" in g("follower"):
-        ck.add("follower.roller_radius_mm", f"= {_fmt(g('follower')['roller_radius_mm'])}: "
+    elif ftype in ("knife_edge", "flat_faced") and "roller_radius_mm" in g:
+        ck.add("follower.roller_radius_mm", f"= {_fmt(g['roller_radius_mm'])}: "
                f"a {ftype} follower has no roller")
-    elif (ftype and isinstance(g("follower"), dict) and set(g("follower")) <= set(fo)
-            and "base_radius_mm" in fo):
+    elif ftype and isinstance(g, dict) and set(g) <= set(fo) and "base_radius_mm" in fo:
         try:
             follower = make_follower(ftype, Rb=fo["base_radius_mm"], Rr=fo.get("roller_radius_mm", 0.0),
                                      e=fo.get("offset_mm", 0.0))
         except InputError:  # only the offset can fail here: |e| < prime radius
             Rr_m = fo.get("roller_radius_mm", 0.0) if ftype == "roller" else 0.0
             Rp_mm = (fo["base_radius_mm"] + Rr_m) * 1e3
-            ck.add("follower.offset_mm", f"= {_fmt(g('follower')['offset_mm'])} mm: must satisfy "
+            ck.add("follower.offset_mm", f"= {_fmt(g['offset_mm'])} mm: must satisfy "
                    f"|offset| < prime-circle radius {Rp_mm:g} mm")
+    return fo, follower
 
-    # dynamics
-    dy = ck.table(g("dynamics"), "dynamics", _DYNAMICS)
-    dyn = None
-    if isinstance(g("dynamics"), dict) and "dynamics" in raw:
-        given = [k for k in ("damping_N_s_per_m", "damping_ratio") if k in g("dynamics")]
-        if len(given) != 1:
-            ck.add("dynamics", "give exactly one of damping_N_s_per_m (N s/m) or damping_ratio "
-                   f"(dimensionless); got {given or 'none'}")
-        elif all(k in dy for k in ("mass_kg", "spring_N_per_m", "preload_N", given[0])):
-            try:
-                dyn = FollowerDynamics(m=dy["mass_kg"], k=dy["spring_N_per_m"], Fpl=dy["preload_N"],
-                                       c=dy.get("damping_N_s_per_m"), zeta=dy.get("damping_ratio"))
-            except InputError:  # only a damping ratio with c_c = 2 sqrt(k m) = 0 fails here
-                ck.add("dynamics.damping_ratio",
-                       f"= {_fmt(g('dynamics')['damping_ratio'])} (dimensionless): the critical "
-                       f"damping c_c = 2 sqrt(k m) = 2 sqrt({dy['spring_N_per_m']:g} N/m * "
-                       f"{dy['mass_kg']:g} kg) = 0 N s/m, so a ratio cannot set the damping; give "
-                       "damping_N_s_per_m (N s/m) instead")
 
-    # materials
+def _dynamics(ck: _Checker, raw: dict) -> FollowerDynamics | None:
+    """The follower dynamics from [dynamics] (exactly one of the two damping keys)."""
+    g = raw.get("dynamics", {})
+    dy = ck.table(g, "dynamics", _DYNAMICS)
+    if not (isinstance(g, dict) and "dynamics" in raw):
+        return None
+    given = [k for k in ("damping_N_s_per_m", "damping_ratio") if k in g]
+    if len(given) != 1:
+        ck.add("dynamics", "give exactly one of damping_N_s_per_m (N s/m) or damping_ratio "
+               f"(dimensionless); got {given or 'none'}")
+        return None
+    if not all(k in dy for k in ("mass_kg", "spring_N_per_m", "preload_N", given[0])):
+        return None
+    try:
+        return FollowerDynamics(m=dy["mass_kg"], k=dy["spring_N_per_m"], Fpl=dy["preload_N"],
+                                c=dy.get("damping_N_s_per_m"), zeta=dy.get("damping_ratio"))
+    except InputError:  # only a damping ratio with c_c = 2 sqrt(k m) = 0 fails here
+        ck.add("dynamics.damping_ratio",
+               f"= {_fmt(g['damping_ratio'])} (dimensionless): the critical "
+               f"damping c_c = 2 sqrt(k m) = 2 sqrt({dy['spring_N_per_m']:g} N/m * "
+               f"{dy['mass_kg']:g} kg) = 0 N s/m, so a ratio cannot set the damping; give "
+               "damping_N_s_per_m (N s/m) instead")
+        return None
+
+
+def _material(ck: _Checker, alias: str, m: dict, given: dict) -> Material | None:
+    """The Material of one checked [materials.<alias>] table (None, with a problem added, for a
+    modulus outside :data:`femcam.materials.E_MIN`..``E_MAX``)."""
+    try:
+        return Material(E=m["E_GPa"], nu=m["nu"], name=m.get("name", alias), hardness=m.get("hardness_MPa"))
+    except InputError:  # E outside the physical range: a unit mistake (Pa typed as GPa, say)
+        ck.add(f"materials.{alias}.E_GPa", f"= {_fmt(given['E_GPa'])} GPa: must be "
+               f"in [{E_MIN / 1e9:g}, {E_MAX / 1e9:g}] GPa (soft elastomers to diamond)")
+        return None
+
+
+def _materials(ck: _Checker, raw: dict) -> dict:
+    """``{"cam": Material, "roller": Material}`` from [materials.*] (roller alias follower)."""
     mats = {}
-    mraw = g("materials")
-    if isinstance(mraw, dict):
-        for k in mraw:
-            if k not in ("cam", "roller", "follower"):
-                ck.add(f"materials.{k}", "unknown material table; use [materials.cam] and "
-                       "[materials.roller] (or [materials.follower])")
-        if "roller" in mraw and "follower" in mraw:
-            ck.add("materials", "give [materials.roller] or its alias [materials.follower], not both")
-        for k, alias in (("cam", "cam"), ("roller", "roller"), ("roller", "follower")):
-            if alias in mraw:
-                m = ck.table(mraw[alias], f"materials.{alias}", _MATERIAL)
-                if "E_GPa" in m and "nu" in m:
-                    try:
-                        mats[k] = Material(E=m["E_GPa"], nu=m["nu"], name=m.get("name", alias),
-                                           hardness=m.get("hardness_MPa"))
-                    except InputError:  # E outside the physical range (Material.E_MIN/E_MAX)
-                        ck.add(f"materials.{alias}.E_GPa", f"= {_fmt(mraw[alias]['E_GPa'])} GPa: must be "
-                               f"in [{E_MIN / 1e9:g}, {E_MAX / 1e9:g}] GPa (soft elastomers to diamond)")
+    mraw = raw.get("materials", {})
+    if not isinstance(mraw, dict):
         if "materials" in raw:
-            for k in ("cam", "roller"):
-                if k not in mraw and not (k == "roller" and "follower" in mraw):
-                    ck.add(f"materials.{k}", "missing required table (keys E_GPa, nu)")
-    elif "materials" in raw:
-        ck.add("materials", f"= {_fmt(mraw)}: must be a table")
-
-    # contact and pass-through tables
-    co = ck.table(g("contact"), "contact", _CONTACT)
-    for t in ("fe", "wear"):
-        if t in raw and not isinstance(raw[t], dict):
-            ck.add(t, f"= {_fmt(raw[t])}: must be a table [{t}]")
-    ck.raise_if_any()
-
-    return Scene(name=top["name"], description=top.get("description", ""), source=top.get("source", ""),
-                 program=program, follower=follower, dynamics=dyn, omega=omega, cam=mats["cam"],
-                 roller=mats["roller"], length=fo["face_width_mm"], mu=co.get("friction", 0.0),
-                 plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=dict(g("fe")),
-                 wear=dict(g("wear")), source_path=str(path), raw=raw)
+            ck.add("materials", f"= {_fmt(mraw)}: must be a table")
+        return mats
+    for k in mraw:
+        if k not in ("cam", "roller", "follower"):
+            ck.add(f"materials.{k}", "unknown material table; use [materials.cam] and "
+                   "[materials.roller] (or [materials.follower])")
+    if "roller" in mraw and "follower" in mraw:
+        ck.add("materials", "give [materials.roller] or its alias [materials.follower], not both")
+    for k, alias in (("cam", "cam"), ("roller", "roller"), ("roller", "follower")):
+        if alias in mraw:
+            m = ck.table(mraw[alias], f"materials.{alias}", _MATERIAL)
+            if "E_GPa" in m and "nu" in m:
+                mats[k] = _material(ck, alias, m, mraw[alias])
+    if "materials" in raw:
+        for k in ("cam", "roller"):
+            if k not in mraw and not (k == "roller" and "follower" in mraw):
+                ck.add(f"materials.{k}", "missing required table (keys E_GPa, nu)")
+    return mats

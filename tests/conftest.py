@@ -1,9 +1,27 @@
 """Shared pytest configuration for femcam.
 
 Rendering is headless: matplotlib uses Agg and pyvista renders off-screen.
+
+Session fixtures shared by the test files: the seed 002 study model scene (loaded once: its
+dense undercut check and the sweep's family models, kept in the process's
+:func:`femcam.sweep.default_cache`, then serve every file that sweeps it).
 """
 
 import os
+from pathlib import Path
+
+import pytest
+
+from femcam.scene import load_scene
+
+ROOT = Path(__file__).resolve().parents[1]
+STUDY_PATH = ROOT / "examples" / "seed002_study_model.toml"
 
 os.environ.setdefault("MPLBACKEND", "Agg")
 os.environ.setdefault("PYVISTA_OFF_SCREEN", "true")
+
+
+@pytest.fixture(scope="session")
+def study_scene():
+    """The seed 002 study model (examples/seed002_study_model.toml), loaded once per session."""
+    return load_scene(STUDY_PATH)

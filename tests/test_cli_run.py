@@ -68,7 +68,7 @@ def test_run_bad_input_gives_clear_error(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "dynamics.mass_kg = -1 kg: must be >= 0" in err
     assert main(["run", str(EXAMPLES / "seed000_rise.toml"), "--angles-deg", "0:360"]) == 1
-    assert "START:STOP:STEP" in capsys.readouterr().err
+    assert "--angles-deg = '0:360' deg: must be start:stop:step" in capsys.readouterr().err
 
 
 def test_run_prints_junction_jumps_in_si_and_no_negative_zero(tmp_path, capsys):

@@ -21,14 +21,16 @@ import numpy as np
 import pytest
 
 from femcam.errors import ConvergenceError, InputError
-from femcam.fe import solve_contact
+from femcam.fe import ContactModel, solve_contact
 from femcam.hertz import LineContact, max_shear, max_von_mises
 from femcam.io import read_csv
 from femcam.loads import FollowerDynamics
 from femcam.mesh import MeshOptions
-from femcam.scene import load_scene
-from femcam.sweep import parse_angles_deg, pipeline, sweep
-from femcam.sweep.run import auto_workers
+from femcam.scene import Scene, load_scene
+from femcam.sweep import auto_workers, default_cache, parse_angles_deg, sweep
+from femcam.sweep.options import SweepOptions, contact_params
+from femcam.sweep.profile import worst_surface_profile
+from femcam.sweep.result import empty_rows
 from femcam.sweep.store import ChunkStore
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -36,24 +38,26 @@ STUDY = ROOT / "examples" / "seed002_study_model.toml"
 
 
 @pytest.fixture(scope="module")
-def scene():
-    return load_scene(STUDY)
+def scene(study_scene):
+    return study_scene
 
 
 def E_star_of(sc):
     return 1.0 / ((1 - sc.cam.nu**2) / sc.cam.E + (1 - sc.roller.nu**2) / sc.roller.E)
 
 
-class Wrapped:
+@dataclasses.dataclass(frozen=True, kw_only=True)
+class Wrapped(Scene):
     """The study scene with the cam radius of curvature replaced at some angles (by index)."""
 
-    def __init__(self, sc, rho_at: dict):
-        self.sc, self.rho_at = sc, rho_at
-        for k in ("follower", "length", "cam", "roller", "mu", "plane", "sliding", "omega", "wear"):
-            setattr(self, k, getattr(sc, k))
+    rho_at: dict = dataclasses.field(default_factory=dict)
 
-    def analyse(self, theta):
-        st = self.sc.analyse(theta)
+    @classmethod
+    def of(cls, sc: Scene, rho_at: dict) -> Wrapped:
+        return cls(**{f.name: getattr(sc, f.name) for f in dataclasses.fields(sc)}, rho_at=rho_at)
+
+    def analyse(self, theta, **kw):
+        st = super().analyse(theta, **kw)
         rho = np.array(st.rho, float)
         for i, v in self.rho_at.items():
             rho[i] = v
@@ -113,6 +117,8 @@ def test_bad_options_are_input_errors(scene):
         sweep(scene, angles=[0.0], workers="many", method="hertz")
     with pytest.raises(InputError, match=r"workers = 2.5 processes: must be an integer >= 1"):
         sweep(scene, angles=[0.0], workers=2.5, method="hertz")
+    with pytest.raises(InputError, match=r"chunk_delay_s = -1 s: must be >= 0"):
+        sweep(scene, angles=[0.0], chunk_delay_s=-1, method="hertz")
 
 
 def test_auto_workers_uses_processes_only_when_they_pay():
@@ -239,23 +245,17 @@ def test_liftoff_rows_do_not_crash(scene):
 
 
 def test_failed_angle_is_recorded_and_sweep_continues(scene, monkeypatch):
-    real = pipeline.model_for
+    real = ContactModel.solve
     bad_F = {}
 
-    class Failing:
-        def __init__(self, m):
-            self.m = m
+    def solve(self, *, F, **kw):
+        if F == bad_F["F"]:
+            raise ConvergenceError("active set cycled", history=[1.0, 0.5, 1.0])
+        r = real(self, F=F, **kw)  # marked timings: fe_time must be the solve's own
+        return dataclasses.replace(r, timings=dict(r.timings, contact=0.25, recovery=0.125))
 
-        def covers(self, F, rho):
-            return self.m.covers(F, rho)
-
-        def solve(self, *, F, **kw):
-            if F == bad_F["F"]:
-                raise ConvergenceError("active set cycled", history=[1.0, 0.5, 1.0])
-            r = self.m.solve(F=F, **kw)  # marked timings: fe_time must be the solve's own
-            return dataclasses.replace(r, timings=dict(r.timings, contact=0.25, recovery=0.125))
-
-    monkeypatch.setattr(pipeline, "model_for", lambda *a, **k: Failing(real(*a, **k)))
+    monkeypatch.setattr(ContactModel, "solve", solve)
+    default_cache().clear()  # no cached results of the real solve
     th = np.radians([0.0, 40.0, 80.0])
     bad_F["F"] = float(scene.analyse(th).Fc[1])
     r = sweep(scene, angles=th)
@@ -267,6 +267,8 @@ def test_failed_angle_is_recorded_and_sweep_continues(scene, monkeypatch):
     # its wear falls back to the Hertz pressure, and says so
     assert list(r["wear_source"]) == ["fe", "hertz", "fe"]
     assert np.isfinite(r["wear_depth"][1]) and r["wear_depth"][1] > 0
+    monkeypatch.undo()
+    default_cache().clear()  # drop the results of the patched solve
 
 
 def test_undercut_and_nearly_conformal_rows(scene):
@@ -274,7 +276,7 @@ def test_undercut_and_nearly_conformal_rows(scene):
     rho = -1.005 Rr: nearly conformal -- the FE answers and the row is flagged."""
     Rr = scene.follower.Rr
     th = np.radians([0.0, 10.0, 20.0, 30.0])
-    r = sweep(Wrapped(scene, {1: -0.9 * Rr, 2: -1.005 * Rr}), angles=th)
+    r = sweep(Wrapped.of(scene, {1: -0.9 * Rr, 2: -1.005 * Rr}), angles=th)
     assert r.status[1] == "undercut"
     assert "roller does not fit the concave cam" in r["message"][1]
     for k in ("p0_hertz", "p0_fe", "a_fe", "vm_max", "wear_depth"):
@@ -294,24 +296,16 @@ def test_undercut_and_nearly_conformal_rows(scene):
 
 
 def test_rebuilt_flag_uses_a_model_of_its_own(scene, monkeypatch):
-    real = pipeline.model_for
+    real = ContactModel.covers
     th = np.radians([40.0, 50.0, 60.0])
     F_out = float(scene.analyse(th).Fc[1])
 
-    class NotCovering:
-        """The family model, claiming not to cover the load case of the middle angle."""
+    def covers(self, F, rho):
+        """The family model claims not to cover the load case of the middle angle."""
+        return F != F_out and real(self, F, rho)
 
-        def __init__(self, m):
-            self.m = m
-
-        def covers(self, F, rho):
-            return F != F_out and self.m.covers(F, rho)
-
-        def solve(self, **kw):
-            return self.m.solve(**kw)
-
-    monkeypatch.setattr(pipeline, "model_for", lambda *a, **k: NotCovering(real(*a, **k)))
-    pipeline.clear_model_cache()
+    monkeypatch.setattr(ContactModel, "covers", covers)
+    default_cache().clear()
     r = sweep(scene, angles=th)
     assert [("rebuilt" in f.split(";")) for f in r["flags"]] == [False, True, False]
     assert np.all(r.status == "ok")
@@ -343,12 +337,12 @@ def test_tight_tolerance_gives_more_families_and_holds(scene):
 
 
 def test_worst_angle_profile_reuses_the_family_model(scene):
-    from femcam.sweep.families import STATS
-
     r = sweep(scene, angles=np.radians([0.0, 40.0, 80.0]))
-    built = STATS["built"]
-    prof = pipeline.worst_surface_profile(r, scene)
-    assert STATS["built"] == built, "the plot must not build a model"
+    cache = default_cache()
+    built = cache.stats["built"]
+    prof = worst_surface_profile(r.table, r.method, contact_params(scene), r.families,
+                                 SweepOptions(), cache)
+    assert cache.stats["built"] == built, "the profile must not build a model"
     i = r.worst_index("p0_fe")
     assert prof["fe_model"] == f"family {int(r['family'][i])}"
     assert prof["p0_fe"] == r["p0_fe"][i]
@@ -505,7 +499,7 @@ def test_outputs_provenance_and_pvd(scene, tmp_path):
 def test_store_refuses_a_different_sweep_and_ignores_partial_files(tmp_path):
     s = ChunkStore(tmp_path, {"scene_sha256": "x", "n": 3}, [(0, 2), (2, 3)])
     assert s.open(resume=False) == set()
-    rows = {k: np.zeros(2) for k in pipeline.empty_rows(0)}
+    rows = {k: np.zeros(2) for k in empty_rows(0)}
     for k in ("status", "flags", "message"):
         rows[k] = np.array(["ok", "ok"])
     s.write(0, rows)

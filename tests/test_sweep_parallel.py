@@ -10,7 +10,6 @@ another process, so bit-identity across processes is not guaranteed). Wall clock
 
 from __future__ import annotations
 
-import os
 import signal
 import subprocess
 import sys
@@ -20,7 +19,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from femcam.sweep import parse_angles_deg, pipeline, sweep
+from femcam.sweep import default_cache, parse_angles_deg, sweep
 from femcam.sweep.result import WALL_CLOCK
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -61,12 +60,13 @@ def test_process_pool_equals_serial(serial, tmp_path):
     sweep(STUDY, angles=th, chunk_size=4, out=tmp_path, workers=1)
     for p in (tmp_path / "chunks").glob("chunk_*.npz"):
         p.unlink()
-    pipeline.clear_model_cache()
+    default_cache().clear()
     r2 = sweep(STUDY, angles=th, chunk_size=4, out=tmp_path, resume=True, workers=2)
     assert (r2.n_chunks_computed, r2.n_chunks_resumed) == (6, 0)
     assert_same(r2.table, ref)
 
 
+@pytest.mark.slow  # starts a Dask LocalCluster (~5-10 s on 2 shared cores); the process pool runs by default
 def test_dask_local_cluster_equals_serial(serial, tmp_path):
     distributed = pytest.importorskip("dask.distributed")
     th, ref = serial
@@ -115,9 +115,9 @@ def test_killed_subprocess_resumes_in_process(tmp_path):
     reaches its first chunk quickly (the store and resume logic are the same for both
     methods; the FE version below also checks the stored family plan)."""
     out = tmp_path / "run"
-    env = dict(os.environ, FEMCAM_SWEEP_TEST_DELAY_S="0.5")
-    proc = subprocess.Popen(_cli(out, "--method", "hertz", "--vtk-every", "0", "--workers", "1"),
-                            env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    proc = subprocess.Popen(_cli(out, "--method", "hertz", "--vtk-every", "0", "--workers", "1",
+                                 "--chunk-delay-s", "0.5"),
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     _kill_after(proc, out / "chunks", 1)
     n_done = len(list((out / "chunks").glob("chunk_*.npz")))
     assert 1 <= n_done < 6, "the sweep should have been killed midway"
@@ -138,9 +138,9 @@ def test_pool_workers_exit_when_the_sweep_is_killed(tmp_path):
     exited; the watch in femcam.sweep.parallel polls every 0.5 s. A generous 60 s bound keeps
     this a liveness check, not a timing assertion."""
     out = tmp_path / "run"
-    env = dict(os.environ, FEMCAM_SWEEP_TEST_DELAY_S="0.5")
-    proc = subprocess.Popen(_cli(out, "--method", "hertz", "--vtk-every", "0", "--workers", "2"),
-                            env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    proc = subprocess.Popen(_cli(out, "--method", "hertz", "--vtk-every", "0", "--workers", "2",
+                                 "--chunk-delay-s", "0.5"),
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     _kill_after(proc, out / "chunks", 1)   # communicate(timeout=60) raises if workers linger
     assert len(list((out / "chunks").glob("chunk_*.npz"))) < 6, "killed midway"
 
@@ -148,10 +148,9 @@ def test_pool_workers_exit_when_the_sweep_is_killed(tmp_path):
 @pytest.mark.slow  # three interpreter start-ups and FE family checks: ~10-15 s on 2 shared cores
 def test_killed_subprocess_resumes_to_identical_results(tmp_path):
     out = tmp_path / "run"
-    env = dict(os.environ, FEMCAM_SWEEP_TEST_DELAY_S="0.3")  # slow each chunk down a little
     # --workers 1: "auto" picks a process pool on slow machines (timing-dependent); keep this
     # test about the store and resume (the pool's own kill is tested above)
-    proc = subprocess.Popen(_cli(out, "--workers", "1"), env=env, stdout=subprocess.PIPE,
+    proc = subprocess.Popen(_cli(out, "--workers", "1", "--chunk-delay-s", "0.3"), stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE)
     chunks = out / "chunks"
     _kill_after(proc, chunks, 2)

@@ -350,11 +350,10 @@ def test_missing_pressure_raises_or_skips():
 
 # --------------------------------------------------------------------------- FE pressure
 @pytest.fixture(scope="module")
-def fe_study():
+def fe_study(study_scene):
     """A coarse real FE sweep (24 angles) of the seed 002 study model and its slip (SRR 2 %)."""
-    sc_mod = pytest.importorskip("femcam.scene")
     sw = pytest.importorskip("femcam.sweep")
-    sc = sc_mod.load_scene(STUDY)
+    sc = study_scene
     th = np.radians(np.arange(0.0, 360.0, 15.0))
     res = sw.sweep(sc, angles=th, method="fe", progress=False)
     st = sc.analyse(th)
@@ -488,7 +487,7 @@ def test_tip_radius_refused_for_a_roller():
 
 def test_knife_edge_wear_map_needs_tip_radius():
     sc_mod = pytest.importorskip("femcam.scene")
-    from femcam.cli.wear import scene_wear
+    from femcam.wear.scene import scene_wear
 
     sc = sc_mod.load_scene(str(EXAMPLES / "seed003_knife_edge.toml"))
     with pytest.raises(InputError, match="tip_radius_mm"):

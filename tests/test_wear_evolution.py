@@ -17,9 +17,8 @@ TH2 = np.radians(np.arange(0.0, 360.0, 2.0))   # 180 angles: fast
 
 
 @pytest.fixture(scope="module")
-def seed002():
-    sc_mod = pytest.importorskip("femcam.scene")
-    return sc_mod.load_scene(STUDY)
+def seed002(study_scene):
+    return study_scene
 
 
 # --------------------------------------------------------------------------- a stiff-spring ring
@@ -115,7 +114,7 @@ def test_worn_curvature_against_polar_curve():
 def test_single_block_equals_linear_map_times_n(seed002):
     """(1) One block of N revolutions = the existing map's depth per revolution x N (cam and roller,
     the roller with its drift), computed through femcam wear map's own path."""
-    from femcam.cli.wear import scene_wear
+    from femcam.wear.scene import scene_wear
 
     N = 1e6
     wm, _st, _slip = scene_wear(seed002, TH2, cycles=N)

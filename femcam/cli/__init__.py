@@ -3,7 +3,8 @@
 Each subcommand lives in its own module in this package and exposes
 ``register(subparsers) -> None``, which adds an argparse sub-parser and sets
 ``func=<callable(args) -> int>`` as its default. Nothing heavy is imported at import time;
-each subcommand imports what it needs inside its ``func``.
+the subcommand modules import the library at module level (``import femcam`` is numpy/scipy
+only; gmsh, pyvista, matplotlib and dask stay lazy inside the library).
 """
 
 from __future__ import annotations
@@ -12,6 +13,7 @@ import argparse
 import importlib
 import sys
 
+from .. import __version__
 from ..errors import FemcamError
 
 #: subcommand modules, in the order they appear in ``femcam --help``
@@ -19,8 +21,6 @@ SUBCOMMANDS = ("run", "sweep", "wear", "synth")
 
 
 def _versions() -> str:
-    from .. import __version__
-
     parts = [f"femcam {__version__}"]
     for mod, attr in (("skfem", "__version__"), ("gmsh", "__version__"), ("numpy", "__version__")):
         try:
@@ -41,6 +41,7 @@ class _VersionAction(argparse.Action):
 
 
 def build_parser() -> argparse.ArgumentParser:
+    """The ``femcam`` parser with one sub-parser per module of :data:`SUBCOMMANDS`."""
     parser = argparse.ArgumentParser(
         prog="femcam",
         description="Finite-element contact-stress analysis of cam-follower mechanisms.",
@@ -59,7 +60,19 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv=None) -> int:
-    """Entry point of the ``femcam`` console script; returns the exit code."""
+    """Entry point of the ``femcam`` console script.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        Arguments (default ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        Exit code: 0 success, 1 a :class:`~femcam.errors.FemcamError` (printed as one line),
+        2 usage.
+    """
     parser = build_parser()
     args = parser.parse_args(argv)
     if not getattr(args, "func", None):

@@ -16,8 +16,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import _validate as V  # noqa: N812
-from ..errors import InputError
+from .. import __version__, _validate
+from ..scene import load_scene
+from ..viz.analytic import plot_all
 
 #: CSV columns: (name with unit, SceneState attribute, factor from SI)
 COLUMNS = (
@@ -37,6 +38,7 @@ COLUMNS = (
 
 
 def register(subparsers) -> None:
+    """Add the ``run`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
     p = subparsers.add_parser(
         "run", help="kinematics, profile and load tables of a scene, with PNG plots",
         description=__doc__.split("\n\n")[0])
@@ -57,24 +59,6 @@ def register(subparsers) -> None:
     p.set_defaults(func=_run)
 
 
-def parse_angles_deg(text: str) -> np.ndarray:
-    """``"start:stop:step"`` in degrees (stop exclusive) -> angles in rad."""
-    parts = str(text).split(":")
-    if len(parts) != 3:
-        raise InputError(f"--angles-deg = {text!r} deg: must be START:STOP:STEP, e.g. 0:360:0.5")
-    try:
-        a, b, h = (float(x) for x in parts)
-    except ValueError:
-        raise InputError(f"--angles-deg = {text!r} deg: START, STOP and STEP must be numbers") from None
-    V.positive("--angles-deg step", h, "deg")
-    if not (math.isfinite(a) and math.isfinite(b)) or b <= a:
-        raise InputError(f"--angles-deg = {text!r} deg: need START < STOP")
-    n = int(math.ceil((b - a) / h - 1e-9))
-    if n > 1_000_000:
-        raise InputError(f"--angles-deg = {text!r} deg: {n} angles is too many (max 1e6)")
-    return np.radians(a + h * np.arange(n))
-
-
 def _intervals_deg(iv) -> str:
     return ", ".join(f"{math.degrees(a):.2f}-{math.degrees(b):.2f} deg" for a, b in iv) or "none"
 
@@ -82,7 +66,7 @@ def _intervals_deg(iv) -> str:
 def _undercut_intervals(st):
     """Undercut intervals of the whole cam (dense check of Scene.analyse) or, for a SceneState
     built elsewhere, of the analysed angles."""
-    return getattr(st, "undercut_intervals", None) or st.profile.undercut_intervals
+    return st.undercut_intervals or st.profile.undercut_intervals
 
 
 def summary_lines(scene, st, phi_limit_deg: float = 30.0) -> list[str]:
@@ -131,8 +115,6 @@ def _table(st, every_deg: float) -> str:
 
 def write_csv(path, scene, st, command: str) -> Path:
     """All angles, unit-suffixed columns, ``#`` provenance header."""
-    from .. import __version__
-
     path = Path(path)
     cols = [(n, np.asarray(getattr(st, a), float) * f) for n, a, f in COLUMNS]
     with open(path, "w", newline="") as fh:
@@ -149,9 +131,7 @@ def write_csv(path, scene, st, command: str) -> Path:
 
 
 def _run(args) -> int:
-    from ..scene import load_scene
-
-    theta = parse_angles_deg(args.angles_deg)
+    theta = _validate.angles_deg("--angles-deg", args.angles_deg)
     scene = load_scene(args.scene)
     if args.law:
         scene = scene.with_law(args.law)
@@ -193,8 +173,6 @@ def _run(args) -> int:
                                                 "Summary:", *summ]) + "\n")
     files.append(out / "summary.txt")
     if not args.no_plots:
-        from ..viz.analytic import plot_all
-
         files += plot_all(st, out, "", Rr=fo.Rr if fo.kind == "roller" else 0.0,
                           limit_deg=args.phi_limit_deg, title=scene.name)
     print()

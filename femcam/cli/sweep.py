@@ -8,11 +8,18 @@ by default; ``--vtk-every K``) and PNG plots in ``DIR/plots/`` (unless ``--no-pl
 
 from __future__ import annotations
 
+import argparse
 import shlex
 import sys
 
+from .. import _validate
+from ..scene import load_scene
+from ..sweep import parse_angles_deg, sweep
+from ..sweep.options import TOLERANCE_FLOOR
+
 
 def register(subparsers) -> None:
+    """Add the ``sweep`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
     p = subparsers.add_parser(
         "sweep", help="FE contact sweep over cam angle (CSV/NPZ, VTK series, plots)",
         description=__doc__.split("\n\n")[0])
@@ -50,38 +57,29 @@ def register(subparsers) -> None:
     p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     p.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
                    help="progress bar on stderr (auto: only on a terminal)")
+    # a test aid (not shown in --help): sleep after each chunk, so that a test can kill the
+    # sweep between chunks deterministically
+    p.add_argument("--chunk-delay-s", type=float, default=0.0, help=argparse.SUPPRESS)
     p.set_defaults(func=_run)
 
 
 def _check_args(args) -> None:
     """Validate the options with the flags' own names (before the API sees them)."""
-    from .. import _validate as V  # noqa: N812
-    from ..sweep.families import TOLERANCE_FLOOR
-
-    h = V.number("--mesh-size", args.mesh_size, "(elements per contact half-width, a/h)")
+    h = _validate.number("--mesh-size", args.mesh_size, "(elements per contact half-width, a/h)")
     if not 2.0 <= h <= 400.0:
-        raise V.fail("--mesh-size", args.mesh_size, "(elements per contact half-width, a/h)",
+        raise _validate.fail("--mesh-size", args.mesh_size, "(elements per contact half-width, a/h)",
                      "must be in [2, 400]; 10 (default) keeps p0 within 0.3 % of Hertz")
-    tol = V.number("--tolerance", args.tolerance, "(relative p0 reuse error)")
+    tol = _validate.number("--tolerance", args.tolerance, "(relative p0 reuse error)")
     if not TOLERANCE_FLOOR <= tol <= 0.5:
-        raise V.fail("--tolerance", args.tolerance, "(relative p0 reuse error)",
+        raise _validate.fail("--tolerance", args.tolerance, "(relative p0 reuse error)",
                      f"must be in [{TOLERANCE_FLOOR:g}, 0.5]; below {TOLERANCE_FLOOR:g} nearly every "
                      "angle needs its own model (the reuse error is of the order of the FE "
                      "discretisation error): refine --mesh-size instead")
     if args.chunk_size < 1:
-        raise V.fail("--chunk-size", args.chunk_size, "angles", "must be an integer >= 1")
+        raise _validate.fail("--chunk-size", args.chunk_size, "angles", "must be an integer >= 1")
     if args.vtk_every < 0:
-        raise V.fail("--vtk-every", args.vtk_every, "angles", "must be an integer >= 0 (0 = no VTK)")
-    if str(args.workers).strip().lower() == "auto":
-        args.workers = "auto"
-    else:
-        try:
-            args.workers = int(args.workers)
-        except ValueError:
-            raise V.fail("--workers", args.workers, "processes",
-                         "must be an integer >= 1 or auto") from None
-        if args.workers < 1:
-            raise V.fail("--workers", args.workers, "processes", "must be an integer >= 1 or auto")
+        raise _validate.fail("--vtk-every", args.vtk_every, "angles", "must be an integer >= 0 (0 = no VTK)")
+    args.workers = _validate.workers("--workers", args.workers)
 
 
 def _command_line(args) -> str:
@@ -102,9 +100,6 @@ def _command_line(args) -> str:
 
 
 def _run(args) -> int:
-    from ..scene import load_scene
-    from ..sweep import parse_angles_deg, sweep
-
     _check_args(args)
     angles = parse_angles_deg(args.angles_deg)
     scene = load_scene(args.scene)
@@ -115,8 +110,8 @@ def _run(args) -> int:
                 tolerance=args.tolerance, chunk_size=args.chunk_size, out=args.out,
                 resume=args.resume, workers=args.workers, scheduler=args.scheduler,
                 vtk_every=args.vtk_every, progress=progress, plots=not args.no_plots,
-                command=_command_line(args),
-                scene_path=args.scene)
+                command=_command_line(args), scene_path=args.scene,
+                chunk_delay_s=args.chunk_delay_s)
     s = res.summary()
     o = res.provenance.get("options", {})
     print(f"femcam sweep: {res.n_angles} angles ({res.n_chunks_resumed} chunks resumed, "

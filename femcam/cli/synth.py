@@ -21,8 +21,20 @@ import shlex
 import sys
 from pathlib import Path
 
-from .. import _validate as V  # noqa: N812
+from .. import _validate, io
 from ..errors import ConvergenceError, InputError
+from ..profile import KnifeEdgeFollower, min_base_radius
+from ..scene import load_scene
+from ..synthesis import SynthesisOptions, compare_direct, synthesize_knife_edge
+from ..synthesis.study import (
+    SEED003_RB,
+    format_table,
+    seed003_program,
+    study_k,
+    study_k_over_mu,
+    write_study_csv,
+)
+from ..viz import synthesis as vz
 
 #: design limit used by ``--base-radius-mm auto`` (seed 003 section 5: phi <= 30 deg)
 AUTO_PHI_MAX_DEG = 30.0
@@ -31,6 +43,7 @@ N_RESIDUALS_SHOWN = 5
 
 
 def register(subparsers) -> None:
+    """Add the ``synth`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
     p = subparsers.add_parser("synth", help="knife-edge cam curve by potential-energy FE (seed 003)",
                               description=__doc__.split("\n\n")[0])
     p.add_argument("scene", nargs="?", help="scene TOML with a knife_edge follower")
@@ -53,15 +66,11 @@ def _case(args):
     if (args.scene is None) == (args.case is None):
         raise InputError("synth: give exactly one of SCENE.toml or --case seed003")
     if args.case:
-        from ..synthesis.study import SEED003_RB, seed003_program
-
         return "seed003", seed003_program(), SEED003_RB
-    from ..scene import load_scene
-
     sc = load_scene(args.scene)
-    if getattr(sc.follower, "kind", "") != "knife_edge" or getattr(sc.follower, "e", 0.0) != 0.0:
+    if not isinstance(sc.follower, KnifeEdgeFollower) or sc.follower.e != 0.0:
         raise InputError(f"scene {args.scene}: [follower] type = "
-                         f"{getattr(sc.follower, 'kind', '?')!r}: synth needs an in-line "
+                         f"{sc.follower.kind!r}: synth needs an in-line "
                          "knife_edge follower (offset_mm = 0)")
     return sc.name, sc.program, sc.follower.Rb
 
@@ -71,15 +80,13 @@ def _base_radius(value, Rb_default, program, default_source):
     if value is None:
         return Rb_default, default_source
     if str(value).strip().lower() == "auto":
-        from ..profile import min_base_radius
-
         br = min_base_radius("knife_edge", program, phi_max=math.radians(AUTO_PHI_MAX_DEG))
         return br.Rb, (f"auto: min_base_radius, exact max phi = {AUTO_PHI_MAX_DEG:g} deg at "
                        f"theta = {math.degrees(br.theta_critical):.2f} deg")
     try:
-        return V.positive("--base-radius-mm", value, "mm") * 1e-3, "given"
+        return _validate.positive("--base-radius-mm", value, "mm") * 1e-3, "given"
     except InputError:
-        raise V.fail("--base-radius-mm", value, "mm",
+        raise _validate.fail("--base-radius-mm", value, "mm",
                      "must be 'auto' or a finite number > 0") from None
 
 
@@ -92,15 +99,11 @@ def _residual_tail(history, n=N_RESIDUALS_SHOWN) -> str:
 
 
 def run(args) -> int:
-    from .. import io
-    from ..synthesis import SynthesisOptions, compare_direct, synthesize_knife_edge
-    from ..synthesis.study import format_table, study_k, study_k_over_mu, write_study_csv
-    from ..viz import synthesis as vz
-
+    """``femcam synth``: synthesise, compare with the direct profile, write CSV/PNG; exit code."""
     name, program, Rb = _case(args)
     Rb, rb_source = _base_radius(args.base_radius_mm, Rb, program,
                                  "seed 003 case" if args.case else "scene")
-    V.integer("--max-iter", args.max_iter, 1, "iterations")
+    _validate.integer("--max-iter", args.max_iter, 1, "iterations")
     opt = SynthesisOptions(n_elements=args.elements, k=args.k, mu=args.mu, max_iter=args.max_iter)
     try:
         res = synthesize_knife_edge(program, Rb=Rb, options=opt)

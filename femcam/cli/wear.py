@@ -27,9 +27,19 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
+from ..kinematics import LAW_NAMES
+from ..profile import FlatFacedFollower, RollerFollower
+from ..scene import load_scene
+from ..sweep import sweep
+from ..viz.wear import plot_evolution, plot_wear_comparison, plot_wear_map, plot_wear_polar
+from ..wear.evolution import convergence_table, evolution_case
+from ..wear.options import describe_k, wear_coefficient_info, wear_options
+from ..wear.scene import scene_tip_radius, scene_wear, tip_scene
+from ..wear.seed000 import PAPER_LAWS, format_table3, seed000_table, table_rows_for_csv
 
 
 def register(subparsers) -> None:
+    """Add the ``wear`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
     p = subparsers.add_parser("wear", help="Archard wear: seed 000's table, or a wear map of a scene",
                               description=__doc__.split("\n\n")[0])
     sub = p.add_subparsers(dest="wear_command", metavar="WHAT")
@@ -59,12 +69,8 @@ def register(subparsers) -> None:
 
 
 def _seed000(args) -> int:
-    from ..wear.seed000 import PAPER_LAWS, format_table3, seed000_table, table_rows_for_csv
-
     laws = PAPER_LAWS
     if args.all_laws:
-        from ..kinematics import LAW_NAMES
-
         laws = tuple(n for n in LAW_NAMES if n not in ("bezier", "polynomial"))
     t = seed000_table(laws)
     print(format_table3(t))
@@ -81,97 +87,19 @@ def _seed000(args) -> int:
     return 0
 
 
-def wear_coefficient(scene) -> float:
-    """k (m^3/(N m)) from the scene's checked [wear] table, see
-    :func:`femcam.wear.options.wear_coefficient_info` (which also says where k came from)."""
-    from ..wear.options import wear_coefficient_info
-
-    return wear_coefficient_info(scene)[0]
-
-
-def _tip_scene(scene, tip_radius):
-    """A knife-edge scene with tip radius r: the same scene with a roller of radius r (which the
-    slip model keeps from turning). Other followers: the scene itself (r must be None)."""
-    import dataclasses
-
-    kind = type(scene.follower).__name__
-    if kind != "KnifeEdgeFollower":
-        if tip_radius is not None:
-            raise InputError(f"tip radius = {tip_radius * 1e3:g} mm: applies to knife-edge followers only "
-                             f"(this scene's follower is a {scene.follower.kind} follower)")
-        return scene
-    if tip_radius is None:
-        raise InputError("follower type = knife_edge: a sharp tip has no contact width, so the contact "
-                         "pressure and the wear depth are undefined; give the tip radius: scene [wear] "
-                         "tip_radius_mm (mm) or --tip-radius-mm (mm)")
-    from ..profile import RollerFollower
-
-    f = scene.follower
-    return dataclasses.replace(scene, follower=RollerFollower(Rb=f.Rb, Rr=tip_radius, e=f.e))
-
-
-def scene_wear(scene, theta, *, source="hertz", cycles=1e6, tip_radius=None):
-    """(WearMap, SceneState, SlipResult) of a scene at angles theta (one revolution).
-
-    Knife-edge followers need ``tip_radius`` (m) or the scene's ``[wear] tip_radius_mm``: the
-    kinematics, pressure angle, contact force and cam curvature are then those of the cam cut for
-    the radiused tip (a roller of that radius that does not turn), the pressure is Hertz of the
-    cam against the tip radius, and the slip is :func:`femcam.wear.slip.radiused_tip`.
-    ``source="fe"`` runs an FE sweep (:func:`femcam.sweep`) at ``theta`` and uses its
-    ``a_fe``/``p0_fe``; angles whose FE solve failed are skipped with a warning.
-    """
-    from ..wear.map import wear_map
-    from ..wear.options import slip_kwargs, wear_coefficient_info, wear_options
-    from ..wear.slip import follower_slip
-
-    opts = wear_options(scene)
-    if tip_radius is None:
-        tip_radius = opts.get("tip_radius_mm")
-    elif type(scene.follower).__name__ == "KnifeEdgeFollower":
-        from .. import _validate as vd
-
-        tip_radius = vd.positive("tip radius", tip_radius, "m")
-    sc = _tip_scene(scene, tip_radius)
-    st = sc.analyse(theta)
-    Fc = np.clip(st.Fc, 0.0, None)
-    if source == "fe":
-        from ..sweep import sweep
-
-        table = sweep(sc, angles=theta, method="fe", progress=False)
-        pressure = "fe"
-    else:
-        from ..hertz import LineContact
-
-        R2 = sc.follower.Rr if type(sc.follower).__name__ == "RollerFollower" else math.inf
-        hc = LineContact(F=Fc, length=sc.length, R1=st.rho, R2=R2, cam=sc.cam, roller=sc.roller)
-        table = {"theta": theta, "a": hc.a, "p0": hc.p0, "Fc": Fc}
-        pressure = "hertz"
-    slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **slip_kwargs(scene, opts),
-                         tip_radius=tip_radius if sc is not scene else None)
-    k, _where = wear_coefficient_info(scene)
-    wm = wear_map(table, slip, k=k, length=scene.length, cycles=cycles, pressure=pressure)
-    return wm, st, slip
-
-
 def _follower_coordinate(scene) -> tuple[str, str, str]:
     """(CSV column name, plain-words description, plot label) of the follower surface coordinate."""
-    kind = type(scene.follower).__name__
-    if kind == "RollerFollower":
+    if isinstance(scene.follower, RollerFollower):
         return "roller_arc_mm", ("arc along the roller circumference (0 .. 2 pi Rr) from the roller point "
                                  "in contact at the first cam angle of the first revolution"), "roller arc"
-    if kind == "FlatFacedFollower":
+    if isinstance(scene.follower, FlatFacedFollower):
         return "face_x_mm", "distance along the flat face from the follower axis", "face position from axis"
     return ("tip_arc_mm", "arc along the tip from the tip's axis point (r_tip x pressure angle)",
             "tip arc r_tip phi")
 
 
-def _map(args) -> int:
-    from ..scene import load_scene
-    from ..wear.options import describe_k, wear_coefficient_info, wear_options
-
-    scene = load_scene(args.scene)
-    opts = wear_options(scene)
-    cycles = args.cycles if args.cycles is not None else float(opts.get("cycles", 1e6))
+def _check_map_args(args) -> tuple[float, float | None]:
+    """``(step (deg), tip radius (m) or None)`` from the flags, checked."""
     step = float(args.step_deg)
     if not (0 < step <= 10):
         raise InputError(f"--step-deg = {step:g} deg: must be in (0, 10]")
@@ -185,6 +113,14 @@ def _map(args) -> int:
                          "must be an integer >= 1")
     if args.evolve_blocks is not None and args.source != "hertz":
         raise InputError(f"--source = {args.source}: --evolve-blocks uses Hertz pressure (--source hertz)")
+    return step, tip
+
+
+def _map(args) -> int:
+    scene = load_scene(args.scene)
+    opts = wear_options(scene)
+    cycles = args.cycles if args.cycles is not None else float(opts.get("cycles", 1e6))
+    step, tip = _check_map_args(args)
     theta = np.radians(np.arange(0.0, 360.0, step))
     laws = [x.strip() for x in args.laws.split(",")] if args.laws else [None]
     k, k_where = wear_coefficient_info(scene)
@@ -196,41 +132,73 @@ def _map(args) -> int:
     for name in laws:
         sc = scene.with_law(name) if name else scene
         label = name or "scene"
-        wm, st, slip = scene_wear(sc, theta, source=args.source, cycles=cycles, tip_radius=tip)
+        fe = None
+        if args.source == "fe":  # the FE pressure: a sweep of the (tip) scene at these angles
+            fe = sweep(tip_scene(sc, scene_tip_radius(sc, tip)), angles=theta, method="fe",
+                       progress=False)
+        wm, st, slip = scene_wear(sc, theta, cycles=cycles, tip_radius=tip, fe=fe)
         results[label] = (wm, st, slip)
-        with (out / f"wear_{label}.csv").open("w", newline="") as fh:
-            fh.write(head)
-            w = csv.writer(fh)
-            w.writerow(["theta_deg", "s_mm", "Fc_N", "v_slip_m_s", "V_cam_m_s", "arc_mm",
-                        "depth_pass_closed_nm", "depth_per_rev_nm", f"depth_{cycles:g}_cycles_um"])
-            for i in range(theta.size):
-                w.writerow([f"{math.degrees(theta[i]):.4f}", f"{st.s[i] * 1e3:.6g}", f"{st.Fc[i]:.6g}",
-                            f"{slip.v_slip[i]:.6g}", f"{slip.V_cam[i]:.6g}", f"{wm.xi_cam[i] * 1e3:.6g}",
-                            f"{wm.depth_pass[i] * 1e9:.6g}", f"{wm.depth_at_theta[i] * 1e9:.6g}",
-                            f"{wm.depth_at_theta[i] * cycles * 1e6:.6g}"])
-        with (out / f"wear_{label}_surface.csv").open("w", newline="") as fh:
-            fh.write(head)
-            w = csv.writer(fh)
-            w.writerow(["arc_mm", "depth_per_rev_nm", f"depth_{cycles:g}_cycles_um"])
-            for x, h in zip(wm.x_cam, wm.depth_cam, strict=True):
-                w.writerow([f"{x * 1e3:.6g}", f"{h * 1e9:.6g}", f"{h * cycles * 1e6:.6g}"])
-        col, words, _short = _follower_coordinate(sc)
-        with (out / f"wear_{label}_follower.csv").open("w", newline="") as fh:
-            fh.write(head)
-            drift = ""
-            if wm.follower_period is not None:
-                drift = (f"; the contact advances {wm.follower_drift * 1e3:.6g} mm of the "
-                         f"{wm.follower_period * 1e3:.6g} mm roller circumference per cam revolution: "
-                         f"depth_{cycles:g}_cycles sums the revolutions with that drift, "
-                         f"depth_{cycles:g}_cycles_no_drift is {cycles:g} x depth_per_rev "
-                         "(phase-locked bound)")
-            fh.write(f"# {col}: {words}; {slip.model}{drift}\n")
-            w = csv.writer(fh)
-            w.writerow([col, "depth_per_rev_nm", f"depth_{cycles:g}_cycles_um",
-                        f"depth_{cycles:g}_cycles_no_drift_um"])
-            for x, h, hN in zip(wm.x_follower, wm.depth_follower, wm.depth_follower_total, strict=True):
-                w.writerow([f"{x * 1e3:.6g}", f"{h * 1e9:.6g}", f"{hN * 1e6:.6g}", f"{h * cycles * 1e6:.6g}"])
-    with (out / "wear_summary.csv").open("w", newline="") as fh:
+        _write_angle_csv(out / f"wear_{label}.csv", head, theta, cycles, wm, st, slip)
+        _write_surface_csv(out / f"wear_{label}_surface.csv", head, cycles, wm)
+        _write_follower_csv(out / f"wear_{label}_follower.csv", head, cycles, wm, slip, sc)
+    _write_summary(out / "wear_summary.csv", head, cycles, k, k_where, results, args.source)
+    if not args.no_plots:
+        _plots(scene, results, out)
+    if args.evolve_blocks is not None:
+        for name in laws:
+            sc = scene.with_law(name) if name else scene
+            _evolution(sc, name or "scene", theta, cycles, args, out, head)
+    print(f"wrote {out}/")
+    return 0
+
+
+def _write_angle_csv(path, head, theta, cycles, wm, st, slip) -> None:
+    """Per cam angle: lift, force, slip, arc, depth per pass / revolution / ``cycles``."""
+    with path.open("w", newline="") as fh:
+        fh.write(head)
+        w = csv.writer(fh)
+        w.writerow(["theta_deg", "s_mm", "Fc_N", "v_slip_m_s", "V_cam_m_s", "arc_mm",
+                    "depth_pass_closed_nm", "depth_per_rev_nm", f"depth_{cycles:g}_cycles_um"])
+        for i in range(theta.size):
+            w.writerow([f"{math.degrees(theta[i]):.4f}", f"{st.s[i] * 1e3:.6g}", f"{st.Fc[i]:.6g}",
+                        f"{slip.v_slip[i]:.6g}", f"{slip.V_cam[i]:.6g}", f"{wm.xi_cam[i] * 1e3:.6g}",
+                        f"{wm.depth_pass[i] * 1e9:.6g}", f"{wm.depth_at_theta[i] * 1e9:.6g}",
+                        f"{wm.depth_at_theta[i] * cycles * 1e6:.6g}"])
+
+
+def _write_surface_csv(path, head, cycles, wm) -> None:
+    """Depth on the cam arc-length grid."""
+    with path.open("w", newline="") as fh:
+        fh.write(head)
+        w = csv.writer(fh)
+        w.writerow(["arc_mm", "depth_per_rev_nm", f"depth_{cycles:g}_cycles_um"])
+        for x, h in zip(wm.x_cam, wm.depth_cam, strict=True):
+            w.writerow([f"{x * 1e3:.6g}", f"{h * 1e9:.6g}", f"{h * cycles * 1e6:.6g}"])
+
+
+def _write_follower_csv(path, head, cycles, wm, slip, scene) -> None:
+    """Depth on the follower surface grid (with the roller's drift per revolution)."""
+    col, words, _short = _follower_coordinate(scene)
+    with path.open("w", newline="") as fh:
+        fh.write(head)
+        drift = ""
+        if wm.follower_period is not None:
+            drift = (f"; the contact advances {wm.follower_drift * 1e3:.6g} mm of the "
+                     f"{wm.follower_period * 1e3:.6g} mm roller circumference per cam revolution: "
+                     f"depth_{cycles:g}_cycles sums the revolutions with that drift, "
+                     f"depth_{cycles:g}_cycles_no_drift is {cycles:g} x depth_per_rev "
+                     "(phase-locked bound)")
+        fh.write(f"# {col}: {words}; {slip.model}{drift}\n")
+        w = csv.writer(fh)
+        w.writerow([col, "depth_per_rev_nm", f"depth_{cycles:g}_cycles_um",
+                    f"depth_{cycles:g}_cycles_no_drift_um"])
+        for x, h, hN in zip(wm.x_follower, wm.depth_follower, wm.depth_follower_total, strict=True):
+            w.writerow([f"{x * 1e3:.6g}", f"{h * 1e9:.6g}", f"{hN * 1e6:.6g}", f"{h * cycles * 1e6:.6g}"])
+
+
+def _write_summary(path, head, cycles, k, k_where, results, source) -> None:
+    """One row per law (CSV) and the printed table."""
+    with path.open("w", newline="") as fh:
         fh.write(f"{head.rstrip()}; {describe_k(k, k_where)}\n")
         w = csv.writer(fh)
         w.writerow(["law", "cycles", "max_depth_um", "theta_at_max_deg", "arc_at_max_mm", "volume_cam_mm3",
@@ -249,35 +217,28 @@ def _map(args) -> int:
                         f"{wm.conservation_error:.2e}", f"{wm.max_depth_follower * 1e6:.6g}",
                         f"{wm.x_max_follower * 1e3:.5g}", f"{wm.max_depth_follower_locked * 1e6:.6g}",
                         f"{wm.follower_drift * 1e3:.6g}", f"{wm.load_error:.2e}", skipped, f"{wm.k:.6g}",
-                        args.source, slip.model])
+                        source, slip.model])
             print(f"{label:<20}{wm.max_depth * 1e6:>14.4g}{math.degrees(wm.theta_max):>14.2f}"
                   f"{wm.x_max * 1e3:>9.3f}{wm.volume_cam * cycles * 1e9:>13.4g}"
                   f"{wm.max_depth_follower * 1e6:>13.4g}{wm.x_max_follower * 1e3:>9.3f}")
             if wm.skipped:
                 print(f"  {label}: skipped {len(wm.skipped)} angle(s) with a failed FE solve: {skipped} deg")
-    if not args.no_plots:
-        from ..viz.wear import plot_wear_comparison, plot_wear_map, plot_wear_polar
 
-        for label, (wm, st, _slip) in results.items():
-            plot_wear_map(wm, out / f"wear_{label}.png", title=f"{scene.name} ({label})",
-                          follower_label=_follower_coordinate(scene)[2])
-            plot_wear_polar(wm, st.profile.x, st.profile.y, out / f"wear_{label}_polar.png",
-                            title=f"{scene.name} ({label})")
-        if len(results) > 1:
-            plot_wear_comparison({k: v[0] for k, v in results.items()}, out / "wear_laws.png",
-                                 title=scene.name)
-    if args.evolve_blocks is not None:
-        for name in laws:
-            sc = scene.with_law(name) if name else scene
-            _evolution(sc, name or "scene", theta, cycles, args, out, head)
-    print(f"wrote {out}/")
-    return 0
+
+def _plots(scene, results, out) -> None:
+    """Wear map and polar plot per law; the comparison of the laws."""
+    for label, (wm, st, _slip) in results.items():
+        plot_wear_map(wm, out / f"wear_{label}.png", title=f"{scene.name} ({label})",
+                      follower_label=_follower_coordinate(scene)[2])
+        plot_wear_polar(wm, st.profile.x, st.profile.y, out / f"wear_{label}_polar.png",
+                        title=f"{scene.name} ({label})")
+    if len(results) > 1:
+        plot_wear_comparison({k: v[0] for k, v in results.items()}, out / "wear_laws.png",
+                             title=scene.name)
 
 
 def _evolution(scene, label, theta, cycles, args, out, head) -> None:
     """``--evolve-blocks K``: convergence table CSV and evolved-vs-linear PNG of one law."""
-    from ..wear.evolution import convergence_table, evolution_case
-
     ct = convergence_table(evolution_case(scene, theta), cycles, args.evolve_blocks)
     header, rows = ct.rows()
     fin = ct.finest
@@ -293,6 +254,4 @@ def _evolution(scene, label, theta, cycles, args, out, head) -> None:
     for r in rows:
         print(f"  {r[0]:>6} blocks of {r[1]:>10} rev: {float(r[2]):.8g} um  {r[3]:>10} nm  order {r[5]}")
     if not args.no_plots:
-        from ..viz.wear import plot_evolution
-
         plot_evolution(fin, out / f"wear_{label}_evolution.png", title=f"{scene.name} ({label})")

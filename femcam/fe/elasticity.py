@@ -120,16 +120,6 @@ def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strai
                 mu_L=float(mu_L), t_assembly=t1 - t0, t_factor=t2 - t1)
 
 
-def stress_from_displacement(body: Body, u: np.ndarray):
-    """Nodal stresses (sxx, syy, sxy, szz) in Pa at the P2 (or P1) DOF locations.
-
-    Element strains are evaluated at each element's own nodes and averaged over the elements
-    sharing a node (nodal averaging of the discontinuous P(k-1) stress). ``szz`` is the
-    out-of-plane stress: ``nu (sxx + syy)`` in plane strain, 0 in plane stress.
-    """
-    return stress_operator(body) @ np.asarray(u)
-
-
 def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matrix:
     """Sparse operator ``S`` with ``S @ u = [sxx; syy; sxy]`` at scalar-DOF nodes (stacked).
 

@@ -22,6 +22,8 @@ import numpy as np
 
 from .. import _validate as chk
 from ..errors import PhysicsError
+from ..hertz.conformity import roller_does_not_fit
+from ..hertz.contact import effective_radius, half_width, peak_pressure
 from ..materials import PLANES, Material, effective_modulus
 from ..mesh import ContactMesh, MeshOptions, build_contact_mesh, surface_height
 from .contact import load_matrix, solve_lcp, trapezoid_weights
@@ -196,14 +198,12 @@ class ContactResult:
 
 
 def _hertz(F, length, rho, Rr, cam, roller, plane):
-    """Hertz (a, p0) from Johnson eq. 4.45; (nan, nan) when 1/R <= 0."""
-    inv_R = (0.0 if math.isinf(rho) else 1.0 / rho) + 1.0 / Rr
-    if inv_R <= 0.0:
+    """Hertz (a, p0) from Johnson eq. 4.45 (:mod:`femcam.hertz`); (nan, nan) when 1/R <= 0."""
+    if roller_does_not_fit(rho, Rr):
         return math.nan, math.nan
-    E_star = effective_modulus(cam, roller, plane)
     w = F / length
-    a = math.sqrt(4.0 * w / (inv_R * math.pi * E_star))
-    return a, (2.0 * w / (math.pi * a) if a > 0 else 0.0)
+    a = float(half_width(w, effective_radius(rho, Rr), effective_modulus(cam, roller, plane)))
+    return a, float(peak_pressure(w, a))
 
 
 @dataclass(frozen=True, eq=False)
@@ -290,7 +290,7 @@ class ContactModel:
         if dk > self.options.kappa_tol:
             return (f"cam curvature 1/rho = {k:g} 1/m differs from the mesh's {k_ref:g} 1/m by "
                     f"{dk:.3g} x body size (> kappa_tol = {self.options.kappa_tol:g})")
-        if math.isfinite(rho) and rho < 0 and -rho <= self.Rr:
+        if roller_does_not_fit(rho, self.Rr):
             return f"rho = {rho:g} m: concave cam with |rho| <= Rr = {self.Rr:g} m"
         a, _ = self.hertz(F, rho)
         lo, hi = self.options.a_range

@@ -3,21 +3,30 @@
 >>> from femcam.sweep import sweep            # doctest: +SKIP
 >>> r = sweep("examples/seed002_study_model.toml", out="out", workers=2)  # doctest: +SKIP
 
-Modules: :mod:`~femcam.sweep.pipeline` (per-angle chain), :mod:`~femcam.sweep.families` (model
-families, verification of the reuse error against ``tolerance``, per-process model cache),
+Modules: :mod:`~femcam.sweep.options` (:class:`SweepOptions`, the scene adapter),
+:mod:`~femcam.sweep.pipeline` (per-angle chain, one chunk), :mod:`~femcam.sweep.families` (model
+families, verification of the reuse error against ``tolerance``), :mod:`~femcam.sweep.cache`
+(:class:`ModelCache`: the process's FE models),
+:mod:`~femcam.sweep.profile` (the worst angle's surface stresses for the plot),
 :mod:`~femcam.sweep.wear` (Archard wear columns), :mod:`~femcam.sweep.store` (chunked atomic
 store, resume), :mod:`~femcam.sweep.parallel` (serial / process pool / Dask),
 :mod:`~femcam.sweep.result` (:class:`SweepResult`, columns), :mod:`~femcam.sweep.run`
 (:func:`sweep`, ``workers="auto"``).
 """
 
-from .parallel import Progress, run_tasks
-from .pipeline import SweepOptions, plan_families, run_chunk, verify_families
-from .result import COLUMNS, SweepResult
-from .run import auto_workers, parse_angles_deg, sweep
+import sys
+import types
 
-__all__ = ["COLUMNS", "Progress", "SweepOptions", "SweepResult", "auto_workers",
-           "parse_angles_deg", "plan_families", "run_chunk", "run_tasks", "sweep",
+from .cache import ModelCache, default_cache
+from .families import plan_families, verify_families
+from .options import SweepOptions
+from .parallel import Progress, auto_workers, run_tasks
+from .pipeline import run_chunk
+from .result import COLUMNS, SweepResult
+from .run import parse_angles_deg, sweep
+
+__all__ = ["COLUMNS", "ModelCache", "Progress", "SweepOptions", "SweepResult", "auto_workers",
+           "default_cache", "parse_angles_deg", "plan_families", "run_chunk", "run_tasks", "sweep",
            "verify_families"]
 
 
@@ -26,9 +35,6 @@ __all__ = ["COLUMNS", "Progress", "SweepOptions", "SweepResult", "auto_workers",
 # ``femcam.sweep(...)`` both working, where re-exporting the function under the package's own
 # name would shadow the package.
 def _install_callable_module():
-    import sys
-    import types
-
     class _SweepModule(types.ModuleType):
         def __call__(self, scene, **kwargs):
             return sweep(scene, **kwargs)

@@ -4,7 +4,7 @@ per-process model cache.
 2D linear elasticity is invariant under a uniform scaling of the geometry; from angle to angle
 only the gap shape and the load change. So angles are grouped into families that share one
 :class:`femcam.fe.ContactModel` (mesh + factorisation + condensation) and every worker process
-keeps the models it built (:func:`model_for`).
+keeps the models it built (:class:`femcam.sweep.cache.ModelCache`).
 
 What ``tolerance`` bounds
 -------------------------
@@ -39,19 +39,18 @@ from __future__ import annotations
 
 import math
 import time
-from collections import OrderedDict
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..errors import FemcamError
+from ..hertz.conformity import sizing_half_width
+from .cache import ModelCache, default_cache
+from .options import TOLERANCE_FLOOR, ContactParams, SweepOptions
 
-if TYPE_CHECKING:  # pragma: no cover
-    from .pipeline import ContactParams, SweepOptions
-
-#: smallest accepted ``tolerance`` (relative p0 reuse error); see the module docstring
-TOLERANCE_FLOOR = 1e-4
+__all__ = ["MAX_SCAN", "N_CHECKS", "TOLERANCE_FLOOR", "FamilyRecord", "check_angles",
+           "curvature_ratio", "family_spans", "hertz_half_width", "plan_families",
+           "verify_families"]
 #: largest number of distinct load cases per family solved with the family model during the
 #: verification to find its worst angles (more are sampled evenly in a)
 MAX_SCAN = 128
@@ -60,19 +59,42 @@ MAX_SCAN = 128
 N_CHECKS = 2
 
 
-def hertz_half_width_any(F, rho, cp: ContactParams) -> np.ndarray:
-    """Hertz-like half-width estimate for sizing meshes, also where Hertz is invalid (uses |R|)."""
-    from ..materials import effective_modulus
+def hertz_half_width(F, rho, cp: ContactParams) -> np.ndarray:
+    """Hertz half-width for sizing meshes, also where Hertz is invalid
+    (:func:`femcam.hertz.conformity.sizing_half_width` with the scene's contact parameters).
 
-    E_star = effective_modulus(cp.cam, cp.roller, cp.plane)
-    with np.errstate(divide="ignore"):
-        R = np.abs(1.0 / (1.0 / np.asarray(rho, float) + 1.0 / cp.Rr))
-    R = np.minimum(R, 1e3 * cp.Rr)  # nearly conformal: cap, FE decides the real width
-    return np.sqrt(4.0 * np.maximum(F, 0.0) / cp.length * R / (np.pi * E_star))
+    Parameters
+    ----------
+    F : ndarray
+        Contact forces (N).
+    rho : ndarray
+        Cam radii of curvature (m).
+    cp : ContactParams
+        Roller radius, face width, materials.
+
+    Returns
+    -------
+    ndarray
+        ``a`` (m).
+    """
+    return sizing_half_width(F, cp.length, rho, cp.Rr, cp.E_star)
 
 
 def curvature_ratio(rho, Rr: float) -> np.ndarray:
-    """``kappa = Rr / rho`` (0 for a flat cam)."""
+    """``kappa = Rr / rho`` (dimensionless; 0 for a flat cam).
+
+    Parameters
+    ----------
+    rho : ndarray
+        Cam radii of curvature (m).
+    Rr : float
+        Roller radius (m).
+
+    Returns
+    -------
+    ndarray
+        ``kappa``.
+    """
     rho = np.asarray(rho, float)
     with np.errstate(divide="ignore"):
         return np.where(np.isfinite(rho), Rr / rho, 0.0)
@@ -86,6 +108,18 @@ def family_spans(tolerance: float) -> tuple[float, float]:
     guess (calibrated on the study model at a_over_h = 10: ``a_span = 1 + 125 tol``,
     ``kappa_span = min(400 tol, 0.95)``); :func:`verify_families` then splits every family whose
     measured reuse error exceeds the tolerance.
+
+    Parameters
+    ----------
+    tolerance : float
+        Bound on the relative p0 reuse error.
+
+    Returns
+    -------
+    a_span : float
+        Largest ``max(a)/min(a)`` of a starting family (>= 1).
+    kappa_span : float
+        Largest spread of ``Rr/rho`` (dimensionless).
     """
     return 1.0 + 125.0 * tolerance, min(400.0 * tolerance, 0.95)
 
@@ -133,8 +167,25 @@ def plan_families(F, rho, cp: ContactParams, tolerance: float, contact: np.ndarr
 
     Greedy clustering of the contact angles, first in the Hertz half-width ``a`` (ratio
     ``a_span``), then in the curvature ratio ``kappa = Rr/rho`` (width ``kappa_span``), see
-    :func:`family_spans`. The plan depends only on the set of angles. Returns ``(family, refs)``
-    with ``refs[fid] = (rho_ref, a_ref)``. :func:`verify_families` refines it.
+    :func:`family_spans`. The plan depends only on the set of angles. :func:`verify_families`
+    refines it.
+
+    Parameters
+    ----------
+    F, rho : ndarray, shape (n,)
+        Contact force (N) and cam radius of curvature (m) per angle.
+    cp : ContactParams
+    tolerance : float
+        Reuse tolerance (sets the spans).
+    contact : ndarray of bool, shape (n,)
+        Angles with contact.
+
+    Returns
+    -------
+    family : ndarray of int, shape (n,)
+        Family id per angle (-1: no contact).
+    refs : dict[int, tuple[float, float]]
+        ``refs[fid] = (rho_ref (m), a_ref (m))``.
     """
     F = np.asarray(F, float)
     rho = np.asarray(rho, float)
@@ -143,7 +194,7 @@ def plan_families(F, rho, cp: ContactParams, tolerance: float, contact: np.ndarr
     idx = np.flatnonzero(contact)
     if idx.size == 0:
         return fam, refs
-    a = hertz_half_width_any(F[idx], rho[idx], cp)
+    a = hertz_half_width(F[idx], rho[idx], cp)
     kappa = curvature_ratio(rho[idx], cp.Rr)
     for n, g in enumerate(_groups(a, kappa, tolerance)):
         refs[n] = _reference(a[g], kappa[g], rho[idx][g], cp.Rr)
@@ -184,6 +235,7 @@ class FamilyRecord:
     n_rebuilt: int = 0
 
     def to_dict(self) -> dict:
+        """The record as JSON-able lists and numbers (``plan.json``, provenance)."""
         return {"id": self.id, "rho_ref": self.rho_ref, "a_ref": self.a_ref,
                 "n_angles": self.n_angles, "a_ratio": list(self.a_ratio),
                 "kappa": list(self.kappa), "checks": [list(c) for c in self.checks],
@@ -218,6 +270,23 @@ def check_angles(a, kappa, a_ref, k_ref, x_nodes, n_checks: int = N_CHECKS,
     Then, or without ``e_hertz`` (Hertz does not apply): the largest edge offset from a mesh node
     and the family's extreme corner in the normalised (``ln(a/a_ref)``, ``kappa - k_ref``) plane,
     then the extremes of ``a`` and ``kappa``. Load cases equal to one already chosen are skipped.
+
+    Parameters
+    ----------
+    a, kappa : ndarray, shape (m,)
+        Hertz half-width (m) and ``Rr/rho`` of the family's covered angles.
+    a_ref, k_ref : float
+        The family model's reference half-width (m) and ``Rr/rho_ref``.
+    x_nodes : ndarray
+        Contact-surface node abscissae of the family mesh (m).
+    n_checks : int
+        How many angles to return at most.
+    e_hertz : ndarray, shape (m,), optional
+        ``p0 / p0_Hertz - 1`` of the family model (NaN where not solved).
+
+    Returns
+    -------
+    list of int
     """
     if a.size == 0:
         return []
@@ -254,85 +323,56 @@ def _same_case(rho, a, rho_ref, a_ref) -> bool:
 
 
 def verify_families(F, rho, theta, cp: ContactParams, options: SweepOptions,
-                    contact: np.ndarray, n_checks: int = N_CHECKS):
+                    contact: np.ndarray, n_checks: int = N_CHECKS, *,
+                    cache: ModelCache | None = None):
     """Plan the families and verify the reuse error against ``options.tolerance``.
 
     Runs in the calling process (deterministically: the result depends only on the angles and
-    options). Family models built here stay in this process's cache (forked workers inherit
-    them). Returns ``(family, refs, records)``: family id per angle (-1: no contact),
-    ``refs[fid] = (rho_ref, a_ref)`` and a list of :class:`FamilyRecord` (ids in order).
+    options). Family models built here stay in ``cache`` (default: this process's
+    :func:`default_cache`; forked workers inherit it).
+
+    Parameters
+    ----------
+    F, rho, theta : ndarray, shape (n,)
+        Contact force (N), cam radius of curvature (m) and cam angle (rad) of every angle.
+    cp : ContactParams
+        The scene's contact parameters.
+    options : SweepOptions
+        ``tolerance`` and ``a_over_h``.
+    contact : ndarray of bool, shape (n,)
+        Angles with contact (and a roller that fits).
+    n_checks : int
+        Fresh-model checks per family.
+    cache : ModelCache, optional
+        Where the family models are kept.
+
+    Returns
+    -------
+    family, refs
+        As :func:`plan_families`, for the verified families.
+    records : list of FamilyRecord
+        One per family, ids in order.
     """
+    cache = default_cache() if cache is None else cache
     F = np.asarray(F, float)
     rho = np.asarray(rho, float)
     theta = np.asarray(theta, float)
-    tol = float(options.tolerance)
     fam = np.full(F.shape, -1, dtype=int)
     idx = np.flatnonzero(contact)
     if idx.size == 0:
         return fam, {}, []
-    a_all = hertz_half_width_any(F[idx], rho[idx], cp)
+    a_all = hertz_half_width(F[idx], rho[idx], cp)
     k_all = curvature_ratio(rho[idx], cp.Rr)
-    queue = _groups(a_all, k_all, tol)
+    queue = _groups(a_all, k_all, float(options.tolerance))
     done: list[tuple[np.ndarray, FamilyRecord]] = []
     while queue:
         g = queue.pop(0)
-        a, kap, rh = a_all[g], k_all[g], rho[idx][g]
-        rho_ref, a_ref = _reference(a, kap, rh, cp.Rr)
-        k_ref = cp.Rr / rho_ref if math.isfinite(rho_ref) else 0.0
-        rec = FamilyRecord(id=-1, rho_ref=rho_ref, a_ref=a_ref, n_angles=int(g.size),
-                           a_ratio=(float(a.min() / a_ref), float(a.max() / a_ref)),
-                           kappa=(float(kap.min()), float(kap.max())))
-        t0 = time.perf_counter()
-        built_before = STATS["built"]
-        model = model_for(cp, rho_ref, a_ref, options)
-        rec.build_time = time.perf_counter() - t0 if STATS["built"] > built_before else 0.0
-        rows = idx[g]
-        covered = np.array([not hasattr(model, "covers") or model.covers(F[i], rho[i]) for i in rows])
-        rec.n_rebuilt = int(np.count_nonzero(~covered))  # solved with models of their own
-        cov = np.flatnonzero(covered)
-        # the family model at (up to MAX_SCAN of) its covered load cases; cached, so the chunks
-        # computed in this process or in forked workers reuse these results
-        e_h = np.full(cov.size, np.nan)
-        t_solves, failed = [], False
-        for j in _scan_subset(a[cov], kap[cov], F[rows[cov]], rho[rows[cov]]):
-            i = int(rows[cov[j]])
-            try:
-                r = solve_cached(model, float(F[i]), float(rho[i]), cp.mu, cp.sliding)
-            except (FemcamError, ValueError, ArithmeticError):
-                failed = True
-                break
-            tm = getattr(r, "timings", {}) or {}
-            t_solves.append(tm.get("contact", np.nan) + tm.get("recovery", 0.0))
-            rec.n_scanned += 1
-            if np.isfinite(r.hertz_p0) and r.hertz_p0 > 0:
-                e_h[j] = r.p0 / r.hertz_p0 - 1.0
-        rec.solve_time = float(np.nanmedian(t_solves)) if t_solves else float("nan")
-        worst = math.inf if failed else 0.0
-        t1 = time.perf_counter()
-        for j in ([] if failed else check_angles(a[cov], kap[cov], a_ref, k_ref, model.x, n_checks,
-                                                 e_hertz=e_h)):
-            jj = int(cov[j])
-            i = int(rows[jj])
-            err = _reuse_error(model, cp, options, float(F[i]), float(rho[i]), float(a[jj]),
-                               _same_case(float(rho[i]), float(a[jj]), rho_ref, a_ref))
-            rec.checks.append((float(np.degrees(theta[i])), float(a[jj] / a_ref), float(kap[jj]),
-                               err))
-            if math.isfinite(err):
-                worst = max(worst, abs(err))
-            elif err == math.inf:
-                worst = math.inf
-        if np.any(np.isfinite(e_h)):
-            rec.p0_vs_hertz = (float(np.nanmin(e_h)), float(np.nanmax(e_h)))
-        rec.check_time = time.perf_counter() - t1
-        distinct = {(float(x), float(y)) for x, y in zip(a, kap, strict=True)}
-        if len(distinct) == 1:  # one load case: the family model is its fresh model
-            worst = 0.0
-        rec.reuse_error = worst
-        if worst <= tol:
+        rec = _verify_group(cache, cp, options, n_checks, F, rho, theta, idx[g], a_all[g], k_all[g])
+        if rec.reuse_error <= float(options.tolerance):
             done.append((g, rec))
             continue
-        forget_model(cp, rho_ref, a_ref, options)  # replaced by the two halves
-        queue[:0] = _split(g, a, kap)
+        cache.forget(cp, rec.rho_ref, rec.a_ref, options)  # replaced by the two halves
+        queue[:0] = _split(g, a_all[g], k_all[g])
     # deterministic ids: by reference half-width, then curvature
     done.sort(key=lambda t: (t[1].a_ref, t[1].kappa[0], t[1].kappa[1]))
     refs, records = {}, []
@@ -342,6 +382,62 @@ def verify_families(F, rho, theta, cp: ContactParams, options: SweepOptions,
         fam[idx[g]] = n
         records.append(rec)
     return fam, refs, records
+
+
+def _verify_group(cache, cp, options, n_checks, F, rho, theta, rows, a, kap) -> FamilyRecord:
+    """Build one group's model, scan its load cases, check the worst with fresh models."""
+    rho_ref, a_ref = _reference(a, kap, rho[rows], cp.Rr)
+    k_ref = cp.Rr / rho_ref if math.isfinite(rho_ref) else 0.0
+    rec = FamilyRecord(id=-1, rho_ref=rho_ref, a_ref=a_ref, n_angles=int(rows.size),
+                       a_ratio=(float(a.min() / a_ref), float(a.max() / a_ref)),
+                       kappa=(float(kap.min()), float(kap.max())))
+    t0 = time.perf_counter()
+    built_before = cache.stats["built"]
+    model = cache.model_for(cp, rho_ref, a_ref, options)
+    rec.build_time = time.perf_counter() - t0 if cache.stats["built"] > built_before else 0.0
+    covered = np.array([model.covers(F[i], rho[i]) for i in rows])
+    rec.n_rebuilt = int(np.count_nonzero(~covered))  # solved with models of their own
+    cov = np.flatnonzero(covered)
+    e_h, failed = _scan_family(cache, model, cp, rec, rows[cov], a[cov], kap[cov], F, rho)
+    worst = math.inf if failed else 0.0
+    t1 = time.perf_counter()
+    for j in ([] if failed else check_angles(a[cov], kap[cov], a_ref, k_ref, model.x, n_checks,
+                                             e_hertz=e_h)):
+        jj = int(cov[j])
+        i = int(rows[jj])
+        err = _reuse_error(cache, model, cp, options, float(F[i]), float(rho[i]), float(a[jj]),
+                           _same_case(float(rho[i]), float(a[jj]), rho_ref, a_ref))
+        rec.checks.append((float(np.degrees(theta[i])), float(a[jj] / a_ref), float(kap[jj]), err))
+        worst = max(worst, abs(err)) if not math.isnan(err) else worst
+    if np.any(np.isfinite(e_h)):
+        rec.p0_vs_hertz = (float(np.nanmin(e_h)), float(np.nanmax(e_h)))
+    rec.check_time = time.perf_counter() - t1
+    distinct = {(float(x), float(y)) for x, y in zip(a, kap, strict=True)}
+    # one load case: the family model is its fresh model
+    rec.reuse_error = 0.0 if len(distinct) == 1 else worst
+    return rec
+
+
+def _scan_family(cache, model, cp, rec, rows, a, kap, F, rho) -> tuple[np.ndarray, bool]:
+    """Solve the family model at (up to MAX_SCAN of) its covered load cases: ``p0 / p0_Hertz - 1``
+    per case (NaN where not scanned) and whether a solve failed. The results stay in ``cache``,
+    so the chunks computed in this process or in forked workers reuse them."""
+    e_h = np.full(rows.size, np.nan)
+    t_solves = []
+    failed = False
+    for j in _scan_subset(a, kap, F[rows], rho[rows]):
+        i = int(rows[j])
+        try:
+            r = cache.solve(model, float(F[i]), float(rho[i]), cp.mu, cp.sliding)
+        except (FemcamError, ValueError, ArithmeticError):
+            failed = True
+            break
+        t_solves.append(r.timings.get("contact", np.nan) + r.timings.get("recovery", 0.0))
+        rec.n_scanned += 1
+        if np.isfinite(r.hertz_p0) and r.hertz_p0 > 0:
+            e_h[j] = r.p0 / r.hertz_p0 - 1.0
+    rec.solve_time = float(np.nanmedian(t_solves)) if t_solves else float("nan")
+    return e_h, failed
 
 
 def _scan_subset(a, kappa, F, rho, max_scan: int | None = None) -> np.ndarray:
@@ -370,121 +466,14 @@ def _split(g, a, kap) -> list[np.ndarray]:
     return [g[lo], g[~lo]]
 
 
-def _reuse_error(model, cp, options, F, rho, a, same: bool) -> float:
+def _reuse_error(cache, model, cp, options, F, rho, a, same: bool) -> float:
     """``p0(family model)/p0(fresh model) - 1`` at one load case; ``inf`` if the family model
     cannot solve it (the family must be split), NaN if the fresh model cannot."""
     try:
-        r = solve_cached(model, F, rho, cp.mu, cp.sliding)
+        r = cache.solve(model, F, rho, cp.mu, cp.sliding)
     except (FemcamError, ValueError, ArithmeticError):
         return math.inf
     if same:
         return 0.0
-    key = (_key(cp, rho, a, options), F, cp.mu, cp.sliding)
-    p0_fresh = _FRESH_P0.get(key)
-    if p0_fresh is None:
-        try:
-            fresh = build_model(cp, rho, a, options)
-            p0_fresh = fresh.solve(F=F, rho=rho, mu=cp.mu, sliding=cp.sliding, check=False).p0
-        except (FemcamError, ValueError, ArithmeticError):
-            return math.nan
-        _FRESH_P0[key] = p0_fresh
-        while len(_FRESH_P0) > 1024:
-            _FRESH_P0.popitem(last=False)
-    return float(r.p0 / p0_fresh - 1.0)
-
-
-# ---------------------------------------------------------------------------------------------
-# FE models: one per family per process
-# ---------------------------------------------------------------------------------------------
-_MODELS: OrderedDict = OrderedDict()
-_MAX_MODELS = 64
-#: solved load cases per cached model: ``id(model) -> {(F, rho, mu, sliding): ContactResult}``
-#: (an entry lives exactly as long as its model is in ``_MODELS``)
-_RESULTS: dict[int, dict] = {}
-#: p0 of fresh check models (a repeated sweep in one process does not rebuild them)
-_FRESH_P0: OrderedDict = OrderedDict()
-#: models built by this process (diagnostics for benchmarks)
-STATS = {"built": 0, "build_time": 0.0}
-
-
-def _key(cp, rho_ref, a_ref, options):
-    return (cp.Rr, cp.length, repr(cp.cam), repr(cp.roller), cp.plane, float(rho_ref),
-            float(a_ref), options.a_over_h)
-
-
-def model_for(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions):
-    """The FE model of a family, from this process's cache or built now."""
-    key = _key(cp, rho_ref, a_ref, options)
-    m = _MODELS.get(key)
-    if m is not None:
-        _MODELS.move_to_end(key)
-        return m
-    t0 = time.perf_counter()
-    m = build_model(cp, rho_ref, a_ref, options)
-    STATS["built"] += 1
-    STATS["build_time"] += time.perf_counter() - t0
-    _MODELS[key] = m
-    _RESULTS[id(m)] = {}
-    while len(_MODELS) > _MAX_MODELS:
-        _, old = _MODELS.popitem(last=False)
-        _RESULTS.pop(id(old), None)
-    return m
-
-
-def solve_cached(model, F: float, rho: float, mu: float, sliding: int, check: bool = True):
-    """``model.solve(...)``, remembered for models in this process's cache.
-
-    The family verification solves every angle of a family with its model; the chunks computed
-    in this process (serial sweeps, and forked workers, which inherit the cache) then take
-    those results instead of solving again. A result is a deterministic function of the model
-    and the load case, so this changes no number. Objects that are not cached models (e.g.
-    test doubles wrapping one) are always solved.
-    """
-    memo = _RESULTS.get(id(model))
-    key = (float(F), float(rho), float(mu), int(sliding))
-    if memo is not None and key in memo:
-        return memo[key]
-    r = model.solve(F=float(F), rho=float(rho), mu=mu, sliding=sliding, check=check)
-    if memo is not None:
-        memo[key] = r
-    return r
-
-
-def forget_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions) -> None:
-    """Drop one model (and its solved cases) from this process's cache."""
-    m = _MODELS.pop(_key(cp, rho_ref, a_ref, options), None)
-    if m is not None:
-        _RESULTS.pop(id(m), None)
-
-
-def clear_model_cache() -> None:
-    """Forget this process's models and fresh-model check results."""
-    _MODELS.clear()
-    _RESULTS.clear()
-    _FRESH_P0.clear()
-
-
-def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions,
-                _threaded: bool = False):
-    """A fresh :class:`femcam.fe.ContactModel` (mesh + factorisation)."""
-    import threading
-
-    from ..fe import ContactModel, SolverOptions
-    from ..mesh import MeshOptions
-
-    if not _threaded and threading.current_thread() is not threading.main_thread():
-        # Dask runs tasks in worker threads; gmsh.initialize() installs a SIGINT handler, which
-        # Python allows only in the main thread. Initialise gmsh here without it (same
-        # arguments as femcam.mesh otherwise) so that femcam.mesh finds it initialised.
-        import gmsh
-
-        if not gmsh.isInitialized():
-            gmsh.initialize(["-nopopup"], readConfigFiles=False, interruptible=False)
-            try:
-                return build_model(cp, rho_ref, a_ref, options, _threaded=True)
-            finally:
-                gmsh.finalize()
-    return ContactModel.build(Rr=cp.Rr, rho_ref=rho_ref, cam=cp.cam, roller=cp.roller,
-                              length=cp.length, a_ref=a_ref,
-                              mesh=MeshOptions(a_over_h=options.a_over_h),
-                              solver=SolverOptions(), plane=cp.plane)
+    p0_fresh = cache.fresh_p0(cp, rho, a, options, F)
+    return float(r.p0 / p0_fresh - 1.0) if math.isfinite(p0_fresh) else math.nan

@@ -3,7 +3,7 @@
 All three take the same picklable tasks (a scene, a few hundred angles and the options -- no
 big arrays) and the same module-level function, and yield ``(task_id, rows)`` as chunks finish.
 Each worker process keeps its own cache of FE models (see
-:func:`femcam.sweep.pipeline.model_for`), so a family's mesh and factorisation are built once
+:class:`femcam.sweep.cache.ModelCache`), so a family's mesh and factorisation are built once
 per process, not once per chunk.
 
 * ``workers <= 1`` and no Dask: serial, in this process.
@@ -12,6 +12,9 @@ per process, not once per chunk.
   not touched gmsh at that point: it only ran the analytic chain); elsewhere ``spawn``.
 * ``scheduler = "tcp://host:8786"`` or ``client = Client(...)`` / a ``LocalCluster``: Dask
   distributed; femcam must be importable on the workers.
+
+``workers="auto"`` (:func:`auto_workers`) decides between serial and a process pool from the
+expected work.
 """
 
 from __future__ import annotations
@@ -27,10 +30,105 @@ from concurrent.futures import ProcessPoolExecutor, as_completed
 from .._threads import limit_blas_threads
 from ..errors import InputError
 
+#: ``workers="auto"``: use processes only if they are expected to save at least this fraction
+AUTO_MIN_SAVING = 0.25
+#: ``workers="auto"``: fixed cost of starting a process pool and collecting its results (s)
+AUTO_POOL_OVERHEAD_S = 0.4
+
+
+def _cpu_count() -> int:
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):  # pragma: no cover - not Linux
+        return os.cpu_count() or 1
+
+
+#: ``workers="auto"``: estimated time to write one FE ``.vtu`` at a_over_h = 10 (s; full-field
+#: back-solves of both bodies and a ~1 MB file; measured ~0.09 s), scaled with (a_over_h/10)^2
+AUTO_VTU_S = 0.09
+
+
+def auto_workers(n_tasks: int, n_solves: int, t_solve: float, n_families: int, t_build: float,
+                 *, t_other: float = 0.0, cpus: int | None = None,
+                 fork: bool | None = None) -> tuple[int, str]:
+    """``workers="auto"``: how many local processes, and why (a one-line reason).
+
+    The chunks' work is ``n_solves`` contact solves of ``t_solve`` each, plus ``t_other`` s of
+    other work (writing the ``.vtu`` files): the family models are
+    built and verified before the chunks run, in this process, and the verification already
+    solves up to :data:`~femcam.sweep.families.MAX_SCAN` load cases per family (cached; forked
+    workers inherit models and results, spawned ones rebuild the ``n_families`` models at
+    ``t_build`` each). Processes are used only when they are expected to save at least
+    :data:`AUTO_MIN_SAVING` of that time after the pool's fixed cost
+    :data:`AUTO_POOL_OVERHEAD_S`. For the seed 002 study model (360 angles, ~1 ms per solve,
+    200 of them solved during the verification) serial wins when no VTK is written; writing
+    the CLI's default 36 ``.vtu`` files (~3 s) makes 2 processes pay (measured 5.6 s -> 4.4 s on
+    2 cores). Processes also pay for long angle lists, fine meshes (slower solves) and resumed
+    sweeps, which solve everything in the chunks.
+
+    Parameters
+    ----------
+    n_tasks : int
+        Chunks to compute.
+    n_solves : int
+        Contact solves the chunks still have to do.
+    t_solve : float
+        Time per solve (s).
+    n_families : int
+        Model families (rebuilt by spawned workers).
+    t_build : float
+        Time per model build (s).
+    t_other : float
+        Other work of the chunks (s), e.g. writing ``.vtu`` files.
+    cpus : int, optional
+        Usable cores (default: this process's affinity).
+    fork : bool, optional
+        Whether workers are forked (default: on Linux).
+
+    Returns
+    -------
+    workers : int
+        1 (serial) or the number of processes.
+    reason : str
+        One line saying why.
+    """
+    cpus = _cpu_count() if cpus is None else int(cpus)
+    if fork is None:
+        fork = sys.platform.startswith("linux")
+    serial = n_solves * t_solve + t_other
+    w = max(1, min(cpus, n_tasks))
+    if w < 2:
+        return 1, f"serial: {cpus} core(s), {n_tasks} chunk(s)"
+    par = serial / w + AUTO_POOL_OVERHEAD_S + (0.0 if fork else n_families * t_build)
+    what = "solves" + (" and VTU files" if t_other > 0 else "")
+    if par <= (1.0 - AUTO_MIN_SAVING) * serial:
+        return w, f"{w} processes: ~{serial:.2f} s of {what} serially, ~{par:.2f} s expected in parallel"
+    return 1, (f"serial: ~{serial:.2f} s of {what} would take ~{par:.2f} s with {w} processes "
+               "(pool start-up" + ("" if fork else ", rebuilt models") + ")")
+
+
 
 def run_tasks(fn: Callable, tasks: Iterable, *, workers: int = 1, scheduler=None,
               client=None) -> Iterator[tuple[int, object]]:
-    """Run ``fn(task)`` for every task; yield ``(index in tasks, result)`` in completion order."""
+    """Run ``fn(task)`` for every task, serially, in a process pool or on Dask.
+
+    Parameters
+    ----------
+    fn : callable
+        A module-level (picklable) function of one task.
+    tasks : iterable
+        The tasks.
+    workers : int
+        Local processes (<= 1: serial in this process).
+    scheduler : str, optional
+        Dask scheduler address.
+    client : dask.distributed.Client or cluster, optional
+
+    Yields
+    ------
+    tuple[int, object]
+        ``(index in tasks, fn(task))`` in completion order.
+    """
     tasks = list(tasks)
     if not tasks:
         return
@@ -81,7 +179,7 @@ def _run_pool(fn, tasks, workers):
 
 def _run_dask(fn, tasks, *, scheduler=None, client=None):
     try:
-        from dask.distributed import Client
+        from dask.distributed import Client  # lazy: dask is an optional extra (femcam[dask])
         from dask.distributed import as_completed as dask_completed
     except ImportError:  # pragma: no cover - optional dependency
         raise InputError("scheduler = "
@@ -119,6 +217,7 @@ class Progress:
         self.t0 = time.perf_counter()
 
     def update(self, n: int) -> None:
+        """``n`` more angles are done: redraw the bar."""
         self.done += n
         if not self.enabled:
             return
@@ -132,6 +231,7 @@ class Progress:
         self.stream.flush()
 
     def close(self) -> None:
+        """End the bar's line."""
         if self.enabled:
             self.stream.write("\n")
             self.stream.flush()

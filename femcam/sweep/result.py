@@ -21,7 +21,7 @@ Per-angle ``status``:
   result reports ``outside_hertz``): Hertz itself is questionable, the FE answer stands;
 * ``nearly_conformal`` -- a concave cam close to the roller radius, where Hertz's parabolic gap
   is off by more than 0.1 % at the contact edge (quartic gap term / quadratic term at x = a,
-  :func:`femcam.sweep.pipeline.gap_nonparabolicity`); the FE uses the exact circular surfaces,
+  :func:`femcam.hertz.conformity.gap_nonparabolicity`); the FE uses the exact circular surfaces,
   so ``err_a``/``err_p0`` there measure Hertz's error as much as the FE's;
 * ``rebuilt`` -- the model of the angle's family did not cover it (``model.covers``) and a
   model was built for this angle alone (its reuse error is 0).
@@ -81,15 +81,60 @@ WALL_CLOCK = ("fe_time", "build_time")
 
 
 def empty_rows(n: int) -> dict[str, np.ndarray]:
-    """A table of ``n`` rows: NaN numbers, empty strings."""
+    """A table of ``n`` rows: NaN numbers, empty strings.
+
+    Parameters
+    ----------
+    n : int
+        Rows.
+
+    Returns
+    -------
+    dict[str, ndarray]
+        Float arrays of shape (n,) for :data:`NUMERIC`, object arrays for :data:`TEXT_COLUMNS`.
+    """
     rows = {name: np.full(n, np.nan) for name in NUMERIC}
     for name in TEXT_COLUMNS:
         rows[name] = np.full(n, "", dtype=object)
     return rows
 
 
+def worst_row(table: dict, column: str = "p0_fe") -> int:
+    """Row index of the largest ``column`` among ``ok`` rows (falls back to Hertz p0, then 0).
+
+    Parameters
+    ----------
+    table : dict[str, ndarray]
+        A sweep table.
+    column : str
+        Column name (SI).
+
+    Returns
+    -------
+    int
+    """
+    ok = table["status"] == "ok"
+    vals = np.where(ok, table[column], np.nan)
+    if not np.any(np.isfinite(vals)):
+        vals = np.where(ok, table["p0_hertz"], np.nan)
+    if not np.any(np.isfinite(vals)):
+        return 0
+    return int(np.nanargmax(vals))
+
+
 def concat_rows(parts: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
-    """Stack chunk tables (already in angle order)."""
+    """Stack chunk tables (already in angle order).
+
+    Parameters
+    ----------
+    parts : list of dict[str, ndarray]
+        Chunk tables.
+
+    Returns
+    -------
+    dict[str, ndarray]
+        One table: float columns and ``str`` text columns.
+    """
     if not parts:
         return {k: np.asarray(v) for k, v in empty_rows(0).items()}
     out = {}
@@ -123,7 +168,14 @@ class SweepResult:
     timings : dict[str, float]
         Wall times in s: ``analytic``, ``verify`` (family planning and reuse checks, FE only),
         ``compute`` (all chunks), ``total``.
-    n_chunks_computed, n_chunks_resumed : how many chunks this call computed / loaded from disk.
+    n_chunks_computed, n_chunks_resumed : int
+        How many chunks this call computed / loaded from disk.
+    surface_profile : dict or None
+        The worst angle's surface stresses (:func:`femcam.sweep.profile.worst_surface_profile`),
+        computed during the sweep when plots are written (None otherwise).
+    hertz_factors : dict or None
+        Hertz maxima in units of p0 and a (:func:`femcam.hertz.conformity.shape_factors`), with
+        the plots.
     """
 
     table: dict
@@ -133,20 +185,25 @@ class SweepResult:
     timings: dict = field(default_factory=dict)
     n_chunks_computed: int = 0
     n_chunks_resumed: int = 0
+    surface_profile: dict | None = None
+    hertz_factors: dict | None = None
 
     def __getitem__(self, name):
         return self.table[name]
 
     @property
     def theta(self) -> np.ndarray:
+        """Cam angles (rad), shape (n,)."""
         return self.table["theta"]
 
     @property
     def status(self) -> np.ndarray:
+        """Per-angle status (``ok``, ``liftoff``, ``undercut``, ``failed``), shape (n,)."""
         return self.table["status"]
 
     @property
     def n_angles(self) -> int:
+        """Number of angles."""
         return int(self.table["theta"].size)
 
     @property
@@ -170,19 +227,34 @@ class SweepResult:
 
     @property
     def n_failed(self) -> int:
+        """Number of angles whose solve failed."""
         return int(np.count_nonzero(self.table["status"] == "failed"))
 
     def worst_index(self, column: str = "p0_fe") -> int:
-        """Row index of the largest value of ``column`` among ``ok`` rows (falls back to Hertz p0)."""
-        vals = np.where(self.ok, self.table[column], np.nan)
-        if not np.any(np.isfinite(vals)):
-            vals = np.where(self.ok, self.table["p0_hertz"], np.nan)
-        if not np.any(np.isfinite(vals)):
-            return 0
-        return int(np.nanargmax(vals))
+        """Row index of the largest ``column`` among ``ok`` rows (:func:`worst_row`).
+
+        Parameters
+        ----------
+        column : str
+            Column name (SI).
+
+        Returns
+        -------
+        int
+        """
+        return worst_row(self.table, column)
 
     def summary(self) -> dict:
-        """Peak values over the cycle (SI), for tables and reports."""
+        """Peak values over the cycle, for tables and reports.
+
+        Returns
+        -------
+        dict
+            ``Fc_max`` (N), ``phi_max`` (rad), ``p0_hertz_max``, ``p0_fe_max``, ``vm_max``,
+            ``tau1_max`` (Pa), ``err_p0_absmax``, ``err_a_absmax`` (relative),
+            ``n_liftoff``, ``n_failed``, ``n_undercut``, ``n_families`` (counts),
+            ``reuse_error_max`` (relative), ``wear_depth_max`` (m per revolution).
+        """
         t = self.table
         ok = self.ok
 

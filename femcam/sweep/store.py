@@ -18,13 +18,12 @@ from __future__ import annotations
 
 import hashlib
 import json
-import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
 from ..errors import InputError
+from ..io import atomic_write_bytes, atomic_write_text
 from .result import NUMERIC, TEXT_COLUMNS
 
 MANIFEST = "manifest.json"
@@ -33,50 +32,20 @@ FORMAT_VERSION = 2  # 2: wear and build-time columns, plan.json
 
 
 def array_hash(arr) -> str:
-    """SHA-256 of a float array's bytes (stable across runs and machines of one endianness)."""
+    """SHA-256 of a float array's bytes (stable across runs and machines of one endianness).
+
+    Parameters
+    ----------
+    arr : array_like
+        Converted to little-endian float64.
+
+    Returns
+    -------
+    str
+        Hex digest.
+    """
     a = np.ascontiguousarray(np.asarray(arr, dtype="<f8"))
     return hashlib.sha256(a.tobytes()).hexdigest()
-
-
-def _umask() -> int:
-    """The process umask, read without changing it where possible (Linux /proc), else by the
-    classic set-and-restore."""
-    try:
-        with open("/proc/self/status") as f:
-            for line in f:
-                if line.startswith("Umask:"):
-                    return int(line.split()[1], 8)
-    except (OSError, ValueError, IndexError):
-        pass
-    old = os.umask(0o022)
-    os.umask(old)
-    return old
-
-
-def _atomic_write_bytes(path: Path, write) -> None:
-    """Call ``write(fileobj)`` on a temp file next to ``path``, fsync, then rename over ``path``.
-
-    The file gets the mode an ordinary ``open(path, "w")`` would give (``0o666 & ~umask``), not
-    mkstemp's private 0600.
-    """
-    fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as f:
-            write(f)
-            f.flush()
-            os.fsync(f.fileno())
-        os.chmod(tmp, 0o666 & ~_umask())
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise
-
-
-def atomic_write_text(path, text: str) -> None:
-    _atomic_write_bytes(Path(path), lambda f: f.write(text.encode("utf-8")))
 
 
 class ChunkStore:
@@ -100,6 +69,16 @@ class ChunkStore:
 
         Without ``resume`` old chunks are deleted. With ``resume`` a manifest for a different
         sweep raises :class:`InputError` naming what differs.
+
+        Parameters
+        ----------
+        resume : bool
+            Keep the finished chunks of the same sweep.
+
+        Returns
+        -------
+        set of int
+            Finished chunk ids (empty without ``resume``).
         """
         self.root.mkdir(parents=True, exist_ok=True)
         mpath = self.root / MANIFEST
@@ -130,10 +109,11 @@ class ChunkStore:
     # -- the verified family plan ----------------------------------------------------
     def save_plan(self, plan: dict) -> None:
         """Store the verified family plan (JSON): a resume reuses it instead of re-verifying,
-        so the resumed chunks use exactly the same models."""
+        so the resumed chunks use exactly the same models. ``plan``: JSON-able dict."""
         atomic_write_text(self.root / PLAN, json.dumps(plan, sort_keys=True))
 
     def load_plan(self) -> dict | None:
+        """The stored family plan, or None (none stored, or unreadable)."""
         try:
             return json.loads((self.root / PLAN).read_text())
         except (OSError, ValueError):
@@ -141,6 +121,7 @@ class ChunkStore:
 
     # -- chunks -------------------------------------------------------------------------
     def path(self, i: int) -> Path:
+        """File of chunk ``i``."""
         return self.root / f"chunk_{i:05d}.npz"
 
     def _readable(self, i: int) -> bool:
@@ -155,14 +136,15 @@ class ChunkStore:
         return rows["theta"].shape == (stop - start,)
 
     def write(self, i: int, rows: dict) -> Path:
-        """Write chunk ``i`` atomically."""
+        """Write chunk ``i`` (rows: its table) atomically; returns the file written."""
         arrays = {name: np.asarray(rows[name], dtype=float) for name in NUMERIC}
         for name in TEXT_COLUMNS:
             arrays[name] = np.asarray(rows[name]).astype(str)
         p = self.path(i)
-        _atomic_write_bytes(p, lambda f: np.savez(f, **arrays))
+        atomic_write_bytes(p, lambda f: np.savez(f, **arrays))
         return p
 
     def load(self, i: int) -> dict:
+        """The table of chunk ``i`` (dict of arrays)."""
         with np.load(self.path(i), allow_pickle=False) as z:
             return {name: z[name] for name in z.files}

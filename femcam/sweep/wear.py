@@ -1,4 +1,4 @@
-r"""Archard wear columns of the sweep (issue 6: "the same data goes into the sweep's VTK and CSV").
+r"""Archard wear columns of the sweep: the same data goes into the sweep's VTK and CSV.
 
 Per angle, with the wear module's own functions used as they are:
 
@@ -29,33 +29,61 @@ import warnings
 
 import numpy as np
 
+from ..errors import FemcamError
+from ..wear.map import wear_depth_per_angle
+from ..wear.options import slip_kwargs, wear_coefficient_info
+from ..wear.slip import SlipResult, follower_slip
+
 
 @dataclasses.dataclass(frozen=True)
 class WearSetup:
-    """What the chunks need for the wear columns: ``k`` and the slip of every angle."""
+    """What the chunks need for the wear columns: ``k`` and the slip of every angle.
+
+    Parameters
+    ----------
+    k : float
+        Archard coefficient (m^3/(N m)); NaN when wear is not computed.
+    slip : femcam.wear.slip.SlipResult or None
+        Slip over all sweep angles (arrays of shape (n,)); None: wear not computed.
+    model : str
+        The slip model's name.
+    error : str
+        Why wear is not computed ("" otherwise).
+    """
 
     k: float
-    slip: object | None          # SlipResult over all sweep angles (None: wear not computed)
+    slip: SlipResult | None
     model: str = ""
     error: str = ""
 
     def to_dict(self) -> dict:
+        """JSON-able record for the provenance (``k_m3_per_N_m``, ``slip_model``, ...)."""
         out = {"k_m3_per_N_m": self.k, "slip_model": self.model,
                "depth": "per revolution at the contact point: k (pi a p0 / 2) v_slip / V_cam"}
         if self.error:
             out["error"] = self.error
         return out
 
-    def chunk(self, a: int, b: int):
-        """The SlipResult restricted to rows ``a:b`` (None if wear is not computed)."""
+    def chunk(self, a: int, b: int) -> SlipResult | None:
+        """The slip of rows ``a:b`` (a chunk).
+
+        Parameters
+        ----------
+        a, b : int
+            Row range.
+
+        Returns
+        -------
+        femcam.wear.slip.SlipResult or None
+            None if wear is not computed.
+        """
         if self.slip is None:
             return None
         s = self.slip
         return dataclasses.replace(s, theta=s.theta[a:b], v_slip=s.v_slip[a:b], V_cam=s.V_cam[a:b],
                                    V_follower=s.V_follower[a:b],
                                    **{n: (getattr(s, n)[a:b] if getattr(s, n) is not None else None)
-                                      for n in ("Omega", "Omega_req", "slipping")
-                                      if hasattr(s, n)})
+                                      for n in ("Omega", "Omega_req", "slipping")})
 
 
 def _uniform_revolution(theta) -> bool:
@@ -72,9 +100,20 @@ def slip_for_angles(scene, theta, st):
 
     The inertia-limited roller model integrates over one revolution on a uniform grid; for
     other angle sets it runs on a 0.5 deg grid and its speeds are interpolated (periodically).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+    theta : ndarray, shape (n,)
+        Cam angles (rad).
+    st : femcam.scene.SceneState
+        ``scene.analyse(theta)``.
+
+    Returns
+    -------
+    femcam.wear.slip.SlipResult
+        Arrays of shape (n,) (m/s).
     """
-    from ..wear.options import slip_kwargs
-    from ..wear.slip import follower_slip
 
     kw = slip_kwargs(scene)  # the checked [wear] table, as femcam wear map / evolution_case
     model = kw["roller_model"]
@@ -92,21 +131,29 @@ def slip_for_angles(scene, theta, st):
 
     return dataclasses.replace(sg, theta=theta, v_slip=at(sg.v_slip), V_cam=at(sg.V_cam),
                                V_follower=at(sg.V_follower),
-                               **{n: None for n in ("Omega", "Omega_req", "slipping") if hasattr(sg, n)},
+                               **dict.fromkeys(("Omega", "Omega_req", "slipping")),
                                message=(sg.message + "; " if sg.message else "")
                                + "interpolated from a 0.5 deg revolution")
 
 
 def wear_setup(scene, theta, st) -> WearSetup:
-    """k and the slip for all sweep angles; on failure the wear columns are NaN (and why is
-    recorded in the provenance, with a warning) -- wear never stops a contact sweep."""
-    from ..errors import FemcamError
-    from ..wear.options import wear_coefficient_info
+    """k and the slip for all sweep angles.
 
+    Where the wear model refuses the scene for a documented reason (a
+    :class:`~femcam.errors.FemcamError`, e.g. a follower without a slip model) the wear columns
+    are NaN, the reason is recorded in the provenance and warned about: wear never stops a
+    contact sweep. Programming errors (AttributeError, TypeError, ...) propagate.
+
+    Parameters: as :func:`slip_for_angles`.
+
+    Returns
+    -------
+    WearSetup
+    """
     try:
         k = float(wear_coefficient_info(scene)[0])
         slip = slip_for_angles(scene, theta, st)
-    except (FemcamError, AttributeError, ValueError, KeyError, TypeError) as exc:
+    except FemcamError as exc:
         msg = f"wear columns not computed: {type(exc).__name__}: {exc}"
         warnings.warn(msg, stacklevel=3)
         return WearSetup(k=float("nan"), slip=None, error=msg)
@@ -114,9 +161,19 @@ def wear_setup(scene, theta, st) -> WearSetup:
 
 
 def fill_wear(rows, slip, k: float, method: str) -> None:
-    """Fill ``v_slip``, ``V_cam``, ``wear_depth`` and ``wear_source`` of a chunk's rows."""
-    from ..wear.map import wear_depth_per_angle
+    """Fill ``v_slip``, ``V_cam``, ``wear_depth`` and ``wear_source`` of a chunk's rows.
 
+    Parameters
+    ----------
+    rows : dict[str, ndarray]
+        The chunk's table (modified in place).
+    slip : femcam.wear.slip.SlipResult or None
+        Slip at the chunk's angles.
+    k : float
+        Archard k (m^3/(N m)).
+    method : str
+        ``"fe"`` or ``"hertz"``.
+    """
     n = rows["theta"].size
     src = np.full(n, "none", dtype=object)
     if slip is None:

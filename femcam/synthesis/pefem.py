@@ -77,7 +77,7 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from .. import _validate as V  # noqa: N812
+from .. import _validate
 from ..errors import ConvergenceError, InputError, PhysicsError
 
 STABILIZATIONS = ("sauer", "eq12")
@@ -124,22 +124,22 @@ class SynthesisOptions:
     estimate_condition: bool = True
 
     def __post_init__(self):
-        V.integer("n_elements", self.n_elements, 3)
+        _validate.integer("n_elements", self.n_elements, 3)
         q = self.quad_points
         if isinstance(q, bool) or not isinstance(q, (int, np.integer)) or not 2 <= q <= 5:
-            raise V.fail("quad_points", q, "", "must be an integer in [2, 5]")
-        V.integer("max_iter", self.max_iter, 1)
-        object.__setattr__(self, "k", V.positive("k", self.k, ""))
-        object.__setattr__(self, "mu", V.positive("mu", self.mu, ""))
-        object.__setattr__(self, "rtol", V.in_range("rtol", self.rtol, 0.0, 1.0, "", lo_open=True))
-        object.__setattr__(self, "xtol", V.nonnegative("xtol", self.xtol, ""))
-        object.__setattr__(self, "phi_limit", V.in_range("phi_limit", self.phi_limit, 0.0, np.pi / 2,
+            raise _validate.fail("quad_points", q, "", "must be an integer in [2, 5]")
+        _validate.integer("max_iter", self.max_iter, 1)
+        object.__setattr__(self, "k", _validate.positive("k", self.k, ""))
+        object.__setattr__(self, "mu", _validate.positive("mu", self.mu, ""))
+        object.__setattr__(self, "rtol", _validate.in_range("rtol", self.rtol, 0.0, 1.0, "", lo_open=True))
+        object.__setattr__(self, "xtol", _validate.nonnegative("xtol", self.xtol, ""))
+        object.__setattr__(self, "phi_limit", _validate.in_range("phi_limit", self.phi_limit, 0.0, np.pi / 2,
                                                          "rad", lo_open=True, hi_open=True))
-        V.choice("stabilization", self.stabilization, STABILIZATIONS)
-        object.__setattr__(self, "k_factor", V.number("k_factor", self.k_factor, ""))
+        _validate.choice("stabilization", self.stabilization, STABILIZATIONS)
+        object.__setattr__(self, "k_factor", _validate.number("k_factor", self.k_factor, ""))
         if self.k_factor < 1.0:
-            raise V.fail("k_factor", self.k_factor, "", "must be >= 1 (1: no k-continuation)")
-        object.__setattr__(self, "k_start", V.positive("k_start", self.k_start, ""))
+            raise _validate.fail("k_factor", self.k_factor, "", "must be >= 1 (1: no k-continuation)")
+        object.__setattr__(self, "k_start", _validate.positive("k_start", self.k_start, ""))
 
 
 @dataclass(frozen=True)
@@ -348,63 +348,70 @@ def pressure_angle_exact(Rb, s, s1):
     return np.arctan2(s1, Rb + s)
 
 
+def _direction(Kf, Rf, Kgn, free, opt, tau: float, it: int, hist):
+    """Newton direction ``(du, mode, tau)``; with the line search, a shifted or Gauss-Newton
+    direction where the exact tangent is indefinite (None: singular, no line search)."""
+    lu, n_neg = _factor(Kf)
+    if lu is not None and (n_neg == 0 or not opt.line_search):
+        return lu.solve(-Rf), "newton", tau
+    if not opt.line_search:
+        return None, "newton", tau
+    # the exact tangent is indefinite here (the k e E term, far from the solution or right
+    # after k was raised): smallest shift K + tau diag(K_GN) that is positive definite
+    # (inertia from the symmetric LU; Nocedal & Wright 2006 §3.4)
+    Dg = sp.diags(Kgn.diagonal()[free])
+    tau = max(tau / 100.0, 1e-8)
+    while tau <= 1e-2:
+        lu, n_neg = _factor((Kf + tau * Dg).tocsc())
+        if lu is not None and n_neg == 0:
+            return lu.solve(-Rf), "shifted-newton", tau
+        tau *= 10.0
+    # far from the solution: Gauss-Newton (positive semi-definite tangent)
+    du = _solve(Kgn[free][:, free].tocsc(), -Rf)
+    if du is None:
+        raise ConvergenceError(f"singular Gauss-Newton tangent at iteration {it}", hist)
+    return du, "gauss-newton", 1e-8
+
+
+def _line_search(trial, Pi: float, rn: float, slope: float, k: float, it: int, hist) -> float:
+    """Backtracking step: Armijo on Pi; at the round-off level of Pi the residual norm must
+    drop instead (Nocedal & Wright 2006 §3.1)."""
+    step = 1.0
+    while True:
+        Pn, rn_trial = trial(step)
+        if Pn <= Pi + 1e-4 * step * slope and Pn < Pi:
+            return step
+        if abs(Pn - Pi) <= 1e-14 * abs(Pi) and 0 <= rn_trial < rn:
+            return step
+        step *= 0.5
+        if step < 1e-10:
+            raise ConvergenceError(f"line search failed at iteration {it} (k = {k:g})", hist)
+
+
 def _newton(u, D, law, k, mu, kind, opt, free, r_ref, rtol, hist, ehist, modes, max_iter):
     """Newton-Raphson on Pi for one value of k (seed 003 Table 1, globalised).
 
     Appends to ``hist``/``ehist``/``modes``; returns ``(u, K_free, iterations, message)`` or
     raises :class:`ConvergenceError`."""
-
-    def trial(step, du):
-        try:
-            Pn, Rn, _ = _evaluate(u + step * _expand(du, free), D, law, k, mu, kind, False)
-        except ConvergenceError:
-            return np.inf, np.inf
-        return Pn, float(np.linalg.norm(Rn[free]))
-
-    def _accept(Pn, rn_trial, slope, step):
-        """Armijo on Pi; at the round-off level of Pi the residual norm must drop instead."""
-        if Pn <= Pi + 1e-4 * step * slope and Pn < Pi:
-            return True
-        return bool(abs(Pn - Pi) <= 1e-14 * abs(Pi) and 0 <= rn_trial < rn)
-
     Pi, R, (K, Kgn) = _evaluate(u, D, law, k, mu, kind)
     rn = float(np.linalg.norm(R[free]))
     hist.append(rn), ehist.append(Pi)
     tau = 1e-8
     for it in range(1, max_iter + 1):
         Kf, Rf = K[free][:, free].tocsc(), R[free]
-        lu, n_neg = _factor(Kf)
-        du, mode, step = None, "newton", 1.0
-        if lu is not None and (n_neg == 0 or not opt.line_search):
-            du = lu.solve(-Rf)
-        if opt.line_search:
-            if du is None:
-                # the exact tangent is indefinite here (the k e E term, far from the solution
-                # or right after k was raised): smallest shift K + tau diag(K_GN) that is
-                # positive definite (inertia from the symmetric LU; Nocedal & Wright sec. 3.4)
-                Dg = sp.diags(Kgn.diagonal()[free])
-                tau = max(tau / 100.0, 1e-8)
-                while tau <= 1e-2:
-                    lu, n_neg = _factor((Kf + tau * Dg).tocsc())
-                    if lu is not None and n_neg == 0:
-                        du, mode = lu.solve(-Rf), "shifted-newton"
-                        break
-                    tau *= 10.0
-                else:   # far from the solution: Gauss-Newton (positive semi-definite tangent)
-                    du, mode, tau = _solve(Kgn[free][:, free].tocsc(), -Rf), "gauss-newton", 1e-8
-                    if du is None:
-                        raise ConvergenceError(f"singular Gauss-Newton tangent at iteration {it}",
-                                               hist)
-            slope = float(Rf @ du)
-            while True:   # backtracking: Armijo on Pi; at round-off level, ||R|| must drop
-                Pn, rn_trial = trial(step, du)
-                if _accept(Pn, rn_trial, slope, step):
-                    break
-                step *= 0.5
-                if step < 1e-10:
-                    raise ConvergenceError(f"line search failed at iteration {it} (k = {k:g})", hist)
+        du, mode, tau = _direction(Kf, Rf, Kgn, free, opt, tau, it, hist)
         if du is None:
             raise ConvergenceError(f"singular tangent at iteration {it}", hist)
+        step = 1.0
+        if opt.line_search:
+            def trial(step, du=du, u=u):
+                try:
+                    Pn, Rn, _ = _evaluate(u + step * _expand(du, free), D, law, k, mu, kind, False)
+                except ConvergenceError:
+                    return np.inf, np.inf
+                return Pn, float(np.linalg.norm(Rn[free]))
+
+            step = _line_search(trial, Pi, rn, float(Rf @ du), k, it, hist)
         u = u + step * _expand(du, free)
         modes.append(mode)
         Pi, R, (K, Kgn) = _evaluate(u, D, law, k, mu, kind)
@@ -433,8 +440,8 @@ def synthesize_knife_edge(program, *, Rb, options: SynthesisOptions | None = Non
     angle above ``options.phi_limit`` on this base circle.
     """
     opt = options or SynthesisOptions()
-    Rb = V.positive("Rb", Rb, "m")
-    V.positive("samples_per_element", samples_per_element, "")
+    Rb = _validate.positive("Rb", Rb, "m")
+    _validate.positive("samples_per_element", samples_per_element, "")
     law_m = as_law(program)
     # refuse hopeless geometry before any iteration: exact phi on a fine grid
     th = np.linspace(0.0, 2 * np.pi, 20001)
@@ -517,7 +524,7 @@ def _check_solution(u, D, Kf, hist):
 
 def _postprocess(u, D, Rb, law_m, opt, m, converged, it, hist, ehist, msg, cond, solve_time):
     """Sample the converged curve: error and pressure angle at m points per element."""
-    V.positive("samples_per_element", m, "")
+    _validate.positive("samples_per_element", m, "")
     eta = -1.0 + 2.0 * np.arange(m) / m                # half-open, so no duplicates
     N = np.stack([eta * (eta - 1) / 2, 1 - eta**2, eta * (eta + 1) / 2], axis=1)
     dN = np.stack([eta - 0.5, -2 * eta, eta + 0.5], axis=1)

@@ -25,8 +25,10 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import _validate as V  # noqa: N812
+from .. import _validate
 from ..errors import ConvergenceError
+from ..kinematics import CamProgram, dwell, fall, rise
+from ..profile import KnifeEdgeFollower, cam_profile
 from .pefem import SynthesisOptions, SynthesisResult, synthesize_knife_edge
 
 #: seed 003's base circle (m) and printed results (section 5)
@@ -36,10 +38,20 @@ SEED003_MAX_ERROR = 5.4363e-5          # printed without a unit; the paper's len
 
 
 def seed003_program(h: float = 3.0e-3, law: str = "poly345"):
-    """Rise 120 deg to ``h`` (m), dwell 90, fall 90, dwell 60 deg (seed 003 section 5)."""
-    from ..kinematics import CamProgram, dwell, fall, rise
+    """Rise 120 deg to ``h`` (m), dwell 90, fall 90, dwell 60 deg (seed 003 section 5).
 
-    h = V.positive("h", h, "m")
+    Parameters
+    ----------
+    h : float
+        Lift (m).
+    law : str
+        Motion law of the rise and the fall.
+
+    Returns
+    -------
+    femcam.kinematics.CamProgram
+    """
+    h = _validate.positive("h", h, "m")
     r = math.radians
     return CamProgram([rise(r(120.0), h, law), dwell(r(90.0)), fall(r(90.0), h, law),
                        dwell(r(60.0))])
@@ -48,8 +60,7 @@ def seed003_program(h: float = 3.0e-3, law: str = "poly345"):
 def derivatives(program, theta):
     """``(s, s1, s2)`` of ``program`` at ``theta`` (m, m/rad, m/rad^2)."""
     d = program.derivatives(theta)
-    get = (lambda n: d[n]) if isinstance(d, dict) else (lambda n: getattr(d, n))
-    return tuple(np.asarray(get(n), float) for n in ("s", "s1", "s2"))
+    return tuple(np.asarray(getattr(d, n), float) for n in ("s", "s1", "s2"))
 
 
 def direct_profile(program, Rb: float, theta):
@@ -59,8 +70,6 @@ def direct_profile(program, Rb: float, theta):
     (``r = |(x, y)| = Rb + s``) and the pressure angle, both from
     :func:`femcam.profile.cam_profile` (Norton eq. 8.31).
     """
-    from ..profile import KnifeEdgeFollower, cam_profile
-
     s, s1, s2 = derivatives(program, theta)
     p = cam_profile(KnifeEdgeFollower(Rb=Rb), theta, s, s1, s2, allow_undercut=True)
     return np.hypot(p.x, p.y), p.phi

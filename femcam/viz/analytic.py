@@ -5,6 +5,8 @@ curvature, contact force, and the cam shape. matplotlib is imported inside each 
 Every function takes a :class:`femcam.scene.SceneState` (``st``) and a PNG path and returns
 the path. Labels carry units: mm, m/s, m/s^2, m/s^3, deg, N. :func:`plot_laws` (the
 normalised motion laws, ``docs/img/kinematics_laws.png``) needs no scene.
+
+Parameters and returns of the ``plot_*`` functions: see :mod:`femcam.viz`.
 """
 
 from __future__ import annotations
@@ -14,14 +16,8 @@ from pathlib import Path
 
 import numpy as np
 
-
-def _plt():
-    import matplotlib
-
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
-
-    return plt
+from ..kinematics import law
+from ._mpl import pyplot
 
 
 def _deg(st):
@@ -32,8 +28,18 @@ def _save(fig, path):
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=100)
-    _plt().close(fig)
+    pyplot().close(fig)
     return path
+
+
+def _finish(fig, ax, th, ylabel: str, title: str, path):
+    """Label the cam-angle axis and ``ylabel``, title, lay out and save; returns the path."""
+    ax.set_ylabel(ylabel)
+    ax.set_xlabel("cam angle theta (deg)")
+    ax.set_title(title)
+    _xaxis(ax, th)
+    fig.tight_layout()
+    return _save(fig, path)
 
 
 def _xaxis(ax, th):
@@ -45,7 +51,7 @@ def _xaxis(ax, th):
 
 def plot_svaj(st, path, title: str = ""):
     """Four stacked panels: lift s (mm), velocity v (m/s), acceleration a (m/s^2), jerk j (m/s^3)."""
-    plt = _plt()
+    plt = pyplot()
     th = _deg(st)
     fig, axs = plt.subplots(4, 1, sharex=True, figsize=(7.0, 8.0))
     data = [(np.asarray(st.s) * 1e3, "s (mm)"), (st.v, "v (m/s)"), (st.a, "a (m/s$^2$)"),
@@ -63,7 +69,7 @@ def plot_svaj(st, path, title: str = ""):
 
 def plot_pressure_angle(st, path, title: str = "", limit_deg: float = 30.0):
     """Pressure angle phi (deg) with the +-limit lines (30 deg by default)."""
-    plt = _plt()
+    plt = pyplot()
     th = _deg(st)
     fig, ax = plt.subplots(figsize=(7.0, 3.4))
     ax.plot(th, np.degrees(st.phi), lw=1.4)
@@ -71,19 +77,15 @@ def plot_pressure_angle(st, path, title: str = "", limit_deg: float = 30.0):
         ax.axhline(sgn * limit_deg, color="r", ls="--", lw=0.8)
     ax.text(th.min(), limit_deg, f" limit {limit_deg:g} deg", color="r", va="bottom", fontsize=8)
     pm = float(np.max(np.abs(np.degrees(st.phi)))) if np.size(st.phi) else 0.0
-    ax.set_ylabel("pressure angle phi (deg)")
-    ax.set_xlabel("cam angle theta (deg)")
-    ax.set_title(title or f"Pressure angle (max |phi| = {pm:.2f} deg)")
-    _xaxis(ax, th)
-    fig.tight_layout()
-    return _save(fig, path)
+    return _finish(fig, ax, th, "pressure angle phi (deg)",
+                   title or f"Pressure angle (max |phi| = {pm:.2f} deg)", path)
 
 
 def plot_rho(st, path, title: str = "", Rr: float = 0.0, clip_mm: float | None = None):
     """Cam-surface radius of curvature rho (mm); concave parts are negative. Near an inflection
     |rho| grows without bound, so values beyond ``clip_mm`` (default 4 x the median convex
     radius) are clipped and marked."""
-    plt = _plt()
+    plt = pyplot()
     th = _deg(st)
     rho = np.asarray(st.rho, float) * 1e3
     fin = np.isfinite(rho)
@@ -113,7 +115,7 @@ def plot_rho(st, path, title: str = "", Rr: float = 0.0, clip_mm: float | None =
 
 def plot_contact_force(st, path, title: str = ""):
     """Contact force Fc (N, seed 002 eq. 11) with lift-off (Fc <= 0) shaded."""
-    plt = _plt()
+    plt = pyplot()
     th = _deg(st)
     fig, ax = plt.subplots(figsize=(7.0, 3.4))
     ax.plot(th, st.Fc, lw=1.4, color="C2")
@@ -123,17 +125,14 @@ def plot_contact_force(st, path, title: str = ""):
         ax.fill_between(th, 0, 1, where=lift, transform=ax.get_xaxis_transform(), color="r",
                         alpha=0.15, label="lift-off (Fc <= 0)")
         ax.legend(fontsize=8)
-    ax.set_ylabel("contact force Fc (N)")
-    ax.set_xlabel("cam angle theta (deg)")
-    ax.set_title(title or f"Contact force (max {np.max(st.Fc):.1f} N, min {np.min(st.Fc):.1f} N)")
-    _xaxis(ax, th)
-    fig.tight_layout()
-    return _save(fig, path)
+    return _finish(fig, ax, th, "contact force Fc (N)",
+                   title or f"Contact force (max {np.max(st.Fc):.1f} N, min {np.min(st.Fc):.1f} N)",
+                   path)
 
 
 def plot_cam(st, path, title: str = ""):
     """Cam shape (cam frame, mm) with the pitch curve, base circle and undercut points."""
-    plt = _plt()
+    plt = pyplot()
     p = st.profile
     fig, ax = plt.subplots(figsize=(5.0, 5.0))
     ax.plot(np.r_[p.x, p.x[:1]] * 1e3, np.r_[p.y, p.y[:1]] * 1e3, lw=1.6, label="cam surface")
@@ -183,9 +182,7 @@ def plot_laws(path, names=LAWS_FIGURE, n: int = 401, title: str = ""):
 
         python -c "from femcam.viz.analytic import plot_laws; plot_laws('docs/img/kinematics_laws.png')"
     """
-    from ..kinematics import law
-
-    plt = _plt()
+    plt = pyplot()
     u = np.linspace(0.0, 1.0, n)
     fig, axs = plt.subplots(2, 2, sharex=True, figsize=(6.4, 4.2))
     panels = [("s", "s (lift / h)"), ("v", "v = ds/du"), ("a", "a = d\u00b2s/du\u00b2"),

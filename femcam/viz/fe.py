@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ..fe.export import scene_arrays
+
 
 def plot_von_mises(result, path, *, window: float = 3.0, size=(760, 640), scalar: str = "von_mises",
                    show_edges: bool = False):
@@ -11,9 +13,7 @@ def plot_von_mises(result, path, *, window: float = 3.0, size=(760, 640), scalar
 
     ``result`` is a :class:`femcam.fe.ContactResult`; lengths are shown in mm. Returns the path.
     """
-    import pyvista as pv
-
-    from ..fe.export import scene_arrays
+    import pyvista as pv  # lazy: pyvista/VTK is heavy and only this rendering needs it
 
     points, cells, cell_type, data, body = scene_arrays(result)
     ctype = pv.CellType.QUADRATIC_TRIANGLE if cell_type == "triangle6" else pv.CellType.TRIANGLE

@@ -8,9 +8,9 @@
 * ``wear_vs_angle.png``     -- Archard wear depth per revolution at the contact point and the
   sliding speed against cam angle (the sweep's ``wear_depth`` and ``v_slip`` columns).
 
-The worst-angle surface plot re-solves that one angle with the model the sweep used for it
-(:func:`femcam.sweep.pipeline.worst_surface_profile`): in the same process it is the cached
-family model, no mesh is built.
+The plots draw what the sweep computed: the table, ``SweepResult.hertz_factors`` (Hertz maxima
+in units of p0) and ``SweepResult.surface_profile`` (the worst angle's surface stresses,
+:func:`femcam.sweep.profile.worst_surface_profile`); nothing here solves anything.
 
 Units on the axes: degrees, mm, MPa, N, um.
 """
@@ -21,27 +21,29 @@ from pathlib import Path
 
 import numpy as np
 
+from ._mpl import pyplot
 
-def _plt():
-    import matplotlib
 
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
-
-    return plt
+def _table(result):
+    """``(pyplot, table, cam angle in degrees)`` of a sweep result."""
+    t = result.table
+    return pyplot(), t, np.degrees(t["theta"])
 
 
 def _save(fig, path: Path) -> str:
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=90)
-    _plt().close(fig)
+    pyplot().close(fig)
     return str(path)
 
 
 def plot_p0(result, path) -> str:
-    plt = _plt()
-    t = result.table
-    deg = np.degrees(t["theta"])
+    """Peak pressure against cam angle: Hertz (line), FE (points) and FE/Hertz - 1.
+
+    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG). Returns the
+    path written (str).
+    """
+    plt, t, deg = _table(result)
     fe = result.method == "fe"
     fig, axs = plt.subplots(2 if fe else 1, 1, figsize=(7, 5 if fe else 3.4), sharex=True,
                             squeeze=False, gridspec_kw={"height_ratios": [2.2, 1] if fe else [1]})
@@ -66,11 +68,15 @@ def plot_p0(result, path) -> str:
 
 
 def plot_maxima(result, path) -> str:
-    plt = _plt()
-    t = result.table
-    deg = np.degrees(t["theta"])
+    """Von Mises and tau1 maxima (MPa) against cam angle: FE points, Hertz lines (when
+    ``result.hertz_factors`` is set).
+
+    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG). Returns the
+    path written (str).
+    """
+    plt, t, deg = _table(result)
     fig, ax = plt.subplots(figsize=(7, 3.6))
-    k = result.provenance.get("hertz_factors")
+    k = result.hertz_factors
     if result.method == "fe":
         ax.plot(deg, t["vm_max"] / 1e6, ".", ms=3, color="C3", label="von Mises max (FE)")
         ax.plot(deg, t["tau1_max"] / 1e6, ".", ms=3, color="C2", label="tau1 max (FE)")
@@ -88,9 +94,12 @@ def plot_maxima(result, path) -> str:
 
 
 def plot_svaj_loads(result, path) -> str:
-    plt = _plt()
-    t = result.table
-    deg = np.degrees(t["theta"])
+    """s, v, a, j, phi, rho, Fc and Hertz p0 against cam angle.
+
+    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG). Returns the
+    path written (str).
+    """
+    plt, t, deg = _table(result)
     fig, axs = plt.subplots(4, 2, figsize=(9, 7.5), sharex=True)
     panels = [("s", 1e3, "s (mm)"), ("v", 1, "v (m/s)"), ("a", 1, "a (m/s^2)"),
               ("j", 1, "j (m/s^3)"), ("phi", 180 / np.pi, "phi (deg)"),
@@ -111,9 +120,12 @@ def plot_svaj_loads(result, path) -> str:
 
 
 def plot_wear(result, path) -> str:
-    plt = _plt()
-    t = result.table
-    deg = np.degrees(t["theta"])
+    """Archard wear depth per revolution (nm) and sliding speed (m/s) against cam angle.
+
+    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG). Returns the
+    path written (str).
+    """
+    plt, t, deg = _table(result)
     fig, axs = plt.subplots(2, 1, figsize=(7, 4.6), sharex=True)
     src = np.asarray(t["wear_source"]).astype(str)
     for s_, c, lab in (("fe", "C3", "FE pressure"), ("hertz", "C0", "Hertz pressure")):
@@ -133,13 +145,22 @@ def plot_wear(result, path) -> str:
     return _save(fig, Path(path))
 
 
-def plot_surface_worst(result, scene, path, profile=None) -> str:
-    """Surface stresses along x at the worst angle; ``profile`` = ``worst_surface_profile(...)``."""
-    from ..sweep.pipeline import worst_surface_profile
+def plot_surface_worst(profile: dict, path) -> str:
+    """Surface stresses along x at the worst angle.
 
-    plt = _plt()
-    if profile is None:
-        profile = worst_surface_profile(result, scene)
+    Parameters
+    ----------
+    profile : dict
+        :func:`femcam.sweep.profile.worst_surface_profile` (``SweepResult.surface_profile``).
+    path : str or Path
+        Output PNG.
+
+    Returns
+    -------
+    str
+        The path written.
+    """
+    plt = pyplot()
     fig, axs = plt.subplots(1, 3, figsize=(11, 3.4), sharex=True)
     a = profile["a_hertz"]
     for ax, name, label in zip(axs, ("sx", "sz", "txz"),
@@ -159,20 +180,30 @@ def plot_surface_worst(result, scene, path, profile=None) -> str:
     return _save(fig, Path(path))
 
 
-def plot_sweep(result, scene, out) -> dict[str, str]:
-    """All sweep plots into ``out/plots``; returns ``{name: path}``."""
-    from ..sweep.pipeline import contact_params, hertz_shape_factors
+def plot_sweep(result, out) -> dict[str, str]:
+    """All sweep plots into ``out/plots``.
 
-    cp = contact_params(scene)
-    prov = dict(result.provenance)
-    prov["hertz_factors"] = hertz_shape_factors(cp.mu, cp.cam.nu, cp.plane)
-    r = type(result)(**{**result.__dict__, "provenance": prov})
+    Parameters
+    ----------
+    result : femcam.sweep.SweepResult
+        With ``hertz_factors`` and ``surface_profile`` for the Hertz lines and the worst-angle
+        plot (``sweep(..., plots=True)`` computes them).
+    out : str or Path
+        Output directory.
+
+    Returns
+    -------
+    dict[str, str]
+        ``{name: path}`` of the PNGs written.
+    """
+    r = result
     d = Path(out) / "plots"
     paths = {"plot_p0": plot_p0(r, d / "p0_vs_angle.png"),
              "plot_maxima": plot_maxima(r, d / "maxima_vs_angle.png"),
              "plot_svaj": plot_svaj_loads(r, d / "svaj_loads.png")}
     if np.any(np.isfinite(result.table["wear_depth"])):
         paths["plot_wear"] = plot_wear(r, d / "wear_vs_angle.png")
-    if np.any(result.ok):
-        paths["plot_surface"] = plot_surface_worst(r, scene, d / "surface_stress_worst.png")
+    if result.surface_profile is not None and "x_hertz" in result.surface_profile:
+        paths["plot_surface"] = plot_surface_worst(result.surface_profile,
+                                                   d / "surface_stress_worst.png")
     return paths

@@ -2,6 +2,8 @@
 
 matplotlib is imported inside each function (Agg, headless). Lengths are plotted in mm and
 angles in degrees, with the unit in every label.
+
+Parameters and returns of the ``plot_*`` functions: see :mod:`femcam.viz`.
 """
 
 from __future__ import annotations
@@ -11,19 +13,12 @@ from pathlib import Path
 
 import numpy as np
 
-
-def _plt():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
+from ._mpl import pyplot
 
 
 def plot_curve(result, path, *, direct_r=None) -> Path:
     """Cam curve (FE nodes and interpolated curve), base circle, optional direct profile."""
-    plt = _plt()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(4.6, 4.6), dpi=90)
     t = np.linspace(0, 2 * np.pi, 400)
     Rb = result.Rb * 1e3
@@ -47,7 +42,7 @@ def plot_curve(result, path, *, direct_r=None) -> Path:
 
 def plot_error_phi(result, path) -> Path:
     """Transfer-function error and pressure angle (FE vs exact) against cam angle."""
-    plt = _plt()
+    plt = pyplot()
     fig, (a1, a2) = plt.subplots(2, 1, figsize=(6.0, 4.6), dpi=90, sharex=True)
     th = np.degrees(result.theta)
     a1.plot(th, result.error * 1e3, "C0-", lw=0.8)
@@ -68,7 +63,7 @@ def plot_error_phi(result, path) -> Path:
 
 def plot_study(rows, path, *, x: str = "k") -> Path:
     """Error and phi_max against k or k/mu (seed 003 Figs. 6-9), log x axis."""
-    plt = _plt()
+    plt = pyplot()
     ok = [r for r in rows if r.converged]
     xs = np.array([r.k if x == "k" else r.k_over_mu for r in ok])
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(7.5, 3.0), dpi=90)

@@ -1,20 +1,23 @@
 """Wear plots (matplotlib, imported inside the functions): depth against cam angle and arc
 length, the follower (roller) depth, a polar view of the cam with the wear magnified, a
-motion-law comparison, and the evolved vs linear depth of a profile evolution."""
+motion-law comparison, and the evolved vs linear depth of a profile evolution.
+
+Parameters and returns of the ``plot_*`` functions: see :mod:`femcam.viz`.
+"""
 
 from __future__ import annotations
 
 import numpy as np
 
+from ._mpl import pyplot
 
-def _plt():
-    import matplotlib
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
-
+def _save(fig, path, dpi: int = 90):
+    """Lay out, write and close a figure; returns ``path``."""
+    fig.tight_layout()
+    fig.savefig(path, dpi=dpi)
+    pyplot().close(fig)
+    return path
 
 def plot_wear_map(wm, path, *, title: str = "", follower_label: str | None = None):
     """Three panels: cam depth after ``wm.cycles`` revolutions vs cam angle (deg) and vs arc
@@ -23,7 +26,7 @@ def plot_wear_map(wm, path, *, title: str = "", follower_label: str | None = Non
     On a roller the follower panel shows the depth after ``cycles`` with the contact's drift
     from one revolution to the next (``wm.depth_follower_cycles``) and the phase-locked bound
     ``cycles x`` one revolution's depth (dashed)."""
-    plt = _plt()
+    plt = pyplot()
     fig, (ax1, ax2, ax3) = plt.subplots(3, 1, figsize=(6.4, 7.6))
     c = wm.cycles
     ax1.plot(np.degrees(wm.theta), wm.depth_at_theta * c * 1e6, label="map (moving Hertz ellipse)")
@@ -52,10 +55,7 @@ def plot_wear_map(wm, path, *, title: str = "", follower_label: str | None = Non
                   fontsize=9)
     if title:
         fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
 
 
 def worn_profile(wm, x, y, magnify: float):
@@ -79,7 +79,7 @@ def worn_profile(wm, x, y, magnify: float):
 
 def plot_wear_polar(wm, x, y, path, *, magnify: float | None = None, title: str = ""):
     """The cam profile (cam frame) and the worn profile with the wear magnified."""
-    plt = _plt()
+    plt = pyplot()
     hmax = wm.max_depth
     if magnify is None:
         size = np.ptp(np.asarray(x))
@@ -94,15 +94,12 @@ def plot_wear_polar(wm, x, y, path, *, magnify: float | None = None, title: str 
     ax.legend(fontsize=8, loc="lower right")
     ax.set_title((title + "\n" if title else "") + f"{wm.cycles:g} rev, max depth {hmax * 1e6:.3g} um",
                  fontsize=9)
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
 
 
 def plot_wear_comparison(maps: dict, path, *, title: str = ""):
     """Depth vs cam angle for several motion laws (``{label: WearMap}``)."""
-    plt = _plt()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.4, 3.6))
     for label, wm in maps.items():
         ax.plot(np.degrees(wm.theta), wm.depth_at_theta * wm.cycles * 1e6,
@@ -113,16 +110,13 @@ def plot_wear_comparison(maps: dict, path, *, title: str = ""):
     ax.legend(fontsize=8)
     if title:
         ax.set_title(title, fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
 
 
 def plot_evolution(res, path, *, title: str = ""):
     """Two panels of a :class:`~femcam.wear.evolution.EvolutionResult`: the evolved and the linear
     cam depth after ``res.cycles`` revolutions vs arc length (um), and their difference (nm)."""
-    plt = _plt()
+    plt = pyplot()
     fig, (a1, a2) = plt.subplots(2, 1, figsize=(6.4, 6.0), sharex=True)
     x = res.x_cam * 1e3
     a1.plot(x, res.depth_linear * 1e6, label="linear (unworn geometry) x N")
@@ -133,7 +127,4 @@ def plot_evolution(res, path, *, title: str = ""):
     a2.plot(x, (res.depth_cam - res.depth_linear) * 1e9)
     a2.set_ylabel("evolved - linear (nm)")
     a2.set_xlabel("cam arc length (mm)")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return _save(fig, path, dpi=110)

@@ -27,14 +27,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import _validate as vd
+from .. import _validate
 
 
 def _nonneg_array(name, value, unit):
-    arr = vd.finite_array(name, value, unit)
+    arr = _validate.finite_array(name, value, unit)
     if np.any(arr < 0):
         bad = arr[arr < 0].flat[0]
-        raise vd.fail(name, float(bad), unit, "must be >= 0")
+        raise _validate.fail(name, float(bad), unit, "must be >= 0")
     return arr
 
 
@@ -48,8 +48,8 @@ def dimensional_coefficient(K, H):
     >>> dimensional_coefficient(1e-8, 2000e6)    # seed 000: K = 1e-8, H = 2000 N/mm^2
     5e-18
     """
-    K = vd.nonnegative("K", K, "(dimensionless wear coefficient)")
-    H = vd.positive("H", H, "Pa")
+    K = _validate.nonnegative("K", K, "(dimensionless wear coefficient)")
+    H = _validate.positive("H", H, "Pa")
     return K / H
 
 
@@ -61,8 +61,8 @@ def dimensionless_coefficient(k, H):
     >>> dimensionless_coefficient(5e-18, 2e9)
     1e-08
     """
-    k = vd.nonnegative("k", k, "m^3/(N m)")
-    H = vd.positive("H", H, "Pa")
+    k = _validate.nonnegative("k", k, "m^3/(N m)")
+    H = _validate.positive("H", H, "Pa")
     return k * H
 
 
@@ -79,7 +79,7 @@ def archard_volume(k, L, S):
     >>> archard_volume(5e-18, 500.0, 0.010)   # seed 000 inputs, S = h = 10 mm
     2.5e-17
     """
-    k = vd.nonnegative("k", k, "m^3/(N m)")
+    k = _validate.nonnegative("k", k, "m^3/(N m)")
     L = _nonneg_array("L", L, "N")
     S = _nonneg_array("S", S, "m")
     W = k * L * S

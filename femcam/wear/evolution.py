@@ -73,9 +73,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .. import _validate as vd
+from .. import _validate
+from ..hertz import LineContact
+from ..loads import contact_force
 from .map import WearMap, drift_sum, wear_map
-from .slip import SlipResult
+from .options import slip_kwargs, wear_coefficient_info, wear_options
+from .slip import SlipResult, follower_slip
 
 
 # --------------------------------------------------------------------------- geometry
@@ -148,19 +151,16 @@ def evolution_case(scene, theta, *, k: float | None = None) -> EvolutionCase:
     to the scene's wear coefficient (:func:`~femcam.wear.options.wear_coefficient_info`).
     Other followers raise :class:`~femcam.errors.InputError`.
     """
-    from .options import slip_kwargs, wear_coefficient_info, wear_options
-    from .slip import follower_slip
-
     kind = type(scene.follower).__name__
     if kind != "RollerFollower":
-        raise vd.fail("follower type", getattr(scene.follower, "kind", kind), "",
+        raise _validate.fail("follower type", getattr(scene.follower, "kind", kind), "",
                       "profile evolution is implemented for roller followers only (a radiused "
                       "knife-edge tip wears to a conformal flat that Hertz does not describe; a "
                       "flat face is not modelled); run without --evolve-blocks")
     opts = wear_options(scene)
     if k is None:
         k = wear_coefficient_info(scene)[0]
-    k = vd.nonnegative("k", k, "m^3/(N m)")
+    k = _validate.nonnegative("k", k, "m^3/(N m)")
     st = scene.analyse(theta)
     Fc = np.clip(st.Fc, 0.0, None)
     slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **slip_kwargs(scene, opts))
@@ -219,14 +219,14 @@ class EvolutionResult:
 
 
 def _check_blocks(cycles, block):
-    cycles = vd.positive("cycles", cycles, "revolutions")
-    block = vd.positive("block", block, "revolutions")
+    cycles = _validate.positive("cycles", cycles, "revolutions")
+    block = _validate.positive("block", block, "revolutions")
     if block > cycles * (1 + 1e-12):
-        raise vd.fail("block", block, "revolutions", f"must be <= cycles = {cycles:g} revolutions")
+        raise _validate.fail("block", block, "revolutions", f"must be <= cycles = {cycles:g} revolutions")
     m = cycles / block
     M = int(round(m))
     if abs(m - M) > 1e-9 * max(1.0, m):
-        raise vd.fail("block", block, "revolutions",
+        raise _validate.fail("block", block, "revolutions",
                       f"must divide cycles = {cycles:g} revolutions into a whole number of blocks "
                       f"(cycles/block = {m:.6g})")
     return cycles, block, M
@@ -245,12 +245,9 @@ def evolve(case: EvolutionCase, cycles: float, block: float, *, n_grid: int | No
     ``block > cycles`` or ``cycles/block`` not a whole number, and
     :class:`~femcam.hertz.HertzValidityError` if the worn cam becomes conformal (``1/R <= 0``).
     """
-    from ..hertz import LineContact
-    from ..loads import contact_force
-
     cycles, block, M = _check_blocks(cycles, block)
     if n_grid is not None:
-        n_grid = vd.integer("n_grid", n_grid, 2, "(grid points)")
+        n_grid = _validate.integer("n_grid", n_grid, 2, "(grid points)")
     th, om, sl = case.theta, case.omega, case.slip
     n = th.size
     dth = 2.0 * math.pi / n
@@ -259,7 +256,7 @@ def evolve(case: EvolutionCase, cycles: float, block: float, *, n_grid: int | No
     kappa = 1.0 / np.where(np.isfinite(rho) & (rho != 0), rho, np.inf)     # 0 where flat
     s_t = np.asarray(sl.V_cam, float) / om                 # ds/dtheta of the contact on the cam
     if np.any(s_t <= 0):
-        raise vd.fail("slip.V_cam", float(np.min(s_t * om)), "m/s",
+        raise _validate.fail("slip.V_cam", float(np.min(s_t * om)), "m/s",
                       "must be > 0 at every angle (the contact must move over the cam)")
     s_tt = _periodic_d1_d2(s_t, dth)[0]
     dkappa_ds = _periodic_d1_d2(kappa, dth)[0] / s_t
@@ -366,7 +363,7 @@ class ConvergenceTable:
 
 def block_counts(max_blocks: int) -> list:
     """1, 2, 4, ... (powers of two <= ``max_blocks``), then ``max_blocks`` if it is not one."""
-    max_blocks = vd.integer("blocks", max_blocks, 1, "(number of blocks)")
+    max_blocks = _validate.integer("blocks", max_blocks, 1, "(number of blocks)")
     out, nb = [], 1
     while nb <= max_blocks:
         out.append(nb)
@@ -380,7 +377,7 @@ def convergence_table(case: EvolutionCase, cycles: float, max_blocks: int, *,
                       n_grid: int | None = None) -> ConvergenceTable:
     """Evolve with 1, 2, 4, ... blocks up to ``max_blocks`` (see :func:`block_counts`) and tabulate
     the convergence in the block size (max-norm differences over the cam depth)."""
-    cycles = vd.positive("cycles", cycles, "revolutions")
+    cycles = _validate.positive("cycles", cycles, "revolutions")
     counts = block_counts(max_blocks)
     first = evolve(case, cycles, cycles, n_grid=n_grid)       # counts[0] == 1: the linear map
     n_grid = first.x_cam.size

@@ -66,11 +66,12 @@ different k per body by scaling).
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
-from .. import _validate as vd
+from .. import _validate
 from .slip import SlipResult
 
 
@@ -95,7 +96,7 @@ def depth_per_pass(k, w, v_slip, V_transport):
     >>> float(depth_per_pass(1e-17, 1e5, 0.2, 1.0))     # k w (slip per rolled length)
     2e-13
     """
-    k = vd.nonnegative("k", k, "m^3/(N m)")
+    k = _validate.nonnegative("k", k, "m^3/(N m)")
     w = np.clip(np.nan_to_num(np.asarray(w, dtype=float), nan=0.0), 0.0, None)
     v = np.abs(np.asarray(v_slip, dtype=float))
     Vt = np.abs(np.asarray(V_transport, dtype=float))
@@ -119,7 +120,7 @@ def surface_depth(x, xi, a, p0, v_slip, dt, *, k, period=None, chunk: int = 256)
     perimeter, roller circumference). Steps with ``a <= 0``, NaN or ``p0 <= 0`` carry no load.
     Vectorised over the grid; steps are processed in chunks of ``chunk``.
     """
-    k = vd.nonnegative("k", k, "m^3/(N m)")
+    k = _validate.nonnegative("k", k, "m^3/(N m)")
     x = np.asarray(x, dtype=float)
     xi = np.asarray(xi, dtype=float)
     a = np.nan_to_num(np.asarray(a, dtype=float), nan=0.0)
@@ -196,6 +197,39 @@ def _degrees(theta, idx, limit: int = 12) -> str:
     return "[" + ", ".join(d) + "]" + more
 
 
+def _missing_pressure(source, theta, lost, missing, pressure, ka, kp, skipped) -> None:
+    """Angles ``lost`` have ``Fc > 0`` but no pressure: raise, or skip them with a warning
+    (see :func:`contact_columns`)."""
+    status = _get_text(source, "status")
+    failed = np.zeros(theta.size, bool) if status is None else (status == "failed")
+    if missing is None:
+        skip, stop = lost[failed[lost]], lost[~failed[lost]]
+    else:
+        skip, stop = (lost, lost[:0]) if missing == "skip" else (lost[:0], lost)
+    what = f"{ka[0]}/{kp[0]}"
+    if stop.size:
+        hint = ""
+        if status is not None and np.all(status[stop] == "ok"):
+            hint = (f"; the sweep has no {what} there (was it run with method='hertz'? then use "
+                    "pressure='hertz')" if pressure == "fe" else
+                    "; Hertz theory does not apply there (sweep flag hertz_invalid): use pressure='fe'")
+        raise _validate.fail("theta", _degrees(theta, stop), "deg",
+                      f"contact force Fc > 0 but the contact pressure {what} is missing (NaN or "
+                      f"<= 0) at {stop.size} angle(s){hint}; wear there is unknown, not zero "
+                      "(missing='skip' skips such angles with a warning)")
+    if skip.size:
+        msgs = _get_text(source, "message")
+        why = ""
+        if msgs is not None:
+            uniq = sorted({m for m in msgs[skip] if m})
+            why = "; sweep message(s): " + " | ".join(uniq[:3]) if uniq else ""
+        warnings.warn(f"wear map: skipped {skip.size} angle(s) theta = {_degrees(theta, skip)} deg "
+                      f"where Fc > 0 but {what} is missing (failed solve): they carry no load, "
+                      f"so the wear near them is underestimated{why}", WearInputWarning, stacklevel=4)
+        if skipped is not None:
+            skipped.extend(int(i) for i in skip)
+
+
 def contact_columns(source, *, pressure: str = "hertz", missing: str | None = None,
                     skipped: list | None = None):
     """``(theta, a, p0, Fc)`` arrays (SI) from a SweepResult-like object or a mapping.
@@ -215,55 +249,26 @@ def contact_columns(source, *, pressure: str = "hertz", missing: str | None = No
 
     Without an ``Fc`` column, contact is read from the width alone (NaN or 0 = no contact).
     """
-    vd.choice("pressure", pressure, tuple(_KEYS))
+    _validate.choice("pressure", pressure, tuple(_KEYS))
     if missing is not None:
-        vd.choice("missing", missing, MISSING)
+        _validate.choice("missing", missing, MISSING)
     (ka, kp) = _KEYS[pressure]
     theta = _get(source, ("theta",))
     a, p0, Fc = _get(source, ka), _get(source, kp), _get(source, ("Fc",))
     for name, arr in (("theta", theta), ("a", a), ("p0", p0)):
         if arr is None:
-            raise vd.fail("source", type(source).__name__, "", f"has no column '{name}' "
+            raise _validate.fail("source", type(source).__name__, "", f"has no column '{name}' "
                          f"(looked for {ka if name == 'a' else kp if name == 'p0' else name})")
     if Fc is None:
         Fc = np.where(np.isfinite(a) & (a > 0), 1.0, 0.0)
-    theta = vd.finite_array("theta", theta, "rad")
+    theta = _validate.finite_array("theta", theta, "rad")
     bad = np.isfinite(a) & (a < 0)
     if np.any(bad):
-        raise vd.fail("a", float(a[bad][0]), "m", "must be >= 0 (contact half-width)")
+        raise _validate.fail("a", float(a[bad][0]), "m", "must be >= 0 (contact half-width)")
     loaded, have = _loaded_have(a, p0, Fc)
     lost = np.flatnonzero(loaded & ~have)
     if lost.size and missing != "zero":
-        status = _get_text(source, "status")
-        failed = np.zeros(theta.size, bool) if status is None else (status == "failed")
-        if missing is None:
-            skip, stop = lost[failed[lost]], lost[~failed[lost]]
-        else:
-            skip, stop = (lost, lost[:0]) if missing == "skip" else (lost[:0], lost)
-        what = f"{ka[0]}/{kp[0]}"
-        if stop.size:
-            hint = ""
-            if status is not None and np.all(status[stop] == "ok"):
-                hint = (f"; the sweep has no {what} there (was it run with method='hertz'? then use "
-                        "pressure='hertz')" if pressure == "fe" else
-                        "; Hertz theory does not apply there (sweep flag hertz_invalid): use pressure='fe'")
-            raise vd.fail("theta", _degrees(theta, stop), "deg",
-                          f"contact force Fc > 0 but the contact pressure {what} is missing (NaN or "
-                          f"<= 0) at {stop.size} angle(s){hint}; wear there is unknown, not zero "
-                          "(missing='skip' skips such angles with a warning)")
-        if skip.size:
-            import warnings
-
-            msgs = _get_text(source, "message")
-            why = ""
-            if msgs is not None:
-                uniq = sorted({m for m in msgs[skip] if m})
-                why = "; sweep message(s): " + " | ".join(uniq[:3]) if uniq else ""
-            warnings.warn(f"wear map: skipped {skip.size} angle(s) theta = {_degrees(theta, skip)} deg "
-                          f"where Fc > 0 but {what} is missing (failed solve): they carry no load, "
-                          f"so the wear near them is underestimated{why}", WearInputWarning, stacklevel=3)
-            if skipped is not None:
-                skipped.extend(int(i) for i in skip)
+        _missing_pressure(source, theta, lost, missing, pressure, ka, kp, skipped)
     noc = ~(loaded & have)
     a = np.where(noc, 0.0, a)
     p0 = np.where(noc, 0.0, np.clip(p0, 0.0, None))
@@ -405,9 +410,9 @@ def drift_sum(h, period: float, drift: float, cycles: float) -> np.ndarray:
     [3.0, 0.0, 0.0, 0.0]
     """
     h = np.asarray(h, dtype=float)
-    period = vd.positive("period", period, "m")
-    drift = vd.number("drift", drift, "m")
-    cycles = vd.nonnegative("cycles", cycles, "revolutions")
+    period = _validate.positive("period", period, "m")
+    drift = _validate.number("drift", drift, "m")
+    cycles = _validate.nonnegative("cycles", cycles, "revolutions")
     M = h.size
     n_full = int(np.floor(cycles))
     frac = cycles - n_full
@@ -441,19 +446,19 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
     angles with ``Fc > 0`` and no pressure, see :func:`contact_columns` (default: raise; skip
     with a warning the ``failed`` rows of a sweep result).
     """
-    k = vd.nonnegative("k", k, "m^3/(N m)")
-    length = vd.positive("length", length, "m")
-    cycles = vd.nonnegative("cycles", cycles, "revolutions")
+    k = _validate.nonnegative("k", k, "m^3/(N m)")
+    length = _validate.positive("length", length, "m")
+    cycles = _validate.nonnegative("cycles", cycles, "revolutions")
     skipped: list = []
     theta, a, p0, Fc = contact_columns(source, pressure=pressure, missing=missing, skipped=skipped)
     n = theta.size
     if slip.theta.shape != theta.shape or not np.allclose(slip.theta, theta, atol=1e-12):
-        raise vd.fail("slip.theta", f"{slip.theta.size} angles", "rad",
+        raise _validate.fail("slip.theta", f"{slip.theta.size} angles", "rad",
                       "must equal the contact table's angles")
     dth = np.diff(theta)
     span = theta[-1] - theta[0] + (float(np.mean(dth)) if n > 1 else 0.0)
     if n < 4 or np.any(dth <= 0) or abs(span - 2 * np.pi) > 1e-6:
-        raise vd.fail("theta", f"[{theta[0]:g} .. {theta[-1]:g}] ({n} points)", "rad",
+        raise _validate.fail("theta", f"[{theta[0]:g} .. {theta[-1]:g}] ({n} points)", "rad",
                      "must be increasing, uniform, one revolution, endpoint excluded")
     omega = slip.omega
     # close the revolution: step j runs from theta_j to theta_{j+1} (theta_n = theta_0 + 2 pi)
@@ -525,7 +530,7 @@ def wear_depth_per_angle(theta, a, p0, Fc, slip: SlipResult, k, *, missing: str 
     failed solve) gets: ``"zero"`` (default, unchanged behaviour), ``"nan"`` (NaN in that row:
     unknown, not zero), or ``"raise"`` (:class:`~femcam.errors.InputError` naming the angles).
     """
-    vd.choice("missing", missing, ("zero", "nan", "raise"))
+    _validate.choice("missing", missing, ("zero", "nan", "raise"))
     a_in, p_in, F_in = (np.asarray(x, dtype=float) for x in (a, p0, Fc))
     _, a_, p_, _ = contact_columns({"theta": theta, "a": a_in, "p0": p_in, "Fc": F_in},
                                    missing="raise" if missing == "raise" else "zero")

@@ -27,6 +27,9 @@ seed 000's H = 2000 N/mm^2. The returned text says which case applied.
 
 from __future__ import annotations
 
+from ..scene import _Checker
+from .archard import dimensional_coefficient
+
 #: key -> (unit shown to the user, SI factor, check, required) -- the scene loader's convention
 WEAR_KEYS = {
     "K": ("(dimensionless)", 1.0, "nonneg", False),
@@ -51,10 +54,8 @@ def wear_options(scene) -> dict:
     bad value with the expected unit, e.g. ``wear.k = 1e-17: unknown key; did you mean
     'k_mm3_per_N_m' in mm^3/(N m)? (units go in the key name)``.
     """
-    from ..scene import _Checker
-
-    raw = dict(getattr(scene, "wear", None) or {})
-    ck = _Checker(getattr(scene, "source_path", "") or getattr(scene, "name", "<scene>"))
+    raw = dict(scene.wear or {})
+    ck = _Checker(scene.source_path or scene.name)
     out = ck.table(raw, "wear", WEAR_KEYS)
     if "roller_model" in out and out["roller_model"] not in ("srr", "inertia"):
         ck.add("wear.roller_model", f"= {out['roller_model']!r}: must be one of 'srr', 'inertia'")
@@ -63,7 +64,7 @@ def wear_options(scene) -> dict:
     if "K" in raw and "k_mm3_per_N_m" in raw:
         ck.add("wear", "give either K (dimensionless, with the cam hardness_MPa) or k_mm3_per_N_m "
                "(mm^3/(N m)), not both")
-    hardness = getattr(getattr(scene, "cam", None), "hardness", None)
+    hardness = scene.cam.hardness
     if "K" in out and "k_mm3_per_N_m" not in raw and not hardness:
         ck.add("wear.K", f"= {raw['K']} (dimensionless): needs the cam hardness "
                "[materials.cam] hardness_MPa (MPa), k = K/H; or give k_mm3_per_N_m (mm^3/(N m))")
@@ -75,10 +76,8 @@ def wear_options(scene) -> dict:
 def wear_coefficient_info(scene) -> tuple[float, str]:
     """``(k, where)``: the dimensional wear coefficient (m^3/(N m)) the scene asks for, and a
     sentence saying where it came from (scene key or default)."""
-    from .archard import dimensional_coefficient
-
     opts = wear_options(scene)
-    hardness = getattr(getattr(scene, "cam", None), "hardness", None)
+    hardness = scene.cam.hardness
     if "k_mm3_per_N_m" in opts:
         k = opts["k_mm3_per_N_m"]
         return k, f"scene [wear] k_mm3_per_N_m = {k * 1e9:g} mm^3/(N m)"

@@ -56,8 +56,10 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 
 import numpy as np
+from scipy.integrate import quad
 
-from .. import _validate as vd
+from .. import _validate
+from ..kinematics import law as make_law
 from .archard import archard_volume, dimensional_coefficient
 
 #: Seed 000's printed Table 3 (v_rms in mm/s, ratio to SHM, S in mm) and wear list (W in mm^3).
@@ -133,7 +135,7 @@ def bezier_v2_integral(control_points) -> float:
     c = [Fraction(x).limit_denominator(10**12) for x in control_points]
     n = len(c) - 1
     if n < 1:
-        raise vd.fail("control_points", list(control_points), "", "must hold at least 2 ordinates")
+        raise _validate.fail("control_points", list(control_points), "", "must hold at least 2 ordinates")
     m = n - 1
     d = [n * (c[i + 1] - c[i]) for i in range(n)]
     total = Fraction(0)
@@ -170,8 +172,6 @@ _CLOSED_I = {
 
 def _resolve(law_or_name):
     if isinstance(law_or_name, str):
-        from ..kinematics import law as make_law  # lazy: kinematics is a sibling package
-
         return make_law(law_or_name)
     return law_or_name
 
@@ -205,8 +205,6 @@ def v2_integral_quad(law) -> float:
     The law's ``breakpoints`` (and 1/8, 3/8, 1/2, 5/8, 7/8) are passed so that piecewise laws
     (modified sine/trapezoid) are integrated piece by piece.
     """
-    from scipy.integrate import quad
-
     law = _resolve(law)
 
     def f(u):
@@ -227,10 +225,10 @@ def rms_velocity(law, h, beta, omega, *, method: str = "closed") -> float:
     ``method`` is ``"closed"`` (hand-derived integral; falls back to quadrature for laws
     without one) or ``"quad"``. References: seed 000, RMS velocity equation.
     """
-    h = vd.positive("h", h, "m")
-    beta = vd.positive("beta", beta, "rad")
-    omega = vd.positive("omega", omega, "rad/s")
-    vd.choice("method", method, ("closed", "quad"))
+    h = _validate.positive("h", h, "m")
+    beta = _validate.positive("beta", beta, "rad")
+    omega = _validate.positive("omega", omega, "rad/s")
+    _validate.choice("method", method, ("closed", "quad"))
     I = v2_integral_closed(law) if method == "closed" else float("nan")
     if not math.isfinite(I):
         I = v2_integral_quad(law)
@@ -277,12 +275,12 @@ class Seed000Inputs:
     omega: float = 1.0
 
     def __post_init__(self):
-        object.__setattr__(self, "K", vd.nonnegative("K", self.K, "(dimensionless)"))
-        object.__setattr__(self, "L", vd.nonnegative("L", self.L, "N"))
-        object.__setattr__(self, "H", vd.positive("H", self.H, "Pa"))
-        object.__setattr__(self, "h", vd.positive("h", self.h, "m"))
-        object.__setattr__(self, "beta", vd.positive("beta", self.beta, "rad"))
-        object.__setattr__(self, "omega", vd.positive("omega", self.omega, "rad/s"))
+        object.__setattr__(self, "K", _validate.nonnegative("K", self.K, "(dimensionless)"))
+        object.__setattr__(self, "L", _validate.nonnegative("L", self.L, "N"))
+        object.__setattr__(self, "H", _validate.positive("H", self.H, "Pa"))
+        object.__setattr__(self, "h", _validate.positive("h", self.h, "m"))
+        object.__setattr__(self, "beta", _validate.positive("beta", self.beta, "rad"))
+        object.__setattr__(self, "omega", _validate.positive("omega", self.omega, "rad/s"))
 
 
 @dataclass(frozen=True)
@@ -322,7 +320,7 @@ class Seed000Table:
         for r in self.rows:
             if r.law == law:
                 return r
-        raise vd.fail("law", law, "", f"not in the table ({[r.law for r in self.rows]})")
+        raise _validate.fail("law", law, "", f"not in the table ({[r.law for r in self.rows]})")
 
 
 def seed000_table(laws=PAPER_LAWS, inputs: Seed000Inputs | None = None) -> Seed000Table:

@@ -62,8 +62,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import _validate as vd
-from ..errors import ConvergenceError
+from .. import _validate
+from ..errors import ConvergenceError, UndercutError
+from ..profile import pressure_angle
 
 
 @dataclass(frozen=True)
@@ -102,18 +103,18 @@ class SlipResult:
 
 
 def _common(theta, s, s1, omega):
-    theta = vd.finite_array("theta", theta, "rad")
-    s = vd.finite_array("s", s, "m")
-    s1 = vd.finite_array("s1", s1, "m/rad")
-    omega = vd.positive("omega", omega, "rad/s")
+    theta = _validate.finite_array("theta", theta, "rad")
+    s = _validate.finite_array("s", s, "m")
+    s1 = _validate.finite_array("s1", s1, "m/rad")
+    omega = _validate.positive("omega", omega, "rad/s")
     theta, s, s1 = np.broadcast_arrays(theta, s, s1)
     return theta.astype(float), s.astype(float), s1.astype(float), omega
 
 
 def _offset_distance(R, e, name):
-    e = vd.number("e", e, "m")
+    e = _validate.number("e", e, "m")
     if abs(e) >= R:
-        raise vd.fail("e", e, "m", f"must satisfy |e| < {name} = {R:g} m")
+        raise _validate.fail("e", e, "m", f"must satisfy |e| < {name} = {R:g} m")
     return e, float(np.sqrt(R * R - e * e))
 
 
@@ -125,7 +126,7 @@ def knife_edge(theta, s, s1, *, Rb, omega, e=0.0) -> SlipResult:
     0.2
     """
     theta, s, s1, omega = _common(theta, s, s1, omega)
-    Rb = vd.positive("Rb", Rb, "m")
+    Rb = _validate.positive("Rb", Rb, "m")
     e, d = _offset_distance(Rb, e, "Rb")
     v = omega * np.hypot(d + s, s1 - e)
     return SlipResult(theta=theta, v_slip=v, V_cam=v.copy(), V_follower=np.zeros_like(v),
@@ -142,12 +143,10 @@ def flat_faced(theta, s, s1, s2, *, Rb, omega) -> SlipResult:
     0.21
     """
     theta, s, s1, omega = _common(theta, s, s1, omega)
-    s2 = np.broadcast_to(vd.finite_array("s2", s2, "m/rad^2"), s.shape).astype(float)
-    Rb = vd.positive("Rb", Rb, "m")
+    s2 = np.broadcast_to(_validate.finite_array("s2", s2, "m/rad^2"), s.shape).astype(float)
+    Rb = _validate.positive("Rb", Rb, "m")
     rho = Rb + s + s2
     if np.any(rho <= 0):
-        from ..errors import UndercutError
-
         i = int(np.argmin(rho))
         raise UndercutError(f"flat-faced follower: cam radius of curvature Rb + s + s'' = {rho[i]:g} m "
                             f"<= 0 at theta = {theta[i]:g} rad (cusp); increase Rb")
@@ -166,7 +165,7 @@ def pitch_speed(s, s1, s2, *, Rb, Rr, e=0.0):
     (curvature of a plane parametric curve, Norton 2009 eq. 7.14 with offset). The cam
     surface's radius of curvature is ``rho = rho_p - Rr``.
     """
-    R = vd.positive("Rb", Rb, "m") + vd.positive("Rr", Rr, "m")
+    R = _validate.positive("Rb", Rb, "m") + _validate.positive("Rr", Rr, "m")
     e, dp = _offset_distance(R, e, "Rb + Rr")
     y = dp + np.asarray(s, dtype=float)
     q = np.asarray(s1, dtype=float) - e
@@ -179,13 +178,11 @@ def pitch_speed(s, s1, s2, *, Rb, Rr, e=0.0):
 
 def _roller_kinematics(theta, s, s1, s2, Rb, Rr, e, omega):
     theta, s, s1, omega = _common(theta, s, s1, omega)
-    s2 = np.broadcast_to(vd.finite_array("s2", s2, "m/rad^2"), s.shape).astype(float)
-    Rr = vd.positive("Rr", Rr, "m")
+    s2 = np.broadcast_to(_validate.finite_array("s2", s2, "m/rad^2"), s.shape).astype(float)
+    Rr = _validate.positive("Rr", Rr, "m")
     sp, rho_p = pitch_speed(s, s1, s2, Rb=Rb, Rr=Rr, e=e)
     rho = rho_p - Rr
     if np.any((rho <= 0) & (rho_p > 0)):
-        from ..errors import UndercutError
-
         i = int(np.argmin(np.where(rho_p > 0, rho, np.inf)))
         raise UndercutError(f"roller follower: cam radius of curvature {rho[i]:g} m <= 0 at theta = "
                             f"{theta[i]:g} rad (roller larger than the pitch-curve curvature)")
@@ -203,7 +200,7 @@ def roller_srr(theta, s, s1, s2, *, Rb, Rr, omega, srr, e=0.0) -> SlipResult:
 
     ``srr = 0`` is pure rolling (zero wear).
     """
-    srr = vd.in_range("srr", srr, -2.0, 2.0, "", lo_open=True, hi_open=True)
+    srr = _validate.in_range("srr", srr, -2.0, 2.0, "", lo_open=True, hi_open=True)
     theta, s, omega, Rr, V_p, V_cam, Omega_req = _roller_kinematics(theta, s, s1, s2, Rb, Rr, e, omega)
     U = 2.0 * V_cam / (2.0 + srr)
     return SlipResult(theta=theta, v_slip=abs(srr) * U, V_cam=V_cam, V_follower=V_cam * (2 - srr) / (2 + srr),
@@ -223,18 +220,18 @@ def roller_inertia(theta, s, s1, s2, Fc, *, Rb, Rr, omega, mu, J, T_drag=0.0, e=
     revolutions until ``Omega`` is periodic to ``tol`` (relative), at most ``max_revolutions``.
     The march over angles is a short sequential loop (the state carries from step to step).
     """
-    mu = vd.nonnegative("mu", mu, "")
-    J = vd.positive("J", J, "kg m^2")
-    T_drag = vd.nonnegative("T_drag", T_drag, "N m")
+    mu = _validate.nonnegative("mu", mu, "")
+    J = _validate.positive("J", J, "kg m^2")
+    T_drag = _validate.nonnegative("T_drag", T_drag, "N m")
     theta, s, omega, Rr, V_p, V_cam, Omega_req = _roller_kinematics(theta, s, s1, s2, Rb, Rr, e, omega)
-    Fc = np.broadcast_to(vd.finite_array("Fc", Fc, "N"), theta.shape).astype(float)
+    Fc = np.broadcast_to(_validate.finite_array("Fc", Fc, "N"), theta.shape).astype(float)
     n = theta.size
     if n < 4:
-        raise vd.fail("theta", n, "points", "need >= 4 angles over one revolution")
+        raise _validate.fail("theta", n, "points", "need >= 4 angles over one revolution")
     dtheta = np.diff(theta)
     span = theta[-1] - theta[0] + float(np.mean(dtheta))
     if np.any(dtheta <= 0) or abs(span - 2 * np.pi) > 1e-6 * 2 * np.pi:
-        raise vd.fail("theta", f"[{theta[0]:g} .. {theta[-1]:g}] ({n} points)", "rad",
+        raise _validate.fail("theta", f"[{theta[0]:g} .. {theta[-1]:g}] ({n} points)", "rad",
                      "must be increasing and cover one revolution (endpoint excluded)")
     dt = np.append(dtheta, 2 * np.pi - (theta[-1] - theta[0])) / omega
     dOmega_max = (mu * np.clip(Fc, 0.0, None) * Rr / J) * dt      # friction authority per step
@@ -293,9 +290,7 @@ def radiused_tip(theta, s, s1, s2, *, Rb, r_tip, omega, e=0.0) -> SlipResult:
     >>> round(float(r.v_slip[0]), 12)          # base circle: omega (Rb + r) - omega r = omega Rb
     0.2
     """
-    from ..profile import pressure_angle
-
-    r_tip = vd.positive("r_tip", r_tip, "m")
+    r_tip = _validate.positive("r_tip", r_tip, "m")
     theta, s, omega, Rr, V_p, V_cam, Omega_req = _roller_kinematics(theta, s, s1, s2, Rb, r_tip, e, omega)
     phi0 = float(pressure_angle(s.flat[0], np.asarray(s1, dtype=float).flat[0], Rb + r_tip, float(e)))
     return SlipResult(theta=theta, v_slip=r_tip * np.abs(Omega_req), V_cam=V_cam,
@@ -327,18 +322,19 @@ def follower_slip(follower, theta, s, s1, s2, *, omega, Fc=None, roller_model: s
             return radiused_tip(theta, s, s1, s2, Rb=follower.Rb, r_tip=tip_radius, omega=omega, e=e)
         return knife_edge(theta, s, s1, Rb=follower.Rb, omega=omega, e=e)
     if tip_radius is not None:
-        raise vd.fail("tip_radius", tip_radius, "m", f"applies to knife-edge followers only (got a {kind})")
+        raise _validate.fail("tip_radius", tip_radius, "m",
+                             f"applies to knife-edge followers only (got a {kind})")
     if kind == "FlatFacedFollower":
         r = flat_faced(theta, s, s1, s2, Rb=follower.Rb, omega=omega)
         return dataclasses.replace(r, follower_origin=r.follower_origin - e)
     if kind != "RollerFollower":
-        raise vd.fail("follower", kind, "",
+        raise _validate.fail("follower", kind, "",
                       "must be a RollerFollower, KnifeEdgeFollower or FlatFacedFollower")
-    vd.choice("roller_model", roller_model, ROLLER_MODELS)
+    _validate.choice("roller_model", roller_model, ROLLER_MODELS)
     if roller_model == "srr":
         return roller_srr(theta, s, s1, s2, Rb=follower.Rb, Rr=follower.Rr, omega=omega, srr=srr, e=e)
     if Fc is None:
-        raise vd.fail("Fc", None, "N", "is needed by the inertia-limited roller model")
+        raise _validate.fail("Fc", None, "N", "is needed by the inertia-limited roller model")
     if J is None:
         J = 0.5 * np.pi * 7850.0 * 0.010 * follower.Rr**4
     return roller_inertia(theta, s, s1, s2, Fc, Rb=follower.Rb, Rr=follower.Rr, omega=omega, mu=mu, J=J,

@@ -1,0 +1,221 @@
+"""The FE models of a process: one per model family, their solved load cases, and the p0 of
+the fresh check models (:class:`ModelCache`), plus how a model is built (:func:`build_model`).
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+import time
+from collections import OrderedDict
+
+from ..errors import FemcamError
+from ..fe import ContactModel, ContactResult, SolverOptions
+from ..mesh import MeshOptions
+from .options import ContactParams, SweepOptions
+
+
+def _key(cp, rho_ref, a_ref, options):
+    return (cp.Rr, cp.length, repr(cp.cam), repr(cp.roller), cp.plane, float(rho_ref),
+            float(a_ref), options.a_over_h)
+
+
+class ModelCache:
+    """The FE models of a process, their solved load cases and the fresh-model check results.
+
+    Thread-safe: Dask runs tasks in worker threads of one process, and gmsh (model building)
+    is not thread-safe, so every build and every change of the tables holds one lock.
+
+    Parameters
+    ----------
+    max_models : int
+        Models kept (least recently used dropped first).
+
+    Attributes
+    ----------
+    stats : dict
+        ``{"built": int, "build_time": float (s)}``: models built by this cache (diagnostics).
+    """
+
+    def __init__(self, max_models: int = 64):
+        self.max_models = int(max_models)
+        self._models: OrderedDict = OrderedDict()
+        #: ``id(model) -> {(F, rho, mu, sliding): ContactResult}`` (lives as long as its model)
+        self._results: dict[int, dict] = {}
+        #: p0 of fresh check models (a repeated sweep in one process does not rebuild them)
+        self._fresh_p0: OrderedDict = OrderedDict()
+        self.stats = {"built": 0, "build_time": 0.0}
+        self._lock = threading.RLock()
+
+    def model_for(self, cp: ContactParams, rho_ref: float, a_ref: float,
+                  options: SweepOptions) -> ContactModel:
+        """The FE model of a family (references ``rho_ref``, ``a_ref`` in m), cached or built now.
+
+        Parameters
+        ----------
+        cp : ContactParams
+        rho_ref, a_ref : float
+            Reference cam radius and half-width (m) the mesh is built for.
+        options : SweepOptions
+            ``a_over_h``.
+
+        Returns
+        -------
+        femcam.fe.ContactModel
+        """
+        key = _key(cp, rho_ref, a_ref, options)
+        with self._lock:
+            m = self._models.get(key)
+            if m is not None:
+                self._models.move_to_end(key)
+                return m
+            t0 = time.perf_counter()
+            m = build_model(cp, rho_ref, a_ref, options)
+            self.stats["built"] += 1
+            self.stats["build_time"] += time.perf_counter() - t0
+            self._models[key] = m
+            self._results[id(m)] = {}
+            while len(self._models) > self.max_models:
+                _, old = self._models.popitem(last=False)
+                self._results.pop(id(old), None)
+            return m
+
+    def solve(self, model: ContactModel, F: float, rho: float, mu: float, sliding: int,
+              check: bool = True) -> ContactResult:
+        """``model.solve(...)``, remembered for models in this cache.
+
+        The family verification solves every angle of a family with its model; the chunks
+        computed in this process (serial sweeps, and forked workers, which inherit the cache)
+        then take those results instead of solving again. A result is a deterministic function
+        of the model and the load case, so this changes no number.
+
+        Parameters
+        ----------
+        model : femcam.fe.ContactModel
+        F : float
+            Contact force (N).
+        rho : float
+            Cam radius of curvature (m).
+        mu : float
+            Friction coefficient.
+        sliding : int
+            +1 or -1.
+        check : bool
+            Refuse load cases the model does not cover.
+
+        Returns
+        -------
+        femcam.fe.ContactResult
+        """
+        key = (float(F), float(rho), float(mu), int(sliding))
+        with self._lock:
+            memo = self._results.get(id(model))
+            if memo is not None and key in memo:
+                return memo[key]
+        r = model.solve(F=float(F), rho=float(rho), mu=mu, sliding=sliding, check=check)
+        with self._lock:
+            if memo is not None and id(model) in self._results:
+                memo[key] = r
+        return r
+
+    def fresh_p0(self, cp: ContactParams, rho: float, a: float, options: SweepOptions,
+                 F: float) -> float:
+        """FE p0 of a model built fresh for one load case (remembered per load case).
+
+        Parameters
+        ----------
+        cp : ContactParams
+        rho, a : float
+            The load case's cam radius and Hertz half-width (m): the fresh mesh is graded to them.
+        options : SweepOptions
+        F : float
+            Contact force (N).
+
+        Returns
+        -------
+        float
+            p0 (Pa); NaN if the fresh model cannot be built or solved.
+        """
+        key = (_key(cp, rho, a, options), F, cp.mu, cp.sliding)
+        with self._lock:
+            p0 = self._fresh_p0.get(key)
+        if p0 is not None:
+            return p0
+        try:
+            with self._lock:  # gmsh is not thread-safe
+                fresh = build_model(cp, rho, a, options)
+            p0 = fresh.solve(F=F, rho=rho, mu=cp.mu, sliding=cp.sliding, check=False).p0
+        except (FemcamError, ValueError, ArithmeticError):
+            return math.nan
+        with self._lock:
+            self._fresh_p0[key] = p0
+            while len(self._fresh_p0) > 1024:
+                self._fresh_p0.popitem(last=False)
+        return p0
+
+    def forget(self, cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions) -> None:
+        """Drop the model of references ``(rho_ref, a_ref)`` (m) and its solved cases (the
+        arguments as in :meth:`model_for`)."""
+        with self._lock:
+            m = self._models.pop(_key(cp, rho_ref, a_ref, options), None)
+            if m is not None:
+                self._results.pop(id(m), None)
+
+    def clear(self) -> None:
+        """Forget every model and fresh-model check result."""
+        with self._lock:
+            self._models.clear()
+            self._results.clear()
+            self._fresh_p0.clear()
+
+
+_PROCESS_CACHE = ModelCache()
+
+
+def default_cache() -> ModelCache:
+    """This process's :class:`ModelCache`.
+
+    One per process, not one per :func:`femcam.sweep.sweep` call: worker processes receive
+    their tasks pickled (a cache of factorised models cannot travel with them), so a worker
+    keeps the models it builds across chunks, and forked workers inherit the models and
+    results the parent's verification built.
+
+    Returns
+    -------
+    ModelCache
+    """
+    return _PROCESS_CACHE
+
+
+def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions,
+                _threaded: bool = False) -> ContactModel:
+    """A fresh :class:`femcam.fe.ContactModel` (mesh + factorisation).
+
+    Parameters
+    ----------
+    cp : ContactParams
+    rho_ref, a_ref : float
+        Reference cam radius and half-width (m).
+    options : SweepOptions
+        ``a_over_h``.
+
+    Returns
+    -------
+    femcam.fe.ContactModel
+    """
+    if not _threaded and threading.current_thread() is not threading.main_thread():
+        # Dask runs tasks in worker threads; gmsh.initialize() installs a SIGINT handler, which
+        # Python allows only in the main thread. Initialise gmsh here without it (same
+        # arguments as femcam.mesh otherwise) so that femcam.mesh finds it initialised.
+        import gmsh  # lazy: gmsh is a large native library, loaded only to build meshes
+
+        if not gmsh.isInitialized():
+            gmsh.initialize(["-nopopup"], readConfigFiles=False, interruptible=False)
+            try:
+                return build_model(cp, rho_ref, a_ref, options, _threaded=True)
+            finally:
+                gmsh.finalize()
+    return ContactModel.build(Rr=cp.Rr, rho_ref=rho_ref, cam=cp.cam, roller=cp.roller,
+                              length=cp.length, a_ref=a_ref,
+                              mesh=MeshOptions(a_over_h=options.a_over_h),
+                              solver=SolverOptions(), plane=cp.plane)

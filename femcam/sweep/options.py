@@ -1,0 +1,125 @@
+"""Numerical options of a sweep, and the scene adapter: the few contact parameters it needs."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .. import _validate
+from ..errors import InputError
+from ..materials import Material, effective_modulus
+
+METHODS = ("fe", "hertz")
+#: smallest accepted ``tolerance`` (relative p0 reuse error); see :mod:`femcam.sweep.families`
+TOLERANCE_FLOOR = 1e-4
+
+
+@dataclass(frozen=True, kw_only=True)
+class SweepOptions:
+    """Numerical options of a sweep (recorded in the manifest and the provenance header).
+
+    Parameters
+    ----------
+    method : str
+        ``"fe"`` (default) or ``"hertz"``.
+    a_over_h : float
+        FE element size in the contact zone, ``h = a / a_over_h`` (``--mesh-size``), in [2, 400].
+    tolerance : float
+        Bound on the reuse error ``|p0(family model) / p0(fresh model) - 1|`` (``--tolerance``),
+        verified with fresh models at each family's worst-covered angles; families are split
+        until it holds (:mod:`femcam.sweep.families`). At least :data:`TOLERANCE_FLOOR` (1e-4).
+    chunk_size : int
+        Angles per chunk (unit of work and of the on-disk store), >= 1.
+    vtk_every : int
+        Write a ``.vtu`` every k-th angle (0: none).
+    """
+
+    method: str = "fe"
+    a_over_h: float = 10.0
+    tolerance: float = 2e-3
+    chunk_size: int = 30
+    vtk_every: int = 0
+
+    def __post_init__(self):
+        _validate.choice("method", self.method, METHODS)
+        object.__setattr__(self, "a_over_h", _validate.in_range("a_over_h", self.a_over_h, 2.0, 400.0))
+        tol = _validate.in_range("tolerance", self.tolerance, 0.0, 0.5, lo_open=True)
+        if tol < TOLERANCE_FLOOR:
+            raise _validate.fail(
+                "tolerance", tol, "", f"must be >= {TOLERANCE_FLOOR:g}: the reuse error is a "
+                "discretisation effect of the order of the FE error itself (~0.2 % at "
+                "a_over_h = 10, smaller on finer meshes); below the floor nearly every "
+                "angle needs its own model. Refine a_over_h for more accurate p0")
+        object.__setattr__(self, "tolerance", tol)
+        if int(self.chunk_size) != self.chunk_size or self.chunk_size < 1:
+            raise _validate.fail("chunk_size", self.chunk_size, "angles", "must be an integer >= 1")
+        if int(self.vtk_every) != self.vtk_every or self.vtk_every < 0:
+            raise _validate.fail("vtk_every", self.vtk_every, "angles", "must be an integer >= 0")
+        object.__setattr__(self, "chunk_size", int(self.chunk_size))
+        object.__setattr__(self, "vtk_every", int(self.vtk_every))
+
+    def to_dict(self) -> dict:
+        """The options as a JSON-able dict (manifest key and provenance)."""
+        return {"method": self.method, "a_over_h": self.a_over_h, "tolerance": self.tolerance,
+                "chunk_size": self.chunk_size, "vtk_every": self.vtk_every}
+
+
+@dataclass(frozen=True)
+class ContactParams:
+    """The contact parameters of a roller-follower scene.
+
+    Parameters
+    ----------
+    Rr : float
+        Roller radius (m).
+    length : float
+        Face width (m).
+    cam, roller : Material
+        Materials.
+    mu : float
+        Friction coefficient.
+    plane : str
+        ``"strain"`` or ``"stress"``.
+    sliding : int
+        +1: friction traction on the cam in +x (scene ``"+x"``), -1: ``"-x"``.
+    """
+
+    Rr: float
+    length: float
+    cam: Material
+    roller: Material
+    mu: float
+    plane: str
+    sliding: int = 1
+
+    @property
+    def E_star(self) -> float:
+        """Effective modulus (Pa) of the pair in ``plane``."""
+        return effective_modulus(self.cam, self.roller, self.plane)
+
+
+def contact_params(scene) -> ContactParams:
+    """Roller radius, face width, materials, mu, plane and sliding direction of a scene.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A roller-follower scene.
+
+    Returns
+    -------
+    ContactParams
+
+    Raises
+    ------
+    InputError
+        If the follower is not a roller (a knife edge has no contact width; a flat-faced
+        follower has no FE contact model yet).
+    """
+    kind = scene.follower.kind
+    if kind != "roller":
+        raise InputError(f"follower.type = {kind!r}: the contact sweep needs a roller follower "
+                         "(a knife edge has no contact width; a flat-faced follower has no FE "
+                         "contact model yet)")
+    sliding = -1 if str(scene.sliding or "+x").strip() == "-x" else 1
+    return ContactParams(float(scene.follower.Rr), float(scene.length), scene.cam, scene.roller,
+                         float(scene.mu), str(scene.plane), sliding)
