@@ -115,6 +115,20 @@ def test_free_vibration_frequency(zeta):
     np.testing.assert_allclose(tm.natural_frequencies[0], wn, rtol=1e-12)
 
 
+def test_critically_damped_free_vibration_defective_system():
+    """zeta = 1 makes the state matrix defective (one double eigenvalue): the Van Loan path.
+    Closed form: e - e_st = d0 (1 + w t) exp(-w t) from rest."""
+    m, k_t, Fpl = 0.5, 4.0e4, 200.0
+    w = math.sqrt(k_t / m)
+    tm = TrainModel(follower=FollowerDynamics(m=m, k=0.0, Fpl=Fpl, c=0.0), k_t=k_t, zeta_t=1.0)
+    e_st, d0 = -Fpl / k_t, 1e-4
+    theta, Z, C, _ = simulate(tm, _dwell_first(), RPM60, z0=[e_st + d0, 0.0], steps_per_rev=3600)
+    t = theta[theta < math.pi] / RPM60
+    ref = d0 * (1 + w * t) * np.exp(-w * t)
+    np.testing.assert_allclose(Z[: t.size, 0] - e_st, ref, rtol=0, atol=1e-10 * d0,
+                               err_msg="critically damped oscillator")
+
+
 def test_two_dof_natural_frequencies():
     m1, m2, k_t, k2, k_s = 0.2, 0.1, 2e6, 1e6, 800.0
     tm = _train(m=m1, k_s=k_s, k_t=k_t, m2=m2, k2=k2, zeta2=0.0)
@@ -338,3 +352,30 @@ def test_scene_two_dof_and_liftoff_rows(tmp_path):
     st = weak.analyse(np.linspace(0, 2 * math.pi, 361))
     assert st.liftoff.any() and np.all(st.Fc[st.liftoff] <= 0.0)
     assert st.loads.liftoff_intervals
+
+
+def test_cli_dynamics_writes_csv_and_plots(tmp_path, capsys):
+    from femcam.cli import main
+
+    out = tmp_path / "dyn"
+    assert main(["dynamics", "examples/seed002_dynamic.toml", "--out", str(out),
+                 "--rpm-sweep", "4200:4600:200", "--no-plots"]) == 0
+    text = capsys.readouterr().out
+    assert "503.39 Hz" in text and "contact lost from 44" in text  # sqrt(2000800/0.2)/(2 pi)
+    rows = [r for r in (out / "rpm_sweep.csv").read_text().splitlines() if not r.startswith("#")]
+    assert rows[0].startswith("rpm,Fc_max_N,Fc_min_N") and len(rows) == 4
+    lines = [r for r in (out / "dynamics.csv").read_text().splitlines() if not r.startswith("#")]
+    assert lines[0] == "theta_deg,s_mm,Fc_rigid_N,Fc_N,liftoff,error_mass1_um" and len(lines) == 3601
+    assert main(["dynamics", "examples/seed002_study_model.toml", "--out", str(out)]) == 1
+    assert "model = 'rigid' (eq. 11) has no train" in capsys.readouterr().err
+
+
+@pytest.mark.slow
+def test_cli_dynamics_plots(tmp_path):
+    from femcam.cli import main
+
+    out = tmp_path / "dyn"
+    assert main(["dynamics", "examples/seed002_dynamic.toml", "--out", str(out),
+                 "--rpm-sweep", "4200:4600:200"]) == 0
+    assert (out / "dynamics_force.png").stat().st_size > 10_000
+    assert (out / "rpm_sweep.png").stat().st_size > 10_000

@@ -18,7 +18,6 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import brentq
 
 from .. import _validate as V  # noqa: N812
 from ..errors import InputError
@@ -47,6 +46,8 @@ class JumpResult:
 
 def _first_root(fun, x, y, xtol):
     """First sign change of y = fun(x) on the scan refined by brentq: (root, iterations)."""
+    from scipy.optimize import brentq  # import cost (~1 s): paid by jump searches only
+
     neg = np.flatnonzero(y <= 0.0)
     if neg.size == 0:
         return math.nan, 0

@@ -43,8 +43,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.linalg import expm
-from scipy.signal import lfilter
 
 from .. import _validate as V  # noqa: N812
 from ..errors import InputError
@@ -181,10 +179,13 @@ class Mode:
             E1, E2 = _e12(z)
             self.mu = np.exp(z)
             self.c0, self.c1 = h * (E1 - E2), h * E2
-        self.Phi, self.P1, self.P2 = self._vanloan(h)
+        if not self.modal:  # defective systems (critical damping)
+            self.Phi, self.P1, self.P2 = self._vanloan(h)
 
     def _vanloan(self, h):
         """Phi, P1, P2 with z(h) = Phi z0 + P1 u0 + P2 (u1 - u0) (Van Loan 1978)."""
+        from scipy.linalg import expm  # import cost (~0.5 s): only defective systems need it
+
         n, m = self.B.shape
         F = np.zeros((n + 2 * m, n + 2 * m))
         F[:n, :n], F[:n, n:n + m] = self.A * h, self.B * h
@@ -199,7 +200,7 @@ class Mode:
             q0, q1 = self.Bm @ u0, self.Bm @ u1
             y = np.exp(self.lam * dt) * (self.W @ z0) + dt * ((E1 - E2) * q0 + E2 * q1)
             return (self.V @ y).real
-        Phi, P1, P2 = self._vanloan(dt)  # pragma: no cover - defective systems only
+        Phi, P1, P2 = self._vanloan(dt)  # defective systems only
         return Phi @ z0 + P1 @ u0 + P2 @ (u1 - u0)
 
     def run(self, z0, U):
@@ -209,11 +210,13 @@ class Mode:
         out[0] = z0
         if K == 0:
             return out
-        if not self.modal:  # pragma: no cover - defective systems only (critical damping)
+        if not self.modal:  # defective systems (critical damping)
             Gu = U[:-1] @ (self.P1 - self.P2).T + U[1:] @ self.P2.T
             for k in range(K):
                 out[k + 1] = self.Phi @ out[k] + Gu[k]
             return out
+        from scipy.signal import lfilter  # import cost (~1 s): paid by dynamic scenes only
+
         Q = U @ self.Bm.T  # (K+1, 2n) modal inputs
         R = self.c0 * Q[:-1] + self.c1 * Q[1:]
         y0 = self.W @ z0
@@ -225,7 +228,9 @@ class Mode:
 
     def power(self, N):
         """State transition over N steps, Phi^N."""
-        return np.linalg.matrix_power(self.Phi, N)
+        if self.modal:
+            return ((self.V * self.mu**N) @ self.W).real
+        return np.linalg.matrix_power(self.Phi, N)  # defective only
 
 
 def check_resolution(train: TrainModel, omega: float, N: int) -> str | None:
