@@ -178,11 +178,12 @@ def _eq11(scene, m):
     return d, (m * d.a + f.c * d.v + f.k * d.s + f.Fpl) / np.cos(d.phi)
 
 
-@pytest.mark.parametrize("k_t, rtol", [(1e8, 2e-4), (1e12, 1e-7)])
+@pytest.mark.parametrize("k_t, rtol", [(1e8, 1e-4), (1e12, 1e-7)])
 def test_stiff_train_recovers_eq11(k_t, rtol):
-    """1e12 N/m with zeta_t = 0.7 is a stiff ODE (w_n h = 48 at 3600 steps): the exact
-    integrator stays stable and lands on eq. 11; 1e8 N/m rings a little at the bezier5 jerk
-    steps (tolerance from the run: 1.5e-4 of Fc; the deviation falls as 1/k_t)."""
+    """1e12 N/m with zeta_t = 0.7 is a stiff ODE (w_n h = 63 at 3600 steps, no refinement
+    needed: the mode decays by e^-44 per step): the exact integrator stays stable and lands on
+    eq. 11 (8e-10 of Fc, run). At 1e8 N/m the train's compliance is still felt: the force
+    differs by O((w_rise/w_n)^2) plus ringing at the bezier5 jerk steps, 2.7e-5 of Fc (run)."""
     import dataclasses
 
     sc = load_scene("examples/seed002_dynamic.toml")

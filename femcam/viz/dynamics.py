@@ -32,7 +32,9 @@ def _save(fig, path):
 def plot_force(results: dict, path, title: str = ""):
     """Axial contact force (N) vs cam angle (deg): ``results`` maps a label to a
     :class:`~femcam.dynamics.DynamicsResult`; the rigid eq. 11 force of the first result is
-    drawn as the reference; free-flight angles are shaded."""
+    drawn as the reference (dotted: a result's own eq. 11 when its total mass differs);
+    free-flight angles are shaded. The lower panel is the displacement error of the last mass
+    about its cycle mean (the mean is the static compression of the train)."""
     plt = _plt()
     fig, (ax, ax2) = plt.subplots(2, 1, sharex=True, figsize=(8.0, 6.5),
                                   gridspec_kw={"height_ratios": [3, 2]})
@@ -42,12 +44,16 @@ def plot_force(results: dict, path, title: str = ""):
     for i, (lab, r) in enumerate(results.items()):
         t = np.degrees(r.theta)
         ax.plot(t, r.Fc_axial, color=f"C{i}", lw=1.1, label=lab)
-        ax2.plot(t, r.e[:, -1] * 1e6, color=f"C{i}", lw=1.1, label=lab)
+        if i and r.Fc_rigid_axial.shape == first.Fc_rigid_axial.shape and not np.allclose(
+                r.Fc_rigid_axial, first.Fc_rigid_axial):  # another total mass: its own eq. 11
+            ax.plot(t, r.Fc_rigid_axial, color=f"C{i}", ls=":", lw=1.0, label=f"{lab}: eq. 11")
+        de = r.e[:, -1] - np.mean(r.e[:, -1])
+        ax2.plot(t, de * 1e6, color=f"C{i}", lw=1.1, label=lab)
         if r.any_liftoff:
             ax.fill_between(t, 0, 1, where=~r.contact, color=f"C{i}", alpha=0.15,
                             transform=ax.get_xaxis_transform(), label=f"{lab}: free flight")
     ax.set_ylabel("axial contact force Fc (N)")
-    ax2.set_ylabel("x - s of the last mass (um)")
+    ax2.set_ylabel("x - s - mean, last mass (um)")
     ax2.set_xlabel("cam angle theta (deg)")
     for a in (ax, ax2):
         a.grid(True, alpha=0.3)
