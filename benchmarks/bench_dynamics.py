@@ -90,12 +90,13 @@ def main(argv=None):
     t, r2 = best(lambda: periodic_response(tm2, sc.program, sc.omega, steps_per_rev=3600))
     print(f"{'seed 002 2-DOF, 600 rpm, 3600 steps':58s} {t * 1e3:7.1f} ms  {r2.message}")
     for workers in (1, 2):
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         sw = rpm_sweep(sc.train, sc.program, RPM, workers=workers)
-        t = time.perf_counter() - t0
+        t, c = time.perf_counter() - t0, time.process_time() - c0
+        cpu = f", CPU {c:.2f} s" if workers == 1 else ""
         print(f"{f'rpm sweep, {RPM.size} speeds {RPM[0]:g}..{RPM[-1]:g} rpm, workers={workers}':58s} "
               f"{t:7.2f} s   liftoff at {int(sw.liftoff.sum())} speeds, no one-periodic motion at "
-              f"{int((~sw.converged).sum())}; load {os.getloadavg()[0]:.2f}")
+              f"{int((~sw.converged).sum())}; load {os.getloadavg()[0]:.2f}{cpu}")
     t0 = time.perf_counter()
     j = jump_speed(sc.train, sc.program, RPM[0], RPM[-1])
     print(f"{'jump speed search (scan 40 + Brent)':58s} {time.perf_counter() - t0:7.2f} s   "

@@ -52,6 +52,8 @@ from ..loads import FollowerDynamics
 STEPS_PER_PERIOD = 20
 #: a mode whose amplitude falls below this factor in one step does not ring (quasi-static)
 RING_FACTOR = 0.5
+#: runs of at most this many steps use a Toeplitz product instead of lfilter (call overhead)
+SHORT_RUN = 64
 
 
 def _damping(name, c, zeta, k, m, unit="N s/m"):
@@ -203,8 +205,14 @@ class Mode:
         Phi, P1, P2 = self._vanloan(dt)  # defective systems only
         return Phi @ z0 + P1 @ u0 + P2 @ (u1 - u0)
 
-    def run(self, z0, U):
-        """States at the grid points of ``U`` (K+1 inputs, step h) starting from ``z0``."""
+    def forcing(self, U):
+        """Modal step forcing ``r_k`` of the inputs ``U`` (K+1, 2) -> (K, 2n) complex."""
+        Q = U @ self.Bm.T
+        return self.c0 * Q[:-1] + self.c1 * Q[1:]
+
+    def run(self, z0, U, R=None):
+        """States at the grid points of ``U`` (K+1 inputs, step h) starting from ``z0``
+        (``R``: its :meth:`forcing`, if already computed)."""
         K = U.shape[0] - 1
         out = np.empty((K + 1, z0.size))
         out[0] = z0
@@ -215,16 +223,36 @@ class Mode:
             for k in range(K):
                 out[k + 1] = self.Phi @ out[k] + Gu[k]
             return out
-        from scipy.signal import lfilter  # import cost (~1 s): paid by dynamic scenes only
-
-        Q = U @ self.Bm.T  # (K+1, 2n) modal inputs
-        R = self.c0 * Q[:-1] + self.c1 * Q[1:]
+        R = self.forcing(U) if R is None else R
         y0 = self.W @ z0
-        Y = np.empty((K, z0.size), complex)
-        for i, mu in enumerate(self.mu):
-            Y[:, i] = lfilter([1.0], [1.0, -mu], R[:, i], zi=[mu * y0[i]])[0]
+        if K <= SHORT_RUN:  # y_k = mu^k y0 + sum_j mu^(k-1-j) r_j: a small Toeplitz product
+            T = self._powers(K)  # (2n, K, K), mu^(k-j) below the diagonal (|mu| <= 1)
+            Y = np.einsum("ikj,ji->ki", T, R) + self.mu * T[:, :, 0].T * y0
+        else:
+            from scipy.signal import lfilter  # import cost (~1 s): paid by dynamic scenes only
+
+            Y = np.empty((K, z0.size), complex)
+            for i, mu in enumerate(self.mu):
+                Y[:, i] = lfilter([1.0], [1.0, -mu], R[:, i], zi=[mu * y0[i]])[0]
         out[1:] = (Y @ self.V.T).real
         return out
+
+    def _powers(self, K):
+        """mu_i^(k-j) for k >= j (else 0), shape (2n, K, K); cached per K."""
+        cache = self.__dict__.setdefault("_pow", {})
+        if K not in cache:
+            d = np.arange(K)[:, None] - np.arange(K)[None, :]
+            with np.errstate(under="ignore"):
+                P = self.mu[:, None, None] ** np.maximum(d, 0)[None]
+            cache[K] = np.where(d[None] >= 0, P, 0.0)
+        return cache[K]
+
+    def step1(self, z0, u0, u1):
+        """One whole step h (precomputed modal coefficients)."""
+        if not self.modal:  # defective systems
+            return self.Phi @ z0 + self.P1 @ u0 + self.P2 @ (u1 - u0)
+        y = self.mu * (self.W @ z0) + self.c0 * (self.Bm @ u0) + self.c1 * (self.Bm @ u1)
+        return (self.V @ y).real
 
     def power(self, N):
         """State transition over N steps, Phi^N."""
@@ -263,15 +291,16 @@ def march(train: TrainModel, modes, U, z0, contact0: bool):
     C = np.empty(N + 1, bool)
     Z[0], C[0] = z0, contact0
     k, tau, zt, contact, events, window = 1, 0.0, z0, contact0, 0, 256
+    R = {c: modes[c].forcing(U) if modes[c].modal else None for c in (True, False)}
     while k <= N:
         md = modes[contact]
         dt = k * h - tau
         if abs(dt - h) <= 1e-9 * h:  # a whole step: the precomputed modal coefficients
-            zk = md.run(zt, U[k - 1:k + 1])[-1]
+            zk = md.step1(zt, U[k - 1], U[k])
         else:
             zk = md.step(zt, dt, _u_at(U, tau / h), U[k])
         kw = min(N, k + window)
-        Zs = md.run(zk, U[k:kw + 1])
+        Zs = md.run(zk, U[k:kw + 1], None if R[contact] is None else R[contact][k:kw])
         F = train.trial_force(Zs)
         bad = (F < 0.0) if contact else (F > 0.0)
         bad[0] = False

@@ -201,6 +201,8 @@ def linear_periodic(train, modes, U, omega):
 
 #: fixed-point cycles before the Newton (shooting) iterations start
 SETTLE_CYCLES = 3
+#: Newton steps after which a motion that still does not repeat is reported as not periodic
+MAX_NEWTON = 20
 
 
 def _iterate_cycles(train, modes, U, z0, scale, tol, max_cycles):
@@ -220,7 +222,7 @@ def _iterate_cycles(train, modes, U, z0, scale, tol, max_cycles):
     Z, C, events = P(z0)
     residual = float(np.max(np.abs(Z[-1] - z0) / scale))
     z, J, newton = z0, None, 0
-    while residual >= tol and cycles < max_cycles:
+    while residual >= tol and cycles < max_cycles and newton < MAX_NEWTON:
         if cycles <= SETTLE_CYCLES:
             cand = Z[-1]
         else:
@@ -237,7 +239,8 @@ def _iterate_cycles(train, modes, U, z0, scale, tol, max_cycles):
     converged = residual < tol
     how = f"{cycles} cycles integrated, {newton} Newton (shooting) steps"
     msg = (f"contact lost: periodic ({how}, residual {residual:.2g})" if converged
-           else f"not periodic within max_cycles = {max_cycles} ({how}): residual {residual:.3g} "
+           else f"not periodic within max_cycles = {max_cycles} or {MAX_NEWTON} Newton steps ({how}): "
+           f"residual {residual:.3g} "
            f"> tol {tol:g} (a bouncing, lightly damped or period-multiplied motion); add damping")
     if converged and J is not None:
         mult = float(np.max(np.abs(np.linalg.eigvals(J))))
