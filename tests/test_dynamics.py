@@ -380,3 +380,26 @@ def test_cli_dynamics_plots(tmp_path):
                  "--rpm-sweep", "4200:4600:200"]) == 0
     assert (out / "dynamics_force.png").stat().st_size > 10_000
     assert (out / "rpm_sweep.png").stat().st_size > 10_000
+
+
+@pytest.mark.slow
+def test_hertz_sweep_takes_the_dynamic_force_and_liftoff_rows(tmp_path):
+    """The sweep reads Fc through Scene.analyse: at 4600 rpm (above the 4402 rpm jump speed)
+    its rows in free flight are 'liftoff' and the others carry the dynamic force."""
+    from femcam.cli import main
+
+    p = _scene(tmp_path, "rpm = 600.0 ", "rpm = 4600.0")
+    out = tmp_path / "sw"
+    assert main(["sweep", str(p), "--method", "hertz", "--angles-deg", "200:222:2", "--out", str(out),
+                 "--no-plots", "--workers", "1", "--vtk-every", "0", "--progress", "off"]) == 0
+    lines = [r.split(",") for r in (out / "sweep.csv").read_text().splitlines() if not r.startswith("#")]
+    head, rows = lines[0], lines[1:]
+    th = np.radians([float(r[head.index("theta_deg")]) for r in rows])
+    status = [r[head.index("status")] for r in rows]
+    res = load_scene(p).dynamic_response
+    free = res.at(th) <= 0.0
+    assert free.any() and (~free).any()
+    assert [s == "liftoff" for s in status] == list(free)
+    Fc = np.array([float(r[head.index("Fc_N")]) for r in rows])
+    st = load_scene(p).analyse(th)
+    np.testing.assert_allclose(Fc[~free], st.Fc[~free], rtol=1e-6)
