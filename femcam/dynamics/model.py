@@ -247,13 +247,6 @@ class Mode:
             cache[K] = np.where(d[None] >= 0, P, 0.0)
         return cache[K]
 
-    def step1(self, z0, u0, u1):
-        """One whole step h (precomputed modal coefficients)."""
-        if not self.modal:  # defective systems
-            return self.Phi @ z0 + self.P1 @ u0 + self.P2 @ (u1 - u0)
-        y = self.mu * (self.W @ z0) + self.c0 * (self.Bm @ u0) + self.c1 * (self.Bm @ u1)
-        return (self.V @ y).real
-
     def power(self, N):
         """State transition over N steps, Phi^N."""
         if self.modal:
@@ -290,32 +283,33 @@ def march(train: TrainModel, modes, U, z0, contact0: bool):
     Z = np.empty((N + 1, z0.size))
     C = np.empty(N + 1, bool)
     Z[0], C[0] = z0, contact0
-    k, tau, zt, contact, events, window = 1, 0.0, z0, contact0, 0, 256
     R = {c: modes[c].forcing(U) if modes[c].modal else None for c in (True, False)}
-    while k <= N:
+    # state zt at grid point b (fresh = False) or, just after an event, at time tau inside
+    # (t_{b}, t_{b+1}) (fresh = True)
+    b, tau, zt, contact, fresh, events, window = 0, 0.0, z0, contact0, False, 0, 256
+    while b < N:
         md = modes[contact]
-        dt = k * h - tau
-        if abs(dt - h) <= 1e-9 * h:  # a whole step: the precomputed modal coefficients
-            zk = md.step1(zt, U[k - 1], U[k])
-        else:
-            zk = md.step(zt, dt, _u_at(U, tau / h), U[k])
-        kw = min(N, k + window)
-        Zs = md.run(zk, U[k:kw + 1], None if R[contact] is None else R[contact][k:kw])
+        if fresh:  # partial step to the next grid point, which this mode keeps (no chatter)
+            b += 1
+            zt = md.step(zt, b * h - tau, _u_at(U, tau / h), U[b])
+            Z[b], C[b] = zt, contact
+            if b == N:
+                break
+        kw = min(N, b + window)
+        Zs = md.run(zt, U[b:kw + 1], None if R[contact] is None else R[contact][b:kw])
         F = train.trial_force(Zs)
-        bad = (F < 0.0) if contact else (F > 0.0)
-        bad[0] = False
+        bad = (F[1:] < 0.0) if contact else (F[1:] > 0.0)
         hits = np.flatnonzero(bad)
         if hits.size == 0:
-            Z[k:kw + 1], C[k:kw + 1] = Zs, contact
-            tau, zt, k = kw * h, Zs[-1], kw + 1
-            window = min(2 * window, N)
+            Z[b + 1:kw + 1], C[b + 1:kw + 1] = Zs[1:], contact
+            b, zt, fresh, window = kw, Zs[-1], False, min(2 * window, N)
             continue
-        j = int(hits[0])
-        Z[k:k + j], C[k:k + j] = Zs[:j], contact
+        j = int(hits[0]) + 1  # first violating point (index in Zs); Zs[j - 1] is accepted
+        Z[b + 1:b + j], C[b + 1:b + j] = Zs[1:j], contact
         frac = F[j - 1] / (F[j - 1] - F[j])
-        tau = (k + j - 1 + frac) * h
-        zt = md.step(Zs[j - 1], frac * h, U[k + j - 1], _u_at(U, tau / h))
-        contact, events, k, window = not contact, events + 1, k + j, 64
+        tau = (b + j - 1 + frac) * h
+        zt = md.step(Zs[j - 1], frac * h, U[b + j - 1], _u_at(U, tau / h))
+        b, contact, fresh, events, window = b + j - 1, not contact, True, events + 1, 64
     return Z, C, events
 
 
