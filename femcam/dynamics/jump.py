@@ -10,6 +10,17 @@ is a continuous function of the speed; the jump speed is its first zero, bracket
 and found by Brent's method (``scipy.optimize.brentq``). The rigid model's lift-off speed
 (eq. 11: :math:`\min_\theta (m \omega^2 s'' + c \omega s' + k s + F_{pl}) = 0`) is found the same
 way and reported beside it.
+
+Symbols
+-------
+=========  ===========================================  =====  =========================
+symbol     meaning                                      unit   source
+=========  ===========================================  =====  =========================
+omega      cam speed (rpm at the interface)             rad/s  [operating] rpm
+F_min      least trial contact force over a cycle       N      linear periodic solution
+rpm_jump   lowest speed with F_min = 0 (jump speed)     rpm    Norton 2009 ch. 10
+rpm_rigid  same for the rigid eq. 11 force              rpm    seed 002 eq. 11
+=========  ===========================================  =====  =========================
 """
 
 from __future__ import annotations

@@ -13,6 +13,18 @@ the state changes by less than ``tol`` over a cycle (scaled by the lift and the 
 velocity); ``cycles`` and ``residual`` are reported, and ``converged`` is False (with the
 reason) when ``max_cycles`` pass first (e.g. an undamped train that keeps bouncing, or a
 period-doubled motion).
+
+Symbols
+-------
+======  ==============================================  =======  ======================
+symbol  meaning                                         unit     source
+======  ==============================================  =======  ======================
+z       state (e, e') of the train, e = x - s           m, m/s   femcam.dynamics.model
+Phi     one-step transition of the contact mode         -        exact (modal)
+N       time steps per revolution                       -        choose_steps
+P(z)    state after one cycle from z (cycle map)        m, m/s   shooting (Norton 2009 ch. 10)
+tol     periodicity tolerance, scaled by lift, max |v|  -
+======  ==============================================  =======  ======================
 """
 
 from __future__ import annotations
@@ -260,6 +272,16 @@ def periodic_response(train: TrainModel, program: CamProgram, omega: float, *,
     Raises :class:`~femcam.errors.InputError` (with the numbers) for an unresolved time step,
     a train that cannot follow the cam (lowest natural frequency <= cam frequency), or an
     undamped train in exact resonance with a cam harmonic.
+
+    >>> from femcam.kinematics import CamProgram, dwell, fall, rise
+    >>> from femcam.loads import FollowerDynamics
+    >>> q = math.pi / 2
+    >>> prog = CamProgram([rise(q, 0.01), dwell(q), fall(q, 0.01), dwell(q)])
+    >>> tm = TrainModel(follower=FollowerDynamics(m=0.2, k=800.0, Fpl=500.0, c=0.0),
+    ...                 k_t=1e6, zeta_t=0.1)
+    >>> r = periodic_response(tm, prog, 20 * math.pi)     # 600 rpm
+    >>> r.converged, r.cycles, r.any_liftoff, r.steps_per_rev
+    (True, 1, False, 3600)
     """
     if not isinstance(train, TrainModel):
         raise InputError(f"train = {train!r}: must be a TrainModel")

@@ -80,7 +80,8 @@ def plot_rpm_sweep(sweep, path, jump=None, title: str = ""):
     ax.plot(rpm, sweep.Fc_rigid_min, "C0--", lw=0.9, label="least Fc (rigid eq. 11)")
     bad = ~ok & np.isfinite(sweep.Fc_max)
     if np.any(bad):
-        ax.plot(rpm[bad], sweep.Fc_max[bad], "kx", ms=5, label="no stable one-periodic motion")
+        ax.plot(rpm[bad], sweep.Fc_max[bad], "kx", ms=5,
+                label="no stable one-periodic motion (peak of the last cycle)")
     ax.axhline(0.0, color="k", lw=0.6)
     if jump is not None and math.isfinite(jump.rpm_jump):
         ax.axvline(jump.rpm_jump, color="C2", lw=1.2, label=f"jump speed {jump.rpm_jump:.0f} rpm")
