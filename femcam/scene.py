@@ -105,7 +105,8 @@ def _train(ck, raw: dict, dy: dict, dyn):
     model = dy.get("model", "rigid")
     allowed = {"rigid": (), "one_dof": ("train_",), "two_dof": ("train_", "second_")}.get(model, ())
     for k in raw:
-        if k.startswith(("train_", "second_")) and not k.startswith(allowed):
+        if (k.startswith(("train_", "second_")) and not k.startswith(allowed)
+                or k == "steps_per_rev" and model == "rigid"):
             ck.add(f"dynamics.{k}", f"= {_fmt(raw[k])}: not used by model = {model!r}")
     if "steps_per_rev" in dy and dy["steps_per_rev"] != int(dy["steps_per_rev"]):
         ck.add("dynamics.steps_per_rev", f"= {_fmt(raw['steps_per_rev'])}: must be a whole number")
@@ -349,6 +350,11 @@ class Scene:
         :class:`~femcam.errors.UndercutError` (with the angle ranges in degrees) for an
         undercut cam unless ``allow_undercut=True``; the intervals found are
         ``SceneState.undercut_intervals`` (rad, in [0, 2 pi)).
+
+        ``Fc`` is seed 002's eq. 11 (rigid follower) unless ``[dynamics] model`` is one_dof or
+        two_dof: then it is the periodic contact force of the elastic train
+        (:attr:`dynamic_response`, interpolated to ``theta``; free flight is ``liftoff``), and a
+        response that is not one-periodic raises :class:`~femcam.errors.ConvergenceError`.
         """
         d = self.program.derivatives(theta)
         w = self.omega

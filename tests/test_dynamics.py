@@ -338,6 +338,7 @@ def test_scene_dynamic_force_reaches_analyse():
     ('model = "one_dof"', 'model = "two_dof"', "second_mass_kg: missing required key for model"),
     ('model = "one_dof"', 'model = "one_dof"\nsteps_per_rev = 3600.5', "must be a whole number"),
     ('model = "one_dof"', 'model = "one_dof"\nsecond_mass_kg = 0.1', "not used by model = 'one_dof'"),
+    ('model = "one_dof"', 'model = "rigid"\nsteps_per_rev = 7200', "steps_per_rev = 7200: not used"),
 ])
 def test_scene_dynamics_bad_input(tmp_path, old, new, msg):
     with pytest.raises(SceneError, match=msg):
