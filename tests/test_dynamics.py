@@ -231,6 +231,17 @@ def test_jump_speed_stiff_train_matches_rigid_liftoff():
     assert not below.any_liftoff and above.any_liftoff and above.converged
 
 
+def test_two_dof_jump_speed_stiff_limit_uses_total_mass():
+    m1, m2, k, Fpl = 0.15, 0.05, 800.0, 100.0
+    ref = _rigid_liftoff_rpm(m1 + m2, k, Fpl, math.pi / 2)
+    tm = TrainModel(follower=FollowerDynamics(m=m1, k=k, Fpl=Fpl, c=0.0), k_t=1e9, zeta_t=0.7,
+                    m2=m2, k2=1e9, zeta2=0.7)
+    j = jump_speed(tm, _program(), 0.5 * ref, 1.5 * ref, n_scan=11)
+    np.testing.assert_allclose(j.rpm_jump, ref, rtol=1e-4, err_msg="rigid lift-off, m = m1 + m2")
+    above = periodic_response(tm, _program(), 1.05 * ref / 30 * math.pi)
+    assert above.any_liftoff and above.converged, above.message
+
+
 def test_free_flight_follows_the_return_spring():
     """During lift-off the mass moves on the return spring alone (closed form, c_s = 0)."""
     m, k, Fpl = 0.2, 800.0, 100.0
@@ -285,8 +296,9 @@ def test_unresolved_time_step_is_refused_with_numbers():
 
 
 def test_undamped_bouncing_is_flagged_not_hidden():
-    """Zero damping everywhere and a weak spring well above the jump speed: no stable
-    one-periodic motion; the result says so (converged False, with the reason)."""
+    """Zero damping everywhere and a weak spring well above the jump speed: the impacts are
+    elastic and nothing removes energy, so there is no attracting one-periodic motion; the
+    result says so (converged False, with the reason) instead of returning the last cycle."""
     tm = _train(m=0.2, k_s=800.0, Fpl=100.0, k_t=1e6, zeta_t=0.0)
     r = periodic_response(tm, _program(), 1.6 * _rigid_liftoff_rpm(0.2, 800, 100, math.pi / 2)
                           / 30 * math.pi, max_cycles=60)
