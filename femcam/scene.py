@@ -288,9 +288,9 @@ class Scene:
     fe: dict = field(default_factory=dict)
     wear: dict = field(default_factory=dict)
     source_path: str = ""
+    raw: dict = field(default_factory=dict, repr=False)
     train: TrainModel | None = None  # [dynamics] model one_dof/two_dof; None: rigid eq. 11
     steps_per_rev: int | None = None
-    raw: dict = field(default_factory=dict, repr=False)
 
     @property
     def rpm(self) -> float:
