@@ -21,6 +21,10 @@ phi     pressure angle                                     rad     femcam.profil
 Fc      normal contact force (> 0 pushes)                  N       seed 002 eq. 11
 ======  =================================================  ======  =======================
 
+This is the rigid follower (scene ``[dynamics] model = "rigid"``, the default). An elastic
+follower train (one_dof / two_dof, with contact loss and re-impact) is in
+:mod:`femcam.dynamics`; its stiff-train limit is this eq. 11.
+
 Seed 002 writes eq. 11 with theta-derivatives, ``(a m w^2 + v c w + s k + Fpl)/cos phi``;
 with ``a = s'' w^2`` and ``v = s' w`` in time units it is the same expression as here.
 """

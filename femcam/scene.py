@@ -14,7 +14,10 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
                         law? | control_points?
     [follower]         type = "roller"|"knife_edge"|"flat_faced", base_radius_mm,
                        roller_radius_mm (roller), offset_mm?, face_width_mm
-    [dynamics]         mass_kg, spring_N_per_m, preload_N, damping_N_s_per_m | damping_ratio
+    [dynamics]         mass_kg, spring_N_per_m, preload_N, damping_N_s_per_m | damping_ratio,
+                       model? = "rigid"|"one_dof"|"two_dof" (docs/dynamics.md), steps_per_rev?,
+                       train_stiffness_N_per_m, train_damping_ratio | train_damping_N_s_per_m,
+                       second_mass_kg, second_stiffness_N_per_m, second_damping_ratio | ..._N_s_per_m
     [materials.cam], [materials.roller] (alias [materials.follower]):
                        E_GPa, nu, hardness_MPa?, name?
     [contact]?         friction?, plane? = "strain"|"stress", sliding? = "+x"|"-x"
@@ -34,7 +37,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import InputError, SceneError, UndercutError
+from .dynamics import TrainModel, periodic_response
+from .errors import ConvergenceError, InputError, SceneError, UndercutError
 from .kinematics import CamProgram, dwell, fall, law, rise
 from .loads import FollowerDynamics, LoadResult, contact_force
 from .materials import E_MAX, E_MIN, Material
@@ -76,12 +80,64 @@ _DYNAMICS = {"mass_kg": ("kg", 1.0, "nonneg", True), "spring_N_per_m": ("N/m", 1
              "preload_N": ("N", 1.0, "nonneg", True),
              "damping_N_s_per_m": ("N s/m", 1.0, "nonneg", False),
              "damping_ratio": ("(dimensionless)", 1.0, "nonneg", False)}
+# --- follower-train dynamics (femcam.dynamics): model = "rigid" (eq. 11, default) | one_dof | two_dof
+_TRAIN = {"model": ("", None, "str", False), "steps_per_rev": ("(count)", 1.0, "pos", False),
+          "train_stiffness_N_per_m": ("N/m", 1.0, "pos", False),
+          "train_damping_ratio": ("(dimensionless)", 1.0, "nonneg", False),
+          "train_damping_N_s_per_m": ("N s/m", 1.0, "nonneg", False),
+          "second_mass_kg": ("kg", 1.0, "pos", False), "second_stiffness_N_per_m": ("N/m", 1.0, "pos", False),
+          "second_damping_ratio": ("(dimensionless)", 1.0, "nonneg", False),
+          "second_damping_N_s_per_m": ("N s/m", 1.0, "nonneg", False)}
+_DYNAMICS.update(_TRAIN)
 _MATERIAL = {"E_GPa": ("GPa", 1e9, "pos", True), "nu": ("(dimensionless)", 1.0, "nu", True),
              "hardness_MPa": ("MPa", 1e6, "pos", False), "name": ("", None, "str", False)}
 _CONTACT = {"friction": ("(dimensionless)", 1.0, "nonneg", False), "plane": ("", None, "str", False),
             "sliding": ("", None, "str", False)}
 _CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", "flat_faced"),
-            "plane": ("strain", "stress"), "sliding": ("+x", "-x")}
+            "plane": ("strain", "stress"), "sliding": ("+x", "-x"),
+            "model": ("rigid", "one_dof", "two_dof")}
+
+
+def _train(ck, raw: dict, dy: dict, dyn):
+    """The TrainModel of [dynamics] (None for model = "rigid"); problems go to ``ck``."""
+    if "model" in raw and "model" not in dy:  # a bad model name, reported already
+        return None
+    model = dy.get("model", "rigid")
+    allowed = {"rigid": (), "one_dof": ("train_",), "two_dof": ("train_", "second_")}.get(model, ())
+    for k in raw:
+        if (k.startswith(("train_", "second_")) and not k.startswith(allowed)
+                or k == "steps_per_rev" and model == "rigid"):
+            ck.add(f"dynamics.{k}", f"= {_fmt(raw[k])}: not used by model = {model!r}")
+    if "steps_per_rev" in dy and dy["steps_per_rev"] != int(dy["steps_per_rev"]):
+        ck.add("dynamics.steps_per_rev", f"= {_fmt(raw['steps_per_rev'])}: must be a whole number")
+    if model == "rigid":
+        return None
+    parts = ["train"] + (["second"] if model == "two_dof" else [])
+    need = ["train_stiffness_N_per_m"] + (["second_mass_kg", "second_stiffness_N_per_m"]
+                                          if model == "two_dof" else [])
+    ok = dyn is not None
+    for k in need:
+        if k not in raw:
+            ck.add(f"dynamics.{k}", f"missing required key for model = {model!r} (unit: {_TRAIN[k][0]})")
+        ok = ok and k in dy
+    for p in parts:
+        given = [k for k in (f"{p}_damping_ratio", f"{p}_damping_N_s_per_m") if k in raw]
+        if len(given) != 1:
+            ck.add("dynamics", f"model = {model!r}: give exactly one of {p}_damping_ratio "
+                   f"(dimensionless) or {p}_damping_N_s_per_m (N s/m); got {given or 'none'}")
+        ok = ok and len(given) == 1 and given[0] in dy
+    if not ok:
+        return None
+    sec = ({} if model == "one_dof" else
+           {"m2": dy["second_mass_kg"], "k2": dy["second_stiffness_N_per_m"],
+            "c2": dy.get("second_damping_N_s_per_m"), "zeta2": dy.get("second_damping_ratio")})
+    try:
+        return TrainModel(follower=dyn, k_t=dy["train_stiffness_N_per_m"],
+                          c_t=dy.get("train_damping_N_s_per_m"), zeta_t=dy.get("train_damping_ratio"),
+                          **sec)
+    except InputError as exc:  # mass_kg = 0: a massless follower has no train dynamics
+        ck.add("dynamics", f"model = {model!r}: {exc}")
+        return None
 
 
 def _fmt(v) -> str:
@@ -284,6 +340,8 @@ class Scene:
     wear: dict = field(default_factory=dict)
     source_path: str = ""
     raw: dict = field(default_factory=dict, repr=False)
+    train: TrainModel | None = None  # [dynamics] model one_dof/two_dof; None: rigid eq. 11
+    steps_per_rev: int | None = None
 
     @property
     def rpm(self) -> float:
@@ -302,6 +360,14 @@ class Scene:
         except UndercutError as exc:
             flags = cam_profile(self.follower, dense, dd.s, dd.s1, dd.s2, allow_undercut=True).undercut
             return flags, str(exc)
+
+    @cached_property
+    def dynamic_response(self):
+        """Periodic response of the follower train (:class:`femcam.dynamics.DynamicsResult`),
+        computed once per scene; None for the rigid model (eq. 11)."""
+        if self.train is None:
+            return None
+        return periodic_response(self.train, self.program, self.omega, steps_per_rev=self.steps_per_rev)
 
     def undercut_check(self, theta=None, undercut=None) -> list:
         """Undercut intervals ``[(start, end), ...]`` (rad, in [0, 2 pi)) of the whole cam.
@@ -335,6 +401,11 @@ class Scene:
         :class:`~femcam.errors.UndercutError` (with the angle ranges in degrees) for an
         undercut cam unless ``allow_undercut=True``; the intervals found are
         ``SceneState.undercut_intervals`` (rad, in [0, 2 pi)).
+
+        ``Fc`` is seed 002's eq. 11 (rigid follower) unless ``[dynamics] model`` is one_dof or
+        two_dof: then it is the periodic contact force of the elastic train
+        (:attr:`dynamic_response`, interpolated to ``theta``; free flight is ``liftoff``), and a
+        response that is not one-periodic raises :class:`~femcam.errors.ConvergenceError`.
         """
         d = self.program.derivatives(theta)
         w = self.omega
@@ -346,7 +417,13 @@ class Scene:
             raise UndercutError(f"{self._dense_undercut[1]} (found by the dense check on "
                                 f"{UNDERCUT_CHECK_N} angles over one revolution; the analysed "
                                 "angles miss it)")
-        r = contact_force(self.dynamics, d.theta, d.s, v, a, p.phi)
+        if self.train is None:
+            r = contact_force(self.dynamics, d.theta, d.s, v, a, p.phi)
+        else:  # the dynamic contact force of the periodic train response, at theta
+            res = self.dynamic_response
+            if not res.converged:
+                raise ConvergenceError(f"[dynamics] model = {res.model!r} at {self.rpm:g} rpm: {res.message}")
+            r = res.load_result(d.theta, p.phi)
         return SceneState(theta=np.asarray(d.theta, float), s=d.s, v=v, a=a, j=j, s1=d.s1, s2=d.s2,
                           phi=p.phi, rho=p.rho, Fc=r.Fc, liftoff=r.liftoff, contact_x=p.contact_x,
                           contact_y=p.contact_y, profile=p, loads=r, undercut_intervals=intervals)
@@ -401,7 +478,7 @@ def load_scene(path) -> Scene:
     omega = _operating(ck, raw)
     program = _program(ck, raw)
     fo, follower = _follower(ck, raw)
-    dyn = _dynamics(ck, raw)
+    dyn, train, steps_per_rev = _dynamics(ck, raw)
     mats = _materials(ck, raw)
     # contact and pass-through tables
     co = ck.table(raw.get("contact", {}), "contact", _CONTACT)
@@ -414,7 +491,8 @@ def load_scene(path) -> Scene:
                  program=program, follower=follower, dynamics=dyn, omega=omega, cam=mats["cam"],
                  roller=mats["roller"], length=fo["face_width_mm"], mu=co.get("friction", 0.0),
                  plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=dict(raw.get("fe", {})),
-                 wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw)
+                 wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw, train=train,
+                 steps_per_rev=steps_per_rev)
 
 
 def _read_toml(path: Path) -> dict:
@@ -533,12 +611,20 @@ def _follower(ck: _Checker, raw: dict):
     return fo, follower
 
 
-def _dynamics(ck: _Checker, raw: dict) -> FollowerDynamics | None:
-    """The follower dynamics from [dynamics] (exactly one of the two damping keys)."""
+def _dynamics(ck: _Checker, raw: dict) -> tuple:
+    """``(FollowerDynamics | None, TrainModel | None, steps_per_rev | None)`` from [dynamics]
+    (exactly one of the two damping keys; the train of ``model = one_dof | two_dof``)."""
     g = raw.get("dynamics", {})
     dy = ck.table(g, "dynamics", _DYNAMICS)
     if not (isinstance(g, dict) and "dynamics" in raw):
-        return None
+        return None, None, None
+    dyn = _follower_dynamics(ck, g, dy)
+    steps = int(dy["steps_per_rev"]) if "steps_per_rev" in dy else None
+    return dyn, _train(ck, g, dy, dyn), steps
+
+
+def _follower_dynamics(ck: _Checker, g: dict, dy: dict) -> FollowerDynamics | None:
+    """The rigid-follower dynamics of eq. 11 (mass, spring, preload, damping)."""
     given = [k for k in ("damping_N_s_per_m", "damping_ratio") if k in g]
     if len(given) != 1:
         ck.add("dynamics", "give exactly one of damping_N_s_per_m (N s/m) or damping_ratio "

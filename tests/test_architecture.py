@@ -19,7 +19,12 @@ PKG = ROOT / "femcam"
 #: the line): heavy, optional, or native libraries that ``import femcam`` must not load
 LAZY_OK = {"gmsh", "pyvista", "matplotlib", "dask",
            # meshio: ~0.4-0.6 s to import (its format plugins); only the .vtu/.msh writers need it
-           "meshio"}
+           "meshio",
+           # scipy submodules cost 0.3-0.9 s each to import (optimize, signal, integrate, linalg):
+           # imported where a rarely used path needs them, so ``import femcam`` stays fast
+           "scipy",
+           # stdlib process pool, only for workers > 1
+           "concurrent"}
 
 #: function-level imports in modules that parallel branches are editing right now (FE solver,
 #: Hertz formulas, profile, kinematics, BLAS threads); to be made module-level when those merge.

@@ -1,0 +1,121 @@
+"""``femcam dynamics``: periodic response of the follower train, jump speed and rpm sweep.
+
+``femcam dynamics SCENE.toml --out DIR [--rpm-sweep START:STOP:STEP] [--workers N]`` needs a
+scene with ``[dynamics] model = "one_dof"`` or ``"two_dof"``. It writes ``DIR/dynamics.csv``
+(theta_deg, s_mm, Fc_rigid_N, Fc_N (axial), liftoff, error_um per mass; provenance header)
+and ``DIR/dynamics_force.png``; with ``--rpm-sweep`` also ``DIR/rpm_sweep.csv``,
+``DIR/rpm_sweep.png`` and the jump speed within the range (rpm, stop inclusive).
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import shlex
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from .. import __version__, _validate
+from ..dynamics import jump_speed, rpm_sweep
+from ..errors import InputError
+from ..scene import load_scene
+from ..viz.dynamics import plot_force, plot_rpm_sweep
+
+
+def register(subparsers) -> None:
+    p = subparsers.add_parser("dynamics", help="follower-train dynamics: contact force, jump speed",
+                              description=__doc__.split("\n\n")[0])
+    p.add_argument("scene", help="scene TOML with [dynamics] model = one_dof or two_dof")
+    p.add_argument("--out", required=True, help="output directory")
+    p.add_argument("--rpm-sweep", metavar="START:STOP:STEP", default=None,
+                   help="also sweep the cam speed (rpm, stop inclusive) and find the jump speed")
+    p.add_argument("--workers", type=int, default=1, help="processes for the rpm sweep (default 1)")
+    p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    p.set_defaults(func=run)
+
+
+def _rpm_range(text: str):
+    try:
+        a, b, c = (float(x) for x in text.split(":"))
+    except ValueError:
+        raise InputError(f"--rpm-sweep = {text!r}: must be START:STOP:STEP in rpm") from None
+    if not (0 < a < b and c > 0):
+        raise InputError(f"--rpm-sweep = {text!r}: need 0 < START < STOP and STEP > 0 (rpm)")
+    n = int(math.floor((b - a) / c + 1e-9)) + 1
+    return a + c * np.arange(n)
+
+
+def _header(fh, scene):
+    fh.write(f"# femcam dynamics results (units in the column names), femcam {__version__}\n")
+    fh.write(f"# scene: {scene.source_path}\n# command: femcam {shlex.join(sys.argv[1:])}\n")
+
+
+def _write_response(out: Path, scene, r):
+    path = out / "dynamics.csv"
+    with open(path, "w", newline="") as fh:
+        _header(fh, scene)
+        fh.write(f"# model {r.model}, {r.rpm:g} rpm, {r.steps_per_rev} steps/rev, cycles {r.cycles}, "
+                 f"residual {r.residual:.3g}, converged {r.converged}: {r.message}\n")
+        w = csv.writer(fh)
+        w.writerow(["theta_deg", "s_mm", "Fc_rigid_N", "Fc_N", "liftoff"]
+                   + [f"error_mass{i + 1}_um" for i in range(r.e.shape[1])])
+        for i in range(r.theta.size - 1):
+            w.writerow([f"{math.degrees(r.theta[i]):.6g}", f"{r.s[i] * 1e3:.9g}",
+                        f"{r.Fc_rigid_axial[i]:.9g}", f"{r.Fc_axial[i]:.9g}", int(not r.contact[i])]
+                       + [f"{x * 1e6:.6g}" for x in r.e[i]])
+    return path
+
+
+def _write_sweep(out: Path, scene, sw):
+    path = out / "rpm_sweep.csv"
+    with open(path, "w", newline="") as fh:
+        _header(fh, scene)
+        w = csv.writer(fh)
+        w.writerow(["rpm", "Fc_max_N", "Fc_min_N", "Fc_rigid_max_N", "Fc_rigid_min_N", "liftoff",
+                    "converged", "cycles", "residual", "max_error_um", "dwell_vibration_um", "message"])
+        for i, rpm in enumerate(sw.rpm):
+            w.writerow([f"{rpm:g}", f"{sw.Fc_max[i]:.6g}", f"{sw.Fc_min[i]:.6g}",
+                        f"{sw.Fc_rigid_max[i]:.6g}", f"{sw.Fc_rigid_min[i]:.6g}", int(sw.liftoff[i]),
+                        int(sw.converged[i]), int(sw.cycles[i]), f"{sw.residual[i]:.3g}",
+                        f"{sw.max_error[i] * 1e6:.6g}", f"{sw.dwell_vibration[i] * 1e6:.6g}",
+                        sw.messages[i]])
+    return path
+
+
+def run(args) -> int:
+
+    scene = load_scene(args.scene)
+    if scene.train is None:
+        raise InputError(f"{args.scene}: [dynamics] model = 'rigid' (eq. 11) has no train to "
+                         "integrate; set model = \"one_dof\" or \"two_dof\" (docs/dynamics.md)")
+    workers = int(_validate.positive("--workers", args.workers, ""))
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    r = scene.dynamic_response
+    f_hz = ", ".join(f"{w / (2 * math.pi):.5g}" for w in r.natural_frequencies)
+    print(f"{scene.name}: {r.model} at {r.rpm:g} rpm, natural frequencies {f_hz} Hz")
+    print(f"  {r.steps_per_rev} steps/rev, cycles {r.cycles}, residual {r.residual:.3g}, "
+          f"converged {r.converged}: {r.message}")
+    print(f"  axial Fc {r.Fc_min:.6g} .. {r.Fc_max:.6g} N (rigid eq. 11: "
+          f"{r.Fc_rigid_axial.min():.6g} .. {r.Fc_rigid_axial.max():.6g} N); max |x - s| "
+          f"{r.max_error * 1e6:.4g} um; dwell vibration {r.dwell_vibration * 1e6:.4g} um")
+    print(f"  csv: {_write_response(out, scene, r)}")
+    if not args.no_plots:
+
+        print(f"  png: {plot_force({scene.train.model: r}, out / 'dynamics_force.png')}")
+    if args.rpm_sweep:
+        rpm = _rpm_range(args.rpm_sweep)
+        sw = rpm_sweep(scene.train, scene.program, rpm, steps_per_rev=scene.steps_per_rev,
+                       workers=workers)
+        j = jump_speed(scene.train, scene.program, rpm[0], rpm[-1],
+                       steps_per_rev=scene.steps_per_rev)
+        print(f"  rpm sweep {rpm[0]:g}..{rpm[-1]:g} rpm ({rpm.size} speeds): {j.message}; rigid "
+              f"eq. 11 lift-off: {j.rpm_rigid:.6g} rpm" if math.isfinite(j.rpm_rigid) else
+              f"  rpm sweep {rpm[0]:g}..{rpm[-1]:g} rpm ({rpm.size} speeds): {j.message}; no rigid "
+              "lift-off in the range")
+        print(f"  csv: {_write_sweep(out, scene, sw)}")
+        if not args.no_plots:
+            print(f"  png: {plot_rpm_sweep(sw, out / 'rpm_sweep.png', jump=j)}")
+    return 0
