@@ -18,6 +18,16 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
     [materials.cam], [materials.roller] (alias [materials.follower]):
                        E_GPa, nu, hardness_MPa?, name?
     [contact]?         friction?, plane? = "strain"|"stress", sliding? = "+x"|"-x"
+    assessment (femcam.assess; all optional): [operating] oil_temperature_C?;
+    [lubricant]?       name? (femcam.tribology.OILS) | viscosity_Pa_s + temperature_C +
+                       viscosity_temperature_coefficient_per_K | kinematic_viscosity_40C_mm2_per_s +
+                       kinematic_viscosity_100C_mm2_per_s, pressure_viscosity_per_GPa | alpha_per_Pa,
+                       density_kg_per_m3, source?
+    [surface]?         cam_Ra_um | cam_Rq_um, roller_Ra_um | roller_Rq_um
+    [materials.*]      yield_strength_MPa?, thermal_conductivity_W_per_m_K?, density_kg_per_m3?,
+                       specific_heat_J_per_kg_K?, contact_fatigue_strength_MPa?,
+                       contact_fatigue_cycles?, contact_fatigue_exponent?, shear_fatigue_limit_MPa?,
+                       scuffing_temperature_C?
     [fe]?, [wear]?     passed through unchanged (dicts) to the FE/sweep and wear layers
 
 Only numpy/scipy and the standard library (``tomllib``) are imported.
@@ -61,7 +71,8 @@ def _dense_theta() -> np.ndarray:
 
 _TOP = {"name": ("", None, "str", True), "description": ("", None, "str", False),
         "source": ("", None, "str", False)}
-_TABLES = ("operating", "program", "follower", "dynamics", "materials", "contact", "fe", "wear")
+_TABLES = ("operating", "program", "follower", "dynamics", "materials", "contact", "fe", "wear",
+           "lubricant", "surface")
 _OPERATING = {"rpm": ("rpm", 2.0 * math.pi / 60.0, "pos", False),
               "omega_rad_s": ("rad/s", 1.0, "pos", False)}
 _PROGRAM = {"law": ("", None, "str", False), "control_points": ("", None, "list", False),
@@ -80,6 +91,27 @@ _MATERIAL = {"E_GPa": ("GPa", 1e9, "pos", True), "nu": ("(dimensionless)", 1.0, 
              "hardness_MPa": ("MPa", 1e6, "pos", False), "name": ("", None, "str", False)}
 _CONTACT = {"friction": ("(dimensionless)", 1.0, "nonneg", False), "plane": ("", None, "str", False),
             "sliding": ("", None, "str", False)}
+# -- assessment keys (femcam.assess): lubricant, roughness, oil temperature, material extras --
+_OPERATING["oil_temperature_C"] = ("degC", 1.0, "num", False)
+_MATERIAL_EXTRA = {"yield_strength_MPa": ("MPa", 1e6, "pos", False),
+                   "thermal_conductivity_W_per_m_K": ("W/(m K)", 1.0, "pos", False),
+                   "density_kg_per_m3": ("kg/m^3", 1.0, "pos", False),
+                   "specific_heat_J_per_kg_K": ("J/(kg K)", 1.0, "pos", False),
+                   "contact_fatigue_strength_MPa": ("MPa", 1e6, "pos", False),
+                   "contact_fatigue_cycles": ("cycles", 1.0, "pos", False),
+                   "contact_fatigue_exponent": ("(dimensionless)", 1.0, "pos", False),
+                   "shear_fatigue_limit_MPa": ("MPa", 1e6, "pos", False),
+                   "scuffing_temperature_C": ("degC", 1.0, "num", False)}
+_MATERIAL.update(_MATERIAL_EXTRA)
+_LUBRICANT = {"name": ("", None, "str", False), "source": ("", None, "str", False),
+              "viscosity_Pa_s": ("Pa s", 1.0, "pos", False), "temperature_C": ("degC", 1.0, "num", False),
+              "viscosity_temperature_coefficient_per_K": ("1/K", 1.0, "nonneg", False),
+              "kinematic_viscosity_40C_mm2_per_s": ("mm^2/s", 1e-6, "pos", False),
+              "kinematic_viscosity_100C_mm2_per_s": ("mm^2/s", 1e-6, "pos", False),
+              "pressure_viscosity_per_GPa": ("1/GPa", 1e-9, "pos", False),
+              "alpha_per_Pa": ("1/Pa", 1.0, "pos", False), "density_kg_per_m3": ("kg/m^3", 1.0, "pos", False)}
+_SURFACE = {k: ("um", 1e-6, "nonneg", False)
+            for k in ("cam_Ra_um", "roller_Ra_um", "cam_Rq_um", "roller_Rq_um")}
 _CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", "flat_faced"),
             "plane": ("strain", "stress"), "sliding": ("+x", "-x")}
 
@@ -232,6 +264,8 @@ class Scene:
     fe: dict = field(default_factory=dict)
     wear: dict = field(default_factory=dict)
     source_path: str = ""
+    #: checked SI values of the assessment keys: lubricant, surface, oil_temperature_C, materials
+    tribology: dict = field(default_factory=dict)
     raw: dict = field(default_factory=dict, repr=False)
 
     @property
@@ -357,7 +391,7 @@ def load_scene(path) -> Scene:
     # operating speed
     op = ck.table(g("operating"), "operating", _OPERATING)
     if "operating" in raw and isinstance(raw["operating"], dict):
-        given = [k for k in _OPERATING if k in raw["operating"]]
+        given = [k for k in ("rpm", "omega_rad_s") if k in raw["operating"]]
         if len(given) != 1:
             ck.add("operating", "give exactly one of rpm (rpm) or omega_rad_s (rad/s); "
                    f"got {given or 'none'}")
@@ -451,7 +485,7 @@ def load_scene(path) -> Scene:
                        "damping_N_s_per_m (N s/m) instead")
 
     # materials
-    mats = {}
+    mats, tribo = {}, {}
     mraw = g("materials")
     if isinstance(mraw, dict):
         for k in mraw:
@@ -463,6 +497,9 @@ def load_scene(path) -> Scene:
         for k, alias in (("cam", "cam"), ("roller", "roller"), ("roller", "follower")):
             if alias in mraw:
                 m = ck.table(mraw[alias], f"materials.{alias}", _MATERIAL)
+                extra = {x: m[x] for x in _MATERIAL_EXTRA if x in m}
+                if extra:
+                    tribo.setdefault("materials", {})[k] = extra
                 if "E_GPa" in m and "nu" in m:
                     mats[k] = Material(E=m["E_GPa"], nu=m["nu"], name=m.get("name", alias),
                                        hardness=m.get("hardness_MPa"))
@@ -475,6 +512,11 @@ def load_scene(path) -> Scene:
 
     # contact and pass-through tables
     co = ck.table(g("contact"), "contact", _CONTACT)
+    for t, spec in (("lubricant", _LUBRICANT), ("surface", _SURFACE)):
+        if t in raw:
+            tribo[t] = ck.table(raw[t], t, spec)
+    if "oil_temperature_C" in op:
+        tribo["oil_temperature_C"] = op["oil_temperature_C"]
     for t in ("fe", "wear"):
         if t in raw and not isinstance(raw[t], dict):
             ck.add(t, f"= {_fmt(raw[t])}: must be a table [{t}]")
@@ -484,4 +526,4 @@ def load_scene(path) -> Scene:
                  program=program, follower=follower, dynamics=dyn, omega=omega, cam=mats["cam"],
                  roller=mats["roller"], length=fo["face_width_mm"], mu=co.get("friction", 0.0),
                  plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=dict(g("fe")),
-                 wear=dict(g("wear")), source_path=str(path), raw=raw)
+                 wear=dict(g("wear")), source_path=str(path), tribology=tribo, raw=raw)
