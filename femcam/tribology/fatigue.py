@@ -49,7 +49,7 @@ SN_EXPONENT_ISO6336 = math.log(5e7 / 1e5) / math.log(1.6)
 SN_CYCLES_ISO6336 = 5e7
 
 
-def _grid(n_x=1201, n_z=301):
+def _grid(n_x=601, n_z=151):
     X = np.linspace(-3.0, 3.0, n_x)
     Z = np.linspace(0.0, 1.5, n_z)
     return X[None, :], Z[:, None]
@@ -77,7 +77,7 @@ def first_yield_limit(mu: float = 0.0) -> float:
 def _shakedown(mu: float) -> tuple[float, float]:
     d, t, Z = _fields(mu)
     lo, hi = np.zeros(Z.size), np.full(Z.size, 1.0 / max(float(np.max(np.abs(t))), 1e-12))
-    for _ in range(60):                                  # bisection on P = p0/k at every depth
+    for _ in range(40):                                  # bisection on P = p0/k at every depth
         P = 0.5 * (lo + hi)[:, None]
         g = 2.0 * np.sqrt(np.clip(1.0 - (t * P) ** 2, 0.0, None))
         ok = np.max(-g - d * P, axis=1) <= np.min(g - d * P, axis=1)

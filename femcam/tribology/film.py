@@ -129,11 +129,11 @@ def composite_roughness(Rq1, Rq2):
     return np.hypot(chk.nonnegative("Rq1", Rq1, "m"), chk.nonnegative("Rq2", Rq2, "m"))
 
 
-def regime(lam):
+def lubrication_regime(lam):
     """Lubrication regime per lambda: 0 boundary (``lam < 1``), 1 mixed (``1 <= lam < 3``),
     2 full film (``lam >= 3``) (Hamrock, Schmid & Jacobson 2004 ch. 8).
 
-    >>> regime([0.5, 1.0, 2.9, 3.0]).tolist()
+    >>> lubrication_regime([0.5, 1.0, 2.9, 3.0]).tolist()
     [0, 1, 1, 2]
     """
     lam = np.asarray(lam, float)
@@ -181,5 +181,5 @@ def film_thickness(*, U, w, R, E_star, eta0, alpha, sigma=None) -> dict:
     if sigma is not None:
         sigma = chk.positive("sigma", sigma, "m")
         out["lam"] = out["h_min"] / sigma
-        out["regime"] = regime(out["lam"])
+        out["regime"] = lubrication_regime(out["lam"])
     return out
