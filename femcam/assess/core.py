@@ -37,6 +37,8 @@ from .inputs import AssessInputs, assessment_inputs
 COLUMNS = (
     ("theta", "theta_deg", 180.0 / math.pi),
     ("Fc", "Fc_N", 1.0),
+    ("cam_x", "cam_x_mm", 1e3),
+    ("cam_y", "cam_y_mm", 1e3),
     ("R", "R_eff_mm", 1e3),
     ("a", "a_um", 1e6),
     ("p0", "p0_MPa", 1e-6),
@@ -168,7 +170,8 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
                          **slip_kwargs(scene))
     u1, u2 = slip.V_cam, slip.V_follower
     out = {c[0]: np.full(n, np.nan) for c in COLUMNS}
-    out.update(theta=theta, Fc=Fc, R=R, a=a, p0=p0, u_cam=u1, u_follower=u2, U=0.5 * (u1 + u2),
+    out.update(theta=theta, Fc=Fc, cam_x=st.profile.x, cam_y=st.profile.y)
+    out.update(R=R, a=a, p0=p0, u_cam=u1, u_follower=u2, U=0.5 * (u1 + u2),
                v_slide=np.abs(u1 - u2))
     flags = [("liftoff", np.asarray(st.liftoff, bool)), ("hertz_validity", ~np.asarray(valid, bool))]
     k0 = wear_coefficient_info(scene)[0]

@@ -15,7 +15,7 @@ import sys
 from ..errors import FemcamError
 
 #: subcommand modules, in the order they appear in ``femcam --help``
-SUBCOMMANDS = ("run", "sweep", "wear", "synth")
+SUBCOMMANDS = ("run", "sweep", "wear", "synth", "assess")
 
 
 def _versions() -> str:
