@@ -152,6 +152,12 @@ def test_fe_table_replaces_hertz(tmp_path):
     assert list(r["source"]) == ["fe", "hertz", "fe"]
     p_used = np.where(np.isfinite(p_fe), p_fe, h["p0"])
     np.testing.assert_allclose(r["sf_surface_fatigue"], 1500e6 / p_used, rtol=1e-12)
+    # FE stress maxima: first yield k / tau1_max (Tresca k = Y/2), orthogonal shear range 2 |txz|max
+    table.update(tau1_max=np.full(3, 500e6), txz_absmax=np.full(3, 200e6))
+    r = assess_rows(sc, theta, table)
+    np.testing.assert_allclose(r["sf_yield"][[0, 2]], 850e6 / 500e6, rtol=1e-12)
+    np.testing.assert_allclose(r["sf_subsurface"][[0, 2]], 350e6 / 200e6, rtol=1e-12)
+    np.testing.assert_allclose(r["sf_yield"][1], h["sf_yield"][1], rtol=1e-12)   # Hertz where FE failed
 
 
 def test_missing_lubricant_data_is_one_clear_error(tmp_path):
@@ -227,3 +233,26 @@ def test_cli_assess_plots(tmp_path):
 def test_cli_assess_bad_input_exit_code(tmp_path, capsys):
     assert main(["assess", "examples/seed002_study_model.toml", "--out", str(tmp_path / "b")]) == 1
     assert "[lubricant]: missing table" in capsys.readouterr().err
+
+
+def test_wear_map_uses_k_of_lambda_and_says_the_regime(tmp_path):
+    """The lubricated wear map scales k angle by angle by F_5/2(lambda)/F_5/2(0) (Greenwood & Tripp
+    1970, by quadrature here); the same scene without [lubricant] keeps the dry k."""
+    from scipy.integrate import quad
+
+    from femcam.cli.wear import scene_wear
+
+    theta = np.radians(np.arange(0, 360, 2.0))
+    wet = load_scene(EXAMPLE)
+    dry = _scene(tmp_path, lambda t: t.split("\n[lubricant]")[0])
+    wm_wet, _, _ = scene_wear(wet, theta, cycles=1.0)
+    wm_dry, _, _ = scene_wear(dry, theta, cycles=1.0)
+    assert wm_dry.regime is None and wm_dry.k_factor is None
+    lam = assess_rows(wet, theta)["lam"]
+
+    def F(x):
+        return quad(lambda s: (s - x) ** 2.5 * math.exp(-s * s / 2), x, np.inf)[0]
+
+    ratio = np.array([F(x) / F(0.0) for x in lam])
+    np.testing.assert_allclose(wm_wet.depth_pass, wm_dry.depth_pass * ratio, rtol=1e-7)
+    assert wm_wet.summary()["regime_angles"] == {"boundary": 180}

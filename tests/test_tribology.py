@@ -1,7 +1,11 @@
 """Tribology formulas (femcam.tribology) against published values, closed forms and independent
 numerics written in the tests."""
 
+import ast
 import math
+import pathlib
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -191,3 +195,21 @@ def test_lubricant_laws():
         lubricant("SAE 90 unicorn")
     with pytest.raises(InputError, match="nu100"):
         Lubricant(nu40=46e-6, nu100=60e-6, alpha=2e-8, rho=860.0)
+
+
+def test_layers_and_headless_imports():
+    """femcam.tribology imports only numpy/scipy and femcam._validate/errors/materials/hertz; neither
+    it nor femcam.assess pulls in matplotlib/gmsh/pyvista."""
+    allowed = {"_validate", "errors", "materials", "hertz"}
+    for f in pathlib.Path("femcam/tribology").glob("*.py"):
+        for node in ast.walk(ast.parse(f.read_text())):
+            if isinstance(node, ast.ImportFrom) and node.level == 2:
+                assert (node.module or node.names[0].name).split(".")[0] in allowed, (f, node.module)
+            elif isinstance(node, ast.Import) or (isinstance(node, ast.ImportFrom) and node.level == 0):
+                mod = node.module if isinstance(node, ast.ImportFrom) else node.names[0].name
+                assert mod.split(".")[0] in {"numpy", "scipy", "math", "dataclasses", "functools",
+                                             "__future__"}, (f, mod)
+    code = ("import sys, femcam.tribology, femcam.assess\n"
+            "print(','.join(m for m in ('matplotlib', 'gmsh', 'pyvista', 'skfem') if m in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == ""

@@ -148,13 +148,36 @@ def _strength(inp, mu, p0, out):
         out["N_pitting"] = np.minimum(*(fatigue.sn_cycles(p0, s, N_ref=N, m=m) for s, N, m in lim))
 
 
+def _fe_stresses(inp, table, source, out):
+    """FE stress maxima of a sweep table, where the FE answered: first yield from the FE ``tau1_max``
+    (``k / tau1_max``) and the orthogonal shear range ``2 txz_absmax`` (the frictionless Hertz
+    field has ``min txz = -max txz`` over a pass, Johnson 1985 §9.2)."""
+    fe = np.asarray(source) == "fe"
+    if "tau1_max" in table and inp.has("yield and shakedown"):
+        t1 = np.asarray(table["tau1_max"], float)
+        use = fe & np.isfinite(t1) & (t1 > 0)
+        k = 0.5 * min(_pair(inp, "Y"))
+        out["sf_yield"] = np.where(use, k / np.where(use, t1, 1.0), out["sf_yield"])
+    if "txz_absmax" in table:
+        tx = np.asarray(table["txz_absmax"], float)
+        use = fe & np.isfinite(tx)
+        out["dtau_orth"] = np.where(use, 2.0 * tx, out["dtau_orth"])
+        if inp.has("subsurface fatigue"):
+            out["util_subsurface"] = 0.5 * out["dtau_orth"] / min(_pair(inp, "tau_e"))
+            with np.errstate(divide="ignore"):
+                out["sf_subsurface"] = np.where(out["util_subsurface"] > 0, 1.0 / out["util_subsurface"],
+                                                np.inf)
+
+
 def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
                 inputs: AssessInputs | None = None) -> dict:
     """Assessment columns at cam angles ``theta`` (rad): dict of arrays, SI names of :data:`COLUMNS`
     plus the text columns ``regime``, ``flags``, ``source`` (``hertz``/``fe``).
 
-    ``table``: optional sweep table (mapping with ``a_fe``, ``p0_fe`` per angle in m, Pa) whose
-    finite FE values replace Hertz ``a``/``p0`` (the stress-shape factors stay Hertz's). Criteria
+    ``table``: optional sweep table (mapping with ``a_fe``, ``p0_fe`` per angle in m, Pa; optional
+    ``tau1_max``, ``txz_absmax`` in Pa) whose finite FE values replace Hertz ``a``/``p0`` and, where
+    given, the first-yield and orthogonal-shear maxima (shakedown and surface fatigue keep
+    Hertz's shape factors with the FE ``p0``). Criteria
     without their material data are NaN (see :attr:`AssessInputs.skipped`). Angles outside a
     formula's validity are computed and flagged. Raises :class:`~femcam.errors.SceneError` if a
     lubricated assessment lacks lubricant data, and :class:`~femcam.errors.InputError` for a sharp
@@ -188,6 +211,8 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
         out["k_wear"] = np.full(n, k0)
     _thermal(inp, scene.mu, w, a, u1, u2, inp.T_oil, out, flags)
     _strength(inp, scene.mu, p0, out)
+    if table is not None:
+        _fe_stresses(inp, table, source, out)
     out["regime"] = np.where(Fc > 0, regime, "no contact")
     out["flags"] = np.array([";".join(nm for nm, m in flags if m[i]) for i in range(n)], dtype=object)
     out["source"] = source

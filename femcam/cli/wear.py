@@ -149,8 +149,25 @@ def scene_wear(scene, theta, *, source="hertz", cycles=1e6, tip_radius=None):
     slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **slip_kwargs(scene, opts),
                          tip_radius=tip_radius if sc is not scene else None)
     k, _where = wear_coefficient_info(scene)
-    wm = wear_map(table, slip, k=k, length=scene.length, cycles=cycles, pressure=pressure)
+    k_factor, regime = _regime_k(scene, theta, table if source == "fe" else None, k, tip_radius)
+    wm = wear_map(table, slip, k=k, length=scene.length, cycles=cycles, pressure=pressure,
+                  k_factor=k_factor, regime=regime)
     return wm, st, slip
+
+
+def _regime_k(scene, theta, table, k, tip_radius):
+    """``(k(lambda)/k, regime)`` per angle for a scene with a [lubricant] (femcam.assess), else
+    ``(None, None)`` (the dry k everywhere)."""
+    if "lubricant" not in (getattr(scene, "tribology", None) or {}) or not k > 0:
+        return None, None
+    import dataclasses
+
+    from ..assess import assess_rows
+
+    if tip_radius is not None:
+        scene = dataclasses.replace(scene, wear={**scene.wear, "tip_radius_mm": tip_radius * 1e3})
+    r = assess_rows(scene, theta, table)
+    return r["k_wear"] / k, r["regime"]
 
 
 def _follower_coordinate(scene) -> tuple[str, str, str]:
