@@ -184,6 +184,7 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
     knife-edge.
     """
     inp = inputs or assessment_inputs(scene, lubricated=lubricated)
+    table = getattr(table, "table", table)                   # a SweepResult or its table mapping
     theta = np.atleast_1d(np.asarray(theta, float))
     n = theta.size
     sc, R2, tip = _geometry(scene)
