@@ -95,6 +95,33 @@ def main() -> None:
             print(f"figure {name}: {path}")
         for crit, (v, th, _) in res.worst.items():
             print(f"worst {crit}: {v:.4g} at {math.degrees(th):.0f} deg")
+        _flat_figure(args.figures)
+
+
+def _flat_figure(out) -> None:
+    """The same cam program (cycloidal) with a flat-faced follower of base radius 20 mm: the
+    entrainment speed omega (Rb + s + 2 s'')/2 reverses near the nose and the film collapses."""
+    import re
+    import tempfile
+    from pathlib import Path
+
+    from femcam.assess import assess
+    from femcam.scene import load_scene
+    from femcam.viz.assess import plot_lambda
+
+    text = open(SCENE).read().replace('law = "bezier5"', 'law = "cycloidal"')
+    text = re.sub(r"\[follower\].*?face_width_mm = 10.0\n", '[follower]\ntype = "flat_faced"\n'
+                  'base_radius_mm = 20.0\nface_width_mm = 10.0\n', text, flags=re.S)
+    with tempfile.TemporaryDirectory() as d:
+        p = Path(d) / "flat.toml"
+        p.write_text(text)
+        res = assess(load_scene(p), np.radians(np.arange(0.0, 360.0, 0.5)))
+    r = res.rows
+    off = r["U"] <= 0
+    print(f"flat-faced: U <= 0 (film collapsed, flagged no_entrainment) at {int(off.sum())} of {off.size} "
+          f"angles, {np.degrees(r['theta'][off]).min():.1f}..{np.degrees(r['theta'][off]).max():.1f} deg; "
+          f"max lambda {np.nanmax(r['lam']):.3g}")
+    print("figure flat-faced lambda:", plot_lambda(r, Path(out) / "assess_flat_lambda.png"))
 
 
 def _cold() -> float:

@@ -68,8 +68,10 @@ def plot_temperatures(rows, path, *, T_oil=None, T_scuff=None) -> str:
     if T_scuff is not None:
         ax.axhline(T_scuff, color="k", ls="--", lw=0.8, label=f"scuffing {T_scuff:g} C")
     bx = ax.twinx()
-    bx.plot(deg, rows["dT_flash"], "C1:", label="dT_flash (Blok)")
+    bx.plot(deg, rows["dT_flash"], "C1:", label="dT_flash (Blok), right axis")
     bx.set_ylabel("flash temperature rise (K)", color="C1")
+    bx.set_ylim(bottom=0)
+    bx.legend(fontsize=7, loc="upper right")
     ax.set_xlabel("cam angle (deg)")
     ax.set_ylabel("temperature (C)")
     ax.legend(fontsize=7, loc="upper left")
