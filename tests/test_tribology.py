@@ -46,18 +46,24 @@ def test_film_exponents_pan_hamrock_1989():
 
 def test_film_against_typed_formulas():
     """Pan-Hamrock minimum and central film typed in the test (Hamrock's E' = 2 E*), and the
-    Dowson & Higginson 1977 minimum film: the two published fits agree within 25 % for a cam."""
+    Dowson & Higginson 1977 minimum film: the two published fits of numerical EHL solutions agree
+    within 10 % for cam-like contacts (U 0.1-10 m/s, w 20-500 kN/m; this run: 5-8 %, the two fits'
+    own difference, so the bound cannot be much tighter)."""
     Ep = 2 * CASE["E_star"]
-    Ud = CASE["eta0"] * CASE["U"] / (Ep * CASE["R"])
     G = CASE["alpha"] * Ep
-    W = CASE["w"] / (Ep * CASE["R"])
-    r = film_thickness(**CASE)
-    np.testing.assert_allclose(r["h_min"], CASE["R"] * 1.714 * W**-0.128 * Ud**0.694 * G**0.568, rtol=1e-12)
-    np.testing.assert_allclose(r["h_c"], CASE["R"] * 2.922 * W**-0.166 * Ud**0.692 * G**0.470, rtol=1e-12)
-    h_dh = CASE["R"] * 2.65 * Ud**0.70 * G**0.54 * W**-0.13
-    assert abs(r["h_min"] / h_dh - 1) < 0.25, (r["h_min"], h_dh)
-    assert r["h_c"] > r["h_min"]                       # the outlet constriction is the minimum
-    assert not any(bool(np.any(m)) for _, m in r["flags"])   # inside the fitted range
+    for U in (0.1, 1.0, 10.0):
+        for w in (2e4, 1.5e5, 5e5):
+            Ud = CASE["eta0"] * U / (Ep * CASE["R"])
+            W = w / (Ep * CASE["R"])
+            r = film_thickness(**{**CASE, "U": U, "w": w})
+            np.testing.assert_allclose(r["h_min"], CASE["R"] * 1.714 * W**-0.128 * Ud**0.694 * G**0.568,
+                                       rtol=1e-12)
+            np.testing.assert_allclose(r["h_c"], CASE["R"] * 2.922 * W**-0.166 * Ud**0.692 * G**0.470,
+                                       rtol=1e-12)
+            h_dh = CASE["R"] * 2.65 * Ud**0.70 * G**0.54 * W**-0.13
+            assert abs(r["h_min"] / h_dh - 1) < 0.10, (U, w, r["h_min"], h_dh)
+            assert r["h_c"] > r["h_min"]               # the outlet constriction is the minimum
+            assert not any(bool(np.any(m)) for _, m in r["flags"])   # inside the fitted range
 
 
 def test_film_zero_and_reversed_entrainment_collapse():

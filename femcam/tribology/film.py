@@ -29,13 +29,12 @@ solutions that gives both the minimum and the central film,
 Why Pan-Hamrock: it is the line-contact formula of Hamrock, Schmid & Jacobson's textbook, it was
 fitted to numerical solutions over the range of ``W, Ud, G`` of machine elements, and it gives
 ``h_c`` as well. Dowson & Higginson (1977), :math:`h_{min}/R = 2.65\,U_d^{0.70}G^{0.54}W^{-0.13}`,
-is provided as :func:`dowson_higginson_min` for comparison (they agree within about 25 % in the
-range of cams, the test checks it).
+is provided as :func:`dowson_higginson_min` for comparison (they agree within 10 % for
+``U`` = 0.1-10 m/s and ``w`` = 20-500 kN/m on a 5 mm steel contact; the test checks it).
 
-Range of validity (flagged, never refused): the fits were made for ``W`` from about 2e-5 to 2e-4
-(Pan & Hamrock 1989 ran ``W`` = 0.5e-4..5e-4 at ``G`` = 2500..5000 and ``Ud`` = 1e-12..1e-10;
-we flag outside ``W`` 1e-6..1e-3 and ``Ud`` 1e-13..1e-9, the decade around the fitted range) and
-for rolling in one direction: ``U <= 0`` (entrainment reversing, e.g. at the nose of a flat-faced
+Range of validity (flagged, never refused): the fits were made over the load and speed
+parameters of machine elements (``W`` of order 1e-5..1e-4, ``Ud`` of order 1e-12..1e-10); femcam
+flags ``W`` outside 1e-6..1e-3 and ``Ud`` outside 1e-13..1e-9 (about a decade beyond) and for rolling in one direction: ``U <= 0`` (entrainment reversing, e.g. at the nose of a flat-faced
 follower) gives **no** EHL film (``h = 0``, flagged "no_entrainment"); squeeze films are not
 modelled. The formulas are isothermal and fully flooded (no inlet shear heating, no
 starvation): both would thin the film, so lambda here is an upper estimate.
