@@ -33,10 +33,11 @@ is provided as :func:`dowson_higginson_min` for comparison (they agree within 10
 ``U`` = 0.1-10 m/s and ``w`` = 20-500 kN/m on a 5 mm steel contact; the test checks it).
 
 Range of validity (flagged, never refused): the fits were made over the load and speed
-parameters of machine elements (``W`` of order 1e-5..1e-4, ``Ud`` of order 1e-12..1e-10); femcam
-flags ``W`` outside 1e-6..1e-3 and ``Ud`` outside 1e-13..1e-9 (about a decade beyond) and for rolling in one direction: ``U <= 0`` (entrainment reversing, e.g. at the nose of a flat-faced
-follower) gives **no** EHL film (``h = 0``, flagged "no_entrainment"); squeeze films are not
-modelled. The formulas are isothermal and fully flooded (no inlet shear heating, no
+parameters of machine elements (``W`` of order 1e-5..1e-4, ``Ud`` of order 1e-12..1e-10);
+femcam flags ``W`` outside 1e-6..1e-3 and ``Ud`` outside 1e-13..1e-9 (about a decade beyond).
+The fits assume rolling in one direction: ``U <= 0`` (entrainment reversing, e.g. near the nose
+of a flat-faced follower) gives **no** EHL film (``h = 0``, flagged "no_entrainment"); squeeze
+films are not modelled. The formulas are isothermal and fully flooded (no inlet shear heating, no
 starvation): both would thin the film, so lambda here is an upper estimate.
 """
 
