@@ -256,3 +256,23 @@ def test_wear_map_uses_k_of_lambda_and_says_the_regime(tmp_path):
     ratio = np.array([F(x) / F(0.0) for x in lam])
     np.testing.assert_allclose(wm_wet.depth_pass, wm_dry.depth_pass * ratio, rtol=1e-7)
     assert wm_wet.summary()["regime_angles"] == {"boundary": 180}
+
+
+def test_cli_assess_from_a_sweep_npz_and_bad_angles(tmp_path, capsys):
+    """--sweep takes the angles and FE a/p0 of a sweep's sweep.npz (written here by hand)."""
+    sc = load_scene(EXAMPLE)
+    theta = np.radians(np.arange(0.0, 360.0, 30.0))
+    h = assess_rows(sc, theta)
+    sw = tmp_path / "sw"
+    sw.mkdir()
+    np.savez(sw / "sweep.npz", theta=theta, a_fe=h["a"] * 1.01, p0_fe=h["p0"] / 1.01)
+    out = tmp_path / "o"
+    assert main(["assess", EXAMPLE, "--out", str(out), "--sweep", str(sw), "--no-plots"]) == 0
+    data = np.genfromtxt(out / "assessment.csv", delimiter=",", names=True, comments="#", dtype=None,
+                         encoding="utf-8")
+    np.testing.assert_allclose(data["p0_MPa"], h["p0"] / 1.01 * 1e-6, rtol=1e-7)
+    assert set(data["source"]) == {"fe"}
+    assert main(["assess", EXAMPLE, "--out", str(out), "--angles-deg", "0:360"]) == 1
+    assert "START:STOP:STEP" in capsys.readouterr().err
+    assert main(["assess", EXAMPLE, "--out", str(out), "--sweep", str(tmp_path / "none")]) == 1
+    assert "no sweep.npz" in capsys.readouterr().err
