@@ -152,6 +152,10 @@ def assessment_inputs(scene, *, lubricated: bool = True) -> AssessInputs:
         if "oil_temperature_C" not in tri:
             problems.append("operating.oil_temperature_C: missing (degC), the inlet/bulk temperature")
         T_oil = tri.get("oil_temperature_C")
+        for key, T in (("operating.oil_temperature_C", T_oil),
+                       ("lubricant.temperature_C", tri.get("lubricant", {}).get("temperature_C"))):
+            if T is not None and T <= -273.15:
+                problems.append(f"{key} = {T:g} degC: must be above absolute zero (-273.15 degC)")
     if problems:
         where = getattr(scene, "source_path", "") or getattr(scene, "name", "scene")
         n = len(problems)
