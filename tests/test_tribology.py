@@ -213,9 +213,36 @@ def test_layers_and_headless_imports():
                 assert (node.module or node.names[0].name).split(".")[0] in allowed, (f, node.module)
             elif isinstance(node, ast.Import) or (isinstance(node, ast.ImportFrom) and node.level == 0):
                 mod = node.module if isinstance(node, ast.ImportFrom) else node.names[0].name
-                assert mod.split(".")[0] in {"numpy", "scipy", "math", "dataclasses", "functools",
+                assert mod.split(".")[0] in {"numpy", "scipy", "math", "random", "dataclasses", "functools",
                                              "__future__"}, (f, mod)
     code = ("import sys, femcam.tribology, femcam.assess\n"
             "print(','.join(m for m in ('matplotlib', 'gmsh', 'pyvista', 'skfem') if m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == ""
+
+
+def test_kinematic_hardening_shakedown():
+    """Kinematic hardening (Johnson 1985 §9.2, Johnson 1989): 4.0 without friction like the
+    perfectly plastic limit; never below it; and 1/mu where the surface governs: at z = 0 the path
+    ((sx - sz)/2, txz) = (-mu p0 x/a, -mu p0 sqrt(1 - x^2/a^2)) is a half circle of radius mu p0,
+    whose smallest enclosing circle has radius mu p0 (its diameter joins x = -a and x = a)."""
+    assert abs(shakedown_limit(0.0, "kinematic") - 4.0) < 0.01
+    assert shakedown_limit(0.1, "kinematic") >= shakedown_limit(0.1) - 1e-6
+    assert abs(shakedown_limit(0.3, "kinematic") * 0.3 - 1.0) < 1e-6
+    with pytest.raises(InputError, match="hardening"):
+        shakedown_limit(0.1, "isotropic")
+
+
+def test_enclosing_radius_against_minimax_search():
+    """Welzl's smallest enclosing circle against a direct minimax search of the centre
+    (scipy Nelder-Mead on max |p - c|, tolerance 1e-6 of the radius)."""
+    from scipy.optimize import minimize
+
+    from femcam.tribology.fatigue import enclosing_radius
+
+    rng = np.random.default_rng(1)
+    for n in (3, 10, 200):
+        P = rng.normal(size=(n, 2)) * [1.0, 0.3]
+        res = minimize(lambda c, P=P: np.max(np.hypot(*(P - c).T)), P.mean(axis=0), method="Nelder-Mead",
+                       options={"xatol": 1e-10, "fatol": 1e-12, "maxiter": 20000})
+        assert abs(enclosing_radius(P) / res.fun - 1) < 1e-6

@@ -17,13 +17,16 @@ N_ref, m    reference cycles and exponent of the S-N law              -      ISO
 
 * **First yield** (Tresca): the largest in-plane principal shear of the McEwen field reaches ``k``:
   ``p0/k = 1 / max(tau1/p0)``; ``3.33`` without friction (Johnson 1985 §4.2: ``tau1 = 0.300 p0``).
-* **Elastic shakedown** (elastic-perfectly plastic, Melan's static theorem; Johnson 1985 §9.2):
+* **Shakedown**, elastic-perfectly plastic (Melan's static theorem; Johnson 1985 §9.2):
   the largest ``p0/k`` for which a residual stress ``rho_x(z)`` exists with
   ``((sx + rho_x - sz)/2)^2 + txz^2 <= k^2`` at every ``(x, z)``. At each depth a feasible
   ``rho_x`` exists iff :math:`\max_x(-g - d) \le \min_x(g - d)`,
   :math:`d = \sigma_x - \sigma_z`, :math:`g = 2\sqrt{k^2 - \tau_{xz}^2}`; found by bisection on
   ``p0/k``. It gives 4.0 without friction (the orthogonal shear ``|txz| = p0/4`` governs) and the
-  surface limit ``1/mu`` at large ``mu`` (:func:`shakedown_limit`).
+  surface limit ``1/mu`` at large ``mu`` (:func:`shakedown_limit`). Kinematic hardening
+  (``hardening="kinematic"``): the smallest circle enclosing the stress path of one pass at each
+  depth (Welzl 1991) has radius ``k``; also 4.0 without friction, higher than the perfectly
+  plastic limit with friction, and ``1/mu`` once the surface governs.
 * **Subsurface fatigue**: the range of the orthogonal shear stress over one pass through the
   contact, ``dtau = 0.5 p0`` at ``z = 0.5 a`` without friction (Johnson 1985 §9.2), against a
   shear endurance limit: utilisation ``(dtau/2) / tau_e``.
@@ -37,9 +40,11 @@ All dimensionless limits depend on ``mu`` only and are computed once per ``mu`` 
 from __future__ import annotations
 
 import math
+import random
 from functools import lru_cache
 
 import numpy as np
+from scipy.spatial import ConvexHull, QhullError
 
 from .. import _validate as chk
 from ..hertz import max_shear, unit_stresses
@@ -86,15 +91,89 @@ def _shakedown(mu: float) -> tuple[float, float]:
     return float(lo[i]), float(Z[i])
 
 
-def shakedown_limit(mu: float = 0.0) -> float:
-    r"""Elastic shakedown limit ``p0/k`` of a line contact (elastic-perfectly plastic, Melan).
+def _circle2(a, b):
+    cx, cy = 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])
+    return cx, cy, math.hypot(a[0] - cx, a[1] - cy)
+
+
+def _circle3(a, b, c):
+    (ax, ay), (bx, by), (cx, cy) = a, b, c
+    d = 2.0 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
+    if d == 0.0:                                         # collinear: the widest pair
+        return max((_circle2(p, q) for p, q in ((a, b), (a, c), (b, c))), key=lambda t: t[2])
+    a2, b2, c2 = ax * ax + ay * ay, bx * bx + by * by, cx * cx + cy * cy
+    ux = (a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / d
+    uy = (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / d
+    return ux, uy, math.hypot(ax - ux, ay - uy)
+
+
+def enclosing_radius(P) -> float:
+    """Radius of the smallest circle enclosing the 2-D points ``P`` (n x 2): Welzl's algorithm
+    (Welzl 1991, iterative form, expected linear time) on the convex hull.
+
+    >>> enclosing_radius(np.array([[1.0, 0.0], [-1.0, 0.0], [0.0, 0.5], [0.0, -1.0]]))
+    1.0
+    """
+    P = np.asarray(P, float)
+    try:
+        P = P[ConvexHull(P).vertices]
+    except QhullError:                                   # flat or repeated points: extremes suffice
+        P = P[[int(np.argmin(P[:, 0])), int(np.argmax(P[:, 0])), int(np.argmin(P[:, 1])),
+               int(np.argmax(P[:, 1]))]]
+    pts = [tuple(p) for p in P.tolist()]
+    random.Random(0).shuffle(pts)
+    cx, cy, r = pts[0][0], pts[0][1], 0.0
+    tol = 1e-12
+    for i, p in enumerate(pts):
+        if math.hypot(p[0] - cx, p[1] - cy) <= r + tol:
+            continue
+        cx, cy, r = p[0], p[1], 0.0
+        for j in range(i):
+            q = pts[j]
+            if math.hypot(q[0] - cx, q[1] - cy) <= r + tol:
+                continue
+            cx, cy, r = _circle2(p, q)
+            for k in range(j):
+                if math.hypot(pts[k][0] - cx, pts[k][1] - cy) > r + tol:
+                    cx, cy, r = _circle3(p, q, pts[k])
+    return float(r)
+
+
+@lru_cache(maxsize=64)
+def _kinematic(mu: float) -> float:
+    """Largest enclosing radius (units of p0) of the in-plane stress path over one pass, over z."""
+    X, Z = _grid()
+    sx, sz, txz = unit_stresses(X, Z, mu)
+    d = 0.5 * (sx - sz)
+    rd = np.maximum(d.max(axis=1), 0.0) - np.minimum(d.min(axis=1), 0.0)     # (0, 0): unloaded state
+    rt = np.maximum(txz.max(axis=1), 0.0) - np.minimum(txz.min(axis=1), 0.0)
+    upper, best = 0.5 * np.hypot(rd, rt), float(np.max(0.5 * np.maximum(rd, rt)))
+    for i in np.argsort(-upper):                         # branch and bound over the depths
+        if upper[i] <= best:
+            break
+        best = max(best, enclosing_radius(np.column_stack([np.append(d[i], 0.0), np.append(txz[i], 0.0)])))
+    return best
+
+
+def shakedown_limit(mu: float = 0.0, hardening: str = "perfectly_plastic") -> float:
+    r"""Shakedown limit ``p0/k`` of a line contact with friction ``mu``.
+
+    ``hardening="perfectly_plastic"`` (default, the lower and so conservative limit): Melan's
+    theorem with a residual ``rho_x(z)``,
 
     .. math:: \max_x(-g-d) \le \min_x(g-d),\quad d = \sigma_x - \sigma_z,\ g = 2\sqrt{k^2-\tau_{xz}^2}
 
-    >>> round(shakedown_limit(0.0), 2)
-    4.0
+    ``hardening="kinematic"`` (plastic shakedown of a kinematically hardening material): the back
+    stress may move the yield circle anywhere, so the limit is reached when the smallest circle
+    enclosing the in-plane stress path ``((sx - sz)/2, txz)`` over one pass (with the unloaded
+    state) has radius ``k`` at some depth (Johnson 1985 §9.2; Johnson 1989).
+
+    >>> round(shakedown_limit(0.0), 2), round(shakedown_limit(0.0, "kinematic"), 2)
+    (4.0, 4.0)
     """
-    return _shakedown(chk.nonnegative("mu", mu, ""))[0]
+    mu = chk.nonnegative("mu", mu, "")
+    chk.choice("hardening", hardening, ("perfectly_plastic", "kinematic"))
+    return _shakedown(mu)[0] if hardening == "perfectly_plastic" else 1.0 / _kinematic(mu)
 
 
 @lru_cache(maxsize=64)
