@@ -280,3 +280,18 @@ def test_cli_assess_from_a_sweep_npz_and_bad_angles(tmp_path, capsys):
     assert "START:STOP:STEP" in capsys.readouterr().err
     assert main(["assess", EXAMPLE, "--out", str(out), "--sweep", str(tmp_path / "none")]) == 1
     assert "no sweep.npz" in capsys.readouterr().err
+
+
+def test_inertia_roller_model_on_a_sweep_chunk(tmp_path):
+    """The inertia-limited roller needs a whole revolution; on a chunk of angles the speeds are
+    those of the whole-revolution solution (interpolated, exact at its 0.5 deg grid points)."""
+    sc = _scene(tmp_path, lambda t: t + '\n[wear]\nroller_model = "inertia"\n')
+    full = assess_rows(sc, np.radians(np.arange(0.0, 360.0, 0.5)))
+    chunk = assess_rows(sc, np.radians([10.0, 74.0, 200.5]))
+    idx = [20, 148, 401]
+    np.testing.assert_allclose(chunk["u_follower"], full["u_follower"][idx], rtol=1e-12)
+    np.testing.assert_allclose(chunk["lam"], full["lam"][idx], rtol=1e-12)
+    # seed 002 at 600 rpm: friction always accelerates the roller (no slip), so zero sliding and
+    # exactly zero flash temperature (Blok: dT ~ |u1 - u2|)
+    np.testing.assert_allclose(full["v_slide"], 0.0, atol=1e-12)
+    np.testing.assert_array_equal(full["dT_flash"], 0.0)

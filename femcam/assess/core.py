@@ -109,6 +109,24 @@ def _contact(sc, st, R2, table, n):
     return Fc, a, p0, w, np.broadcast_to(hc.R, (n,)), hc.E_star, np.broadcast_to(hc.valid, (n,)), source
 
 
+def _speeds(scene, sc, st, theta, Fc, tip):
+    """Surface speeds ``(V_cam, V_follower)`` at ``theta``. The inertia-limited roller model needs
+    one whole revolution: for any other set of angles (a sweep chunk) it is solved on 720 angles
+    and interpolated (periodic, linear)."""
+    kw = slip_kwargs(scene)
+    full = theta.size >= 4 and np.allclose(np.diff(theta), theta[1] - theta[0]) and \
+        abs(theta[-1] - theta[0] + (theta[1] - theta[0]) - 2.0 * math.pi) < 1e-9
+    if kw["roller_model"] != "inertia" or type(scene.follower).__name__ != "RollerFollower" or full:
+        r = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, tip_radius=tip, **kw)
+        return r.V_cam, r.V_follower
+    grid = np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False)
+    sg = sc.analyse(grid)
+    r = follower_slip(scene.follower, grid, sg.s, sg.s1, sg.s2, Fc=np.where(sg.liftoff, 0.0, sg.Fc), **kw)
+    th = np.mod(theta, 2.0 * math.pi)
+    return (np.interp(th, grid, r.V_cam, period=2.0 * math.pi),
+            np.interp(th, grid, r.V_follower, period=2.0 * math.pi))
+
+
 def _pair(inp: AssessInputs, key: str):
     return inp.cam.get(key), inp.roller.get(key)
 
@@ -190,9 +208,7 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
     sc, R2, tip = _geometry(scene)
     st = sc.analyse(theta)
     Fc, a, p0, w, R, E_star, valid, source = _contact(sc, st, R2, table, n)
-    slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, tip_radius=tip,
-                         **slip_kwargs(scene))
-    u1, u2 = slip.V_cam, slip.V_follower
+    u1, u2 = _speeds(scene, sc, st, theta, Fc, tip)
     out = {c[0]: np.full(n, np.nan) for c in COLUMNS}
     out.update(theta=theta, Fc=Fc, cam_x=st.profile.x, cam_y=st.profile.y)
     out.update(R=R, a=a, p0=p0, u_cam=u1, u_follower=u2, U=0.5 * (u1 + u2),
