@@ -295,3 +295,16 @@ def test_inertia_roller_model_on_a_sweep_chunk(tmp_path):
     # exactly zero flash temperature (Blok: dT ~ |u1 - u2|)
     np.testing.assert_allclose(full["v_slide"], 0.0, atol=1e-12)
     np.testing.assert_array_equal(full["dT_flash"], 0.0)
+
+
+def test_dry_assessment_of_a_scene_without_tribology_data():
+    """lubricated=False on seed 002's study model (no lubricant, no material extras): no film,
+    every criterion skipped with the keys that would enable it, dry k everywhere."""
+    res = assess(load_scene("examples/seed002_study_model.toml"), np.radians(np.arange(0, 360, 30.0)),
+                 lubricated=False)
+    r = res.rows
+    assert set(r["regime"]) == {"dry"} and np.all(np.isnan(r["lam"]))
+    assert np.all(np.isnan(r["sf_shakedown"])) and np.all(np.isnan(r["dT_flash"]))
+    assert len(res.notes) == 5 and any("yield_strength_MPa" in n for n in res.notes)
+    np.testing.assert_allclose(r["k_wear"], 1e-8 / 2000e6)          # seed 000's K / H (m^3/(N m))
+    assert set(res.worst) == set()
