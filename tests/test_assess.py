@@ -35,7 +35,8 @@ def _astm_d341_eta(T_C, nu40=46.0, nu100=6.8, rho=861.0):
 
 def test_seed002_base_circle_by_hand(tmp_path):
     """On the base-circle dwell (300 deg): Fc = preload 1500 N, R = Rb Rr/(Rb + Rr) = 5 mm,
-    u_cam = omega Rb, the roller at SRR 0.02; film by the Pan-Hamrock 1989 formula typed here with
+    u_cam = omega Rb, the roller at SRR 0.02, entrainment U = (u1 + u2)/2 (the mean, as in the speed
+    parameter of Stolarski 1990 §6.7); film by the Pan-Hamrock 1989 formula typed here with
     ASTM D341 viscosity at 70 C; flash temperature by AGMA 925's form (K = 0.80, 2 %); surface
     fatigue by ISO 6336 (sigma_Hlim / p0, Z_NT slope 13.2)."""
     sc = load_scene(EXAMPLE)

@@ -283,10 +283,10 @@ def test_kinematic_shakedown_friction_enters_at_second_order():
     """Kinematic hardening (the yield circle may translate in both (sx - sz)/2 and txz) against the
     perfectly plastic limit (Melan's residual rho_x(z) shifts only (sx - sz)/2). The tangential
     traction adds to txz a part that is even in x (the Flamant kernels: txz of a tangential line
-    load = sx of a normal one, Johnson 1985 eq. 2.19), i.e. the same shift at the two orthogonal
+    load = sx of a normal one; Johnson 1985 ch. 2), i.e. the same shift at the two orthogonal
     shear peaks x = -+0.87a: the translating circle absorbs it, so the limit leaves 4.0 only at
-    second order in mu, while the perfectly plastic limit falls at first order. This is why a
-    shakedown map reads "4.0 up to mu ~ 0.25, then 1/mu" for kinematic hardening; the published
+    second order in mu, while the perfectly plastic limit falls at first order: consistent with the
+    reading "4.0 up to mu ~ 0.25, then 1/mu" quoted for kinematic hardening, whose printed
     intermediate values were not available to type in (see docs/assess.md, Validation sources).
     Bounds: first order zero means (4/K - 1)/mu -> 0 linearly; this run gives (4/K - 1)/mu^2 =
     0.32-0.36 for mu = 0.05-0.25 (0.33 at 0.1, 0.36 at 0.25 checked here), bounded by 0.5; the
