@@ -21,6 +21,16 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
     [materials.cam], [materials.roller] (alias [materials.follower]):
                        E_GPa, nu, hardness_MPa?, name?
     [contact]?         friction?, plane? = "strain"|"stress", sliding? = "+x"|"-x"
+    assessment (femcam.assess; all optional): [operating] oil_temperature_C?;
+    [lubricant]?       name? (femcam.tribology.OILS) | viscosity_Pa_s + temperature_C +
+                       viscosity_temperature_coefficient_per_K | kinematic_viscosity_40C_mm2_per_s +
+                       kinematic_viscosity_100C_mm2_per_s, pressure_viscosity_per_GPa | alpha_per_Pa,
+                       density_kg_per_m3, source?
+    [surface]?         cam_Ra_um | cam_Rq_um, roller_Ra_um | roller_Rq_um
+    [materials.*]      yield_strength_MPa?, thermal_conductivity_W_per_m_K?, density_kg_per_m3?,
+                       specific_heat_J_per_kg_K?, contact_fatigue_strength_MPa?,
+                       contact_fatigue_cycles?, contact_fatigue_exponent?, shear_fatigue_limit_MPa?,
+                       scuffing_temperature_C?
     [fe]?, [wear]?     passed through unchanged (dicts) to the FE/sweep and wear layers
 
 Only numpy/scipy and the standard library (``tomllib``) are imported.
@@ -65,7 +75,8 @@ def _dense_theta() -> np.ndarray:
 
 _TOP = {"name": ("", None, "str", True), "description": ("", None, "str", False),
         "source": ("", None, "str", False)}
-_TABLES = ("operating", "program", "follower", "dynamics", "materials", "contact", "fe", "wear")
+_TABLES = ("operating", "program", "follower", "dynamics", "materials", "contact", "fe", "wear",
+           "lubricant", "surface")
 _OPERATING = {"rpm": ("rpm", 2.0 * math.pi / 60.0, "pos", False),
               "omega_rad_s": ("rad/s", 1.0, "pos", False)}
 _PROGRAM = {"law": ("", None, "str", False), "control_points": ("", None, "list", False),
@@ -93,6 +104,27 @@ _MATERIAL = {"E_GPa": ("GPa", 1e9, "pos", True), "nu": ("(dimensionless)", 1.0, 
              "hardness_MPa": ("MPa", 1e6, "pos", False), "name": ("", None, "str", False)}
 _CONTACT = {"friction": ("(dimensionless)", 1.0, "nonneg", False), "plane": ("", None, "str", False),
             "sliding": ("", None, "str", False)}
+# -- assessment keys (femcam.assess): lubricant, roughness, oil temperature, material extras --
+_OPERATING["oil_temperature_C"] = ("degC", 1.0, "num", False)
+_MATERIAL_EXTRA = {"yield_strength_MPa": ("MPa", 1e6, "pos", False),
+                   "thermal_conductivity_W_per_m_K": ("W/(m K)", 1.0, "pos", False),
+                   "density_kg_per_m3": ("kg/m^3", 1.0, "pos", False),
+                   "specific_heat_J_per_kg_K": ("J/(kg K)", 1.0, "pos", False),
+                   "contact_fatigue_strength_MPa": ("MPa", 1e6, "pos", False),
+                   "contact_fatigue_cycles": ("cycles", 1.0, "pos", False),
+                   "contact_fatigue_exponent": ("(dimensionless)", 1.0, "pos", False),
+                   "shear_fatigue_limit_MPa": ("MPa", 1e6, "pos", False),
+                   "scuffing_temperature_C": ("degC", 1.0, "num", False)}
+_MATERIAL.update(_MATERIAL_EXTRA)
+_LUBRICANT = {"name": ("", None, "str", False), "source": ("", None, "str", False),
+              "viscosity_Pa_s": ("Pa s", 1.0, "pos", False), "temperature_C": ("degC", 1.0, "num", False),
+              "viscosity_temperature_coefficient_per_K": ("1/K", 1.0, "nonneg", False),
+              "kinematic_viscosity_40C_mm2_per_s": ("mm^2/s", 1e-6, "pos", False),
+              "kinematic_viscosity_100C_mm2_per_s": ("mm^2/s", 1e-6, "pos", False),
+              "pressure_viscosity_per_GPa": ("1/GPa", 1e-9, "pos", False),
+              "alpha_per_Pa": ("1/Pa", 1.0, "pos", False), "density_kg_per_m3": ("kg/m^3", 1.0, "pos", False)}
+_SURFACE = {k: ("um", 1e-6, "nonneg", False)
+            for k in ("cam_Ra_um", "roller_Ra_um", "cam_Rq_um", "roller_Rq_um")}
 _CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", "flat_faced"),
             "plane": ("strain", "stress"), "sliding": ("+x", "-x"),
             "model": ("rigid", "one_dof", "two_dof")}
@@ -339,6 +371,8 @@ class Scene:
     fe: dict = field(default_factory=dict)
     wear: dict = field(default_factory=dict)
     source_path: str = ""
+    #: checked SI values of the assessment keys: lubricant, surface, oil_temperature_C, materials
+    tribology: dict = field(default_factory=dict)
     raw: dict = field(default_factory=dict, repr=False)
     train: TrainModel | None = None  # [dynamics] model one_dof/two_dof; None: rigid eq. 11
     steps_per_rev: int | None = None
@@ -480,6 +514,7 @@ def load_scene(path) -> Scene:
     fo, follower = _follower(ck, raw)
     dyn, train, steps_per_rev = _dynamics(ck, raw)
     mats = _materials(ck, raw)
+    tribo = _tribology(ck, raw, mats)
     # contact and pass-through tables
     co = ck.table(raw.get("contact", {}), "contact", _CONTACT)
     for t in ("fe", "wear"):
@@ -491,7 +526,7 @@ def load_scene(path) -> Scene:
                  program=program, follower=follower, dynamics=dyn, omega=omega, cam=mats["cam"],
                  roller=mats["roller"], length=fo["face_width_mm"], mu=co.get("friction", 0.0),
                  plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=dict(raw.get("fe", {})),
-                 wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw, train=train,
+                 wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw, train=train, tribology=tribo,
                  steps_per_rev=steps_per_rev)
 
 
@@ -525,7 +560,7 @@ def _operating(ck: _Checker, raw: dict):
     """The operating speed omega (rad/s), from exactly one of rpm and omega_rad_s."""
     op = ck.table(raw.get("operating", {}), "operating", _OPERATING)
     if "operating" in raw and isinstance(raw["operating"], dict):
-        given = [k for k in _OPERATING if k in raw["operating"]]
+        given = [k for k in ("rpm", "omega_rad_s") if k in raw["operating"]]
         if len(given) != 1:
             ck.add("operating", "give exactly one of rpm (rpm) or omega_rad_s (rad/s); "
                    f"got {given or 'none'}")
@@ -611,6 +646,19 @@ def _follower(ck: _Checker, raw: dict):
     return fo, follower
 
 
+def _tribology(ck: _Checker, raw: dict, mats: dict) -> dict:
+    """Checked SI values of the assessment keys (femcam.assess): [lubricant], [surface],
+    [operating] oil_temperature_C and the material extras."""
+    tribo = {"materials": mats.pop("extra")} if "extra" in mats else {}
+    for t, spec in (("lubricant", _LUBRICANT), ("surface", _SURFACE)):
+        if t in raw:
+            tribo[t] = ck.table(raw[t], t, spec)
+    op = raw.get("operating", {})
+    if isinstance(op, dict) and isinstance(op.get("oil_temperature_C"), int | float):
+        tribo["oil_temperature_C"] = float(op["oil_temperature_C"])  # checked by _operating
+    return tribo
+
+
 def _dynamics(ck: _Checker, raw: dict) -> tuple:
     """``(FollowerDynamics | None, TrainModel | None, steps_per_rev | None)`` from [dynamics]
     (exactly one of the two damping keys; the train of ``model = one_dof | two_dof``)."""
@@ -655,8 +703,19 @@ def _material(ck: _Checker, alias: str, m: dict, given: dict) -> Material | None
         return None
 
 
+def _body_material(ck: _Checker, mats: dict, k: str, alias: str, given) -> None:
+    """Check [materials.<alias>] and put body ``k``'s Material (and assessment extras) in ``mats``."""
+    m = ck.table(given, f"materials.{alias}", _MATERIAL)
+    extra = {x: m[x] for x in _MATERIAL_EXTRA if x in m}
+    if extra:  # assessment data (femcam.assess), kept in Scene.tribology["materials"]
+        mats.setdefault("extra", {})[k] = extra
+    if "E_GPa" in m and "nu" in m:
+        mats[k] = _material(ck, alias, m, given)
+
+
 def _materials(ck: _Checker, raw: dict) -> dict:
-    """``{"cam": Material, "roller": Material}`` from [materials.*] (roller alias follower)."""
+    """``{"cam": Material, "roller": Material, "extra": {body: {key: SI value}}}`` from
+    [materials.*] (roller alias follower; ``extra``: the assessment keys, when given)."""
     mats = {}
     mraw = raw.get("materials", {})
     if not isinstance(mraw, dict):
@@ -671,9 +730,7 @@ def _materials(ck: _Checker, raw: dict) -> dict:
         ck.add("materials", "give [materials.roller] or its alias [materials.follower], not both")
     for k, alias in (("cam", "cam"), ("roller", "roller"), ("roller", "follower")):
         if alias in mraw:
-            m = ck.table(mraw[alias], f"materials.{alias}", _MATERIAL)
-            if "E_GPa" in m and "nu" in m:
-                mats[k] = _material(ck, alias, m, mraw[alias])
+            _body_material(ck, mats, k, alias, mraw[alias])
     if "materials" in raw:
         for k in ("cam", "roller"):
             if k not in mraw and not (k == "roller" and "follower" in mraw):

@@ -17,7 +17,7 @@ from .. import __version__
 from ..errors import FemcamError
 
 #: subcommand modules, in the order they appear in ``femcam --help``
-SUBCOMMANDS = ("run", "sweep", "wear", "synth", "dynamics")
+SUBCOMMANDS = ("run", "sweep", "wear", "synth", "dynamics", "assess")
 
 
 def _versions() -> str:

@@ -26,6 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..assess import wear_factor
 from ..errors import InputError
 from ..kinematics import LAW_NAMES
 from ..profile import FlatFacedFollower, RollerFollower
@@ -136,7 +137,9 @@ def _map(args) -> int:
         if args.source == "fe":  # the FE pressure: a sweep of the (tip) scene at these angles
             fe = sweep(tip_scene(sc, scene_tip_radius(sc, tip)), angles=theta, method="fe",
                        progress=False)
-        wm, st, slip = scene_wear(sc, theta, cycles=cycles, tip_radius=tip, fe=fe)
+        k_factor, regime = wear_factor(sc, theta, fe.table if fe is not None else None, tip)
+        wm, st, slip = scene_wear(sc, theta, cycles=cycles, tip_radius=tip, fe=fe,
+                                  k_factor=k_factor, regime=regime)
         results[label] = (wm, st, slip)
         _write_angle_csv(out / f"wear_{label}.csv", head, theta, cycles, wm, st, slip)
         _write_surface_csv(out / f"wear_{label}_surface.csv", head, cycles, wm)

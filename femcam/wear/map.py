@@ -326,6 +326,10 @@ class WearMap:
     follower_drift: float = 0.0
     load_error: float = 0.0
     skipped: tuple = ()
+    #: per-angle multiplier of k (lubricated scenes: k(lambda)/k, femcam.tribology.regime) and the
+    #: lubrication regime of each angle ("boundary", "mixed", "full", "no contact"); None: dry k
+    k_factor: np.ndarray | None = None
+    regime: np.ndarray | None = None
 
     @property
     def depth_cam_total(self) -> np.ndarray:
@@ -383,7 +387,11 @@ class WearMap:
                 "volume_follower_m3": self.cycles * self.volume_follower,
                 "conservation_error": self.conservation_error, "load_error": self.load_error,
                 "skipped_angles_rad": [float(self.theta[i]) for i in self.skipped],
-                "cycles": self.cycles, "model": self.model}
+                "cycles": self.cycles, "model": self.model,
+                **({} if self.regime is None else
+                   {"regime_angles": {str(g): int(n) for g, n in
+                                      zip(*np.unique(np.asarray(self.regime).astype(str), return_counts=True),
+                                          strict=True)}})}
 
 
 def drift_sum(h, period: float, drift: float, cycles: float) -> np.ndarray:
@@ -436,7 +444,8 @@ def _cumulative(theta_closed, f_closed):
 
 
 def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressure: str = "hertz",
-             n_grid: int | None = None, missing: str | None = None) -> WearMap:
+             n_grid: int | None = None, missing: str | None = None, k_factor=None,
+             regime=None) -> WearMap:
     """Archard wear map of one revolution from per-angle contact data and a slip model.
 
     ``source``: SweepResult-like object or mapping with ``theta`` (rad, uniform over one
@@ -444,7 +453,9 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
     ``a_fe``/``p0_fe``) and ``Fc`` (N). ``slip``: a :class:`~femcam.wear.slip.SlipResult` on the
     same angles. ``k`` in m^3/(N m), ``length`` (face width) in m. ``missing``: what to do at
     angles with ``Fc > 0`` and no pressure, see :func:`contact_columns` (default: raise; skip
-    with a warning the ``failed`` rows of a sweep result).
+    with a warning the ``failed`` rows of a sweep result). ``k_factor`` (optional, per angle):
+    multiplies ``k`` angle by angle (the wear coefficient of the lubrication regime, ``k(lambda)/k``
+    of :func:`femcam.tribology.wear_coefficient`); ``regime`` (optional, per angle) is stored.
     """
     k = _validate.nonnegative("k", k, "m^3/(N m)")
     length = _validate.positive("length", length, "m")
@@ -461,6 +472,9 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
         raise _validate.fail("theta", f"[{theta[0]:g} .. {theta[-1]:g}] ({n} points)", "rad",
                      "must be increasing, uniform, one revolution, endpoint excluded")
     omega = slip.omega
+    v_wear = slip.v_slip
+    if k_factor is not None:  # k(lambda)/k of a lubricated scene (femcam.assess.wear_factor)
+        v_wear = slip.v_slip * _validate.finite_array("k_factor", k_factor, "")
     # close the revolution: step j runs from theta_j to theta_{j+1} (theta_n = theta_0 + 2 pi)
     thc = np.append(theta, theta[0] + 2 * np.pi)
 
@@ -476,7 +490,7 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
         fc = closed(f)
         return 0.5 * (fc[1:] + fc[:-1])
 
-    a_m, p_m, v_m = mid(a), mid(p0), mid(slip.v_slip)
+    a_m, p_m, v_m = mid(a), mid(p0), mid(v_wear)  # k(lambda) enters as k x factor x v_slip
     # a step that touches a no-contact angle carries no load (liftoff edges)
     contact = (a > 0) & (p0 > 0)
     both = contact & np.roll(contact, -1)
@@ -512,12 +526,14 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
     on = (Fc > 0) & (w > 0)
     load_err = float(np.max(np.abs(w[on] * length / Fc[on] - 1.0))) if np.any(on) else 0.0
     return WearMap(
-        theta=theta, xi_cam=xi_c[:-1], depth_pass=depth_per_pass(k, w, slip.v_slip, slip.V_cam),
+        theta=theta, xi_cam=xi_c[:-1], depth_pass=depth_per_pass(k, w, v_wear, slip.V_cam),
         depth_at_theta=np.interp(xi_c[:-1], x_cam, depth_cam, period=perimeter),
         x_cam=x_cam, depth_cam=depth_cam, x_follower=x_f, depth_follower=depth_f, perimeter=perimeter,
         volume_cam=vol_cam, volume_follower=vol_f, volume_archard=vol_archard, conservation_error=cons,
         k=k, length=length, cycles=cycles, model=slip.model, depth_follower_cycles=depth_f_cycles,
-        follower_period=Pf, follower_drift=drift, load_error=load_err, skipped=tuple(skipped))
+        follower_period=Pf, follower_drift=drift, load_error=load_err, skipped=tuple(skipped),
+        k_factor=None if k_factor is None else np.asarray(k_factor, float),
+        regime=None if regime is None else np.asarray(regime))
 
 
 def wear_depth_per_angle(theta, a, p0, Fc, slip: SlipResult, k, *, missing: str = "zero"):

@@ -79,7 +79,7 @@ def scene_tip_radius(scene, tip_radius: float | None = None) -> float | None:
 
 
 def scene_wear(scene, theta, *, cycles: float = 1e6, tip_radius: float | None = None,
-               fe=None) -> tuple[WearMap, object, SlipResult]:
+               fe=None, k_factor=None, regime=None) -> tuple[WearMap, object, SlipResult]:
     """Archard wear map of a scene over one revolution.
 
     Parameters
@@ -94,6 +94,9 @@ def scene_wear(scene, theta, *, cycles: float = 1e6, tip_radius: float | None = 
     fe : femcam.sweep.SweepResult, optional
         An FE sweep of ``tip_scene(scene, tip)`` at ``theta``: its ``a_fe``/``p0_fe`` are the
         pressure (angles whose FE solve failed are skipped with a warning). Default: Hertz.
+    k_factor, regime : ndarray, shape (n,), optional
+        The wear coefficient's factor k(lambda)/k and the lubrication regime per angle (from
+        :func:`femcam.assess.assess_rows` for a lubricated scene); default: the dry k.
 
     Returns
     -------
@@ -116,5 +119,6 @@ def scene_wear(scene, theta, *, cycles: float = 1e6, tip_radius: float | None = 
     slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **slip_kwargs(scene, opts),
                          tip_radius=tip_radius if sc is not scene else None)
     k, _where = wear_coefficient_info(scene)
-    wm = wear_map(table, slip, k=k, length=scene.length, cycles=cycles, pressure=pressure)
+    wm = wear_map(table, slip, k=k, length=scene.length, cycles=cycles, pressure=pressure,
+                  k_factor=k_factor, regime=regime)
     return wm, st, slip

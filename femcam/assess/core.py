@@ -1,0 +1,307 @@
+"""Per-angle assessment of a cam-follower scene: film, flash temperature, yield, shakedown,
+contact fatigue, scuffing and the wear coefficient of the lubrication regime.
+
+Chain per cam angle (vectorised): :meth:`Scene.analyse` (kinematics, profile, contact force) ->
+:func:`femcam.wear.slip.follower_slip` (surface speeds ``u1 = V_cam``, ``u2 = V_follower``; roller
+slip model of the scene's ``[wear]``) -> :class:`femcam.hertz.LineContact` (or the FE ``a``/``p0``
+of a sweep table) -> :mod:`femcam.tribology` formulas.
+
+Followers: roller (``R2 = Rr``, slip model), knife-edge with a tip radius (``[wear]
+tip_radius_mm``; the cam cut for the radiused tip, full sliding; a sharp tip is refused: it has no
+contact width), flat-faced (``R2 = inf``; the entrainment speed ``(u1 + u2)/2`` passes through zero
+where ``rho + s'' = 0``... and the film collapses there, flagged ``no_entrainment``).
+
+Columns (:data:`COLUMNS`: SI name, CSV name, factor) are returned by :func:`assess_rows`; text
+columns are ``regime`` and ``flags`` (``;``-separated: ``liftoff``, ``no_entrainment``,
+``W_range``, ``U_range``, ``low_peclet``, ``hertz_validity``).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import InputError
+from ..hertz import HertzValidityWarning, LineContact
+from ..profile import RollerFollower
+from ..tribology import fatigue, film, flash
+from ..tribology.regime import wear_coefficient
+from ..wear.options import slip_kwargs, wear_coefficient_info, wear_options
+from ..wear.slip import follower_slip
+from .inputs import AssessInputs, assessment_inputs
+
+#: (SI name, CSV name with unit, factor SI -> CSV)
+COLUMNS = (
+    ("theta", "theta_deg", 180.0 / math.pi),
+    ("Fc", "Fc_N", 1.0),
+    ("cam_x", "cam_x_mm", 1e3),
+    ("cam_y", "cam_y_mm", 1e3),
+    ("R", "R_eff_mm", 1e3),
+    ("a", "a_um", 1e6),
+    ("p0", "p0_MPa", 1e-6),
+    ("u_cam", "u_cam_m_per_s", 1.0),
+    ("u_follower", "u_follower_m_per_s", 1.0),
+    ("U", "U_entrain_m_per_s", 1.0),
+    ("v_slide", "v_slide_m_per_s", 1.0),
+    ("eta0", "eta0_mPa_s", 1e3),
+    ("h_min", "h_min_um", 1e6),
+    ("h_c", "h_c_um", 1e6),
+    ("lam", "lambda", 1.0),
+    ("dT_flash", "dT_flash_K", 1.0),
+    ("T_contact", "T_contact_C", 1.0),
+    ("Pe_cam", "Pe_cam", 1.0),
+    ("Pe_follower", "Pe_follower", 1.0),
+    ("p0_over_k", "p0_over_k", 1.0),
+    ("sf_yield", "sf_yield", 1.0),
+    ("sf_shakedown", "sf_shakedown", 1.0),
+    ("dtau_orth", "dtau_orth_MPa", 1e-6),
+    ("util_subsurface", "util_subsurface", 1.0),
+    ("sf_subsurface", "sf_subsurface", 1.0),
+    ("sf_surface_fatigue", "sf_surface_fatigue", 1.0),
+    ("N_pitting", "N_pitting_cycles", 1.0),
+    ("sf_scuffing", "sf_scuffing", 1.0),
+    ("k_wear", "k_wear_mm3_per_N_m", 1e9),
+)
+TEXT = ("regime", "flags")
+#: criterion -> (column, "min"|"max") for the worst-angle summary
+WORST = {"film (lambda)": ("lam", "min"), "contact temperature": ("T_contact", "max"),
+         "scuffing": ("sf_scuffing", "min"), "first yield": ("sf_yield", "min"),
+         "shakedown": ("sf_shakedown", "min"), "subsurface fatigue": ("sf_subsurface", "min"),
+         "surface fatigue": ("sf_surface_fatigue", "min"), "pitting life": ("N_pitting", "min")}
+
+
+def _geometry(scene):
+    """``(scene for the kinematics, R2 in m, tip radius or None)`` per follower type."""
+    kind = type(scene.follower).__name__
+    if kind == "RollerFollower":
+        return scene, scene.follower.Rr, None
+    if kind == "FlatFacedFollower":
+        return scene, math.inf, None
+    tip = wear_options(scene).get("tip_radius_mm")
+    if tip is None:
+        raise InputError("follower type = knife_edge: a sharp tip has no contact width, so film, "
+                         "pressure and temperatures are undefined; give the tip radius: scene [wear] "
+                         "tip_radius_mm (mm)")
+
+    f = scene.follower
+    return dataclasses.replace(scene, follower=RollerFollower(Rb=f.Rb, Rr=tip, e=f.e)), tip, tip
+
+
+def _contact(sc, st, R2, table, n):
+    """Hertz (or FE from ``table``) ``a, p0, w, R, E_star, valid`` per angle."""
+    Fc = np.where(st.liftoff, 0.0, np.clip(st.Fc, 0.0, None))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", HertzValidityWarning)   # reported per angle in flags
+        hc = LineContact(F=Fc, length=sc.length, R1=st.rho, R2=R2, cam=sc.cam, roller=sc.roller,
+                         mu=sc.mu, plane=sc.plane)
+    a, p0 = np.broadcast_to(hc.a, (n,)).copy(), np.broadcast_to(hc.p0, (n,)).copy()
+    source = np.full(n, "hertz", dtype=object)
+    if table is not None and "a_fe" in table and "p0_fe" in table:
+        a_fe, p_fe = np.asarray(table["a_fe"], float), np.asarray(table["p0_fe"], float)
+        use = np.isfinite(a_fe) & np.isfinite(p_fe) & (a_fe > 0)
+        a, p0 = np.where(use, a_fe, a), np.where(use, p_fe, p0)
+        source[use] = "fe"
+    w = Fc / sc.length
+    return Fc, a, p0, w, np.broadcast_to(hc.R, (n,)), hc.E_star, np.broadcast_to(hc.valid, (n,)), source
+
+
+def _speeds(scene, sc, st, theta, Fc, tip):
+    """Surface speeds ``(V_cam, V_follower)`` at ``theta``. The inertia-limited roller model needs
+    one whole revolution: for any other set of angles (a sweep chunk) it is solved on 720 angles
+    and interpolated (periodic, linear)."""
+    kw = slip_kwargs(scene)
+    full = theta.size >= 4 and np.allclose(np.diff(theta), theta[1] - theta[0]) and \
+        abs(theta[-1] - theta[0] + (theta[1] - theta[0]) - 2.0 * math.pi) < 1e-9
+    if kw["roller_model"] != "inertia" or type(scene.follower).__name__ != "RollerFollower" or full:
+        r = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, tip_radius=tip, **kw)
+        return r.V_cam, r.V_follower
+    grid = np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False)
+    sg = sc.analyse(grid)
+    r = follower_slip(scene.follower, grid, sg.s, sg.s1, sg.s2, Fc=np.where(sg.liftoff, 0.0, sg.Fc), **kw)
+    th = np.mod(theta, 2.0 * math.pi)
+    return (np.interp(th, grid, r.V_cam, period=2.0 * math.pi),
+            np.interp(th, grid, r.V_follower, period=2.0 * math.pi))
+
+
+def _pair(inp: AssessInputs, key: str):
+    return inp.cam.get(key), inp.roller.get(key)
+
+
+def _thermal(inp, mu, w, a, u1, u2, T_oil, out, flags):
+    if not inp.has("flash temperature"):
+        return
+    b1, b2 = (flash.effusivity(m["K"], m["rho"], m["c"]) for m in (inp.cam, inp.roller))
+    k1, k2 = (m["K"] / (m["rho"] * m["c"]) for m in (inp.cam, inp.roller))
+    out["dT_flash"] = flash.flash_temperature(mu, w, a, u1, u2, b1, b2)
+    out["Pe_cam"], out["Pe_follower"] = flash.peclet(u1, a, k1), flash.peclet(u2, a, k2)
+    flags.append(("low_peclet", (np.minimum(out["Pe_cam"], out["Pe_follower"]) < flash.PECLET_MIN)
+                  & (out["dT_flash"] > 0)))
+    if T_oil is not None:
+        out["T_contact"] = T_oil + out["dT_flash"]
+        if inp.has("scuffing"):
+            out["sf_scuffing"] = flash.scuffing_safety(min(_pair(inp, "T_scuff")), T_oil, out["dT_flash"])
+
+
+def _strength(inp, mu, p0, out):
+    with np.errstate(divide="ignore"):
+        inv_p0 = np.where(p0 > 0, 1.0 / np.where(p0 > 0, p0, 1.0), np.inf)
+    out["dtau_orth"] = fatigue.orthogonal_shear_range(mu)[0] * p0
+    if inp.has("yield and shakedown"):
+        k = 0.5 * min(_pair(inp, "Y"))                       # Tresca: k = Y/2 of the weaker body
+        out["p0_over_k"] = p0 / k
+        out["sf_yield"] = fatigue.first_yield_limit(mu) * k * inv_p0
+        out["sf_shakedown"] = fatigue.shakedown_limit(mu) * k * inv_p0
+    if inp.has("subsurface fatigue"):
+        out["util_subsurface"] = 0.5 * out["dtau_orth"] / min(_pair(inp, "tau_e"))
+        with np.errstate(divide="ignore"):
+            out["sf_subsurface"] = np.where(out["util_subsurface"] > 0, 1.0 / out["util_subsurface"], np.inf)
+    if inp.has("surface fatigue"):
+        lim = [(m["sigma_Hlim"], m.get("N_ref", fatigue.SN_CYCLES_ISO6336),
+                m.get("m", fatigue.SN_EXPONENT_ISO6336)) for m in (inp.cam, inp.roller)]
+        out["sf_surface_fatigue"] = min(x[0] for x in lim) * inv_p0
+        out["N_pitting"] = np.minimum(*(fatigue.sn_cycles(p0, s, N_ref=N, m=m) for s, N, m in lim))
+
+
+def _fe_stresses(inp, table, source, out):
+    """FE stress maxima of a sweep table, where the FE answered: first yield from the FE ``tau1_max``
+    (``k / tau1_max``) and the orthogonal shear range ``2 txz_absmax`` (the frictionless Hertz
+    field has ``min txz = -max txz`` over a pass, Johnson 1985 §9.2)."""
+    fe = np.asarray(source) == "fe"
+    if "tau1_max" in table and inp.has("yield and shakedown"):
+        t1 = np.asarray(table["tau1_max"], float)
+        use = fe & np.isfinite(t1) & (t1 > 0)
+        k = 0.5 * min(_pair(inp, "Y"))
+        out["sf_yield"] = np.where(use, k / np.where(use, t1, 1.0), out["sf_yield"])
+    if "txz_absmax" in table:
+        tx = np.asarray(table["txz_absmax"], float)
+        use = fe & np.isfinite(tx)
+        out["dtau_orth"] = np.where(use, 2.0 * tx, out["dtau_orth"])
+        if inp.has("subsurface fatigue"):
+            out["util_subsurface"] = 0.5 * out["dtau_orth"] / min(_pair(inp, "tau_e"))
+            with np.errstate(divide="ignore"):
+                out["sf_subsurface"] = np.where(out["util_subsurface"] > 0, 1.0 / out["util_subsurface"],
+                                                np.inf)
+
+
+def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
+                inputs: AssessInputs | None = None) -> dict:
+    """Assessment columns at cam angles ``theta`` (rad): dict of arrays, SI names of :data:`COLUMNS`
+    plus the text columns ``regime``, ``flags``, ``source`` (``hertz``/``fe``).
+
+    ``table``: optional sweep table (mapping with ``a_fe``, ``p0_fe`` per angle in m, Pa; optional
+    ``tau1_max``, ``txz_absmax`` in Pa) whose finite FE values replace Hertz ``a``/``p0`` and, where
+    given, the first-yield and orthogonal-shear maxima (shakedown and surface fatigue keep
+    Hertz's shape factors with the FE ``p0``). Criteria
+    without their material data are NaN (see :attr:`AssessInputs.skipped`). Angles outside a
+    formula's validity are computed and flagged. Raises :class:`~femcam.errors.SceneError` if a
+    lubricated assessment lacks lubricant data, and :class:`~femcam.errors.InputError` for a sharp
+    knife-edge.
+    """
+    inp = inputs or assessment_inputs(scene, lubricated=lubricated)
+    table = getattr(table, "table", table)                   # a SweepResult or its table mapping
+    theta = np.atleast_1d(np.asarray(theta, float))
+    n = theta.size
+    sc, R2, tip = _geometry(scene)
+    st = sc.analyse(theta)
+    Fc, a, p0, w, R, E_star, valid, source = _contact(sc, st, R2, table, n)
+    u1, u2 = _speeds(scene, sc, st, theta, Fc, tip)
+    out = {c[0]: np.full(n, np.nan) for c in COLUMNS}
+    out.update(theta=theta, Fc=Fc, cam_x=st.profile.x, cam_y=st.profile.y)
+    out.update(R=R, a=a, p0=p0, u_cam=u1, u_follower=u2, U=0.5 * (u1 + u2),
+               v_slide=np.abs(u1 - u2))
+    flags = [("liftoff", np.asarray(st.liftoff, bool)), ("hertz_validity", ~np.asarray(valid, bool))]
+    k0 = wear_coefficient_info(scene)[0]
+    regime = np.full(n, "dry", dtype=object)
+    if inp.lubricant is not None:
+        eta0 = float(inp.lubricant.viscosity(inp.T_oil))
+        f = film.film_thickness(U=out["U"], w=w, R=R, E_star=E_star, eta0=eta0, alpha=inp.lubricant.alpha,
+                                sigma=inp.sigma)
+        out.update(eta0=np.full(n, eta0), h_min=f["h_min"], h_c=f["h_c"], lam=f["lam"],
+                   k_wear=wear_coefficient(k0, f["lam"]))
+        regime = np.array(film.REGIME_NAMES, dtype=object)[f["regime"]]
+        flags += [(nm, m & (Fc > 0)) for nm, m in f["flags"]]
+    else:
+        out["k_wear"] = np.full(n, k0)
+    _thermal(inp, scene.mu, w, a, u1, u2, inp.T_oil, out, flags)
+    _strength(inp, scene.mu, p0, out)
+    if table is not None:
+        _fe_stresses(inp, table, source, out)
+    out["regime"] = np.where(Fc > 0, regime, "no contact")
+    out["flags"] = np.array([";".join(nm for nm, m in flags if m[i]) for i in range(n)], dtype=object)
+    out["source"] = source
+    return out
+
+
+@dataclass(frozen=True)
+class Assessment:
+    """An assessment: the per-angle ``rows`` (:func:`assess_rows`), the ``inputs`` used, the
+    ``worst`` angle per criterion and the ``notes`` (what was skipped and why)."""
+
+    scene_name: str
+    rows: dict
+    inputs: AssessInputs
+    worst: dict
+    notes: tuple
+
+
+def worst_angles(rows: dict) -> dict:
+    """criterion -> ``(value, theta in rad, index)`` of the worst contact angle (NaN columns skipped)."""
+    on = rows["Fc"] > 0
+    res = {}
+    for crit, (col, how) in WORST.items():
+        v = np.where(on, rows[col], np.nan)
+        if not np.any(np.isfinite(v)):
+            continue
+        i = int(np.nanargmin(v) if how == "min" else np.nanargmax(v))
+        res[crit] = (float(v[i]), float(rows["theta"][i]), i)
+    return res
+
+
+def assess(scene, theta=None, *, table=None, lubricated: bool = True) -> Assessment:
+    """Assess ``scene`` at ``theta`` (rad; default 360 angles over one revolution)."""
+    if theta is None:
+        theta = np.linspace(0.0, 2.0 * math.pi, 360, endpoint=False)
+    inp = assessment_inputs(scene, lubricated=lubricated)
+    rows = assess_rows(scene, theta, table, inputs=inp)
+    notes = tuple(f"{crit}: skipped, needs {', '.join(keys)}" for crit, keys in inp.skipped.items())
+    return Assessment(scene_name=scene.name, rows=rows, inputs=inp, worst=worst_angles(rows), notes=notes)
+
+
+def csv_columns(rows: dict) -> dict:
+    """The rows with CSV names and units (``theta_deg``, ``h_min_um``, ...), text columns last."""
+    out = {csv: np.asarray(rows[si], float) * f for si, csv, f in COLUMNS}
+    out.update({t: rows[t] for t in (*TEXT, "source") if t in rows})
+    return out
+
+
+def wear_factor(scene, theta, table=None, tip_radius=None):
+    """The Archard coefficient's lubrication factor and regime per angle, for the wear map.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+    theta : ndarray, shape (n,)
+        Cam angles (rad).
+    table : dict, optional
+        A sweep table (FE ``a_fe``/``p0_fe`` used where finite), as for :func:`assess_rows`.
+    tip_radius : float, optional
+        Knife-edge tip radius (m).
+
+    Returns
+    -------
+    k_factor : ndarray, shape (n,), or None
+        ``k(lambda) / k`` (dimensionless); None for a scene without [lubricant] (dry k).
+    regime : ndarray of str, shape (n,), or None
+        ``boundary`` / ``mixed`` / ``full_film`` per angle.
+    """
+    k = wear_coefficient_info(scene)[0]
+    if "lubricant" not in scene.tribology or not k > 0:
+        return None, None
+    if tip_radius is not None:
+        scene = dataclasses.replace(scene, wear={**scene.wear, "tip_radius_mm": tip_radius * 1e3})
+    r = assess_rows(scene, theta, table)
+    return r["k_wear"] / k, r["regime"]

@@ -1,0 +1,175 @@
+"""The assessment inputs of a scene: lubricant, composite roughness, oil temperature, material
+extras (yield, thermal, fatigue, scuffing), checked and converted to SI.
+
+:func:`assessment_inputs` raises one :class:`~femcam.errors.SceneError` naming every missing or
+contradictory key of a lubricated assessment (``[lubricant]``, ``[surface]``,
+``[operating] oil_temperature_C``). Material extras are optional per criterion: a criterion whose
+data are missing is skipped, and :attr:`AssessInputs.skipped` says which keys would enable it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from ..errors import InputError, SceneError
+from ..tribology.film import RQ_PER_RA
+from ..tribology.lubricants import OILS, Lubricant, lubricant
+
+#: material extras (scene key -> SI name) used by the assessment
+MATERIAL_KEYS = {"yield_strength_MPa": "Y", "thermal_conductivity_W_per_m_K": "K",
+                 "density_kg_per_m3": "rho", "specific_heat_J_per_kg_K": "c",
+                 "contact_fatigue_strength_MPa": "sigma_Hlim", "contact_fatigue_cycles": "N_ref",
+                 "contact_fatigue_exponent": "m", "shear_fatigue_limit_MPa": "tau_e",
+                 "scuffing_temperature_C": "T_scuff"}
+#: criterion -> material keys it needs (in both bodies)
+CRITERIA = {"flash temperature": ("thermal_conductivity_W_per_m_K", "density_kg_per_m3",
+                                  "specific_heat_J_per_kg_K"),
+            "scuffing": ("scuffing_temperature_C",),
+            "yield and shakedown": ("yield_strength_MPa",),
+            "subsurface fatigue": ("shear_fatigue_limit_MPa",),
+            "surface fatigue": ("contact_fatigue_strength_MPa",)}
+
+
+@dataclass(frozen=True)
+class AssessInputs:
+    """Checked assessment inputs (SI; temperatures in degC)."""
+
+    lubricant: Lubricant | None
+    sigma: float | None
+    T_oil: float | None
+    cam: dict
+    roller: dict
+    skipped: dict = field(default_factory=dict)
+
+    def has(self, criterion: str) -> bool:
+        return criterion not in self.skipped
+
+
+_EXPO_UNITS = {"viscosity_Pa_s": "Pa s", "temperature_C": "degC",
+               "viscosity_temperature_coefficient_per_K": "1/K"}
+
+
+def _viscosity_law(lub: dict, base: dict, problems: list) -> dict:
+    """Keyword arguments of the viscosity law of :class:`Lubricant` ({} and a problem if none)."""
+    expo = [k for k in ("viscosity_Pa_s", "temperature_C", "viscosity_temperature_coefficient_per_K")
+            if k in lub]
+    walther = [k for k in ("kinematic_viscosity_40C_mm2_per_s", "kinematic_viscosity_100C_mm2_per_s")
+               if k in lub]
+    visc = {}
+    if expo and walther:
+        problems.append("lubricant: give either viscosity_Pa_s + temperature_C + "
+                        "viscosity_temperature_coefficient_per_K or the two kinematic viscosities, not both")
+    elif expo:
+        if len(expo) < 3:
+            need = [f"{k} ({u})" for k, u in _EXPO_UNITS.items() if k not in expo]
+            problems.append(f"lubricant: has {', '.join(expo)}; the exponential law also needs "
+                            f"{', '.join(need)}")
+        else:
+            visc = dict(eta_ref=lub["viscosity_Pa_s"], T_ref_C=lub["temperature_C"],
+                        beta_T=lub["viscosity_temperature_coefficient_per_K"])
+    elif walther:
+        if len(walther) < 2:
+            problems.append("lubricant: the ASTM D341 law needs both kinematic_viscosity_40C_mm2_per_s and "
+                            "kinematic_viscosity_100C_mm2_per_s (mm^2/s)")
+        else:
+            visc = dict(nu40=lub["kinematic_viscosity_40C_mm2_per_s"],
+                        nu100=lub["kinematic_viscosity_100C_mm2_per_s"])
+    elif "nu40" in base:
+        visc = dict(nu40=base["nu40"], nu100=base["nu100"])
+    else:
+        problems.append("lubricant: missing viscosity: give name (a table oil) or viscosity_Pa_s (Pa s) + "
+                        "temperature_C (degC) + viscosity_temperature_coefficient_per_K (1/K), or "
+                        "kinematic_viscosity_40C_mm2_per_s + kinematic_viscosity_100C_mm2_per_s (mm^2/s)")
+    return visc
+
+
+def _lubricant(lub: dict, problems: list) -> Lubricant | None:
+    base = {}
+    if "name" in lub and lub["name"] in OILS:
+        o = lubricant(lub["name"])
+        base = dict(nu40=o.nu40, nu100=o.nu100, rho=o.rho, alpha=o.alpha, source=o.source)
+    elif "name" in lub and not any(k.startswith(("viscosity", "kinematic")) for k in lub):
+        problems.append(f"lubricant.name = {lub['name']!r}: not a table oil ({', '.join(map(repr, OILS))}); "
+                        "or give its data (viscosity keys, pressure_viscosity_per_GPa, density_kg_per_m3)")
+        return None
+    if "pressure_viscosity_per_GPa" in lub and "alpha_per_Pa" in lub:
+        problems.append("lubricant: give pressure_viscosity_per_GPa (1/GPa) or alpha_per_Pa (1/Pa), not both")
+    alpha = lub.get("pressure_viscosity_per_GPa", lub.get("alpha_per_Pa", base.get("alpha")))
+    rho = lub.get("density_kg_per_m3", base.get("rho"))
+    visc = _viscosity_law(lub, base, problems)
+    if alpha is None:
+        problems.append("lubricant.pressure_viscosity_per_GPa: missing (1/GPa; or alpha_per_Pa in 1/Pa)")
+    if rho is None:
+        problems.append("lubricant.density_kg_per_m3: missing (kg/m^3)")
+    if problems or not visc:
+        return None
+    try:
+        return Lubricant(name=lub.get("name", "scene oil"), alpha=alpha, rho=rho,
+                         source=lub.get("source", base.get("source", "")), **visc)
+    except InputError as exc:
+        problems.append(f"lubricant: {exc}")
+        return None
+
+
+def _roughness(surf: dict, problems: list) -> float | None:
+    rq = []
+    for body in ("cam", "roller"):
+        ra, q = f"{body}_Ra_um", f"{body}_Rq_um"
+        if ra in surf and q in surf:
+            problems.append(f"surface: give {ra} or {q} (um), not both")
+        elif q in surf:
+            rq.append(surf[q])
+        elif ra in surf:
+            rq.append(RQ_PER_RA * surf[ra])          # Gaussian heights: Rq = sqrt(pi/2) Ra
+        else:
+            problems.append(f"surface.{ra}: missing (um; or {q})")
+    if len(rq) < 2:
+        return None
+    sigma = float((rq[0] ** 2 + rq[1] ** 2) ** 0.5)
+    if sigma <= 0.0:
+        problems.append("surface: composite roughness is 0 um: lambda = h/sigma is undefined")
+        return None
+    return sigma
+
+
+def assessment_inputs(scene, *, lubricated: bool = True) -> AssessInputs:
+    """Collect the assessment inputs of ``scene`` (see the module docstring)."""
+    tri = dict(getattr(scene, "tribology", None) or {})
+    problems: list[str] = []
+    lub = sigma = T_oil = None
+    if lubricated:
+        if "lubricant" not in tri:
+            problems.append("[lubricant]: missing table; a lubricated assessment needs name (one of "
+                            f"{', '.join(map(repr, OILS))}) or viscosity_Pa_s, temperature_C, "
+                            "viscosity_temperature_coefficient_per_K, pressure_viscosity_per_GPa, "
+                            "density_kg_per_m3")
+        else:
+            lub = _lubricant(tri["lubricant"], problems)
+        if "surface" not in tri:
+            problems.append("[surface]: missing table; give cam_Ra_um and roller_Ra_um (um; or *_Rq_um)")
+        else:
+            sigma = _roughness(tri["surface"], problems)
+        if "oil_temperature_C" not in tri:
+            problems.append("operating.oil_temperature_C: missing (degC), the inlet/bulk temperature")
+        T_oil = tri.get("oil_temperature_C")
+        for key, T in (("operating.oil_temperature_C", T_oil),
+                       ("lubricant.temperature_C", tri.get("lubricant", {}).get("temperature_C"))):
+            if T is not None and T <= -273.15:
+                problems.append(f"{key} = {T:g} degC: must be above absolute zero (-273.15 degC)")
+    if problems:
+        where = getattr(scene, "source_path", "") or getattr(scene, "name", "scene")
+        n = len(problems)
+        raise SceneError(f"scene {where}: {n} problem{'s' if n > 1 else ''} for the assessment\n  "
+                         + "\n  ".join(problems))
+    mats = tri.get("materials", {})
+    props = {b: {MATERIAL_KEYS[k]: v for k, v in mats.get(b, {}).items()} for b in ("cam", "roller")}
+    skipped = {}
+    for crit, keys in CRITERIA.items():
+        miss = [f"[materials.{b}] {k}" for k in keys for b in ("cam", "roller")
+                if MATERIAL_KEYS[k] not in props[b]]
+        if miss:
+            skipped[crit] = miss
+    if not lubricated:
+        skipped["scuffing"] = ["[operating] oil_temperature_C"]
+    return AssessInputs(lubricant=lub, sigma=sigma, T_oil=T_oil, cam=props["cam"], roller=props["roller"],
+                        skipped=skipped)

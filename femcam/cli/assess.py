@@ -1,0 +1,105 @@
+"""``femcam assess SCENE.toml --out DIR``: will it fail? Film, flash temperature, yield,
+shakedown, contact fatigue, scuffing and the lubrication regime at every cam angle.
+
+Writes ``DIR/assessment.csv`` (units in the column names, provenance header), ``DIR/summary.json``
+(worst angle per criterion, skipped criteria, flags), ``DIR/report.md`` (one page with the plots)
+and ``DIR/plots/assess_*.png``. ``--sweep SWEEP_DIR`` takes the angles and the FE ``a``/``p0`` of a
+finished sweep (``SWEEP_DIR/sweep.npz``) instead of Hertz.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import shlex
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from ..assess import assess, csv_columns
+from ..errors import InputError
+from ..io import atomic_write_text, csv_text, provenance
+from ..scene import load_scene
+from ..viz.assess import plot_assessment, report_markdown
+
+
+def register(subparsers) -> None:
+    p = subparsers.add_parser("assess", help="will it fail? film, flash temperature, fatigue, safety factors",
+                              description=__doc__.split("\n\n")[0])
+    p.add_argument("scene", metavar="SCENE.toml", help="scene file (with [lubricant], [surface], ...)")
+    p.add_argument("--out", required=True, metavar="DIR", help="output directory")
+    p.add_argument("--angles-deg", default="0:360:1", metavar="START:STOP:STEP",
+                   help="cam angles in degrees, stop exclusive (default 0:360:1)")
+    p.add_argument("--sweep", default=None, metavar="SWEEP_DIR",
+                   help="use the angles and FE a/p0 of a finished sweep (SWEEP_DIR/sweep.npz)")
+    p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    p.set_defaults(func=_run)
+
+
+def _angles(text: str):
+
+
+    try:
+        start, stop, step = (float(x) for x in text.split(":"))
+    except ValueError:
+        raise InputError(f"--angles-deg = {text!r}: must be START:STOP:STEP in degrees") from None
+    if step <= 0 or stop <= start:
+        raise InputError(f"--angles-deg = {text!r} deg: need STEP > 0 and STOP > START")
+    return np.radians(np.arange(start, stop - 1e-9 * step, step))
+
+
+def _sweep_table(path):
+
+
+
+    f = Path(path) / "sweep.npz"
+    if not f.is_file():
+        raise InputError(f"--sweep = {path}: no sweep.npz there (run femcam sweep SCENE --out {path} first)")
+    with np.load(f, allow_pickle=False) as z:
+        return {k: np.asarray(z[k]) for k in ("theta", "a_fe", "p0_fe", "tau1_max", "txz_absmax")
+                if k in z.files}
+
+
+def _write_csv(path, cols: dict, header: list[str]) -> None:
+
+
+    names = list(cols)
+    lines = [",".join(names)] + ["# " + h for h in header]
+    arrs = [np.asarray(cols[n]) for n in names]
+    for i in range(len(arrs[0])):
+        lines.append(",".join(f"{a[i]:.8g}" if a.dtype.kind == "f" else csv_text(a[i]) for a in arrs))
+    atomic_write_text(path, "\n".join(lines) + "\n")
+
+
+def _run(args) -> int:
+
+
+    scene = load_scene(args.scene)
+    table = _sweep_table(args.sweep) if args.sweep else None
+    theta = table["theta"] if table is not None else _angles(args.angles_deg)
+    res = assess(scene, theta, table=table)
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    prov = provenance(scene_path=args.scene, command=shlex.join(["femcam", "assess", *sys.argv[2:]]))
+    head = ["femcam assess results (units in the column names)", f"scene: {args.scene}",
+            f"command: {prov['command']}", f"date: {prov['date']}",
+            "versions: " + ", ".join(f"{k} {v}" for k, v in prov["versions"].items())]
+    _write_csv(out / "assessment.csv", csv_columns(res.rows), head)
+    summary = {"scene": scene.name, "n_angles": int(len(theta)),
+               "worst": {c: {"value": v, "theta_deg": math.degrees(t)} for c, (v, t, _) in res.worst.items()},
+               "skipped": list(res.notes), "provenance": prov}
+    (out / "summary.json").write_text(json.dumps(summary, indent=1, default=str))
+    plots = {}
+    if not args.no_plots:
+
+        plots = plot_assessment(res, out / "plots")
+
+    (out / "report.md").write_text(report_markdown(res, plots, provenance=f"Scene `{args.scene}`, "
+                                                   f"{len(theta)} cam angles; {prov['date']}.", base=out))
+    for crit, (v, t, _) in res.worst.items():
+        print(f"{crit:>22s}: worst {v:.4g} at {math.degrees(t):6.1f} deg")
+    for n in res.notes:
+        print(f"note: {n}")
+    print(f"wrote {out / 'assessment.csv'}, {out / 'summary.json'}, {out / 'report.md'}")
+    return 0

@@ -1,0 +1,174 @@
+"""Plots and the one-page Markdown report of an assessment (:func:`femcam.assess.assess`).
+
+Figures: lambda and film thickness vs cam angle, temperatures vs angle, safety factors vs angle,
+and the cam outline coloured by lambda and by the smallest safety factor. matplotlib is imported
+inside the functions (optional dependency, keeps ``import femcam`` headless).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+
+import numpy as np
+
+#: safety-factor columns plotted, with their labels
+SAFETY = (("sf_yield", "first yield"), ("sf_shakedown", "shakedown"), ("sf_subsurface", "subsurface fatigue"),
+          ("sf_surface_fatigue", "surface fatigue"), ("sf_scuffing", "scuffing"))
+
+
+def _plt():
+    import matplotlib  # optional dependency, imported only to plot
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def _save(fig, path: Path) -> str:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    _plt().close(fig)
+    return str(path)
+
+
+def plot_lambda(rows, path) -> str:
+    """lambda (left) and h_min, h_c (right) vs cam angle, regime limits 1 and 3 drawn."""
+    plt = _plt()
+    deg = np.degrees(rows["theta"])
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(10, 3.4))
+    ax.plot(deg, rows["lam"], "C0-")
+    for y, name in ((1.0, "boundary | mixed"), (3.0, "mixed | full film")):
+        ax.axhline(y, color="0.5", ls="--", lw=0.8)
+        ax.text(deg[0], y, " " + name, fontsize=7, va="bottom", color="0.4")
+    ax.set_xlabel("cam angle (deg)")
+    ax.set_ylabel("lambda = h_min / sigma")
+    ax.set_ylim(bottom=0)
+    bx.plot(deg, rows["h_min"] * 1e6, "C0-", label="h_min (Pan-Hamrock 1989)")
+    bx.plot(deg, rows["h_c"] * 1e6, "C1--", label="h_c")
+    bx.set_xlabel("cam angle (deg)")
+    bx.set_ylabel("film thickness (um)")
+    bx.legend(fontsize=8)
+    for a in (ax, bx):
+        a.grid(alpha=0.3)
+    return _save(fig, Path(path))
+
+
+def plot_temperatures(rows, path, *, T_oil=None, T_scuff=None) -> str:
+    """Flash temperature rise and contact temperature vs cam angle (scuffing limit dashed)."""
+    plt = _plt()
+    deg = np.degrees(rows["theta"])
+    fig, ax = plt.subplots(figsize=(6.5, 3.4))
+    ax.plot(deg, rows["T_contact"], "C3-", label="contact temperature T_oil + dT_flash")
+    if T_oil is not None:
+        ax.axhline(T_oil, color="C0", lw=0.8, label=f"oil (bulk) {T_oil:g} C")
+    if T_scuff is not None:
+        ax.axhline(T_scuff, color="k", ls="--", lw=0.8, label=f"scuffing {T_scuff:g} C")
+    bx = ax.twinx()
+    bx.plot(deg, rows["dT_flash"], "C1:", label="dT_flash (Blok), right axis")
+    bx.set_ylabel("flash temperature rise (K)", color="C1")
+    bx.set_ylim(bottom=0)
+    bx.legend(fontsize=7, loc="upper right")
+    ax.set_xlabel("cam angle (deg)")
+    ax.set_ylabel("temperature (C)")
+    ax.legend(fontsize=7, loc="upper left")
+    ax.grid(alpha=0.3)
+    return _save(fig, Path(path))
+
+
+def plot_safety(rows, path) -> str:
+    """Safety factors vs cam angle on a log axis, the line SF = 1 drawn."""
+    plt = _plt()
+    deg = np.degrees(rows["theta"])
+    fig, ax = plt.subplots(figsize=(6.5, 3.6))
+    for i, (col, label) in enumerate(SAFETY):
+        v = np.where(np.isfinite(rows[col]), rows[col], np.nan)
+        if np.any(np.isfinite(v)):
+            ax.semilogy(deg, v, f"C{i}-", label=label)
+    ax.axhline(1.0, color="k", lw=1.0)
+    ax.set_xlabel("cam angle (deg)")
+    ax.set_ylabel("safety factor")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7)
+    return _save(fig, Path(path))
+
+
+def plot_outline(rows, path) -> str:
+    """The cam outline coloured by lambda (left) and by the smallest safety factor (right)."""
+    plt = _plt()
+    x, y = rows["cam_x"] * 1e3, rows["cam_y"] * 1e3
+    sf = np.full(x.shape, np.inf)
+    for col, _ in SAFETY:
+        sf = np.fmin(sf, np.where(np.isfinite(rows[col]), rows[col], np.inf))
+    fig, axs = plt.subplots(1, 2, figsize=(9, 4.2))
+    for ax, val, label, cmap in ((axs[0], rows["lam"], "lambda", "viridis"),
+                                 (axs[1], np.where(np.isfinite(sf), sf, np.nan), "smallest safety factor",
+                                  "RdYlGn")):
+        ax.plot(x, y, color="0.8", lw=4, zorder=0)
+        sc = ax.scatter(x, y, c=val, s=10, cmap=cmap)
+        fig.colorbar(sc, ax=ax, label=label, shrink=0.8)
+        ax.set_aspect("equal")
+        ax.set_xlabel("x (mm)")
+        ax.set_ylabel("y (mm)")
+    return _save(fig, Path(path))
+
+
+def _fmt(v) -> str:
+    return "inf" if v == math.inf else f"{v:.3g}"
+
+
+WORST_UNITS = {"film (lambda)": "", "contact temperature": " C", "pitting life": " cycles"}
+
+
+def report_markdown(assessment, plots: dict, *, title: str = "", provenance: str = "", base=None) -> str:
+    """The one-page report: inputs, worst angle per criterion, flags, skipped criteria, plots
+    (linked relative to the directory ``base`` of the report file)."""
+    a = assessment
+    r, inp = a.rows, a.inputs
+    on = r["Fc"] > 0
+    lines = [f"# Assessment: {title or a.scene_name}", ""]
+    if provenance:
+        lines += [provenance, ""]
+    if inp.lubricant is not None:
+        lub = inp.lubricant
+        lines += [f"Lubricant: {lub.name} (alpha = {lub.alpha * 1e9:g} 1/GPa, {lub.rho:g} kg/m^3; "
+                  f"{lub.source}); "
+                  f"oil temperature {inp.T_oil:g} C, viscosity {lub.viscosity(inp.T_oil) * 1e3:.3g} mPa s; "
+                  f"composite roughness sigma = {inp.sigma * 1e6:.3g} um.", ""]
+    lines += ["## Worst angle per criterion", "", "| criterion | worst value | cam angle (deg) |",
+              "|---|---|---|"]
+    for crit, (val, th, _) in a.worst.items():
+        lines.append(f"| {crit} | {_fmt(val)}{WORST_UNITS.get(crit, '')} | {math.degrees(th):.1f} |")
+    regimes, counts = np.unique(np.asarray(r["regime"])[on].astype(str), return_counts=True)
+    lines += ["", "Lubrication regime (contact angles): "
+              + ", ".join(f"{g} {c}" for g, c in zip(regimes, counts, strict=True)) + "."]
+    flags = {}
+    for f in np.asarray(r["flags"]).astype(str):
+        for name in filter(None, f.split(";")):
+            flags[name] = flags.get(name, 0) + 1
+    lines += ["", "Flags (angles computed outside a formula's range of validity): "
+              + (", ".join(f"{k} at {v} angles" for k, v in flags.items()) or "none") + "."]
+    if a.notes:
+        lines += ["", "Skipped: " + "; ".join(a.notes) + "."]
+    lines += [""]
+    for name, path in plots.items():
+        link = os.path.relpath(path, base) if base is not None else str(path)
+        lines += [f"![{name}]({Path(link).as_posix()})", ""]
+    return "\n".join(lines)
+
+
+def plot_assessment(assessment, out) -> dict:
+    """All four figures into ``out`` (a directory); returns ``{name: path}``."""
+    out = Path(out)
+    r, inp = assessment.rows, assessment.inputs
+    T_s = min((m["T_scuff"] for m in (inp.cam, inp.roller) if "T_scuff" in m), default=None)
+    plots = {"lambda": plot_lambda(r, out / "assess_lambda.png")} if inp.lubricant is not None else {}
+    if np.any(np.isfinite(r["T_contact"])):
+        plots["temperatures"] = plot_temperatures(r, out / "assess_temperature.png", T_oil=inp.T_oil,
+                                                  T_scuff=T_s)
+    plots["safety"] = plot_safety(r, out / "assess_safety.png")
+    plots["outline"] = plot_outline(r, out / "assess_outline.png")
+    return plots
