@@ -176,6 +176,10 @@ def _fmt(v) -> str:
     return repr(v) if isinstance(v, str) else str(v).lower() if isinstance(v, bool) else f"{v}"
 
 
+#: problems one SceneError lists (then "... and N more")
+MAX_PROBLEMS = 20
+
+
 class _Checker:
     """Collects every problem of a scene file, then raises one SceneError."""
 
@@ -266,7 +270,9 @@ class _Checker:
         if self.problems:
             n = len(self.problems)
             head = f"scene file {self.path}: {n} problem{'s' if n > 1 else ''}"
-            raise SceneError(head + "\n  " + "\n  ".join(self.problems))
+            shown = self.problems[:MAX_PROBLEMS] + ([f"... and {n - MAX_PROBLEMS} more"]
+                                                    if n > MAX_PROBLEMS else [])
+            raise SceneError(head + "\n  " + "\n  ".join(shown))
 
 
 # --------------------------------------------------------------------------------------------
@@ -536,8 +542,15 @@ def _read_toml(path: Path) -> dict:
             return tomllib.load(fh)
     except FileNotFoundError:
         raise SceneError(f"scene file {path}: not found") from None
+    except IsADirectoryError:
+        raise SceneError(f"scene file {path}: is a directory; give a .toml file") from None
+    except UnicodeDecodeError as exc:  # a binary file, or text not saved as UTF-8
+        raise SceneError(f"scene file {path}: not a UTF-8 text file (byte {exc.start}: "
+                         f"{exc.object[exc.start:exc.start + 1]!r}); TOML must be UTF-8") from None
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(f"scene file {path}: not valid TOML: {exc}") from None
+    except OSError as exc:  # permission denied, a path under a file, ...
+        raise SceneError(f"scene file {path}: cannot be read ({exc.strerror or exc})") from None
 
 
 def _top_level(ck: _Checker, raw: dict) -> dict:

@@ -22,6 +22,7 @@ from ..errors import InputError
 from ..io import atomic_write_text, csv_text, provenance
 from ..scene import load_scene
 from ..viz.assess import plot_assessment, report_markdown
+from ._common import out_dir
 
 
 def register(subparsers) -> None:
@@ -73,14 +74,11 @@ def _write_csv(path, cols: dict, header: list[str]) -> None:
 
 
 def _run(args) -> int:
-
-
+    out = out_dir(args.out)  # checked before any work
     scene = load_scene(args.scene)
     table = _sweep_table(args.sweep) if args.sweep else None
     theta = table["theta"] if table is not None else _angles(args.angles_deg)
     res = assess(scene, theta, table=table)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
     prov = provenance(scene_path=args.scene, command=shlex.join(["femcam", "assess", *sys.argv[2:]]))
     head = ["femcam assess results (units in the column names)", f"scene: {args.scene}",
             f"command: {prov['command']}", f"date: {prov['date']}",

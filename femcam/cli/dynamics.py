@@ -22,6 +22,7 @@ from ..dynamics import jump_speed, rpm_sweep
 from ..errors import InputError
 from ..scene import load_scene
 from ..viz.dynamics import plot_force, plot_rpm_sweep
+from ._common import out_dir
 
 
 def register(subparsers) -> None:
@@ -85,14 +86,12 @@ def _write_sweep(out: Path, scene, sw):
 
 
 def run(args) -> int:
-
+    out = out_dir(args.out)  # checked before any work
     scene = load_scene(args.scene)
     if scene.train is None:
         raise InputError(f"{args.scene}: [dynamics] model = 'rigid' (eq. 11) has no train to "
                          "integrate; set model = \"one_dof\" or \"two_dof\" (docs/dynamics.md)")
     workers = int(_validate.positive("--workers", args.workers, ""))
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
     r = scene.dynamic_response
     f_hz = ", ".join(f"{w / (2 * math.pi):.5g}" for w in r.natural_frequencies)
     print(f"{scene.name}: {r.model} at {r.rpm:g} rpm, natural frequencies {f_hz} Hz")

@@ -19,6 +19,7 @@ import numpy as np
 from .. import __version__, _validate
 from ..scene import load_scene
 from ..viz.analytic import plot_all
+from ._common import out_dir
 
 #: CSV columns: (name with unit, SceneState attribute, factor from SI)
 COLUMNS = (
@@ -59,8 +60,10 @@ def register(subparsers) -> None:
     p.set_defaults(func=_run)
 
 
-def _intervals_deg(iv) -> str:
-    return ", ".join(f"{math.degrees(a):.2f}-{math.degrees(b):.2f} deg" for a, b in iv) or "none"
+def _intervals_deg(iv, most: int = 20) -> str:
+    """The first ``most`` intervals, then ``... and N more``."""
+    text = ", ".join(f"{math.degrees(a):.2f}-{math.degrees(b):.2f} deg" for a, b in iv[:most]) or "none"
+    return text + (f", ... and {len(iv) - most} more" if len(iv) > most else "")
 
 
 def _undercut_intervals(st):
@@ -130,14 +133,26 @@ def write_csv(path, scene, st, command: str) -> Path:
     return path
 
 
+def _check_args(args) -> None:
+    """The numeric flags, refused with the flag's name, value and unit."""
+    step = _validate.number("--print-every-deg", args.print_every_deg, "deg")
+    if step <= 0:
+        raise _validate.fail("--print-every-deg", args.print_every_deg, "deg",
+                             "must be > 0 (the angle step of the printed table)")
+    lim = _validate.number("--phi-limit-deg", args.phi_limit_deg, "deg")
+    if not 0 < lim < 90:
+        raise _validate.fail("--phi-limit-deg", args.phi_limit_deg, "deg",
+                             "must be in (0, 90): a pressure angle of 90 deg or more transmits no lift")
+
+
 def _run(args) -> int:
+    _check_args(args)
     theta = _validate.angles_deg("--angles-deg", args.angles_deg)
     scene = load_scene(args.scene)
     if args.law:
         scene = scene.with_law(args.law)
     st = scene.analyse(theta, allow_undercut=args.allow_undercut)
-    out = Path(args.out) if args.out else Path("femcam-out") / scene.name
-    out.mkdir(parents=True, exist_ok=True)
+    out = out_dir(args.out if args.out else Path("femcam-out") / scene.name)
     # rebuilt from the parsed options (sys.argv is not ours when main() is called in-process)
     opts = ["--out", str(out), "--angles-deg", args.angles_deg]
     opts += ["--law", args.law] if args.law else []

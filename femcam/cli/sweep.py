@@ -16,6 +16,7 @@ from .. import _validate
 from ..scene import load_scene
 from ..sweep import parse_angles_deg, sweep
 from ..sweep.options import TOLERANCE_FLOOR
+from ._common import out_dir
 
 
 def register(subparsers) -> None:
@@ -80,6 +81,7 @@ def _check_args(args) -> None:
     if args.vtk_every < 0:
         raise _validate.fail("--vtk-every", args.vtk_every, "angles", "must be an integer >= 0 (0 = no VTK)")
     args.workers = _validate.workers("--workers", args.workers)
+    out_dir(args.out, create=False)
 
 
 def _command_line(args) -> str:

@@ -19,7 +19,6 @@ import json
 import math
 import shlex
 import sys
-from pathlib import Path
 
 from .. import _validate, io
 from ..errors import ConvergenceError, InputError
@@ -35,6 +34,7 @@ from ..synthesis.study import (
     write_study_csv,
 )
 from ..viz import synthesis as vz
+from ._common import out_dir
 
 #: design limit used by ``--base-radius-mm auto`` (seed 003 section 5: phi <= 30 deg)
 AUTO_PHI_MAX_DEG = 30.0
@@ -100,6 +100,7 @@ def _residual_tail(history, n=N_RESIDUALS_SHOWN) -> str:
 
 def run(args) -> int:
     """``femcam synth``: synthesise, compare with the direct profile, write CSV/PNG; exit code."""
+    out = out_dir(args.out)  # checked before any work
     name, program, Rb = _case(args)
     Rb, rb_source = _base_radius(args.base_radius_mm, Rb, program,
                                  "seed 003 case" if args.case else "scene")
@@ -111,8 +112,6 @@ def run(args) -> int:
         raise ConvergenceError(f"{exc} (Rb = {Rb * 1e3:.6g} mm); {_residual_tail(exc.history)}",
                                exc.history) from None
     cmp_ = compare_direct(res, program)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
     prov = io.provenance(scene_path=args.scene, command="femcam " + shlex.join(sys.argv[1:]),
                          options={"n_elements": opt.n_elements, "k": opt.k, "mu": opt.mu,
                                   "max_iter": opt.max_iter, "Rb_mm": Rb * 1e3,

@@ -37,6 +37,7 @@ from ..wear.evolution import convergence_table, evolution_case
 from ..wear.options import describe_k, wear_coefficient_info, wear_options
 from ..wear.scene import scene_tip_radius, scene_wear, tip_scene
 from ..wear.seed000 import PAPER_LAWS, format_table3, seed000_table, table_rows_for_csv
+from ._common import out_dir
 
 
 def register(subparsers) -> None:
@@ -118,6 +119,7 @@ def _check_map_args(args) -> tuple[float, float | None]:
 
 
 def _map(args) -> int:
+    out = out_dir(args.out)  # checked before any work
     scene = load_scene(args.scene)
     opts = wear_options(scene)
     cycles = args.cycles if args.cycles is not None else float(opts.get("cycles", 1e6))
@@ -126,8 +128,6 @@ def _map(args) -> int:
     laws = [x.strip() for x in args.laws.split(",")] if args.laws else [None]
     k, k_where = wear_coefficient_info(scene)
     print(describe_k(k, k_where))
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
     head = f"# femcam wear map; scene: {args.scene}; command: {shlex.join(sys.argv)}\n"
     results = {}
     for name in laws:
