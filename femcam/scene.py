@@ -31,7 +31,10 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
                        specific_heat_J_per_kg_K?, contact_fatigue_strength_MPa?,
                        contact_fatigue_cycles?, contact_fatigue_exponent?, shear_fatigue_limit_MPa?,
                        scuffing_temperature_C?
-    [fe]?, [wear]?     passed through unchanged (dicts) to the FE/sweep and wear layers
+    [fe]?              a_over_h?, tolerance? (femcam sweep's --mesh-size, --tolerance)
+    [sweep]?           method?, angles_deg? ("0:360:1"), chunk_size?, vtk_every?, plots?
+    [wear]?            K | k_mm3_per_N_m, roller_model?, srr?, J_kg_m2?, T_drag_N_m?, tip_radius_mm?,
+                       cycles? (femcam.wear.options)
 
 Only numpy/scipy and the standard library (``tomllib``) are imported.
 """
@@ -47,6 +50,7 @@ from pathlib import Path
 
 import numpy as np
 
+from . import _validate
 from .dynamics import TrainModel, periodic_response
 from .errors import ConvergenceError, InputError, SceneError, UndercutError
 from .kinematics import CamProgram, dwell, fall, law, rise
@@ -128,6 +132,21 @@ _SURFACE = {k: ("um", 1e-6, "nonneg", False)
 _CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", "flat_faced"),
             "plane": ("strain", "stress"), "sliding": ("+x", "-x"),
             "model": ("rigid", "one_dof", "two_dof")}
+# -- study settings read by `femcam sweep` (CLI flags override them), and the [wear] table
+#    (femcam.wear.options); ranges: femcam.sweep.options (a_over_h [2, 400], TOLERANCE_FLOOR) --
+_FE = {"a_over_h": ("(elements per contact half-width)", 1.0, "pos", False),
+       "tolerance": ("(relative p0 reuse error)", 1.0, "pos", False)}
+_SWEEP = {"method": ("", None, "str", False), "angles_deg": ("", None, "str", False),
+          "chunk_size": ("angles", 1.0, "int1", False), "vtk_every": ("angles", 1.0, "int0", False),
+          "plots": ("", None, "bool", False)}
+_RANGES = {"a_over_h": (2.0, 400.0), "tolerance": (1e-4, 0.5)}
+_WEAR = {"K": ("(dimensionless)", 1.0, "nonneg", False),
+         "k_mm3_per_N_m": ("mm^3/(N m)", 1e-9, "nonneg", False),
+         "roller_model": ("", None, "str", False), "srr": ("(dimensionless)", 1.0, "num", False),
+         "J_kg_m2": ("kg m^2", 1.0, "pos", False), "T_drag_N_m": ("N m", 1.0, "nonneg", False),
+         "tip_radius_mm": ("mm", 1e-3, "pos", False), "cycles": ("revolutions", 1.0, "nonneg", False)}
+_CHOICES.update(method=("fe", "hertz"), roller_model=("srr", "inertia"))
+_TABLES += ("sweep",)
 
 
 def _train(ck, raw: dict, dy: dict, dyn):
@@ -244,7 +263,16 @@ class _Checker:
             return [float(x) for x in v]
         if check == "seglist":
             return v  # handled by the caller
-        return self._number(dk, v, unit, factor, check)
+        if check == "bool":
+            if not isinstance(v, bool):
+                self.add(dk, f"= {_fmt(v)}: must be true or false")
+                return None
+            return v
+        x = self._number(dk, v, unit, factor, check)
+        if x is not None and k in _RANGES and not _RANGES[k][0] <= x <= _RANGES[k][1]:
+            self.add(dk, f"= {_fmt(v)} {unit}: must be in [{_RANGES[k][0]:g}, {_RANGES[k][1]:g}]")
+            return None
+        return x
 
     def _number(self, dk, v, unit, factor, check):
         u = f" {unit}" if unit else ""
@@ -261,10 +289,12 @@ class _Checker:
             bad = "must be >= 0"
         elif check == "nu" and not (-1.0 < x < 0.5):
             bad = "Poisson's ratio must be in (-1, 0.5)"
+        elif check in ("int0", "int1") and (x != int(x) or x < int(check[-1])):
+            bad = f"must be a whole number >= {check[-1]}"
         if bad:
             self.add(dk, f"= {_fmt(v)}{u}: {bad}")
             return None
-        return x * factor
+        return int(x) if check in ("int0", "int1") else x * factor
 
     def raise_if_any(self):
         if self.problems:
@@ -353,8 +383,12 @@ class Scene:
     sliding : str or None
         ``"+x"`` or ``"-x"``: direction of the friction traction on the cam.
     description, source : str
-    fe, wear : dict
-        The optional pass-through tables (``wear`` is checked by :mod:`femcam.wear.options`).
+    fe, sweep : dict
+        The checked study settings of [fe] (``a_over_h``, ``tolerance``) and [sweep]
+        (``method``, ``angles_deg``, ``chunk_size``, ``vtk_every``, ``plots``): ``femcam sweep``
+        uses them where no flag is given.
+    wear : dict
+        The [wear] table as written (checked at load; SI values: :mod:`femcam.wear.options`).
     source_path : str
         The scene file ("" if built in code).
     raw : dict
@@ -382,6 +416,8 @@ class Scene:
     raw: dict = field(default_factory=dict, repr=False)
     train: TrainModel | None = None  # [dynamics] model one_dof/two_dof; None: rigid eq. 11
     steps_per_rev: int | None = None
+    #: checked [sweep] settings (see ``fe``)
+    sweep: dict = field(default_factory=dict)
 
     @property
     def rpm(self) -> float:
@@ -521,19 +557,49 @@ def load_scene(path) -> Scene:
     dyn, train, steps_per_rev = _dynamics(ck, raw)
     mats = _materials(ck, raw)
     tribo = _tribology(ck, raw, mats)
-    # contact and pass-through tables
     co = ck.table(raw.get("contact", {}), "contact", _CONTACT)
-    for t in ("fe", "wear"):
-        if t in raw and not isinstance(raw[t], dict):
-            ck.add(t, f"= {_fmt(raw[t])}: must be a table [{t}]")
+    study = _study(ck, raw, mats)
     ck.raise_if_any()
 
     return Scene(name=top["name"], description=top.get("description", ""), source=top.get("source", ""),
                  program=program, follower=follower, dynamics=dyn, omega=omega, cam=mats["cam"],
                  roller=mats["roller"], length=fo["face_width_mm"], mu=co.get("friction", 0.0),
-                 plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=dict(raw.get("fe", {})),
+                 plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=study["fe"],
                  wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw, train=train, tribology=tribo,
-                 steps_per_rev=steps_per_rev)
+                 steps_per_rev=steps_per_rev, sweep=study["sweep"])
+
+
+def _study(ck: _Checker, raw: dict, mats: dict) -> dict:
+    """``{"fe": ..., "sweep": ...}``: the checked [fe] and [sweep] settings (SI), and the
+    [wear] table checked by :func:`wear_table` (the cam hardness from ``mats``)."""
+    out = {t: ck.table(raw[t], t, spec) if t in raw else {} for t, spec in (("fe", _FE), ("sweep", _SWEEP))}
+    if isinstance(out["sweep"].get("angles_deg"), str):
+        try:
+            _validate.angles_deg("sweep.angles_deg", out["sweep"]["angles_deg"])
+        except InputError as exc:
+            ck.add("sweep.angles_deg", str(exc).removeprefix("sweep.angles_deg "))
+    if "wear" in raw:
+        cam = mats.get("cam")
+        wear_table(ck, raw["wear"], cam.hardness if cam is not None else None)
+    return out
+
+
+def wear_table(ck: _Checker, raw, hardness) -> dict:
+    """The [wear] table checked into ``ck`` (keys, units, srr in (-2, 2), K or k, K needs the
+    cam ``hardness`` (Pa, None: not given)); SI values. Used by :func:`load_scene` and
+    :func:`femcam.wear.options.wear_options`."""
+    out = ck.table(raw, "wear", _WEAR)
+    if not isinstance(raw, dict):
+        return out
+    if "srr" in out and not (-2.0 < out["srr"] < 2.0):
+        ck.add("wear.srr", f"= {raw['srr']} (dimensionless): must be in (-2, 2)")
+    if "K" in raw and "k_mm3_per_N_m" in raw:
+        ck.add("wear", "give either K (dimensionless, with the cam hardness_MPa) or k_mm3_per_N_m "
+               "(mm^3/(N m)), not both")
+    elif "K" in out and not hardness:
+        ck.add("wear.K", f"= {raw['K']} (dimensionless): needs the cam hardness "
+               "[materials.cam] hardness_MPa (MPa), k = K/H; or give k_mm3_per_N_m (mm^3/(N m))")
+    return out
 
 
 def _read_toml(path: Path) -> dict:

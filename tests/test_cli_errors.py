@@ -167,7 +167,8 @@ def test_many_scene_problems_are_capped(tmp_path):
     src = STUDY_PATH.read_text()
     bad = tmp_path / "bad.toml"
     # 30 misspelt keys in [follower]
-    bad.write_text(src.replace("[follower]\n", "[follower]\n" + "".join(f"bogus{k} = 1\n" for k in range(30))))
+    bogus = "".join(f"bogus{k} = 1\n" for k in range(30))
+    bad.write_text(src.replace("[follower]\n", "[follower]\n" + bogus))
     with pytest.raises(SceneError) as ei:
         load_scene(bad)
     lines = str(ei.value).splitlines()

@@ -76,7 +76,7 @@ def main(argv=None) -> int:
         ``femcam <command>: error: ...`` naming the path, never a traceback; 2 usage.
     """
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_args(_join_negative(sys.argv[1:] if argv is None else list(argv)))
     if not getattr(args, "func", None):
         parser.print_help()
         return 2
@@ -88,6 +88,26 @@ def main(argv=None) -> int:
     except OSError as exc:  # the disk, not femcam: say which file and why
         print(f"femcam {args.command}: error: {os_error_line(exc)}", file=sys.stderr)
         return 1
+
+
+#: flags whose value is a range START:STOP:STEP that may start with a minus sign
+RANGE_FLAGS = ("--angles-deg", "--rpm-sweep")
+
+
+def _join_negative(argv: list) -> list:
+    """``--angles-deg -360:0:30`` -> ``--angles-deg=-360:0:30``: argparse reads a value that
+    starts with ``-`` (and is not a plain number) as an option; the ``=`` form it takes."""
+    out, i = [], 0
+    while i < len(argv):
+        a = argv[i]
+        if a in RANGE_FLAGS and i + 1 < len(argv) and str(argv[i + 1]).startswith("-") \
+                and ":" in str(argv[i + 1]):
+            out.append(f"{a}={argv[i + 1]}")
+            i += 2
+            continue
+        out.append(a)
+        i += 1
+    return out
 
 
 #: most problem lines one error message shows (a scene with 1800 bad segments lists 1800)

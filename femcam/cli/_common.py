@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import errno
 import os
+import re
 from pathlib import Path
 
 from .. import _validate
@@ -50,3 +51,12 @@ def os_error_line(exc: OSError) -> str:
         why += " (free some space, then rerun; a sweep can continue with --resume)"
     names = [repr(str(f)) for f in (exc.filename, exc.filename2) if f is not None]
     return f"{why}: {' -> '.join(names)}" if names else why
+
+
+def plain(doc: str, paragraphs: int = 1) -> str:
+    """The first ``paragraphs`` of a module docstring for ``--help``, without RST markup
+    (````x```` -> ``x``, ``:func:`~a.b``` -> ``b``)."""
+    text = "\n\n".join(doc.strip().split("\n\n")[:paragraphs])
+    text = re.sub(r":[a-z]+:`~?([^`]+)`", lambda m: m.group(1).split(".")[-1]
+                  if m.group(0).count("~") else m.group(1), text)
+    return text.replace("``", "")

@@ -19,7 +19,7 @@ import numpy as np
 from .. import __version__, _validate
 from ..scene import load_scene
 from ..viz.analytic import plot_all
-from ._common import out_dir
+from ._common import out_dir, plain
 
 #: CSV columns: (name with unit, SceneState attribute, factor from SI)
 COLUMNS = (
@@ -42,7 +42,7 @@ def register(subparsers) -> None:
     """Add the ``run`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
     p = subparsers.add_parser(
         "run", help="kinematics, profile and load tables of a scene, with PNG plots",
-        description=__doc__.split("\n\n")[0])
+        description=plain(__doc__))
     p.add_argument("scene", metavar="SCENE.toml", help="scene file (see examples/)")
     p.add_argument("--out", default=None, metavar="DIR",
                    help="output directory (default: femcam-out/<scene name>)")
