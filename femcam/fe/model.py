@@ -206,6 +206,15 @@ def _hertz(F, length, rho, Rr, cam, roller, plane):
     return a, float(peak_pressure(w, a))
 
 
+def _radius(name: str, value) -> float:
+    """A signed radius of curvature (m): a real number or +-inf (flat), not 0 or nan."""
+    if isinstance(value, bool) or not isinstance(value, int | float | np.integer | np.floating):
+        raise chk.fail(name, value, "m", "must be a number (inf for a flat cam)")
+    if math.isnan(value) or value == 0:
+        raise chk.fail(name, value, "m", "must be nonzero (inf for a flat cam)")
+    return float(value)
+
+
 @dataclass(frozen=True, eq=False)
 class ContactModel:
     """Factorised two-body model; see the module docstring. Build with :meth:`build`."""
@@ -236,6 +245,13 @@ class ContactModel:
               a_ref: float, mesh: MeshOptions | None = None, solver: SolverOptions | None = None,
               plane: str = "strain", element: str = "P2") -> ContactModel:
         """Mesh, assemble, factorise and condense (see module docstring)."""
+        rho_ref = _radius("rho_ref", rho_ref)
+        for name, v, kind, what in (("cam", cam, Material, "Material"),
+                                    ("roller", roller, Material, "Material"),
+                                    ("mesh", mesh, MeshOptions | None, "MeshOptions or None"),
+                                    ("solver", solver, SolverOptions | None, "SolverOptions or None")):
+            if not isinstance(v, kind):
+                raise chk.fail(name, v, "", f"must be a {what}")
         Rr = chk.positive("Rr", Rr, "m")
         length = chk.positive("length", length, "m")
         a_ref = chk.positive("a_ref", a_ref, "m")
@@ -312,7 +328,7 @@ class ContactModel:
         always raises it when the loaded zone reaches the end of the meshed fine zone.
         """
         F = chk.nonnegative("F", F, "N")
-        rho = float(rho)
+        rho = _radius("rho", rho)
         if math.isnan(rho) or rho == 0.0:
             raise chk.fail("rho", rho, "m", "must be nonzero (inf for a flat cam)")
         mu = chk.nonnegative("mu", mu, "")
