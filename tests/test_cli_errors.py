@@ -71,6 +71,14 @@ def test_out_is_a_file_or_under_one(cmd, under, tmp_path, capsys):
     assert f"--out = '{out}': {what}, not a directory" in _one_line(capsys, cmd)
 
 
+def test_wear_seed000_csv_under_a_file(tmp_path, capsys):
+    f = tmp_path / "afile"
+    f.write_text("x")
+    assert main(["wear", "seed000", "--csv", str(f / "t.csv")]) == 1
+    err = _one_line(capsys, "wear")
+    assert f"--csv (its directory) = '{f}': is an existing file, not a directory" in err
+
+
 def test_unwritable_directory_is_refused(tmp_path, capsys, monkeypatch):
     # the tests run as root, for whom chmod 0o500 does not stop writes: os.access is what the
     # check asks, so it is made to answer "not writable" for the output directory

@@ -130,7 +130,6 @@ def _check_args(args) -> None:
     if args.vtk_every < 0:
         raise _validate.fail("--vtk-every", args.vtk_every, "angles", "must be an integer >= 0 (0 = no VTK)")
     args.workers = _validate.workers("--workers", args.workers)
-    out_dir(args.out, create=False)
 
 
 def _command_line(args) -> str:

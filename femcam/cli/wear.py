@@ -92,7 +92,7 @@ def _seed000(args) -> int:
     if args.csv:
         header, rows = table_rows_for_csv(t)
         path = Path(args.csv)
-        path.parent.mkdir(parents=True, exist_ok=True)
+        out_dir(path.parent, "--csv (its directory)")
         with path.open("w", newline="") as fh:
             fh.write(f"# femcam wear seed000; command: {shlex.join(sys.argv)}\n")
             w = csv.writer(fh)
