@@ -183,3 +183,40 @@ def test_many_scene_problems_are_capped(tmp_path):
     assert lines[0].endswith(": 30 problems")
     assert len(lines) == 1 + MAX_PROBLEMS + 1 and lines[-1].strip() == "... and 10 more"
     assert UndercutError  # the undercut message of the test above is an UndercutError
+
+
+def _parsers():
+    """Every (sub)parser of the femcam CLI, by its prog name."""
+    import argparse
+
+    from femcam.cli import build_parser
+    todo, seen = [build_parser()], {}
+    while todo:
+        p = todo.pop()
+        seen[p.prog] = p
+        for a in p._actions:
+            if isinstance(a, argparse._SubParsersAction):
+                todo += list(a.choices.values())
+    return seen
+
+
+def test_help_is_plain_text_and_complete():
+    import re
+    parsers = _parsers()
+    assert {"femcam wear map", "femcam wear seed000", "femcam synth", "femcam sweep"} <= set(parsers)
+    for prog, p in parsers.items():
+        text = p.format_help()
+        assert "``" not in text and not re.search(r":[a-z]+:`", text), prog  # no RST markup
+        if prog != "femcam":
+            assert p.description, f"{prog} has no description"
+        for a in p._actions:
+            if a.help is not None and a.help != "==SUPPRESS==" and a.dest not in ("help", "command"):
+                assert a.help.strip(), f"{prog} {a.option_strings or a.dest}"
+            elif a.help is None and a.dest not in ("help", "command", "wear_command"):
+                raise AssertionError(f"{prog}: {a.option_strings or a.dest} has no help text")
+
+
+def test_synth_help_shows_defaults_and_law_names():
+    text = _parsers()["femcam synth"].format_help()
+    for s in ("default 180", "default 1e6", "default 1)", "default 50", "poly345", "bezier7"):
+        assert s in " ".join(text.split()), s

@@ -28,11 +28,12 @@ from ._common import out_dir, plain
 def register(subparsers) -> None:
     p = subparsers.add_parser("dynamics", help="follower-train dynamics: contact force, jump speed",
                               description=plain(__doc__))
-    p.add_argument("scene", help="scene TOML with [dynamics] model = one_dof or two_dof")
-    p.add_argument("--out", required=True, help="output directory")
+    p.add_argument("scene", metavar="SCENE.toml", help="scene with [dynamics] model = one_dof or two_dof")
+    p.add_argument("--out", required=True, metavar="DIR", help="output directory")
     p.add_argument("--rpm-sweep", metavar="START:STOP:STEP", default=None,
                    help="also sweep the cam speed (rpm, stop inclusive) and find the jump speed")
-    p.add_argument("--workers", type=int, default=1, help="processes for the rpm sweep (default 1)")
+    p.add_argument("--workers", type=int, default=1, metavar="N",
+                   help="processes for the rpm sweep (default 1)")
     p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     p.set_defaults(func=run)
 

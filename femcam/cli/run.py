@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import __version__, _validate
+from ..kinematics import LAW_NAMES
 from ..scene import load_scene
 from ..viz.analytic import plot_all
 from ._common import out_dir, plain
@@ -51,7 +52,8 @@ def register(subparsers) -> None:
     p.add_argument("--print-every-deg", type=float, default=10.0, metavar="STEP",
                    help="angle step of the printed table in degrees (default 10); the CSV has all")
     p.add_argument("--law", default=None, metavar="NAME",
-                   help="override the rise/fall motion law of the scene (e.g. bezier7)")
+                   help="override the rise/fall motion law of the scene: "
+                        + ", ".join(n for n in LAW_NAMES if n not in ("bezier", "polynomial")))
     p.add_argument("--phi-limit-deg", type=float, default=30.0, metavar="DEG",
                    help="pressure-angle limit drawn and checked in the summary (default 30)")
     p.add_argument("--allow-undercut", action="store_true",

@@ -18,6 +18,7 @@ import shlex
 import sys
 
 from .. import _validate
+from ..kinematics import LAW_NAMES
 from ..scene import load_scene
 from ..sweep import parse_angles_deg, sweep
 from ..sweep.options import TOLERANCE_FLOOR
@@ -64,7 +65,8 @@ def register(subparsers) -> None:
                    help="fe: FE contact solve; hertz: analytic only (default: [sweep] method, "
                         "else fe)")
     p.add_argument("--law", default=None, metavar="NAME",
-                   help="override the rise/fall motion law of the scene (e.g. bezier7)")
+                   help="override the rise/fall motion law of the scene: "
+                        + ", ".join(n for n in LAW_NAMES if n not in ("bezier", "polynomial")))
     p.add_argument("--plots", dest="plots", action="store_true", default=None,
                    help="write the PNG plots (default: [sweep] plots, else yes)")
     p.add_argument("--no-plots", dest="plots", action="store_false", help="skip the PNG plots")
