@@ -305,11 +305,32 @@ class ContactModel:
 
     # ------------------------------------------------------------------ solve
     def solve(self, *, F: float, rho: float, mu: float = 0.0, sliding: int = 1,
-              check: bool = True) -> ContactResult:
-        """Solve one load case: F (N over ``length``), rho (m), mu (-), sliding (+1 or -1).
+              check: bool = True, gap: np.ndarray | None = None) -> ContactResult:
+        """Solve one load case with full sliding friction (or none).
 
-        ``check=True`` raises :class:`PhysicsError` when :meth:`covers` is False; the solve
-        always raises it when the loaded zone reaches the end of the meshed fine zone.
+        Parameters
+        ----------
+        F : float
+            Contact force over the face width ``length`` (N).
+        rho : float
+            Cam radius of curvature at the contact (m; < 0 concave, inf flat). Sets the
+            osculating-arc gap when ``gap`` is None, and the Hertz estimate and coverage check.
+        mu : float
+            Coulomb friction coefficient (-); the traction is ``sliding * mu * p`` on the cam.
+        sliding : {+1, -1}
+            Direction of the friction traction on the cam along x.
+        check : bool
+            Raise :class:`PhysicsError` when :meth:`covers` is False.
+        gap : ndarray, optional
+            Initial gap (m) at the contact vertices ``self.x`` (e.g. the exact gap of
+            :func:`femcam.fe.gap.exact_gap`); default the two osculating arcs.
+
+        Returns
+        -------
+        ContactResult
+            Pressures (Pa), half-width (m), stresses (Pa) and solver diagnostics. The solve
+            always raises :class:`PhysicsError` when the loaded zone reaches the end of the
+            meshed fine zone, and :class:`ConvergenceError` when the active set does not settle.
         """
         F = chk.nonnegative("F", F, "N")
         rho = float(rho)
@@ -330,11 +351,11 @@ class ContactModel:
         aH, p0H = self.hertz(F, rho)
         if F == 0.0:
             p = np.zeros(nc)
-            h0 = surface_height(self.x, self.Rr) + surface_height(self.x, rho)
+            h0 = self._gap(rho, gap)
             sol_p, g, delta, active, it, res, hist, conv = p, h0, 0.0, np.zeros(nc, bool), 0, 0.0, (), True
         else:
             A = self.An + (sliding * mu) * self.At
-            h0 = surface_height(self.x, self.Rr) + surface_height(self.x, rho)
+            h0 = self._gap(rho, gap)
             a0 = aH if math.isfinite(aH) else self.a_ref
             active0 = np.abs(self.x) < a0
             sol = solve_lcp(A, h0, self.w, F / self.length, active0=active0,
@@ -379,6 +400,15 @@ class ContactModel:
             iterations=it, residual=res, history=hist, active=active, converged=conv,
             timings=timings, n_dofs=self.n_dofs, hertz_a=aH, hertz_p0=p0H, outside_hertz=outside,
             model=self)
+
+    def _gap(self, rho: float, gap) -> np.ndarray:
+        """Initial gap (m) at ``self.x``: ``gap`` if given (checked), else the osculating arcs."""
+        if gap is None:
+            return surface_height(self.x, self.Rr) + surface_height(self.x, rho)
+        g = chk.finite_array("gap", gap, "m")
+        if g.shape != self.x.shape:
+            raise chk.fail("gap", f"shape {g.shape}", "m", f"must have the shape {self.x.shape} of model.x")
+        return g
 
     def _sy(self, name, sx, sz):
         nu = (self.cam if name == "cam" else self.roller).nu
