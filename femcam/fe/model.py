@@ -27,6 +27,7 @@ from ..mesh import ContactMesh, MeshOptions, build_contact_mesh, surface_height
 from .contact import load_matrix, solve_lcp, trapezoid_weights
 from .elasticity import ELEMENTS, ORDERINGS, Body, assemble_body
 from .recovery import build_eval_set, derived, fit_half_width
+from .traction import solve_partial_slip
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -164,6 +165,14 @@ class ContactResult:
     hertz_p0: float
     outside_hertz: bool
     model: ContactModel = field(repr=False)
+    q: np.ndarray | None = None
+    Q: float = 0.0
+    slip_state: str = "none"
+    stick: np.ndarray | None = None
+    stick_width: float = 0.0
+    creep: float = math.nan
+    shift: float = math.nan
+    message: str = ""
 
     # derived from max_by_body / surface_by_body (not stored twice)
     von_mises_max = _over_bodies("von_mises")
@@ -193,6 +202,16 @@ class ContactResult:
         from .export import write_vtu
 
         return write_vtu(self, path)
+
+
+def _traction_fields(trac, Q, q, w, x, length, mu) -> dict:
+    """ContactResult traction fields from a TractionSolution (or the friction-free/sliding q)."""
+    if trac is None:
+        state = "sliding" if np.any(q) else "none"
+        return {"Q": float(w @ q) * length, "slip_state": state, "stick": np.zeros(x.size, bool),
+                "stick_width": 0.0, "creep": math.nan, "shift": math.nan}
+    return {"Q": float(w @ trac.q) * length, "slip_state": trac.slip_state, "stick": trac.stick,
+            "stick_width": trac.stick_width, "creep": trac.creep, "shift": trac.shift}
 
 
 def _hertz(F, length, rho, Rr, cam, roller, plane):
@@ -230,6 +249,9 @@ class ContactModel:
     options: SolverOptions
     timings: dict
     n_dofs: int
+    #: tangential compliances (m/Pa): u_cam,x - u_roller,x per unit tangential / normal hat
+    Ctt: np.ndarray | None = None
+    Ctn: np.ndarray | None = None
 
     @classmethod
     def build(cls, *, Rr: float, rho_ref: float, cam: Material, roller: Material, length: float,
@@ -246,6 +268,7 @@ class ContactModel:
         cm = build_contact_mesh(Rr=Rr, rho=rho_ref, a_ref=a_ref, options=mesh)
         t_mesh = time.perf_counter() - t0
         bodies, Bn, Bt, An, At, evals = {}, {}, {}, None, None, {}
+        Ctt, Ctn = 0.0, 0.0  # tangential condensed compliances (femcam.fe.traction)
         t_cond = 0.0
         x = cm.cam.contact_x
         for name, geo, mat in (("cam", cm.cam, cam), ("roller", cm.roller, roller)):
@@ -265,6 +288,10 @@ class ContactModel:
             sg = 1.0 if name == "roller" else -1.0
             An = sg * Un[ydof] if An is None else An + sg * Un[ydof]
             At = sg * Ut[ydof] if At is None else At + sg * Ut[ydof]
+            # relative tangential displacement u_cam,x - u_roller,x (femcam.fe.traction)
+            xdof = b.basis.nodal_dofs[0, geo.contact]
+            Ctt = Ctt - sg * Ut[xdof]
+            Ctn = Ctn - sg * Un[xdof]
             evals[name] = build_eval_set(b, Un, Ut, float(x[-1]), solver.eval_depth * a_ref)
             t_cond += time.perf_counter() - t1
         timings = {"mesh": t_mesh,
@@ -275,7 +302,7 @@ class ContactModel:
                    plane=plane, element=element, mesh=cm, bodies=bodies, x=x,
                    w=trapezoid_weights(x), An=An, At=At, Bn=Bn, Bt=Bt, evals=evals,
                    options=solver, timings=timings,
-                   n_dofs=sum(b.n_dofs for b in bodies.values()))
+                   n_dofs=sum(b.n_dofs for b in bodies.values()), Ctt=Ctt, Ctn=Ctn)
 
     # ------------------------------------------------------------------ validity
     def hertz(self, F: float, rho: float):
@@ -305,7 +332,8 @@ class ContactModel:
 
     # ------------------------------------------------------------------ solve
     def solve(self, *, F: float, rho: float, mu: float = 0.0, sliding: int = 1,
-              check: bool = True, gap: np.ndarray | None = None) -> ContactResult:
+              check: bool = True, gap: np.ndarray | None = None, Q: float | None = None,
+              rolling: int = 0) -> ContactResult:
         """Solve one load case with full sliding friction (or none).
 
         Parameters
@@ -324,6 +352,14 @@ class ContactModel:
         gap : ndarray, optional
             Initial gap (m) at the contact vertices ``self.x`` (e.g. the exact gap of
             :func:`femcam.fe.gap.exact_gap`); default the two osculating arcs.
+        Q : float, optional
+            Tangential force on the cam in +x over ``length`` (N). None (default): the traction
+            is ``sliding * mu * p`` (full sliding). Given: Coulomb partial slip
+            (:mod:`femcam.fe.traction`); ``|Q| >= mu F`` is full sliding in the direction of
+            ``Q`` (``slip_state = "sliding"``), never a failed solve.
+        rolling : {0, +1, -1}
+            With ``Q``: 0 is a Cattaneo-Mindlin shift (no rolling), +-1 steady rolling with the
+            surface material flowing through the contact in +-x (Carter).
 
         Returns
         -------
@@ -349,23 +385,22 @@ class ContactModel:
         t0 = time.perf_counter()
         nc = self.x.size
         aH, p0H = self.hertz(F, rho)
+        if Q is not None:
+            Q = chk.number("Q", Q, "N")
+        if rolling not in (0, 1, -1):
+            raise chk.fail("rolling", rolling, "", "must be 0 (no rolling), +1 or -1")
         if F == 0.0:
             p = np.zeros(nc)
             h0 = self._gap(rho, gap)
             sol_p, g, delta, active, it, res, hist, conv = p, h0, 0.0, np.zeros(nc, bool), 0, 0.0, (), True
+            q, trac, msg = p, None, ""
         else:
-            A = self.An + (sliding * mu) * self.At
-            h0 = self._gap(rho, gap)
-            a0 = aH if math.isfinite(aH) else self.a_ref
-            active0 = np.abs(self.x) < a0
-            sol = solve_lcp(A, h0, self.w, F / self.length, active0=active0,
-                            max_iter=self.options.max_iter, tol=self.options.tol)
+            sol, q, trac = self._contact(F, rho, mu, sliding, self._gap(rho, gap), Q, rolling, aH)
             sol_p, g, delta, active = sol.p, sol.g, sol.delta, sol.active
-            it, res, hist, conv = sol.iterations, sol.residual, sol.history, sol.converged
-            if active[0] or active[-1]:
-                raise PhysicsError(
-                    f"the loaded zone reaches the end of the meshed fine zone |x| <= {self.x[-1]:.4g} m "
-                    f"(F = {F:g} N, rho = {rho:g} m); rebuild with a larger a_ref")
+            it, res, hist, msg = sol.iterations, sol.residual, sol.history, sol.message
+            conv = sol.converged and (trac is None or trac.converged)
+            if trac is not None and trac.message:
+                msg = f"{msg}; {trac.message}" if msg else trac.message
         t1 = time.perf_counter()
         a, x0, p0 = fit_half_width(self.x, sol_p, self.options.fit_threshold)
         force = float(self.w @ sol_p) * self.length
@@ -374,8 +409,8 @@ class ContactModel:
             # einsum, not `@`: OpenBLAS's threaded gemv busy-waits on a loaded 2-core machine
             # (Sn and St of one body at a/20 with two busy processes: 43 ms vs 6 ms einsum)
             s = np.einsum("cij,j->ci", ev.Sn, sol_p)
-            if mu > 0:
-                s += (sliding * mu) * np.einsum("cij,j->ci", ev.St, sol_p)
+            if np.any(q):
+                s += np.einsum("cij,j->ci", ev.St, q)
             sx, sz, txz = s
             sy = self._sy(name, sx, sz)
             tau1, vm = derived(sx, sz, txz, sy)
@@ -399,7 +434,37 @@ class ContactModel:
             max_by_body=maxima, surface_by_body=surfaces,
             iterations=it, residual=res, history=hist, active=active, converged=conv,
             timings=timings, n_dofs=self.n_dofs, hertz_a=aH, hertz_p0=p0H, outside_hertz=outside,
-            model=self)
+            model=self, q=q, message=msg, **_traction_fields(trac, Q, q, self.w, self.x, self.length, mu))
+
+    def _contact(self, F, rho, mu, sliding, h0, Q, rolling, aH):
+        """Normal LCP, and with ``Q`` the partial-slip traction (fixed point on the normal-
+        tangential coupling ``At q``; one pass for similar materials). Returns (LCP solution,
+        q (Pa, on the cam in +x), TractionSolution or None)."""
+        a0 = aH if math.isfinite(aH) else self.a_ref
+        W = F / self.length
+        kw = dict(active0=np.abs(self.x) < a0, max_iter=self.options.max_iter, tol=self.options.tol)
+        trac = None
+        if Q is None or abs(Q) >= mu * F:  # friction-free, full sliding at mu, or Q it cannot carry
+            s = sliding if Q is None else (1 if Q >= 0 else -1)
+            sol = solve_lcp(self.An + (s * mu) * self.At, h0, self.w, W, **kw)
+            q = (s * mu) * sol.p
+            if Q is not None:
+                trac = solve_partial_slip(self.Ctt, self.x, self.w, sol.p, Q / self.length, mu)
+        else:
+            q = np.zeros_like(self.x)
+            for _ in range(20):
+                sol = solve_lcp(self.An, h0 + self.At @ q, self.w, W, **kw)
+                trac = solve_partial_slip(self.Ctt, self.x, self.w, sol.p, Q / self.length, mu,
+                                          rolling=rolling, u0=self.Ctn @ sol.p)
+                dq = float(np.max(np.abs(trac.q - q)))
+                q = trac.q
+                if dq <= 1e-9 * max(float(np.max(np.abs(q))), 1e-300):
+                    break
+        if sol.active[0] or sol.active[-1]:
+            raise PhysicsError(
+                f"the loaded zone reaches the end of the meshed fine zone |x| <= {self.x[-1]:.4g} m "
+                f"(F = {F:g} N, rho = {rho:g} m); rebuild with a larger a_ref")
+        return sol, q, trac
 
     def _gap(self, rho: float, gap) -> np.ndarray:
         """Initial gap (m) at ``self.x``: ``gap`` if given (checked), else the osculating arcs."""
