@@ -368,13 +368,7 @@ class ContactModel:
             always raises :class:`PhysicsError` when the loaded zone reaches the end of the
             meshed fine zone, and :class:`ConvergenceError` when the active set does not settle.
         """
-        F = chk.nonnegative("F", F, "N")
-        rho = float(rho)
-        if math.isnan(rho) or rho == 0.0:
-            raise chk.fail("rho", rho, "m", "must be nonzero (inf for a flat cam)")
-        mu = chk.nonnegative("mu", mu, "")
-        if sliding not in (1, -1):
-            raise chk.fail("sliding", sliding, "", "must be +1 or -1")
+        F, rho, mu, Q = self._check_inputs(F, rho, mu, sliding, Q, rolling)
         if math.isfinite(rho) and rho < 0 and -rho <= self.Rr:
             raise PhysicsError(f"rho = {rho:g} m: a concave cam with |rho| <= Rr = {self.Rr:g} m cannot "
                                "hold the roller (conformal or interfering contact)")
@@ -385,10 +379,6 @@ class ContactModel:
         t0 = time.perf_counter()
         nc = self.x.size
         aH, p0H = self.hertz(F, rho)
-        if Q is not None:
-            Q = chk.number("Q", Q, "N")
-        if rolling not in (0, 1, -1):
-            raise chk.fail("rolling", rolling, "", "must be 0 (no rolling), +1 or -1")
         if F == 0.0:
             p = np.zeros(nc)
             h0 = self._gap(rho, gap)
@@ -465,6 +455,22 @@ class ContactModel:
                 f"the loaded zone reaches the end of the meshed fine zone |x| <= {self.x[-1]:.4g} m "
                 f"(F = {F:g} N, rho = {rho:g} m); rebuild with a larger a_ref")
         return sol, q, trac
+
+    @staticmethod
+    def _check_inputs(F, rho, mu, sliding, Q, rolling):
+        """Checked (F, rho, mu, Q) of :meth:`solve`."""
+        F = chk.nonnegative("F", F, "N")
+        rho = float(rho)
+        if math.isnan(rho) or rho == 0.0:
+            raise chk.fail("rho", rho, "m", "must be nonzero (inf for a flat cam)")
+        mu = chk.nonnegative("mu", mu, "")
+        if sliding not in (1, -1):
+            raise chk.fail("sliding", sliding, "", "must be +1 or -1")
+        if Q is not None:
+            Q = chk.number("Q", Q, "N")
+        if rolling not in (0, 1, -1):
+            raise chk.fail("rolling", rolling, "", "must be 0 (no rolling), +1 or -1")
+        return F, rho, mu, Q
 
     def _gap(self, rho: float, gap) -> np.ndarray:
         """Initial gap (m) at ``self.x``: ``gap`` if given (checked), else the osculating arcs."""
