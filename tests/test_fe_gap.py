@@ -227,3 +227,38 @@ def test_bad_gap_input():
         from femcam.fe.gap import LocalSurface, gap_from_surface
         gap_from_surface(LocalSurface(0.0, m_x, 0 * m_x, 1.0, 1.0, 0.0), m_x, "parabolic")
     assert Material  # imported for the module's materials table
+
+
+@pytest.mark.slow
+def test_large_a_over_R_normal_vs_small_slope_gap():
+    """Large a/R: a nylon roller on steel (a/R = 0.05) and a heavy steel case (a/R = 0.1), on the
+    base circle (rho = 20 mm, Rr = 10 mm, R = 1/(1/Rr + 1/rho)). The exact gap along the true
+    normals vs the small-slope (vertical) gap of the same shapes changes p0 by a constant times
+    (a/R)^2. Bound written here: expanding both gaps to 4th order in x, their difference is
+    -(x^4/R_r^3) [ (1 + R_r/rho)^2 + 1 - (R_r/rho)^2 ] / 8 = -0.375 x^4 / R_r^3, i.e. -0.5 (x/R_r)^2
+    of the gap, so |dp0/p0| <= 0.5 * 0.5 (a/R_r)^2 = 0.111 (a/R)^2 (p0 ~ sqrt of the gap scale).
+    Measured: -0.061, -0.060, -0.059 (a/R)^2 at a/h = 10, 14, 20 for both cases; asserted: the
+    bound, mesh convergence (ratio change 10 -> 14 below 5 %) and the (a/R)^2 scaling (both
+    cases within 5 %)."""
+    sc = load_scene(EX / "shm_dwell_junction.toml")
+    nylon = Material(E=3e9, nu=0.4, name="nylon")
+    th = math.radians(45.0)
+    R = 1 / (1 / 0.01 + 1 / 0.02)
+    ratios = {}
+    for name, roller, aR in (("nylon", nylon, 0.05), ("steel", STEEL, 0.1)):
+        Es = effective_modulus(STEEL, roller, "strain")
+        a = aR * R
+        F = math.pi * Es * a * a / (4 * R) * 0.01
+        for n in (10, 14):
+            m = ContactModel.build(Rr=0.01, rho_ref=0.02, cam=STEEL, roller=roller, length=0.01, a_ref=a,
+                                   mesh=MeshOptions(a_over_h=n), solver=SolverOptions(eval_depth=0.0))
+            surf = local_surface(sc.program, sc.follower, th, float(m.x[-1]))
+            from femcam.fe.gap import gap_from_surface
+            rn = m.solve(F=F, rho=0.02, gap=gap_from_surface(surf, m.x, "normal"), check=False)
+            rv = m.solve(F=F, rho=0.02, gap=gap_from_surface(surf, m.x, "vertical"), check=False)
+            ratios[name, n] = (rn.p0_nodal / rv.p0_nodal - 1) / aR**2
+    for (name, n), q in ratios.items():
+        assert abs(q) <= 0.111, f"{name} a/h = {n}: |dp0/p0| / (a/R)^2 = {abs(q):.3f} above the bound"
+    for name in ("nylon", "steel"):
+        assert ratios[name, 14] == pytest.approx(ratios[name, 10], rel=0.05), "mesh-converged"
+    assert ratios["nylon", 14] == pytest.approx(ratios["steel", 14], rel=0.05), "scales as (a/R)^2"

@@ -120,22 +120,69 @@ class SurfaceStress:
 class ContactResult:
     """Solution of one load case (per the model's face width ``length``).
 
-    a, x0: fitted half-width and centre (m); p0: fitted peak (Pa); p0_nodal: max nodal pressure;
-    x, p: contact vertex abscissae (m) and pressures (Pa); force: integral of p times length (N),
-    force_error: relative error against F; delta: rigid approach (m); gap (m) at the vertices;
-    von_mises_max, tau1_max, txz_abs_max: StressMax (largest value) over both bodies;
-    sx_max, sx_min, sz_max, sz_min, sy_max, sy_min: StressMax of the signed components (``_max``
-    the largest, e.g. the trailing-edge tension ``sx_max`` ~ 2 mu p0 at x = -a on the cam for
-    ``sliding = +1``; ``_min`` the most compressive, e.g. ``sz_min`` ~ -p0 at the surface);
-    max_by_body: ``{"cam"|"roller": {key: StressMax}}`` with the keys of :data:`MAXIMA_KEYS`
-    (the nine over both bodies above are read-only properties derived from it);
-    all over the stress window ``|x| <= fine_half_width * a_ref``, ``z <= eval_depth * a_ref``;
-    x_surface, sx, sz, txz: cam surface stresses (Johnson frame, Pa; properties, the arrays of
-    ``surface_by_body["cam"]``); surface_by_body:
-    ``{"cam"|"roller": SurfaceStress}`` (the roller's in its own Johnson frame: its friction
-    traction acts in ``-sliding x``, so its tension peak is at x = +a); iterations, residual,
-    history, active, converged; timings (s) per phase; n_dofs; hertz_a, hertz_p0 (if Hertz
-    applies) and outside_hertz (a / min radius > 0.1).
+    Attributes
+    ----------
+    F : float
+        Contact force over ``length`` (N).
+    rho : float
+        Cam radius of curvature passed to the solve (m; inf flat, < 0 concave).
+    mu : float
+        Friction coefficient (-).
+    sliding : int
+        +1/-1, direction of the full-sliding traction on the cam (used when ``Q`` is None).
+    a, x0 : float
+        Fitted Hertz half-width and centre (m) (a Hertz-ellipse fit: near a curvature jump the
+        pressure is not an ellipse, use ``p0_nodal``).
+    p0 : float
+        Fitted peak pressure (Pa).
+    p0_nodal : float
+        Largest nodal pressure (Pa).
+    x, p : ndarray
+        Contact vertex abscissae (m) and pressures (Pa).
+    gap : ndarray
+        Gap after loading at the vertices (m).
+    delta : float
+        Rigid approach (m).
+    force, force_error : float
+        Integral of p times length (N) and its relative error against F (-).
+    max_by_body : dict
+        ``{"cam"|"roller": {key: StressMax}}`` with the keys of :data:`MAXIMA_KEYS` over the
+        stress window ``|x| <= fine_half_width * a_ref``, ``z <= eval_depth * a_ref``; the nine
+        over both bodies (``von_mises_max``, ``tau1_max``, ``txz_abs_max``, ``sx_max``,
+        ``sx_min``, ``sz_max``, ``sz_min``, ``sy_max``, ``sy_min``; Pa) are properties derived
+        from it (e.g. the trailing-edge tension ``sx_max`` ~ 2 mu p0 at x = -a on the cam for
+        ``sliding = +1``).
+    surface_by_body : dict
+        ``{"cam"|"roller": SurfaceStress}`` (Pa, each in its own Johnson frame); ``x_surface``,
+        ``sx``, ``sz``, ``txz`` are the cam's (properties).
+    iterations, residual, history, active : int, float, tuple, ndarray
+        Active-set diagnostics of the normal problem (residual dimensionless).
+    converged : bool
+        True when the normal (and tangential) active sets settled within tolerance; False with
+        the reason in ``message``.
+    timings : dict
+        Seconds per phase (mesh, assembly, factorisation, condensation, contact, recovery).
+    n_dofs : int
+        Total degrees of freedom.
+    hertz_a, hertz_p0 : float
+        Hertz half-width (m) and peak (Pa) of the osculating arcs (nan if Hertz does not apply).
+    outside_hertz : bool
+        Hertz a / min radius > 0.1.
+    q : ndarray
+        Tangential traction at the vertices on the cam in +x (Pa): ``sliding mu p`` for full
+        sliding, the partial-slip solution when ``Q`` was given.
+    Q : float
+        Tangential force carried, ``length * w . q`` (N, on the cam in +x).
+    slip_state : str
+        ``"none"``, ``"stick"``, ``"partial slip"`` or ``"sliding"``.
+    stick : ndarray of bool
+        Stick nodes (partial slip).
+    stick_width : float
+        Extent of the stick zone (m).
+    creep, shift : float
+        Carter creepage (-) when rolling, Cattaneo rigid shift (m) without (nan otherwise).
+    message : str
+        Why the solve did not converge (empty when it did).
     """
 
     F: float
@@ -442,7 +489,10 @@ class ContactModel:
                 trac = solve_partial_slip(self.Ctt, self.x, self.w, sol.p, Q / self.length, mu)
         else:
             q = np.zeros_like(self.x)
-            for _ in range(20):
+            # similar materials (Dundurs beta = 0): normal and tangential problems decouple
+            # (Johnson 1985 §7.1), one pass; otherwise a fixed point on the coupling At q
+            similar = (self.cam.E, self.cam.nu) == (self.roller.E, self.roller.nu)
+            for _ in range(1 if similar else 20):
                 sol = solve_lcp(self.An, h0 + self.At @ q, self.w, W, **kw)
                 trac = solve_partial_slip(self.Ctt, self.x, self.w, sol.p, Q / self.length, mu,
                                           rolling=rolling, u0=self.Ctn @ sol.p)
