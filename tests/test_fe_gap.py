@@ -262,3 +262,22 @@ def test_large_a_over_R_normal_vs_small_slope_gap():
     for name in ("nylon", "steel"):
         assert ratios[name, 14] == pytest.approx(ratios[name, 10], rel=0.05), "mesh-converged"
     assert ratios["nylon", 14] == pytest.approx(ratios["steel", 14], rel=0.05), "scales as (a/R)^2"
+
+
+def test_junction_curve_is_smooth(junction, junction_model):
+    """Across the straddle span the exact-gap p0 goes monotonically from the dwell side's Hertz
+    value to the rise side's (no jump): successive differences over 0.025 deg steps stay below
+    a third of the Hertz jump (742 -> 660 MPa), and the ends match the two Hertz values to 0.5 %."""
+    sc, jumps = junction
+    m, E_star = junction_model
+    j = jumps[0]
+    th = j.theta + np.radians(np.arange(-0.35, 0.351, 0.025))
+    st = sc.analyse(th)
+    p0 = np.array([m.solve(F=F, rho=r, gap=exact_gap(sc.program, sc.follower, t, m.x), check=False).p0_nodal
+                   for t, F, r in zip(th, st.Fc, st.rho, strict=True)])
+    hz = [2 * st.Fc[k] / sc.length / (math.pi * math.sqrt(4 * st.Fc[k] / sc.length / (1 / 0.01 + 1 / r)
+                                                        / (math.pi * E_star)))
+          for k, r in ((0, j.rho_left), (-1, j.rho_right))]
+    assert np.all(np.diff(p0) <= 1e-4 * p0[0]), "monotone from the dwell to the rise side"
+    assert np.max(np.abs(np.diff(p0))) < (hz[0] - hz[1]) / 3
+    assert p0[0] == pytest.approx(hz[0], rel=5e-3) and p0[-1] == pytest.approx(hz[1], rel=5e-3)

@@ -132,3 +132,22 @@ def test_warnings_free(model):
         warnings.simplefilter("error")
         r = model.solve(F=F, rho=rho, mu=mu, Q=0.5 * mu * F, rolling=-1)
     assert r.stick.sum() > 0
+
+
+def test_solve_lcp_uses_its_tolerance():
+    """solve_lcp: the tolerance is used as given; a residual above it returns converged = False
+    with the reason (never silently True). A 1D Winkler bed (A = k I) has the closed form
+    p = (delta - h0)/k on the contact set."""
+    from femcam.fe.contact import solve_lcp
+
+    x = np.linspace(-1, 1, 41)
+    h0 = 0.5 * x**2
+    A = 0.1 * np.eye(41) + 1e-3 * np.exp(-np.abs(x[:, None] - x[None, :]))
+    w = np.full(41, x[1] - x[0])
+    ok = solve_lcp(A, h0, w, 1.0, active0=np.abs(x) < 0.5, tol=1e-8)
+    assert ok.converged and ok.message == "" and ok.residual <= 1e-8
+    strict = solve_lcp(A, h0, w, 1.0, active0=np.abs(x) < 0.5, tol=0.0)
+    assert strict.residual > 0.0 and not strict.converged and "exceeds tol" in strict.message
+    winkler = solve_lcp(0.1 * np.eye(41), h0, w, 1.0, active0=np.abs(x) < 0.5, tol=1e-12)
+    on = winkler.p > 0
+    np.testing.assert_allclose(winkler.p[on], (winkler.delta - h0[on]) / 0.1, rtol=1e-10)
