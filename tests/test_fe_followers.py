@@ -49,6 +49,15 @@ def test_tip_radius_on_a_roller_is_a_scene_error(tmp_path):
     p.write_text(txt)
     with pytest.raises(SceneError, match="follower.tip_radius_mm.*only a knife_edge"):
         load_scene(p)
+    knife = (EX / "seed003_knife_edge.toml").read_text()
+    knife = knife.replace("tip_radius_mm = 2.0", "tip_radius_mm = -2.0")
+    p.write_text(knife)
+    with pytest.raises(SceneError, match=r"follower.tip_radius_mm.*-2.*mm"):
+        load_scene(p)
+    flat = (EX / "flat_faced.toml").read_text().replace("face_length_mm = 30.0", "face_length_mm = 0.0")
+    p.write_text(flat)
+    with pytest.raises(SceneError, match=r"follower.face_length_mm"):
+        load_scene(p)
 
 
 def test_directions_on_the_base_circle():
