@@ -151,3 +151,29 @@ def test_solve_lcp_uses_its_tolerance():
     winkler = solve_lcp(0.1 * np.eye(41), h0, w, 1.0, active0=np.abs(x) < 0.5, tol=1e-12)
     on = winkler.p > 0
     np.testing.assert_allclose(winkler.p[on], (winkler.delta - h0[on]) / 0.1, rtol=1e-10)
+
+
+def test_partial_slip_stresses_and_vtu(model, tmp_path):
+    """The stresses carry the partial-slip traction: on the cam surface the shear stress is the
+    applied traction (boundary condition, txz = -q in the cam's Johnson frame), rms over the fine
+    zone <= 3 % mu p0 (measured 2.1 % at a/h = 12, 1.4 % here at a/h = 20; the largest misfit
+    is at the contact edges where q drops to 0 within one element). The full-field back-solve gives the same
+    surface stresses, and the VTU carries the traction (round trip through meshio)."""
+    import meshio
+
+    from femcam.fe.recovery import surface_nodes
+
+    r = model.solve(F=F, rho=rho, mu=mu, Q=0.5 * mu * F, rolling=1)
+    sc = r.surface_by_body["cam"]
+    e = (sc.txz + np.interp(sc.x, r.x, r.q)) / (mu * P0)
+    assert float(np.sqrt(np.mean(e**2))) < 3e-2, "surface shear = applied traction"
+    _, fld = model.full_field(r, "cam")
+    k = surface_nodes(model.bodies["cam"])
+    xs = fld["xy"][0, k]
+    ins = np.abs(xs) <= r.x[-1]
+    e2 = (fld["txz"][k][ins] + np.interp(xs[ins], r.x, r.q)) / (mu * P0)
+    assert float(np.sqrt(np.mean(e2**2))) < 3e-2, "full field carries the partial-slip traction"
+    m = meshio.read(r.to_vtu(tmp_path / "slip.vtu"))
+    ct = m.point_data["contact_traction"]
+    assert ct.max() == pytest.approx(float(r.q.max()), rel=1e-6)
+    assert ct.min() == pytest.approx(-float(r.q.max()), rel=1e-6), "the roller carries -q"

@@ -543,7 +543,8 @@ class ContactModel:
 
         chk.choice("body", body, ("cam", "roller"))
         b: Body = self.bodies[body]
-        f = self.Bn[body] @ r.p + (r.sliding * r.mu) * (self.Bt[body] @ r.p)
+        q = r.q if r.q is not None else (r.sliding * r.mu) * r.p  # partial slip: the solved q
+        f = self.Bn[body] @ r.p + self.Bt[body] @ q
         u = b.solve(f)
         s = stress_operator(b) @ u
         n = b.n_dofs // 2
