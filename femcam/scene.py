@@ -13,7 +13,8 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
     [[program.segment]] kind = "rise"|"dwell"|"fall", beta_deg, lift_mm (rise/fall),
                         law? | control_points?
     [follower]         type = "roller"|"knife_edge"|"flat_faced", base_radius_mm,
-                       roller_radius_mm (roller), offset_mm?, face_width_mm
+                       roller_radius_mm (roller), offset_mm?, face_width_mm,
+                       tip_radius_mm? (knife_edge), face_length_mm? (flat_faced)
     [dynamics]         mass_kg, spring_N_per_m, preload_N, damping_N_s_per_m | damping_ratio,
                        model? = "rigid"|"one_dof"|"two_dof" (docs/dynamics.md), steps_per_rev?,
                        train_stiffness_N_per_m, train_damping_ratio | train_damping_N_s_per_m,
@@ -86,7 +87,10 @@ _SEGMENT = {"kind": ("", None, "str", True), "beta_deg": ("deg", math.pi / 180.0
             "control_points": ("", None, "list", False)}
 _FOLLOWER = {"type": ("", None, "str", True), "base_radius_mm": ("mm", 1e-3, "pos", True),
              "roller_radius_mm": ("mm", 1e-3, "pos", False), "offset_mm": ("mm", 1e-3, "num", False),
-             "face_width_mm": ("mm", 1e-3, "pos", True)}
+             "face_width_mm": ("mm", 1e-3, "pos", True),
+             # FE contact of the non-roller followers (femcam.fe.followers)
+             "tip_radius_mm": ("mm", 1e-3, "pos", False), "face_length_mm": ("mm", 1e-3, "pos", False)}
+_FOLLOWER_ONLY = {"tip_radius_mm": "knife_edge", "face_length_mm": "flat_faced"}
 _DYNAMICS = {"mass_kg": ("kg", 1.0, "nonneg", True), "spring_N_per_m": ("N/m", 1.0, "nonneg", True),
              "preload_N": ("N", 1.0, "nonneg", True),
              "damping_N_s_per_m": ("N s/m", 1.0, "nonneg", False),
@@ -170,6 +174,16 @@ def _train(ck, raw: dict, dy: dict, dyn):
     except InputError as exc:  # mass_kg = 0: a massless follower has no train dynamics
         ck.add("dynamics", f"model = {model!r}: {exc}")
         return None
+
+
+def _follower_only_keys(ck, raw, ftype) -> bool:
+    """Report keys of another follower type (tip_radius_mm on a roller, ...); True if any."""
+    bad = [k for k in _FOLLOWER_ONLY if ftype and isinstance(raw, dict) and k in raw
+           and _FOLLOWER_ONLY[k] != ftype]
+    for k in bad:
+        ck.add(f"follower.{k}", f"= {_fmt(raw[k])}: only a {_FOLLOWER_ONLY[k]} follower has this key, "
+               f"not a {ftype}")
+    return bool(bad)
 
 
 def _fmt(v) -> str:
@@ -631,6 +645,8 @@ def _follower(ck: _Checker, raw: dict):
     follower = None
     if ftype == "roller" and "roller_radius_mm" not in g:
         ck.add("follower.roller_radius_mm", "missing required key for a roller follower (unit: mm)")
+    elif _follower_only_keys(ck, g, ftype):
+        pass
     elif ftype in ("knife_edge", "flat_faced") and "roller_radius_mm" in g:
         ck.add("follower.roller_radius_mm", f"= {_fmt(g['roller_radius_mm'])}: "
                f"a {ftype} follower has no roller")
