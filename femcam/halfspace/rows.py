@@ -85,7 +85,8 @@ def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float 
         inv = 1.0 / st.rho + 1.0 / Rr
     n = th.size
     out = {k: np.full(n, np.nan) for k in COLUMNS}
-    out.update(theta=th, Fc=np.asarray(st.Fc, float), R=np.where(inv > 0, 1.0 / np.where(inv > 0, inv, 1), np.nan))
+    R = np.where(inv > 0, 1.0 / np.where(inv > 0, inv, 1.0), np.nan)   # nan: concave-conformal
+    out.update(theta=th, Fc=np.asarray(st.Fc, float), R=R)
     out["p_line"] = np.full((n, fl.ny), np.nan)
     out["w"] = np.full((n, fl.ny), np.nan)
     out["y"] = fl.y.copy()
