@@ -9,15 +9,18 @@ line-contact compliance and a rigid-slice (Winkler) model written below.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
 from scipy import integrate, optimize, special
 
-from femcam.errors import InputError
+from femcam.errors import InputError, SceneError
 from femcam.halfspace import HalfSpace, cell_influence
 from femcam.halfspace.crown import RollerProfile
+from femcam.halfspace.rows import COLUMNS, finite_length_rows, to_csv_columns
 from femcam.halfspace.strip import FiniteLengthContact
+from femcam.scene import load_scene
 
 E_STAR = 210e9 / (2.0 * (1.0 - 0.3**2))      # steel on steel, Johnson eq. 4.22 (Pa)
 R_REL, F, L = 0.005, 1500.0, 0.01             # seed 002 dwell: Rr = rho = 10 mm, preload, face width
@@ -238,3 +241,74 @@ def test_solver_bad_input():
         hs.solve(np.zeros((3, 4)), 1.0)
     with pytest.raises(InputError, match="F = 0 N"):
         FiniteLengthContact(RollerProfile(width=L), cam_width=L, E_star=E_STAR).solve(0.0, R_REL)
+
+
+# ---------------------------------------------------------------------------------------------
+# scene keys and the per-angle rows
+# ---------------------------------------------------------------------------------------------
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+CROWNED = EXAMPLES / "seed002_crowned.toml"
+
+
+def test_crowned_scene_keys_in_si():
+    sc = load_scene(CROWNED)
+    fl = sc.finite_length
+    assert fl["roller_width"] == pytest.approx(0.010) and fl["cam_width"] == pytest.approx(0.012)
+    assert fl["crown"] == "logarithmic" and fl["misalignment"] == pytest.approx(math.radians(0.02))
+    assert sc.length == pytest.approx(0.010)               # the 2D contact length is unchanged
+    plain = load_scene(EXAMPLES / "seed002_study_model.toml").finite_length   # defaults: face width
+    assert plain["roller_width"] == plain["cam_width"] == pytest.approx(0.010) and "crown" not in plain
+
+
+def _bad(tmp_path, old, new):
+    text = CROWNED.read_text()
+    assert old in text
+    p = tmp_path / "bad.toml"
+    p.write_text(text.replace(old, new, 1))
+    with pytest.raises(SceneError) as info:
+        load_scene(p)
+    return str(info.value)
+
+
+@pytest.mark.parametrize("old, new, expect", [
+    ('crown = "logarithmic"', 'crown = "log"', ["follower.crown", "'log'", "'logarithmic'"]),
+    ('crown = "logarithmic"', 'crown = "circular"', ["follower.crown", "exactly one", "crown_radius"]),
+    ('crown = "logarithmic"', 'crown = "circular"\ncrown_radius_mm = 4.0',
+     ["follower.crown_radius_mm = 4.0 mm", "half the roller width"]),
+    ('crown = "logarithmic"', 'crown = "none"\ncrown_drop_um = 5.0', ["follower.crown_drop_um = 5.0 um"]),
+    ("edge_radius_mm = 0.0", "edge_radius_mm = -1.0", ["follower.edge_radius_mm", "-1.0 mm", ">= 0"]),
+    ("edge_radius_mm = 0.0", "edge_radius_mm = 6.0", ["follower.edge_radius_mm = 6.0 mm", "half"]),
+    ("misalignment_deg = 0.02", "misalignment_deg = 10.0", ["follower.misalignment_deg = 10.0 deg"]),
+    ("misalignment_deg = 0.02", "misalignment = 0.02", ["follower.misalignment", "misalignment_deg"]),
+    ("face_width_mm = 12.0", "face_width_mm = 0.0", ["cam.face_width_mm", "0.0 mm", "> 0"]),
+    ("face_width_mm = 12.0", "face_width = 12.0", ["cam.face_width", "unknown key", "face_width_mm"]),
+    ('type = "roller"', 'type = "knife_edge"', ["follower.roller_radius_mm"]),
+])
+def test_crowned_scene_bad_input(tmp_path, old, new, expect):
+    msg = _bad(tmp_path, old, new)
+    for e in expect:
+        assert e in msg, f"{e!r} not in {msg!r}"
+
+
+def test_finite_length_rows_on_the_crowned_scene():
+    sc = load_scene(CROWNED)
+    th = np.radians([0.0, 40.0, 60.0, 140.0])
+    rows = finite_length_rows(sc, th, tol=1e-7)
+    st = sc.analyse(th)
+    R = 1.0 / (1.0 / st.rho + 1.0 / sc.follower.Rr)           # Johnson eq. 4.44
+    np.testing.assert_allclose(rows["R"], R, rtol=1e-12)
+    dy = rows["y"][1] - rows["y"][0]
+    np.testing.assert_allclose(rows["w"].sum(axis=1) * dy, st.Fc, rtol=1e-9, err_msg="load balance")
+    p0 = np.sqrt(st.Fc / 0.010 * E_STAR / (math.pi * R))       # 2D Hertz, Johnson eq. 4.45
+    np.testing.assert_allclose(rows["edge_factor"], rows["p_axial_peak"] / p0, rtol=1e-12)
+    assert np.all(rows["L_eff"] <= 0.010 + 1e-12) and np.all(rows["converged"] == 1.0)
+    assert np.all(rows["y_centre"] < 0)                       # tilt +0.02 deg lifts the +y end
+    csv = to_csv_columns(rows)
+    np.testing.assert_allclose(csv["p_axial_peak_MPa"], rows["p_axial_peak"] * 1e-6)
+    assert set(csv) == {v[0] for v in COLUMNS.values()}
+
+
+def test_finite_length_rows_refuses_knife_edge():
+    sc = load_scene(EXAMPLES / "seed003_knife_edge.toml")
+    with pytest.raises(InputError, match="roller follower"):
+        finite_length_rows(sc, [0.0])

@@ -43,8 +43,8 @@ COLUMNS = {
 def strip_for_scene(scene, *, nx: int = 64, ny: int = 128, tol: float = 1e-5) -> FiniteLengthContact:
     """The :class:`~femcam.halfspace.strip.FiniteLengthContact` of a roller scene's
     ``finite_length`` keys (defaults: roller width = cam face width = ``follower.face_width_mm``)."""
-    Rr = getattr(scene.follower, "Rr", None)
-    if Rr is None:
+    Rr = getattr(scene.follower, "Rr", 0.0)
+    if not Rr > 0.0:
         raise InputError(f"follower = {type(scene.follower).__name__}: the finite-length half-space "
                          "contact needs a roller follower (a knife edge or flat face is not a line contact "
                          "of two cylinders)")
@@ -78,7 +78,7 @@ def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float 
         ``"non_hertzian"``.
     """
     th = chk.finite_array("theta", np.atleast_1d(theta), "rad").ravel()
-    fl = strip or strip_for_scene(scene, nx=nx, ny=ny, tol=tol)
+    fl = strip or strip_for_scene(scene, nx=nx, ny=ny, tol=tol)   # refuses a non-roller follower
     st = scene.analyse(th)
     Rr = scene.follower.Rr
     with np.errstate(divide="ignore"):
