@@ -9,6 +9,7 @@ line-contact compliance and a rigid-slice (Winkler) model written below.
 from __future__ import annotations
 
 import math
+import pickle
 from pathlib import Path
 
 import numpy as np
@@ -213,6 +214,8 @@ def test_tilt_lifting_one_end_is_flagged():
     r = fl.solve(F, R_REL)
     assert "end_lift" in r.flags
     assert r.w[-1] == 0.0 and r.w[0] > 0.0 and r.L_eff < L    # +y end lifted for gamma > 0
+    back = pickle.loads(pickle.dumps(r))                       # results cross process boundaries
+    assert back.flags == r.flags and np.array_equal(back.p, r.p)
 
 
 def test_narrow_cam_sets_contact_length():
