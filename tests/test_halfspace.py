@@ -107,7 +107,7 @@ def test_circular_crown_is_elliptical_hertz():
     b = a * math.sqrt(1.0 - e2)
     p0 = 3.0 * F / (2.0 * math.pi * a * b)
     fl = FiniteLengthContact(RollerProfile(width=L, crown="circular", crown_radius=Rc), cam_width=L,
-                             E_star=E_STAR, nx=64, ny=256, tol=1e-8)
+                             E_star=E_STAR, nx=48, ny=192, tol=1e-7)
     r = fl.solve(F, R_REL)
     assert "end_lift" in r.flags and "short_contact" not in r.flags
     np.testing.assert_allclose(r.p_max, p0, rtol=1e-2, err_msg="elliptical Hertz p0")
@@ -169,7 +169,7 @@ def test_misalignment_shifts_load_centre(crown, kw, band):
     shifts = []
     for g in np.radians([0.005, 0.01, 0.02]):
         prof = RollerProfile(width=L, crown=crown, misalignment=g, **kw)
-        fl = FiniteLengthContact(prof, cam_width=L, E_star=E_STAR, ny=128, tol=1e-7)
+        fl = FiniteLengthContact(prof, cam_width=L, E_star=E_STAR, ny=128, tol=1e-6)
         r = fl.solve(F, R_REL)
         ref = rigid_slice_centre(prof.drop(fl.y), fl.y, fl.dy, b)
         assert r.y_centre < 0 and ref < 0
@@ -296,7 +296,7 @@ def test_crowned_scene_bad_input(tmp_path, old, new, expect):
 def test_finite_length_rows_on_the_crowned_scene():
     sc = load_scene(CROWNED)
     th = np.radians([0.0, 40.0, 60.0, 140.0])
-    rows = finite_length_rows(sc, th, tol=1e-7)
+    rows = finite_length_rows(sc, th, tol=1e-6)
     st = sc.analyse(th)
     R = 1.0 / (1.0 / st.rho + 1.0 / sc.follower.Rr)           # Johnson eq. 4.44
     np.testing.assert_allclose(rows["R"], R, rtol=1e-12)
