@@ -176,6 +176,9 @@ def main():
     for crown in ("logarithmic", "none"):
         for label, ext in (("free end", 0.0), ("continued", 5e-3)):
             out[crown, label] = report(crown, run(crown, ext), label)
+        # correctness: the continued block is what the half-space assumes, so it must agree
+        e_mid, e_end = out[crown, "continued"]
+        assert abs(e_mid) < 0.02 and abs(e_end) < 0.10, f"FE continued block vs half-space ({crown})"
     return out
 
 
