@@ -23,7 +23,7 @@ contact is solved on it by an active-set method. Deviation from the brief: a gra
 mesh instead of a gmsh tetrahedral mesh (same refinement, no mesh generator in the loop).
 
 Run:  python benchmarks/bench_halfspace_fe3d.py   (4 cases, 141-325 s each at load average 7-8 on the
-      shared 2 cores; 2-6 GB of SuperLU fill-in)
+      shared 2 cores; about 2 GB of memory seen during a factorisation)
 """
 
 from __future__ import annotations
