@@ -32,6 +32,10 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
                        specific_heat_J_per_kg_K?, contact_fatigue_strength_MPa?,
                        contact_fatigue_cycles?, contact_fatigue_exponent?, shear_fatigue_limit_MPa?,
                        scuffing_temperature_C?
+    finite length (roller only, all optional; used by femcam.halfspace, see docs/halfspace.md):
+    [follower]         roller_width_mm?, crown? = "none"|"circular"|"logarithmic",
+                       crown_radius_mm? | crown_drop_um?, edge_radius_mm?, misalignment_deg?
+    [cam]?             face_width_mm?  (cam face width; follower.face_width_mm stays the 2D length)
     [fe]?, [wear]?     passed through unchanged (dicts) to the FE/sweep and wear layers
 
 Only numpy/scipy and the standard library (``tomllib``) are imported.
@@ -50,6 +54,7 @@ import numpy as np
 
 from .dynamics import TrainModel, periodic_response
 from .errors import ConvergenceError, InputError, SceneError, UndercutError
+from .halfspace.crown import RollerProfile
 from .kinematics import CamProgram, dwell, fall, law, rise
 from .loads import FollowerDynamics, LoadResult, contact_force
 from .materials import E_MAX, E_MIN, Material
@@ -77,7 +82,7 @@ def _dense_theta() -> np.ndarray:
 _TOP = {"name": ("", None, "str", True), "description": ("", None, "str", False),
         "source": ("", None, "str", False)}
 _TABLES = ("operating", "program", "follower", "dynamics", "materials", "contact", "fe", "wear",
-           "lubricant", "surface")
+           "lubricant", "surface", "cam")
 _OPERATING = {"rpm": ("rpm", 2.0 * math.pi / 60.0, "pos", False),
               "omega_rad_s": ("rad/s", 1.0, "pos", False)}
 _PROGRAM = {"law": ("", None, "str", False), "control_points": ("", None, "list", False),
@@ -131,7 +136,8 @@ _SURFACE = {k: ("um", 1e-6, "nonneg", False)
             for k in ("cam_Ra_um", "roller_Ra_um", "cam_Rq_um", "roller_Rq_um")}
 _CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", "flat_faced"),
             "plane": ("strain", "stress"), "sliding": ("+x", "-x"),
-            "model": ("rigid", "one_dof", "two_dof")}
+            "model": ("rigid", "one_dof", "two_dof"),
+            "crown": ("none", "circular", "logarithmic")}
 
 
 def _train(ck, raw: dict, dy: dict, dyn):
@@ -184,6 +190,52 @@ def _follower_only_keys(ck, raw, ftype) -> bool:
         ck.add(f"follower.{k}", f"= {_fmt(raw[k])}: only a {_FOLLOWER_ONLY[k]} follower has this key, "
                f"not a {ftype}")
     return bool(bad)
+
+
+# ---- finite-length contact keys (femcam.halfspace; docs/halfspace.md) -------------------------
+# follower.face_width_mm stays the 2D contact length (w = Fc / face_width in Hertz and the 2D FE);
+# roller_width_mm and cam.face_width_mm default to it and only enter the half-space strip, whose
+# contact length is min(roller_width_mm, cam.face_width_mm).
+_FINITE = {"roller_width_mm": ("mm", 1e-3, "pos", False), "crown": ("", None, "str", False),
+           "crown_radius_mm": ("mm", 1e-3, "pos", False), "crown_drop_um": ("um", 1e-6, "pos", False),
+           "edge_radius_mm": ("mm", 1e-3, "nonneg", False),
+           "misalignment_deg": ("deg", math.pi / 180.0, "num", False)}
+_FOLLOWER.update(_FINITE)
+_CAM = {"face_width_mm": ("mm", 1e-3, "pos", False)}
+_FINITE_SI = {"roller_width_mm": "roller_width", "crown": "crown", "crown_radius_mm": "crown_radius",
+              "crown_drop_um": "crown_drop", "edge_radius_mm": "edge_radius",
+              "misalignment_deg": "misalignment"}
+
+
+def _finite_length(ck: _Checker, raw: dict, fo: dict, ftype) -> dict:
+    """Check the finite-length keys; returns them in SI (``roller_width``, ``cam_width``, ``crown``,
+    ``crown_radius``, ``crown_drop``, ``edge_radius``, ``misalignment``) or {} on a problem."""
+    cam = ck.table(raw.get("cam", {}), "cam", _CAM)
+    graw = raw.get("follower", {}) if isinstance(raw.get("follower"), dict) else {}
+    given = [k for k in _FINITE if k in graw]
+    if given and ftype in ("knife_edge", "flat_faced"):
+        ck.add(f"follower.{given[0]}", f"= {_fmt(graw[given[0]])}: a {ftype} follower has no roller")
+        return {}
+    if any(k in graw and k not in fo for k in _FINITE) or "face_width_mm" not in fo:
+        return {}
+    out = {v: fo[k] for k, v in _FINITE_SI.items() if k in fo}
+    out.setdefault("roller_width", fo["face_width_mm"])
+    out["cam_width"] = cam.get("face_width_mm", fo["face_width_mm"])
+    kw = {k: out[k] for k in ("crown", "crown_radius", "crown_drop", "edge_radius", "misalignment")
+          if k in out}
+    try:
+        RollerProfile(width=out["roller_width"], **kw)
+    except InputError as exc:
+        msg = str(exc)
+        for k, v in _FINITE_SI.items():  # name the scene key and unit, not the SI parameter
+            if msg.startswith(v + " ") or msg.startswith(v + ":"):
+                unit = _FINITE[k][0]
+                ck.add(f"follower.{k}", f"= {_fmt(graw.get(k, fo.get(k)))}{' ' + unit if unit else ''}: "
+                       f"{msg.split(': ', 1)[-1]}")
+                return {}
+        ck.add("follower", msg)
+        return {}
+    return out
 
 
 def _fmt(v) -> str:
@@ -384,6 +436,7 @@ class Scene:
     source: str = ""
     fe: dict = field(default_factory=dict)
     wear: dict = field(default_factory=dict)
+    finite_length: dict = field(default_factory=dict)  # femcam.halfspace keys in SI (_finite_length)
     source_path: str = ""
     #: checked SI values of the assessment keys: lubricant, surface, oil_temperature_C, materials
     tribology: dict = field(default_factory=dict)
@@ -529,6 +582,7 @@ def load_scene(path) -> Scene:
     dyn, train, steps_per_rev = _dynamics(ck, raw)
     mats = _materials(ck, raw)
     tribo = _tribology(ck, raw, mats)
+    finite = _finite_length(ck, raw, fo, fo.get("type"))
     # contact and pass-through tables
     co = ck.table(raw.get("contact", {}), "contact", _CONTACT)
     for t in ("fe", "wear"):
@@ -540,7 +594,8 @@ def load_scene(path) -> Scene:
                  program=program, follower=follower, dynamics=dyn, omega=omega, cam=mats["cam"],
                  roller=mats["roller"], length=fo["face_width_mm"], mu=co.get("friction", 0.0),
                  plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=dict(raw.get("fe", {})),
-                 wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw, train=train, tribology=tribo,
+                 wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw, train=train,
+                 tribology=tribo, finite_length=finite,
                  steps_per_rev=steps_per_rev)
 
 
