@@ -1,0 +1,16 @@
+"""The real bodies: the roller as a ring on its pin or needles (FE, scikit-fem + gmsh).
+
+>>> from femcam.bodies import RollerBearing, RingModel, solve_ring  # doctest: +SKIP
+
+Modules: ``geometry`` (:class:`RollerBearing`, needle load-deflection, geometry checks),
+``mesh`` (gmsh ring annulus and pin disk), ``contact`` (curved contact operators, the
+multi-contact active-set solve), ``model`` (:class:`RingModel`: build once), ``solve``
+(:func:`solve_ring`, :class:`RingResult`), ``rows`` (:func:`ring_rows`, sweep-facing).
+"""
+
+from .geometry import SUPPORTS, RollerBearing, bearing_problems, needle_approach
+from .model import RingMeshOptions, RingModel
+from .solve import RingResult, solve_ring
+
+__all__ = ["SUPPORTS", "RingMeshOptions", "RingModel", "RingResult", "RollerBearing",
+           "bearing_problems", "needle_approach", "solve_ring"]
