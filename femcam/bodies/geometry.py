@@ -47,8 +47,8 @@ def needle_approach(Q, length: float):
 
     .. math:: \delta_n = 2\cdot 3.84\cdot10^{-5}\,(Q l)^{0.9}\, l_{mm}^{-0.8}\ \mathrm{mm}
 
-    >>> round(needle_approach(150e3, 0.01) * 1e6, 2)   # 1500 N on a 10 mm needle: um
-    5.69
+    >>> round(float(needle_approach(150e3, 0.01)) * 1e6, 2)   # 1500 N on a 10 mm needle: um
+    8.79
     """
     Q = np.maximum(np.asarray(Q, dtype=float), 0.0)
     return 2.0 * PALMGREN_C * (Q * length) ** PALMGREN_EXP / (length * 1e3) ** 0.8 * 1e-3

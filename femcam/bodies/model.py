@@ -1,11 +1,11 @@
 r"""FE model of the cam, the roller ring and its pin or needles: build once, solve per angle.
 
 ``RingModel.build`` meshes and factorises the cam body (as :mod:`femcam.fe`), the ring (a full,
-floating annulus) and the pin (a disk clamped on its core ``r <= 0.2 Rp``, the stud), and condenses them onto the contact
-unknowns: the cam-contact pressures ``p`` at the fine-zone vertices and the bore pressures at
-``n_bore`` vertices uniform in angle. The ring is axisymmetric, so the same condensed model
-serves every cam angle: only the load, the cam curvature (in the gap) and, for needles, the
-cage position change. Per solve:
+floating annulus) and the pin (a disk clamped on its core ``r <= 0.2 Rp``, the stud), and
+condenses them onto the contact unknowns: the cam-contact pressures ``p`` at the fine-zone
+vertices and the bore pressures at ``n_bore`` vertices uniform in angle. The ring is
+axisymmetric, so the same condensed model serves every cam angle: only the load, the cam
+curvature (in the gap) and, for needles, the cage position change. Per solve:
 
 * **pin**: unknowns ``[p, lambda_bore]``; gap at the bore ``c + u.e_r`` (ring and pin),
 * **needles**: unknowns ``[p, Q_j]``; each needle force is a narrow radial pressure on the
@@ -44,7 +44,7 @@ class RingMeshOptions:
     """Mesh of the ring and pin: ``n_bore`` bore vertices (multiple of 4), largest element
     ``h_max_over_wall`` x wall, pin surface size = bore spacing, growth slope ``growth``."""
 
-    n_bore: int = 256
+    n_bore: int = 128
     h_max_over_wall: float = 0.25
     growth: float = 0.3
 

@@ -135,7 +135,7 @@ def solve_ring(model, *, F: float, rho: float, cage: float = 0.0, max_secant: in
     needles = b.support == "needles"
     Qn = np.full(phi.size, W / max(phi.size, 1) * 4)
     it_total = 0
-    for k in range(max_secant if needles else 1):
+    for _ in range(max_secant if needles else 1):
         A = A0.copy()
         if needles:
             dq = needle_approach(np.maximum(Qn, 1e-6 * W), model.length) / np.maximum(Qn, 1e-6 * W)
@@ -151,7 +151,6 @@ def solve_ring(model, *, F: float, rho: float, cage: float = 0.0, max_secant: in
     else:
         raise ConvergenceError(f"needle loads did not settle in {max_secant} secant iterations "
                                f"(last relative change {change:.3g})", (change,))
-    del k
     lam = sol.lam
     p = lam[:nc]
     if active[0] or active[nc - 1]:
