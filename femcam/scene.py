@@ -18,6 +18,11 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
     [materials.cam], [materials.roller] (alias [materials.follower]):
                        E_GPa, nu, hardness_MPa?, name?
     [contact]?         friction?, plane? = "strain"|"stress", sliding? = "+x"|"-x"
+    roller on a pin or needles (femcam.bodies; docs/bodies.md): [follower] roller_support? =
+                       "solid"|"pin"|"needles", roller_bore_mm (ring bore RADIUS), pin_radius_mm,
+                       pin_clearance_um, needle_count, needle_radius_mm; [materials.pin]?
+                       (pin and needles, default: the roller's); [cam]? bore_mm (shaft bore
+                       RADIUS), [materials.shaft]?
     [fe]?, [wear]?     passed through unchanged (dicts) to the FE/sweep and wear layers
 
 Only numpy/scipy and the standard library (``tomllib``) are imported.
@@ -82,6 +87,82 @@ _CONTACT = {"friction": ("(dimensionless)", 1.0, "nonneg", False), "plane": ("",
             "sliding": ("", None, "str", False)}
 _CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", "flat_faced"),
             "plane": ("strain", "stress"), "sliding": ("+x", "-x")}
+
+# ---- real bodies (femcam.bodies): the roller as a ring on a pin or needles, the cam on a shaft
+_TABLES = _TABLES + ("cam",)
+_FOLLOWER.update({"roller_support": ("", None, "str", False), "roller_bore_mm": ("mm", 1e-3, "pos", False),
+                  "pin_radius_mm": ("mm", 1e-3, "pos", False),
+                  "pin_clearance_um": ("um", 1e-6, "nonneg", False),
+                  "needle_count": ("(count)", 1.0, "pos", False),
+                  "needle_radius_mm": ("mm", 1e-3, "pos", False)})
+_CHOICES["roller_support"] = ("solid", "pin", "needles")
+_CAM = {"bore_mm": ("mm", 1e-3, "pos", False)}
+_BODY_MATERIALS = ("pin", "shaft")
+_SUPPORT_KEYS = {"solid": (), "pin": ("roller_bore_mm", "pin_radius_mm", "pin_clearance_um"),
+                 "needles": ("roller_bore_mm", "pin_radius_mm", "pin_clearance_um", "needle_count",
+                             "needle_radius_mm")}
+
+
+def roller_support_problems(*, Ro, Ri, support, Rp, c, Z, r_n) -> list[str]:
+    """Geometry problems of a ring support (SI in, messages in the scene's mm / um): bore inside
+    the roller, pin + clearance = bore (pin), pin + 2 needles + clearance = bore and needles
+    that fit around the pitch circle (needles)."""
+    out = []
+    if support == "solid":
+        return out
+    if not 0.0 < Ri < Ro:
+        return [f"roller_bore_mm = {Ri * 1e3:g} mm: must be in (0, roller_radius_mm = {Ro * 1e3:g} mm)"]
+    if support == "pin":
+        if not math.isclose(Rp + c, Ri, rel_tol=1e-9, abs_tol=1e-12):
+            out.append(f"pin_radius_mm + pin_clearance_um = {Rp * 1e3:g} mm + {c * 1e6:g} um = "
+                       f"{(Rp + c) * 1e3:g} mm: must equal roller_bore_mm = {Ri * 1e3:g} mm")
+        return out
+    if Z < 3 or Z != int(Z):
+        out.append(f"needle_count = {Z:g}: must be a whole number >= 3 (fewer cannot hold the ring)")
+    if not math.isclose(Rp + 2 * r_n + c, Ri, rel_tol=1e-9, abs_tol=1e-12):
+        out.append(f"pin_radius_mm + 2 needle_radius_mm + pin_clearance_um = {Rp * 1e3:g} + "
+                   f"{2 * r_n * 1e3:g} mm + {c * 1e6:g} um = {(Rp + 2 * r_n + c) * 1e3:g} mm: must "
+                   f"equal roller_bore_mm = {Ri * 1e3:g} mm")
+    pitch = Ri - r_n
+    if Z >= 3 and pitch > 0 and 2 * pitch * math.sin(math.pi / Z) < 2 * r_n:
+        zmax = int(math.pi / math.asin(min(1.0, r_n / pitch)))
+        out.append(f"needle_count = {Z:g} needles of radius {r_n * 1e3:g} mm do not fit around the "
+                   f"pitch circle of radius {pitch * 1e3:g} mm (they overlap by "
+                   f"{(2 * r_n - 2 * pitch * math.sin(math.pi / Z)) * 1e6:.3g} um); at most {zmax} fit")
+    return out
+
+
+def _check_bodies(ck, raw: dict, fo: dict, mats: dict) -> dict:
+    """The real-body keys: which apply, their geometry, the pin/shaft materials. Returns the SI
+    dict stored in ``Scene.bodies`` (empty for today's solid roller and local cam body)."""
+    fraw = raw.get("follower", {}) if isinstance(raw.get("follower"), dict) else {}
+    support = fo.get("roller_support", "solid")
+    given = [k for k in _SUPPORT_KEYS["needles"] if k in fraw]
+    needed = _SUPPORT_KEYS.get(support, ())
+    for k in given:
+        if k not in needed:
+            ck.add(f"follower.{k}", f"= {_fmt(fraw[k])}: not used with roller_support = {support!r}")
+    for k in needed:
+        if k not in fraw:
+            ck.add(f"follower.{k}", f"missing: required with roller_support = {support!r} "
+                   f"(unit: {_FOLLOWER[k][0]})")
+    out = {}
+    if needed and all(k in fo for k in needed) and "roller_radius_mm" in fo:
+        geo = dict(Ro=fo["roller_radius_mm"], Ri=fo["roller_bore_mm"], support=support,
+                   Rp=fo["pin_radius_mm"], c=fo["pin_clearance_um"], Z=fo.get("needle_count", 0.0),
+                   r_n=fo.get("needle_radius_mm", 0.0))
+        for msg in roller_support_problems(**geo):
+            ck.add("follower", msg)
+        out.update(geo, Z=int(geo["Z"]))
+    cam = ck.table(raw["cam"], "cam", _CAM) if "cam" in raw else {}
+    if "bore_mm" in cam and "base_radius_mm" in fo and cam["bore_mm"] >= fo["base_radius_mm"]:
+        ck.add("cam.bore_mm", f"= {_fmt(raw['cam']['bore_mm'])} mm: the shaft bore radius must be < "
+               f"base_radius_mm = {fo['base_radius_mm'] * 1e3:g} mm")
+    if "bore_mm" in cam:
+        out["cam_bore"] = cam["bore_mm"]
+    out.update({k: v for k, v in mats.items() if k in _BODY_MATERIALS})
+    return out
+# ---- end of the real-bodies block
 
 
 def _fmt(v) -> str:
@@ -233,6 +314,9 @@ class Scene:
     wear: dict = field(default_factory=dict)
     source_path: str = ""
     raw: dict = field(default_factory=dict, repr=False)
+    #: real bodies (femcam.bodies): roller support geometry (SI: Ro, Ri, support, Rp, c, Z, r_n),
+    #: cam_bore (m) and the "pin" / "shaft" Materials; empty for the solid roller
+    bodies: dict = field(default_factory=dict)
 
     @property
     def rpm(self) -> float:
@@ -455,12 +539,13 @@ def load_scene(path) -> Scene:
     mraw = g("materials")
     if isinstance(mraw, dict):
         for k in mraw:
-            if k not in ("cam", "roller", "follower"):
+            if k not in ("cam", "roller", "follower") + _BODY_MATERIALS:
                 ck.add(f"materials.{k}", "unknown material table; use [materials.cam] and "
                        "[materials.roller] (or [materials.follower])")
         if "roller" in mraw and "follower" in mraw:
             ck.add("materials", "give [materials.roller] or its alias [materials.follower], not both")
-        for k, alias in (("cam", "cam"), ("roller", "roller"), ("roller", "follower")):
+        for k, alias in (("cam", "cam"), ("roller", "roller"), ("roller", "follower"), ("pin", "pin"),
+                         ("shaft", "shaft")):
             if alias in mraw:
                 m = ck.table(mraw[alias], f"materials.{alias}", _MATERIAL)
                 if "E_GPa" in m and "nu" in m:
@@ -475,6 +560,7 @@ def load_scene(path) -> Scene:
 
     # contact and pass-through tables
     co = ck.table(g("contact"), "contact", _CONTACT)
+    bodies = _check_bodies(ck, raw, fo, mats)
     for t in ("fe", "wear"):
         if t in raw and not isinstance(raw[t], dict):
             ck.add(t, f"= {_fmt(raw[t])}: must be a table [{t}]")
@@ -484,4 +570,4 @@ def load_scene(path) -> Scene:
                  program=program, follower=follower, dynamics=dyn, omega=omega, cam=mats["cam"],
                  roller=mats["roller"], length=fo["face_width_mm"], mu=co.get("friction", 0.0),
                  plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=dict(g("fe")),
-                 wear=dict(g("wear")), source_path=str(path), raw=raw)
+                 wear=dict(g("wear")), source_path=str(path), raw=raw, bodies=bodies)

@@ -35,6 +35,7 @@ import numpy as np
 
 from .. import _validate as chk
 from ..materials import STEEL, Material
+from ..scene import roller_support_problems
 
 SUPPORTS = ("solid", "pin", "needles")
 #: Palmgren's line-contact coefficient (mm N^-0.9 mm^0.8) and load exponent
@@ -54,38 +55,9 @@ def needle_approach(Q, length: float):
     return 2.0 * PALMGREN_C * (Q * length) ** PALMGREN_EXP / (length * 1e3) ** 0.8 * 1e-3
 
 
-def bearing_problems(*, Ro, Ri, support, Rp, c, Z, r_n) -> list[str]:
-    """Every geometry problem of a ring support, as messages naming value and unit (mm, um)."""
-    out = []
-    if support == "solid":
-        return out
-    if not 0.0 < Ri < Ro:
-        out.append(f"roller_bore_mm = {Ri * 1e3:g} mm: must be in (0, roller_radius_mm = {Ro * 1e3:g} mm)")
-        return out
-    if support == "pin":
-        if not math.isclose(Rp + c, Ri, rel_tol=1e-9, abs_tol=1e-12):
-            out.append(f"pin_radius_mm + pin_clearance_um = {Rp * 1e3:g} mm + {c * 1e6:g} um = "
-                       f"{(Rp + c) * 1e3:g} mm: must equal roller_bore_mm = {Ri * 1e3:g} mm")
-        return out
-    # needles
-    if Z < 3:
-        out.append(f"needle_count = {Z}: at least 3 needles are needed to hold the ring")
-    if r_n <= 0:
-        out.append(f"needle_radius_mm = {r_n * 1e3:g} mm: must be > 0")
-        return out
-    if Rp <= 0 or not math.isclose(Rp + 2 * r_n + c, Ri, rel_tol=1e-9, abs_tol=1e-12):
-        out.append(f"pin_radius_mm + 2 needle_radius_mm + pin_clearance_um = {Rp * 1e3:g} + "
-                   f"{2 * r_n * 1e3:g} mm + {c * 1e6:g} um = {(Rp + 2 * r_n + c) * 1e3:g} mm: must "
-                   f"equal roller_bore_mm = {Ri * 1e3:g} mm (with pin_radius_mm > 0)")
-    if Z >= 3:
-        pitch = Ri - r_n
-        free = 2 * pitch * math.sin(math.pi / Z) - 2 * r_n
-        if free < 0:
-            zmax = int(math.pi / math.asin(min(1.0, r_n / pitch)))
-            out.append(f"needle_count = {Z} needles of radius {r_n * 1e3:g} mm do not fit around "
-                       f"the pitch circle of radius {pitch * 1e3:g} mm (they overlap by "
-                       f"{-free * 1e6:.3g} um); at most {zmax} fit")
-    return out
+#: every geometry problem of a ring support, as scene-style messages (mm, um): defined with the
+#: scene keys it checks (femcam.scene) and shared here
+bearing_problems = roller_support_problems
 
 
 @dataclass(frozen=True, kw_only=True)
