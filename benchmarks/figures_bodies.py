@@ -57,8 +57,9 @@ def main() -> int:
         print(f"\n{label}\n| wall (mm) | bore hoop max (MPa) | p0 vs solid (%) | a vs solid (%) | "
               "Q_max (N) | DOFs |\n|---|---|---|---|---|---|")
         for i in range(walls.size):
-            print(f"| {s['wall'][i] * 1e3:.1f} | {s['hoop_max'][i] / 1e6:.0f} | "
-                  f"{100 * (s['p0'][i] / s['p0_solid'][i] - 1):+.2f} | {100 * (s['a'][i] / s['a_solid'][i] - 1):+.2f}"
+            dp0 = 100 * (s["p0"][i] / s["p0_solid"][i] - 1)
+            da = 100 * (s["a"][i] / s["a_solid"][i] - 1)
+            print(f"| {s['wall'][i] * 1e3:.1f} | {s['hoop_max'][i] / 1e6:.0f} | {dp0:+.2f} | {da:+.2f}"
                   f" | {s['needle_Q_max'][i]:.0f} | {int(s['n_dofs'][i])} |")
     plot_wall_study(studies, img / "bodies_wall_study.png",
                     title=f"seed 002 roller Rr = 10 mm, F = {F:.0f} N (peak), l = 10 mm")
