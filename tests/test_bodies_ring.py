@@ -190,6 +190,7 @@ def test_thin_ring_that_would_yield_is_flagged():
     assert f"{s_max / 1e6:.4g} MPa" in out[1].flags[0]
 
 
+@pytest.mark.slow
 def test_cam_and_bore_forces_balance_on_a_hard_ring():
     """Sanity of the support: a stiffer ring leaves the cam load where it is (the contact force
     equals F within the active-set tolerance)."""
