@@ -202,3 +202,24 @@ def test_cam_and_bore_forces_balance_on_a_hard_ring():
     assert abs(m.w @ r.p * 0.01 / 1500.0 - 1) < 1e-9
     # the ring's force balance along the load line: sum wb p (-sin theta) = W (statics)
     assert abs(-(m.wb * np.sin(m.theta)) @ r.bore_p * 0.01 / 1500.0 - 1) < 1e-9
+
+
+def test_very_thin_ring_needs_a_finer_bore_and_says_so():
+    """Wall 0.3 mm on Ro = 10 mm: with 128 bore vertices (spacing 0.48 mm > wall) the active set
+    cycled (measured); the build refuses with the spacing, the wall and the n_bore needed."""
+    b = RollerBearing(Ro=0.01, Ri=0.0097, support="pin", Rp=0.0097 - 10e-6, c=10e-6)
+    with pytest.raises(InputError, match=r"bore spacing .* = 0.476 mm exceeds half the ring wall "
+                                         r"\(0.3 mm\): a wall this thin needs n_bore >= 408"):
+        RingModel.build(bearing=b, cam=STEEL, rho_ref=0.0173, a_ref=1.05e-4, length=0.01)
+
+
+@pytest.mark.slow
+def test_very_thin_ring_with_a_fine_bore_converges_and_is_flagged():
+    """Wall 0.5 mm (t/Ro = 0.05), n_bore = 256 (spacing 0.23 mm): converges; its bore stress
+    (~270 MPa at 1646 N, measured) is above a 250 MPa yield strength given here: flagged."""
+    b = RollerBearing(Ro=0.01, Ri=0.0095, support="pin", Rp=0.0095 - 10e-6, c=10e-6, ring_yield=250e6)
+    m = RingModel.build(bearing=b, cam=STEEL, rho_ref=0.0173, a_ref=1.05e-4, length=0.01,
+                        mesh=MeshOptions(a_over_h=8), ring_mesh=RingMeshOptions(n_bore=256))
+    r = solve_ring(m, F=1646.0, rho=0.0173)
+    assert r.converged and r.flags
+    assert abs(-(m.wb * np.sin(m.theta)) @ r.bore_p * 0.01 / 1646.0 - 1) < 1e-9

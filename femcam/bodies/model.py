@@ -114,6 +114,14 @@ class RingModel:
             cam_geo = _mesh_body(gmsh, "cam", rho_ref, L_cam, a_ref, mesh)
         n_b = int(rm.n_bore)
         hb = 2 * math.pi * b.Ri / n_b
+        if hb > 0.5 * b.wall:
+            # measured: with bore spacings ~ the wall (0.3-1 mm walls, Ro = 10 mm) the bore
+            # contact is not resolved through the wall and the active set cycles or spreads the
+            # pin contact over 150+ deg; spacings <= 0.5 wall converged (docs/bodies.md)
+            need = 4 * math.ceil(2 * math.pi * b.Ri / (0.5 * b.wall) / 4)
+            raise chk.fail("n_bore", n_b, "", f"bore spacing 2 pi Ri / n_bore = {hb * 1e3:.3g} mm exceeds "
+                           f"half the ring wall ({b.wall * 1e3:.3g} mm): a wall this thin needs "
+                           f"n_bore >= {need}")
         h_max = rm.h_max_over_wall * b.wall
         ring_geo, bore, theta = mesh_ring(Ro=b.Ro, Ri=b.Ri, contact_x=cam_geo.contact_x, n_bore=n_b,
                                           h_bore=min(hb, h_max), h_max=h_max,
