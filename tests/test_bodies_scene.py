@@ -84,8 +84,13 @@ def test_ring_rows_columns_units_and_liftoff():
     Fc[2] = 0.0
     m = build_for(sc, Fc, st.rho, mesh=MeshOptions(a_over_h=8), ring_mesh=RingMeshOptions(n_bore=72))
     rows = ring_rows(sc, theta, Fc, st.rho, model=m)
-    assert set(rows) == set(CSV_COLUMNS)
-    assert np.all(np.isnan([v[2] for v in rows.values() if v is not rows["theta"]]))
+    assert set(rows) == set(CSV_COLUMNS) | {"needle_loads_on", "needle_loads_between"}
+    assert np.all(np.isnan([rows[k][2] for k in CSV_COLUMNS if k != "theta"]))
+    # the distributions balance the cam force along the load line (statics, Stribeck geometry)
+    Z = 18
+    for key, cage in (("needle_loads_on", 0.0), ("needle_loads_between", math.pi / Z)):
+        psi = cage + 2 * math.pi * np.arange(Z) / Z
+        np.testing.assert_allclose(rows[key][:2] @ np.cos(psi), Fc[:2], rtol=1e-9)
     E_star = 1 / (2 * (1 - 0.3**2) / 210e9)
     for i in (0, 1):
         R = 1 / (1 / 0.01 + 1 / st.rho[i])

@@ -26,6 +26,12 @@ Columns (key: meaning, SI unit -> CSV name):
 ``needle_Q_on``     most loaded needle, needle on the load line (N)              ``needle_Qmax_on_N``
 ``needle_Q_between``  most loaded needle, load between two needles (N)          ``needle_Qmax_between_N``
 ==================  ==========================================================  ====================
+
+Distributions (2-D arrays, not CSV columns; :func:`to_csv_columns` skips them):
+``needle_loads_on`` / ``needle_loads_between`` (n_angles, Z): needle loads (N) from the needle
+at or just past the load line, counter-clockwise, for the two cage positions;
+``bore_pressure`` (n_angles, n_bore): bore contact pressure (Pa; pin support, at the model's
+bore angles ``model.theta``).
 """
 
 from __future__ import annotations
@@ -84,7 +90,9 @@ def _one(model, F, r, needles, Z):
     res = [solve_ring(model, F=F, rho=r, cage=c) for c in cages]
     best = max(res, key=lambda x: x.hoop_max)
     ang = math.remainder(best.hoop_theta + 0.5 * math.pi, 2 * math.pi)
-    return {"p0": best.p0, "a": best.a, "p0_solid": best.hertz_p0, "a_solid": best.hertz_a,
+    dist = {"needle_loads_on": res[0].needle_Q, "needle_loads_between": res[-1].needle_Q,
+            "bore_pressure": best.bore_p}
+    return dist, {"p0": best.p0, "a": best.a, "p0_solid": best.hertz_p0, "a_solid": best.hertz_a,
             "dp0": best.p0 / best.hertz_p0 - 1, "da": best.a / best.hertz_a - 1,
             "hoop_max": best.hoop_max, "hoop_angle": ang, "pin_p0": best.pin_p0, "pin_arc": best.pin_arc,
             "needle_Q_on": res[0].needle_Q_max,
@@ -105,15 +113,25 @@ def ring_rows(scene, theta, Fc, rho, *, model: RingModel | None = None,
         raise InputError(f"theta, Fc, rho: shapes {theta.shape}, {Fc.shape}, {rho.shape} must match")
     model = model or build_for(scene, np.where(Fc > 0, Fc, np.nan), rho, mesh=mesh, ring_mesh=ring_mesh)
     b = model.bearing
+    needles = b.support == "needles"
     out = {k: np.full(theta.shape, np.nan) for k in CSV_COLUMNS}
     out["theta"] = theta.copy()
+    if needles:
+        out["needle_loads_on"] = np.full(theta.shape + (b.Z,), np.nan)
+        out["needle_loads_between"] = np.full(theta.shape + (b.Z,), np.nan)
+    else:
+        out["bore_pressure"] = np.full(theta.shape + (model.theta.size,), np.nan)
     for i in np.nonzero(Fc > 0)[0]:
-        row = _one(model, float(Fc[i]), float(rho[i]), b.support == "needles", max(b.Z, 1))
+        dist, row = _one(model, float(Fc[i]), float(rho[i]), needles, max(b.Z, 1))
         for k, v in row.items():
             out[k][i] = v
+        for k in dist:
+            if k in out:
+                out[k][i] = dist[k]
     return out
 
 
 def to_csv_columns(rows: dict) -> dict:
     """``{csv name with unit: array}`` from :func:`ring_rows` output."""
-    return {CSV_COLUMNS[k][0]: np.asarray(v) * CSV_COLUMNS[k][1] for k, v in rows.items()}
+    return {CSV_COLUMNS[k][0]: np.asarray(v) * CSV_COLUMNS[k][1] for k, v in rows.items()
+            if k in CSV_COLUMNS}
