@@ -181,7 +181,7 @@ def test_thin_ring_that_would_yield_is_flagged():
     kw = dict(Ro=0.01, Ri=0.009, support="pin", Rp=0.009 - 20e-6, c=20e-6)
     b = RollerBearing(**kw)
     m = RingModel.build(bearing=b, cam=STEEL, rho_ref=0.02, a_ref=1.05e-4, length=0.01,
-                        ring_mesh=RingMeshOptions(n_bore=64), mesh=MeshOptions(a_over_h=8))
+                        ring_mesh=RingMeshOptions(n_bore=128), mesh=MeshOptions(a_over_h=8))
     weak = dataclasses.replace(m, bearing=dataclasses.replace(b, ring_yield=1.0))
     out = [solve_ring(m, F=1500.0, rho=0.02), solve_ring(weak, F=1500.0, rho=0.02)]
     s_max = out[0].hoop_max
