@@ -22,7 +22,8 @@ def read_csv(path):
 
 
 def test_three_example_scenes_ship():
-    assert {p.stem for p in SCENES} == {"seed000_rise", "seed002_study_model", "seed003_knife_edge"}
+    assert {p.stem for p in SCENES} == {"seed000_rise", "seed002_study_model", "seed003_knife_edge",
+                                        "seed002_needle_roller"}
 
 
 @pytest.mark.parametrize("scene", SCENES, ids=lambda p: p.stem)
@@ -36,7 +37,8 @@ def test_run_writes_csv_and_pngs(scene, tmp_path, capsys):
         assert col in d
     np.testing.assert_allclose(d["theta_deg"], np.arange(0, 360, 2.0))
     # independent identity: v = ds/dt = omega ds/dtheta, checked by finite differences of s_mm
-    omega = {"seed000_rise": 1.0, "seed002_study_model": 20 * math.pi, "seed003_knife_edge": 10 * math.pi}
+    omega = {"seed000_rise": 1.0, "seed002_study_model": 20 * math.pi, "seed003_knife_edge": 10 * math.pi,
+             "seed002_needle_roller": 20 * math.pi}
     w = omega[scene.stem]
     dsdth = np.gradient(d["s_mm"] * 1e-3, np.radians(d["theta_deg"]))
     vmax = np.max(np.abs(d["v_m_s"]))
