@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import pickle
 from pathlib import Path
 
 import numpy as np
@@ -24,6 +25,8 @@ def test_ring_vtu_round_trip_carries_the_bore_stress(tmp_path):
     m = RingModel.build(bearing=b, cam=STEEL, rho_ref=0.02, a_ref=1.05e-4, length=0.01,
                         ring_mesh=RingMeshOptions(n_bore=64), mesh=MeshOptions(a_over_h=8))
     r = solve_ring(m, F=1500.0, rho=0.02)
+    back = pickle.loads(pickle.dumps(r))  # results cross process boundaries (no solver inside)
+    np.testing.assert_array_equal(back.hoop, r.hoop)
     path = write_ring_vtu(m, r, tmp_path / "ring.vtu")
     mesh = meshio.read(path)
     assert set(np.unique(mesh.cell_data["body"][0])) == {0, 1, 2}
@@ -55,3 +58,13 @@ def test_ring_geo_opens_and_meshes_in_gmsh():
         gmsh.finalize()
     assert names == {"ring_contact", "ring_bore", "ring", "pin_surface", "pin"}
     assert all(n > 500 for n in n_tri), n_tri
+
+
+def test_wall_study_figure_is_a_png(tmp_path):
+    from femcam.viz.bodies import plot_wall_study
+
+    w = np.array([1.5e-3, 3e-3])
+    s = {"wall": w, "hoop_max": np.array([3e8, 1.2e8]), "p0": np.array([0.99, 1.0]),
+         "p0_solid": np.ones(2), "a": np.array([1.01, 1.0]), "a_solid": np.ones(2)}
+    png = plot_wall_study({"needles": s}, tmp_path / "w.png")
+    assert png.stat().st_size > 5000 and png.read_bytes()[:4] == b"\x89PNG"

@@ -10,7 +10,9 @@ multi-contact active-set solve), ``model`` (:class:`RingModel`: build once), ``s
 
 from .geometry import SUPPORTS, RollerBearing, bearing_problems, needle_approach
 from .model import RingMeshOptions, RingModel
+from .rows import CSV_COLUMNS, build_for, ring_rows, to_csv_columns
 from .solve import RingResult, solve_ring
 
-__all__ = ["SUPPORTS", "RingMeshOptions", "RingModel", "RingResult", "RollerBearing",
-           "bearing_problems", "needle_approach", "solve_ring"]
+__all__ = ["CSV_COLUMNS", "SUPPORTS", "RingMeshOptions", "RingModel", "RingResult", "RollerBearing",
+           "bearing_problems", "build_for", "needle_approach", "ring_rows", "solve_ring",
+           "to_csv_columns"]
