@@ -34,6 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _validate as chk
+from ..errors import InputError
 from ..materials import STEEL, Material
 from ..scene import roller_support_problems
 
@@ -89,7 +90,7 @@ class RollerBearing:
         problems = bearing_problems(Ro=self.Ro, Ri=self.Ri, support=self.support, Rp=self.Rp,
                                     c=self.c, Z=int(self.Z), r_n=self.r_n)
         if problems:
-            raise chk.fail("RollerBearing", "", "", "; ".join(problems))
+            raise InputError("; ".join(problems))  # each names its key, value and unit
         if self.c > 0.05 * self.Ri:
             raise chk.fail("c", self.c, "m", f"the clearance is {self.c / self.Ri:.3g} of the bore "
                            "radius: the linearised gap (c << Ri) does not hold beyond 0.05 Ri")
