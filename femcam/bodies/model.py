@@ -30,8 +30,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _validate as chk
+from .._threads import single_threaded_blas
 from ..fe.contact import load_matrix, trapezoid_weights
-from ..fe.elasticity import assemble_body, stress_operator
+from ..fe.elasticity import CHUNK, assemble_body, stress_operator
 from ..materials import Material
 from ..mesh import MeshOptions, _mesh_body
 from .contact import arc_load_matrix, arc_weights, radial_measure
@@ -64,6 +65,34 @@ def _hoop_rows(body, nodes, theta):
 
     return (sp.diags(s * s) @ S[:n] + sp.diags(c * c) @ S[n:2 * n]
             - sp.diags(2 * s * c) @ S[2 * n:])
+
+
+def _solve_rows(body, B: np.ndarray, rows: np.ndarray) -> np.ndarray:
+    """``(K^-1 B)[rows]`` (rows: global DOFs; zero on supports) without the full
+    ``(n_dofs, k)`` displacement array: chunked SuperLU solves with one BLAS thread (as
+    ``Body.solve``), keeping only the rows the condensation needs: the full-size zero, copy and
+    scatter arrays are not made (seed 002 needle roller, 55 770 DOFs, 229 columns: condensation
+    median 0.96 s vs 1.08 s over 8 fresh runs each, load average ~2; identical to 3e-14)."""
+    pos = np.full(body.n_dofs, -1)
+    pos[body.free] = np.arange(body.free.size)
+    r = pos[rows]
+    ok = r >= 0
+    Bf = B[body.free]
+    out = np.zeros((rows.size, B.shape[1]))
+    with single_threaded_blas():
+        for j in range(0, B.shape[1], CHUNK):
+            x = body.lu.solve(np.asfortranarray(Bf[:, j:j + CHUNK]))
+            out[ok, j:j + CHUNK] = x[r[ok]]
+    return out
+
+
+def _condense(body, B, meas_dofs, extra=None):
+    """Rows ``meas_dofs`` of ``K^-1 B`` and, for a sparse operator ``extra`` on the DOFs,
+    ``extra @ K^-1 B`` (computed on its nonzero columns only)."""
+    cols = np.zeros(0, dtype=np.int64) if extra is None else np.unique(extra.tocsr().indices)
+    n = meas_dofs.size
+    U = _solve_rows(body, B, np.concatenate([meas_dofs, cols]))
+    return U[:n], (None if extra is None else np.asarray(extra.tocsc()[:, cols] @ U[n:]))
 
 
 @dataclass(frozen=True, eq=False)
@@ -142,17 +171,16 @@ class RingModel:
         nc = x.size
         # cam: pressure pushes it in -y; the gap grows with -u_y (as femcam.fe.model)
         By_cam = load_matrix(camb, cam_geo.contact, x, 1)
-        A_cam = camb.solve(By_cam)[camb.basis.nodal_dofs[1, cam_geo.contact]]
+        A_cam, _ = _condense(camb, By_cam, camb.basis.nodal_dofs[1, cam_geo.contact])
         # ring: cam pressure +y at the fine arc, bore pressure +e_r (pushes the ring outward)
         B_ring = np.hstack([load_matrix(ring, ring_geo.contact, x, 1),
                             arc_load_matrix(ring, bore, centre, closed=True)])
-        U = ring.solve(B_ring)
         dx, dy, ex, ey = radial_measure(ring, bore, centre)
-        meas = np.vstack([U[ring.basis.nodal_dofs[1, ring_geo.contact]],
-                          ex[:, None] * U[dx] + ey[:, None] * U[dy]])
-        A = meas.copy()
+        cdofs = ring.basis.nodal_dofs[1, ring_geo.contact]
+        Um, H = _condense(ring, B_ring, np.concatenate([cdofs, dx, dy]), _hoop_rows(ring, bore, theta))
+        Ux, Uy = Um[nc:nc + n_b], Um[nc + n_b:]
+        A = np.vstack([Um[:nc], ex[:, None] * Ux + ey[:, None] * Uy])
         A[:nc, :nc] += A_cam
-        H = np.asarray(_hoop_rows(ring, bore, theta) @ U)
         A_pin = np.zeros((n_b, n_b))
         loads = {"ring": B_ring, "cam": -By_cam}
         if pin_geo is not None:
@@ -162,9 +190,9 @@ class RingModel:
             pin = assemble_body(pin_geo, b.pin, plane=plane, element=element, supports=sup_p)
             bodies["pin"] = pin
             Bp = arc_load_matrix(pin, psurf, centre, closed=True, direction=-1.0, scale=b.Ri / b.Rp)
-            Up = pin.solve(Bp)
             pdx, pdy, pex, pey = radial_measure(pin, psurf, centre, direction=-1.0)
-            A_pin = pex[:, None] * Up[pdx] + pey[:, None] * Up[pdy]
+            Up, _ = _condense(pin, Bp, np.concatenate([pdx, pdy]))
+            A_pin = pex[:, None] * Up[:n_b] + pey[:, None] * Up[n_b:]
             A[nc:, nc:] += A_pin
             loads["pin"] = Bp
         t_cond = time.perf_counter() - t1
