@@ -1,11 +1,12 @@
 """Pin in a hole with clearance, small to large contact arcs: femcam's ring-pin solution against
 an independent series solution of the conformal contact problem written here.
 
-The reference (Persson 1964's problem; Ciavarella & Decuzzi 2001 give its closed form for an
-infinite plate, which is not reproduced here: we solve the same integral equation numerically, for
-the femcam geometry) is written from first principles:
+The reference is Persson's (1964) problem (Ciavarella & Decuzzi 2001 give a closed-form
+approximation for a pin in an infinite plate; its printed formulas were not available here, so the
+same problem is solved numerically, for the femcam geometry: a finite ring loaded by the cam),
+written from first principles:
 
-* **Elasticity per Fourier mode** (Michell 1899; Barber 2010 Table 8.1 for the displacements):
+* **Elasticity per Fourier mode** (Michell 1899; Barber 2010 ch. 8-9 for the displacements):
   for a load ``cos(n theta)`` (n >= 2) the Airy function ``f(r) cos(n theta)`` with
   ``f = r^n, r^-n, r^(n+2), r^(2-n)`` gives, with ``kappa = 3 - 4 nu`` (plane strain),
   ``sigma_rr = (m - n^2) r^(m-2) cos``, ``sigma_rt = n (m - 1) r^(m-2) sin`` and
@@ -210,7 +211,7 @@ def test_pin_contact_arc_and_peak_match_the_conformal_series_small_to_large_arcs
       (femcam's arc is nodal: ``pin_arc / 2 <= alpha < pin_arc / 2 + h_bore``), widened by the
       reference grid (0.125 deg) and 0.5 deg of mesh error (taken from the run: the elastic pin
       at 15 MN/m, 73 deg, lies 0.47 deg beyond the reference bracket; all others <= 0.3 deg).
-    * p0 (the bore node on the load line): within 0.5 % (rigid pin: measured <= 0.1 %).
+    * p0 (the bore node on the load line): within 0.5 % (rigid pin: measured <= 0.03 %).
     * elastic pin: femcam clamps the pin's mesh vertices with r <= 0.2 Rp (three vertices of
       this mesh, at 0.10, 0.14, 0.20 Rp), not the whole core circle; the stud model is
       therefore bracketed by two references, clamped on r <= 0.2 Rp and on r <= 0.05 Rp (they
