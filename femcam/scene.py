@@ -36,6 +36,11 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
     [follower]         roller_width_mm?, crown? = "none"|"circular"|"logarithmic",
                        crown_radius_mm? | crown_drop_um?, edge_radius_mm?, misalignment_deg?
     [cam]?             face_width_mm?  (cam face width; follower.face_width_mm stays the 2D length)
+    roller on a pin or needles (femcam.bodies; docs/bodies.md): [follower] roller_support? =
+                       "solid"|"pin"|"needles", roller_bore_mm (ring bore RADIUS), pin_radius_mm,
+                       pin_clearance_um, needle_count, needle_radius_mm; [materials.pin]?
+                       (pin and needles, default: the roller's); [cam]? bore_mm (shaft bore
+                       RADIUS), [materials.shaft]?
     [fe]?, [wear]?     passed through unchanged (dicts) to the FE/sweep and wear layers
 
 Only numpy/scipy and the standard library (``tomllib``) are imported.
@@ -57,7 +62,7 @@ from .errors import ConvergenceError, InputError, SceneError, UndercutError
 from .halfspace.crown import RollerProfile
 from .kinematics import CamProgram, dwell, fall, law, rise
 from .loads import FollowerDynamics, LoadResult, contact_force
-from .materials import E_MAX, E_MIN, Material
+from .materials import E_PHYSICAL, Material
 from .profile import CamProfile, bool_intervals, cam_profile, make_follower
 
 try:  # Python >= 3.11
@@ -236,6 +241,84 @@ def _finite_length(ck: _Checker, raw: dict, fo: dict, ftype) -> dict:
         ck.add("follower", msg)
         return {}
     return out
+
+# ---- real bodies (femcam.bodies): the roller as a ring on a pin or needles, the cam on a shaft
+_FOLLOWER.update({"roller_support": ("", None, "str", False), "roller_bore_mm": ("mm", 1e-3, "pos", False),
+                  "pin_radius_mm": ("mm", 1e-3, "pos", False),
+                  "pin_clearance_um": ("um", 1e-6, "nonneg", False),
+                  "needle_count": ("(count)", 1.0, "pos", False),
+                  "needle_radius_mm": ("mm", 1e-3, "pos", False)})
+_CHOICES["roller_support"] = ("solid", "pin", "needles")
+_CAM["bore_mm"] = ("mm", 1e-3, "pos", False)  # shaft bore radius (femcam.bodies)
+_BODY_MATERIALS = ("pin", "shaft")
+_SUPPORT_KEYS = {"solid": (), "pin": ("roller_bore_mm", "pin_radius_mm", "pin_clearance_um"),
+                 "needles": ("roller_bore_mm", "pin_radius_mm", "pin_clearance_um", "needle_count",
+                             "needle_radius_mm")}
+
+
+def roller_support_problems(*, Ro, Ri, support, Rp, c, Z, r_n) -> list[str]:
+    """Geometry problems of a ring support (SI in, messages in the scene's mm / um): bore inside
+    the roller, pin + clearance = bore (pin), pin + 2 needles + clearance = bore and needles
+    that fit around the pitch circle (needles)."""
+    out = []
+    if support == "solid":
+        return out
+    if not 0.0 < Ri < Ro:
+        return [f"roller_bore_mm = {Ri * 1e3:g} mm: must be in (0, roller_radius_mm = {Ro * 1e3:g} mm)"]
+    if support == "pin":
+        if not math.isclose(Rp + c, Ri, rel_tol=1e-9, abs_tol=1e-12):
+            out.append(f"pin_radius_mm + pin_clearance_um = {Rp * 1e3:g} mm + {c * 1e6:g} um = "
+                       f"{(Rp + c) * 1e3:g} mm: must equal roller_bore_mm = {Ri * 1e3:g} mm")
+        return out
+    if Z < 3 or Z != int(Z):
+        out.append(f"needle_count = {Z:g}: must be a whole number >= 3 (fewer cannot hold the ring)")
+    if not math.isclose(Rp + 2 * r_n + c, Ri, rel_tol=1e-9, abs_tol=1e-12):
+        out.append(f"pin_radius_mm + 2 needle_radius_mm + pin_clearance_um = {Rp * 1e3:g} + "
+                   f"{2 * r_n * 1e3:g} mm + {c * 1e6:g} um = {(Rp + 2 * r_n + c) * 1e3:g} mm: must "
+                   f"equal roller_bore_mm = {Ri * 1e3:g} mm")
+    pitch = Ri - r_n
+    if Z >= 3 and pitch > 0 and 2 * pitch * math.sin(math.pi / Z) < 2 * r_n:
+        zmax = int(math.pi / math.asin(min(1.0, r_n / pitch)))
+        out.append(f"needle_count = {Z:g} needles of radius {r_n * 1e3:g} mm do not fit around the "
+                   f"pitch circle of radius {pitch * 1e3:g} mm (they overlap by "
+                   f"{(2 * r_n - 2 * pitch * math.sin(math.pi / Z)) * 1e6:.3g} um); at most {zmax} fit")
+    return out
+
+
+def _check_bodies(ck, raw: dict, fo: dict, mats: dict) -> dict:
+    """The real-body keys: which apply, their geometry, the pin/shaft materials. Returns the SI
+    dict stored in ``Scene.bodies`` (empty for today's solid roller and local cam body)."""
+    fraw = raw.get("follower", {}) if isinstance(raw.get("follower"), dict) else {}
+    support = fo.get("roller_support", "solid")
+    given = [k for k in _SUPPORT_KEYS["needles"] if k in fraw]
+    needed = _SUPPORT_KEYS.get(support, ())
+    for k in given:
+        if k not in needed:
+            ck.add(f"follower.{k}", f"= {_fmt(fraw[k])}: not used with roller_support = {support!r}")
+    for k in needed:
+        if k not in fraw:
+            ck.add(f"follower.{k}", f"missing: required with roller_support = {support!r} "
+                   f"(unit: {_FOLLOWER[k][0]})")
+    out = {}
+    if needed and all(k in fo for k in needed) and "roller_radius_mm" in fo:
+        geo = dict(Ro=fo["roller_radius_mm"], Ri=fo["roller_bore_mm"], support=support,
+                   Rp=fo["pin_radius_mm"], c=fo["pin_clearance_um"], Z=fo.get("needle_count", 0.0),
+                   r_n=fo.get("needle_radius_mm", 0.0))
+        for msg in roller_support_problems(**geo):
+            ck.add("follower", msg)
+        out.update(geo, Z=int(geo["Z"]))
+    # [cam] is checked once, by _finite_length (one _CAM schema); here only a valid bore is used
+    bore = raw.get("cam", {}).get("bore_mm") if isinstance(raw.get("cam"), dict) else None
+    ok = isinstance(bore, int | float) and not isinstance(bore, bool) and math.isfinite(bore) and bore > 0
+    cam = {"bore_mm": bore * 1e-3} if ok else {}
+    if "bore_mm" in cam and "base_radius_mm" in fo and cam["bore_mm"] >= fo["base_radius_mm"]:
+        ck.add("cam.bore_mm", f"= {_fmt(raw['cam']['bore_mm'])} mm: the shaft bore radius must be < "
+               f"base_radius_mm = {fo['base_radius_mm'] * 1e3:g} mm")
+    if "bore_mm" in cam:
+        out["cam_bore"] = cam["bore_mm"]
+    out.update({k: v for k, v in mats.items() if k in _BODY_MATERIALS})
+    return out
+# ---- end of the real-bodies block
 
 
 def _fmt(v) -> str:
@@ -443,6 +526,9 @@ class Scene:
     raw: dict = field(default_factory=dict, repr=False)
     train: TrainModel | None = None  # [dynamics] model one_dof/two_dof; None: rigid eq. 11
     steps_per_rev: int | None = None
+    #: real bodies (femcam.bodies): roller support geometry (SI: Ro, Ri, support, Rp, c, Z, r_n),
+    #: cam_bore (m) and the "pin" / "shaft" Materials; empty for the solid roller
+    bodies: dict = field(default_factory=dict)
 
     @property
     def rpm(self) -> float:
@@ -583,6 +669,7 @@ def load_scene(path) -> Scene:
     mats = _materials(ck, raw)
     tribo = _tribology(ck, raw, mats)
     finite = _finite_length(ck, raw, fo, fo.get("type"))
+    bodies = _check_bodies(ck, raw, fo, mats)
     # contact and pass-through tables
     co = ck.table(raw.get("contact", {}), "contact", _CONTACT)
     for t in ("fe", "wear"):
@@ -595,7 +682,7 @@ def load_scene(path) -> Scene:
                  roller=mats["roller"], length=fo["face_width_mm"], mu=co.get("friction", 0.0),
                  plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=dict(raw.get("fe", {})),
                  wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw, train=train,
-                 tribology=tribo, finite_length=finite,
+                 tribology=tribo, finite_length=finite, bodies=bodies,
                  steps_per_rev=steps_per_rev)
 
 
@@ -765,13 +852,13 @@ def _follower_dynamics(ck: _Checker, g: dict, dy: dict) -> FollowerDynamics | No
 
 def _material(ck: _Checker, alias: str, m: dict, given: dict) -> Material | None:
     """The Material of one checked [materials.<alias>] table (None, with a problem added, for a
-    modulus outside :data:`femcam.materials.E_MIN`..``E_MAX``)."""
-    try:
-        return Material(E=m["E_GPa"], nu=m["nu"], name=m.get("name", alias), hardness=m.get("hardness_MPa"))
-    except InputError:  # E outside the physical range: a unit mistake (Pa typed as GPa, say)
+    modulus outside :data:`femcam.materials.E_PHYSICAL`)."""
+    lo, hi = E_PHYSICAL
+    if not lo <= m["E_GPa"] <= hi:  # a unit mistake (Pa typed as GPa, say)
         ck.add(f"materials.{alias}.E_GPa", f"= {_fmt(given['E_GPa'])} GPa: must be "
-               f"in [{E_MIN / 1e9:g}, {E_MAX / 1e9:g}] GPa (soft elastomers to diamond)")
+               f"in [{lo / 1e9:g}, {hi / 1e9:g}] GPa (soft elastomers to diamond)")
         return None
+    return Material(E=m["E_GPa"], nu=m["nu"], name=m.get("name", alias), hardness=m.get("hardness_MPa"))
 
 
 def _body_material(ck: _Checker, mats: dict, k: str, alias: str, given) -> None:
@@ -794,12 +881,13 @@ def _materials(ck: _Checker, raw: dict) -> dict:
             ck.add("materials", f"= {_fmt(mraw)}: must be a table")
         return mats
     for k in mraw:
-        if k not in ("cam", "roller", "follower"):
-            ck.add(f"materials.{k}", "unknown material table; use [materials.cam] and "
-                   "[materials.roller] (or [materials.follower])")
+        if k not in ("cam", "roller", "follower") + _BODY_MATERIALS:
+            ck.add(f"materials.{k}", "unknown material table; use [materials.cam], [materials.roller] "
+                   "(or [materials.follower]), [materials.pin], [materials.shaft]")
     if "roller" in mraw and "follower" in mraw:
         ck.add("materials", "give [materials.roller] or its alias [materials.follower], not both")
-    for k, alias in (("cam", "cam"), ("roller", "roller"), ("roller", "follower")):
+    for k, alias in (("cam", "cam"), ("roller", "roller"), ("roller", "follower"), ("pin", "pin"),
+                     ("shaft", "shaft")):
         if alias in mraw:
             _body_material(ck, mats, k, alias, mraw[alias])
     if "materials" in raw:

@@ -24,7 +24,8 @@ def read_csv(path):
 def test_three_example_scenes_ship():
     assert {p.stem for p in SCENES} == {"seed000_rise", "seed002_study_model", "seed003_knife_edge",
                                         "seed002_dynamic",
-                                        "seed002_assess", "seed002_crowned"}
+                                        "seed002_assess", "seed002_crowned",
+                                        "seed002_needle_roller"}
 
 
 @pytest.mark.parametrize("scene", SCENES, ids=lambda p: p.stem)
@@ -41,7 +42,8 @@ def test_run_writes_csv_and_pngs(scene, tmp_path, capsys):
     omega = {"seed000_rise": 1.0, "seed002_study_model": 20 * math.pi, "seed003_knife_edge": 10 * math.pi,
              "seed002_dynamic": 20 * math.pi,
              "seed002_assess": 20 * math.pi,
-             "seed002_crowned": 20 * math.pi}
+             "seed002_crowned": 20 * math.pi,
+             "seed002_needle_roller": 20 * math.pi}
     w = omega[scene.stem]
     dsdth = np.gradient(d["s_mm"] * 1e-3, np.radians(d["theta_deg"]))
     vmax = np.max(np.abs(d["v_m_s"]))

@@ -91,8 +91,15 @@ def _element(element: str):
 
 
 def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strain",
-                  element: str = "P2", ordering: str = "MMD_AT_PLUS_A") -> Body:
-    """Assemble ``K`` of one body, clamp its fixed support and factorise the free block."""
+                  element: str = "P2", ordering: str = "MMD_AT_PLUS_A",
+                  supports: tuple | None = None) -> Body:
+    """Assemble ``K`` of one body, clamp its fixed support and factorise the free block.
+
+    ``supports``: optional ``((node, component), ...)`` point supports (component 0 x, 1 y)
+    used INSTEAD of the clamped ``geometry.fixed`` curve, e.g. a statically determinate
+    3-DOF support of a floating body loaded by self-equilibrated contact forces
+    (:mod:`femcam.bodies`): its reactions are then zero.
+    """
     from skfem import Basis, MeshTri, asm
     from skfem.models.elasticity import linear_elasticity
 
@@ -105,6 +112,8 @@ def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strai
     fixed_nodes[geometry.fixed] = True
     fac = np.nonzero(fixed_nodes[mesh.facets].all(axis=0))[0]
     fixed = basis.get_dofs(fac).all()
+    if supports is not None:
+        fixed = np.array([basis.nodal_dofs[c, n] for n, c in supports], dtype=np.int64)
     free = np.setdiff1d(np.arange(basis.N), fixed)
     t1 = time.perf_counter()
     Kff = K[free][:, free].tocsc()
