@@ -81,7 +81,36 @@ _MATERIAL = {"E_GPa": ("GPa", 1e9, "pos", True), "nu": ("(dimensionless)", 1.0, 
 _CONTACT = {"friction": ("(dimensionless)", 1.0, "nonneg", False), "plane": ("", None, "str", False),
             "sliding": ("", None, "str", False)}
 _CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", "flat_faced"),
-            "plane": ("strain", "stress"), "sliding": ("+x", "-x")}
+            "plane": ("strain", "stress"), "sliding": ("+x", "-x"),
+            "hardness_law": ("exponential", "linear")}
+# --- coated and case-hardened bodies (femcam.layers): [materials.<body>.coating|case] ---------
+_COATING = {"thickness_um": ("um", 1e-6, "pos", True), "E_GPa": ("GPa", 1e9, "pos", True),
+            "nu": ("(dimensionless)", 1.0, "nu", True), "name": ("", None, "str", False),
+            "interface_shear_strength_MPa": ("MPa", 1e6, "pos", False),
+            "hardness_MPa": ("MPa", 1e6, "pos", False)}
+_CASE = {"depth_mm": ("mm", 1e-3, "pos", True), "hardness_law": ("", None, "str", False),
+         "surface_hardness_HV": ("HV", 9.80665e6, "pos", False),
+         "core_hardness_HV": ("HV", 9.80665e6, "pos", False),
+         "surface_yield_MPa": ("MPa", 1e6, "pos", False), "core_yield_MPa": ("MPa", 1e6, "pos", False)}
+
+
+def _layers(ck, raw: dict) -> dict:
+    """``{body: {"coating": {...}, "case": {...}}}`` (SI, checked) from [materials.<body>.*]."""
+    out = {}
+    mraw = raw.get("materials", {}) if isinstance(raw.get("materials", {}), dict) else {}
+    for alias, tabs in mraw.items():
+        body = "roller" if alias == "follower" else alias
+        for t, spec in (("coating", _COATING), ("case", _CASE)):
+            if isinstance(tabs, dict) and t in tabs:
+                out.setdefault(body, {})[t] = ck.table(tabs[t], f"materials.{alias}.{t}", spec)
+        case = out.get(body, {}).get("case", {})
+        pairs = [("surface_hardness_HV", "core_hardness_HV"), ("surface_yield_MPa", "core_yield_MPa")]
+        given = [p for p in pairs if any(k in case for k in p)]
+        if case and (len(given) != 1 or not all(k in case for k in given[0])):
+            ck.add(f"materials.{alias}.case", "give surface_hardness_HV and core_hardness_HV, or "
+                   "surface_yield_MPa and core_yield_MPa (one complete pair)")
+    return out
+# --- end of the layers block -------------------------------------------------------------------
 
 
 def _fmt(v) -> str:
@@ -236,6 +265,8 @@ class Scene:
     source: str = ""
     fe: dict = field(default_factory=dict)
     wear: dict = field(default_factory=dict)
+    #: coatings and cases per body (SI, checked; femcam.layers.scene_layers builds them)
+    layers: dict = field(default_factory=dict)
     source_path: str = ""
     raw: dict = field(default_factory=dict, repr=False)
 
@@ -357,6 +388,7 @@ def load_scene(path) -> Scene:
     fo, follower = _follower(ck, raw)
     dyn = _dynamics(ck, raw)
     mats = _materials(ck, raw)
+    layers = _layers(ck, raw)
     # contact and pass-through tables
     co = ck.table(raw.get("contact", {}), "contact", _CONTACT)
     for t in ("fe", "wear"):
@@ -368,7 +400,7 @@ def load_scene(path) -> Scene:
                  program=program, follower=follower, dynamics=dyn, omega=omega, cam=mats["cam"],
                  roller=mats["roller"], length=fo["face_width_mm"], mu=co.get("friction", 0.0),
                  plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=dict(raw.get("fe", {})),
-                 wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw)
+                 wear=dict(raw.get("wear", {})), layers=layers, source_path=str(path), raw=raw)
 
 
 def _read_toml(path: Path) -> dict:
@@ -528,7 +560,7 @@ def _materials(ck: _Checker, raw: dict) -> dict:
         ck.add("materials", "give [materials.roller] or its alias [materials.follower], not both")
     for k, alias in (("cam", "cam"), ("roller", "roller"), ("roller", "follower")):
         if alias in mraw:
-            m = ck.table(mraw[alias], f"materials.{alias}", _MATERIAL)
+            m = ck.table(mraw[alias], f"materials.{alias}", _MATERIAL, extra=("coating", "case"))
             if "E_GPa" in m and "nu" in m:
                 mats[k] = Material(E=m["E_GPa"], nu=m["nu"], name=m.get("name", alias),
                                    hardness=m.get("hardness_MPa"))

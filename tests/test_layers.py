@@ -236,7 +236,7 @@ def test_bad_inputs_are_refused_with_numbers():
     with pytest.raises(InputError, match="must exceed the case-depth criterion"):
         Case(depth=1e-3, surface_hardness=320 * HV, core_hardness=300 * HV)
     c = Case(depth=8e-3, surface_hardness=700 * HV, core_hardness=300 * HV)
-    with pytest.raises(InputError, match=r"case.depth = 8 mm: must be < half the cam body size"):
+    with pytest.raises(InputError, match=r"case.depth = 8 mm: must be < 5 mm, half the cam body size 10 mm"):
         c.check_body(0.01)
     coat = Coating(thickness=2e-6, material=Material(E=200e9, nu=0.2))
     with pytest.raises(InputError, match="coating.interface_shear_strength.*needed"):
@@ -247,3 +247,37 @@ def test_bad_inputs_are_refused_with_numbers():
         interface_stress(ContactModel.build(Rr=RR, rho_ref=RHO, cam=STEEL, roller=STEEL, length=L,
                                             a_ref=1.5e-4, mesh=MeshOptions(a_over_h=4))
                          .solve(F=F, rho=RHO))
+
+
+# ------------------------------------------------------------------------------ scene
+def test_scene_coating_and_case_keys(tmp_path):
+    from pathlib import Path
+
+    from femcam.errors import SceneError
+    from femcam.layers import scene_layers
+    from femcam.scene import load_scene
+
+    ex = Path(__file__).parent.parent / "examples" / "seed002_coated.toml"
+    lay = scene_layers(load_scene(ex))
+    body, coat = lay["coating"]
+    assert body == "roller" and coat.thickness == pytest.approx(2.5e-6)
+    assert coat.material.E == pytest.approx(170e9) and coat.interface_shear_strength == pytest.approx(250e6)
+    cb, case = lay["case"]
+    assert cb == "cam" and case.surface_hardness == pytest.approx(700 * HV)
+    assert case.depth == pytest.approx(0.3e-3)
+    text = ex.read_text().replace("thickness_um = 2.5", "thickness_mm = 0.0025").replace(
+        'hardness_law = "exponential"', 'hardness_law = "erf"').replace(
+        "core_hardness_HV = 300.0", "")
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text)
+    with pytest.raises(SceneError) as e:
+        load_scene(bad)
+    msg = str(e.value)
+    assert "materials.roller.coating.thickness_mm" in msg and "thickness_um" in msg
+    assert "materials.roller.coating.thickness_um: missing required key (unit: um)" in msg
+    assert "materials.cam.case.hardness_law = 'erf'" in msg
+    assert "one complete pair" in msg
+    deep = tmp_path / "deep.toml"
+    deep.write_text(ex.read_text().replace("depth_mm = 0.3", "depth_mm = 6.0"))
+    with pytest.raises(InputError, match="case.depth = 6 mm: must be < 5 mm, half the cam body size 10 mm"):
+        scene_layers(load_scene(deep))

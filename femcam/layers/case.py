@@ -113,8 +113,8 @@ class Case:
         """Refuse a case deeper than half the body (``size``, m)."""
         if self.depth >= 0.5 * size:
             raise _validate.fail("case.depth", self.depth * 1e3, "mm",
-                                 f"must be < half the {name} body size {0.5 * size * 1e3:.4g} mm "
-                                 "(a through-hardened body is not a case)")
+                                 f"must be < {0.5 * size * 1e3:.4g} mm, half the {name} body size "
+                                 f"{size * 1e3:.4g} mm (a through-hardened body is not a case)")
 
 
 @dataclass(frozen=True)
