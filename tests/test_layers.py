@@ -93,6 +93,7 @@ def layered_contact(t, coat, sub=STEEL, other=STEEL, F=F, n=4096, period_over_a=
     lk = np.log(np.clip(ak[pos] * t, grid[0], grid[-1]))
     for j in range(3):
         modes[pos, j] = np.interp(lk, np.log(grid), tab[:, j])
+    modes[~pos, 2] = -1.0  # k = 0: the mean pressure reaches any depth undiminished
     c = np.zeros(n)
     c[pos] = modes[pos, 0] / (ak[pos] * mu2) + 2 * (1 - other.nu**2) / (other.E * ak[pos])
     g = np.real(np.fft.ifft(c))
@@ -126,6 +127,11 @@ def test_reference_is_flamant_and_hertz_for_a_homogeneous_body():
     assert m[:, 0] == pytest.approx(0.7, rel=1e-9), "k W mu = 1 - nu (compliance 2(1-nu^2)/(E k))"
     assert m[:, 1] == pytest.approx(-kt * np.exp(-kt), abs=1e-9), "Flamant shear -kz e^-kz"
     assert m[:, 2] == pytest.approx(-(1 + kt) * np.exp(-kt), abs=1e-9), "Flamant sz"
+    _, _, tau, sn = layered_contact(0.5 * _hertz(STEEL.E, STEEL.nu, STEEL.E, STEEL.nu)[0], STEEL)
+    a, p0 = _hertz(STEEL.E, STEEL.nu, STEEL.E, STEEL.nu)
+    # Hertz at z = a/2 (Johnson 1985 eq. 4.75): sz(0) = -p0 a / sqrt(a^2 + z^2), max |txz| = 0.25 p0
+    assert sn.min() == pytest.approx(-p0 / math.sqrt(1.25), rel=2e-3)
+    assert np.abs(tau).max() == pytest.approx(0.25 * p0, rel=2e-3)
     a, p0 = _hertz(210e9, 0.3, 210e9, 0.3)
     x, p, _, _ = layered_contact(0.5 * a, STEEL)
     assert p.max() == pytest.approx(p0, rel=3e-3), "IC contact p0 vs Hertz (dx = a/51, period 80a)"
@@ -178,10 +184,11 @@ def test_layered_half_space_reference(E_c):
     it = interface_stress(r, "roller")
     assert r.p0_nodal == pytest.approx(p.max(), rel=5e-3), "p0 (nodal) vs layered reference"
     # FE interface tractions: nodal averages of P2 stresses at a/h = 10 on a curved interface
-    # (R = 10 mm vs the flat reference); measured 1.4 % (tau) and 2.3 % (sigma_n)
+    # (R = 10 mm vs the flat reference); measured 1.1-1.4 % (tau; also 1.0 % for a homogeneous
+    # body at a/h = 10 and 20 against Hertz's 0.25 p0, so not a layer effect) and < 0.5 % (sigma_n)
     assert it.tau_abs_max == pytest.approx(np.abs(tau).max(), rel=3e-2), "max |interface shear|"
     assert abs(it.x_tau_max) == pytest.approx(abs(x[np.argmax(np.abs(tau))]), abs=0.15 * a0)
-    assert it.sigma_n_min == pytest.approx(sn.min(), rel=3e-2), "interface normal stress"
+    assert it.sigma_n_min == pytest.approx(sn.min(), rel=1e-2), "interface normal stress"
 
 
 @pytest.mark.slow
