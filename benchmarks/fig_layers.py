@@ -2,7 +2,7 @@
 examples/seed002_coated.toml (DLC roller, nitrided cam), and the layered-solid comparison
 (FE vs the Fourier layered half-space reference of tests/test_layers.py).
 
-Run:  python benchmarks/fig_layers.py [--step-deg 5] [--a-over-h 10]
+Run:  python benchmarks/fig_layers.py [--step-deg 5] [--a-over-h 20] [--no-angles] [--no-reference]
 Writes docs/img/layers_seed002.png and docs/img/layers_reference.png and prints the numbers.
 """
 
@@ -101,7 +101,7 @@ def reference_figure():
 if __name__ == "__main__":
     args = sys.argv[1:]
     step = float(args[args.index("--step-deg") + 1]) if "--step-deg" in args else 5.0
-    aoh = float(args[args.index("--a-over-h") + 1]) if "--a-over-h" in args else 10.0
+    aoh = float(args[args.index("--a-over-h") + 1]) if "--a-over-h" in args else 20.0
     if "--no-angles" not in args:
         angles_figure(step, aoh)
     if "--no-reference" not in args:
