@@ -155,6 +155,19 @@ def test_thin_coating_reproduces_the_uncoated_body():
     assert r.p0_nodal == pytest.approx(p00, rel=1e-2), "p0 vs uncoated Hertz 2w/(pi a)"
     assert r.a == pytest.approx(a0, rel=2e-2), "a vs uncoated Hertz sqrt(4wR/(pi E*))"
     assert m.bodies["roller"].geometry.coating.sum() > 0 and m.bodies["roller"].lam_e is not None
+    # case-core margin of the (uncoated) cam through layer_rows vs a hand calculation on the
+    # Hertz on-axis tau_1 (Johnson 1985 eq. 4.75) with k = H / (3 sqrt 3), exponential law
+    case = Case(depth=0.1e-3, surface_hardness=700 * HV, core_hardness=300 * HV)
+    rows = layer_rows(m, [F], [RHO], [0.0], case=case)
+    z = np.linspace(0.0, 4 * max(a0, 0.1e-3), 4001)
+    sx = -p00 / a0 * ((a0**2 + 2 * z**2) / np.sqrt(a0**2 + z**2) - 2 * z)
+    sz = -p00 * a0 / np.sqrt(a0**2 + z**2)
+    H = 300 * HV + 400 * HV * np.exp(-z * math.log(8.0) / 0.1e-3)
+    u = (sx - sz) / 2 / (H / (3 * math.sqrt(3)))
+    # FE tau_1 maximum within 2 % of Hertz (tests/test_fe_contact.py); the FE maximum is over
+    # the nodes (not only the axis): same for frictionless line contact
+    assert rows["case_margin"][0] == pytest.approx(1 / np.abs(u).max(), rel=2.5e-2)
+    assert rows["case_z_at_max_mm"][0] == pytest.approx(z[np.argmax(np.abs(u))] * 1e3, abs=0.1 * a0 * 1e3)
 
 
 @pytest.mark.slow
@@ -189,6 +202,9 @@ def test_layered_half_space_reference(E_c):
     assert it.tau_abs_max == pytest.approx(np.abs(tau).max(), rel=3e-2), "max |interface shear|"
     assert abs(it.x_tau_max) == pytest.approx(abs(x[np.argmax(np.abs(tau))]), abs=0.15 * a0)
     assert it.sigma_n_min == pytest.approx(sn.min(), rel=1e-2), "interface normal stress"
+    coat_s = Coating(thickness=0.5 * a0, material=coat, interface_shear_strength=300e6, hardness=10e9)
+    rows = layer_rows(r.model, [F], [RHO], [0.0], coating=coat_s)
+    assert rows["interface_utilisation"][0] == pytest.approx(np.abs(tau).max() / 300e6, rel=3e-2)
 
 
 @pytest.mark.slow
