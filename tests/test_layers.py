@@ -304,3 +304,22 @@ def test_scene_coating_and_case_keys(tmp_path):
     deep.write_text(ex.read_text().replace("depth_mm = 0.3", "depth_mm = 6.0"))
     with pytest.raises(InputError, match="case.depth = 6 mm: must be < 5 mm, half the cam body size 10 mm"):
         scene_layers(load_scene(deep))
+
+
+@pytest.mark.slow
+def test_hard_case_thin_soft_coating_needs_h_below_t():
+    """Hard case: a coating 10x softer than the substrate, t = a/10. Its interface shear peaks
+    at the contact edge (|x| ~ 1.13 a) with a width ~t, so it needs h < t: measured error
+    14 % at a/h = 10 (h = t; unchanged with 8 or 16 layers through t, so it is the in-plane
+    spacing) and 5.7 % at a/h = 20; p0 and sigma_n stay within 0.1 %."""
+    a0, _ = _hertz(STEEL.E, STEEL.nu, STEEL.E, STEEL.nu)
+    coat = Material(E=21e9, nu=0.25)
+    x, p, tau, sn = layered_contact(0.1 * a0, coat)
+    err = []
+    for n in (10, 20):
+        r = _coated(0.1 * a0, coat, n).solve(F=F, rho=RHO)
+        it = interface_stress(r)
+        assert r.p0_nodal == pytest.approx(p.max(), rel=2e-3)
+        assert it.sigma_n_min == pytest.approx(sn.min(), rel=5e-3)
+        err.append(abs(it.tau_abs_max / np.abs(tau).max() - 1))
+    assert err[1] < 0.5 * err[0] and err[1] < 0.08, f"interface shear errors {err}"
