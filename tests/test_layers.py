@@ -323,3 +323,27 @@ def test_hard_case_thin_soft_coating_needs_h_below_t():
         assert it.sigma_n_min == pytest.approx(sn.min(), rel=5e-3)
         err.append(abs(it.tau_abs_max / np.abs(tau).max() - 1))
     assert err[1] < 0.5 * err[0] and err[1] < 0.08, f"interface shear errors {err}"
+
+
+def test_coating_band_geometry_in_the_mesh():
+    """The band: every coating triangle lies between the surface arc and the concentric arc at
+    depth t (centroid depth < t), at least 4 layers through t, the substrate below it; the
+    interface nodes lie at radius Rr - t of the roller (geometry, independent of gmsh)."""
+    from femcam.mesh import build_contact_mesh
+
+    t, a_ref = 3e-6, 1.2e-4
+    cm = build_contact_mesh(Rr=RR, rho=RHO, a_ref=a_ref,
+                            options=MeshOptions(a_over_h=10, coat_body="roller", coat_thickness=t))
+    b = cm.roller
+    assert cm.cam.coating is None and b.coating.any()
+    cen = b.points[:, b.triangles].mean(axis=1)          # roller centre at (0, Rr)
+    depth = RR - np.hypot(cen[0], cen[1] - RR)
+    # within the fine zone (chords of h: sagitta h^2/(8 Rr) ~ 2e-9 m; far out the side strips'
+    # long chords sag below the arc, surface and interface chords alike)
+    near = np.abs(cen[0]) < 2.5 * a_ref
+    assert np.all(depth[b.coating & near] < t) and np.all(depth[~b.coating & near] > t - 1e-9)
+    fine = b.coating & (np.abs(cen[0]) < 0.5 * a_ref)
+    layers = np.unique(np.round(depth[fine] / (t / 8)))  # two triangles per layer and column
+    assert layers.size >= 4
+    ip = b.points[:, b.groups["roller_interface"].nodes]
+    assert np.hypot(ip[0], ip[1] - RR) == pytest.approx(RR - t, rel=1e-9)
