@@ -320,6 +320,36 @@ def _check_bodies(ck, raw: dict, fo: dict, mats: dict) -> dict:
     return out
 # ---- end of the real-bodies block
 
+_CHOICES["hardness_law"] = ("exponential", "linear")
+# --- coated and case-hardened bodies (femcam.layers): [materials.<body>.coating|case] ---------
+_COATING = {"thickness_um": ("um", 1e-6, "pos", True), "E_GPa": ("GPa", 1e9, "pos", True),
+            "nu": ("(dimensionless)", 1.0, "nu", True), "name": ("", None, "str", False),
+            "interface_shear_strength_MPa": ("MPa", 1e6, "pos", False),
+            "hardness_MPa": ("MPa", 1e6, "pos", False)}
+_CASE = {"depth_mm": ("mm", 1e-3, "pos", True), "hardness_law": ("", None, "str", False),
+         "surface_hardness_HV": ("HV", 9.80665e6, "pos", False),
+         "core_hardness_HV": ("HV", 9.80665e6, "pos", False),
+         "surface_yield_MPa": ("MPa", 1e6, "pos", False), "core_yield_MPa": ("MPa", 1e6, "pos", False)}
+
+
+def _layers(ck, raw: dict) -> dict:
+    """``{body: {"coating": {...}, "case": {...}}}`` (SI, checked) from [materials.<body>.*]."""
+    out = {}
+    mraw = raw.get("materials", {}) if isinstance(raw.get("materials", {}), dict) else {}
+    for alias, tabs in mraw.items():
+        body = "roller" if alias == "follower" else alias
+        for t, spec in (("coating", _COATING), ("case", _CASE)):
+            if isinstance(tabs, dict) and t in tabs:
+                out.setdefault(body, {})[t] = ck.table(tabs[t], f"materials.{alias}.{t}", spec)
+        case = out.get(body, {}).get("case", {})
+        pairs = [("surface_hardness_HV", "core_hardness_HV"), ("surface_yield_MPa", "core_yield_MPa")]
+        given = [p for p in pairs if any(k in case for k in p)]
+        if case and (len(given) != 1 or not all(k in case for k in given[0])):
+            ck.add(f"materials.{alias}.case", "give surface_hardness_HV and core_hardness_HV, or "
+                   "surface_yield_MPa and core_yield_MPa (one complete pair)")
+    return out
+# --- end of the layers block -------------------------------------------------------------------
+
 
 def _fmt(v) -> str:
     return repr(v) if isinstance(v, str) else str(v).lower() if isinstance(v, bool) else f"{v}"
@@ -520,6 +550,8 @@ class Scene:
     fe: dict = field(default_factory=dict)
     wear: dict = field(default_factory=dict)
     finite_length: dict = field(default_factory=dict)  # femcam.halfspace keys in SI (_finite_length)
+    #: coatings and cases per body (SI, checked; femcam.layers.scene_layers builds them)
+    layers: dict = field(default_factory=dict)
     source_path: str = ""
     #: checked SI values of the assessment keys: lubricant, surface, oil_temperature_C, materials
     tribology: dict = field(default_factory=dict)
@@ -670,6 +702,7 @@ def load_scene(path) -> Scene:
     tribo = _tribology(ck, raw, mats)
     finite = _finite_length(ck, raw, fo, fo.get("type"))
     bodies = _check_bodies(ck, raw, fo, mats)
+    layers = _layers(ck, raw)
     # contact and pass-through tables
     co = ck.table(raw.get("contact", {}), "contact", _CONTACT)
     for t in ("fe", "wear"):
@@ -682,7 +715,7 @@ def load_scene(path) -> Scene:
                  roller=mats["roller"], length=fo["face_width_mm"], mu=co.get("friction", 0.0),
                  plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=dict(raw.get("fe", {})),
                  wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw, train=train,
-                 tribology=tribo, finite_length=finite, bodies=bodies,
+                 tribology=tribo, finite_length=finite, bodies=bodies, layers=layers,
                  steps_per_rev=steps_per_rev)
 
 
@@ -863,7 +896,7 @@ def _material(ck: _Checker, alias: str, m: dict, given: dict) -> Material | None
 
 def _body_material(ck: _Checker, mats: dict, k: str, alias: str, given) -> None:
     """Check [materials.<alias>] and put body ``k``'s Material (and assessment extras) in ``mats``."""
-    m = ck.table(given, f"materials.{alias}", _MATERIAL)
+    m = ck.table(given, f"materials.{alias}", _MATERIAL, extra=("coating", "case"))
     extra = {x: m[x] for x in _MATERIAL_EXTRA if x in m}
     if extra:  # assessment data (femcam.assess), kept in Scene.tribology["materials"]
         mats.setdefault("extra", {})[k] = extra

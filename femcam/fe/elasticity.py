@@ -57,6 +57,9 @@ class Body:
     mu_L: float
     t_assembly: float
     t_factor: float
+    #: element-wise Lamé parameters (Pa) of a layered body (None: homogeneous lam, mu_L)
+    lam_e: np.ndarray | None = None
+    mu_e: np.ndarray | None = None
 
     @property
     def n_dofs(self) -> int:
@@ -108,6 +111,7 @@ def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strai
     basis = Basis(mesh, _element(element))
     lam, mu_L = lame_parameters(material.E, material.nu, plane)
     K = asm(linear_elasticity(float(lam), float(mu_L)), basis).tocsr()
+    lam_e, mu_e, K = _coating_stiffness(geometry, material, plane, basis, K, lam, mu_L)
     fixed_nodes = np.zeros(mesh.p.shape[1], dtype=bool)
     fixed_nodes[geometry.fixed] = True
     fac = np.nonzero(fixed_nodes[mesh.facets].all(axis=0))[0]
@@ -126,7 +130,26 @@ def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strai
     t2 = time.perf_counter()
     return Body(name=geometry.name, geometry=geometry, material=material, plane=plane,
                 element=element, mesh=mesh, basis=basis, K=K, free=free, lu=lu, lam=float(lam),
-                mu_L=float(mu_L), t_assembly=t1 - t0, t_factor=t2 - t1)
+                mu_L=float(mu_L), t_assembly=t1 - t0, t_factor=t2 - t1, lam_e=lam_e, mu_e=mu_e)
+
+
+def _coating_stiffness(geometry: BodyMesh, material: Material, plane, basis, K, lam, mu_L):
+    """Layered body: a ``material`` with a ``coating`` Material (``femcam.layers.CoatedMaterial``)
+    on a mesh with a coating band (``geometry.coating``) gets the coating's Lamé parameters in
+    the band: ``K += K_band(coating) - K_band(substrate)``. Returns (lam_e, mu_e, K)."""
+    coat = getattr(material, "coating", None)
+    if coat is None or geometry.coating is None:
+        return None, None, K
+    from skfem import Basis, asm
+    from skfem.models.elasticity import linear_elasticity
+
+    band = np.nonzero(geometry.coating)[0]
+    bb = Basis(basis.mesh, basis.elem, elements=band)
+    lc, mc = lame_parameters(coat.E, coat.nu, plane)
+    K = K + asm(linear_elasticity(float(lc - lam), float(mc - mu_L)), bb).tocsr()
+    lam_e = np.where(geometry.coating, float(lc), float(lam))
+    mu_e = np.where(geometry.coating, float(mc), float(mu_L))
+    return lam_e, mu_e, K
 
 
 def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matrix:
@@ -162,7 +185,7 @@ def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matri
     # scalar dofs of each element (local order matches elem.lbasis order)
     sdofs = b.element_dofs[::2] // 2  # vector dofs interleaved (ux, uy) per scalar node
     nel = t.shape[1]
-    lam, mu = body.lam, body.mu_L
+    lam, mu = (body.lam, body.mu_L) if body.lam_e is None else (body.lam_e, body.mu_e)
     rows, cols, vals = [], [], []
     nscal = b.N // 2
     # counts for averaging
