@@ -18,6 +18,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.sparse as sp
 
 from ..mesh import surface_height
 from .contact import edge_midside_dofs
@@ -63,10 +64,15 @@ def surface_nodes(body: Body) -> np.ndarray:
     return v if md is None else np.concatenate([v, md[0] // 2])
 
 
-def build_eval_set(body: Body, Un: np.ndarray, Ut: np.ndarray, half_width: float,
-                   max_depth: float) -> EvalSet:
-    """Stress operators at the scalar nodes with ``|x| <= half_width`` and ``z <= max_depth``,
-    and at every node of the fine-zone contact curve (:func:`surface_nodes`)."""
+def eval_operator(body: Body, half_width: float, max_depth: float):
+    """The stress window of one body: ``(nodes, x, z, surface, S)``.
+
+    ``nodes``: the scalar nodes with ``|x| <= half_width`` and ``z <= max_depth``, and every node
+    of the fine-zone contact curve (:func:`surface_nodes`); ``x``, ``z`` (m, ``z >= 0``) their
+    abscissae and depths; ``surface`` indexes the ones on the contact curve, sorted by x; ``S``
+    the sparse operator (3 n_eval, n_dofs) from displacements to (sx, sz, txz) in the body's
+    Johnson frame (the sign of ``txz`` folded in, see :func:`johnson_frame`).
+    """
     xy = scalar_node_coordinates(body)
     z = depth(body, xy)
     tol = 1e-9 * half_width
@@ -75,17 +81,33 @@ def build_eval_set(body: Body, Un: np.ndarray, Ut: np.ndarray, half_width: float
     sel = np.nonzero(((np.abs(xy[0]) <= half_width + tol) & (z <= max_depth + tol)) | on_surface)[0]
     S = stress_operator(body, sel)
     ne = sel.size
-    Sn = (S @ Un).reshape(3, ne, -1)
-    St = (S @ Ut).reshape(3, ne, -1)
-    sx_n, sz_n, txz_n = johnson_frame(body, Sn[0], Sn[1], Sn[2])
-    sx_t, sz_t, txz_t = johnson_frame(body, St[0], St[1], St[2])
-    Sn = np.stack([sx_n, sz_n, txz_n])
-    St = np.stack([sx_t, sz_t, txz_t])
-    zs = z[sel]
+    sign = np.ones(3 * ne)
+    sign[2 * ne:] = johnson_frame(body, 1.0, 1.0, 1.0)[2]
+    S = sp.diags(sign) @ S
     surf = np.nonzero(on_surface[sel])[0]
     surf = surf[np.argsort(xy[0, sel][surf])]
-    return EvalSet(body=body.name, nodes=sel, x=xy[0, sel], z=np.maximum(zs, 0.0), Sn=Sn, St=St,
-                   surface=surf)
+    return sel, xy[0, sel], np.maximum(z[sel], 0.0), surf, S.tocsr()
+
+
+def build_eval_set(body: Body, Bn, Bt, S_y, half_width: float, max_depth: float):
+    """Condense one body: ``(EvalSet, Yn, Yt)`` with ``Yn = S_y K^-1 Bn``, ``Yt = S_y K^-1 Bt``.
+
+    ``Bn``, ``Bt``: sparse consistent nodal forces (n_dofs, n_c) of unit nodal pressure /
+    friction traction with this body's signs; ``S_y``: sparse selection (n_c, n_dofs) of the
+    normal displacement at the contact vertices. The stress operators of the window
+    (:func:`eval_operator`) and ``Y`` come out of one pass of block solves
+    (:meth:`Body.solve_apply`), without holding ``K^-1 B``.
+    """
+    sel, x, z, surf, S = eval_operator(body, half_width, max_depth)
+    ne = sel.size
+    P = sp.vstack([S, S_y]).tocsr()
+    out = []
+    for B in (Bn, Bt):
+        R = body.solve_apply(B, P)
+        out.append((R[:3 * ne].reshape(3, ne, -1), R[3 * ne:]))
+    (Sn, Yn), (St, Yt) = out
+    ev = EvalSet(body=body.name, nodes=sel, x=x, z=z, Sn=Sn, St=St, surface=surf)
+    return ev, Yn, Yt
 
 
 def derived(sx, sz, txz, sy):
