@@ -29,6 +29,9 @@ from .contact import load_matrix, solve_lcp, trapezoid_weights
 from .elasticity import ELEMENTS, ORDERINGS, Body, assemble_body
 from .recovery import build_eval_set, derived, fit_half_width
 
+#: values of ``SolverOptions.stress_operators``
+STRESS_OPERATORS = ("precompute", "per_solve")
+
 
 @dataclass(frozen=True, kw_only=True)
 class SolverOptions:
@@ -41,6 +44,12 @@ class SolverOptions:
     eval_depth: stresses are precomputed at nodes down to eval_depth * a_ref below the surface
         (and over the fine zone in x).
     fit_threshold: nodes with p > fit_threshold * max(p) enter the half-width fit.
+    stress_operators: ``"precompute"``: the build condenses the stresses of the window onto the
+        contact unknowns (2 n_c solves per body; each solve then costs a few ms): for models
+        solved at many load cases (sweep families). ``"per_solve"``: the build condenses only
+        the contact compliance (n_c solves per body) and each solve back-solves both bodies
+        once for the stresses: for one-off models (a single scene, fresh verification models;
+        measured in benchmarks/bench_fe.py).
     """
 
     ordering: str = "MMD_AT_PLUS_A"
@@ -50,6 +59,7 @@ class SolverOptions:
     kappa_tol: float = 0.5
     eval_depth: float = 2.0
     fit_threshold: float = 0.2
+    stress_operators: str = "precompute"
 
     def __post_init__(self):
         chk.choice("ordering", self.ordering, ORDERINGS)
@@ -62,6 +72,7 @@ class SolverOptions:
         chk.positive("kappa_tol", self.kappa_tol, "")
         chk.in_range("eval_depth", self.eval_depth, 0.0, 20.0, "(x a_ref)")
         chk.in_range("fit_threshold", self.fit_threshold, 0.0, 0.9, "")
+        chk.choice("stress_operators", self.stress_operators, STRESS_OPERATORS)
 
 
 @dataclass(frozen=True)
@@ -253,7 +264,8 @@ class ContactModel:
         t_cond = 0.0
         x = cm.cam.contact_x
         for name, geo, mat in (("cam", cm.cam, cam), ("roller", cm.roller, roller)):
-            b = assemble_body(geo, mat, plane=plane, element=element, ordering=solver.ordering)
+            b = assemble_body(geo, mat, plane=plane, element=element, ordering=solver.ordering,
+                              contact_last=solver.stress_operators == "per_solve")
             bodies[name] = b
             t1 = time.perf_counter()
             # body-specific signs: pressure into the body, friction +x on cam, -x on roller
@@ -266,8 +278,9 @@ class ContactModel:
             ydof = b.basis.nodal_dofs[1, geo.contact]
             S_y = sp.csr_matrix((np.ones(ydof.size), (np.arange(ydof.size), ydof)),
                                 shape=(ydof.size, b.n_dofs))
-            evals[name], Yn, Yt = build_eval_set(b, Bn[name], Bt[name], S_y, float(x[-1]),
-                                                 solver.eval_depth * a_ref)
+            evals[name], Yn, Yt = build_eval_set(
+                b, Bn[name], Bt[name], S_y, float(x[-1]), solver.eval_depth * a_ref,
+                precompute=solver.stress_operators == "precompute")
             # separation grows with roller uy and with -cam uy
             sg = 1.0 if name == "roller" else -1.0
             An = sg * Yn if An is None else An + sg * Yn
@@ -356,11 +369,7 @@ class ContactModel:
         force = float(self.w @ sol_p) * self.length
         maxima, surfaces = {}, {}
         for name, ev in self.evals.items():
-            # einsum, not `@`: OpenBLAS's threaded gemv busy-waits on a loaded 2-core machine
-            # (Sn and St of one body at a/20 with two busy processes: 43 ms vs 6 ms einsum)
-            s = np.einsum("cij,j->ci", ev.Sn, sol_p)
-            if mu > 0:
-                s += (sliding * mu) * np.einsum("cij,j->ci", ev.St, sol_p)
+            s = ev.stresses(sol_p, sliding * mu)
             sx, sz, txz = s
             sy = self._sy(name, sx, sz)
             tau1, vm = derived(sx, sz, txz, sy)
@@ -438,11 +447,13 @@ def solve_contact(F: float, rho: float, Rr: float, cam: Material, roller: Materi
                   mesh: MeshOptions | None = None, solver: SolverOptions | None = None,
                   plane: str = "strain", element: str = "P2") -> ContactResult:
     """Build a model graded for this load case and solve it (cold). ``a_ref`` defaults to Hertz a
-    (or, when Hertz does not apply or F = 0, 1 % of Rr)."""
+    (or, when Hertz does not apply or F = 0, 1 % of Rr). A one-off model: ``solver`` defaults
+    to ``SolverOptions(stress_operators="per_solve")`` (same numbers, half the condensation)."""
     if a_ref is None:
         aH, _ = _hertz(chk.nonnegative("F", F, "N"), chk.positive("length", length, "m"), float(rho),
                        chk.positive("Rr", Rr, "m"), cam, roller, plane)
         a_ref = aH if (math.isfinite(aH) and aH > 0) else 0.01 * Rr
+    solver = solver or SolverOptions(stress_operators="per_solve")
     model = ContactModel.build(Rr=Rr, rho_ref=rho, cam=cam, roller=roller, length=length, a_ref=a_ref,
                                mesh=mesh, solver=solver, plane=plane, element=element)
     return model.solve(F=F, rho=rho, mu=mu, sliding=sliding)

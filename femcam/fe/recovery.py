@@ -15,7 +15,7 @@ Derived quantities (Johnson 1985 §4.2, §7.1):
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.sparse as sp
@@ -25,13 +25,15 @@ from .contact import edge_midside_dofs
 from .elasticity import Body, scalar_node_coordinates, stress_operator
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class EvalSet:
-    """Precomputed stress operators on the scalar nodes of one body near the contact.
+    """Stress recovery on the scalar nodes of one body near the contact.
 
     Sn, St: (3, n_eval, n_c) arrays mapping unit nodal pressure / unit friction traction
     (already with this body's sign: pressure into the body, friction in the model's sliding
-    sense) to (sx, sz, txz) in Pa. ``surface`` indexes the eval nodes on the contact surface
+    sense) to (sx, sz, txz) in Pa (``SolverOptions.stress_operators = "precompute"``), or None
+    (``"per_solve"``: :meth:`stresses` back-solves the body for each load case with ``S``,
+    ``Bn``, ``Bt`` and ``solver``). ``surface`` indexes the eval nodes on the contact surface
     (sorted by x).
     """
 
@@ -39,9 +41,28 @@ class EvalSet:
     nodes: np.ndarray
     x: np.ndarray
     z: np.ndarray
-    Sn: np.ndarray
-    St: np.ndarray
+    Sn: np.ndarray | None
+    St: np.ndarray | None
     surface: np.ndarray
+    S: sp.csr_matrix | None = None
+    Bn: sp.csc_matrix | None = None
+    Bt: sp.csc_matrix | None = None
+    solver: Body | None = field(default=None, repr=False)
+
+    def stresses(self, p: np.ndarray, smu: float = 0.0) -> np.ndarray:
+        """(sx, sz, txz) (3, n_eval) in Pa for nodal pressures ``p`` (Pa) and friction
+        ``q = smu p`` (``smu`` = sliding sense x mu)."""
+        if self.Sn is not None:
+            # einsum, not `@`: OpenBLAS's threaded gemv busy-waits on a loaded 2-core machine
+            # (Sn and St of one body at a/20 with two busy processes: 43 ms vs 6 ms einsum)
+            s = np.einsum("cij,j->ci", self.Sn, p)
+            if smu:
+                s += smu * np.einsum("cij,j->ci", self.St, p)
+            return s
+        f = self.Bn @ p
+        if smu:
+            f = f + smu * (self.Bt @ p)
+        return (self.S @ self.solver.solve(f)).reshape(3, -1)
 
 
 def johnson_frame(body: Body, sxx, syy, sxy):
@@ -89,17 +110,33 @@ def eval_operator(body: Body, half_width: float, max_depth: float):
     return sel, xy[0, sel], np.maximum(z[sel], 0.0), surf, S.tocsr()
 
 
-def build_eval_set(body: Body, Bn, Bt, S_y, half_width: float, max_depth: float):
+def build_eval_set(body: Body, Bn, Bt, S_y, half_width: float, max_depth: float,
+                   precompute: bool = True):
     """Condense one body: ``(EvalSet, Yn, Yt)`` with ``Yn = S_y K^-1 Bn``, ``Yt = S_y K^-1 Bt``.
 
     ``Bn``, ``Bt``: sparse consistent nodal forces (n_dofs, n_c) of unit nodal pressure /
     friction traction with this body's signs; ``S_y``: sparse selection (n_c, n_dofs) of the
-    normal displacement at the contact vertices. The stress operators of the window
-    (:func:`eval_operator`) and ``Y`` come out of one pass of block solves
-    (:meth:`Body.solve_apply`), without holding ``K^-1 B``.
+    normal displacement at the contact vertices.
+
+    ``precompute=True``: the stress operators of the window (:func:`eval_operator`) and ``Y``
+    come out of one pass of 2 n_c block solves (:meth:`Body.solve_apply`), without holding
+    ``K^-1 B``. ``precompute=False``: only ``Y``, from n_c solves: ``K`` is symmetric, so
+    ``Y^T = B^T K^-1 S_y^T`` (unit loads at the contact vertices, Maxwell-Betti reciprocity);
+    the stresses are then back-solved per load case (:meth:`EvalSet.stresses`).
     """
     sel, x, z, surf, S = eval_operator(body, half_width, max_depth)
     ne = sel.size
+    if not precompute:
+        nc = S_y.shape[0]
+        ev = EvalSet(body=body.name, nodes=sel, x=x, z=z, Sn=None, St=None, surface=surf, S=S,
+                     Bn=Bn, Bt=Bt, solver=body)
+        B = sp.hstack([Bn, Bt]).tocsr()
+        if body.last is not None:  # S_y and B live on the contact surface: Schur complement
+            C = body.last
+            Y = S_y[:, C] @ body.schur_solve(B[C].toarray())
+            return ev, Y[:, :nc], Y[:, nc:]
+        R = body.solve_apply(S_y.T, B.T)
+        return ev, R[:nc].T.copy(), R[nc:].T.copy()
     P = sp.vstack([S, S_y]).tocsr()
     out = []
     for B in (Bn, Bt):
