@@ -52,14 +52,17 @@ for mod in ("skfem", "gmsh", "meshio", "matplotlib.pyplot", "femcam.fe", "femcam
     t = time.perf_counter(); __import__(mod); T["import " + mod] = time.perf_counter() - t
 import femcam.scene, femcam.sweep, femcam.sweep.run, femcam.fe.export, femcam.viz.sweep as vs
 
+C = {}  # CPU seconds of this process (time.process_time) per phase: robust to the load
+
 def timed(mod, name, key, acc=False):
     f = getattr(mod, name)
     def w(*a, **k):
-        t = time.perf_counter()
+        t, c = time.perf_counter(), time.process_time()
         try:
             return f(*a, **k)
         finally:
             T[key] = (T.get(key, 0.0) if acc else 0.0) + time.perf_counter() - t
+            C[key] = (C.get(key, 0.0) if acc else 0.0) + time.process_time() - c
             if acc:
                 T[key + " (n)"] = T.get(key + " (n)", 0) + 1
     setattr(mod, name, w)
@@ -78,11 +81,15 @@ def sweep(*a, **k):
     res["timings"] = dict(r.timings)
     return r
 femcam.sweep.sweep = sweep
+timed(femcam.sweep.run, "verify_families", "verify", acc=True)
+timed(femcam.sweep.run, "run_chunk", "compute", acc=True)  # --workers 1: chunks run here
+C["imports"] = time.process_time()
 t = time.perf_counter()
 rc = femcam.cli.main(sys.argv[1:])
 T["cli main"] = time.perf_counter() - t
 T["driver total"] = time.perf_counter() - t_start
-print("BREAKDOWN " + json.dumps({"phases": T, "sweep": res.get("timings", {}), "rc": rc}))
+C["total"] = time.process_time()
+print("BREAKDOWN " + json.dumps({"phases": T, "cpu": C, "sweep": res.get("timings", {}), "rc": rc}))
 """
 
 
@@ -173,7 +180,7 @@ def breakdown() -> dict:
 
 
 def print_breakdown(b: dict) -> None:
-    ph, sw = b["phases"], b["sweep"]
+    ph, sw, cpu = b["phases"], b["sweep"], b["cpu"]
     imports = sum(v for k, v in ph.items() if k.startswith("import "))
     vtu = ph.get("VTU", 0.0)
     fields = ph.get("VTU fields (full_field of both bodies)", 0.0)
@@ -192,9 +199,24 @@ def print_breakdown(b: dict) -> None:
     rows.append(("rest (argument parsing, printing, exit)",
                  b["wall"] - b["python start"] - sum(v for _, v in rows[1:])))
     print(f"\nbreakdown, one run with --workers 1 (wall {b['wall']:.2f} s, load {load()}):\n")
-    print("| phase | s |")
+    print("| phase | wall s |")
     print("|---|---|")
     for k, v in rows:
+        print(f"| {k} | {v:.2f} |")
+    fields = cpu.get("VTU fields (full_field of both bodies)", 0.0)
+    plots_cpu = sum(v for k, v in cpu.items() if k.startswith("plot "))
+    crow = [("imports (process CPU before the CLI ran)", cpu["imports"]),
+            ("families + verification", cpu.get("verify", 0.0)),
+            ("chunk solves (minus VTU)", cpu.get("compute", 0.0) - cpu.get("VTU", 0.0)),
+            ("VTU fields (femcam.fe full_field)", fields),
+            ("VTU arrays + write (femcam.io)", cpu.get("VTU", 0.0) - fields),
+            ("plots", plots_cpu),
+            ("of which the worst-angle surface plot", cpu.get("plot surface_worst", 0.0)),
+            ("process total", cpu["total"])]
+    print("\nsame run, CPU seconds of the process (time.process_time; less sensitive to the load):\n")
+    print("| phase | CPU s |")
+    print("|---|---|")
+    for k, v in crow:
         print(f"| {k} | {v:.2f} |")
     print("\nimports one by one (s): " + ", ".join(f"{k[7:]} {v:.2f}" for k, v in ph.items()
                                                  if k.startswith("import ")))
@@ -204,6 +226,7 @@ def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("--runs", type=int, default=5)
     ap.add_argument("--no-breakdown", action="store_true")
+    ap.add_argument("--breakdown-only", action="store_true")
     ap.add_argument("--proposed", action="store_true",
                     help="fresh reuse-check models per_solve (proposed sweep wiring, patched in)")
     args = ap.parse_args()
@@ -214,7 +237,7 @@ def main() -> int:
     print("| command | runs | wall median (s) | wall min-max (s) | CPU median (s) | peak RSS (MB) "
           "| max |p0 err| vs Hertz | load after |")
     print("|---|---|---|---|---|---|---|---|")
-    for extra in ([], ["--no-plots", "--vtk-every", "0"]):
+    for extra in ([] if args.breakdown_only else ([], ["--no-plots", "--vtk-every", "0"])):
         res = [run_once(extra, args.proposed) for _ in range(args.runs)]
         w = [r[0] for r in res]
         c = [r[1] for r in res]
