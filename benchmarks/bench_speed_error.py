@@ -27,9 +27,10 @@ cache, serial) at a/h = 10, 20 (and 26 without ``--quick``): compute time (analy
 families + verification + solves) and the largest p0 / a error against Hertz over the angles;
 the half-space solve of each angle's (F, rho) from the Hertz sweep for comparison.
 
-``--memory``: peak RSS (subprocess, ``ru_maxrss``) of a Hertz sweep of 10 000 and 100 000
-angles written chunk by chunk to a directory (chunk_size 1000), and of the FE sweep at a/h =
-26 (``--base DIR``: also the femcam checkout in DIR, for a before/after).
+``--memory`` (``--memory-only``: nothing else): peak RSS (subprocess, ``VmHWM``) of a Hertz
+sweep of 10 000 and 100 000 angles written chunk by chunk to a directory (chunk_size 1000),
+and of the FE sweep at a/h = 26 (``--base DIR``: also the femcam checkout in DIR, for a
+before/after).
 
 Correctness first: every FE row must meet femcam's accuracy at a/h = 20 (p0 <= 0.3 %,
 a <= 1 %, tau1 <= 2 % vs Hertz) and the half-space solve must converge to Hertz (p0 within
@@ -176,7 +177,7 @@ def hs_sweep(tab, n):
 
 # -------------------------------------------------------------- memory
 MEM_CODE = """
-import resource, sys, tempfile, time, numpy as np
+import sys, tempfile, time, numpy as np
 from femcam.sweep import sweep
 n, method, a_over_h = int(sys.argv[1]), sys.argv[2], float(sys.argv[3])
 th = np.linspace(0, 2 * np.pi, n, endpoint=False)
@@ -185,7 +186,10 @@ with tempfile.TemporaryDirectory() as d:
     r = sweep(sys.argv[4], angles=th, method=method, a_over_h=a_over_h, out=d, chunk_size=1000,
               workers=1)
     t = time.perf_counter() - t
-print(n, t, resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)
+# VmHWM, not ru_maxrss: Linux keeps ru_maxrss across exec, so a child would report its parent's
+with open("/proc/self/status") as f:
+    hwm = next(int(x.split()[1]) for x in f if x.startswith("VmHWM"))
+print(n, t, hwm / 1024)
 """
 
 
@@ -218,9 +222,13 @@ def main() -> int:
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--no-sweeps", action="store_true")
     ap.add_argument("--memory", action="store_true")
+    ap.add_argument("--memory-only", action="store_true")
     ap.add_argument("--base", default=None, help="another femcam checkout for the memory before/after")
     ap.add_argument("--plot", default=None, help="write the log-log plot to this PNG")
     args = ap.parse_args()
+    if args.memory_only:
+        section_memory(args.base)
+        return 0
     print("# femcam speed vs error (single scenes, sweeps) with the half-space floor")
     print(f"machine: {platform.processor() or platform.machine()}, os.cpu_count() = {os.cpu_count()}, "
           f"load average {' / '.join(f'{x:.2f}' for x in os.getloadavg())} (shared machine)")
