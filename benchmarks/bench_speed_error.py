@@ -151,6 +151,29 @@ def fe_scene(n):
     return tt, m.n_dofs, e, dict(m.timings)
 
 
+def propose_per_solve_checks() -> None:
+    """Patch femcam.sweep.families so that the fresh reuse-check models (one load case each,
+    only p0 used) are built with ``stress_operators="per_solve"``: the wiring proposed for
+    femcam/sweep/families.py (owned elsewhere), measured here with ``--proposed``."""
+    import sys as _sys
+
+    import femcam.sweep.families as fam
+    from femcam.fe import ContactModel, SolverOptions
+    from femcam.mesh import MeshOptions
+
+    build = fam.build_model
+
+    def build_model(cp, rho_ref, a_ref, options, _threaded=False):
+        if _sys._getframe(1).f_code.co_name != "_reuse_error":
+            return build(cp, rho_ref, a_ref, options, _threaded)
+        return ContactModel.build(Rr=cp.Rr, rho_ref=rho_ref, cam=cp.cam, roller=cp.roller,
+                                  length=cp.length, a_ref=a_ref,
+                                  mesh=MeshOptions(a_over_h=options.a_over_h),
+                                  solver=SolverOptions(stress_operators="per_solve"), plane=cp.plane)
+
+    fam.build_model = build_model
+
+
 def fe_sweep(n):
     from femcam.sweep import sweep
     from femcam.sweep.families import clear_model_cache
@@ -223,12 +246,18 @@ def main() -> int:
     ap.add_argument("--no-sweeps", action="store_true")
     ap.add_argument("--memory", action="store_true")
     ap.add_argument("--memory-only", action="store_true")
+    ap.add_argument("--sweeps-only", action="store_true")
+    ap.add_argument("--proposed", action="store_true",
+                    help="sweep check models per_solve (the proposed femcam.sweep wiring, patched in)")
     ap.add_argument("--base", default=None, help="another femcam checkout for the memory before/after")
     ap.add_argument("--plot", default=None, help="write the log-log plot to this PNG")
     args = ap.parse_args()
     if args.memory_only:
         section_memory(args.base)
         return 0
+    if args.proposed:
+        propose_per_solve_checks()
+        print("proposed wiring patched in: fresh reuse-check models per_solve")
     print("# femcam speed vs error (single scenes, sweeps) with the half-space floor")
     print(f"machine: {platform.processor() or platform.machine()}, os.cpu_count() = {os.cpu_count()}, "
           f"load average {' / '.join(f'{x:.2f}' for x in os.getloadavg())} (shared machine)")
@@ -248,12 +277,12 @@ def main() -> int:
           "+ one solve, stress_operators = per_solve; half-space: best of 5)\n")
     print("| method | a/h | DOFs | time (s) | p0 err | a err | rms(p - Hertz)/p0 | τ1 err | load |")
     print("|---|---|---|---|---|---|---|---|---|")
-    for n in ([10, 20] if args.quick else [10, 14, 20, 26, 40]):
+    for n in ([] if args.sweeps_only else [10, 20] if args.quick else [10, 14, 20, 26, 40]):
         tt, nd, e, _ = fe_scene(n)
         rows.append(("FE scene", n, tt, e))
         print(f"| FE | {n} | {nd} | {tt:.2f} | {e['p0']:+.3%} | {e['a']:+.3%} | {e['rms']:.3%} | "
               f"{e['tau1']:+.2%} | {os.getloadavg()[0]:.2f} |", flush=True)
-    for n in (10, 20, 40, 80, 160):
+    for n in (() if args.sweeps_only else (10, 20, 40, 80, 160)):
         tt = best_time(lambda n=n: halfspace_solve(F, rho, hertz_ap(F, rho)[0], n))
         e = hs_errors(F, rho, n)
         rows.append(("half-space scene", n, tt, e))
