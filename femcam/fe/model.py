@@ -2,9 +2,10 @@
 
 ``ContactModel.build`` meshes the cam (surface radius ``rho_ref``) and the roller, assembles and
 factorises each body once, condenses both onto the fine-zone contact vertices and precomputes
-the stress operators near the contact. ``model.solve(F, rho, mu)`` then only solves the small
-complementarity problem (``femcam.fe.contact``) with the gap of the TRUE ``rho`` and multiplies
-the precomputed operators: a few milliseconds per cam angle.
+the stress operators near the contact (``SolverOptions.stress_operators``: or back-solves the
+stresses per load case, for one-off models; docs/performance.md). ``model.solve(F, rho, mu)``
+then only solves the small complementarity problem (``femcam.fe.contact``) with the gap of
+the TRUE ``rho`` and multiplies the precomputed operators: a few milliseconds per cam angle.
 
 Reuse error: the body meshes keep the ``rho_ref`` shape while the gap uses ``rho``; the contact
 fine zone is ``|x| <= fine_half_width * a_ref``. ``model.covers(F, rho)`` says whether a load case
@@ -46,10 +47,11 @@ class SolverOptions:
     fit_threshold: nodes with p > fit_threshold * max(p) enter the half-width fit.
     stress_operators: ``"precompute"``: the build condenses the stresses of the window onto the
         contact unknowns (2 n_c solves per body; each solve then costs a few ms): for models
-        solved at many load cases (sweep families). ``"per_solve"``: the build condenses only
-        the contact compliance (n_c solves per body) and each solve back-solves both bodies
-        once for the stresses: for one-off models (a single scene, fresh verification models;
-        measured in benchmarks/bench_fe.py).
+        solved at many load cases (sweep families). ``"per_solve"``: the contact DOFs are
+        factorised last and the contact compliance is the Schur complement in the trailing
+        factor blocks (no solve per contact unknown); each solve back-solves both bodies once
+        for the stresses: for one-off models (a single scene, fresh verification models).
+        Same numbers to ~1e-12; times in docs/performance.md (benchmarks/bench_fe.py --modes).
     """
 
     ordering: str = "MMD_AT_PLUS_A"
@@ -242,8 +244,8 @@ class ContactModel:
     options: SolverOptions
     timings: dict
     n_dofs: int
-    #: per-body full-field stress operators, built on the first :meth:`full_field` (one per
-    #: written .vtu before: 60 % of its time at a/h = 10)
+    #: per-body full-field stress operators, built on the first :meth:`full_field` (they were
+    #: rebuilt for every written .vtu: 1.44 s -> 0.41 s CPU for the 36 files of README command 1)
     _field_ops: dict = field(default_factory=dict, repr=False)
 
     @classmethod
@@ -448,7 +450,7 @@ def solve_contact(F: float, rho: float, Rr: float, cam: Material, roller: Materi
                   plane: str = "strain", element: str = "P2") -> ContactResult:
     """Build a model graded for this load case and solve it (cold). ``a_ref`` defaults to Hertz a
     (or, when Hertz does not apply or F = 0, 1 % of Rr). A one-off model: ``solver`` defaults
-    to ``SolverOptions(stress_operators="per_solve")`` (same numbers, half the condensation)."""
+    to ``SolverOptions(stress_operators="per_solve")`` (same numbers, no per-unknown solves)."""
     if a_ref is None:
         aH, _ = _hertz(chk.nonnegative("F", F, "N"), chk.positive("length", length, "m"), float(rho),
                        chk.positive("Rr", Rr, "m"), cam, roller, plane)
