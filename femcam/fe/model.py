@@ -2,9 +2,10 @@
 
 ``ContactModel.build`` meshes the cam (surface radius ``rho_ref``) and the roller, assembles and
 factorises each body once, condenses both onto the fine-zone contact vertices and precomputes
-the stress operators near the contact. ``model.solve(F, rho, mu)`` then only solves the small
-complementarity problem (``femcam.fe.contact``) with the gap of the TRUE ``rho`` and multiplies
-the precomputed operators: a few milliseconds per cam angle.
+the stress operators near the contact (``SolverOptions.stress_operators``: or back-solves the
+stresses per load case, for one-off models; docs/performance.md). ``model.solve(F, rho, mu)``
+then only solves the small complementarity problem (``femcam.fe.contact``) with the gap of
+the TRUE ``rho`` and multiplies the precomputed operators: a few milliseconds per cam angle.
 
 Reuse error: the body meshes keep the ``rho_ref`` shape while the gap uses ``rho``; the contact
 fine zone is ``|x| <= fine_half_width * a_ref``. ``model.covers(F, rho)`` says whether a load case
@@ -19,6 +20,7 @@ import time
 from dataclasses import dataclass, field
 
 import numpy as np
+import scipy.sparse as sp
 
 from .. import _validate as chk
 from ..errors import PhysicsError
@@ -30,6 +32,9 @@ from .contact import load_matrix, solve_lcp, trapezoid_weights
 from .elasticity import ELEMENTS, ORDERINGS, Body, assemble_body
 from .recovery import build_eval_set, derived, fit_half_width
 from .traction import solve_partial_slip
+
+#: values of ``SolverOptions.stress_operators``
+STRESS_OPERATORS = ("precompute", "per_solve")
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -43,6 +48,13 @@ class SolverOptions:
     eval_depth: stresses are precomputed at nodes down to eval_depth * a_ref below the surface
         (and over the fine zone in x).
     fit_threshold: nodes with p > fit_threshold * max(p) enter the half-width fit.
+    stress_operators: ``"precompute"``: the build condenses the stresses of the window onto the
+        contact unknowns (2 n_c solves per body; each solve then costs a few ms): for models
+        solved at many load cases (sweep families). ``"per_solve"``: the contact DOFs are
+        factorised last and the contact compliance is the Schur complement in the trailing
+        factor blocks (no solve per contact unknown); each solve back-solves both bodies once
+        for the stresses: for one-off models (a single scene, fresh verification models).
+        Same numbers to ~1e-12; times in docs/performance.md (benchmarks/bench_fe.py --modes).
     """
 
     ordering: str = "MMD_AT_PLUS_A"
@@ -52,6 +64,7 @@ class SolverOptions:
     kappa_tol: float = 0.5
     eval_depth: float = 2.0
     fit_threshold: float = 0.2
+    stress_operators: str = "precompute"
 
     def __post_init__(self):
         chk.choice("ordering", self.ordering, ORDERINGS)
@@ -64,6 +77,7 @@ class SolverOptions:
         chk.positive("kappa_tol", self.kappa_tol, "")
         chk.in_range("eval_depth", self.eval_depth, 0.0, 20.0, "(x a_ref)")
         chk.in_range("fit_threshold", self.fit_threshold, 0.0, 0.9, "")
+        chk.choice("stress_operators", self.stress_operators, STRESS_OPERATORS)
 
 
 @dataclass(frozen=True)
@@ -299,6 +313,9 @@ class ContactModel:
     #: tangential compliances (m/Pa): u_cam,x - u_roller,x per unit tangential / normal hat
     Ctt: np.ndarray | None = None
     Ctn: np.ndarray | None = None
+    #: per-body full-field stress operators, built on the first :meth:`full_field` (they were
+    #: rebuilt for every written .vtu: 1.44 s -> 0.41 s CPU for the 36 files of README command 1)
+    _field_ops: dict = field(default_factory=dict, repr=False)
 
     @classmethod
     def build(cls, *, Rr: float, rho_ref: float, cam: Material, roller: Material, length: float,
@@ -319,27 +336,33 @@ class ContactModel:
         t_cond = 0.0
         x = cm.cam.contact_x
         for name, geo, mat in (("cam", cm.cam, cam), ("roller", cm.roller, roller)):
-            b = assemble_body(geo, mat, plane=plane, element=element, ordering=solver.ordering)
+            b = assemble_body(geo, mat, plane=plane, element=element, ordering=solver.ordering,
+                              contact_last=solver.stress_operators == "per_solve")
             bodies[name] = b
             t1 = time.perf_counter()
             # body-specific signs: pressure into the body, friction +x on cam, -x on roller
             sn = -1.0 if name == "cam" else 1.0
             st = 1.0 if name == "cam" else -1.0
-            By = load_matrix(b, geo.contact, x, 1)
-            Bx = load_matrix(b, geo.contact, x, 0)
-            Un = b.solve(sn * By)
-            Ut = b.solve(st * Bx)
-            Bn[name], Bt[name] = sn * By, st * Bx
+            # sparse: a hat loads 3 nodes (the dense (n_dofs, n_c) arrays were 2 x 54 MB per
+            # body at a/h = 40, kept for full_field)
+            Bn[name] = sp.csc_matrix(sn * load_matrix(b, geo.contact, x, 1))
+            Bt[name] = sp.csc_matrix(st * load_matrix(b, geo.contact, x, 0))
+            # displacements read at the contact vertices: normal (y) rows, then tangential (x)
             ydof = b.basis.nodal_dofs[1, geo.contact]
+            cdof = np.concatenate([ydof, b.basis.nodal_dofs[0, geo.contact]])
+            S_c = sp.csr_matrix((np.ones(cdof.size), (np.arange(cdof.size), cdof)),
+                                shape=(cdof.size, b.n_dofs))
+            evals[name], Yn, Yt = build_eval_set(
+                b, Bn[name], Bt[name], S_c, float(x[-1]), solver.eval_depth * a_ref,
+                precompute=solver.stress_operators == "precompute")
             # separation grows with roller uy and with -cam uy
             sg = 1.0 if name == "roller" else -1.0
-            An = sg * Un[ydof] if An is None else An + sg * Un[ydof]
-            At = sg * Ut[ydof] if At is None else At + sg * Ut[ydof]
+            nc = ydof.size
+            An = sg * Yn[:nc] if An is None else An + sg * Yn[:nc]
+            At = sg * Yt[:nc] if At is None else At + sg * Yt[:nc]
             # relative tangential displacement u_cam,x - u_roller,x (femcam.fe.traction)
-            xdof = b.basis.nodal_dofs[0, geo.contact]
-            Ctt = Ctt - sg * Ut[xdof]
-            Ctn = Ctn - sg * Un[xdof]
-            evals[name] = build_eval_set(b, Un, Ut, float(x[-1]), solver.eval_depth * a_ref)
+            Ctt = Ctt - sg * Yt[nc:]
+            Ctn = Ctn - sg * Yn[nc:]
             t_cond += time.perf_counter() - t1
         timings = {"mesh": t_mesh,
                    "assembly": sum(b.t_assembly for b in bodies.values()),
@@ -443,11 +466,7 @@ class ContactModel:
         force = float(self.w @ sol_p) * self.length
         maxima, surfaces = {}, {}
         for name, ev in self.evals.items():
-            # einsum, not `@`: OpenBLAS's threaded gemv busy-waits on a loaded 2-core machine
-            # (Sn and St of one body at a/20 with two busy processes: 43 ms vs 6 ms einsum)
-            s = np.einsum("cij,j->ci", ev.Sn, sol_p)
-            if np.any(q):
-                s += np.einsum("cij,j->ci", ev.St, q)
+            s = ev.stresses(sol_p, q)
             sx, sz, txz = s
             sy = self._sy(name, sx, sz)
             tau1, vm = derived(sx, sz, txz, sy)
@@ -546,7 +565,10 @@ class ContactModel:
         q = r.q if r.q is not None else (r.sliding * r.mu) * r.p  # partial slip: the solved q
         f = self.Bn[body] @ r.p + self.Bt[body] @ q
         u = b.solve(f)
-        s = stress_operator(b) @ u
+        S = self._field_ops.get(body)
+        if S is None:
+            S = self._field_ops.setdefault(body, stress_operator(b))
+        s = S @ u
         n = b.n_dofs // 2
         sx, sz, txz = johnson_frame(b, s[:n], s[n:2 * n], s[2 * n:])
         sy = self._sy(body, sx, sz)
@@ -581,11 +603,13 @@ def solve_contact(F: float, rho: float, Rr: float, cam: Material, roller: Materi
                   mesh: MeshOptions | None = None, solver: SolverOptions | None = None,
                   plane: str = "strain", element: str = "P2") -> ContactResult:
     """Build a model graded for this load case and solve it (cold). ``a_ref`` defaults to Hertz a
-    (or, when Hertz does not apply or F = 0, 1 % of Rr)."""
+    (or, when Hertz does not apply or F = 0, 1 % of Rr). A one-off model: ``solver`` defaults
+    to ``SolverOptions(stress_operators="per_solve")`` (same numbers, no per-unknown solves)."""
     if a_ref is None:
         aH, _ = _hertz(chk.nonnegative("F", F, "N"), chk.positive("length", length, "m"), float(rho),
                        chk.positive("Rr", Rr, "m"), cam, roller, plane)
         a_ref = aH if (math.isfinite(aH) and aH > 0) else 0.01 * Rr
+    solver = solver or SolverOptions(stress_operators="per_solve")
     model = ContactModel.build(Rr=Rr, rho_ref=rho, cam=cam, roller=roller, length=length, a_ref=a_ref,
                                mesh=mesh, solver=solver, plane=plane, element=element)
     return model.solve(F=F, rho=rho, mu=mu, sliding=sliding)
