@@ -13,6 +13,10 @@ Run:  python benchmarks/bench_fe.py [--quick] [--markdown] [--threaded-blas]
   before/after comparison in docs/fe.md; femcam limits it by default).
 * ``--fresh``: also time one cold scene at a/20 in a fresh Python process (imports + build +
   solve, as a user would run it).
+* ``--modes`` (``--modes-only``: nothing else): cold scene per a/h (fresh process each, peak RSS) with
+  ``SolverOptions(stress_operators="precompute")`` (sweep families) and ``"per_solve"``
+  (Schur-complement contact compliance, one back-solve per load case: single scenes,
+  ``solve_contact``, fresh check models); the accuracy targets asserted on every row.
 
 Sections (full run)
 1. accuracy and time vs mesh density a/h (seed 002 study model, steel/steel, Rr = 10 mm,
@@ -142,6 +146,43 @@ def section_mesh(levels, markdown=False):
             print(f"slope d log|{k} err| / d log h = {np.polyfit(np.log(h), np.log(err), 1)[0]:.2f}")
 
 
+def section_modes(levels):
+    """Cold scene per a/h with both ``SolverOptions.stress_operators`` (fresh process each, so
+    that the peak RSS is the scene's): phase times, errors vs Hertz, peak RSS."""
+    print("\n## 6. cold scene: stress_operators precompute vs per_solve (fresh process each)\n")
+    print("| a/h | mode | DOFs | mesh | assembly | factor | condense | solve (contact + recovery) | "
+          "cold total | p0 err | a err | τ1 err | rms(p − Hertz)/p0 | peak RSS (MB) | load |")
+    print("|" + "---|" * 15)
+    code = ("import sys, time, numpy as np\n"
+            "from femcam.fe import ContactModel, MeshOptions, SolverOptions\n"
+            "from femcam.hertz import LineContact\n"
+            "from femcam.materials import STEEL\n"
+            f"Rr, rho, F, l = {Rr}, {rho}, {F}, {l}\n"
+            "hc = LineContact(F=F, length=l, R1=rho, R2=Rr, cam=STEEL, roller=STEEL)\n"
+            "t = time.perf_counter()\n"
+            "m = ContactModel.build(Rr=Rr, rho_ref=rho, cam=STEEL, roller=STEEL, length=l, "
+            "a_ref=float(hc.a), mesh=MeshOptions(a_over_h=float(sys.argv[1])), "
+            "solver=SolverOptions(stress_operators=sys.argv[2]))\n"
+            "r = m.solve(F=F, rho=rho)\n"
+            "tot = time.perf_counter() - t\n"
+            "tm = r.timings\n"
+            "e = (r.p0 / hc.p0 - 1, r.a / hc.a - 1, r.tau1_max.value / hc.max_shear().value - 1,\n"
+            "     float(np.sqrt(np.mean((r.p - hc.pressure(r.x)) ** 2)) / hc.p0))\n"
+            "hwm = next(int(x.split()[1]) for x in open('/proc/self/status') if x.startswith('VmHWM'))\n"
+            "print(m.n_dofs, tm['mesh'], tm['assembly'], tm['factorisation'], tm['condensation'],\n"
+            "      tm['contact'] + tm['recovery'], tot, *e, hwm / 1024)\n")
+    for n in levels:
+        for mode in ("precompute", "per_solve"):
+            out = subprocess.run([sys.executable, "-c", code, str(n), mode], capture_output=True,
+                                 text=True, check=True)
+            v = [float(x) for x in out.stdout.split()]
+            assert abs(v[7]) <= TARGETS["p0"] and abs(v[8]) <= TARGETS["a"] and abs(v[9]) <= TARGETS["tau1"]
+            print(f"| {n} | {mode} | {int(v[0])} | {v[1]:.2f} | {v[2]:.2f} | {v[3]:.2f} | {v[4]:.2f} | "
+                  f"{1e3 * v[5]:.0f} ms | {v[6]:.2f} | {100 * v[7]:+.3f} % | {100 * v[8]:+.2f} % | "
+                  f"{100 * v[9]:+.2f} % | {100 * v[10]:.2f} % | {v[11]:.0f} | {os.getloadavg()[0]:.2f} |",
+                  flush=True)
+
+
 def fresh_process(n=20):
     """One cold scene in a new Python process: (imports s, build + solve s)."""
     code = ("import time; t0 = time.perf_counter()\n"
@@ -234,6 +275,9 @@ if __name__ == "__main__":
     note = " (threaded BLAS in the condensation)" if "--threaded-blas" in sys.argv else ""
     print(f"# femcam FE benchmark{note}")
     print(f"machine: {machine()}")
+    if "--modes-only" in sys.argv:  # only section 6 (its rows assert the accuracy targets)
+        section_modes([10, 20, 26] if quick else [10, 20, 26, 40])
+        sys.exit(0)
     check_accuracy()
     if markdown:
         section_mesh([10, 14, 20, 26] if quick else [10, 14, 20, 26, 40], markdown=True)
@@ -247,3 +291,5 @@ if __name__ == "__main__":
         section_sweep()
     if "--fresh" in sys.argv:
         fresh_process()
+    if "--modes" in sys.argv:
+        section_modes([10, 20, 26] if quick else [10, 20, 26, 40])

@@ -22,8 +22,13 @@ from dataclasses import dataclass
 from . import _validate as V  # noqa: N812
 
 PLANES = ("strain", "stress")
-#: accepted Young's moduli (Pa): soft elastomers to diamond, with margin
-E_MIN, E_MAX = 1e5, 2e12
+#: accepted Young's moduli (Pa) in the API: soft elastomers (1e5) up to 1e18, which leaves room for
+#: the "rigid body" limit of numerical studies (1e5 x steel) but refuses unit mistakes such as
+#: 1e30 Pa (a contact of zero width that no mesh can resolve)
+E_MIN, E_MAX = 1e5, 1e18
+#: moduli of real engineering materials (Pa), soft elastomers to diamond (1.2e12 Pa): the range a
+#: scene file accepts (femcam.scene), where a value outside it is a unit mistake
+E_PHYSICAL = (1e5, 2e12)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -40,8 +45,7 @@ class Material:
     hardness: float | None = None
 
     def __post_init__(self):
-        # from soft elastomers (~1 MPa) to diamond (1.2e12 Pa); outside this range an input is a
-        # unit mistake (E_GPa given in Pa, say), and a 1e30 Pa body meshes a contact of zero width
+        # see E_MIN, E_MAX
         object.__setattr__(self, "E", V.in_range("E", self.E, E_MIN, E_MAX, "Pa"))
         object.__setattr__(self, "nu", V.in_range("nu", self.nu, -1.0, 0.5, "", lo_open=True,
                                                   hi_open=True))

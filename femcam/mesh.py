@@ -40,7 +40,7 @@ from __future__ import annotations
 import math
 import os
 import threading
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -72,6 +72,10 @@ class MeshOptions:
     growth: float = 0.3
     domain_over_a: float | None = None
     max_size_fraction: float = 0.125
+    #: optional coating band on one body (femcam.layers): body name, thickness (m), layers
+    coat_body: str | None = None
+    coat_thickness: float = 0.0
+    coat_layers: int = 4
 
     def __post_init__(self):
         _validate.in_range("a_over_h", self.a_over_h, 2.0, 400.0, "")
@@ -82,6 +86,10 @@ class MeshOptions:
             _validate.in_range("domain_over_a", self.domain_over_a, 5.0 * self.fine_half_width, 1e7,
                                "(x a_ref)")
         _validate.in_range("max_size_fraction", self.max_size_fraction, 0.01, 0.5, "")
+        if self.coat_body is not None:
+            _validate.choice("coat_body", self.coat_body, ("cam", "roller"))
+            _validate.positive("coat_thickness", self.coat_thickness, "m")
+            _validate.in_range("coat_layers", self.coat_layers, 2, 200, "")
 
 
 @dataclass(frozen=True)
@@ -125,6 +133,8 @@ class BodyMesh:
     L: float
     R: float
     groups: dict = field(default_factory=dict)
+    #: bool per triangle, True in the coating band (None: uncoated body)
+    coating: np.ndarray | None = None
 
 
 @dataclass(frozen=True)
@@ -224,6 +234,8 @@ def _mesh_body(gmsh, name: str, R: float, L: float, a_ref: float, opts: MeshOpti
                          f"({name}); increase domain_over_a or reduce fine_half_width")
     lc = L * opts.max_size_fraction
     gmsh.model.add(name)
+    if opts.coat_body == name:
+        return _mesh_coated_body(gmsh, name, R, L, W, xf, lc, h, n_fine, a_ref, opts)
     arcs, bottom, surface = _geometry(gmsh, name, R, L, W, xf, lc)
     geo = gmsh.model.geo
     geo.mesh.setTransfiniteCurve(arcs[1], n_fine + 1)
@@ -354,7 +366,8 @@ def _mirror(b: BodyMesh) -> BodyMesh:
                                elements=g.elements[[0, 2, 1]].copy() if g.dim == 2 else g.elements)
               for k, g in b.groups.items()}
     return BodyMesh(name=b.name, points=pts, triangles=tri, fixed=b.fixed, contact=b.contact,
-                    contact_x=b.contact_x, surface=b.surface, L=b.L, R=b.R, groups=groups)
+                    contact_x=b.contact_x, surface=b.surface, L=b.L, R=b.R, groups=groups,
+                    coating=b.coating)
 
 
 def build_contact_mesh(*, Rr: float, rho: float, a_ref: float,
@@ -402,3 +415,86 @@ def build_contact_mesh(*, Rr: float, rho: float, a_ref: float,
             gmsh.finalize()
     return ContactMesh(cam=cam, roller=roller, Rr=Rr, rho=rho, a_ref=a_ref,
                        h=a_ref / opts.a_over_h, options=opts)
+
+
+# ---------------------------------------------------------------------------- coating band
+#: largest in-plane / through-thickness element size ratio in the coating band's fine zone
+COAT_MAX_ASPECT = 40.0
+
+
+def _mesh_coated_body(gmsh, name, R, L, W, xf, lc, h, n_fine, a_ref, opts) -> BodyMesh:
+    """Mesh one body with a coating band of thickness ``t`` over its whole surface arc.
+
+    The band is three structured (transfinite) strips of triangles bounded by the surface arc,
+    the concentric arc at depth ``t`` (the coating-substrate interface) and radial lines: ``n``
+    layers through the thickness (``max(coat_layers, ceil(t / h))``), the fine-zone spacing
+    ``h`` along the middle strip and a geometric growth (ratio 1.15) from ``h`` outwards along
+    the side strips. The substrate below is meshed as before (size field on the fine zone).
+    Physical groups ``<body>_coating`` (band triangles) and ``<body>_interface`` (interface
+    curves) are added; ``BodyMesh.coating`` marks the band triangles.
+    """
+    t = opts.coat_thickness
+    n = max(int(opts.coat_layers), math.ceil(t / h - 1e-9))
+    if h / (t / n) > COAT_MAX_ASPECT:
+        need = a_ref / (COAT_MAX_ASPECT * t / n)
+        raise _validate.fail("coat_thickness", t * 1e6, "um",
+                             f"is too thin for the mesh: {n} layers of {t / n * 1e6:.3g} um under a "
+                             f"fine-zone spacing h = {h * 1e6:.3g} um give an element aspect ratio "
+                             f"{h / (t / n):.0f} > {COAT_MAX_ASPECT:g}; use a_over_h >= {need:.0f} "
+                             "or more coat_layers")
+    if t > 0.25 * L:
+        raise _validate.fail("coat_thickness", t * 1e6, "um",
+                             f"must be <= L/4 = {0.25 * L * 1e6:.4g} um (body {name} size L)")
+    geo = gmsh.model.geo
+    xs = np.array([-W, -xf, xf, W])
+    ys = -surface_height(xs, R)
+    if math.isinf(R):
+        qx, qy = xs, ys - t
+    else:  # concentric arc at depth t (centre (0, -R); R < 0 concave)
+        s = (R - t) / R
+        qx, qy = s * xs, -R + s * (ys + R)
+    if not (qy[0] > -L + 1e-12 * L and qy[3] > -L + 1e-12 * L):
+        raise InputError(f"body {name}: coated arc reaches the fixed support; use a larger |R|")
+    p = [geo.addPoint(x, y, 0.0, lc) for x, y in zip(xs, ys, strict=True)]
+    q = [geo.addPoint(x, y, 0.0, lc) for x, y in zip(qx, qy, strict=True)]
+    if math.isinf(R):
+        arcs = [geo.addLine(p[i], p[i + 1]) for i in range(3)]
+        inner = [geo.addLine(q[i], q[i + 1]) for i in range(3)]
+    else:
+        c = geo.addPoint(0.0, -R, 0.0, lc)
+        arcs = [geo.addCircleArc(p[i], c, p[i + 1]) for i in range(3)]
+        inner = [geo.addCircleArc(q[i], c, q[i + 1]) for i in range(3)]
+    radial = [geo.addLine(q[i], p[i]) for i in range(4)]
+    band = [geo.addPlaneSurface([geo.addCurveLoop([inner[i], radial[i + 1], -arcs[i], -radial[i]])])
+            for i in range(3)]
+    br, bl = geo.addPoint(W, -L, 0.0, lc), geo.addPoint(-W, -L, 0.0, lc)
+    right, bottom, left = geo.addLine(q[3], br), geo.addLine(br, bl), geo.addLine(bl, q[0])
+    sub = geo.addPlaneSurface([geo.addCurveLoop(inner + [right, bottom, left])])
+    r = 1.15
+    n_side = max(2, math.ceil(math.log(1.0 + (W - xf) * (r - 1.0) / h) / math.log(r)))
+    for cv in radial:
+        geo.mesh.setTransfiniteCurve(cv, n + 1)
+    for k in (0, 2):  # small elements next to the fine zone
+        prog = 1.0 / r if k == 0 else r
+        geo.mesh.setTransfiniteCurve(arcs[k], n_side + 1, "Progression", prog)
+        geo.mesh.setTransfiniteCurve(inner[k], n_side + 1, "Progression", prog)
+    geo.mesh.setTransfiniteCurve(arcs[1], n_fine + 1)
+    geo.mesh.setTransfiniteCurve(inner[1], n_fine + 1)
+    for sf in band:
+        geo.mesh.setTransfiniteSurface(sf)
+    geo.synchronize()
+    gmsh.model.addPhysicalGroup(1, arcs, name=f"{name}_contact")
+    gmsh.model.addPhysicalGroup(1, [bottom], name=f"{name}_fixed")
+    gmsh.model.addPhysicalGroup(2, band + [sub], name=name)
+    gmsh.model.addPhysicalGroup(2, band, name=f"{name}_coating")
+    gmsh.model.addPhysicalGroup(1, inner, name=f"{name}_interface")
+    _size_field(gmsh, arcs[1], n_fine, h, lc, a_ref, opts)
+    gmsh.model.mesh.generate(2)
+    pts, tri, fine, surf, fixed, groups = _extract(gmsh, -1, arcs, bottom)
+    gmsh.model.remove()
+    body = _body_mesh(name, R, L, pts, tri, fine, surf, fixed, groups, n_fine, xf, h)
+    coat = body.groups[f"{name}_coating"].elements
+    key = np.sort(body.triangles, axis=0)
+    ck = {tuple(e) for e in np.sort(coat, axis=0).T}
+    mask = np.fromiter((tuple(e) in ck for e in key.T), dtype=bool, count=key.shape[1])
+    return replace(body, coating=mask)

@@ -13,7 +13,8 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
     [[program.segment]] kind = "rise"|"dwell"|"fall", beta_deg, lift_mm (rise/fall),
                         law? | control_points?
     [follower]         type = "roller"|"knife_edge"|"flat_faced", base_radius_mm,
-                       roller_radius_mm (roller), offset_mm?, face_width_mm
+                       roller_radius_mm (roller), offset_mm?, face_width_mm,
+                       tip_radius_mm? (knife_edge), face_length_mm? (flat_faced)
     [dynamics]         mass_kg, spring_N_per_m, preload_N, damping_N_s_per_m | damping_ratio,
                        model? = "rigid"|"one_dof"|"two_dof" (docs/dynamics.md), steps_per_rev?,
                        train_stiffness_N_per_m, train_damping_ratio | train_damping_N_s_per_m,
@@ -31,6 +32,15 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
                        specific_heat_J_per_kg_K?, contact_fatigue_strength_MPa?,
                        contact_fatigue_cycles?, contact_fatigue_exponent?, shear_fatigue_limit_MPa?,
                        scuffing_temperature_C?
+    finite length (roller only, all optional; used by femcam.halfspace, see docs/halfspace.md):
+    [follower]         roller_width_mm?, crown? = "none"|"circular"|"logarithmic",
+                       crown_radius_mm? | crown_drop_um?, edge_radius_mm?, misalignment_deg?
+    [cam]?             face_width_mm?  (cam face width; follower.face_width_mm stays the 2D length)
+    roller on a pin or needles (femcam.bodies; docs/bodies.md): [follower] roller_support? =
+                       "solid"|"pin"|"needles", roller_bore_mm (ring bore RADIUS), pin_radius_mm,
+                       pin_clearance_um, needle_count, needle_radius_mm; [materials.pin]?
+                       (pin and needles, default: the roller's); [cam]? bore_mm (shaft bore
+                       RADIUS), [materials.shaft]?
     [fe]?              a_over_h?, tolerance? (femcam sweep's --mesh-size, --tolerance)
     [sweep]?           method?, angles_deg? ("0:360:1"), chunk_size?, vtk_every?, plots?
     [wear]?            K | k_mm3_per_N_m, roller_model?, srr?, J_kg_m2?, T_drag_N_m?, tip_radius_mm?,
@@ -53,9 +63,10 @@ import numpy as np
 from . import _validate
 from .dynamics import TrainModel, periodic_response
 from .errors import ConvergenceError, InputError, SceneError, UndercutError
+from .halfspace.crown import RollerProfile
 from .kinematics import CamProgram, dwell, fall, law, rise
 from .loads import FollowerDynamics, LoadResult, contact_force
-from .materials import E_MAX, E_MIN, Material
+from .materials import E_PHYSICAL, Material
 from .profile import CamProfile, bool_intervals, cam_profile, make_follower
 
 try:  # Python >= 3.11
@@ -80,7 +91,7 @@ def _dense_theta() -> np.ndarray:
 _TOP = {"name": ("", None, "str", True), "description": ("", None, "str", False),
         "source": ("", None, "str", False)}
 _TABLES = ("operating", "program", "follower", "dynamics", "materials", "contact", "fe", "wear",
-           "lubricant", "surface")
+           "lubricant", "surface", "cam")
 _OPERATING = {"rpm": ("rpm", 2.0 * math.pi / 60.0, "pos", False),
               "omega_rad_s": ("rad/s", 1.0, "pos", False)}
 _PROGRAM = {"law": ("", None, "str", False), "control_points": ("", None, "list", False),
@@ -90,7 +101,10 @@ _SEGMENT = {"kind": ("", None, "str", True), "beta_deg": ("deg", math.pi / 180.0
             "control_points": ("", None, "list", False)}
 _FOLLOWER = {"type": ("", None, "str", True), "base_radius_mm": ("mm", 1e-3, "pos", True),
              "roller_radius_mm": ("mm", 1e-3, "pos", False), "offset_mm": ("mm", 1e-3, "num", False),
-             "face_width_mm": ("mm", 1e-3, "pos", True)}
+             "face_width_mm": ("mm", 1e-3, "pos", True),
+             # FE contact of the non-roller followers (femcam.fe.followers)
+             "tip_radius_mm": ("mm", 1e-3, "pos", False), "face_length_mm": ("mm", 1e-3, "pos", False)}
+_FOLLOWER_ONLY = {"tip_radius_mm": "knife_edge", "face_length_mm": "flat_faced"}
 _DYNAMICS = {"mass_kg": ("kg", 1.0, "nonneg", True), "spring_N_per_m": ("N/m", 1.0, "nonneg", True),
              "preload_N": ("N", 1.0, "nonneg", True),
              "damping_N_s_per_m": ("N s/m", 1.0, "nonneg", False),
@@ -131,7 +145,8 @@ _SURFACE = {k: ("um", 1e-6, "nonneg", False)
             for k in ("cam_Ra_um", "roller_Ra_um", "cam_Rq_um", "roller_Rq_um")}
 _CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", "flat_faced"),
             "plane": ("strain", "stress"), "sliding": ("+x", "-x"),
-            "model": ("rigid", "one_dof", "two_dof")}
+            "model": ("rigid", "one_dof", "two_dof"),
+            "crown": ("none", "circular", "logarithmic")}
 # -- study settings read by `femcam sweep` (CLI flags override them), and the [wear] table
 #    (femcam.wear.options); ranges: femcam.sweep.options (a_over_h [2, 400], TOLERANCE_FLOOR) --
 _FE = {"a_over_h": ("(elements per contact half-width)", 1.0, "pos", False),
@@ -189,6 +204,170 @@ def _train(ck, raw: dict, dy: dict, dyn):
     except InputError as exc:  # mass_kg = 0: a massless follower has no train dynamics
         ck.add("dynamics", f"model = {model!r}: {exc}")
         return None
+
+
+def _follower_only_keys(ck, raw, ftype) -> bool:
+    """Report keys of another follower type (tip_radius_mm on a roller, ...); True if any."""
+    bad = [k for k in _FOLLOWER_ONLY if ftype and isinstance(raw, dict) and k in raw
+           and _FOLLOWER_ONLY[k] != ftype]
+    for k in bad:
+        ck.add(f"follower.{k}", f"= {_fmt(raw[k])}: only a {_FOLLOWER_ONLY[k]} follower has this key, "
+               f"not a {ftype}")
+    return bool(bad)
+
+
+# ---- finite-length contact keys (femcam.halfspace; docs/halfspace.md) -------------------------
+# follower.face_width_mm stays the 2D contact length (w = Fc / face_width in Hertz and the 2D FE);
+# roller_width_mm and cam.face_width_mm default to it and only enter the half-space strip, whose
+# contact length is min(roller_width_mm, cam.face_width_mm).
+_FINITE = {"roller_width_mm": ("mm", 1e-3, "pos", False), "crown": ("", None, "str", False),
+           "crown_radius_mm": ("mm", 1e-3, "pos", False), "crown_drop_um": ("um", 1e-6, "pos", False),
+           "edge_radius_mm": ("mm", 1e-3, "nonneg", False),
+           "misalignment_deg": ("deg", math.pi / 180.0, "num", False)}
+_FOLLOWER.update(_FINITE)
+_CAM = {"face_width_mm": ("mm", 1e-3, "pos", False)}
+_FINITE_SI = {"roller_width_mm": "roller_width", "crown": "crown", "crown_radius_mm": "crown_radius",
+              "crown_drop_um": "crown_drop", "edge_radius_mm": "edge_radius",
+              "misalignment_deg": "misalignment"}
+
+
+def _finite_length(ck: _Checker, raw: dict, fo: dict, ftype) -> dict:
+    """Check the finite-length keys; returns them in SI (``roller_width``, ``cam_width``, ``crown``,
+    ``crown_radius``, ``crown_drop``, ``edge_radius``, ``misalignment``) or {} on a problem."""
+    cam = ck.table(raw.get("cam", {}), "cam", _CAM)
+    graw = raw.get("follower", {}) if isinstance(raw.get("follower"), dict) else {}
+    given = [k for k in _FINITE if k in graw]
+    if given and ftype in ("knife_edge", "flat_faced"):
+        ck.add(f"follower.{given[0]}", f"= {_fmt(graw[given[0]])}: a {ftype} follower has no roller")
+        return {}
+    if any(k in graw and k not in fo for k in _FINITE) or "face_width_mm" not in fo:
+        return {}
+    out = {v: fo[k] for k, v in _FINITE_SI.items() if k in fo}
+    out.setdefault("roller_width", fo["face_width_mm"])
+    out["cam_width"] = cam.get("face_width_mm", fo["face_width_mm"])
+    kw = {k: out[k] for k in ("crown", "crown_radius", "crown_drop", "edge_radius", "misalignment")
+          if k in out}
+    try:
+        RollerProfile(width=out["roller_width"], **kw)
+    except InputError as exc:
+        msg = str(exc)
+        for k, v in _FINITE_SI.items():  # name the scene key and unit, not the SI parameter
+            if msg.startswith(v + " ") or msg.startswith(v + ":"):
+                unit = _FINITE[k][0]
+                ck.add(f"follower.{k}", f"= {_fmt(graw.get(k, fo.get(k)))}{' ' + unit if unit else ''}: "
+                       f"{msg.split(': ', 1)[-1]}")
+                return {}
+        ck.add("follower", msg)
+        return {}
+    return out
+
+# ---- real bodies (femcam.bodies): the roller as a ring on a pin or needles, the cam on a shaft
+_FOLLOWER.update({"roller_support": ("", None, "str", False), "roller_bore_mm": ("mm", 1e-3, "pos", False),
+                  "pin_radius_mm": ("mm", 1e-3, "pos", False),
+                  "pin_clearance_um": ("um", 1e-6, "nonneg", False),
+                  "needle_count": ("(count)", 1.0, "pos", False),
+                  "needle_radius_mm": ("mm", 1e-3, "pos", False)})
+_CHOICES["roller_support"] = ("solid", "pin", "needles")
+_CAM["bore_mm"] = ("mm", 1e-3, "pos", False)  # shaft bore radius (femcam.bodies)
+_BODY_MATERIALS = ("pin", "shaft")
+_SUPPORT_KEYS = {"solid": (), "pin": ("roller_bore_mm", "pin_radius_mm", "pin_clearance_um"),
+                 "needles": ("roller_bore_mm", "pin_radius_mm", "pin_clearance_um", "needle_count",
+                             "needle_radius_mm")}
+
+
+def roller_support_problems(*, Ro, Ri, support, Rp, c, Z, r_n) -> list[str]:
+    """Geometry problems of a ring support (SI in, messages in the scene's mm / um): bore inside
+    the roller, pin + clearance = bore (pin), pin + 2 needles + clearance = bore and needles
+    that fit around the pitch circle (needles)."""
+    out = []
+    if support == "solid":
+        return out
+    if not 0.0 < Ri < Ro:
+        return [f"roller_bore_mm = {Ri * 1e3:g} mm: must be in (0, roller_radius_mm = {Ro * 1e3:g} mm)"]
+    if support == "pin":
+        if not math.isclose(Rp + c, Ri, rel_tol=1e-9, abs_tol=1e-12):
+            out.append(f"pin_radius_mm + pin_clearance_um = {Rp * 1e3:g} mm + {c * 1e6:g} um = "
+                       f"{(Rp + c) * 1e3:g} mm: must equal roller_bore_mm = {Ri * 1e3:g} mm")
+        return out
+    if Z < 3 or Z != int(Z):
+        out.append(f"needle_count = {Z:g}: must be a whole number >= 3 (fewer cannot hold the ring)")
+    if not math.isclose(Rp + 2 * r_n + c, Ri, rel_tol=1e-9, abs_tol=1e-12):
+        out.append(f"pin_radius_mm + 2 needle_radius_mm + pin_clearance_um = {Rp * 1e3:g} + "
+                   f"{2 * r_n * 1e3:g} mm + {c * 1e6:g} um = {(Rp + 2 * r_n + c) * 1e3:g} mm: must "
+                   f"equal roller_bore_mm = {Ri * 1e3:g} mm")
+    pitch = Ri - r_n
+    if Z >= 3 and pitch > 0 and 2 * pitch * math.sin(math.pi / Z) < 2 * r_n:
+        zmax = int(math.pi / math.asin(min(1.0, r_n / pitch)))
+        out.append(f"needle_count = {Z:g} needles of radius {r_n * 1e3:g} mm do not fit around the "
+                   f"pitch circle of radius {pitch * 1e3:g} mm (they overlap by "
+                   f"{(2 * r_n - 2 * pitch * math.sin(math.pi / Z)) * 1e6:.3g} um); at most {zmax} fit")
+    return out
+
+
+def _check_bodies(ck, raw: dict, fo: dict, mats: dict) -> dict:
+    """The real-body keys: which apply, their geometry, the pin/shaft materials. Returns the SI
+    dict stored in ``Scene.bodies`` (empty for today's solid roller and local cam body)."""
+    fraw = raw.get("follower", {}) if isinstance(raw.get("follower"), dict) else {}
+    support = fo.get("roller_support", "solid")
+    given = [k for k in _SUPPORT_KEYS["needles"] if k in fraw]
+    needed = _SUPPORT_KEYS.get(support, ())
+    for k in given:
+        if k not in needed:
+            ck.add(f"follower.{k}", f"= {_fmt(fraw[k])}: not used with roller_support = {support!r}")
+    for k in needed:
+        if k not in fraw:
+            ck.add(f"follower.{k}", f"missing: required with roller_support = {support!r} "
+                   f"(unit: {_FOLLOWER[k][0]})")
+    out = {}
+    if needed and all(k in fo for k in needed) and "roller_radius_mm" in fo:
+        geo = dict(Ro=fo["roller_radius_mm"], Ri=fo["roller_bore_mm"], support=support,
+                   Rp=fo["pin_radius_mm"], c=fo["pin_clearance_um"], Z=fo.get("needle_count", 0.0),
+                   r_n=fo.get("needle_radius_mm", 0.0))
+        for msg in roller_support_problems(**geo):
+            ck.add("follower", msg)
+        out.update(geo, Z=int(geo["Z"]))
+    # [cam] is checked once, by _finite_length (one _CAM schema); here only a valid bore is used
+    bore = raw.get("cam", {}).get("bore_mm") if isinstance(raw.get("cam"), dict) else None
+    ok = isinstance(bore, int | float) and not isinstance(bore, bool) and math.isfinite(bore) and bore > 0
+    cam = {"bore_mm": bore * 1e-3} if ok else {}
+    if "bore_mm" in cam and "base_radius_mm" in fo and cam["bore_mm"] >= fo["base_radius_mm"]:
+        ck.add("cam.bore_mm", f"= {_fmt(raw['cam']['bore_mm'])} mm: the shaft bore radius must be < "
+               f"base_radius_mm = {fo['base_radius_mm'] * 1e3:g} mm")
+    if "bore_mm" in cam:
+        out["cam_bore"] = cam["bore_mm"]
+    out.update({k: v for k, v in mats.items() if k in _BODY_MATERIALS})
+    return out
+# ---- end of the real-bodies block
+
+_CHOICES["hardness_law"] = ("exponential", "linear")
+# --- coated and case-hardened bodies (femcam.layers): [materials.<body>.coating|case] ---------
+_COATING = {"thickness_um": ("um", 1e-6, "pos", True), "E_GPa": ("GPa", 1e9, "pos", True),
+            "nu": ("(dimensionless)", 1.0, "nu", True), "name": ("", None, "str", False),
+            "interface_shear_strength_MPa": ("MPa", 1e6, "pos", False),
+            "hardness_MPa": ("MPa", 1e6, "pos", False)}
+_CASE = {"depth_mm": ("mm", 1e-3, "pos", True), "hardness_law": ("", None, "str", False),
+         "surface_hardness_HV": ("HV", 9.80665e6, "pos", False),
+         "core_hardness_HV": ("HV", 9.80665e6, "pos", False),
+         "surface_yield_MPa": ("MPa", 1e6, "pos", False), "core_yield_MPa": ("MPa", 1e6, "pos", False)}
+
+
+def _layers(ck, raw: dict) -> dict:
+    """``{body: {"coating": {...}, "case": {...}}}`` (SI, checked) from [materials.<body>.*]."""
+    out = {}
+    mraw = raw.get("materials", {}) if isinstance(raw.get("materials", {}), dict) else {}
+    for alias, tabs in mraw.items():
+        body = "roller" if alias == "follower" else alias
+        for t, spec in (("coating", _COATING), ("case", _CASE)):
+            if isinstance(tabs, dict) and t in tabs:
+                out.setdefault(body, {})[t] = ck.table(tabs[t], f"materials.{alias}.{t}", spec)
+        case = out.get(body, {}).get("case", {})
+        pairs = [("surface_hardness_HV", "core_hardness_HV"), ("surface_yield_MPa", "core_yield_MPa")]
+        given = [p for p in pairs if any(k in case for k in p)]
+        if case and (len(given) != 1 or not all(k in case for k in given[0])):
+            ck.add(f"materials.{alias}.case", "give surface_hardness_HV and core_hardness_HV, or "
+                   "surface_yield_MPa and core_yield_MPa (one complete pair)")
+    return out
+# --- end of the layers block -------------------------------------------------------------------
 
 
 def _fmt(v) -> str:
@@ -410,12 +589,18 @@ class Scene:
     source: str = ""
     fe: dict = field(default_factory=dict)
     wear: dict = field(default_factory=dict)
+    finite_length: dict = field(default_factory=dict)  # femcam.halfspace keys in SI (_finite_length)
+    #: coatings and cases per body (SI, checked; femcam.layers.scene_layers builds them)
+    layers: dict = field(default_factory=dict)
     source_path: str = ""
     #: checked SI values of the assessment keys: lubricant, surface, oil_temperature_C, materials
     tribology: dict = field(default_factory=dict)
     raw: dict = field(default_factory=dict, repr=False)
     train: TrainModel | None = None  # [dynamics] model one_dof/two_dof; None: rigid eq. 11
     steps_per_rev: int | None = None
+    #: real bodies (femcam.bodies): roller support geometry (SI: Ro, Ri, support, Rp, c, Z, r_n),
+    #: cam_bore (m) and the "pin" / "shaft" Materials; empty for the solid roller
+    bodies: dict = field(default_factory=dict)
     #: checked [sweep] settings (see ``fe``)
     sweep: dict = field(default_factory=dict)
 
@@ -557,6 +742,9 @@ def load_scene(path) -> Scene:
     dyn, train, steps_per_rev = _dynamics(ck, raw)
     mats = _materials(ck, raw)
     tribo = _tribology(ck, raw, mats)
+    finite = _finite_length(ck, raw, fo, fo.get("type"))
+    bodies = _check_bodies(ck, raw, fo, mats)
+    layers = _layers(ck, raw)
     co = ck.table(raw.get("contact", {}), "contact", _CONTACT)
     study = _study(ck, raw, mats)
     ck.raise_if_any()
@@ -565,7 +753,8 @@ def load_scene(path) -> Scene:
                  program=program, follower=follower, dynamics=dyn, omega=omega, cam=mats["cam"],
                  roller=mats["roller"], length=fo["face_width_mm"], mu=co.get("friction", 0.0),
                  plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=study["fe"],
-                 wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw, train=train, tribology=tribo,
+                 wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw, train=train,
+                 tribology=tribo, finite_length=finite, bodies=bodies, layers=layers,
                  steps_per_rev=steps_per_rev, sweep=study["sweep"])
 
 
@@ -710,6 +899,8 @@ def _follower(ck: _Checker, raw: dict):
     follower = None
     if ftype == "roller" and "roller_radius_mm" not in g:
         ck.add("follower.roller_radius_mm", "missing required key for a roller follower (unit: mm)")
+    elif _follower_only_keys(ck, g, ftype):
+        pass
     elif ftype in ("knife_edge", "flat_faced") and "roller_radius_mm" in g:
         ck.add("follower.roller_radius_mm", f"= {_fmt(g['roller_radius_mm'])}: "
                f"a {ftype} follower has no roller")
@@ -773,18 +964,18 @@ def _follower_dynamics(ck: _Checker, g: dict, dy: dict) -> FollowerDynamics | No
 
 def _material(ck: _Checker, alias: str, m: dict, given: dict) -> Material | None:
     """The Material of one checked [materials.<alias>] table (None, with a problem added, for a
-    modulus outside :data:`femcam.materials.E_MIN`..``E_MAX``)."""
-    try:
-        return Material(E=m["E_GPa"], nu=m["nu"], name=m.get("name", alias), hardness=m.get("hardness_MPa"))
-    except InputError:  # E outside the physical range: a unit mistake (Pa typed as GPa, say)
+    modulus outside :data:`femcam.materials.E_PHYSICAL`)."""
+    lo, hi = E_PHYSICAL
+    if not lo <= m["E_GPa"] <= hi:  # a unit mistake (Pa typed as GPa, say)
         ck.add(f"materials.{alias}.E_GPa", f"= {_fmt(given['E_GPa'])} GPa: must be "
-               f"in [{E_MIN / 1e9:g}, {E_MAX / 1e9:g}] GPa (soft elastomers to diamond)")
+               f"in [{lo / 1e9:g}, {hi / 1e9:g}] GPa (soft elastomers to diamond)")
         return None
+    return Material(E=m["E_GPa"], nu=m["nu"], name=m.get("name", alias), hardness=m.get("hardness_MPa"))
 
 
 def _body_material(ck: _Checker, mats: dict, k: str, alias: str, given) -> None:
     """Check [materials.<alias>] and put body ``k``'s Material (and assessment extras) in ``mats``."""
-    m = ck.table(given, f"materials.{alias}", _MATERIAL)
+    m = ck.table(given, f"materials.{alias}", _MATERIAL, extra=("coating", "case"))
     extra = {x: m[x] for x in _MATERIAL_EXTRA if x in m}
     if extra:  # assessment data (femcam.assess), kept in Scene.tribology["materials"]
         mats.setdefault("extra", {})[k] = extra
@@ -802,12 +993,13 @@ def _materials(ck: _Checker, raw: dict) -> dict:
             ck.add("materials", f"= {_fmt(mraw)}: must be a table")
         return mats
     for k in mraw:
-        if k not in ("cam", "roller", "follower"):
-            ck.add(f"materials.{k}", "unknown material table; use [materials.cam] and "
-                   "[materials.roller] (or [materials.follower])")
+        if k not in ("cam", "roller", "follower") + _BODY_MATERIALS:
+            ck.add(f"materials.{k}", "unknown material table; use [materials.cam], [materials.roller] "
+                   "(or [materials.follower]), [materials.pin], [materials.shaft]")
     if "roller" in mraw and "follower" in mraw:
         ck.add("materials", "give [materials.roller] or its alias [materials.follower], not both")
-    for k, alias in (("cam", "cam"), ("roller", "roller"), ("roller", "follower")):
+    for k, alias in (("cam", "cam"), ("roller", "roller"), ("roller", "follower"), ("pin", "pin"),
+                     ("shaft", "shaft")):
         if alias in mraw:
             _body_material(ck, mats, k, alias, mraw[alias])
     if "materials" in raw:

@@ -92,6 +92,30 @@ def trapezoid_weights(x: np.ndarray) -> np.ndarray:
 
 @dataclass(frozen=True)
 class LCPSolution:
+    """Solution of :func:`solve_lcp`.
+
+    Attributes
+    ----------
+    p : ndarray
+        Nodal pressures (Pa) at the contact vertices.
+    g : ndarray
+        Gap (m) after loading at the vertices.
+    delta : float
+        Rigid approach (m).
+    active : ndarray of bool
+        Nodes in contact.
+    iterations : int
+        Active-set iterations.
+    residual : float
+        Complementarity residual ``||min(p, c g)||_inf / max(p)`` (-).
+    history : tuple of float
+        Residual per iteration.
+    converged : bool
+        True when the active set repeated with ``residual <= tol``.
+    message : str
+        Why it did not converge (empty when it did).
+    """
+
     p: np.ndarray
     g: np.ndarray
     delta: float
@@ -100,15 +124,38 @@ class LCPSolution:
     residual: float
     history: tuple
     converged: bool
+    message: str = ""
 
 
 def solve_lcp(A: np.ndarray, h0: np.ndarray, w: np.ndarray, W: float, *, active0: np.ndarray,
               max_iter: int = 50, tol: float = 1e-10) -> LCPSolution:
     """Primal-dual active set for ``g = h0 + A p - delta >= 0, p >= 0, p.g = 0, w.p = W``.
 
-    ``residual`` is the complementarity residual ``||min(p, c g)||_inf / max(p)`` with ``c``
-    turning gaps into pressures (``1 / mean diag A``). Raises :class:`ConvergenceError` with the
-    residual history if the active set keeps changing after ``max_iter`` iterations.
+    Parameters
+    ----------
+    A : ndarray (n, n)
+        Compliance (m/Pa): gap change at node i per unit pressure hat k.
+    h0 : ndarray (n,)
+        Initial gap (m).
+    w : ndarray (n,)
+        Quadrature weights (m): ``w.p`` is the load per unit length.
+    W : float
+        Load per unit length (N/m).
+    active0 : ndarray of bool
+        Initial guess of the contact set.
+    max_iter : int
+        Iteration limit.
+    tol : float
+        Complementarity tolerance on ``residual`` (-), used as given.
+
+    Returns
+    -------
+    LCPSolution
+        ``converged`` is True when the active set repeats and ``residual <= tol``. A fixed point
+        whose residual stays above ``tol`` (round-off in an ill-conditioned ``A``) or an active
+        set that cycles returns ``converged = False`` with the reason in ``message``. Raises
+        :class:`ConvergenceError` with the residual history if the active set is still changing
+        after ``max_iter`` iterations.
     """
     n = h0.size
     c = 1.0 / np.mean(np.diag(A))
@@ -138,12 +185,14 @@ def solve_lcp(A: np.ndarray, h0: np.ndarray, w: np.ndarray, W: float, *, active0
         history.append(res)
         new = (p - c * g) > 0.0
         key = new.tobytes()
-        if np.array_equal(new, active) and res <= max(tol, 1e-9):
-            return LCPSolution(p, g, delta, active, it, res, tuple(history), True)
-        if np.array_equal(new, active) or key in seen:
-            # fixed point reached (round-off residual) or a cycle: accept if residual small
-            if res < 1e-6:
-                return LCPSolution(p, g, delta, active, it, res, tuple(history), True)
+        if np.array_equal(new, active):
+            ok = res <= tol
+            msg = "" if ok else (f"active set settled but the complementarity residual {res:.3g} "
+                                 f"exceeds tol = {tol:.3g}")
+            return LCPSolution(p, g, delta, active, it, res, tuple(history), ok, msg)
+        if key in seen:
+            return LCPSolution(p, g, delta, active, it, res, tuple(history), False,
+                               f"active set cycles (residual {res:.3g}, tol = {tol:.3g})")
         seen.add(key)
         active = new
     raise ConvergenceError(f"contact active set did not settle in {max_iter} iterations "

@@ -6,7 +6,8 @@ the roller. P2 models are written as quadratic ``triangle6`` cells (skfem's loca
 ``displacement`` (m, 3 components), ``sx, sz, txz, sy, tau1, von_mises`` (Pa, each body in its
 own Johnson frame, see :mod:`femcam.fe.recovery`), ``depth`` (m) and ``contact_pressure`` (Pa,
 the P1 interpolant of the nodal pressure at the vertex and midside nodes of the fine-zone contact
-curve, 0 elsewhere). Cell data
+curve, 0 elsewhere), ``contact_traction`` (Pa, the tangential traction on each body along x in
+the contact frame, ``q`` on the cam and ``-q`` on the roller, same interpolation). Cell data
 ``body``: 0 cam, 1 roller.
 """
 
@@ -25,7 +26,7 @@ def scene_arrays(result):
 
     model = result.model
     pts, cells, data, body_id = [], [], {k: [] for k in (*FIELDS, "displacement", "depth",
-                                                          "contact_pressure")}, []
+                                                          "contact_pressure", "contact_traction")}, []
     offset = 0
     for i, name in enumerate(("cam", "roller")):
         b = model.bodies[name]
@@ -46,6 +47,10 @@ def scene_arrays(result):
         cp = np.zeros(n)
         cp[on] = np.interp(xy[0, on], result.x, result.p)
         data["contact_pressure"].append(cp)
+        q = result.q if result.q is not None else (result.sliding * result.mu) * result.p
+        ct = np.zeros(n)
+        ct[on] = (1.0 if name == "cam" else -1.0) * np.interp(xy[0, on], result.x, q)
+        data["contact_traction"].append(ct)
         body_id.append(np.full(conn.shape[0], i))
         offset += n
     cell_type = "triangle6" if model.element == "P2" else "triangle"

@@ -2,9 +2,10 @@
 
 ``ContactModel.build`` meshes the cam (surface radius ``rho_ref``) and the roller, assembles and
 factorises each body once, condenses both onto the fine-zone contact vertices and precomputes
-the stress operators near the contact. ``model.solve(F, rho, mu)`` then only solves the small
-complementarity problem (``femcam.fe.contact``) with the gap of the TRUE ``rho`` and multiplies
-the precomputed operators: a few milliseconds per cam angle.
+the stress operators near the contact (``SolverOptions.stress_operators``: or back-solves the
+stresses per load case, for one-off models; docs/performance.md). ``model.solve(F, rho, mu)``
+then only solves the small complementarity problem (``femcam.fe.contact``) with the gap of
+the TRUE ``rho`` and multiplies the precomputed operators: a few milliseconds per cam angle.
 
 Reuse error: the body meshes keep the ``rho_ref`` shape while the gap uses ``rho``; the contact
 fine zone is ``|x| <= fine_half_width * a_ref``. ``model.covers(F, rho)`` says whether a load case
@@ -19,6 +20,7 @@ import time
 from dataclasses import dataclass, field
 
 import numpy as np
+import scipy.sparse as sp
 
 from .. import _validate as chk
 from ..errors import PhysicsError
@@ -29,6 +31,10 @@ from ..mesh import ContactMesh, MeshOptions, build_contact_mesh, surface_height
 from .contact import load_matrix, solve_lcp, trapezoid_weights
 from .elasticity import ELEMENTS, ORDERINGS, Body, assemble_body
 from .recovery import build_eval_set, derived, fit_half_width
+from .traction import solve_partial_slip
+
+#: values of ``SolverOptions.stress_operators``
+STRESS_OPERATORS = ("precompute", "per_solve")
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -42,6 +48,13 @@ class SolverOptions:
     eval_depth: stresses are precomputed at nodes down to eval_depth * a_ref below the surface
         (and over the fine zone in x).
     fit_threshold: nodes with p > fit_threshold * max(p) enter the half-width fit.
+    stress_operators: ``"precompute"``: the build condenses the stresses of the window onto the
+        contact unknowns (2 n_c solves per body; each solve then costs a few ms): for models
+        solved at many load cases (sweep families). ``"per_solve"``: the contact DOFs are
+        factorised last and the contact compliance is the Schur complement in the trailing
+        factor blocks (no solve per contact unknown); each solve back-solves both bodies once
+        for the stresses: for one-off models (a single scene, fresh verification models).
+        Same numbers to ~1e-12; times in docs/performance.md (benchmarks/bench_fe.py --modes).
     """
 
     ordering: str = "MMD_AT_PLUS_A"
@@ -51,6 +64,7 @@ class SolverOptions:
     kappa_tol: float = 0.5
     eval_depth: float = 2.0
     fit_threshold: float = 0.2
+    stress_operators: str = "precompute"
 
     def __post_init__(self):
         chk.choice("ordering", self.ordering, ORDERINGS)
@@ -63,6 +77,7 @@ class SolverOptions:
         chk.positive("kappa_tol", self.kappa_tol, "")
         chk.in_range("eval_depth", self.eval_depth, 0.0, 20.0, "(x a_ref)")
         chk.in_range("fit_threshold", self.fit_threshold, 0.0, 0.9, "")
+        chk.choice("stress_operators", self.stress_operators, STRESS_OPERATORS)
 
 
 @dataclass(frozen=True)
@@ -121,22 +136,69 @@ class SurfaceStress:
 class ContactResult:
     """Solution of one load case (per the model's face width ``length``).
 
-    a, x0: fitted half-width and centre (m); p0: fitted peak (Pa); p0_nodal: max nodal pressure;
-    x, p: contact vertex abscissae (m) and pressures (Pa); force: integral of p times length (N),
-    force_error: relative error against F; delta: rigid approach (m); gap (m) at the vertices;
-    von_mises_max, tau1_max, txz_abs_max: StressMax (largest value) over both bodies;
-    sx_max, sx_min, sz_max, sz_min, sy_max, sy_min: StressMax of the signed components (``_max``
-    the largest, e.g. the trailing-edge tension ``sx_max`` ~ 2 mu p0 at x = -a on the cam for
-    ``sliding = +1``; ``_min`` the most compressive, e.g. ``sz_min`` ~ -p0 at the surface);
-    max_by_body: ``{"cam"|"roller": {key: StressMax}}`` with the keys of :data:`MAXIMA_KEYS`
-    (the nine over both bodies above are read-only properties derived from it);
-    all over the stress window ``|x| <= fine_half_width * a_ref``, ``z <= eval_depth * a_ref``;
-    x_surface, sx, sz, txz: cam surface stresses (Johnson frame, Pa; properties, the arrays of
-    ``surface_by_body["cam"]``); surface_by_body:
-    ``{"cam"|"roller": SurfaceStress}`` (the roller's in its own Johnson frame: its friction
-    traction acts in ``-sliding x``, so its tension peak is at x = +a); iterations, residual,
-    history, active, converged; timings (s) per phase; n_dofs; hertz_a, hertz_p0 (if Hertz
-    applies) and outside_hertz (a / min radius > 0.1).
+    Attributes
+    ----------
+    F : float
+        Contact force over ``length`` (N).
+    rho : float
+        Cam radius of curvature passed to the solve (m; inf flat, < 0 concave).
+    mu : float
+        Friction coefficient (-).
+    sliding : int
+        +1/-1, direction of the full-sliding traction on the cam (used when ``Q`` is None).
+    a, x0 : float
+        Fitted Hertz half-width and centre (m) (a Hertz-ellipse fit: near a curvature jump the
+        pressure is not an ellipse, use ``p0_nodal``).
+    p0 : float
+        Fitted peak pressure (Pa).
+    p0_nodal : float
+        Largest nodal pressure (Pa).
+    x, p : ndarray
+        Contact vertex abscissae (m) and pressures (Pa).
+    gap : ndarray
+        Gap after loading at the vertices (m).
+    delta : float
+        Rigid approach (m).
+    force, force_error : float
+        Integral of p times length (N) and its relative error against F (-).
+    max_by_body : dict
+        ``{"cam"|"roller": {key: StressMax}}`` with the keys of :data:`MAXIMA_KEYS` over the
+        stress window ``|x| <= fine_half_width * a_ref``, ``z <= eval_depth * a_ref``; the nine
+        over both bodies (``von_mises_max``, ``tau1_max``, ``txz_abs_max``, ``sx_max``,
+        ``sx_min``, ``sz_max``, ``sz_min``, ``sy_max``, ``sy_min``; Pa) are properties derived
+        from it (e.g. the trailing-edge tension ``sx_max`` ~ 2 mu p0 at x = -a on the cam for
+        ``sliding = +1``).
+    surface_by_body : dict
+        ``{"cam"|"roller": SurfaceStress}`` (Pa, each in its own Johnson frame); ``x_surface``,
+        ``sx``, ``sz``, ``txz`` are the cam's (properties).
+    iterations, residual, history, active : int, float, tuple, ndarray
+        Active-set diagnostics of the normal problem (residual dimensionless).
+    converged : bool
+        True when the normal (and tangential) active sets settled within tolerance; False with
+        the reason in ``message``.
+    timings : dict
+        Seconds per phase (mesh, assembly, factorisation, condensation, contact, recovery).
+    n_dofs : int
+        Total degrees of freedom.
+    hertz_a, hertz_p0 : float
+        Hertz half-width (m) and peak (Pa) of the osculating arcs (nan if Hertz does not apply).
+    outside_hertz : bool
+        Hertz a / min radius > 0.1.
+    q : ndarray
+        Tangential traction at the vertices on the cam in +x (Pa): ``sliding mu p`` for full
+        sliding, the partial-slip solution when ``Q`` was given.
+    Q : float
+        Tangential force carried, ``length * w . q`` (N, on the cam in +x).
+    slip_state : str
+        ``"none"``, ``"stick"``, ``"partial slip"`` or ``"sliding"``.
+    stick : ndarray of bool
+        Stick nodes (partial slip).
+    stick_width : float
+        Extent of the stick zone (m).
+    creep, shift : float
+        Carter creepage (-) when rolling, Cattaneo rigid shift (m) without (nan otherwise).
+    message : str
+        Why the solve did not converge (empty when it did).
     """
 
     F: float
@@ -166,6 +228,14 @@ class ContactResult:
     hertz_p0: float
     outside_hertz: bool
     model: ContactModel = field(repr=False)
+    q: np.ndarray | None = None
+    Q: float = 0.0
+    slip_state: str = "none"
+    stick: np.ndarray | None = None
+    stick_width: float = 0.0
+    creep: float = math.nan
+    shift: float = math.nan
+    message: str = ""
 
     # derived from max_by_body / surface_by_body (not stored twice)
     von_mises_max = _over_bodies("von_mises")
@@ -195,6 +265,16 @@ class ContactResult:
         from .export import write_vtu
 
         return write_vtu(self, path)
+
+
+def _traction_fields(trac, Q, q, w, x, length, mu) -> dict:
+    """ContactResult traction fields from a TractionSolution (or the friction-free/sliding q)."""
+    if trac is None:
+        state = "sliding" if np.any(q) else "none"
+        return {"Q": float(w @ q) * length, "slip_state": state, "stick": np.zeros(x.size, bool),
+                "stick_width": 0.0, "creep": math.nan, "shift": math.nan}
+    return {"Q": float(w @ trac.q) * length, "slip_state": trac.slip_state, "stick": trac.stick,
+            "stick_width": trac.stick_width, "creep": trac.creep, "shift": trac.shift}
 
 
 def _hertz(F, length, rho, Rr, cam, roller, plane):
@@ -239,6 +319,12 @@ class ContactModel:
     options: SolverOptions
     timings: dict
     n_dofs: int
+    #: tangential compliances (m/Pa): u_cam,x - u_roller,x per unit tangential / normal hat
+    Ctt: np.ndarray | None = None
+    Ctn: np.ndarray | None = None
+    #: per-body full-field stress operators, built on the first :meth:`full_field` (they were
+    #: rebuilt for every written .vtu: 1.44 s -> 0.41 s CPU for the 36 files of README command 1)
+    _field_ops: dict = field(default_factory=dict, repr=False)
 
     @classmethod
     def build(cls, *, Rr: float, rho_ref: float, cam: Material, roller: Material, length: float,
@@ -262,26 +348,37 @@ class ContactModel:
         cm = build_contact_mesh(Rr=Rr, rho=rho_ref, a_ref=a_ref, options=mesh)
         t_mesh = time.perf_counter() - t0
         bodies, Bn, Bt, An, At, evals = {}, {}, {}, None, None, {}
+        Ctt, Ctn = 0.0, 0.0  # tangential condensed compliances (femcam.fe.traction)
         t_cond = 0.0
         x = cm.cam.contact_x
         for name, geo, mat in (("cam", cm.cam, cam), ("roller", cm.roller, roller)):
-            b = assemble_body(geo, mat, plane=plane, element=element, ordering=solver.ordering)
+            b = assemble_body(geo, mat, plane=plane, element=element, ordering=solver.ordering,
+                              contact_last=solver.stress_operators == "per_solve")
             bodies[name] = b
             t1 = time.perf_counter()
             # body-specific signs: pressure into the body, friction +x on cam, -x on roller
             sn = -1.0 if name == "cam" else 1.0
             st = 1.0 if name == "cam" else -1.0
-            By = load_matrix(b, geo.contact, x, 1)
-            Bx = load_matrix(b, geo.contact, x, 0)
-            Un = b.solve(sn * By)
-            Ut = b.solve(st * Bx)
-            Bn[name], Bt[name] = sn * By, st * Bx
+            # sparse: a hat loads 3 nodes (the dense (n_dofs, n_c) arrays were 2 x 54 MB per
+            # body at a/h = 40, kept for full_field)
+            Bn[name] = sp.csc_matrix(sn * load_matrix(b, geo.contact, x, 1))
+            Bt[name] = sp.csc_matrix(st * load_matrix(b, geo.contact, x, 0))
+            # displacements read at the contact vertices: normal (y) rows, then tangential (x)
             ydof = b.basis.nodal_dofs[1, geo.contact]
+            cdof = np.concatenate([ydof, b.basis.nodal_dofs[0, geo.contact]])
+            S_c = sp.csr_matrix((np.ones(cdof.size), (np.arange(cdof.size), cdof)),
+                                shape=(cdof.size, b.n_dofs))
+            evals[name], Yn, Yt = build_eval_set(
+                b, Bn[name], Bt[name], S_c, float(x[-1]), solver.eval_depth * a_ref,
+                precompute=solver.stress_operators == "precompute")
             # separation grows with roller uy and with -cam uy
             sg = 1.0 if name == "roller" else -1.0
-            An = sg * Un[ydof] if An is None else An + sg * Un[ydof]
-            At = sg * Ut[ydof] if At is None else At + sg * Ut[ydof]
-            evals[name] = build_eval_set(b, Un, Ut, float(x[-1]), solver.eval_depth * a_ref)
+            nc = ydof.size
+            An = sg * Yn[:nc] if An is None else An + sg * Yn[:nc]
+            At = sg * Yt[:nc] if At is None else At + sg * Yt[:nc]
+            # relative tangential displacement u_cam,x - u_roller,x (femcam.fe.traction)
+            Ctt = Ctt - sg * Yt[nc:]
+            Ctn = Ctn - sg * Yn[nc:]
             t_cond += time.perf_counter() - t1
         timings = {"mesh": t_mesh,
                    "assembly": sum(b.t_assembly for b in bodies.values()),
@@ -291,7 +388,7 @@ class ContactModel:
                    plane=plane, element=element, mesh=cm, bodies=bodies, x=x,
                    w=trapezoid_weights(x), An=An, At=At, Bn=Bn, Bt=Bt, evals=evals,
                    options=solver, timings=timings,
-                   n_dofs=sum(b.n_dofs for b in bodies.values()))
+                   n_dofs=sum(b.n_dofs for b in bodies.values()), Ctt=Ctt, Ctn=Ctn)
 
     # ------------------------------------------------------------------ validity
     def hertz(self, F: float, rho: float):
@@ -321,19 +418,43 @@ class ContactModel:
 
     # ------------------------------------------------------------------ solve
     def solve(self, *, F: float, rho: float, mu: float = 0.0, sliding: int = 1,
-              check: bool = True) -> ContactResult:
-        """Solve one load case: F (N over ``length``), rho (m), mu (-), sliding (+1 or -1).
+              check: bool = True, gap: np.ndarray | None = None, Q: float | None = None,
+              rolling: int = 0) -> ContactResult:
+        """Solve one load case with full sliding friction (or none).
 
-        ``check=True`` raises :class:`PhysicsError` when :meth:`covers` is False; the solve
-        always raises it when the loaded zone reaches the end of the meshed fine zone.
+        Parameters
+        ----------
+        F : float
+            Contact force over the face width ``length`` (N).
+        rho : float
+            Cam radius of curvature at the contact (m; < 0 concave, inf flat). Sets the
+            osculating-arc gap when ``gap`` is None, and the Hertz estimate and coverage check.
+        mu : float
+            Coulomb friction coefficient (-); the traction is ``sliding * mu * p`` on the cam.
+        sliding : {+1, -1}
+            Direction of the friction traction on the cam along x.
+        check : bool
+            Raise :class:`PhysicsError` when :meth:`covers` is False.
+        gap : ndarray, optional
+            Initial gap (m) at the contact vertices ``self.x`` (e.g. the exact gap of
+            :func:`femcam.fe.gap.exact_gap`); default the two osculating arcs.
+        Q : float, optional
+            Tangential force on the cam in +x over ``length`` (N). None (default): the traction
+            is ``sliding * mu * p`` (full sliding). Given: Coulomb partial slip
+            (:mod:`femcam.fe.traction`); ``|Q| >= mu F`` is full sliding in the direction of
+            ``Q`` (``slip_state = "sliding"``), never a failed solve.
+        rolling : {0, +1, -1}
+            With ``Q``: 0 is a Cattaneo-Mindlin shift (no rolling), +-1 steady rolling with the
+            surface material flowing through the contact in +-x (Carter).
+
+        Returns
+        -------
+        ContactResult
+            Pressures (Pa), half-width (m), stresses (Pa) and solver diagnostics. The solve
+            always raises :class:`PhysicsError` when the loaded zone reaches the end of the
+            meshed fine zone, and :class:`ConvergenceError` when the active set does not settle.
         """
-        F = chk.nonnegative("F", F, "N")
-        rho = _radius("rho", rho)
-        if math.isnan(rho) or rho == 0.0:
-            raise chk.fail("rho", rho, "m", "must be nonzero (inf for a flat cam)")
-        mu = chk.nonnegative("mu", mu, "")
-        if sliding not in (1, -1):
-            raise chk.fail("sliding", sliding, "", "must be +1 or -1")
+        F, rho, mu, Q = self._check_inputs(F, rho, mu, sliding, Q, rolling)
         if math.isfinite(rho) and rho < 0 and -rho <= self.Rr:
             raise PhysicsError(f"rho = {rho:g} m: a concave cam with |rho| <= Rr = {self.Rr:g} m cannot "
                                "hold the roller (conformal or interfering contact)")
@@ -346,31 +467,22 @@ class ContactModel:
         aH, p0H = self.hertz(F, rho)
         if F == 0.0:
             p = np.zeros(nc)
-            h0 = surface_height(self.x, self.Rr) + surface_height(self.x, rho)
+            h0 = self._gap(rho, gap)
             sol_p, g, delta, active, it, res, hist, conv = p, h0, 0.0, np.zeros(nc, bool), 0, 0.0, (), True
+            q, trac, msg = p, None, ""
         else:
-            A = self.An + (sliding * mu) * self.At
-            h0 = surface_height(self.x, self.Rr) + surface_height(self.x, rho)
-            a0 = aH if math.isfinite(aH) else self.a_ref
-            active0 = np.abs(self.x) < a0
-            sol = solve_lcp(A, h0, self.w, F / self.length, active0=active0,
-                            max_iter=self.options.max_iter, tol=self.options.tol)
+            sol, q, trac = self._contact(F, rho, mu, sliding, self._gap(rho, gap), Q, rolling, aH)
             sol_p, g, delta, active = sol.p, sol.g, sol.delta, sol.active
-            it, res, hist, conv = sol.iterations, sol.residual, sol.history, sol.converged
-            if active[0] or active[-1]:
-                raise PhysicsError(
-                    f"the loaded zone reaches the end of the meshed fine zone |x| <= {self.x[-1]:.4g} m "
-                    f"(F = {F:g} N, rho = {rho:g} m); rebuild with a larger a_ref")
+            it, res, hist, msg = sol.iterations, sol.residual, sol.history, sol.message
+            conv = sol.converged and (trac is None or trac.converged)
+            if trac is not None and trac.message:
+                msg = f"{msg}; {trac.message}" if msg else trac.message
         t1 = time.perf_counter()
         a, x0, p0 = fit_half_width(self.x, sol_p, self.options.fit_threshold)
         force = float(self.w @ sol_p) * self.length
         maxima, surfaces = {}, {}
         for name, ev in self.evals.items():
-            # einsum, not `@`: OpenBLAS's threaded gemv busy-waits on a loaded 2-core machine
-            # (Sn and St of one body at a/20 with two busy processes: 43 ms vs 6 ms einsum)
-            s = np.einsum("cij,j->ci", ev.Sn, sol_p)
-            if mu > 0:
-                s += (sliding * mu) * np.einsum("cij,j->ci", ev.St, sol_p)
+            s = ev.stresses(sol_p, q)
             sx, sz, txz = s
             sy = self._sy(name, sx, sz)
             tau1, vm = derived(sx, sz, txz, sy)
@@ -394,7 +506,65 @@ class ContactModel:
             max_by_body=maxima, surface_by_body=surfaces,
             iterations=it, residual=res, history=hist, active=active, converged=conv,
             timings=timings, n_dofs=self.n_dofs, hertz_a=aH, hertz_p0=p0H, outside_hertz=outside,
-            model=self)
+            model=self, q=q, message=msg, **_traction_fields(trac, Q, q, self.w, self.x, self.length, mu))
+
+    def _contact(self, F, rho, mu, sliding, h0, Q, rolling, aH):
+        """Normal LCP, and with ``Q`` the partial-slip traction (fixed point on the normal-
+        tangential coupling ``At q``; one pass for similar materials). Returns (LCP solution,
+        q (Pa, on the cam in +x), TractionSolution or None)."""
+        a0 = aH if math.isfinite(aH) else self.a_ref
+        W = F / self.length
+        kw = dict(active0=np.abs(self.x) < a0, max_iter=self.options.max_iter, tol=self.options.tol)
+        trac = None
+        if Q is None or abs(Q) >= mu * F:  # friction-free, full sliding at mu, or Q it cannot carry
+            s = sliding if Q is None else (1 if Q >= 0 else -1)
+            sol = solve_lcp(self.An + (s * mu) * self.At, h0, self.w, W, **kw)
+            q = (s * mu) * sol.p
+            if Q is not None:
+                trac = solve_partial_slip(self.Ctt, self.x, self.w, sol.p, Q / self.length, mu)
+        else:
+            q = np.zeros_like(self.x)
+            # similar materials (Dundurs beta = 0): normal and tangential problems decouple
+            # (Johnson 1985 §7.1), one pass; otherwise a fixed point on the coupling At q
+            similar = (self.cam.E, self.cam.nu) == (self.roller.E, self.roller.nu)
+            for _ in range(1 if similar else 20):
+                sol = solve_lcp(self.An, h0 + self.At @ q, self.w, W, **kw)
+                trac = solve_partial_slip(self.Ctt, self.x, self.w, sol.p, Q / self.length, mu,
+                                          rolling=rolling, u0=self.Ctn @ sol.p)
+                dq = float(np.max(np.abs(trac.q - q)))
+                q = trac.q
+                if dq <= 1e-9 * max(float(np.max(np.abs(q))), 1e-300):
+                    break
+        if sol.active[0] or sol.active[-1]:
+            raise PhysicsError(
+                f"the loaded zone reaches the end of the meshed fine zone |x| <= {self.x[-1]:.4g} m "
+                f"(F = {F:g} N, rho = {rho:g} m); rebuild with a larger a_ref")
+        return sol, q, trac
+
+    @staticmethod
+    def _check_inputs(F, rho, mu, sliding, Q, rolling):
+        """Checked (F, rho, mu, Q) of :meth:`solve`."""
+        F = chk.nonnegative("F", F, "N")
+        rho = _radius("rho", rho)
+        if math.isnan(rho) or rho == 0.0:
+            raise chk.fail("rho", rho, "m", "must be nonzero (inf for a flat cam)")
+        mu = chk.nonnegative("mu", mu, "")
+        if sliding not in (1, -1):
+            raise chk.fail("sliding", sliding, "", "must be +1 or -1")
+        if Q is not None:
+            Q = chk.number("Q", Q, "N")
+        if rolling not in (0, 1, -1):
+            raise chk.fail("rolling", rolling, "", "must be 0 (no rolling), +1 or -1")
+        return F, rho, mu, Q
+
+    def _gap(self, rho: float, gap) -> np.ndarray:
+        """Initial gap (m) at ``self.x``: ``gap`` if given (checked), else the osculating arcs."""
+        if gap is None:
+            return surface_height(self.x, self.Rr) + surface_height(self.x, rho)
+        g = chk.finite_array("gap", gap, "m")
+        if g.shape != self.x.shape:
+            raise chk.fail("gap", f"shape {g.shape}", "m", f"must have the shape {self.x.shape} of model.x")
+        return g
 
     def _sy(self, name, sx, sz):
         nu = (self.cam if name == "cam" else self.roller).nu
@@ -408,9 +578,13 @@ class ContactModel:
 
         chk.choice("body", body, ("cam", "roller"))
         b: Body = self.bodies[body]
-        f = self.Bn[body] @ r.p + (r.sliding * r.mu) * (self.Bt[body] @ r.p)
+        q = r.q if r.q is not None else (r.sliding * r.mu) * r.p  # partial slip: the solved q
+        f = self.Bn[body] @ r.p + self.Bt[body] @ q
         u = b.solve(f)
-        s = stress_operator(b) @ u
+        S = self._field_ops.get(body)
+        if S is None:
+            S = self._field_ops.setdefault(body, stress_operator(b))
+        s = S @ u
         n = b.n_dofs // 2
         sx, sz, txz = johnson_frame(b, s[:n], s[n:2 * n], s[2 * n:])
         sy = self._sy(body, sx, sz)
@@ -445,11 +619,13 @@ def solve_contact(F: float, rho: float, Rr: float, cam: Material, roller: Materi
                   mesh: MeshOptions | None = None, solver: SolverOptions | None = None,
                   plane: str = "strain", element: str = "P2") -> ContactResult:
     """Build a model graded for this load case and solve it (cold). ``a_ref`` defaults to Hertz a
-    (or, when Hertz does not apply or F = 0, 1 % of Rr)."""
+    (or, when Hertz does not apply or F = 0, 1 % of Rr). A one-off model: ``solver`` defaults
+    to ``SolverOptions(stress_operators="per_solve")`` (same numbers, no per-unknown solves)."""
     if a_ref is None:
         aH, _ = _hertz(chk.nonnegative("F", F, "N"), chk.positive("length", length, "m"), float(rho),
                        chk.positive("Rr", Rr, "m"), cam, roller, plane)
         a_ref = aH if (math.isfinite(aH) and aH > 0) else 0.01 * Rr
+    solver = solver or SolverOptions(stress_operators="per_solve")
     model = ContactModel.build(Rr=Rr, rho_ref=rho, cam=cam, roller=roller, length=length, a_ref=a_ref,
                                mesh=mesh, solver=solver, plane=plane, element=element)
     return model.solve(F=F, rho=rho, mu=mu, sliding=sliding)

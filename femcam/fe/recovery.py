@@ -15,22 +15,25 @@ Derived quantities (Johnson 1985 §4.2, §7.1):
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
+import scipy.sparse as sp
 
 from ..mesh import surface_height
 from .contact import edge_midside_dofs
 from .elasticity import Body, scalar_node_coordinates, stress_operator
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class EvalSet:
-    """Precomputed stress operators on the scalar nodes of one body near the contact.
+    """Stress recovery on the scalar nodes of one body near the contact.
 
     Sn, St: (3, n_eval, n_c) arrays mapping unit nodal pressure / unit friction traction
     (already with this body's sign: pressure into the body, friction in the model's sliding
-    sense) to (sx, sz, txz) in Pa. ``surface`` indexes the eval nodes on the contact surface
+    sense) to (sx, sz, txz) in Pa (``SolverOptions.stress_operators = "precompute"``), or None
+    (``"per_solve"``: :meth:`stresses` back-solves the body for each load case with ``S``,
+    ``Bn``, ``Bt`` and ``solver``). ``surface`` indexes the eval nodes on the contact surface
     (sorted by x).
     """
 
@@ -38,9 +41,30 @@ class EvalSet:
     nodes: np.ndarray
     x: np.ndarray
     z: np.ndarray
-    Sn: np.ndarray
-    St: np.ndarray
+    Sn: np.ndarray | None
+    St: np.ndarray | None
     surface: np.ndarray
+    S: sp.csr_matrix | None = None
+    Bn: sp.csc_matrix | None = None
+    Bt: sp.csc_matrix | None = None
+    solver: Body | None = field(default=None, repr=False)
+
+    def stresses(self, p: np.ndarray, q: np.ndarray | None = None) -> np.ndarray:
+        """(sx, sz, txz) (3, n_eval) in Pa for nodal pressures ``p`` (Pa) and tangential tractions
+        ``q`` (Pa, in the model's sliding sense; ``mu p`` in full sliding, the solved partial-slip
+        traction otherwise; None: frictionless)."""
+        friction = q is not None and np.any(q)
+        if self.Sn is not None:
+            # einsum, not `@`: OpenBLAS's threaded gemv busy-waits on a loaded 2-core machine
+            # (Sn and St of one body at a/20 with two busy processes: 43 ms vs 6 ms einsum)
+            s = np.einsum("cij,j->ci", self.Sn, p)
+            if friction:
+                s += np.einsum("cij,j->ci", self.St, q)
+            return s
+        f = self.Bn @ p
+        if friction:
+            f = f + self.Bt @ q
+        return (self.S @ self.solver.solve(f)).reshape(3, -1)
 
 
 def johnson_frame(body: Body, sxx, syy, sxy):
@@ -63,10 +87,15 @@ def surface_nodes(body: Body) -> np.ndarray:
     return v if md is None else np.concatenate([v, md[0] // 2])
 
 
-def build_eval_set(body: Body, Un: np.ndarray, Ut: np.ndarray, half_width: float,
-                   max_depth: float) -> EvalSet:
-    """Stress operators at the scalar nodes with ``|x| <= half_width`` and ``z <= max_depth``,
-    and at every node of the fine-zone contact curve (:func:`surface_nodes`)."""
+def eval_operator(body: Body, half_width: float, max_depth: float):
+    """The stress window of one body: ``(nodes, x, z, surface, S)``.
+
+    ``nodes``: the scalar nodes with ``|x| <= half_width`` and ``z <= max_depth``, and every node
+    of the fine-zone contact curve (:func:`surface_nodes`); ``x``, ``z`` (m, ``z >= 0``) their
+    abscissae and depths; ``surface`` indexes the ones on the contact curve, sorted by x; ``S``
+    the sparse operator (3 n_eval, n_dofs) from displacements to (sx, sz, txz) in the body's
+    Johnson frame (the sign of ``txz`` folded in, see :func:`johnson_frame`).
+    """
     xy = scalar_node_coordinates(body)
     z = depth(body, xy)
     tol = 1e-9 * half_width
@@ -75,17 +104,49 @@ def build_eval_set(body: Body, Un: np.ndarray, Ut: np.ndarray, half_width: float
     sel = np.nonzero(((np.abs(xy[0]) <= half_width + tol) & (z <= max_depth + tol)) | on_surface)[0]
     S = stress_operator(body, sel)
     ne = sel.size
-    Sn = (S @ Un).reshape(3, ne, -1)
-    St = (S @ Ut).reshape(3, ne, -1)
-    sx_n, sz_n, txz_n = johnson_frame(body, Sn[0], Sn[1], Sn[2])
-    sx_t, sz_t, txz_t = johnson_frame(body, St[0], St[1], St[2])
-    Sn = np.stack([sx_n, sz_n, txz_n])
-    St = np.stack([sx_t, sz_t, txz_t])
-    zs = z[sel]
+    sign = np.ones(3 * ne)
+    sign[2 * ne:] = johnson_frame(body, 1.0, 1.0, 1.0)[2]
+    S = sp.diags(sign) @ S
     surf = np.nonzero(on_surface[sel])[0]
     surf = surf[np.argsort(xy[0, sel][surf])]
-    return EvalSet(body=body.name, nodes=sel, x=xy[0, sel], z=np.maximum(zs, 0.0), Sn=Sn, St=St,
-                   surface=surf)
+    return sel, xy[0, sel], np.maximum(z[sel], 0.0), surf, S.tocsr()
+
+
+def build_eval_set(body: Body, Bn, Bt, S_y, half_width: float, max_depth: float,
+                   precompute: bool = True):
+    """Condense one body: ``(EvalSet, Yn, Yt)`` with ``Yn = S_y K^-1 Bn``, ``Yt = S_y K^-1 Bt``.
+
+    ``Bn``, ``Bt``: sparse consistent nodal forces (n_dofs, n_c) of unit nodal pressure /
+    friction traction with this body's signs; ``S_y``: sparse selection (m, n_dofs) of the
+    contact-vertex displacements to condense onto (the normal ones, then the tangential ones).
+
+    ``precompute=True``: the stress operators of the window (:func:`eval_operator`) and ``Y``
+    come out of one pass of 2 n_c block solves (:meth:`Body.solve_apply`), without holding
+    ``K^-1 B``. ``precompute=False``: only ``Y``, from n_c solves: ``K`` is symmetric, so
+    ``Y^T = B^T K^-1 S_y^T`` (unit loads at the contact vertices, Maxwell-Betti reciprocity);
+    the stresses are then back-solved per load case (:meth:`EvalSet.stresses`).
+    """
+    sel, x, z, surf, S = eval_operator(body, half_width, max_depth)
+    ne = sel.size
+    if not precompute:
+        nc = Bn.shape[1]
+        ev = EvalSet(body=body.name, nodes=sel, x=x, z=z, Sn=None, St=None, surface=surf, S=S,
+                     Bn=Bn, Bt=Bt, solver=body)
+        B = sp.hstack([Bn, Bt]).tocsr()
+        if body.last is not None:  # S_y and B live on the contact surface: Schur complement
+            C = body.last
+            Y = S_y[:, C] @ body.schur_solve(B[C].toarray())
+            return ev, Y[:, :nc], Y[:, nc:]
+        R = body.solve_apply(S_y.T, B.T)
+        return ev, R[:nc].T.copy(), R[nc:].T.copy()
+    P = sp.vstack([S, S_y]).tocsr()
+    out = []
+    for B in (Bn, Bt):
+        R = body.solve_apply(B, P)
+        out.append((R[:3 * ne].reshape(3, ne, -1), R[3 * ne:]))
+    (Sn, Yn), (St, Yt) = out
+    ev = EvalSet(body=body.name, nodes=sel, x=x, z=z, Sn=Sn, St=St, surface=surf)
+    return ev, Yn, Yt
 
 
 def derived(sx, sz, txz, sy):

@@ -1,0 +1,74 @@
+"""Full fields of a solved ring model and their VTU export (meshio).
+
+The ring, the pin (if elastic) and the cam body are written in the roller frame (m; ring
+centre ``(0, Ro)``). Point data at the P2 nodes (``triangle6`` cells): ``displacement`` (m),
+``sxx, syy, sxy`` (Pa), ``hoop`` (Pa, the hoop stress about the roller centre; the cam's is
+the same projection, for a single colour map) and ``von_mises`` (Pa, plane strain ``szz =
+nu (sxx + syy)``). Cell data ``body``: 0 cam, 1 ring, 2 pin.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from ..fe.elasticity import scalar_node_coordinates, stress_operator
+
+BODY_IDS = {"cam": 0, "ring": 1, "pin": 2}
+
+
+def body_fields(model, result, name: str) -> dict:
+    """Nodal fields of body ``name`` (see module docstring) for a :class:`RingResult`."""
+    b = model.bodies[name]
+    basic = np.concatenate([result.p, result.bore_p])
+    if name == "cam":
+        f = model.loads["cam"] @ result.p
+    else:
+        f = model.loads[name] @ (basic if name == "ring" else result.bore_p)
+    u = b.solve(f)
+    s = stress_operator(b) @ u
+    n = b.n_dofs // 2
+    sxx, syy, sxy = s[:n], s[n:2 * n], s[2 * n:]
+    xy = scalar_node_coordinates(b)
+    th = np.arctan2(xy[1] - model.bearing.Ro, xy[0])
+    hoop = sxx * np.sin(th) ** 2 + syy * np.cos(th) ** 2 - 2 * sxy * np.sin(th) * np.cos(th)
+    nu = b.material.nu
+    szz = nu * (sxx + syy) if model.plane == "strain" else np.zeros_like(sxx)
+    vm = np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) + 3 * sxy**2)
+    return {"xy": xy, "u": np.stack([u[0::2], u[1::2]]), "sxx": sxx, "syy": syy, "sxy": sxy,
+            "hoop": hoop, "von_mises": vm,
+            "cells": (b.basis.element_dofs[::2] // 2).T}
+
+
+def ring_arrays(model, result, bodies=("ring", "pin", "cam")):
+    """(points (n, 3), cells (nel, 6), point_data, body ids) of the chosen bodies."""
+    pts, cells, ids = [], [], []
+    data = {k: [] for k in ("displacement", "sxx", "syy", "sxy", "hoop", "von_mises")}
+    off = 0
+    for name in bodies:
+        if name not in model.bodies:
+            continue
+        fl = body_fields(model, result, name)
+        n = fl["xy"].shape[1]
+        pts.append(np.column_stack([fl["xy"].T, np.zeros(n)]))
+        cells.append(fl["cells"] + off)
+        ids.append(np.full(fl["cells"].shape[0], BODY_IDS[name]))
+        data["displacement"].append(np.column_stack([fl["u"].T, np.zeros(n)]))
+        for k in ("sxx", "syy", "sxy", "hoop", "von_mises"):
+            data[k].append(fl[k])
+        off += n
+    return (np.concatenate(pts), np.concatenate(cells), {k: np.concatenate(v) for k, v in data.items()},
+            np.concatenate(ids))
+
+
+def write_ring_vtu(model, result, path, bodies=("ring", "pin", "cam")) -> Path:
+    """Write the bodies of a solved ring model to ``path`` (.vtu); returns the path."""
+    import meshio  # optional heavy dependency of the export only
+
+    pts, cells, data, ids = ring_arrays(model, result, bodies)
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    meshio.write(path, meshio.Mesh(pts, [("triangle6", cells)], point_data=data,
+                                   cell_data={"body": [ids]}))
+    return path

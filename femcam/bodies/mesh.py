@@ -1,0 +1,201 @@
+"""gmsh meshes of the real bodies: the roller ring (full annulus) and the pin (full disk).
+
+Frame (the roller frame of :mod:`femcam.mesh`): the cam touches the ring at the origin, ``y``
+points from the cam into the roller, so the ring and pin centre is ``(0, Ro)``. Angles ``theta``
+are polar angles about that centre; ``theta = -pi/2`` is the bottom, the side of the cam.
+
+* **ring**: outer circle ``Ro``, bore ``Ri``. The outer arc ``|x| <= xf`` at the bottom is the
+  cam-contact fine zone: transfinite, its vertices snapped to the cam's uniform abscissae
+  ``contact_x`` (so cam and ring contact vertices pair one to one, as in :mod:`femcam.mesh`).
+  The bore is four transfinite quarter arcs: ``n_bore`` vertices uniform in angle from
+  ``theta = -pi/2``. A ``Threshold`` field keeps the size ``h`` near the fine arc, ``h_bore``
+  near the bore, growing with slope ``growth`` up to ``h_max``.
+* **pin**: a disk of radius ``Rp`` with ``n_bore`` uniform surface vertices at the same angles
+  (so pin and bore vertices pair one to one).
+
+Parameters and defaults: ``meshes/roller_ring.toml``; the same geometry with ``DefineConstant``
+sliders for the gmsh GUI: ``meshes/roller_ring.geo``.
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+from contextlib import contextmanager
+
+import numpy as np
+
+from ..errors import FemcamError
+from ..mesh import BodyMesh, _ccw
+
+
+@contextmanager
+def gmsh_session():
+    """An initialised gmsh (initialised here only if needed; finalised if initialised here)."""
+    import gmsh  # heavy optional dependency: imported only when a body is meshed
+
+    init_here = not gmsh.isInitialized()
+    if init_here:
+        # gmsh's SIGINT handler is allowed only in the main thread (Dask workers are threads)
+        gmsh.initialize(["-nopopup"], readConfigFiles=False,
+                        interruptible=threading.current_thread() is threading.main_thread())
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.option.setNumber("General.Verbosity", 1)
+        yield gmsh
+    except FemcamError:
+        raise
+    except Exception as exc:  # gmsh raises plain Exception
+        raise FemcamError(f"gmsh failed to mesh the bodies: {exc}") from None
+    finally:
+        if init_here:
+            gmsh.finalize()
+
+
+def _circle_arcs(geo, cx, cy, R, angles, lc):
+    """Points on a circle at ``angles`` (rad, increasing) joined by arcs; returns
+    (centre point, points, arcs)."""
+    c = geo.addPoint(cx, cy, 0.0, lc)
+    pts = [geo.addPoint(cx + R * math.cos(t), cy + R * math.sin(t), 0.0, lc) for t in angles[:-1]]
+    pts.append(pts[0])
+    arcs = [geo.addCircleArc(pts[i], c, pts[i + 1]) for i in range(len(angles) - 1)]
+    return c, pts[:-1], arcs
+
+
+def _size_field(gmsh, specs, h_max, growth):
+    """Background size = min over ``specs`` [(curves, h, band), ...] of threshold fields."""
+    f = gmsh.model.mesh.field
+    fields = []
+    for curves, h, band in specs:
+        fd = f.add("Distance")
+        f.setNumbers(fd, "CurvesList", curves)
+        f.setNumber(fd, "Sampling", 400)
+        ft = f.add("Threshold")
+        f.setNumber(ft, "InField", fd)
+        f.setNumber(ft, "SizeMin", h)
+        f.setNumber(ft, "SizeMax", h_max)
+        f.setNumber(ft, "DistMin", band)
+        f.setNumber(ft, "DistMax", band + (h_max - h) / growth)
+        fields.append(ft)
+    fm = f.add("Min")
+    f.setNumbers(fm, "FieldsList", fields)
+    f.setAsBackgroundMesh(fm)
+    for k in ("MeshSizeFromPoints", "MeshSizeFromCurvature", "MeshSizeExtendFromBoundary"):
+        gmsh.option.setNumber(f"Mesh.{k}", 0)
+    gmsh.option.setNumber("Mesh.Algorithm", 6)
+    gmsh.option.setNumber("Mesh.ElementOrder", 1)
+
+
+def _extract(gmsh, surface, curve_sets):
+    """(points (N, 2), triangles (T, 3), {name: node indices}) with unused nodes dropped."""
+    tags, xyz, _ = gmsh.model.mesh.getNodes()
+    pts = xyz.reshape(-1, 3)[:, :2]
+    index = np.full(int(tags.max()) + 1, -1, dtype=np.int64)
+    index[tags.astype(np.int64)] = np.arange(tags.size)
+    _, _, ntri = gmsh.model.mesh.getElements(2, surface)
+    tri = index[np.asarray(ntri[0], dtype=np.int64)].reshape(-1, 3)
+    sets = {}
+    for name, (dim, ents) in curve_sets.items():
+        out = [index[gmsh.model.mesh.getNodes(dim, e, includeBoundary=True)[0].astype(np.int64)]
+               for e in ents]
+        sets[name] = np.unique(np.concatenate(out))
+    used = np.unique(tri)
+    renum = np.full(pts.shape[0], -1, dtype=np.int64)
+    renum[used] = np.arange(used.size)
+    return pts[used].copy(), renum[tri], {k: renum[v] for k, v in sets.items()}
+
+
+def _snap_circle(pts, nodes, cx, cy, R, n, theta0=-0.5 * math.pi):
+    """Sort ``nodes`` by angle from ``theta0`` and move them to the exact uniform angles."""
+    th = np.mod(np.arctan2(pts[nodes, 1] - cy, pts[nodes, 0] - cx) - theta0, 2 * math.pi)
+    th[th > 2 * math.pi - math.pi / n] -= 2 * math.pi  # the node at theta0 itself
+    nodes = nodes[np.argsort(th)]
+    if nodes.size != n:
+        raise FemcamError(f"gmsh returned {nodes.size} nodes on a circle, expected {n}")
+    t = theta0 + 2 * math.pi * np.arange(n) / n
+    pts[nodes, 0] = cx + R * np.cos(t)
+    pts[nodes, 1] = cy + R * np.sin(t)
+    return nodes, t
+
+
+def mesh_ring(*, Ro: float, Ri: float, contact_x: np.ndarray, n_bore: int, h_bore: float,
+              h_max: float, fine_depth: float, growth: float = 0.3,
+              band: float = 3.0) -> tuple[BodyMesh, np.ndarray, np.ndarray]:
+    """Mesh the ring; returns ``(BodyMesh, bore_nodes, bore_theta)`` (see module docstring).
+
+    ``BodyMesh.contact`` are the fine-arc vertices sorted by x (``contact_x``), ``fixed`` is empty
+    (the ring floats: it is held by its contacts).
+    """
+    xf = float(contact_x[-1])
+    n_fine = contact_x.size - 1
+    h = float(contact_x[1] - contact_x[0])
+    cy = Ro
+    with gmsh_session() as gmsh:
+        gmsh.model.add("ring")
+        geo = gmsh.model.geo
+        a0 = -0.5 * math.pi - math.asin(xf / Ro)
+        a1 = -0.5 * math.pi + math.asin(xf / Ro)
+        _, _, o_arcs = _circle_arcs(geo, 0.0, cy, Ro, [a0, a1, 0.0, 0.5 * math.pi, math.pi,
+                                                        a0 + 2 * math.pi], h_max)
+        q = n_bore // 4
+        _, _, b_arcs = _circle_arcs(geo, 0.0, cy, Ri, [-0.5 * math.pi + k * 0.5 * math.pi
+                                                        for k in range(5)], h_max)
+        s = geo.addPlaneSurface([geo.addCurveLoop(o_arcs), geo.addCurveLoop(b_arcs)])
+        geo.mesh.setTransfiniteCurve(o_arcs[0], n_fine + 1)
+        for arc in b_arcs:
+            geo.mesh.setTransfiniteCurve(arc, q + 1)
+        geo.synchronize()
+        gmsh.model.addPhysicalGroup(1, [o_arcs[0]], name="ring_contact")
+        gmsh.model.addPhysicalGroup(1, b_arcs, name="ring_bore")
+        gmsh.model.addPhysicalGroup(2, [s], name="ring")
+        _size_field(gmsh, [([o_arcs[0]], h, fine_depth), (b_arcs, h_bore, band * h_bore)], h_max, growth)
+        gmsh.model.mesh.generate(2)
+        pts, tri, sets = _extract(gmsh, s, {"fine": (1, [o_arcs[0]]), "bore": (1, b_arcs),
+                                            "outer": (1, o_arcs)})
+        gmsh.model.remove()
+    fine = sets["fine"][np.argsort(pts[sets["fine"], 0])]
+    if fine.size != n_fine + 1:
+        raise FemcamError(f"gmsh returned {fine.size} fine-zone nodes, expected {n_fine + 1}")
+    pts[fine, 0] = contact_x
+    pts[fine, 1] = cy - np.sqrt(Ro**2 - contact_x**2)
+    bore, theta = _snap_circle(pts, sets["bore"], 0.0, cy, Ri, n_bore)
+    tri = _ccw(pts, tri)
+    body = BodyMesh(name="ring", points=pts.T.copy(), triangles=tri.T.copy(),
+                    fixed=np.zeros(0, dtype=np.int64), contact=fine, contact_x=np.asarray(contact_x),
+                    surface=sets["outer"], L=float(Ro), R=float(Ro))
+    return body, bore, theta
+
+
+def mesh_disk(*, R: float, n_surface: int, h_surface: float, h_max: float, growth: float = 0.3,
+              band: float = 3.0,
+              cy: float | None = None) -> tuple[BodyMesh, np.ndarray, np.ndarray, int]:
+    """Mesh a full disk (the pin); returns ``(BodyMesh, surface_nodes, theta, centre_node)``.
+
+    ``n_surface`` vertices uniform in angle from ``theta = -pi/2``; centre ``(0, cy)`` (default
+    ``cy = R``); ``centre_node`` is the node nearest to it.
+    """
+    cy = R if cy is None else cy
+    q = n_surface // 4
+    with gmsh_session() as gmsh:
+        gmsh.model.add("disk")
+        geo = gmsh.model.geo
+        _, _, arcs = _circle_arcs(geo, 0.0, cy, R, [-0.5 * math.pi + k * 0.5 * math.pi
+                                                 for k in range(5)], h_max)
+        s = geo.addPlaneSurface([geo.addCurveLoop(arcs)])
+        for arc in arcs:
+            geo.mesh.setTransfiniteCurve(arc, q + 1)
+        geo.synchronize()
+        # no embedded centre point: with it gmsh 4.15 ignored the size field (700 instead of
+        # 7446 triangles for Rp = 6.7 mm, 512 surface vertices); callers take the nearest node
+        gmsh.model.addPhysicalGroup(1, arcs, name="pin_surface")
+        gmsh.model.addPhysicalGroup(2, [s], name="pin")
+        _size_field(gmsh, [(arcs, h_surface, band * h_surface)], h_max, growth)
+        gmsh.model.mesh.generate(2)
+        pts, tri, sets = _extract(gmsh, s, {"surface": (1, arcs)})
+        gmsh.model.remove()
+    surf, theta = _snap_circle(pts, sets["surface"], 0.0, cy, R, n_surface)
+    tri = _ccw(pts, tri)
+    body = BodyMesh(name="pin", points=pts.T.copy(), triangles=tri.T.copy(),
+                    fixed=np.zeros(0, dtype=np.int64), contact=surf, contact_x=theta,
+                    surface=surf, L=float(R), R=float(R))
+    return body, surf, theta, int(np.argmin(np.hypot(pts[:, 0], pts[:, 1] - cy)))

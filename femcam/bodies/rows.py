@@ -1,0 +1,137 @@
+"""Sweep-facing: ring, pin and needle results per cam angle from one reusable model.
+
+``ring_rows(scene, theta, Fc, rho)`` builds ONE :class:`~femcam.bodies.model.RingModel` for the
+scene (the ring is axisymmetric and the model is graded for the largest load) and solves every
+angle on it. It returns a dict of SI arrays; :data:`CSV_COLUMNS` gives the CSV name (unit in
+the name) and the factor from SI for each key. Angles where ``Fc <= 0`` (lift-off) give NaN.
+
+For needles every angle is solved at the two extreme cage positions (``cage = 0``: a needle on
+the load line; ``cage = pi / Z``: the load line between two needles); the bore stress and the
+cam contact are taken at the cage position that gives the larger bore stress.
+
+Columns (key: meaning, SI unit -> CSV name):
+
+==================  ==========================================================  ====================
+``theta``           cam angle (rad)                                             ``theta_deg``
+``p0``, ``a``       cam-roller peak pressure and half-width on the ring          ``ring_p0_MPa``,
+                                                                                ``ring_a_um``
+``p0_solid``,       Hertz solid roller (Johnson 1985 eq. 4.45)                   ``solid_p0_MPa``,
+``a_solid``                                                                     ``solid_a_um``
+``dp0``, ``da``     relative change ring vs solid (-)                           ``ring_dp0_pct``,
+                                                                                ``ring_da_pct``
+``hoop_max``        largest tensile bore hoop stress (Pa)                       ``bore_hoop_max_MPa``
+``hoop_angle``      its angle from the load line at the cam side (rad)           ``bore_hoop_angle_deg``
+``pin_p0``          pin contact peak pressure (Pa; pin support)                 ``pin_p0_MPa``
+``pin_arc``         pin contact arc (rad; pin support)                          ``pin_arc_deg``
+``needle_Q_on``     most loaded needle, needle on the load line (N)              ``needle_Qmax_on_N``
+``needle_Q_between``  most loaded needle, load between two needles (N)          ``needle_Qmax_between_N``
+==================  ==========================================================  ====================
+
+Distributions (2-D arrays, not CSV columns; :func:`to_csv_columns` skips them):
+``needle_loads_on`` / ``needle_loads_between`` (n_angles, Z): needle loads (N) from the needle
+at or just past the load line, counter-clockwise, for the two cage positions;
+``bore_pressure`` (n_angles, n_bore): bore contact pressure (Pa; pin support, at the model's
+bore angles ``model.theta``).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .. import _validate as chk
+from ..errors import InputError
+from ..materials import effective_modulus
+from ..mesh import MeshOptions
+from .geometry import RollerBearing
+from .model import RingMeshOptions, RingModel
+from .solve import solve_ring
+
+#: key -> (CSV column name, factor from SI)
+CSV_COLUMNS = {
+    "theta": ("theta_deg", 180.0 / math.pi), "p0": ("ring_p0_MPa", 1e-6), "a": ("ring_a_um", 1e6),
+    "p0_solid": ("solid_p0_MPa", 1e-6), "a_solid": ("solid_a_um", 1e6), "dp0": ("ring_dp0_pct", 100.0),
+    "da": ("ring_da_pct", 100.0), "hoop_max": ("bore_hoop_max_MPa", 1e-6),
+    "hoop_angle": ("bore_hoop_angle_deg", 180.0 / math.pi), "pin_p0": ("pin_p0_MPa", 1e-6),
+    "pin_arc": ("pin_arc_deg", 180.0 / math.pi), "needle_Q_on": ("needle_Qmax_on_N", 1.0),
+    "needle_Q_between": ("needle_Qmax_between_N", 1.0),
+}
+
+
+def bearing_from_scene(scene) -> RollerBearing:
+    """The :class:`RollerBearing` of a scene with ``roller_support = "pin"|"needles"``."""
+    g = getattr(scene, "bodies", {}) or {}
+    if g.get("support", "solid") == "solid":
+        raise InputError("scene roller_support = 'solid': the solid roller has no ring model "
+                         "(use femcam.fe / femcam.hertz)")
+    pin = g.get("pin", scene.roller)
+    return RollerBearing(Ro=g["Ro"], Ri=g["Ri"], support=g["support"], Rp=g["Rp"], c=g["c"],
+                         Z=g.get("Z", 0), r_n=g.get("r_n", 0.0), ring=scene.roller, pin=pin,
+                         needle=pin)
+
+
+def build_for(scene, Fc, rho, *, mesh: MeshOptions | None = None,
+              ring_mesh: RingMeshOptions | None = None) -> RingModel:
+    """A model graded for the largest ``Fc`` (N) and the cam radius ``rho`` (m) there."""
+    b = bearing_from_scene(scene)
+    k = int(np.nanargmax(Fc))
+    F, r = float(Fc[k]), float(rho[k])
+    inv_R = 1.0 / b.Ro + (0.0 if math.isinf(r) else 1.0 / r)
+    a_ref = math.sqrt(4 * F / scene.length / (inv_R * math.pi *
+                                               effective_modulus(scene.cam, b.ring, scene.plane)))
+    return RingModel.build(bearing=b, cam=scene.cam, rho_ref=r, a_ref=a_ref, length=scene.length,
+                           mesh=mesh, ring_mesh=ring_mesh, plane=scene.plane)
+
+
+def _one(model, F, r, needles, Z):
+    """Row values of one angle (see CSV_COLUMNS)."""
+    cages = (0.0, math.pi / Z) if needles else (0.0,)
+    res = [solve_ring(model, F=F, rho=r, cage=c) for c in cages]
+    best = max(res, key=lambda x: x.hoop_max)
+    ang = math.remainder(best.hoop_theta + 0.5 * math.pi, 2 * math.pi)
+    dist = {"needle_loads_on": res[0].needle_Q, "needle_loads_between": res[-1].needle_Q,
+            "bore_pressure": best.bore_p}
+    return dist, {"p0": best.p0, "a": best.a, "p0_solid": best.hertz_p0, "a_solid": best.hertz_a,
+            "dp0": best.p0 / best.hertz_p0 - 1, "da": best.a / best.hertz_a - 1,
+            "hoop_max": best.hoop_max, "hoop_angle": ang, "pin_p0": best.pin_p0, "pin_arc": best.pin_arc,
+            "needle_Q_on": res[0].needle_Q_max,
+            "needle_Q_between": res[-1].needle_Q_max if needles else math.nan}
+
+
+def ring_rows(scene, theta, Fc, rho, *, model: RingModel | None = None,
+              mesh: MeshOptions | None = None, ring_mesh: RingMeshOptions | None = None) -> dict:
+    """Per-angle ring/pin/needle results (dict of SI arrays, keys of :data:`CSV_COLUMNS`).
+
+    theta (rad), Fc (N, contact force over the face width), rho (m, cam radius of curvature; <0
+    concave) are the sweep's arrays at the same angles; ``model`` reuses a built model.
+    """
+    theta = chk.finite_array("theta", theta, "rad")
+    Fc = np.asarray(Fc, dtype=float)
+    rho = np.asarray(rho, dtype=float)
+    if not (theta.shape == Fc.shape == rho.shape):
+        raise InputError(f"theta, Fc, rho: shapes {theta.shape}, {Fc.shape}, {rho.shape} must match")
+    model = model or build_for(scene, np.where(Fc > 0, Fc, np.nan), rho, mesh=mesh, ring_mesh=ring_mesh)
+    b = model.bearing
+    needles = b.support == "needles"
+    out = {k: np.full(theta.shape, np.nan) for k in CSV_COLUMNS}
+    out["theta"] = theta.copy()
+    if needles:
+        out["needle_loads_on"] = np.full(theta.shape + (b.Z,), np.nan)
+        out["needle_loads_between"] = np.full(theta.shape + (b.Z,), np.nan)
+    else:
+        out["bore_pressure"] = np.full(theta.shape + (model.theta.size,), np.nan)
+    for i in np.nonzero(Fc > 0)[0]:
+        dist, row = _one(model, float(Fc[i]), float(rho[i]), needles, max(b.Z, 1))
+        for k, v in row.items():
+            out[k][i] = v
+        for k in dist:
+            if k in out:
+                out[k][i] = dist[k]
+    return out
+
+
+def to_csv_columns(rows: dict) -> dict:
+    """``{csv name with unit: array}`` from :func:`ring_rows` output."""
+    return {CSV_COLUMNS[k][0]: np.asarray(v) * CSV_COLUMNS[k][1] for k, v in rows.items()
+            if k in CSV_COLUMNS}

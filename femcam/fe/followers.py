@@ -1,0 +1,115 @@
+r"""All three followers in the FE: which bodies meet, how they slide, where the face ends.
+
+* **Roller** (radius ``Rr``): the FE "roller" body; it rolls, the tangential force is what its
+  inertia and bearing drag need (:func:`femcam.wear.slip.roller_inertia`), solved as Coulomb
+  partial slip (:mod:`femcam.fe.traction`) with the material flowing through the contact in
+  ``rolling x`` (:func:`rolling_direction`).
+* **Knife-edge**: a sharp tip has no contact width; with ``tip_radius`` (scene key
+  ``follower.tip_radius_mm``) it is a NON-ROTATING roller of that radius on the cam cut for it
+  (:func:`femcam.fe.gap.contact_geometry`) and slides fully. Refused without the key.
+* **Flat-faced**: the face (R = inf) against the cam. The FE mesh needs a finite radius on its
+  "roller" body, so the bodies swap roles: the FE "roller" is the CAM (radius rho) and the FE
+  "cam" the flat FOLLOWER (``rho = inf``). The gap is symmetric, so only the labels change
+  (:data:`FLAT_FACE_BODIES`). It slides fully. Past the end of the face (``face_length``, scene
+  key ``follower.face_length_mm``) the contact is an edge contact: refused with the angle range
+  (:func:`face_edge_intervals`), never answered with Hertz.
+
+Sliding direction (knife-edge, flat-faced): the friction traction on the cam points along the
+follower's velocity relative to the cam surface at the contact, ``sign((v_f - v_c) . t)`` with
+``v_c = omega (-c_y, c_x)`` (counter-clockwise cam), ``v_f = (0, omega s')`` (translating follower)
+and ``t`` the local x axis of :mod:`femcam.fe.gap` (Johnson 1985 §7.1: friction opposes the
+relative slip).
+
+References: K. L. Johnson, *Contact Mechanics*, 1985, §7.1, §8.2; R. L. Norton, *Design of
+Machinery*, ch. 8.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .. import _validate as chk
+from ..errors import PhysicsError
+from ..profile import FlatFacedFollower, KnifeEdgeFollower, RollerFollower, bool_intervals, cam_profile
+from .gap import contact_geometry
+
+#: FE body name -> physical body, for a flat-faced follower (the bodies swap roles)
+FLAT_FACE_BODIES = {"cam": "follower", "roller": "cam"}
+
+
+def fe_radius(follower, *, tip_radius: float | None = None) -> float:
+    """Radius (m) of the FE "roller" body's surface for the follower: ``Rr`` (roller),
+    ``tip_radius`` (knife-edge, required), ``nan`` for flat-faced (the cam's own rho is used,
+    see the module docstring)."""
+    _, R = contact_geometry(None, follower, tip_radius)
+    return math.nan if math.isinf(R) else R
+
+
+def sliding_sign(program, follower, theta, *, tip_radius: float | None = None) -> np.ndarray:
+    """Sign (+1/-1) of the friction traction on the cam along local x for a sliding follower
+    (knife-edge with tip radius, flat-faced) at cam angles ``theta`` (rad); see the module
+    docstring. The cam speed only scales the velocities, so it does not enter."""
+    th = chk.finite_array("theta", theta, "rad")
+    gen, _ = contact_geometry(program, follower, tip_radius)
+    d = program.derivatives(th)
+    pr = cam_profile(gen, th, d.s, d.s1, d.s2, allow_undercut=True)
+    t = np.stack([np.cos(pr.phi), np.sin(pr.phi)])
+    vc = np.stack([-pr.contact_y, pr.contact_x])  # omega x c, per unit omega
+    vf = np.stack([np.zeros_like(d.s1), d.s1])
+    rel = np.sum((vf - vc) * t, axis=0)
+    return np.where(rel >= 0.0, 1, -1)
+
+
+def rolling_direction(program, follower, theta, *, tip_radius: float | None = None) -> np.ndarray:
+    """Direction (+1/-1) in which the cam's surface material flows through the contact along
+    local x at ``theta`` (rad): opposite to the travel of the contact point over the cam (the
+    leading edge, where material enters, is at ``x = -rolling a``)."""
+    th = chk.finite_array("theta", theta, "rad")
+    gen, _ = contact_geometry(program, follower, tip_radius)
+    dth = 1e-6
+    both = np.concatenate([th, th + dth])
+    d = program.derivatives(both)
+    pr = cam_profile(gen, both, d.s, d.s1, d.s2, allow_undercut=True)
+    n = th.size
+    # the cam-frame travel of the contact, rotated into the fixed frame at theta, along t
+    dx, dy = pr.x[n:] - pr.x[:n], pr.y[n:] - pr.y[:n]
+    c, s = np.cos(th), np.sin(th)
+    fx, fy = c * dx - s * dy, s * dx + c * dy
+    along = fx * np.cos(pr.phi[:n]) + fy * np.sin(pr.phi[:n])
+    return np.where(along > 0.0, -1, 1)
+
+
+def face_edge_intervals(program, follower, face_length: float, theta, a) -> list:
+    """Cam-angle intervals (rad) where a contact of half-width ``a`` (m, scalar or per angle)
+    reaches past the end of a flat face of length ``face_length`` (m) centred on the follower
+    axis: ``|s' - e| + a > face_length / 2``. These are edge contacts."""
+    if not isinstance(follower, FlatFacedFollower):
+        raise chk.fail("follower", type(follower).__name__, "", "must be a flat-faced follower")
+    L = chk.positive("face_length", face_length, "m")
+    th = chk.finite_array("theta", theta, "rad")
+    off = np.abs(program.derivatives(th).s1 - follower.e)
+    return bool_intervals(th, off + np.broadcast_to(np.asarray(a, float), th.shape) > 0.5 * L)
+
+
+def check_face(program, follower, face_length: float | None, theta, a) -> None:
+    """Refuse (PhysicsError naming the angle range in degrees) an edge contact of a flat face;
+    no check without ``face_length`` or for other followers."""
+    if face_length is None or not isinstance(follower, FlatFacedFollower):
+        return
+    iv = face_edge_intervals(program, follower, face_length, theta, a)
+    if iv:
+        rng = ", ".join(f"{math.degrees(lo):.2f}..{math.degrees(hi):.2f} deg" for lo, hi in iv)
+        raise PhysicsError(f"flat face of length {face_length * 1e3:g} mm: the contact runs past the "
+                           f"face end (edge contact) for theta in {rng}; an edge contact is not a "
+                           "Hertz case and is not modelled: lengthen face_length_mm")
+
+
+def follower_kind(follower) -> str:
+    """'rolling' for a roller, 'sliding' for knife-edge and flat-faced followers."""
+    if isinstance(follower, RollerFollower):
+        return "rolling"
+    if isinstance(follower, KnifeEdgeFollower | FlatFacedFollower):
+        return "sliding"
+    raise chk.fail("follower", follower, "", "must be a roller, knife-edge or flat-faced follower")

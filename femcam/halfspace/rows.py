@@ -1,0 +1,121 @@
+r"""Finite-length contact over cam angles: the columns the sweep writes.
+
+:func:`finite_length_rows` solves the half-space strip (:mod:`femcam.halfspace.strip`) at each
+cam angle of a scene, reusing the kernel FFTs across angles and warm-starting the conjugate
+gradients from the previous angle's pressure, and returns one SI array per column
+(:data:`COLUMNS` gives the CSV name with its unit and the factor from SI).
+
+The relative radius in the rolling direction is ``1/R = 1/rho + 1/Rr`` (Johnson 1985 eq. 4.44;
+``rho < 0`` on a concave flank) and ``E*`` is the three-dimensional contact modulus
+``1/E* = sum (1 - nu_i^2)/E_i`` (Johnson eq. 4.22), whatever ``[contact] plane`` says: the
+half-space is neither plane strain nor plane stress, it is the body itself. A logarithmic crown is
+designed for the largest contact force of the revolution (at its relative radius) unless
+``crown_drop_um`` fixes its end drop.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .. import _validate as chk
+from ..errors import InputError
+from ..materials import effective_modulus
+from .crown import RollerProfile
+from .strip import FiniteLengthContact
+
+#: SI column -> (CSV column name with unit, factor from SI to the CSV unit)
+COLUMNS = {
+    "p_axial_peak": ("p_axial_peak_MPa", 1e-6),     # peak of p(x, y) over the strip
+    "y_peak": ("y_axial_peak_mm", 1e3),             # axial position of that peak (0 = mid-plane)
+    "L_eff": ("L_eff_mm", 1e3),                     # loaded length (slices with w > 0)
+    "w_max": ("w_max_N_per_mm", 1e-3),              # most loaded slice's load per unit length
+    "y_wmax": ("y_w_max_mm", 1e3),                  # axial position of that slice
+    "y_centre": ("y_load_centre_mm", 1e3),          # load centre int w y dy / F
+    "edge_factor": ("edge_factor", 1.0),            # p_axial_peak / 2D Hertz p0 at w = F / L
+    "iterations": ("hs_iterations", 1.0),           # CG iterations
+    "converged": ("hs_converged", 1.0),
+    "flagged": ("hs_flagged", 1.0),                 # any StripResult flag (see ``flags``)
+}
+
+
+def strip_for_scene(scene, *, nx: int = 64, ny: int = 128, tol: float = 1e-5) -> FiniteLengthContact:
+    """The :class:`~femcam.halfspace.strip.FiniteLengthContact` of a roller scene's
+    ``finite_length`` keys (defaults: roller width = cam face width = ``follower.face_width_mm``)."""
+    Rr = getattr(scene.follower, "Rr", 0.0)
+    if not Rr > 0.0:
+        raise InputError(f"follower = {type(scene.follower).__name__}: the finite-length half-space "
+                         "contact needs a roller follower (a knife edge or flat face is not a line contact "
+                         "of two cylinders)")
+    fl = dict(scene.finite_length or {})
+    width = fl.get("roller_width", scene.length)
+    prof = RollerProfile(width=width, crown=fl.get("crown", "none"), crown_radius=fl.get("crown_radius"),
+                         crown_drop=fl.get("crown_drop"), edge_radius=fl.get("edge_radius", 0.0),
+                         misalignment=fl.get("misalignment", 0.0))
+    E_star = effective_modulus(scene.cam, scene.roller, "strain")
+    Q = Rd = None
+    if prof.crown == "logarithmic":
+        st = scene.analyse(np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False))
+        i = int(np.argmax(st.Fc))
+        Q, Rd = float(st.Fc[i]), float(1.0 / (1.0 / st.rho[i] + 1.0 / Rr))
+    return FiniteLengthContact(prof, cam_width=fl.get("cam_width", scene.length), E_star=E_star,
+                               design_load=Q, design_radius=Rd, nx=nx, ny=ny, tol=tol)
+
+
+def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float = 1e-5,
+                       strip: FiniteLengthContact | None = None) -> dict:
+    """Finite-length contact at cam angles ``theta`` (rad) of a roller ``scene``.
+
+    Returns
+    -------
+    dict of arrays, one value per angle, SI units:
+        ``theta`` (rad), ``Fc`` (N), ``R`` (m), the keys of :data:`COLUMNS`, ``flags`` (tuple of
+        :class:`~femcam.halfspace.strip.StripResult` flags per angle), ``p_line`` (n_theta x ny,
+        Pa: peak pressure of each axial slice), ``w`` (n_theta x ny, N/m: load per unit length of
+        each slice), ``y`` (ny, m: slice centres). Angles with no contact force (lift-off, ``Fc <=
+        0``) or a non-convex relative curvature get NaN and the flag ``"no_contact"`` /
+        ``"non_hertzian"``.
+    """
+    th = chk.finite_array("theta", np.atleast_1d(theta), "rad").ravel()
+    fl = strip or strip_for_scene(scene, nx=nx, ny=ny, tol=tol)   # refuses a non-roller follower
+    st = scene.analyse(th)
+    Rr = scene.follower.Rr
+    with np.errstate(divide="ignore"):
+        inv = 1.0 / st.rho + 1.0 / Rr
+    n = th.size
+    out = {k: np.full(n, np.nan) for k in COLUMNS}
+    R = np.where(inv > 0, 1.0 / np.where(inv > 0, inv, 1.0), np.nan)   # nan: concave-conformal
+    out.update(theta=th, Fc=np.asarray(st.Fc, float), R=R)
+    out["p_line"] = np.full((n, fl.ny), np.nan)
+    out["w"] = np.full((n, fl.ny), np.nan)
+    out["y"] = fl.y.copy()
+    flags = []
+    p_prev = None
+    for i in range(n):
+        F, R = float(st.Fc[i]), float(out["R"][i])
+        if not F > 0.0 or not math.isfinite(R):
+            flags.append(("no_contact",) if not F > 0.0 else ("non_hertzian",))
+            continue
+        r = fl.solve(F, R, p_start=p_prev)
+        p_prev = r.p
+        p0 = math.sqrt(F / fl.L * fl.E_star / (math.pi * R))
+        for k, v in (("p_axial_peak", r.p_max), ("y_peak", r.y_peak), ("L_eff", r.L_eff),
+                     ("w_max", r.w_max), ("y_wmax", r.y_wmax), ("y_centre", r.y_centre),
+                     ("edge_factor", r.p_max / p0), ("iterations", r.iterations),
+                     ("converged", float(r.converged)), ("flagged", float(bool(r.flags)))):
+            out[k][i] = v
+        out["p_line"][i] = r.p_line
+        out["w"][i] = r.w
+        flags.append(r.flags)
+    out["flags"] = tuple(flags)
+    return out
+
+
+def to_csv_columns(rows: dict) -> dict:
+    """The :data:`COLUMNS` of ``rows`` under their CSV names, converted to the CSV units.
+
+    >>> to_csv_columns({"L_eff": np.array([0.01])})
+    {'L_eff_mm': array([10.])}
+    """
+    return {COLUMNS[k][0]: np.asarray(v) * COLUMNS[k][1] for k, v in rows.items() if k in COLUMNS}

@@ -1,0 +1,12 @@
+"""Coated and case-hardened bodies: coating and case definitions, interface stresses along the
+coating-substrate boundary and the case-core margin (docs/layers.md)."""
+
+from .case import CASE_LAWS, Case, CaseMargin, case_margin, shear_strength_from_hardness
+from .coating import CoatedMaterial, Coating, build_coated_model
+from .from_scene import scene_layer_rows, scene_layers
+from .interface import InterfaceStress, interface_stress, layer_rows
+
+__all__ = ["CASE_LAWS", "Case", "CaseMargin", "CoatedMaterial", "Coating", "InterfaceStress",
+           "build_coated_model", "case_margin", "interface_stress", "layer_rows", "scene_layer_rows",
+           "scene_layers",
+           "shear_strength_from_hardness"]

@@ -1,0 +1,135 @@
+r"""Interface stresses along the coating-substrate boundary, and the per-angle layer checks.
+
+==============  ===========================================================  ====
+symbol          meaning                                                      unit
+==============  ===========================================================  ====
+``phi``         slope of the interface arc at abscissa ``x``                 rad
+``sigma_n``     interface normal stress (tension > 0)                        Pa
+``tau_i``       interface shear stress                                       Pa
+==============  ===========================================================  ====
+
+The interface is the arc at depth ``t`` of radius ``R - t`` (signed ``R`` of the body). With
+the body's Johnson-frame stresses ``(s_x, s_z, t_xz)`` (x along the tangent at the contact, z
+into the body) and ``tan phi = dz/dx`` of the interface (Johnson 1985 §2.1 for the rotation):
+
+.. math:: \sigma_n = s_x \sin^2\phi + s_z \cos^2\phi - 2 t_{xz}\sin\phi\cos\phi,\qquad
+          \tau_i = (s_z - s_x)\sin\phi\cos\phi + t_{xz}(\cos^2\phi - \sin^2\phi)
+
+The normal and shear tractions are continuous across a bonded interface, so the nodal average
+of both sides' stresses (``femcam.fe`` recovery) is used at the interface vertices.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import _validate
+from ..errors import InputError
+from .case import Case, case_margin
+from .coating import Coating
+
+
+@dataclass(frozen=True)
+class InterfaceStress:
+    """Interface tractions of one load case: x (m, sorted), sigma_n, tau (Pa); maxima:
+    tau_abs_max (Pa) at x_tau_max (m), sigma_n_min (most compressive), sigma_n_max (Pa)."""
+
+    x: np.ndarray
+    sigma_n: np.ndarray
+    tau: np.ndarray
+    tau_abs_max: float
+    x_tau_max: float
+    sigma_n_min: float
+    sigma_n_max: float
+
+
+def _coated(model, body: str):
+    g = model.bodies[body].geometry
+    if g.coating is None:
+        raise InputError(f"body {body} of this model has no coating band; build it with "
+                         "femcam.layers.build_coated_model(..., body=...)")
+    return g
+
+
+def interface_stress(result, body: str = "roller") -> InterfaceStress:
+    """Normal and shear stress along the coating-substrate interface of ``body`` within the
+    contact fine zone (``result`` a ContactResult of a coated model)."""
+    _validate.choice("body", body, ("cam", "roller"))
+    model = result.model
+    g = _coated(model, body)
+    _, f = result.field_at_nodes(body)
+    nodes = g.groups[f"{body}_interface"].nodes
+    x = f["xy"][0, nodes]
+    keep = np.abs(x) <= model.x[-1] * (1 + 1e-9)
+    nodes, x = nodes[keep], x[keep]
+    o = np.argsort(x)
+    nodes, x = nodes[o], x[o]
+    sx, sz, txz = f["sx"][nodes], f["sz"][nodes], f["txz"][nodes]
+    Ri = g.R - model.mesh.options.coat_thickness
+    k = 0.0 if math.isinf(Ri) else 1.0 / Ri
+    phi = np.arctan(k * x / np.sqrt(np.maximum(1.0 - (k * x) ** 2, 1e-300)))
+    s, c = np.sin(phi), np.cos(phi)
+    sn = sx * s**2 + sz * c**2 - 2.0 * txz * s * c
+    tau = (sz - sx) * s * c + txz * (c**2 - s**2)
+    i = int(np.argmax(np.abs(tau)))
+    return InterfaceStress(x=x, sigma_n=sn, tau=tau, tau_abs_max=float(abs(tau[i])),
+                           x_tau_max=float(x[i]), sigma_n_min=float(sn.min()),
+                           sigma_n_max=float(sn.max()))
+
+
+def _case_row(result, case: Case, body: str):
+    """(U_max, z at max, margin) of ``case`` in ``body``: tau_1 / k(z) at every node of the
+    stress window ``|x| <= fine zone``, ``z <= 4 max(a, depth)``."""
+    model = result.model
+    case.check_body(model.bodies[body].geometry.L, body)
+    _, f = result.field_at_nodes(body)
+    z, x = f["z"], f["xy"][0]
+    w = (np.abs(x) <= model.x[-1]) & (z >= 0) & (z <= 4.0 * max(result.a, case.depth))
+    m = case_margin(case, z[w], f["tau1"][w])
+    return m.u_max, m.z_at_max, m.margin
+
+
+def layer_rows(model, F, rho, mu, *, coating: Coating | None = None, coat_body: str = "roller",
+               case: Case | None = None, case_body: str = "cam", sliding: int = 1) -> dict:
+    """Per-angle layer checks (one FE solve per angle on the prepared ``model``).
+
+    F (N), rho (m), mu: arrays over angles (broadcast). Returns a dict of arrays (CSV-ready
+    names): ``interface_tau_max_MPa``, ``interface_sn_min_MPa``, ``interface_sn_max_MPa``,
+    ``interface_utilisation`` (= tau_max / interface shear strength), ``coating_sx_max_MPa``
+    (coating surface tension) and ``coating_sx_utilisation`` (sx_max / coating hardness / 3, the
+    yield estimate of the coating), ``case_utilisation_max``, ``case_z_at_max_mm``,
+    ``case_margin``. Requested checks need their strengths (InputError otherwise).
+    """
+    F, rho, mu = np.broadcast_arrays(np.atleast_1d(_validate.finite_array("F", F, "N")),
+                                     _validate.finite_array("rho", rho, "m"),
+                                     _validate.finite_array("mu", mu, ""))
+    if coating is None and case is None:
+        raise InputError("layer_rows: give a coating and/or a case (nothing to check)")
+    tau_i = coating.require("interface_shear_strength") if coating is not None else None
+    Hc = coating.require("hardness") if coating is not None else None
+    n = F.size
+    cols = ("interface_tau_max_MPa", "interface_sn_min_MPa", "interface_sn_max_MPa",
+            "interface_utilisation", "coating_sx_max_MPa", "coating_sx_utilisation",
+            "case_utilisation_max", "case_z_at_max_mm", "case_margin")
+    out = {c: np.full(n, np.nan) for c in cols}
+    for j in range(n):
+        r = model.solve(F=float(F.flat[j]), rho=float(rho.flat[j]), mu=float(mu.flat[j]),
+                        sliding=sliding)
+        if coating is not None:
+            it = interface_stress(r, coat_body)
+            sx = float(np.max(r.surface_by_body[coat_body].sx))
+            out["interface_tau_max_MPa"][j] = it.tau_abs_max / 1e6
+            out["interface_sn_min_MPa"][j] = it.sigma_n_min / 1e6
+            out["interface_sn_max_MPa"][j] = it.sigma_n_max / 1e6
+            out["interface_utilisation"][j] = it.tau_abs_max / tau_i
+            out["coating_sx_max_MPa"][j] = sx / 1e6
+            out["coating_sx_utilisation"][j] = max(sx, 0.0) / (Hc / 3.0)
+        if case is not None:
+            u, zm, mg = _case_row(r, case, case_body)
+            out["case_utilisation_max"][j] = u
+            out["case_z_at_max_mm"][j] = zm * 1e3
+            out["case_margin"][j] = mg
+    return out
