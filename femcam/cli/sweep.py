@@ -38,6 +38,8 @@ def register(subparsers) -> None:
                    help="Dask scheduler address, e.g. tcp://host:8786 (needs femcam[dask])")
     p.add_argument("--resume", action="store_true",
                    help="continue an interrupted sweep in DIR (computes only missing chunks)")
+    p.add_argument("--overwrite", action="store_true",
+                   help="replace the results in a non-empty DIR (refused otherwise)")
     p.add_argument("--mesh-size", type=float, default=10.0, metavar="A_OVER_H",
                    help="FE element size in the contact zone, h = a / A_OVER_H (default 10)")
     p.add_argument("--tolerance", type=float, default=2e-3, metavar="TOL",
@@ -96,6 +98,8 @@ def _command_line(args) -> str:
         parts.append("--resume")
     if args.no_plots:
         parts.append("--no-plots")
+    if args.overwrite:
+        parts.append("--overwrite")
     return shlex.join(parts)
 
 
@@ -106,12 +110,16 @@ def _run(args) -> int:
     if args.law:
         scene = scene.with_law(args.law)
     progress = {"auto": None, "on": True, "off": False}[args.progress]
-    res = sweep(scene, angles=angles, method=args.method, a_over_h=args.mesh_size,
-                tolerance=args.tolerance, chunk_size=args.chunk_size, out=args.out,
-                resume=args.resume, workers=args.workers, scheduler=args.scheduler,
-                vtk_every=args.vtk_every, progress=progress, plots=not args.no_plots,
-                command=_command_line(args), scene_path=args.scene,
-                chunk_delay_s=args.chunk_delay_s)
+    try:
+        res = sweep(scene, angles=angles, method=args.method, a_over_h=args.mesh_size,
+                    tolerance=args.tolerance, chunk_size=args.chunk_size, out=args.out,
+                    resume=args.resume, workers=args.workers, scheduler=args.scheduler,
+                    vtk_every=args.vtk_every, progress=progress, plots=not args.no_plots,
+                    command=_command_line(args), scene_path=args.scene,
+                    chunk_delay_s=args.chunk_delay_s, overwrite=args.overwrite)
+    except KeyboardInterrupt as exc:  # Ctrl-C: one line (what was saved, how to resume)
+        print(f"\nfemcam sweep: {exc or 'interrupted'}", file=sys.stderr)
+        return 130
     s = res.summary()
     o = res.provenance.get("options", {})
     print(f"femcam sweep: {res.n_angles} angles ({res.n_chunks_resumed} chunks resumed, "

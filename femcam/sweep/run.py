@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import _validate
-from ..errors import InputError
+from ..errors import FemcamError, InputError
 from ..hertz.conformity import roller_does_not_fit, shape_factors
 from ..io import (
     atomic_write_text,
@@ -34,7 +34,7 @@ from .parallel import AUTO_VTU_S, Progress, auto_workers, run_tasks
 from .pipeline import ChunkTask, analytic_rows, contact_mask, run_chunk
 from .profile import worst_surface_profile
 from .result import COLUMNS, NUMERIC, TEXT_COLUMNS, SweepResult, concat_rows
-from .store import ChunkStore, array_hash
+from .store import LOCK, ChunkStore, DirLock, array_hash
 from .wear import WearSetup, wear_setup
 
 DEFAULT_STEP_DEG = 1.0
@@ -102,13 +102,15 @@ class _Run:
     family: np.ndarray | None = None
     records: list | None = None
     verified_here: bool = False
+    overwrite: bool = False
+    lock: DirLock | None = None
 
 
 def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
           tolerance: float = 2e-3, chunk_size: int = 30, out=None, resume: bool = False,
           workers: int | str = "auto", scheduler=None, client=None, vtk_every: int = 0,
           progress: bool | None = None, plots: bool = False, command: str | None = None,
-          scene_path=None, chunk_delay_s: float = 0.0) -> SweepResult:
+          scene_path=None, chunk_delay_s: float = 0.0, overwrite: bool = False) -> SweepResult:
     """Sweep a scene over cam angles: kinematics, loads, Hertz and FE contact at every angle.
 
     Parameters
@@ -129,9 +131,12 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
     chunk_size : int
         Angles per chunk (unit of parallel work and of the on-disk store).
     out : str or Path, optional
-        Output directory; ``None`` keeps everything in memory.
+        Output directory; ``None`` keeps everything in memory. Locked while the sweep runs (a
+        second sweep into it is refused); a non-empty directory is refused unless ``resume``
+        or ``overwrite``.
     resume : bool
-        Continue a killed sweep in ``out`` (loads finished chunks, computes the rest).
+        Continue a killed sweep in ``out`` (loads finished chunks, computes the rest; each
+        chunk is checked against the manifest's scene hash).
     workers : int or str
         Local worker processes (``1`` = serial in this process), or ``"auto"`` (default):
         processes only when the expected saving is worth it (:func:`auto_workers`); ignored
@@ -151,14 +156,45 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
     chunk_delay_s : float
         Seconds to sleep after each chunk (>= 0; a test aid that makes "kill after k chunks"
         deterministic).
+    overwrite : bool
+        Allow a fresh sweep into a non-empty ``out`` (its earlier results are replaced).
 
     Returns
     -------
     SweepResult
+
+    Raises
+    ------
+    SweepInterrupted
+        On Ctrl-C (a ``KeyboardInterrupt`` saying what was saved and how to resume).
     """
     t_start = time.perf_counter()
     run = _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume, workers,
                    vtk_every, scene_path, chunk_delay_s)
+    run.overwrite = bool(overwrite)
+    try:
+        return _sweep(run, scheduler, client, progress, plots, command, t_start)
+    except KeyboardInterrupt:
+        raise SweepInterrupted(_interrupt_message(run)) from None
+    finally:
+        if run.lock is not None:
+            run.lock.release()
+
+
+class SweepInterrupted(KeyboardInterrupt):
+    """Ctrl-C during a sweep; the message says what was saved and how to resume."""
+
+
+def _interrupt_message(run: _Run) -> str:
+    if run.store is None or run.out is None:
+        return "interrupted; nothing was saved" + ("" if run.out is None else
+                                                   f" in {run.out} (rerun the same command)")
+    saved = sum(1 for i in range(len(run.bounds)) if run.store.path(i).exists())
+    return (f"interrupted; {saved} of {len(run.bounds)} chunks saved in {run.out / 'chunks'}; "
+            "rerun the same command with --resume to compute the rest")
+
+
+def _sweep(run: _Run, scheduler, client, progress, plots, command, t_start) -> SweepResult:
     _analytic(run)
     t_analytic = time.perf_counter() - t_start
     _open_store(run)
@@ -233,6 +269,11 @@ def _open_store(run: _Run) -> None:
     key = {"scene_sha256": run.shash, "angles_sha256": array_hash(run.angles), "n_angles": int(n),
            **run.opts.to_dict()}
     run.out.mkdir(parents=True, exist_ok=True)
+    run.lock = DirLock(run.out).acquire()
+    if not run.resume and not run.overwrite and any(p.name != LOCK for p in run.out.iterdir()):
+        raise InputError(f"out = {run.out}: the directory is not empty; pass --resume to continue "
+                         "the sweep in it, --overwrite to replace its results (overwrite=True), "
+                         "or choose another --out")
     run.store = ChunkStore(run.out / "chunks", key, run.bounds)
     run.done = frozenset(run.store.open(run.resume))
     if not run.done:  # fresh sweep: no stale series from an earlier run in the same DIR
@@ -348,6 +389,7 @@ def _write_outputs(result: SweepResult, run: _Run, plots: bool, src_path=None,
     theta = result.table["theta"]
     entries = [(float(np.degrees(theta[i])), out / "vtk" / vtu_name(theta[i]))
                for i in np.flatnonzero(run.vtk_mask)]
+    _check_vtus(result, run)
     entries = [(t, p) for t, p in entries if p.exists()]
     if entries:
         paths["pvd"] = str(write_pvd(out / "sweep.pvd", entries))
@@ -359,6 +401,18 @@ def _write_outputs(result: SweepResult, run: _Run, plots: bool, src_path=None,
         except ImportError as exc:  # pragma: no cover - matplotlib missing
             raise InputError(f"plots = True: {exc}") from None
     return result
+
+
+def _check_vtus(result: SweepResult, run: _Run) -> None:
+    """Every ``ok`` angle of the VTK series has its ``.vtu`` in ``DIR/vtk``, or the sweep fails
+    loudly (never a silent exit 0 with files missing, e.g. written on another machine)."""
+    want = np.flatnonzero(run.vtk_mask & (result.table["status"] == "ok"))
+    missing = [vtu_name(result.table["theta"][i]) for i in want
+               if not (run.out / "vtk" / vtu_name(result.table["theta"][i])).exists()]
+    if missing:
+        raise FemcamError(f"{len(missing)} of {want.size} .vtu files are missing from "
+                          f"{run.out / 'vtk'} (first: {missing[0]}); the table is saved in "
+                          f"{run.out / 'chunks'}")
 
 
 def _with_plot_data(result: SweepResult, run: _Run) -> SweepResult:
