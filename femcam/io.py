@@ -260,7 +260,8 @@ def read_csv(path) -> tuple[dict, dict]:
 
 
 def write_npz(path, table: dict, prov: dict | None = None, *, numeric: Sequence[str],
-              text_columns: Sequence[str] = (), scene_toml: str = "", scene_repr: str = "") -> Path:
+              text_columns: Sequence[str] = (), scene_toml: str = "", scene_repr: str = "",
+              extra: dict | None = None) -> Path:
     """The table in SI units (internal names) plus provenance and scene text; atomic.
 
     Parameters
@@ -275,6 +276,8 @@ def write_npz(path, table: dict, prov: dict | None = None, *, numeric: Sequence[
         Names of the float and the string columns to store.
     scene_toml, scene_repr : str
         The scene file's text and the parsed scene's ``repr``.
+    extra : dict[str, ndarray], optional
+        More arrays stored as they are (e.g. the plots' data, so a reloaded sweep re-plots).
 
     Returns
     -------
@@ -287,6 +290,7 @@ def write_npz(path, table: dict, prov: dict | None = None, *, numeric: Sequence[
     arrays["provenance_json"] = np.array(json.dumps(prov or {}, sort_keys=True))
     arrays["scene_toml"] = np.array(str(scene_toml))
     arrays["scene_repr"] = np.array(str(scene_repr))
+    arrays.update({k: np.asarray(v) for k, v in (extra or {}).items()})
     path = Path(path)
     atomic_write_bytes(path, lambda f: np.savez_compressed(f, **arrays))
     return path

@@ -513,14 +513,15 @@ def test_store_refuses_a_different_sweep_and_ignores_partial_files(tmp_path):
 
 def test_fe_resume_reuses_the_stored_family_plan(scene, tmp_path):
     th = np.radians([0.0, 30.0, 60.0, 90.0])
-    full = sweep(scene, angles=th, out=tmp_path, chunk_size=2)
+    full = sweep(scene, angles=th, out=tmp_path, chunk_size=2, vtk_every=0, plots=False)
     plan_path = tmp_path / "chunks" / "plan.json"
     plan = json.loads(plan_path.read_text())
     assert plan["family"] == [int(f) for f in full["family"]]
     plan["records"][0]["check_time"] = 12345.0  # a marker: a resume must not re-verify
     plan_path.write_text(json.dumps(plan))
     (tmp_path / "chunks" / "chunk_00001.npz").unlink()
-    again = sweep(scene, angles=th, out=tmp_path, chunk_size=2, resume=True)
+    again = sweep(scene, angles=th, out=tmp_path, chunk_size=2, resume=True, vtk_every=0,
+                  plots=False)
     assert (again.n_chunks_computed, again.n_chunks_resumed) == (1, 1)
     assert again.families[0]["check_time"] == 12345.0
     np.testing.assert_array_equal(again["family"], full["family"])
@@ -532,14 +533,16 @@ def test_fe_resume_reuses_the_stored_family_plan(scene, tmp_path):
 
 def test_resume_in_process_reuses_chunks(scene, tmp_path):
     th = np.radians(np.arange(0.0, 360.0, 20.0))
-    full = sweep(scene, angles=th, out=tmp_path, method="hertz", chunk_size=4)
+    full = sweep(scene, angles=th, out=tmp_path, method="hertz", chunk_size=4, vtk_every=0)
     (tmp_path / "chunks" / "chunk_00002.npz").unlink()
-    again = sweep(scene, angles=th, out=tmp_path, method="hertz", chunk_size=4, resume=True)
+    again = sweep(scene, angles=th, out=tmp_path, method="hertz", chunk_size=4, resume=True,
+                  vtk_every=0)
     assert (again.n_chunks_computed, again.n_chunks_resumed) == (1, 4)
     for k in ("p0_hertz", "vm_max", "Fc"):
         np.testing.assert_array_equal(again[k], full[k])
     with pytest.raises(InputError, match="different sweep"):
-        sweep(scene, angles=th[:-1], out=tmp_path, method="hertz", chunk_size=4, resume=True)
+        sweep(scene, angles=th[:-1], out=tmp_path, method="hertz", chunk_size=4, resume=True,
+                  vtk_every=0)
 
 
 def test_cli_in_process(tmp_path, capsys):

@@ -114,15 +114,18 @@ def test_resume_refuses_a_chunk_of_another_scene(tmp_path):
     scene = load_scene(STUDY)
     other = scene.with_law("bezier7")
     a, b = tmp_path / "a", tmp_path / "b"
-    sweep(scene, angles=th, chunk_size=4, method="hertz", out=a, workers=1)
-    sweep(other, angles=th, chunk_size=4, method="hertz", out=b, workers=1)
+    sweep(scene, angles=th, chunk_size=4, method="hertz", out=a, workers=1, vtk_every=0,
+          plots=False)
+    sweep(other, angles=th, chunk_size=4, method="hertz", out=b, workers=1, vtk_every=0,
+          plots=False)
     with np.load(a / "chunks" / "chunk_00001.npz") as za, \
             np.load(b / "chunks" / "chunk_00001.npz") as zb:
         assert str(za[CHUNK_SCENE_KEY]) != str(zb[CHUNK_SCENE_KEY])
         assert not np.array_equal(za["Fc"], zb["Fc"])  # the two scenes really differ
     (b / "chunks" / "chunk_00001.npz").replace(a / "chunks" / "chunk_00001.npz")
     with pytest.raises(InputError, match="chunk_00001.npz was computed for another scene"):
-        sweep(scene, angles=th, chunk_size=4, method="hertz", out=a, resume=True, workers=1)
+        sweep(scene, angles=th, chunk_size=4, method="hertz", out=a, resume=True, workers=1,
+              vtk_every=0, plots=False)
 
 
 # -- 4. gmsh from several threads --------------------------------------------------------------
@@ -168,7 +171,8 @@ def test_dask_threaded_worker_relative_out_files_come_back(tmp_path, monkeypatch
                                   dashboard_address=None) as cluster:
         monkeypatch.chdir(cdir)
         th = parse_angles_deg("0:360:30")
-        res = sweep(STUDY, angles=th, chunk_size=3, out="rel", vtk_every=1, client=cluster)
+        res = sweep(STUDY, angles=th, chunk_size=3, out="rel", vtk_every=1, client=cluster,
+                    plots=False)
         n_ok = int(np.count_nonzero(res.ok))
         vtus = sorted(p.name for p in (cdir / "rel" / "vtk").glob("*.vtu"))
         assert n_ok > 0 and len(vtus) == n_ok
@@ -178,7 +182,8 @@ def test_dask_threaded_worker_relative_out_files_come_back(tmp_path, monkeypatch
 
         monkeypatch.setattr(par, "_write_back", lambda task, files: None)  # files lost
         with pytest.raises(FemcamError, match=".vtu files are missing"):
-            sweep(STUDY, angles=th, chunk_size=3, out="rel2", vtk_every=1, client=cluster)
+            sweep(STUDY, angles=th, chunk_size=3, out="rel2", vtk_every=1, client=cluster,
+                  plots=False)
 
 
 # -- 5. Ctrl-C -----------------------------------------------------------------------------------
@@ -220,3 +225,40 @@ def test_ctrl_c_after_gmsh_meshed_one_line_and_130(tmp_path):
     assert rc == 130
     assert len(err.splitlines()) == 1 and "Traceback" not in err, err
     assert "--resume" in err
+
+
+# -- 12. results you can come back to ---------------------------------------------------------
+def test_api_defaults_match_the_cli_and_a_sweep_reloads_and_replots(tmp_path):
+    """``sweep(..., out=DIR)`` writes what ``femcam sweep --out DIR`` writes (a .vtu every 10th
+    angle, the plots, report.md); ``SweepResult.load(DIR)`` gives back the table and the plots'
+    data, and ``plot_sweep`` re-plots from it alone."""
+    pytest.importorskip("matplotlib")
+    from femcam.sweep import SweepResult
+    from femcam.viz.sweep import plot_sweep
+
+    th = parse_angles_deg("0:360:15")  # 24 angles: the 10th-angle series is rows 0, 10, 20
+    api, cli = tmp_path / "api", tmp_path / "cli"
+    res = sweep(STUDY, angles=th, method="hertz", out=api, workers=1)
+    assert main(["sweep", str(STUDY), "--out", str(cli), "--angles-deg", "0:360:15",
+                 "--method", "hertz", "--workers", "1", "--progress", "off"]) == 0
+    tree = {d: sorted(str(p.relative_to(d)) for p in d.rglob("*")
+                      if p.is_file() and "chunks" not in p.parts) for d in (api, cli)}
+    assert tree[api] == tree[cli]
+    assert sorted(Path(f).name for f in _pvd_files(api / "sweep.pvd")) == \
+        [f"angle_{d:08.3f}deg.vtu" for d in (0.0, 150.0, 300.0)]
+    report = (api / "report.md").read_text()
+    assert f"{th.size} angles" in report and "p0 Hertz (MPa)" in report
+
+    back = SweepResult.load(api)
+    assert back.method == "hertz" and back.n_angles == th.size
+    np.testing.assert_array_equal(back.theta, th)  # SI, exact round trip of float64
+    for k in ("Fc", "p0_hertz", "vm_max"):
+        np.testing.assert_array_equal(back[k], res[k])
+    assert list(back.status) == list(res.status)
+    assert back.hertz_factors is not None and back.surface_profile is not None
+    replot = tmp_path / "replot"
+    paths = plot_sweep(back, replot)
+    assert sorted(Path(p).name for p in paths.values()) == \
+        sorted(p.name for p in (api / "plots").glob("*.png"))
+    with pytest.raises(InputError, match="no sweep.npz"):
+        SweepResult.load(tmp_path)

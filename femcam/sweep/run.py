@@ -33,11 +33,21 @@ from .options import SweepOptions, contact_params
 from .parallel import AUTO_VTU_S, Progress, auto_workers, run_tasks
 from .pipeline import ChunkTask, analytic_rows, contact_mask, run_chunk
 from .profile import worst_surface_profile
-from .result import COLUMNS, NUMERIC, TEXT_COLUMNS, SweepResult, concat_rows
+from .result import (
+    COLUMNS,
+    NUMERIC,
+    TEXT_COLUMNS,
+    SweepResult,
+    concat_rows,
+    plot_data_arrays,
+    report_markdown,
+)
 from .store import LOCK, ChunkStore, DirLock, array_hash
 from .wear import WearSetup, wear_setup
 
 DEFAULT_STEP_DEG = 1.0
+#: ``.vtu`` every k angles with ``out`` (API and CLI default)
+DEFAULT_VTK_EVERY = 10
 
 
 def parse_angles_deg(spec: str) -> np.ndarray:
@@ -108,8 +118,8 @@ class _Run:
 
 def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
           tolerance: float = 2e-3, chunk_size: int = 30, out=None, resume: bool = False,
-          workers: int | str = "auto", scheduler=None, client=None, vtk_every: int = 0,
-          progress: bool | None = None, plots: bool = False, command: str | None = None,
+          workers: int | str = "auto", scheduler=None, client=None, vtk_every: int | None = None,
+          progress: bool | None = None, plots: bool | None = None, command: str | None = None,
           scene_path=None, chunk_delay_s: float = 0.0, overwrite: bool = False) -> SweepResult:
     """Sweep a scene over cam angles: kinematics, loads, Hertz and FE contact at every angle.
 
@@ -143,12 +153,14 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
         with ``scheduler``/``client``.
     scheduler, client : str or dask.distributed.Client, optional
         Dask scheduler address, or a ``Client``/``LocalCluster``.
-    vtk_every : int
-        With ``out``, write one ``.vtu`` every k angles and ``sweep.pvd`` (0 = none).
+    vtk_every : int, optional
+        With ``out``, write one ``.vtu`` every k angles and ``sweep.pvd`` (0 = none). Default:
+        the CLI's, :data:`DEFAULT_VTK_EVERY` (so ``sweep(..., out=DIR)`` writes what
+        ``femcam sweep --out DIR`` writes).
     progress : bool, optional
         Stderr progress bar (default: only when stderr is a TTY).
-    plots : bool
-        With ``out``, write the PNG plots (:mod:`femcam.viz.sweep`).
+    plots : bool, optional
+        With ``out``, write the PNG plots (:mod:`femcam.viz.sweep`); default True (as the CLI).
     command : str, optional
         Command line recorded in the provenance.
     scene_path : str or Path, optional
@@ -172,6 +184,7 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
     run = _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume, workers,
                    vtk_every, scene_path, chunk_delay_s)
     run.overwrite = bool(overwrite)
+    plots = (run.out is not None) if plots is None else bool(plots)
     try:
         return _sweep(run, scheduler, client, progress, plots, command, t_start)
     except KeyboardInterrupt:
@@ -239,6 +252,8 @@ def _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume
     if angles.size == 0:
         raise _validate.fail("angles", "[]", "rad", "must contain at least one angle")
     workers = _validate.workers("workers", workers)
+    if vtk_every is None:
+        vtk_every = DEFAULT_VTK_EVERY
     opts = SweepOptions(method=method, a_over_h=a_over_h, tolerance=tolerance,
                         chunk_size=chunk_size, vtk_every=vtk_every if out is not None else 0)
     if resume and out is None:
@@ -381,11 +396,14 @@ def _write_outputs(result: SweepResult, run: _Run, plots: bool, src_path=None,
         prov["scene_copy"] = (f"{copy.name} (copy of {src_path}; the sweep used the parsed scene "
                               "recorded as scene_repr in sweep.npz, which differs from the file "
                               "only if it was changed in code, e.g. --law)")
+    result = replace(result, provenance=prov)
+    if plots:
+        result = _with_plot_data(result, run)
     paths.update(csv=str(write_csv(out / "sweep.csv", result.table, prov, columns=COLUMNS,
                                    text_columns=TEXT_COLUMNS)),
                  npz=str(write_npz(out / "sweep.npz", result.table, prov, numeric=NUMERIC,
                                    text_columns=TEXT_COLUMNS, scene_toml=src_text,
-                                   scene_repr=repr(run.scene))))
+                                   scene_repr=repr(run.scene), extra=plot_data_arrays(result))))
     theta = result.table["theta"]
     entries = [(float(np.degrees(theta[i])), out / "vtk" / vtu_name(theta[i]))
                for i in np.flatnonzero(run.vtk_mask)]
@@ -393,13 +411,14 @@ def _write_outputs(result: SweepResult, run: _Run, plots: bool, src_path=None,
     entries = [(t, p) for t, p in entries if p.exists()]
     if entries:
         paths["pvd"] = str(write_pvd(out / "sweep.pvd", entries))
-    result = replace(result, provenance=prov, paths=paths)
+    result = replace(result, paths=paths)
     if plots:
-        result = _with_plot_data(result, run)
         try:
             paths.update(plot_sweep(result, out))
         except ImportError as exc:  # pragma: no cover - matplotlib missing
             raise InputError(f"plots = True: {exc}") from None
+    atomic_write_text(out / "report.md", report_markdown(result))
+    paths["report"] = str(out / "report.md")
     return result
 
 
