@@ -38,7 +38,7 @@ from xml.sax.saxutils import escape, quoteattr
 
 import numpy as np
 
-from .fe.export import scene_arrays
+from .fe.export import scene_arrays, stress_tensor, vtk_point_data
 from .hertz import LineContact
 
 #: one column of a written table: (internal SI name, CSV column name, factor SI -> CSV unit)
@@ -419,7 +419,7 @@ def write_fe_vtu(path, r, wear: dict | None = None) -> Path:
         The solved load case.
     wear : dict, optional
         ``{"k" (m^3/(N m)), "v_slip" (m/s), "V_cam" (m/s), "wear_depth_per_rev" (m),
-        "theta_deg" (deg), "Fc" (N)}``. Adds the point data ``wear_rate`` (m/s): Archard's local
+        "theta_deg" (deg), "Fc" (N)}``. Adds the point data ``wear_rate_m_s``: Archard's local
         rate ``k p v_slip`` on the contact surfaces (``p`` = the FE nodal contact pressure), 0
         elsewhere, and the field data ``theta_deg``, ``Fc_N``, ``wear_k_m3_per_N_m``,
         ``v_slip_m_s``, ``V_cam_m_s``, ``wear_depth_per_rev_m``.
@@ -433,7 +433,8 @@ def write_fe_vtu(path, r, wear: dict | None = None) -> Path:
     if wear:
         point_data = dict(point_data, wear_rate=wear["k"] * np.asarray(point_data["contact_pressure"])
                           * wear["v_slip"])
-    return write_vtu(path, points, [(cell_type, cells)], point_data, field_data=_field_data(wear),
+    return write_vtu(path, points, [(cell_type, cells)], vtk_point_data(point_data),
+                     field_data=_field_data(wear),
                      cell_data={"body": [body]})
 
 
@@ -449,12 +450,13 @@ def write_hertz_vtu(path, hc: LineContact, n: int = 41, wear: dict | None = None
     n : int
         Grid points in depth (``2 n - 1`` along x).
     wear : dict, optional
-        As in :func:`write_fe_vtu`; adds ``wear_rate = k p v_slip`` (m/s) on the surface row.
+        As in :func:`write_fe_vtu`; adds ``wear_rate_m_s = k p v_slip`` on the surface row.
 
     Returns
     -------
     Path
-        ``path``. Point data ``sx, sz, txz, sy, tau1, von_mises, contact_pressure`` (Pa); the cam
+        ``path``. Point data ``stress_Pa`` (6 components XX, YY, ZZ, XY, YZ, XZ:
+        ``sx, sz, sy, -txz, 0, 0``), ``tau1_Pa``, ``von_mises_Pa``, ``contact_pressure_Pa``; the cam
         lies below the surface (``y = -z``).
     """
     a = float(hc.a)
@@ -466,11 +468,12 @@ def write_hertz_vtu(path, hc: LineContact, n: int = 41, wear: dict | None = None
     quads = np.column_stack([ids[:-1, :-1].ravel(), ids[:-1, 1:].ravel(), ids[1:, 1:].ravel(),
                              ids[1:, :-1].ravel()])
     pts = np.column_stack([X.ravel(), -Z.ravel()])  # cam below the surface: y = -z
-    data = {"sx": sf.sx, "sz": sf.sz, "txz": sf.txz, "sy": sf.sy, "tau1": sf.tau1,
+    data = {"stress": stress_tensor(sf.sx, sf.sz, sf.sy, sf.txz, -1.0), "tau1": sf.tau1,
             "von_mises": sf.von_mises}
     p = np.where(Z == 0.0, hc.pressure(X), 0.0).ravel()
     data["contact_pressure"] = p
     if wear:
         data["wear_rate"] = wear["k"] * p * wear["v_slip"]
-    return write_vtu(path, pts, [("quad", quads)], {k: np.asarray(v, float) for k, v in data.items()},
+    return write_vtu(path, pts, [("quad", quads)],
+                     vtk_point_data({k: np.asarray(v, float) for k, v in data.items()}),
                      field_data=_field_data(wear))

@@ -262,3 +262,51 @@ def test_api_defaults_match_the_cli_and_a_sweep_reloads_and_replots(tmp_path):
         sorted(p.name for p in (api / "plots").glob("*.png"))
     with pytest.raises(InputError, match="no sweep.npz"):
         SweepResult.load(tmp_path)
+
+
+def test_vtu_arrays_have_units_and_one_stress_tensor(tmp_path):
+    """Hertz field at the centre of the contact surface (Johnson 1985 §4.2, frictionless): the
+    tensor ``stress_Pa`` must read sx = sz = -p0, sy = -2 nu p0 (plane strain), txz = 0, with
+    p0 = sqrt(w E* / (pi R)) computed here; von Mises of the written tensor equals the written
+    ``von_mises_Pa`` everywhere (frame invariant)."""
+    import meshio
+
+    from femcam.hertz import LineContact
+    from femcam.io import write_hertz_vtu
+    from femcam.materials import STEEL
+
+    F, L, R1, R2 = 2000.0, 0.01, 0.03, 0.01
+    hc = LineContact(F=F, length=L, R1=R1, R2=R2, cam=STEEL, roller=STEEL, mu=0.0)
+    m = meshio.read(write_hertz_vtu(tmp_path / "h.vtu", hc))
+    assert {"stress_Pa", "von_mises_Pa", "tau1_Pa", "contact_pressure_Pa"} <= set(m.point_data)
+    S = m.point_data["stress_Pa"]
+    assert S.shape == (len(m.points), 6)
+    E_star = STEEL.E / (2 * (1 - STEEL.nu ** 2))
+    p0 = np.sqrt(F / L * E_star / (np.pi * R1 * R2 / (R1 + R2)))
+    i0 = int(np.argmin(np.hypot(m.points[:, 0], m.points[:, 1])))
+    assert np.hypot(*m.points[i0, :2]) == 0.0
+    np.testing.assert_allclose(S[i0, :4], [-p0, -p0, -2 * STEEL.nu * p0, 0.0], rtol=1e-9, atol=1e-6 * p0)
+    sxx, syy, szz, sxy = S[:, 0], S[:, 1], S[:, 2], S[:, 3]
+    vm = np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) + 3 * sxy ** 2)
+    np.testing.assert_allclose(vm, m.point_data["von_mises_Pa"], rtol=1e-9, atol=1e-9 * p0)
+
+
+def test_contact_result_pickles_without_its_model(tmp_path):
+    """A pickled ContactResult drops the factorised model (small, process independent); its
+    full-field methods then take the model explicitly and give the original's numbers."""
+    import pickle
+
+    from femcam.fe import MeshOptions, solve_contact
+    from femcam.materials import STEEL
+
+    r = solve_contact(1500.0, 0.02, 0.01, STEEL, STEEL, 0.01, mesh=MeshOptions(a_over_h=4))
+    blob = pickle.dumps(r)
+    back = pickle.loads(blob)
+    assert back.model is None and back.p0 == r.p0 and back.converged == r.converged
+    np.testing.assert_array_equal(back.p, r.p)
+    with pytest.raises(InputError, match="unpickled"):
+        back.field_at_nodes()
+    u0, s0 = r.field_at_nodes()
+    u1, s1 = back.field_at_nodes(model=r.model)
+    np.testing.assert_array_equal(u0, u1)
+    np.testing.assert_array_equal(s0["von_mises"], s1["von_mises"])
