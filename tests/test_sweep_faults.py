@@ -310,3 +310,24 @@ def test_contact_result_pickles_without_its_model(tmp_path):
     u1, s1 = back.field_at_nodes(model=r.model)
     np.testing.assert_array_equal(u0, u1)
     np.testing.assert_array_equal(s0["von_mises"], s1["von_mises"])
+
+
+# -- 11. progress --------------------------------------------------------------------------------
+def test_progress_phase_shows_long_phases_only():
+    import io
+
+    from femcam.sweep import Progress
+
+    long, short = io.StringIO(), io.StringIO()
+    with Progress(0, enabled=True, stream=long, delay_s=0.0).phase("model families", 0.01):
+        time.sleep(0.1)
+    with Progress(0, enabled=True, stream=short, delay_s=5.0).phase("model families", 0.01):
+        pass
+    text = long.getvalue()
+    assert "\rmodel families ... " in text and text.endswith(" s\n")
+    assert text.rsplit("\r", 1)[1].startswith("model families: ")
+    assert short.getvalue() == ""
+    off = io.StringIO()
+    with Progress(0, enabled=False, stream=off, delay_s=0.0).phase("x", 0.01):
+        time.sleep(0.03)
+    assert off.getvalue() == ""

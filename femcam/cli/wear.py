@@ -136,7 +136,7 @@ def _map(args) -> int:
         fe = None
         if args.source == "fe":  # the FE pressure: a sweep of the (tip) scene at these angles
             fe = sweep(tip_scene(sc, scene_tip_radius(sc, tip)), angles=theta, method="fe",
-                       progress=False)
+                       progress=None)  # progress on a terminal: the FE sweep takes seconds
         k_factor, regime = wear_factor(sc, theta, fe.table if fe is not None else None, tip)
         wm, st, slip = scene_wear(sc, theta, cycles=cycles, tip_radius=tip, fe=fe,
                                   k_factor=k_factor, regime=regime)

@@ -19,6 +19,7 @@ expected work.
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import multiprocessing
 import os
@@ -244,13 +245,19 @@ def _write_back(task, files: dict) -> None:
 
 
 class Progress:
-    """A one-line progress bar on stderr, shown only when stderr is a TTY (no tqdm needed)."""
+    """A one-line progress bar on stderr, shown only when stderr is a TTY (no tqdm needed).
+
+    :meth:`phase` shows the elapsed time of a phase without a count (model families, output
+    files, plots) once it has lasted ``delay_s`` (1 s): short phases stay silent.
+    """
 
     def __init__(self, total: int, label: str = "sweep", enabled: bool | None = None,
-                 stream=None):
+                 stream=None, delay_s: float = 1.0):
         self.stream = stream or sys.stderr
         if enabled is None:
             enabled = bool(getattr(self.stream, "isatty", lambda: False)())
+        self.on = bool(enabled)
+        self.delay_s = float(delay_s)
         self.enabled = enabled and total > 0
         self.total, self.done, self.label = total, 0, label
         self.t0 = time.perf_counter()
@@ -274,3 +281,33 @@ class Progress:
         if self.enabled:
             self.stream.write("\n")
             self.stream.flush()
+
+    @contextlib.contextmanager
+    def phase(self, label: str, period_s: float = 0.25):
+        """Context manager: ``label ... 3.2 s`` redrawn every ``period_s`` once the phase has
+        lasted ``delay_s``, then ``label: 4.1 s`` on its own line (nothing for a short phase)."""
+        if not self.on:
+            yield
+            return
+        stop, shown, t0 = threading.Event(), [False], time.perf_counter()
+
+        def tick():
+            if stop.wait(self.delay_s):
+                return
+            while True:
+                shown[0] = True
+                self.stream.write(f"\r{label} ... {time.perf_counter() - t0:5.1f} s")
+                self.stream.flush()
+                if stop.wait(period_s):
+                    return
+
+        th = threading.Thread(target=tick, daemon=True, name="femcam-progress")
+        th.start()
+        try:
+            yield
+        finally:
+            stop.set()
+            th.join()
+            if shown[0]:
+                self.stream.write(f"\r{label}: {time.perf_counter() - t0:5.1f} s\n")
+                self.stream.flush()

@@ -212,7 +212,9 @@ def _sweep(run: _Run, scheduler, client, progress, plots, command, t_start) -> S
     t_analytic = time.perf_counter() - t_start
     _open_store(run)
     t0 = time.perf_counter()
-    _plan(run)
+    talk = Progress(0, enabled=progress)
+    with talk.phase("model families: build and verify"):
+        _plan(run)
     t_verify = time.perf_counter() - t0
     tasks, task_chunk = _tasks(run)
     workers, workers_note = _choose_workers(run, tasks, task_chunk, scheduler, client)
@@ -235,7 +237,8 @@ def _sweep(run: _Run, scheduler, client, progress, plots, command, t_start) -> S
                          timings=timings, n_chunks_computed=len(tasks),
                          n_chunks_resumed=len(run.done))
     if run.out is not None:
-        result = _write_outputs(result, run, plots, src_path, src_text)
+        with talk.phase(f"writing {run.out}" + (" (tables, plots)" if plots else "")):
+            result = _write_outputs(result, run, plots, src_path, src_text)
     result.timings["total"] = time.perf_counter() - t_start
     return result
 
@@ -366,6 +369,7 @@ def _compute(run: _Run, tasks, task_chunk, workers, scheduler, client, progress)
     """Run the chunks (stored as they finish), load the resumed ones, return the whole table."""
     parts: dict[int, dict] = {}
     bar = Progress(sum(b - a for c, (a, b) in enumerate(run.bounds) if c not in run.done),
+                   label="solves" + (" and VTU files" if run.opts.vtk_every else ""),
                    enabled=progress)
     try:
         for k, rows in run_tasks(run_chunk, tasks, workers=workers, scheduler=scheduler,
