@@ -25,7 +25,6 @@ from __future__ import annotations
 import csv
 import datetime as _dt
 import importlib
-import io as _io
 import json
 import os
 import platform
@@ -206,17 +205,21 @@ def write_csv(path, table: dict, prov: dict | None = None, *, columns: Sequence[
         ``path``.
     """
     path = Path(path)
-    buf = _io.StringIO()
     names = [c[1] for c in columns] + list(text_columns)
-    buf.write(",".join(names) + "\n")  # first line: numpy.genfromtxt(names=True) reads it
-    for line in _header_lines(prov or {}):
-        buf.write(line + "\n")
+    head = [",".join(names)] + _header_lines(prov or {})  # line 1: genfromtxt(names=True)
     n = len(table["theta"])
-    cols = [np.asarray(table[k], dtype=float) * f for k, _, f in columns]
-    text = [[csv_text(v) for v in np.asarray(table[k]).astype(str)] for k in text_columns]
-    for i in range(n):
-        buf.write(",".join([f"{c[i]:.10g}" for c in cols] + [t[i] for t in text]) + "\n")
-    atomic_write_text(path, buf.getvalue())
+
+    def write(f, block: int = 2000):  # in blocks of rows: memory independent of n
+        f.write(("\n".join(head) + "\n").encode())
+        for a in range(0, n, block):
+            b = min(a + block, n)
+            cols = [np.asarray(table[k][a:b], dtype=float) * fac for k, _, fac in columns]
+            text = [[csv_text(v) for v in np.asarray(table[k][a:b]).astype(str)]
+                    for k in text_columns]
+            f.write("".join(",".join([f"{c[i]:.10g}" for c in cols] + [t[i] for t in text]) + "\n"
+                            for i in range(b - a)).encode())
+
+    atomic_write_bytes(path, write)
     return path
 
 

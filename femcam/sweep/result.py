@@ -152,6 +152,38 @@ def concat_rows(parts: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
     return out
 
 
+class TableBuilder:
+    """The sweep table filled chunk by chunk as chunks finish (any order), without keeping the
+    chunks: one float array per numeric column, preallocated (memory ~ one copy of the table).
+
+    Parameters
+    ----------
+    bounds : list of (int, int)
+        Row ranges of the chunks.
+    """
+
+    def __init__(self, bounds):
+        self.bounds = list(bounds)
+        n = self.bounds[-1][1] if self.bounds else 0
+        self.numeric = {name: np.full(n, np.nan) for name in NUMERIC}
+        self.text = {name: [np.zeros(0, str)] * len(self.bounds) for name in TEXT_COLUMNS}
+
+    def put(self, c: int, rows: dict) -> None:
+        """Chunk ``c``'s rows (dict of arrays) into the table."""
+        a, b = self.bounds[c]
+        for name in NUMERIC:
+            self.numeric[name][a:b] = np.asarray(rows[name], dtype=float)
+        for name in TEXT_COLUMNS:
+            self.text[name][c] = np.asarray(rows[name]).astype(str)
+
+    def table(self) -> dict:
+        """The whole table (float and ``str`` columns, as :func:`concat_rows`)."""
+        out = dict(self.numeric)
+        for name in TEXT_COLUMNS:
+            out[name] = np.concatenate(self.text[name]) if self.text[name] else np.zeros(0, str)
+        return out
+
+
 @dataclass(frozen=True)
 class SweepResult:
     """Everything a sweep produced.

@@ -38,7 +38,7 @@ from .result import (
     NUMERIC,
     TEXT_COLUMNS,
     SweepResult,
-    concat_rows,
+    TableBuilder,
     plot_data_arrays,
     report_markdown,
 )
@@ -273,6 +273,7 @@ def _analytic(run: _Run) -> None:
     """The analytic chain for all angles (cheap, vectorised): contact mask and slip."""
     run.rows0, st0 = analytic_rows(run.scene, run.angles)
     run.contact = contact_mask(run.rows0, st0)
+    run.rows0 = {k: run.rows0[k] for k in ("Fc", "rho")}  # all the planning needs (memory)
     run.wear = wear_setup(run.scene, run.angles, st0)
 
 
@@ -367,7 +368,7 @@ def _choose_workers(run: _Run, tasks, task_chunk, scheduler, client) -> tuple[in
 
 def _compute(run: _Run, tasks, task_chunk, workers, scheduler, client, progress) -> dict:
     """Run the chunks (stored as they finish), load the resumed ones, return the whole table."""
-    parts: dict[int, dict] = {}
+    table = TableBuilder(run.bounds)  # filled as chunks finish: no second copy of the rows
     bar = Progress(sum(b - a for c, (a, b) in enumerate(run.bounds) if c not in run.done),
                    label="solves" + (" and VTU files" if run.opts.vtk_every else ""),
                    enabled=progress)
@@ -377,13 +378,14 @@ def _compute(run: _Run, tasks, task_chunk, workers, scheduler, client, progress)
             c = task_chunk[k]
             if run.store is not None:
                 run.store.write(c, rows)
-            parts[c] = rows
+            table.put(c, rows)
+            del rows
             bar.update(run.bounds[c][1] - run.bounds[c][0])
     finally:
         bar.close()
     for c in run.done:
-        parts[c] = run.store.load(c)
-    return concat_rows([parts[c] for c in range(len(run.bounds))])
+        table.put(c, run.store.load(c))
+    return table.table()
 
 
 def _write_outputs(result: SweepResult, run: _Run, plots: bool, src_path=None,
