@@ -331,3 +331,17 @@ def test_progress_phase_shows_long_phases_only():
     with Progress(0, enabled=False, stream=off, delay_s=0.0).phase("x", 0.01):
         time.sleep(0.03)
     assert off.getvalue() == ""
+
+
+def test_animate_writes_one_gif_frame_per_vtu(tmp_path, capsys):
+    pytest.importorskip("pyvista")
+    from PIL import Image
+
+    assert main(["sweep", str(STUDY), "--out", str(tmp_path), "--angles-deg", "0:360:90",
+                 "--method", "hertz", "--vtk-every", "1", "--no-plots", "--progress", "off",
+                 "--animate"]) == 0
+    n_vtu = len(_pvd_files(tmp_path / "sweep.pvd"))
+    with Image.open(tmp_path / "animation.gif") as gif:
+        assert gif.n_frames == n_vtu == 4
+    with pytest.raises(InputError, match="animate"):
+        sweep(STUDY, angles=[0.0], method="hertz", animate=True)

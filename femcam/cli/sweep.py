@@ -40,6 +40,8 @@ def register(subparsers) -> None:
                    help="continue an interrupted sweep in DIR (computes only missing chunks)")
     p.add_argument("--overwrite", action="store_true",
                    help="replace the results in a non-empty DIR (refused otherwise)")
+    p.add_argument("--animate", action="store_true",
+                   help="also write DIR/animation.gif: von Mises over cam angle (the VTK series)")
     p.add_argument("--mesh-size", type=float, default=10.0, metavar="A_OVER_H",
                    help="FE element size in the contact zone, h = a / A_OVER_H (default 10)")
     p.add_argument("--tolerance", type=float, default=2e-3, metavar="TOL",
@@ -100,6 +102,8 @@ def _command_line(args) -> str:
         parts.append("--no-plots")
     if args.overwrite:
         parts.append("--overwrite")
+    if args.animate:
+        parts.append("--animate")
     return shlex.join(parts)
 
 
@@ -116,7 +120,8 @@ def _run(args) -> int:
                     resume=args.resume, workers=args.workers, scheduler=args.scheduler,
                     vtk_every=args.vtk_every, progress=progress, plots=not args.no_plots,
                     command=_command_line(args), scene_path=args.scene,
-                    chunk_delay_s=args.chunk_delay_s, overwrite=args.overwrite)
+                    chunk_delay_s=args.chunk_delay_s, overwrite=args.overwrite,
+                    animate=args.animate)
     except KeyboardInterrupt as exc:  # Ctrl-C: one line (what was saved, how to resume)
         print(f"\nfemcam sweep: {exc or 'interrupted'}", file=sys.stderr)
         return 130

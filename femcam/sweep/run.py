@@ -26,6 +26,7 @@ from ..io import (
     write_pvd,
 )
 from ..scene import Scene, load_scene
+from ..viz.animate import animate_pvd
 from ..viz.sweep import plot_sweep
 from .cache import default_cache
 from .families import FamilyRecord, verify_families
@@ -113,6 +114,7 @@ class _Run:
     records: list | None = None
     verified_here: bool = False
     overwrite: bool = False
+    animate: bool = False
     lock: DirLock | None = None
 
 
@@ -120,7 +122,8 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
           tolerance: float = 2e-3, chunk_size: int = 30, out=None, resume: bool = False,
           workers: int | str = "auto", scheduler=None, client=None, vtk_every: int | None = None,
           progress: bool | None = None, plots: bool | None = None, command: str | None = None,
-          scene_path=None, chunk_delay_s: float = 0.0, overwrite: bool = False) -> SweepResult:
+          scene_path=None, chunk_delay_s: float = 0.0, overwrite: bool = False,
+          animate: bool = False) -> SweepResult:
     """Sweep a scene over cam angles: kinematics, loads, Hertz and FE contact at every angle.
 
     Parameters
@@ -170,6 +173,9 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
         deterministic).
     overwrite : bool
         Allow a fresh sweep into a non-empty ``out`` (its earlier results are replaced).
+    animate : bool
+        With ``out`` and VTK output, also write ``DIR/animation.gif``: von Mises over cam angle
+        (:func:`femcam.viz.animate.animate_pvd`).
 
     Returns
     -------
@@ -184,6 +190,10 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
     run = _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume, workers,
                    vtk_every, scene_path, chunk_delay_s)
     run.overwrite = bool(overwrite)
+    run.animate = bool(animate)
+    if run.animate and not run.opts.vtk_every:
+        raise _validate.fail("animate", animate, "", "needs the VTK series: an output directory "
+                             "(out) and vtk_every > 0 (--vtk-every)")
     plots = (run.out is not None) if plots is None else bool(plots)
     try:
         return _sweep(run, scheduler, client, progress, plots, command, t_start)
@@ -423,6 +433,8 @@ def _write_outputs(result: SweepResult, run: _Run, plots: bool, src_path=None,
             paths.update(plot_sweep(result, out))
         except ImportError as exc:  # pragma: no cover - matplotlib missing
             raise InputError(f"plots = True: {exc}") from None
+    if run.animate and "pvd" in paths:
+        paths["animation"] = animate_pvd(paths["pvd"], out / "animation.gif")
     atomic_write_text(out / "report.md", report_markdown(result))
     paths["report"] = str(out / "report.md")
     return result
