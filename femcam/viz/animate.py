@@ -2,7 +2,7 @@
 
 One frame per ``.vtu`` of the series (the cam angles of ``--vtk-every``), drawn around the
 contact with one colour scale for all frames (0 to the largest value of the series), so the
-frames compare. Written with Pillow (a matplotlib dependency): no video codec needed.
+frames compare. Written with matplotlib's Pillow writer: no video codec needed.
 """
 
 from __future__ import annotations
@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
+from ._mpl import pyplot
 
 
 def _frames(pvd: Path, scalar: str):
@@ -57,7 +58,7 @@ def animate_pvd(pvd, path, *, scalar: str = "von_mises_Pa", window: float = 3.0,
         The path written.
     """
     import pyvista as pv  # lazy: pyvista/VTK is heavy and only the rendering needs it
-    from PIL import Image  # lazy: Pillow (a matplotlib dependency) writes the GIF
+    from matplotlib.animation import PillowWriter  # lazy: matplotlib is heavy; writes the GIF
 
     frames = _frames(Path(pvd), scalar)
     if not frames:
@@ -79,10 +80,20 @@ def animate_pvd(pvd, path, *, scalar: str = "von_mises_Pa", window: float = 3.0,
                     scalar_bar_args={"title": label, "vertical": False})
         pl.add_text(f"cam angle {t:.1f} deg", font_size=10, position="upper_left")
         pl.view_xy()
-        images.append(Image.fromarray(pl.screenshot(return_img=True)))
+        images.append(pl.screenshot(return_img=True))
         pl.close()
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    images[0].save(path, save_all=True, append_images=images[1:], loop=0,
-                   duration=int(1000 * frame_s))
+    plt = pyplot()
+    h, w = images[0].shape[:2]
+    fig = plt.figure(figsize=(w / 100, h / 100), dpi=100)
+    ax = fig.add_axes([0, 0, 1, 1])
+    ax.set_axis_off()
+    shown = ax.imshow(images[0])
+    writer = PillowWriter(fps=1.0 / frame_s)
+    with writer.saving(fig, str(path), dpi=100):
+        for img in images:
+            shown.set_data(img)
+            writer.grab_frame()
+    plt.close(fig)
     return str(path)
