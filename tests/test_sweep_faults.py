@@ -228,6 +228,25 @@ def test_ctrl_c_after_gmsh_meshed_one_line_and_130(tmp_path):
 
 
 # -- 12. results you can come back to ---------------------------------------------------------
+def test_sweep_reloads_with_report(tmp_path):
+    """The fast version: tables only; ``SweepResult.load`` gives back the exact SI table."""
+    from femcam.sweep import SweepResult
+
+    th = parse_angles_deg("0:360:45")
+    res = sweep(STUDY, angles=th, method="hertz", out=tmp_path, workers=1, vtk_every=0,
+                plots=False)
+    back = SweepResult.load(tmp_path)
+    assert back.method == "hertz" and back.n_angles == th.size == 8
+    np.testing.assert_array_equal(back.theta, th)
+    for k in ("Fc", "p0_hertz", "vm_max", "wear_depth"):
+        np.testing.assert_array_equal(back[k], res[k])
+    assert list(back.status) == list(res.status)
+    assert back.surface_profile is None  # no plots: no plot data
+    assert "8 angles" in (tmp_path / "report.md").read_text()
+    assert back.paths["report"] == str(tmp_path / "report.md")
+
+
+@pytest.mark.slow
 def test_api_defaults_match_the_cli_and_a_sweep_reloads_and_replots(tmp_path):
     """``sweep(..., out=DIR)`` writes what ``femcam sweep --out DIR`` writes (a .vtu every 10th
     angle, the plots, report.md); ``SweepResult.load(DIR)`` gives back the table and the plots'
@@ -333,6 +352,7 @@ def test_progress_phase_shows_long_phases_only():
     assert off.getvalue() == ""
 
 
+@pytest.mark.slow
 def test_animate_writes_one_gif_frame_per_vtu(tmp_path, capsys):
     pytest.importorskip("pyvista")
     from PIL import Image
