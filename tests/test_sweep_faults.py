@@ -365,3 +365,13 @@ def test_animate_writes_one_gif_frame_per_vtu(tmp_path, capsys):
         assert gif.n_frames == n_vtu == 4
     with pytest.raises(InputError, match="animate"):
         sweep(STUDY, angles=[0.0], method="hertz", animate=True)
+
+
+@pytest.mark.slow
+def test_ctrl_c_with_a_process_pool_one_line_and_130(tmp_path):
+    """Pool workers ignore SIGINT (the parent stops the pool): still one line, exit 130, and no
+    worker left behind (their stdout pipe reaches EOF: communicate returned)."""
+    rc, err, out = _interrupt(tmp_path, "--method", "fe", "--workers", "2")
+    assert rc == 130
+    assert len(err.splitlines()) == 1 and "Traceback" not in err, err
+    assert "--resume" in err

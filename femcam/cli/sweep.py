@@ -123,7 +123,8 @@ def _run(args) -> int:
                     chunk_delay_s=args.chunk_delay_s, overwrite=args.overwrite,
                     animate=args.animate)
     except KeyboardInterrupt as exc:  # Ctrl-C: one line (what was saved, how to resume)
-        print(f"\nfemcam sweep: {exc or 'interrupted'}", file=sys.stderr)
+        nl = "\n" if sys.stderr.isatty() else ""  # end a progress bar's line
+        print(f"{nl}femcam sweep: {exc or 'interrupted'}", file=sys.stderr)
         return 130
     s = res.summary()
     o = res.provenance.get("options", {})

@@ -182,8 +182,8 @@ def _run_pool(fn, tasks, workers):
         except BaseException:
             for f in futs:
                 f.cancel()
-            for proc in list((getattr(ex, "_processes", None) or {}).values()):
-                proc.terminate()  # a chunk in flight is recomputed by --resume
+            # (chunks in flight finish, bounded by one chunk per worker; terminating the workers
+            # instead breaks the executor's pipes mid-shutdown)
             raise
 
 
