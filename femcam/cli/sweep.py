@@ -47,6 +47,10 @@ def register(subparsers) -> None:
                    help="Dask scheduler address, e.g. tcp://host:8786 (needs femcam[dask])")
     p.add_argument("--resume", action="store_true",
                    help="continue an interrupted sweep in DIR (computes only missing chunks)")
+    p.add_argument("--overwrite", action="store_true",
+                   help="replace the results in a non-empty DIR (refused otherwise)")
+    p.add_argument("--animate", action="store_true",
+                   help="also write DIR/animation.gif: von Mises over cam angle (the VTK series)")
     p.add_argument("--mesh-size", type=float, default=None, metavar="A_OVER_H",
                    help="FE element size in the contact zone, h = a / A_OVER_H (default: [fe] "
                         "a_over_h, else 10)")
@@ -148,6 +152,10 @@ def _command_line(args) -> str:
         parts.append("--resume")
     if not args.plots:
         parts.append("--no-plots")
+    if args.overwrite:
+        parts.append("--overwrite")
+    if args.animate:
+        parts.append("--animate")
     return shlex.join(parts)
 
 
@@ -165,12 +173,18 @@ def _run(args) -> int:
     if args.law:
         scene = scene.with_law(args.law)
     progress = {"auto": None, "on": True, "off": False}[args.progress]
-    res = sweep(scene, angles=angles, method=args.method, a_over_h=args.mesh_size,
-                tolerance=args.tolerance, chunk_size=args.chunk_size, out=args.out,
-                resume=args.resume, workers=args.workers, scheduler=args.scheduler,
-                vtk_every=args.vtk_every, progress=progress, plots=args.plots,
-                command=_command_line(args), scene_path=args.scene,
-                chunk_delay_s=args.chunk_delay_s)
+    try:
+        res = sweep(scene, angles=angles, method=args.method, a_over_h=args.mesh_size,
+                    tolerance=args.tolerance, chunk_size=args.chunk_size, out=args.out,
+                    resume=args.resume, workers=args.workers, scheduler=args.scheduler,
+                    vtk_every=args.vtk_every, progress=progress, plots=args.plots,
+                    command=_command_line(args), scene_path=args.scene,
+                    chunk_delay_s=args.chunk_delay_s, overwrite=args.overwrite,
+                    animate=args.animate)
+    except KeyboardInterrupt as exc:  # Ctrl-C: one line (what was saved, how to resume)
+        nl = "\n" if sys.stderr.isatty() else ""  # end a progress bar's line
+        print(f"{nl}femcam sweep: {exc or 'interrupted'}", file=sys.stderr)
+        return 130
     s = res.summary()
     o = res.provenance.get("options", {})
     print(f"femcam sweep: {res.n_angles} angles ({res.n_chunks_resumed} chunks resumed, "

@@ -150,7 +150,7 @@ def _map(args) -> int:
         fe = None
         if args.source == "fe":  # the FE pressure: a sweep of the (tip) scene at these angles
             fe = sweep(tip_scene(sc, scene_tip_radius(sc, tip)), angles=theta, method="fe",
-                       progress=False, **sc.fe)  # the scene's [fe] a_over_h, tolerance
+                       progress=None, **sc.fe)  # the scene's [fe] settings; progress on a terminal
         k_factor, regime = wear_factor(sc, theta, fe.table if fe is not None else None, tip)
         wm, st, slip = scene_wear(sc, theta, cycles=cycles, tip_radius=tip, fe=fe,
                                   k_factor=k_factor, regime=regime)

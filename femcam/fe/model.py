@@ -252,19 +252,32 @@ class ContactResult:
     sz = _cam_surface("sz")
     txz = _cam_surface("txz")
 
-    def field_at_nodes(self, body: str = "cam"):
+    def __getstate__(self):
+        # a pickled result is independent of its model (the factorisation is large and bound
+        # to this process): the full-field methods then take the model explicitly
+        return {**self.__dict__, "model": None}
+
+    def model_or(self, model=None) -> ContactModel:
+        """``model``, else the model that solved this result (None after unpickling: pass it)."""
+        m = model if model is not None else self.model
+        if m is None:
+            raise chk.fail("model", None, "", "this ContactResult was unpickled without its "
+                           "factorised model; pass the ContactModel that solved it (model=...)")
+        return m
+
+    def field_at_nodes(self, body: str = "cam", model=None):
         """Full-field (u (2, n), stress dict) at the scalar nodes of ``body`` (one back-solve)."""
-        return self.model.full_field(self, body)
+        return self.model_or(model).full_field(self, body)
 
-    def stress_at(self, x, z, body: str = "cam"):
+    def stress_at(self, x, z, body: str = "cam", model=None):
         """(sx, sz, txz, sy, tau1, von_mises) at arbitrary points (x, z >= 0 depth), Pa."""
-        return self.model.stress_at(self, x, z, body)
+        return self.model_or(model).stress_at(self, x, z, body)
 
-    def to_vtu(self, path):
+    def to_vtu(self, path, model=None):
         """Write both bodies to one .vtu (see :mod:`femcam.fe.export`); returns the path."""
         from .export import write_vtu
 
-        return write_vtu(self, path)
+        return write_vtu(self, path, model=model)
 
 
 def _traction_fields(trac, Q, q, w, x, length, mu) -> dict:
