@@ -173,13 +173,19 @@ def _header_lines(prov: dict) -> list[str]:
 _CSV_TEXT = str.maketrans({",": ";", "#": "No.", '"': "'", "\n": " ", "\r": " "})
 
 
-def csv_text(value) -> str:
-    """A text field as written to the CSV: no ``,``, ``#``, quotes or line breaks.
+#: an empty text field as written to the CSV: ``numpy.genfromtxt(..., dtype=None)`` reads a
+#: column of empty fields as bool, a column with ``-`` as text (:func:`read_csv` maps it back)
+CSV_EMPTY = "-"
 
-    >>> csv_text('a, "b" #1')
-    "a; 'b' No.1"
+
+def csv_text(value) -> str:
+    """A text field as written to the CSV: no ``,``, ``#``, quotes or line breaks; an empty
+    field is :data:`CSV_EMPTY`.
+
+    >>> csv_text('a, "b" #1'), csv_text("")
+    ("a; 'b' No.1", '-')
     """
-    return str(value).translate(_CSV_TEXT)
+    return str(value).translate(_CSV_TEXT) or CSV_EMPTY
 
 
 def write_csv(path, table: dict, prov: dict | None = None, *, columns: Sequence[Column],
@@ -258,13 +264,13 @@ def read_csv(path) -> tuple[dict, dict]:
         try:
             cols[name] = np.array(vals, dtype=float)
         except ValueError:
-            cols[name] = np.array(vals, dtype=str)
+            cols[name] = np.array(["" if v == CSV_EMPTY else v for v in vals], dtype=str)
     return cols, header
 
 
 def write_npz(path, table: dict, prov: dict | None = None, *, numeric: Sequence[str],
-              text_columns: Sequence[str] = (), scene_toml: str = "", scene_repr: str = "",
-              extra: dict | None = None) -> Path:
+              text_columns: Sequence[str] = (), integer_columns: Sequence[str] = (),
+              scene_toml: str = "", scene_repr: str = "", extra: dict | None = None) -> Path:
     """The table in SI units (internal names) plus provenance and scene text; atomic.
 
     Parameters
@@ -277,6 +283,8 @@ def write_npz(path, table: dict, prov: dict | None = None, *, numeric: Sequence[
         Provenance, stored as the JSON string ``provenance_json``.
     numeric, text_columns : sequence of str
         Names of the float and the string columns to store.
+    integer_columns : sequence of str
+        Those of ``numeric`` stored as int64 (counts, ids), with -1 where the table has NaN.
     scene_toml, scene_repr : str
         The scene file's text and the parsed scene's ``repr``.
     extra : dict[str, ndarray], optional
@@ -288,6 +296,8 @@ def write_npz(path, table: dict, prov: dict | None = None, *, numeric: Sequence[
         ``path``.
     """
     arrays = {k: np.asarray(table[k], dtype=float) for k in numeric if k in table}
+    for k in set(integer_columns) & set(arrays):  # counts and ids: int64, -1 where undefined (NaN)
+        arrays[k] = np.where(np.isfinite(arrays[k]), arrays[k], -1).astype(np.int64)
     for k in text_columns:
         arrays[k] = np.asarray(table[k]).astype(str)
     arrays["provenance_json"] = np.array(json.dumps(prov or {}, sort_keys=True))
@@ -365,11 +375,15 @@ def write_vtu(path, points, cells, point_data: dict, field_data: dict | None = N
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     tmp = path.with_name(path.stem + ".part.vtu")
-    # compression=None: zlib took 29 of 32 ms per file (measured), for files read once
-    meshio.write(tmp, mesh, file_format="vtu", binary=True, compression=None)
-    if field_data:
-        _insert_field_data(tmp, field_data)
-    tmp.replace(path)
+    try:
+        # compression=None: zlib took 29 of 32 ms per file (measured), for files read once
+        meshio.write(tmp, mesh, file_format="vtu", binary=True, compression=None)
+        if field_data:
+            _insert_field_data(tmp, field_data)
+        tmp.replace(path)
+    except BaseException:  # a full disk, Ctrl-C: no half-written .part.vtu is left behind
+        tmp.unlink(missing_ok=True)
+        raise
     return path
 
 

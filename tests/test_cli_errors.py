@@ -124,8 +124,6 @@ def test_full_disk_in_vtu_writer_is_one_line(tmp_path, capsys, monkeypatch):
     assert "No space left on device" in _one_line(capsys, "sweep")
 
 
-@pytest.mark.xfail(reason="femcam.io.write_vtu leaves DIR/vtk/*.part.vtu on a write error: "
-                          "fixed in femcam/io.py (the runs/outputs branch of this issue)", strict=False)
 def test_full_disk_leaves_no_part_file(tmp_path, monkeypatch):
     meshio = pytest.importorskip("meshio")
 

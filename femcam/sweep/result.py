@@ -81,6 +81,8 @@ TEXT_COLUMNS = ("status", "flags", "wear_source", "message")
 EXTRA_COLUMNS = ("iterations", "residual", "n_dofs", "family")
 
 NUMERIC = tuple(c[0] for c in COLUMNS) + EXTRA_COLUMNS
+#: numeric columns that are counts or ids: int64 in the NPZ (-1 where undefined)
+INTEGER_COLUMNS = ("iterations", "n_dofs", "family")
 STATUSES = ("ok", "liftoff", "undercut", "failed")
 
 #: wall-clock columns (differ from run to run; excluded from equality checks)
@@ -348,7 +350,10 @@ class SweepResult:
                     v = z[name]
                     profile[name[len(PROFILE_PREFIX):]] = v.item() if v.ndim == 0 else v
                 elif name in NUMERIC:
-                    table[name] = z[name].astype(float)
+                    v = z[name]
+                    # integer columns are stored with -1 for "undefined" (NaN in the table)
+                    table[name] = np.where(v < 0, np.nan, v).astype(float) if v.dtype.kind == "i" \
+                        else v.astype(float)
                 elif name in TEXT_COLUMNS:
                     table[name] = z[name].astype(str)
             hf = json.loads(str(z["hertz_factors_json"])) if "hertz_factors_json" in z.files else None

@@ -36,6 +36,7 @@ from .pipeline import ChunkTask, analytic_rows, contact_mask, run_chunk
 from .profile import worst_surface_profile
 from .result import (
     COLUMNS,
+    INTEGER_COLUMNS,
     NUMERIC,
     TEXT_COLUMNS,
     SweepResult,
@@ -418,7 +419,8 @@ def _write_outputs(result: SweepResult, run: _Run, plots: bool, src_path=None,
     paths.update(csv=str(write_csv(out / "sweep.csv", result.table, prov, columns=COLUMNS,
                                    text_columns=TEXT_COLUMNS)),
                  npz=str(write_npz(out / "sweep.npz", result.table, prov, numeric=NUMERIC,
-                                   text_columns=TEXT_COLUMNS, scene_toml=src_text,
+                                   text_columns=TEXT_COLUMNS, integer_columns=INTEGER_COLUMNS,
+                                   scene_toml=src_text,
                                    scene_repr=repr(run.scene), extra=plot_data_arrays(result))))
     theta = result.table["theta"]
     entries = [(float(np.degrees(theta[i])), out / "vtk" / vtu_name(theta[i]))

@@ -101,7 +101,7 @@ class ChunkStore:
             if old is not None and old != json.loads(json.dumps(self._manifest(), sort_keys=True)):
                 diff = sorted(k for k in set(old.get("key", {})) | set(self.key)
                               if old.get("key", {}).get(k) != self.key.get(k))
-                if old.get("bounds") != self.bounds:
+                if old.get("bounds") != [list(b) for b in self.bounds]:  # JSON lists
                     diff.append("chunk bounds")
                 raise InputError(
                     f"resume = True: {mpath} belongs to a different sweep (differs in: "
