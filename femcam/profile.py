@@ -50,8 +50,9 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+from scipy.optimize import brentq, minimize_scalar
 
-from . import _validate as V  # noqa: N812
+from . import _validate
 from .errors import InputError, UndercutError
 
 FOLLOWER_KINDS = ("roller", "knife_edge", "flat_faced")
@@ -74,11 +75,11 @@ class RollerFollower:
     kind = "roller"
 
     def __post_init__(self):
-        object.__setattr__(self, "Rb", V.positive("Rb", self.Rb, "m"))
-        object.__setattr__(self, "Rr", V.positive("Rr", self.Rr, "m"))
-        object.__setattr__(self, "e", V.number("e", self.e, "m"))
+        object.__setattr__(self, "Rb", _validate.positive("Rb", self.Rb, "m"))
+        object.__setattr__(self, "Rr", _validate.positive("Rr", self.Rr, "m"))
+        object.__setattr__(self, "e", _validate.number("e", self.e, "m"))
         if abs(self.e) >= self.Rp:
-            raise V.fail("e", self.e, "m", f"offset must satisfy |e| < Rb + Rr = {self.Rp:g} m")
+            raise _validate.fail("e", self.e, "m", f"offset must satisfy |e| < Rb + Rr = {self.Rp:g} m")
 
     @property
     def Rp(self) -> float:
@@ -95,10 +96,10 @@ class KnifeEdgeFollower:
     kind = "knife_edge"
 
     def __post_init__(self):
-        object.__setattr__(self, "Rb", V.positive("Rb", self.Rb, "m"))
-        object.__setattr__(self, "e", V.number("e", self.e, "m"))
+        object.__setattr__(self, "Rb", _validate.positive("Rb", self.Rb, "m"))
+        object.__setattr__(self, "e", _validate.number("e", self.e, "m"))
         if abs(self.e) >= self.Rb:
-            raise V.fail("e", self.e, "m", f"offset must satisfy |e| < Rb = {self.Rb:g} m")
+            raise _validate.fail("e", self.e, "m", f"offset must satisfy |e| < Rb = {self.Rb:g} m")
 
     @property
     def Rr(self) -> float:
@@ -122,8 +123,8 @@ class FlatFacedFollower:
     kind = "flat_faced"
 
     def __post_init__(self):
-        object.__setattr__(self, "Rb", V.positive("Rb", self.Rb, "m"))
-        object.__setattr__(self, "e", V.number("e", self.e, "m"))
+        object.__setattr__(self, "Rb", _validate.positive("Rb", self.Rb, "m"))
+        object.__setattr__(self, "e", _validate.number("e", self.e, "m"))
 
     @property
     def Rr(self) -> float:
@@ -135,12 +136,12 @@ Follower = RollerFollower | KnifeEdgeFollower | FlatFacedFollower
 
 def make_follower(kind: str, *, Rb: float, Rr: float = 0.0, e: float = 0.0) -> Follower:
     """Build a follower from its kind name (``"roller"``, ``"knife_edge"``, ``"flat_faced"``)."""
-    V.choice("follower kind", kind, FOLLOWER_KINDS)
+    _validate.choice("follower kind", kind, FOLLOWER_KINDS)
     if kind == "roller":
         return RollerFollower(Rb=Rb, Rr=Rr, e=e)
-    if V.number("Rr", Rr, "m") != 0.0:
-        raise V.fail("Rr", Rr, "m", f"only a roller follower has a roller radius; a {kind} "
-                     "follower needs Rr = 0 (the default)")
+    if _validate.number("Rr", Rr, "m") != 0.0:
+        raise _validate.fail("Rr", Rr, "m", f"only a roller follower has a roller radius; a {kind} "
+                             "follower needs Rr = 0 (the default)")
     if kind == "knife_edge":
         return KnifeEdgeFollower(Rb=Rb, e=e)
     return FlatFacedFollower(Rb=Rb, e=e)
@@ -285,10 +286,10 @@ def cam_profile(f: Follower, theta, s, s1, s2, *, allow_undercut: bool = False) 
     if not isinstance(f, RollerFollower | KnifeEdgeFollower | FlatFacedFollower):
         raise InputError(f"follower = {f!r}: must be a RollerFollower, KnifeEdgeFollower or "
                          "FlatFacedFollower")
-    theta = V.finite_array("theta", theta, "rad")
-    s = V.finite_array("s", s, "m")
-    s1 = V.finite_array("s1", s1, "m/rad")
-    s2 = V.finite_array("s2", s2, "m/rad^2")
+    theta = _validate.finite_array("theta", theta, "rad")
+    s = _validate.finite_array("s", s, "m")
+    s1 = _validate.finite_array("s1", s1, "m/rad")
+    s2 = _validate.finite_array("s2", s2, "m/rad^2")
     try:
         theta, s, s1, s2 = np.broadcast_arrays(theta, s, s1, s2)
     except ValueError:
@@ -313,7 +314,7 @@ def cam_profile(f: Follower, theta, s, s1, s2, *, allow_undercut: bool = False) 
         d = math.sqrt(Rp * Rp - e * e)
         if np.any(d + s <= 0.0):
             bad = float(s[d + s <= 0.0].flat[0])
-            raise V.fail("s", bad, "m", f"pitch point passes the cam centre: need s > -{d:g} m")
+            raise _validate.fail("s", bad, "m", f"pitch point passes the cam centre: need s > -{d:g} m")
         phi = pressure_angle(s, s1, Rp, e)
         kappa = pitch_curvature(s, s1, s2, Rp, e)
         with np.errstate(divide="ignore"):
@@ -389,8 +390,6 @@ def _polish_min(fun, theta, vals, dtheta, n_max: int = 8):
     ``theta`` are ``vals``: every grid local minimum within a small band of the grid minimum
     (at most ``n_max`` of them) is polished by a bounded Brent search over +-1 grid step.
     Returns ``(value, theta)``; never worse than the grid minimum."""
-    from scipy.optimize import minimize_scalar
-
     i0 = int(np.argmin(vals))
     best, best_t = float(vals[i0]), float(theta[i0])
     span = float(np.max(vals)) - best
@@ -435,19 +434,17 @@ def min_base_radius(kind: str, program, *, phi_max: float = math.radians(30.0), 
     ``Rb`` is that infimum times ``1 + RB_MARGIN`` (1e-9), so :func:`cam_profile` accepts it on
     any grid.
     """
-    from scipy.optimize import brentq
-
-    V.choice("kind", kind, FOLLOWER_KINDS)
-    phi_lim = V.in_range("phi_max", phi_max, 0.0, math.pi / 2, "rad", lo_open=True, hi_open=True)
-    Rr = V.nonnegative("Rr", Rr, "m")
-    e = V.number("e", e, "m")
-    rho_min = V.nonnegative("rho_min", rho_min, "m")
+    _validate.choice("kind", kind, FOLLOWER_KINDS)
+    phi_lim = _validate.in_range("phi_max", phi_max, 0.0, math.pi / 2, "rad", lo_open=True, hi_open=True)
+    Rr = _validate.nonnegative("Rr", Rr, "m")
+    e = _validate.number("e", e, "m")
+    rho_min = _validate.nonnegative("rho_min", rho_min, "m")
     if kind == "roller" and Rr <= 0.0:
-        raise V.fail("Rr", Rr, "m", "must be > 0 for a roller follower")
+        raise _validate.fail("Rr", Rr, "m", "must be > 0 for a roller follower")
     if kind != "roller" and Rr != 0.0:
-        raise V.fail("Rr", Rr, "m", f"only a roller follower has a roller radius; a {kind} "
-                     "follower needs Rr = 0 (the default)")
-    n = V.integer("n_theta", n_theta, 16)
+        raise _validate.fail("Rr", Rr, "m", f"only a roller follower has a roller radius; a {kind} "
+                             "follower needs Rr = 0 (the default)")
+    n = _validate.integer("n_theta", n_theta, 16)
     theta = np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
     dtheta = 2.0 * math.pi / n
     s, s1, s2 = _derivs(program, theta)

@@ -17,12 +17,13 @@ from pathlib import Path
 
 import numpy as np
 
+from .recovery import surface_nodes
+
 FIELDS = ("sx", "sz", "txz", "sy", "tau1", "von_mises")
 
 
 def scene_arrays(result):
     """(points (n, 3), cells (nel, k), cell_type, point_data, body_id) for both bodies."""
-    from .recovery import surface_nodes
 
     model = result.model
     pts, cells, data, body_id = [], [], {k: [] for k in (*FIELDS, "displacement", "depth",
@@ -60,7 +61,7 @@ def scene_arrays(result):
 
 def write_vtu(result, path) -> Path:
     """Write ``result`` (a :class:`~femcam.fe.ContactResult`) to ``path`` (.vtu); returns the path."""
-    import meshio
+    import meshio  # lazy: meshio loads its many format plugins; only .vtu export needs it
 
     path = Path(path)
     if path.suffix != ".vtu":

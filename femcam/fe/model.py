@@ -22,15 +22,24 @@ from dataclasses import dataclass, field
 import numpy as np
 import scipy.sparse as sp
 
-from .. import _validate as chk
+from .. import _validate
 from ..errors import PhysicsError
 from ..hertz.conformity import roller_does_not_fit
 from ..hertz.contact import effective_radius, half_width, peak_pressure
 from ..materials import PLANES, Material, effective_modulus
 from ..mesh import ContactMesh, MeshOptions, build_contact_mesh, surface_height
 from .contact import load_matrix, solve_lcp, trapezoid_weights
-from .elasticity import ELEMENTS, ORDERINGS, Body, assemble_body
-from .recovery import build_eval_set, derived, fit_half_width
+from .elasticity import (
+    ELEMENTS,
+    ORDERINGS,
+    Body,
+    assemble_body,
+    probe_matrix,
+    scalar_node_coordinates,
+    stress_operator,
+)
+from .export import write_vtu
+from .recovery import build_eval_set, depth, derived, fit_half_width, johnson_frame
 from .traction import solve_partial_slip
 
 #: values of ``SolverOptions.stress_operators``
@@ -67,17 +76,17 @@ class SolverOptions:
     stress_operators: str = "precompute"
 
     def __post_init__(self):
-        chk.choice("ordering", self.ordering, ORDERINGS)
-        chk.in_range("max_iter", self.max_iter, 1, 10000, "")
-        chk.positive("tol", self.tol, "")
-        lo = chk.positive("a_range[0]", self.a_range[0], "")
-        hi = chk.positive("a_range[1]", self.a_range[1], "")
+        _validate.choice("ordering", self.ordering, ORDERINGS)
+        _validate.in_range("max_iter", self.max_iter, 1, 10000, "")
+        _validate.positive("tol", self.tol, "")
+        lo = _validate.positive("a_range[0]", self.a_range[0], "")
+        hi = _validate.positive("a_range[1]", self.a_range[1], "")
         if lo >= hi:
-            raise chk.fail("a_range", self.a_range, "", "must be (lo, hi) with lo < hi")
-        chk.positive("kappa_tol", self.kappa_tol, "")
-        chk.in_range("eval_depth", self.eval_depth, 0.0, 20.0, "(x a_ref)")
-        chk.in_range("fit_threshold", self.fit_threshold, 0.0, 0.9, "")
-        chk.choice("stress_operators", self.stress_operators, STRESS_OPERATORS)
+            raise _validate.fail("a_range", self.a_range, "", "must be (lo, hi) with lo < hi")
+        _validate.positive("kappa_tol", self.kappa_tol, "")
+        _validate.in_range("eval_depth", self.eval_depth, 0.0, 20.0, "(x a_ref)")
+        _validate.in_range("fit_threshold", self.fit_threshold, 0.0, 0.9, "")
+        _validate.choice("stress_operators", self.stress_operators, STRESS_OPERATORS)
 
 
 @dataclass(frozen=True)
@@ -262,8 +271,6 @@ class ContactResult:
 
     def to_vtu(self, path):
         """Write both bodies to one .vtu (see :mod:`femcam.fe.export`); returns the path."""
-        from .export import write_vtu
-
         return write_vtu(self, path)
 
 
@@ -322,11 +329,11 @@ class ContactModel:
               a_ref: float, mesh: MeshOptions | None = None, solver: SolverOptions | None = None,
               plane: str = "strain", element: str = "P2") -> ContactModel:
         """Mesh, assemble, factorise and condense (see module docstring)."""
-        Rr = chk.positive("Rr", Rr, "m")
-        length = chk.positive("length", length, "m")
-        a_ref = chk.positive("a_ref", a_ref, "m")
-        chk.choice("plane", plane, PLANES)
-        chk.choice("element", element, ELEMENTS)
+        Rr = _validate.positive("Rr", Rr, "m")
+        length = _validate.positive("length", length, "m")
+        a_ref = _validate.positive("a_ref", a_ref, "m")
+        _validate.choice("plane", plane, PLANES)
+        _validate.choice("element", element, ELEMENTS)
         solver = solver or SolverOptions()
         t0 = time.perf_counter()
         cm = build_contact_mesh(Rr=Rr, rho=rho_ref, a_ref=a_ref, options=mesh)
@@ -528,26 +535,27 @@ class ContactModel:
     @staticmethod
     def _check_inputs(F, rho, mu, sliding, Q, rolling):
         """Checked (F, rho, mu, Q) of :meth:`solve`."""
-        F = chk.nonnegative("F", F, "N")
+        F = _validate.nonnegative("F", F, "N")
         rho = float(rho)
         if math.isnan(rho) or rho == 0.0:
-            raise chk.fail("rho", rho, "m", "must be nonzero (inf for a flat cam)")
-        mu = chk.nonnegative("mu", mu, "")
+            raise _validate.fail("rho", rho, "m", "must be nonzero (inf for a flat cam)")
+        mu = _validate.nonnegative("mu", mu, "")
         if sliding not in (1, -1):
-            raise chk.fail("sliding", sliding, "", "must be +1 or -1")
+            raise _validate.fail("sliding", sliding, "", "must be +1 or -1")
         if Q is not None:
-            Q = chk.number("Q", Q, "N")
+            Q = _validate.number("Q", Q, "N")
         if rolling not in (0, 1, -1):
-            raise chk.fail("rolling", rolling, "", "must be 0 (no rolling), +1 or -1")
+            raise _validate.fail("rolling", rolling, "", "must be 0 (no rolling), +1 or -1")
         return F, rho, mu, Q
 
     def _gap(self, rho: float, gap) -> np.ndarray:
         """Initial gap (m) at ``self.x``: ``gap`` if given (checked), else the osculating arcs."""
         if gap is None:
             return surface_height(self.x, self.Rr) + surface_height(self.x, rho)
-        g = chk.finite_array("gap", gap, "m")
+        g = _validate.finite_array("gap", gap, "m")
         if g.shape != self.x.shape:
-            raise chk.fail("gap", f"shape {g.shape}", "m", f"must have the shape {self.x.shape} of model.x")
+            raise _validate.fail("gap", f"shape {g.shape}", "m",
+                                 f"must have the shape {self.x.shape} of model.x")
         return g
 
     def _sy(self, name, sx, sz):
@@ -557,10 +565,7 @@ class ContactModel:
     # ------------------------------------------------------------------ full fields
     def full_field(self, r: ContactResult, body: str = "cam"):
         """Displacement (2, n_scalar) and stresses at all scalar nodes of ``body``."""
-        from .elasticity import scalar_node_coordinates, stress_operator
-        from .recovery import depth, johnson_frame
-
-        chk.choice("body", body, ("cam", "roller"))
+        _validate.choice("body", body, ("cam", "roller"))
         b: Body = self.bodies[body]
         q = r.q if r.q is not None else (r.sliding * r.mu) * r.p  # partial slip: the solved q
         f = self.Bn[body] @ r.p + self.Bt[body] @ q
@@ -580,20 +585,18 @@ class ContactModel:
 
     def stress_at(self, r: ContactResult, x, z, body: str = "cam"):
         """Stresses interpolated (P2 nodal field) at points (x, z) of ``body``; Pa."""
-        x = chk.finite_array("x", x, "m")
-        z = chk.finite_array("z", z, "m")
+        x = _validate.finite_array("x", x, "m")
+        z = _validate.finite_array("z", z, "m")
         x, z = np.broadcast_arrays(x, z)
         b: Body = self.bodies[body]
         ys = surface_height(x, b.geometry.R)
         y = (-ys - z) if body == "cam" else (ys + z)
-        from skfem import Basis
-
         _, fld = self.full_field(r, body)
-        sb = Basis(b.mesh, b.basis.elem.elem)
         try:
-            P = sb.probes(np.stack([x.ravel(), y.ravel()]))
+            P = probe_matrix(b, np.stack([x.ravel(), y.ravel()]))
         except ValueError:
-            raise chk.fail("(x, z)", (x.tolist(), z.tolist()), "m", "must lie inside the body") from None
+            raise _validate.fail("(x, z)", (x.tolist(), z.tolist()), "m",
+                                 "must lie inside the body") from None
         return tuple((P @ fld[k]).reshape(x.shape)
                      for k in ("sx", "sz", "txz", "sy", "tau1", "von_mises"))
 
@@ -606,8 +609,9 @@ def solve_contact(F: float, rho: float, Rr: float, cam: Material, roller: Materi
     (or, when Hertz does not apply or F = 0, 1 % of Rr). A one-off model: ``solver`` defaults
     to ``SolverOptions(stress_operators="per_solve")`` (same numbers, no per-unknown solves)."""
     if a_ref is None:
-        aH, _ = _hertz(chk.nonnegative("F", F, "N"), chk.positive("length", length, "m"), float(rho),
-                       chk.positive("Rr", Rr, "m"), cam, roller, plane)
+        aH, _ = _hertz(_validate.nonnegative("F", F, "N"), _validate.positive("length", length, "m"),
+                       float(rho),
+                       _validate.positive("Rr", Rr, "m"), cam, roller, plane)
         a_ref = aH if (math.isfinite(aH) and aH > 0) else 0.01 * Rr
     solver = solver or SolverOptions(stress_operators="per_solve")
     model = ContactModel.build(Rr=Rr, rho_ref=rho, cam=cam, roller=roller, length=length, a_ref=a_ref,
