@@ -61,6 +61,13 @@ FOLLOWER_KINDS = ("roller", "knife_edge", "flat_faced")
 # --------------------------------------------------------------------------------------------
 # followers
 # --------------------------------------------------------------------------------------------
+def _set_checked(follower, **checks) -> None:
+    """Set each length field (m) of the frozen ``follower`` to its checked value, in the order
+    given: ``name=check`` with ``check(name, value, "m")`` a :mod:`femcam._validate` helper."""
+    for name, check in checks.items():
+        object.__setattr__(follower, name, check(name, getattr(follower, name), "m"))
+
+
 @dataclass(frozen=True, kw_only=True)
 class RollerFollower:
     """Translating roller follower: base radius ``Rb``, roller radius ``Rr``, offset ``e`` (m).
@@ -75,9 +82,7 @@ class RollerFollower:
     kind = "roller"
 
     def __post_init__(self):
-        object.__setattr__(self, "Rb", _validate.positive("Rb", self.Rb, "m"))
-        object.__setattr__(self, "Rr", _validate.positive("Rr", self.Rr, "m"))
-        object.__setattr__(self, "e", _validate.number("e", self.e, "m"))
+        _set_checked(self, Rb=_validate.positive, Rr=_validate.positive, e=_validate.number)
         if abs(self.e) >= self.Rp:
             raise _validate.fail("e", self.e, "m", f"offset must satisfy |e| < Rb + Rr = {self.Rp:g} m")
 
@@ -96,8 +101,7 @@ class KnifeEdgeFollower:
     kind = "knife_edge"
 
     def __post_init__(self):
-        object.__setattr__(self, "Rb", _validate.positive("Rb", self.Rb, "m"))
-        object.__setattr__(self, "e", _validate.number("e", self.e, "m"))
+        _set_checked(self, Rb=_validate.positive, e=_validate.number)
         if abs(self.e) >= self.Rb:
             raise _validate.fail("e", self.e, "m", f"offset must satisfy |e| < Rb = {self.Rb:g} m")
 
@@ -123,8 +127,7 @@ class FlatFacedFollower:
     kind = "flat_faced"
 
     def __post_init__(self):
-        object.__setattr__(self, "Rb", _validate.positive("Rb", self.Rb, "m"))
-        object.__setattr__(self, "e", _validate.number("e", self.e, "m"))
+        _set_checked(self, Rb=_validate.positive, e=_validate.number)
 
     @property
     def Rr(self) -> float:

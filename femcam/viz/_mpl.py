@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 
 def pyplot():
     """``matplotlib.pyplot`` on the Agg backend (headless; PNG output)."""
@@ -11,3 +13,15 @@ def pyplot():
     import matplotlib.pyplot as plt
 
     return plt
+
+
+def save(fig, path, *, dpi: int = 100, tight: bool = False) -> Path:
+    """Write ``fig`` to the PNG ``path`` (parent folders made; laid out first when ``tight``)
+    and close it; returns the path as a :class:`~pathlib.Path`."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    if tight:
+        fig.tight_layout()
+    fig.savefig(path, dpi=dpi)
+    pyplot().close(fig)
+    return path

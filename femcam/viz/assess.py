@@ -13,31 +13,20 @@ from pathlib import Path
 
 import numpy as np
 
+from ._mpl import pyplot, save
+
 #: safety-factor columns plotted, with their labels
 SAFETY = (("sf_yield", "first yield"), ("sf_shakedown", "shakedown"), ("sf_subsurface", "subsurface fatigue"),
           ("sf_surface_fatigue", "surface fatigue"), ("sf_scuffing", "scuffing"))
 
 
-def _plt():
-    import matplotlib  # optional dependency, imported only to plot
-
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
-
-    return plt
-
-
 def _save(fig, path: Path) -> str:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-    _plt().close(fig)
-    return str(path)
+    return str(save(fig, path, dpi=90, tight=True))
 
 
 def plot_lambda(rows, path) -> str:
     """lambda (left) and h_min, h_c (right) vs cam angle, regime limits 1 and 3 drawn."""
-    plt = _plt()
+    plt = pyplot()
     deg = np.degrees(rows["theta"])
     fig, (ax, bx) = plt.subplots(1, 2, figsize=(10, 3.4))
     ax.plot(deg, rows["lam"], "C0-")
@@ -59,7 +48,7 @@ def plot_lambda(rows, path) -> str:
 
 def plot_temperatures(rows, path, *, T_oil=None, T_scuff=None) -> str:
     """Flash temperature rise and contact temperature vs cam angle (scuffing limit dashed)."""
-    plt = _plt()
+    plt = pyplot()
     deg = np.degrees(rows["theta"])
     fig, ax = plt.subplots(figsize=(6.5, 3.4))
     ax.plot(deg, rows["T_contact"], "C3-", label="contact temperature T_oil + dT_flash")
@@ -81,7 +70,7 @@ def plot_temperatures(rows, path, *, T_oil=None, T_scuff=None) -> str:
 
 def plot_safety(rows, path) -> str:
     """Safety factors vs cam angle on a log axis, the line SF = 1 drawn."""
-    plt = _plt()
+    plt = pyplot()
     deg = np.degrees(rows["theta"])
     fig, ax = plt.subplots(figsize=(6.5, 3.6))
     for i, (col, label) in enumerate(SAFETY):
@@ -98,7 +87,7 @@ def plot_safety(rows, path) -> str:
 
 def plot_outline(rows, path) -> str:
     """The cam outline coloured by lambda (left) and by the smallest safety factor (right)."""
-    plt = _plt()
+    plt = pyplot()
     x, y = rows["cam_x"] * 1e3, rows["cam_y"] * 1e3
     sf = np.full(x.shape, np.inf)
     for col, _ in SAFETY:
