@@ -418,11 +418,11 @@ def build_contact_mesh(*, Rr: float, rho: float, a_ref: float,
         raise _validate.fail("rho", rho, "m", "must be nonzero (use inf for a flat cam)")
     if roller_does_not_fit(rho, Rr):
         raise _validate.fail("rho", rho, "m", f"a concave cam needs |rho| > Rr = {Rr:g} m (else the roller "
-                     "does not fit)")
+                             "does not fit)")
     if opts.fine_half_width * a_ref > 0.5 * Rr:
         raise _validate.fail("a_ref", a_ref, "m", f"must be <= Rr/(2 fine_half_width) = "
-                     f"{Rr / (2 * opts.fine_half_width):g} m: the contact zone would not be small "
-                     "against the roller (far outside Hertz theory and this mesh layout)")
+                             f"{Rr / (2 * opts.fine_half_width):g} m: the contact zone would not be small "
+                             "against the roller (far outside Hertz theory and this mesh layout)")
     cap = None if opts.domain_over_a is None else opts.domain_over_a * a_ref
     L_roller = _body_size(Rr, cap, math.inf)
     L_cam = _body_size(rho, cap, Rr)

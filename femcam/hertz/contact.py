@@ -194,7 +194,7 @@ class LineContact:
         F = _validate.finite_array("F", self.F, "N")
         if np.any(F < 0.0):
             raise _validate.fail("F", F[F < 0.0].flat[0], "N",
-                         "must be >= 0 (a negative contact force is lift-off; see femcam.loads)")
+                                 "must be >= 0 (a negative contact force is lift-off; see femcam.loads)")
         length = _validate.positive("length", self.length, "m")
         R1 = _radius("R1", self.R1)
         R2 = _radius("R2", self.R2)

@@ -245,7 +245,7 @@ class _Polynomial(MotionLaw):
         c = _validate.finite_array("coefficients", coefficients, "")
         if c.ndim != 1 or c.size < 2:
             raise _validate.fail("coefficients", coefficients, "", "must be a 1-D list of >= 2 numbers "
-                         "c_0..c_n (s = sum c_k u^k)")
+                                 "c_0..c_n (s = sum c_k u^k)")
         if abs(c[0]) > 1e-12:
             raise _validate.fail("coefficients[0]", float(c[0]), "", "must be 0 so that s(0) = 0")
         if abs(c.sum() - 1.0) > 1e-9:
