@@ -24,6 +24,21 @@ def _save(fig, path: Path) -> str:
     return str(save(fig, path, dpi=90, tight=True))
 
 
+def _angle_axes(rows, figsize):
+    """``(fig, ax, cam angle (deg))`` of a one-panel plot against the cam angle."""
+    fig, ax = pyplot().subplots(figsize=figsize)
+    return fig, ax, np.degrees(rows["theta"])
+
+
+def _finish(fig, ax, ylabel: str, path, *, legend_loc: str = "best", grid: str = "major") -> str:
+    """Label the cam-angle axis and ``ylabel``, legend, grid; save to ``path``."""
+    ax.set_xlabel("cam angle (deg)")
+    ax.set_ylabel(ylabel)
+    ax.legend(fontsize=7, loc=legend_loc)
+    ax.grid(alpha=0.3, which=grid)
+    return _save(fig, Path(path))
+
+
 def plot_lambda(rows, path) -> str:
     """lambda (left) and h_min, h_c (right) vs cam angle, regime limits 1 and 3 drawn."""
     plt = pyplot()
@@ -48,9 +63,7 @@ def plot_lambda(rows, path) -> str:
 
 def plot_temperatures(rows, path, *, T_oil=None, T_scuff=None) -> str:
     """Flash temperature rise and contact temperature vs cam angle (scuffing limit dashed)."""
-    plt = pyplot()
-    deg = np.degrees(rows["theta"])
-    fig, ax = plt.subplots(figsize=(6.5, 3.4))
+    fig, ax, deg = _angle_axes(rows, (6.5, 3.4))
     ax.plot(deg, rows["T_contact"], "C3-", label="contact temperature T_oil + dT_flash")
     if T_oil is not None:
         ax.axhline(T_oil, color="C0", lw=0.8, label=f"oil (bulk) {T_oil:g} C")
@@ -61,28 +74,18 @@ def plot_temperatures(rows, path, *, T_oil=None, T_scuff=None) -> str:
     bx.set_ylabel("flash temperature rise (K)", color="C1")
     bx.set_ylim(bottom=0)
     bx.legend(fontsize=7, loc="upper right")
-    ax.set_xlabel("cam angle (deg)")
-    ax.set_ylabel("temperature (C)")
-    ax.legend(fontsize=7, loc="upper left")
-    ax.grid(alpha=0.3)
-    return _save(fig, Path(path))
+    return _finish(fig, ax, "temperature (C)", path, legend_loc="upper left")
 
 
 def plot_safety(rows, path) -> str:
     """Safety factors vs cam angle on a log axis, the line SF = 1 drawn."""
-    plt = pyplot()
-    deg = np.degrees(rows["theta"])
-    fig, ax = plt.subplots(figsize=(6.5, 3.6))
+    fig, ax, deg = _angle_axes(rows, (6.5, 3.6))
     for i, (col, label) in enumerate(SAFETY):
         v = np.where(np.isfinite(rows[col]), rows[col], np.nan)
         if np.any(np.isfinite(v)):
             ax.semilogy(deg, v, f"C{i}-", label=label)
     ax.axhline(1.0, color="k", lw=1.0)
-    ax.set_xlabel("cam angle (deg)")
-    ax.set_ylabel("safety factor")
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=7)
-    return _save(fig, Path(path))
+    return _finish(fig, ax, "safety factor", path, grid="both")
 
 
 def plot_outline(rows, path) -> str:
