@@ -1,4 +1,4 @@
-"""Benchmark of the FE contact solver (issue 4): correctness first, then time per phase.
+"""Benchmark of the FE contact solver (docs/fe.md): correctness first, then time per phase.
 
 Run:  python benchmarks/bench_fe.py [--quick] [--markdown] [--threaded-blas]
 
@@ -48,7 +48,7 @@ from femcam.hertz import LineContact
 from femcam.materials import STEEL
 
 Rr, rho, F, l = 0.01, 0.02, 1500.0, 0.01
-TARGETS = {"p0": 3e-3, "a": 1e-2, "txz": 5e-3, "tau1": 2e-2}  # issue 4, relative to Hertz
+TARGETS = {"p0": 3e-3, "a": 1e-2, "txz": 5e-3, "tau1": 2e-2}  # docs/fe.md targets, relative to Hertz
 
 
 def hertz(F=F, rho=rho, mu=0.0):

@@ -1,4 +1,4 @@
-"""Benchmark of the FE sweep (issue 5): reuse vs naive, reuse error, tolerance, scaling, Bezier.
+"""Benchmark of the FE sweep (docs/sweep.md): reuse vs naive, reuse error, tolerance, scaling, Bezier.
 
 Run:  python benchmarks/bench_sweep.py [--markdown] [--quick] [--full-naive] [--bezier]
 
@@ -45,7 +45,7 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 STUDY = ROOT / "examples" / "seed002_study_model.toml"
-P0_LIMIT = 3e-3  # FE p0 within 0.3 % of Hertz at every angle (issue 5)
+P0_LIMIT = 3e-3  # FE p0 within 0.3 % of Hertz at every angle (docs/sweep.md)
 
 MD = False  # set by --markdown
 

@@ -19,6 +19,7 @@ would depend on the executor in the last bits.
 
 from __future__ import annotations
 
+import ctypes
 import threading
 
 _BLAS_PREFIXES = ("openblas_", "scipy_openblas_")
@@ -27,7 +28,6 @@ _BLAS_SUFFIXES = ("", "64_")
 
 def _blas_libs():
     """ctypes handles ``(get, set)`` of the OpenBLAS builds loaded in this process (Linux only)."""
-    import ctypes
 
     try:
         with open("/proc/self/maps") as f:
@@ -66,7 +66,6 @@ def blas_threads() -> list[int]:
 
 def _set_threads(n: int) -> list[tuple]:
     """Set every loaded OpenBLAS to ``n`` threads; ``[(set function, previous count), ...]``."""
-    import ctypes
 
     changed = []
     for get, put in _blas_libs():
@@ -114,8 +113,6 @@ class single_threaded_blas:  # noqa: N801 - used like a function
         return self
 
     def __exit__(self, *exc):
-        import ctypes
-
         global _depth, _saved
         with _lock:
             _depth -= 1

@@ -36,7 +36,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import _validate as V  # noqa: N812
+from . import _validate
 from .errors import InputError, LiftOffError
 from .profile import bool_intervals
 
@@ -61,14 +61,14 @@ class FollowerDynamics:
     zeta: float | None = None
 
     def __post_init__(self):
-        object.__setattr__(self, "m", V.nonnegative("m", self.m, "kg"))
-        object.__setattr__(self, "k", V.nonnegative("k", self.k, "N/m"))
-        object.__setattr__(self, "Fpl", V.nonnegative("Fpl", self.Fpl, "N"))
+        object.__setattr__(self, "m", _validate.nonnegative("m", self.m, "kg"))
+        object.__setattr__(self, "k", _validate.nonnegative("k", self.k, "N/m"))
+        object.__setattr__(self, "Fpl", _validate.nonnegative("Fpl", self.Fpl, "N"))
         if (self.c is None) == (self.zeta is None):
             raise InputError(f"c = {self.c!r} N s/m, zeta = {self.zeta!r}: give exactly one of the "
                              "damping coefficient c or the damping ratio zeta")
         if self.zeta is not None:
-            zeta = V.nonnegative("zeta", self.zeta, "")
+            zeta = _validate.nonnegative("zeta", self.zeta, "")
             if zeta > 0.0 and self.c_critical == 0.0:
                 raise InputError(
                     f"zeta (damping_ratio) = {zeta:g}: the critical damping c_c = 2 sqrt(k m) = "
@@ -78,7 +78,7 @@ class FollowerDynamics:
             object.__setattr__(self, "zeta", zeta)
             object.__setattr__(self, "c", zeta * self.c_critical)
         else:
-            c = V.nonnegative("c", self.c, "N s/m")
+            c = _validate.nonnegative("c", self.c, "N s/m")
             object.__setattr__(self, "c", c)
             cc = self.c_critical
             object.__setattr__(self, "zeta", c / cc if cc > 0 else math.inf if c > 0 else 0.0)
@@ -149,16 +149,16 @@ def contact_force(dyn: FollowerDynamics, theta, s, v, a, phi, *,
     """
     if not isinstance(dyn, FollowerDynamics):
         raise InputError(f"dyn = {dyn!r}: must be a FollowerDynamics")
-    V.choice("on_liftoff", on_liftoff, _LIFTOFF_MODES)
-    theta = V.finite_array("theta", theta, "rad")
-    s = V.finite_array("s", s, "m")
-    v = V.finite_array("v", v, "m/s")
-    a = V.finite_array("a", a, "m/s^2")
-    phi = V.finite_array("phi", phi, "rad")
+    _validate.choice("on_liftoff", on_liftoff, _LIFTOFF_MODES)
+    theta = _validate.finite_array("theta", theta, "rad")
+    s = _validate.finite_array("s", s, "m")
+    v = _validate.finite_array("v", v, "m/s")
+    a = _validate.finite_array("a", a, "m/s^2")
+    phi = _validate.finite_array("phi", phi, "rad")
     if np.any(np.abs(phi) >= 0.5 * math.pi):
         bad = float(phi[np.abs(phi) >= 0.5 * math.pi].flat[0])
-        raise V.fail("phi", bad, "rad", f"pressure angle ({math.degrees(bad):.4g} deg) must satisfy "
-                     "|phi| < 90 deg")
+        raise _validate.fail("phi", bad, "rad", f"pressure angle ({math.degrees(bad):.4g} deg) must satisfy "
+                             "|phi| < 90 deg")
     try:
         theta, s, v, a, phi = (np.array(x, dtype=float) for x in np.broadcast_arrays(theta, s, v, a, phi))
     except ValueError:

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from . import _validate as V  # noqa: N812
+from . import _validate
 
 PLANES = ("strain", "stress")
 #: accepted Young's moduli (Pa) in the API: soft elastomers (1e5) up to 1e18, which leaves room for
@@ -46,15 +46,15 @@ class Material:
 
     def __post_init__(self):
         # see E_MIN, E_MAX
-        object.__setattr__(self, "E", V.in_range("E", self.E, E_MIN, E_MAX, "Pa"))
-        object.__setattr__(self, "nu", V.in_range("nu", self.nu, -1.0, 0.5, "", lo_open=True,
-                                                  hi_open=True))
+        object.__setattr__(self, "E", _validate.in_range("E", self.E, E_MIN, E_MAX, "Pa"))
+        object.__setattr__(self, "nu", _validate.in_range("nu", self.nu, -1.0, 0.5, "", lo_open=True,
+                                                          hi_open=True))
         if self.hardness is not None:
-            object.__setattr__(self, "hardness", V.positive("hardness", self.hardness, "Pa"))
+            object.__setattr__(self, "hardness", _validate.positive("hardness", self.hardness, "Pa"))
 
     def modulus(self, plane: str = "strain") -> float:
         """E' = E/(1-nu^2) in plane strain, E in plane stress (Pa)."""
-        V.choice("plane", plane, PLANES)
+        _validate.choice("plane", plane, PLANES)
         return self.E / (1.0 - self.nu**2) if plane == "strain" else self.E
 
 
@@ -86,9 +86,9 @@ def lame_parameters(E, nu, plane: str = "strain"):
     >>> [round(float(x) / 1e9, 6) for x in lame_parameters(200e9, 0.25)]
     [80.0, 80.0]
     """
-    V.choice("plane", plane, PLANES)
-    E = V.positive_array("E", E, "Pa")
-    nu = V.in_range_array("nu", nu, -1.0, 0.5, "", lo_open=True, hi_open=True)
+    _validate.choice("plane", plane, PLANES)
+    E = _validate.positive_array("E", E, "Pa")
+    nu = _validate.in_range_array("nu", nu, -1.0, 0.5, "", lo_open=True, hi_open=True)
     mu = E / (2.0 * (1.0 + nu))
     lam = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
     if plane == "stress":

@@ -40,6 +40,7 @@ from __future__ import annotations
 import math
 import os
 import threading
+from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -204,6 +205,33 @@ class ContactMesh:
         return path
 
 
+@contextmanager
+def gmsh_session(what: str):
+    """An initialised gmsh, held under :data:`GMSH_LOCK` (initialised here only if needed;
+    finalised if initialised here); a gmsh failure becomes ``FemcamError("gmsh failed to mesh
+    <what>: ...")``."""
+    import gmsh  # lazy: gmsh is a large native library, loaded only to build meshes
+
+    with GMSH_LOCK:  # gmsh is one global, non-thread-safe state per process
+        init_here = not gmsh.isInitialized()
+        if init_here:
+            # interruptible=False: gmsh would install its own SIGINT handler (which ends the
+            # process silently on Ctrl-C, and which Python allows only in the main thread, while
+            # Dask runs tasks in worker threads); Python's KeyboardInterrupt stays in charge
+            gmsh.initialize(["-nopopup"], readConfigFiles=False, interruptible=False)
+        try:
+            gmsh.option.setNumber("General.Terminal", 0)
+            gmsh.option.setNumber("General.Verbosity", 1)
+            yield gmsh
+        except FemcamError:
+            raise
+        except Exception as exc:  # gmsh raises plain Exception
+            raise FemcamError(f"gmsh failed to mesh {what}: {exc}") from None
+        finally:
+            if init_here:
+                gmsh.finalize()
+
+
 def surface_height(x, R):
     r"""Depth of a circular arc of signed radius ``R`` below its tangent at x = 0 (m).
 
@@ -297,15 +325,22 @@ def _size_field(gmsh, fine_curve, n_fine: int, h: float, lc: float, a_ref: float
     gmsh.option.setNumber("Mesh.ElementOrder", 1)
 
 
-def _extract(gmsh, surface, arcs, bottom):
-    """Nodes, triangles, node sets (fine zone, surface, fixed) and physical groups of the meshed
-    model, in gmsh's node numbering mapped to 0-based indices."""
+def gmsh_nodes(gmsh, surface):
+    """``(points (N, 2), index, triangles (T, 3))`` of the meshed gmsh model: ``index`` maps a
+    gmsh node tag to its 0-based row of ``points``; the triangles are those of ``surface``."""
     tags, xyz, _ = gmsh.model.mesh.getNodes()
     pts = xyz.reshape(-1, 3)[:, :2]
     index = np.full(int(tags.max()) + 1, -1, dtype=np.int64)
     index[tags.astype(np.int64)] = np.arange(tags.size)
     _, _, ntri = gmsh.model.mesh.getElements(2, surface)
     tri = index[np.asarray(ntri[0], dtype=np.int64)].reshape(-1, 3)
+    return pts, index, tri
+
+
+def _extract(gmsh, surface, arcs, bottom):
+    """Nodes, triangles, node sets (fine zone, surface, fixed) and physical groups of the meshed
+    model, in gmsh's node numbering mapped to 0-based indices."""
+    pts, index, tri = gmsh_nodes(gmsh, surface)
 
     def curve_nodes(curves):
         out = []
@@ -389,35 +424,17 @@ def build_contact_mesh(*, Rr: float, rho: float, a_ref: float,
         raise _validate.fail("rho", rho, "m", "must be nonzero (use inf for a flat cam)")
     if roller_does_not_fit(rho, Rr):
         raise _validate.fail("rho", rho, "m", f"a concave cam needs |rho| > Rr = {Rr:g} m (else the roller "
-                     "does not fit)")
+                             "does not fit)")
     if opts.fine_half_width * a_ref > 0.5 * Rr:
         raise _validate.fail("a_ref", a_ref, "m", f"must be <= Rr/(2 fine_half_width) = "
-                     f"{Rr / (2 * opts.fine_half_width):g} m: the contact zone would not be small "
-                     "against the roller (far outside Hertz theory and this mesh layout)")
+                             f"{Rr / (2 * opts.fine_half_width):g} m: the contact zone would not be small "
+                             "against the roller (far outside Hertz theory and this mesh layout)")
     cap = None if opts.domain_over_a is None else opts.domain_over_a * a_ref
     L_roller = _body_size(Rr, cap, math.inf)
     L_cam = _body_size(rho, cap, Rr)
-    import gmsh  # lazy: gmsh is a large native library, loaded only to build meshes
-
-    with GMSH_LOCK:  # gmsh is one global, non-thread-safe state per process
-        init_here = not gmsh.isInitialized()
-        if init_here:
-            # interruptible=False: gmsh would install its own SIGINT handler (which ends the
-            # process silently on Ctrl-C, and which Python allows only in the main thread, while
-            # Dask runs tasks in worker threads); Python's KeyboardInterrupt stays in charge
-            gmsh.initialize(["-nopopup"], readConfigFiles=False, interruptible=False)
-        try:
-            gmsh.option.setNumber("General.Terminal", 0)
-            gmsh.option.setNumber("General.Verbosity", 1)
-            cam = _mesh_body(gmsh, "cam", rho, L_cam, a_ref, opts)
-            roller = _mirror(_mesh_body(gmsh, "roller", Rr, L_roller, a_ref, opts))
-        except FemcamError:
-            raise
-        except Exception as exc:  # gmsh raises plain Exception
-            raise FemcamError(f"gmsh failed to mesh the contact region: {exc}") from None
-        finally:
-            if init_here:
-                gmsh.finalize()
+    with gmsh_session("the contact region") as gmsh:
+        cam = _mesh_body(gmsh, "cam", rho, L_cam, a_ref, opts)
+        roller = _mirror(_mesh_body(gmsh, "roller", Rr, L_roller, a_ref, opts))
     return ContactMesh(cam=cam, roller=roller, Rr=Rr, rho=rho, a_ref=a_ref,
                        h=a_ref / opts.a_over_h, options=opts)
 

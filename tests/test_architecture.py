@@ -20,18 +20,12 @@ PKG = ROOT / "femcam"
 LAZY_OK = {"gmsh", "pyvista", "matplotlib", "dask",
            # meshio: ~0.4-0.6 s to import (its format plugins); only the .vtu/.msh writers need it
            "meshio",
-           # scipy submodules cost 0.3-0.9 s each to import (optimize, signal, integrate, linalg):
-           # imported where a rarely used path needs them, so ``import femcam`` stays fast
+           # scipy submodules that ``import femcam`` does not load already (scipy.signal: ~0.5-0.7 s),
+           # imported where a rarely used path needs them
            "scipy",
-           # stdlib process pool, only for workers > 1
-           "concurrent"}
-
-#: function-level imports in modules that parallel branches are editing right now (FE solver,
-#: Hertz formulas, profile, kinematics, BLAS threads); to be made module-level when those merge.
-#: The test fails if a listed module no longer has any (so the list only shrinks).
-PENDING = {"femcam/hertz/contact.py", "femcam/hertz/maxima.py", "femcam/kinematics/laws.py",
-           "femcam/profile.py", "femcam/_threads.py", "femcam/fe/model.py", "femcam/fe/export.py",
-           "femcam/fe/elasticity.py"}
+           # skfem: ~0.03-0.09 s on top of scipy (0.3-0.6 s alone), but ``import femcam`` stays
+           # numpy/scipy only (tests/test_imports.py): loaded when an FE body is assembled
+           "skfem"}
 
 
 def layer_order() -> list[str]:
@@ -152,15 +146,11 @@ def test_no_import_cycle():
 
 
 def test_function_level_imports_only_for_heavy_optional_packages():
-    bad, stale = [], []
+    bad = []
     for mod, f in MODULES.items():
         rel = f.relative_to(ROOT).as_posix()
         lines = f.read_text(encoding="utf-8").splitlines()
         lazy = [(t, n) for t, n, is_lazy in imports(mod) if is_lazy]
-        if rel in PENDING:
-            if not lazy:
-                stale.append(rel)
-            continue
         for t, n in lazy:
             root = t.split(".")[0]
             if root not in LAZY_OK:
@@ -172,7 +162,6 @@ def test_function_level_imports_only_for_heavy_optional_packages():
             if root in LAZY_OK and not any("#" in lines[n - 1] for n in ns):
                 bad.append(f"{rel}:{ns[0]}: lazy import of {root} without a one-line reason comment")
     assert not bad, "\n".join(bad)
-    assert not stale, f"no function-level imports left: remove from PENDING: {stale}"
 
 
 def test_the_checks_catch_a_cycle_and_a_back_edge():

@@ -152,7 +152,7 @@ def test_peak_coefficients_closed_form(name, Cv, Ca, Cj):
                                err_msg=f"{name}: peak coefficients vs closed form")
 
 
-# Norton (2009) table 3-2 / issue 2, as printed (4-5 significant figures)
+# Norton (2009) table 3-2, as printed (4-5 significant figures)
 TEXTBOOK = {
     "poly345": (1.875, 5.7735, 60.0),
     "poly4567": (2.1875, 7.5132, 52.5),

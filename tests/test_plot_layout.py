@@ -28,13 +28,14 @@ def figures(monkeypatch):
     """Every figure the plot functions save (still drawable after pyplot closes it)."""
     figs = []
     for mod in (va, vw):
-        real = mod._save
+        name = "_save" if hasattr(mod, "_save") else "save"  # the module's own saving function
+        real = getattr(mod, name)
 
         def keep(fig, path, *a, _real=real, **k):
             figs.append(fig)
             return _real(fig, path, *a, **k)
 
-        monkeypatch.setattr(mod, "_save", keep)
+        monkeypatch.setattr(mod, name, keep)
     return figs
 
 

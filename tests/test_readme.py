@@ -32,7 +32,7 @@ def test_readme_python_block_runs(i, tmp_path, monkeypatch, capsys):
     if "r.to_vtu" in BLOCKS[i]:
         # the quick-tour block: FE p0 and a against Hertz at the worst angle, and a VTU file
         p0_err, a_err = (float(v) for v in out.split()[:2])
-        assert abs(p0_err) < 3e-3, "FE p0 vs Hertz (issue 4 target 0.3 %)"
-        assert abs(a_err) < 1e-2, "FE a vs Hertz (issue 4 target 1 %)"
+        assert abs(p0_err) < 3e-3, "FE p0 vs Hertz (docs/fe.md target 0.3 %)"
+        assert abs(a_err) < 1e-2, "FE a vs Hertz (docs/fe.md target 1 %)"
         assert (tmp_path / "worst.vtu").stat().st_size > 10_000
         assert np.isfinite(ns["r"].tau1_max.value)

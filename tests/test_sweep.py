@@ -183,7 +183,7 @@ def test_fe_sweep_equals_hertz_within_fe_tolerance(scene, fe_sample):
     assert np.all(r.status == "ok"), r["message"]
     hc = LineContact(F=r["Fc"], length=scene.length, R1=r["rho"], R2=scene.follower.Rr,
                      cam=scene.cam, roller=scene.roller, mu=scene.mu, plane=scene.plane)
-    # FE targets of issue 4 (h = a/10 here): p0 <= 0.3 %, a <= 2 % (half-width fit)
+    # FE accuracy targets of docs/fe.md (h = a/10 here): p0 <= 0.3 %, a <= 2 % (half-width fit)
     np.testing.assert_allclose(r["p0_fe"], hc.p0, rtol=3e-3, err_msg="FE p0 vs Hertz (Johnson 4.45)")
     np.testing.assert_allclose(r["a_fe"], hc.a, rtol=2e-2, err_msg="FE a vs Hertz")
     vm = max_von_mises(scene.mu, scene.cam.nu).value * hc.p0

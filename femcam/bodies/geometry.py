@@ -33,7 +33,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 from ..errors import InputError
 from ..materials import STEEL, Material
 from ..scene import roller_support_problems
@@ -83,17 +83,17 @@ class RollerBearing:
     ring_yield: float | None = None
 
     def __post_init__(self):
-        chk.choice("support", self.support, SUPPORTS[1:])
-        chk.positive("Ro", self.Ro, "m")
-        chk.positive("Ri", self.Ri, "m")
-        chk.nonnegative("c", self.c, "m")
+        _validate.choice("support", self.support, SUPPORTS[1:])
+        _validate.positive("Ro", self.Ro, "m")
+        _validate.positive("Ri", self.Ri, "m")
+        _validate.nonnegative("c", self.c, "m")
         problems = bearing_problems(Ro=self.Ro, Ri=self.Ri, support=self.support, Rp=self.Rp,
                                     c=self.c, Z=int(self.Z), r_n=self.r_n)
         if problems:
             raise InputError("; ".join(problems))  # each names its key, value and unit
         if self.c > 0.05 * self.Ri:
-            raise chk.fail("c", self.c, "m", f"the clearance is {self.c / self.Ri:.3g} of the bore "
-                           "radius: the linearised gap (c << Ri) does not hold beyond 0.05 Ri")
+            raise _validate.fail("c", self.c, "m", f"the clearance is {self.c / self.Ri:.3g} of the bore "
+                                 "radius: the linearised gap (c << Ri) does not hold beyond 0.05 Ri")
 
     @property
     def wall(self) -> float:

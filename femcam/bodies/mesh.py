@@ -20,36 +20,17 @@ sliders for the gmsh GUI: ``meshes/roller_ring.geo``.
 from __future__ import annotations
 
 import math
-import threading
-from contextlib import contextmanager
 
 import numpy as np
 
 from ..errors import FemcamError
-from ..mesh import BodyMesh, _ccw
+from ..mesh import BodyMesh, _ccw, gmsh_nodes
+from ..mesh import gmsh_session as _gmsh_session
 
 
-@contextmanager
 def gmsh_session():
-    """An initialised gmsh (initialised here only if needed; finalised if initialised here)."""
-    import gmsh  # heavy optional dependency: imported only when a body is meshed
-
-    init_here = not gmsh.isInitialized()
-    if init_here:
-        # gmsh's SIGINT handler is allowed only in the main thread (Dask workers are threads)
-        gmsh.initialize(["-nopopup"], readConfigFiles=False,
-                        interruptible=threading.current_thread() is threading.main_thread())
-    try:
-        gmsh.option.setNumber("General.Terminal", 0)
-        gmsh.option.setNumber("General.Verbosity", 1)
-        yield gmsh
-    except FemcamError:
-        raise
-    except Exception as exc:  # gmsh raises plain Exception
-        raise FemcamError(f"gmsh failed to mesh the bodies: {exc}") from None
-    finally:
-        if init_here:
-            gmsh.finalize()
+    """An initialised gmsh for the bodies (:func:`femcam.mesh.gmsh_session`)."""
+    return _gmsh_session("the bodies")
 
 
 def _circle_arcs(geo, cx, cy, R, angles, lc):
@@ -88,12 +69,7 @@ def _size_field(gmsh, specs, h_max, growth):
 
 def _extract(gmsh, surface, curve_sets):
     """(points (N, 2), triangles (T, 3), {name: node indices}) with unused nodes dropped."""
-    tags, xyz, _ = gmsh.model.mesh.getNodes()
-    pts = xyz.reshape(-1, 3)[:, :2]
-    index = np.full(int(tags.max()) + 1, -1, dtype=np.int64)
-    index[tags.astype(np.int64)] = np.arange(tags.size)
-    _, _, ntri = gmsh.model.mesh.getElements(2, surface)
-    tri = index[np.asarray(ntri[0], dtype=np.int64)].reshape(-1, 3)
+    pts, index, tri = gmsh_nodes(gmsh, surface)
     sets = {}
     for name, (dim, ents) in curve_sets.items():
         out = [index[gmsh.model.mesh.getNodes(dim, e, includeBoundary=True)[0].astype(np.int64)]

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
-from .. import _validate as chk
+from .. import _validate
 from .._threads import single_threaded_blas
 from ..fe.contact import load_matrix, trapezoid_weights
 from ..fe.elasticity import CHUNK, assemble_body, stress_operator
@@ -52,9 +52,9 @@ class RingMeshOptions:
 
     def __post_init__(self):
         if int(self.n_bore) != self.n_bore or self.n_bore < 16 or self.n_bore % 4:
-            raise chk.fail("n_bore", self.n_bore, "", "must be a multiple of 4, >= 16")
-        chk.in_range("h_max_over_wall", self.h_max_over_wall, 0.02, 1.0, "")
-        chk.in_range("growth", self.growth, 0.05, 1.0, "")
+            raise _validate.fail("n_bore", self.n_bore, "", "must be a multiple of 4, >= 16")
+        _validate.in_range("h_max_over_wall", self.h_max_over_wall, 0.02, 1.0, "")
+        _validate.in_range("growth", self.growth, 0.05, 1.0, "")
 
 
 def _hoop_rows(body, nodes, theta):
@@ -131,8 +131,8 @@ class RingModel:
               length: float, mesh: MeshOptions | None = None, ring_mesh: RingMeshOptions | None = None,
               plane: str = "strain", element: str = "P2") -> RingModel:
         """Mesh, assemble, factorise and condense the three bodies."""
-        a_ref = chk.positive("a_ref", a_ref, "m")
-        length = chk.positive("length", length, "m")
+        a_ref = _validate.positive("a_ref", a_ref, "m")
+        length = _validate.positive("length", length, "m")
         mesh = mesh or MeshOptions()
         rm = ring_mesh or RingMeshOptions()
         b = bearing
@@ -147,9 +147,10 @@ class RingModel:
             # contact is not resolved through the wall and the active set cycles or spreads the
             # pin contact over 150+ deg; spacings <= 0.5 wall converged (docs/bodies.md)
             need = 4 * math.ceil(2 * math.pi * b.Ri / (0.5 * b.wall) / 4)
-            raise chk.fail("n_bore", n_b, "", f"bore spacing 2 pi Ri / n_bore = {hb * 1e3:.3g} mm exceeds "
-                           f"half the ring wall ({b.wall * 1e3:.3g} mm): a wall this thin needs "
-                           f"n_bore >= {need}")
+            raise _validate.fail("n_bore", n_b, "",
+                                 f"bore spacing 2 pi Ri / n_bore = {hb * 1e3:.3g} mm exceeds "
+                                 f"half the ring wall ({b.wall * 1e3:.3g} mm): a wall this thin needs "
+                                 f"n_bore >= {need}")
         h_max = rm.h_max_over_wall * b.wall
         ring_geo, bore, theta = mesh_ring(Ro=b.Ro, Ri=b.Ri, contact_x=cam_geo.contact_x, n_bore=n_b,
                                           h_bore=min(hb, h_max), h_max=h_max,

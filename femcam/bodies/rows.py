@@ -40,7 +40,7 @@ import math
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 from ..errors import InputError
 from ..materials import effective_modulus
 from ..mesh import MeshOptions
@@ -106,7 +106,7 @@ def ring_rows(scene, theta, Fc, rho, *, model: RingModel | None = None,
     theta (rad), Fc (N, contact force over the face width), rho (m, cam radius of curvature; <0
     concave) are the sweep's arrays at the same angles; ``model`` reuses a built model.
     """
-    theta = chk.finite_array("theta", theta, "rad")
+    theta = _validate.finite_array("theta", theta, "rad")
     Fc = np.asarray(Fc, dtype=float)
     rho = np.asarray(rho, dtype=float)
     if not (theta.shape == Fc.shape == rho.shape):

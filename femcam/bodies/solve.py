@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 from ..errors import ConvergenceError, PhysicsError
 from ..fe.recovery import fit_half_width
 from ..materials import effective_modulus
@@ -117,10 +117,10 @@ def solve_ring(model, *, F: float, rho: float, cage: float = 0.0, max_secant: in
                tol: float = 1e-9) -> RingResult:
     """Solve the cam-ring-support contacts for cam force ``F`` (N), cam radius ``rho`` (m) and
     cage angle ``cage`` (rad, needles only; 0: a needle on the load line)."""
-    F = chk.positive("F", F, "N")
+    F = _validate.positive("F", F, "N")
     rho = float(rho)
     if math.isnan(rho) or rho == 0.0 or (math.isfinite(rho) and -model.bearing.Ro <= rho < 0):
-        raise chk.fail("rho", rho, "m", "must be nonzero and not a concave cam tighter than the roller")
+        raise _validate.fail("rho", rho, "m", "must be nonzero and not a concave cam tighter than the roller")
     b = model.bearing
     nc = model.nc
     A0, P, phi, weights = _operators(model, cage)

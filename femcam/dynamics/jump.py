@@ -26,11 +26,13 @@ rpm_rigid  same for the rigid eq. 11 force              rpm    seed 002 eq. 11
 from __future__ import annotations
 
 import math
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
 import numpy as np
+from scipy.optimize import brentq
 
-from .. import _validate as V  # noqa: N812
+from .. import _validate
 from ..errors import InputError
 from ..kinematics import CamProgram
 from .model import TrainModel
@@ -57,8 +59,6 @@ class JumpResult:
 
 def _first_root(fun, x, y, xtol):
     """First sign change of y = fun(x) on the scan refined by brentq: (root, iterations)."""
-    from scipy.optimize import brentq  # import cost (~1 s): paid by jump searches only
-
     neg = np.flatnonzero(y <= 0.0)
     if neg.size == 0:
         return math.nan, 0
@@ -76,11 +76,11 @@ def jump_speed(train: TrainModel, program: CamProgram, rpm_lo: float, rpm_hi: fl
     One fixed number of steps per revolution (resolving the train at ``rpm_lo``) is used for
     the whole search so that the minimum force is a continuous function of the speed.
     """
-    lo = V.positive("rpm_lo", rpm_lo, "rpm")
-    hi = V.positive("rpm_hi", rpm_hi, "rpm")
+    lo = _validate.positive("rpm_lo", rpm_lo, "rpm")
+    hi = _validate.positive("rpm_hi", rpm_hi, "rpm")
     if hi <= lo:
-        raise V.fail("rpm_hi", rpm_hi, "rpm", f"must be > rpm_lo = {lo:g} rpm")
-    n_scan = int(V.positive("n_scan", n_scan, ""))
+        raise _validate.fail("rpm_hi", rpm_hi, "rpm", f"must be > rpm_lo = {lo:g} rpm")
+    n_scan = int(_validate.positive("n_scan", n_scan, ""))
     _check_follows(train, hi / RPM)
     N = choose_steps(train, lo / RPM, steps_per_rev)
 
@@ -146,16 +146,14 @@ def rpm_sweep(train: TrainModel, program: CamProgram, rpm, *, steps_per_rev=None
               max_cycles: int = 400, workers: int = 1) -> RpmSweep:
     """Periodic response at each speed of ``rpm`` (rpm); ``workers`` > 1 runs the speeds in
     that many processes (the results are small and pickle)."""
-    rpm = np.atleast_1d(V.finite_array("rpm", rpm, "rpm"))
+    rpm = np.atleast_1d(_validate.finite_array("rpm", rpm, "rpm"))
     if np.any(rpm <= 0):
-        raise V.fail("rpm", float(rpm[rpm <= 0][0]), "rpm", "every speed must be > 0")
-    workers = int(V.positive("workers", workers, ""))
+        raise _validate.fail("rpm", float(rpm[rpm <= 0][0]), "rpm", "every speed must be > 0")
+    workers = int(_validate.positive("workers", workers, ""))
     jobs = [(train, program, float(r), steps_per_rev, max_cycles) for r in rpm]
     if workers == 1:
         rows = [_one(j) for j in jobs]
     else:
-        from concurrent.futures import ProcessPoolExecutor  # stdlib; only for workers > 1
-
         with ProcessPoolExecutor(max_workers=workers) as ex:
             rows = list(ex.map(_one, jobs, chunksize=max(1, len(jobs) // (4 * workers))))
     cols = list(zip(*rows, strict=True))

@@ -34,7 +34,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .. import _validate as V  # noqa: N812
+from .. import _validate
 from ..errors import InputError
 from ..kinematics import CamProgram
 from ..loads import LoadResult
@@ -154,9 +154,9 @@ def choose_steps(train: TrainModel, omega: float, steps_per_rev=None) -> int:
     """Steps per revolution: the given number if it resolves the train (else InputError with
     the numbers), or the least of ``DEFAULT_STEPS`` and the resolving count."""
     if steps_per_rev is not None:
-        N = int(V.positive("steps_per_rev", steps_per_rev, ""))
+        N = int(_validate.positive("steps_per_rev", steps_per_rev, ""))
         if N != steps_per_rev or N < 16:
-            raise V.fail("steps_per_rev", steps_per_rev, "", "must be a whole number >= 16")
+            raise _validate.fail("steps_per_rev", steps_per_rev, "", "must be a whole number >= 16")
         why = check_resolution(train, omega, N)
         if why:
             raise InputError(why + "; give more steps or leave steps_per_rev unset")
@@ -287,9 +287,9 @@ def periodic_response(train: TrainModel, program: CamProgram, omega: float, *,
         raise InputError(f"train = {train!r}: must be a TrainModel")
     if not isinstance(program, CamProgram):
         raise InputError(f"program = {program!r}: must be a CamProgram")
-    omega = V.positive("omega", omega, "rad/s")
-    tol = V.positive("tol", tol, "")
-    max_cycles = int(V.positive("max_cycles", max_cycles, ""))
+    omega = _validate.positive("omega", omega, "rad/s")
+    tol = _validate.positive("tol", tol, "")
+    max_cycles = int(_validate.positive("max_cycles", max_cycles, ""))
     f = train.follower
     _check_follows(train, omega)
     N = choose_steps(train, omega, steps_per_rev)
@@ -319,9 +319,9 @@ def simulate(train: TrainModel, program: CamProgram, omega: float, *, z0=None,
              steps_per_rev=None, cycles: int = 1):
     """Transient response from state ``z0`` (default: rest, ``e = e' = 0``) over ``cycles``
     revolutions. Returns ``(theta, Z, contact, Fc_axial)`` with ``Z = (e, e')`` per angle."""
-    omega = V.positive("omega", omega, "rad/s")
+    omega = _validate.positive("omega", omega, "rad/s")
     N = choose_steps(train, omega, steps_per_rev)
-    ncyc = int(V.positive("cycles", cycles, ""))
+    ncyc = int(_validate.positive("cycles", cycles, ""))
     _, _, _, _, _, U1, modes = _setup(train, program, omega, N)
     theta = np.linspace(0.0, 2.0 * math.pi * ncyc, N * ncyc + 1)
     U = np.vstack([U1[:-1]] * ncyc + [U1[-1:]])

@@ -4,21 +4,16 @@ the contact vertices, active-set complementarity solve, stress recovery and VTU 
 >>> from femcam.fe import ContactModel, MeshOptions, SolverOptions, ContactResult  # doctest: +SKIP
 
 Modules: ``elasticity`` (assembly, supports, factorisation), ``contact`` (consistent nodal
-forces, compliances, LCP), ``recovery`` (stresses, half-width fit), ``model`` (``ContactModel``,
-``ContactResult`` with the stress maxima and both bodies' surface stresses, ``solve_contact``),
-``export`` (VTU through meshio).
+forces, compliances, LCP), ``recovery`` (stresses, half-width fit), ``model``
+(``ContactModel``, ``solve_contact``), ``result`` (``ContactResult`` with the stress maxima and
+both bodies' surface stresses), ``export`` (VTU through meshio), ``traction`` (partial slip),
+``gap``, ``followers``, ``angles``, ``choice`` (exact gap, follower types, angle sets and the
+model choice).
 """
 
 from ..mesh import MeshOptions
-from .model import (
-    MAXIMA_KEYS,
-    ContactModel,
-    ContactResult,
-    SolverOptions,
-    StressMax,
-    SurfaceStress,
-    solve_contact,
-)
+from .model import ContactModel, SolverOptions, solve_contact
+from .result import MAXIMA_KEYS, ContactResult, StressMax, SurfaceStress
 
 __all__ = ["MAXIMA_KEYS", "ContactModel", "ContactResult", "MeshOptions", "SolverOptions", "StressMax",
            "SurfaceStress", "solve_contact"]

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 from ..profile import cam_profile
 from .gap import contact_geometry
 
@@ -59,7 +59,7 @@ class CurvatureJump:
     def span(self, a: float) -> tuple[float, float]:
         """Cam-angle spans (rad) before and after ``theta`` over which a contact of half-width
         ``a`` (m) straddles the jump: ``(a / speed_left, a / speed_right)``."""
-        a = chk.positive("a", a, "m")
+        a = _validate.positive("a", a, "m")
         return a / self.speed_left, a / self.speed_right
 
 
@@ -98,9 +98,9 @@ def refine_angles(theta, jumps, a, *, n_refine: int = 8, extra_deg=(0.05, 0.1)):
     >>> [round(float(t), 4) for t in th], flag.tolist()
     ([0.5, 0.99, 0.995, 1.0, 1.005, 1.01, 1.5], [False, True, True, True, True, True, False])
     """
-    th = np.mod(chk.finite_array("theta", theta, "rad").ravel(), 2 * math.pi)
-    n_refine = chk.integer("n_refine", n_refine, 0)
-    a_arr = np.broadcast_to(chk.positive_array("a", a, "m"), (len(jumps),))
+    th = np.mod(_validate.finite_array("theta", theta, "rad").ravel(), 2 * math.pi)
+    n_refine = _validate.integer("n_refine", n_refine, 0)
+    a_arr = np.broadcast_to(_validate.positive_array("a", a, "m"), (len(jumps),))
     spans, new = [], [th]
     for jmp, aj in zip(jumps, a_arr, strict=True):
         dl, dr = jmp.span(float(aj))

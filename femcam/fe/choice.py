@@ -37,7 +37,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 from ..materials import effective_modulus
 from ..mesh import MeshOptions
 from ..profile import FlatFacedFollower, RollerFollower
@@ -70,8 +70,8 @@ def build_real_cam(*, program, follower, cam, roller, length: float, F_ref: floa
     """Build the FE model of a follower family: ``F_ref`` (N) and ``rho_ref`` (m, the cam radius)
     set the reference half-width ``a_ref`` (Hertz). Knife-edge needs ``tip_radius`` (m)."""
     _, R = contact_geometry(program, follower, tip_radius)
-    F_ref = chk.positive("F_ref", F_ref, "N")
-    rho_ref = chk.number("rho_ref", rho_ref, "m")
+    F_ref = _validate.positive("F_ref", F_ref, "N")
+    rho_ref = _validate.number("rho_ref", rho_ref, "m")
     E_star = effective_modulus(cam, roller, plane)
     swapped = isinstance(follower, FlatFacedFollower)
     inv = (0.0 if math.isinf(R) else 1 / R) + (0.0 if math.isinf(rho_ref) else 1 / rho_ref)
@@ -90,13 +90,13 @@ def mechanism_Q(Omega, theta, omega: float, *, J: float, T_drag: float, Rr: floa
     """Tangential force on the cam along local x (N) from the roller spin ``Omega`` (rad/s,
     counter-clockwise, one periodic revolution on the uniform grid ``theta``):
     ``Q = -(J omega dOmega/dtheta + T_drag sign Omega) / Rr``."""
-    Om = chk.finite_array("Omega", Omega, "rad/s")
-    th = chk.finite_array("theta", theta, "rad")
+    Om = _validate.finite_array("Omega", Omega, "rad/s")
+    th = _validate.finite_array("theta", theta, "rad")
     dth = float(np.mean(np.diff(th)))
     dOm = (np.roll(Om, -1) - np.roll(Om, 1)) / (2 * dth)  # periodic central difference
-    J = chk.positive("J", J, "kg m^2")
-    T_f = J * omega * dOm + chk.nonnegative("T_drag", T_drag, "N m") * np.sign(Om)
-    return -T_f / chk.positive("Rr", Rr, "m")
+    J = _validate.positive("J", J, "kg m^2")
+    T_f = J * omega * dOm + _validate.nonnegative("T_drag", T_drag, "N m") * np.sign(Om)
+    return -T_f / _validate.positive("Rr", Rr, "m")
 
 
 @dataclass(frozen=True, eq=False)
@@ -166,7 +166,7 @@ def solve_angle(rc: RealCam, theta: float, F: float, *, mu: float, Q: float | No
     undercut in the contact zone and a flat-face edge contact.
     """
     m = rc.model
-    F = chk.positive("F", F, "N")
+    F = _validate.positive("F", F, "N")
     surf = local_surface(rc.program, rc.follower, theta, float(m.x[-1]), tip_radius=rc.tip_radius)
     inv = (0.0 if math.isinf(surf.R) else 1 / surf.R) + (0.0 if math.isinf(surf.rho) else 1 / surf.rho)
     R_eff = 1 / inv

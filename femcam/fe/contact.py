@@ -4,7 +4,7 @@ Discretisation
 --------------
 * Contact unknowns: the pressure ``p_k`` at the evenly spaced VERTEX nodes ``x_k`` of the
   fine zone, interpolated linearly between them (P1 pressure along the contact curve). Using
-  every P2 node (corner and midside alternately) gives a checkerboard pressure, see issue 4.
+  every P2 node (corner and midside alternately) gives a checkerboard pressure (docs/fe.md).
 * Consistent nodal forces ``B[i, k] = \int N_i L_k ds`` (``N_i`` the P2 -- or P1 -- trace shape
   functions on a contact edge, ``L_k`` the P1 pressure hats). On an edge of length ``h`` the
   exact integrals are ``h/6`` (end node of the same hat), ``0`` (other end) and ``h/3`` (midside)

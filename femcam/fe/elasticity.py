@@ -18,15 +18,18 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass
+from types import SimpleNamespace
 
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
+from scipy.linalg import solve_triangular
 
 from .._threads import single_threaded_blas
 from ..errors import FemcamError
 from ..materials import Material, lame_parameters
 from ..mesh import BodyMesh
+from .contact import edge_midside_dofs
 
 ELEMENTS = ("P1", "P2")
 ORDERINGS = ("MMD_AT_PLUS_A", "MMD_ATA", "COLAMD", "NATURAL")
@@ -79,8 +82,6 @@ class Body:
     def schur_solve(self, G: np.ndarray) -> np.ndarray:
         """``(K^-1)[last][:, last] @ G`` (dense G with ``len(last)`` rows) from the trailing
         blocks of the factor (see :meth:`schur_inverse`)."""
-        from scipy.linalg import solve_triangular
-
         m = self.free.size
         k = self.last.size
         if not np.array_equal(self.lu.perm_r[m - k:], np.arange(m - k, m)):
@@ -151,7 +152,11 @@ class Body:
 
 
 def _element(element: str):
-    from skfem import ElementTriP1, ElementTriP2, ElementVector
+    from skfem import (  # skfem: kept out of ``import femcam`` (tests/test_imports.py)
+        ElementTriP1,
+        ElementTriP2,
+        ElementVector,
+    )
 
     return ElementVector(ElementTriP2() if element == "P2" else ElementTriP1())
 
@@ -174,9 +179,6 @@ def _contact_last_order(Kff, free, last, ordering):
 
 def contact_surface_dofs(mesh, basis, element: str, contact: np.ndarray) -> np.ndarray:
     """Vector DOFs (x and y) of the contact vertices and of the midside nodes between them."""
-    from types import SimpleNamespace
-
-    from .contact import edge_midside_dofs
 
     md = edge_midside_dofs(SimpleNamespace(element=element, mesh=mesh, basis=basis),
                            np.asarray(contact))
@@ -198,7 +200,7 @@ def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strai
     factor, so that :meth:`Body.schur_inverse` gives the contact compliance (more fill than
     ``ordering`` alone: 16.9 M vs 11.6 M nonzeros in L + U for the cam at a/h = 40).
     """
-    from skfem import Basis, MeshTri, asm
+    from skfem import Basis, MeshTri, asm  # skfem: kept out of ``import femcam`` (tests/test_imports.py)
     from skfem.models.elasticity import linear_elasticity
 
     t0 = time.perf_counter()
@@ -242,7 +244,7 @@ def _coating_stiffness(geometry: BodyMesh, material: Material, plane, basis, K, 
     coat = getattr(material, "coating", None)
     if coat is None or geometry.coating is None:
         return None, None, K
-    from skfem import Basis, asm
+    from skfem import Basis, asm  # skfem: kept out of ``import femcam`` (tests/test_imports.py)
     from skfem.models.elasticity import linear_elasticity
 
     band = np.nonzero(geometry.coating)[0]
@@ -252,6 +254,14 @@ def _coating_stiffness(geometry: BodyMesh, material: Material, plane, basis, K, 
     lam_e = np.where(geometry.coating, float(lc), float(lam))
     mu_e = np.where(geometry.coating, float(mc), float(mu_L))
     return lam_e, mu_e, K
+
+
+def probe_matrix(body: Body, xy: np.ndarray) -> sp.csr_matrix:
+    """Sparse ``P`` with ``P @ f`` = the scalar nodal field ``f`` of ``body`` interpolated at the
+    points ``xy`` (2, n) (m, body frame); ``ValueError`` when a point lies outside the mesh."""
+    from skfem import Basis  # skfem: kept out of ``import femcam`` (tests/test_imports.py)
+
+    return Basis(body.mesh, body.basis.elem.elem).probes(xy)
 
 
 def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matrix:

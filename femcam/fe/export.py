@@ -18,6 +18,8 @@ from pathlib import Path
 
 import numpy as np
 
+from .recovery import surface_nodes
+
 FIELDS = ("sx", "sz", "txz", "sy", "tau1", "von_mises")
 
 #: names of the arrays in the .vtu files (units in the names): scene_arrays key -> VTU name
@@ -47,7 +49,6 @@ def vtk_point_data(data: dict) -> dict:
 def scene_arrays(result, model=None):
     """(points (n, 3), cells (nel, k), cell_type, point_data, body_id) for both bodies
     (``model``: the solving model, needed for an unpickled ``result``)."""
-    from .recovery import surface_nodes
 
     model = result.model_or(model)
     keys = (*FIELDS, "displacement", "depth", "contact_pressure", "contact_traction", "stress")
@@ -87,7 +88,7 @@ def scene_arrays(result, model=None):
 
 def write_vtu(result, path, model=None) -> Path:
     """Write ``result`` (a :class:`~femcam.fe.ContactResult`) to ``path`` (.vtu); returns the path."""
-    import meshio
+    import meshio  # lazy: meshio loads its many format plugins; only .vtu export needs it
 
     path = Path(path)
     if path.suffix != ".vtu":

@@ -30,7 +30,7 @@ import math
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 from ..errors import PhysicsError
 from ..profile import FlatFacedFollower, KnifeEdgeFollower, RollerFollower, bool_intervals, cam_profile
 from .gap import contact_geometry
@@ -51,7 +51,7 @@ def sliding_sign(program, follower, theta, *, tip_radius: float | None = None) -
     """Sign (+1/-1) of the friction traction on the cam along local x for a sliding follower
     (knife-edge with tip radius, flat-faced) at cam angles ``theta`` (rad); see the module
     docstring. The cam speed only scales the velocities, so it does not enter."""
-    th = chk.finite_array("theta", theta, "rad")
+    th = _validate.finite_array("theta", theta, "rad")
     gen, _ = contact_geometry(program, follower, tip_radius)
     d = program.derivatives(th)
     pr = cam_profile(gen, th, d.s, d.s1, d.s2, allow_undercut=True)
@@ -66,7 +66,7 @@ def rolling_direction(program, follower, theta, *, tip_radius: float | None = No
     """Direction (+1/-1) in which the cam's surface material flows through the contact along
     local x at ``theta`` (rad): opposite to the travel of the contact point over the cam (the
     leading edge, where material enters, is at ``x = -rolling a``)."""
-    th = chk.finite_array("theta", theta, "rad")
+    th = _validate.finite_array("theta", theta, "rad")
     gen, _ = contact_geometry(program, follower, tip_radius)
     dth = 1e-6
     both = np.concatenate([th, th + dth])
@@ -86,9 +86,9 @@ def face_edge_intervals(program, follower, face_length: float, theta, a) -> list
     reaches past the end of a flat face of length ``face_length`` (m) centred on the follower
     axis: ``|s' - e| + a > face_length / 2``. These are edge contacts."""
     if not isinstance(follower, FlatFacedFollower):
-        raise chk.fail("follower", type(follower).__name__, "", "must be a flat-faced follower")
-    L = chk.positive("face_length", face_length, "m")
-    th = chk.finite_array("theta", theta, "rad")
+        raise _validate.fail("follower", type(follower).__name__, "", "must be a flat-faced follower")
+    L = _validate.positive("face_length", face_length, "m")
+    th = _validate.finite_array("theta", theta, "rad")
     off = np.abs(program.derivatives(th).s1 - follower.e)
     return bool_intervals(th, off + np.broadcast_to(np.asarray(a, float), th.shape) > 0.5 * L)
 
@@ -112,4 +112,4 @@ def follower_kind(follower) -> str:
         return "rolling"
     if isinstance(follower, KnifeEdgeFollower | FlatFacedFollower):
         return "sliding"
-    raise chk.fail("follower", follower, "", "must be a roller, knife-edge or flat-faced follower")
+    raise _validate.fail("follower", follower, "", "must be a roller, knife-edge or flat-faced follower")

@@ -49,7 +49,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 from ..errors import PhysicsError
 from ..mesh import surface_height
 from ..profile import FlatFacedFollower, KnifeEdgeFollower, RollerFollower, cam_profile
@@ -85,14 +85,14 @@ def contact_geometry(program, follower, tip_radius: float | None = None):
         return follower, follower.Rr
     if isinstance(follower, KnifeEdgeFollower):
         if tip_radius is None:
-            raise chk.fail("tip_radius_mm", None, "mm", "a knife-edge follower needs a tip radius for "
-                           "contact stresses (a sharp tip has no contact width): add "
-                           "tip_radius_mm = ... to the [follower] table")
-        r = chk.positive("tip_radius", tip_radius, "m")
+            raise _validate.fail("tip_radius_mm", None, "mm", "a knife-edge follower needs a tip radius for "
+                                 "contact stresses (a sharp tip has no contact width): add "
+                                 "tip_radius_mm = ... to the [follower] table")
+        r = _validate.positive("tip_radius", tip_radius, "m")
         return RollerFollower(Rb=follower.Rb, Rr=r, e=follower.e), r
     if isinstance(follower, FlatFacedFollower):
         return follower, math.inf
-    raise chk.fail("follower", follower, "", "must be a roller, knife-edge or flat-faced follower")
+    raise _validate.fail("follower", follower, "", "must be a roller, knife-edge or flat-faced follower")
 
 
 def _surface_points(program, follower, theta_s: np.ndarray):
@@ -108,8 +108,8 @@ def local_surface(program, follower, theta: float, half_width: float, *,
     Raises :class:`PhysicsError` naming the angle when the surface inside the window is undercut
     or folds back (a cusp: x not monotonic along the surface).
     """
-    theta = chk.number("theta", theta, "rad")
-    half_width = chk.positive("half_width", half_width, "m")
+    theta = _validate.number("theta", theta, "rad")
+    half_width = _validate.positive("half_width", half_width, "m")
     gen, R = contact_geometry(program, follower, tip_radius)
     p0 = _surface_points(program, gen, np.array([theta - 1e-5, theta, theta + 1e-5]))
     phi = float(p0.phi[1])
@@ -153,8 +153,8 @@ def gap_from_surface(surf: LocalSurface, x, kind: str = "normal") -> np.ndarray:
     >>> round(float(gap_from_surface(s, [0.6], "vertical")[0]), 6)  # 1 - sqrt(1 - 0.36)
     0.2
     """
-    chk.choice("kind", kind, GAP_KINDS)
-    x = chk.finite_array("x", x, "m")
+    _validate.choice("kind", kind, GAP_KINDS)
+    x = _validate.finite_array("x", x, "m")
     yc = np.interp(x, surf.x, surf.y)
     if math.isinf(surf.R):
         return -yc
@@ -171,7 +171,7 @@ def exact_gap(program, follower, theta: float, x, *, kind: str = "normal",
     :mod:`femcam.profile` (knife-edge needs ``tip_radius``, m). Returns ``g(x)`` with
     ``g(0) = 0``; raises :class:`PhysicsError` with the angle for a cusp/undercut in the zone.
     """
-    x = chk.finite_array("x", x, "m")
+    x = _validate.finite_array("x", x, "m")
     hw = float(np.max(np.abs(x))) if x.size else 0.0
     surf = local_surface(program, follower, theta, max(hw, 1e-9), tip_radius=tip_radius)
     return gap_from_surface(surf, x, kind)
@@ -186,7 +186,7 @@ def small_slope_difference(surf: LocalSurface, a: float) -> tuple[float, float]:
     """(max |g_normal - g_vertical| / g_vertical over 0 < |x| <= a, (a / R_min)^2) with
     ``R_min = min(R, |rho|)``: how far the small-slope gap is from the exact one, against the
     order ``(a/R)^2`` it should scale with (Johnson 1985 §4.1)."""
-    a = chk.positive("a", a, "m")
+    a = _validate.positive("a", a, "m")
     x = np.linspace(-a, a, 201)
     x = x[np.abs(x) > 1e-3 * a]
     gn, gv = gap_from_surface(surf, x, "normal"), gap_from_surface(surf, x, "vertical")

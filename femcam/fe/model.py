@@ -1,5 +1,8 @@
 """Two-body FE contact model: build once (mesh, assemble, factorise, condense), solve many.
 
+The result of a solve (:class:`ContactResult`, its :class:`StressMax` and
+:class:`SurfaceStress`) is in :mod:`femcam.fe.result`; the names are importable from here too.
+
 ``ContactModel.build`` meshes the cam (surface radius ``rho_ref``) and the roller, assembles and
 factorises each body once, condenses both onto the fine-zone contact vertices and precomputes
 the stress operators near the contact (``SolverOptions.stress_operators``: or back-solves the
@@ -22,15 +25,31 @@ from dataclasses import dataclass, field
 import numpy as np
 import scipy.sparse as sp
 
-from .. import _validate as chk
+from .. import _validate
 from ..errors import PhysicsError
 from ..hertz.conformity import roller_does_not_fit
 from ..hertz.contact import effective_radius, half_width, peak_pressure
 from ..materials import PLANES, Material, effective_modulus
 from ..mesh import ContactMesh, MeshOptions, build_contact_mesh, surface_height
 from .contact import load_matrix, solve_lcp, trapezoid_weights
-from .elasticity import ELEMENTS, ORDERINGS, Body, assemble_body
-from .recovery import build_eval_set, derived, fit_half_width
+from .elasticity import (
+    ELEMENTS,
+    ORDERINGS,
+    Body,
+    assemble_body,
+    probe_matrix,
+    scalar_node_coordinates,
+    stress_operator,
+)
+from .recovery import build_eval_set, depth, derived, fit_half_width, johnson_frame
+from .result import (  # noqa: F401  (also importable from here: pickles made before the split)
+    MAXIMA_KEYS,
+    ContactResult,
+    StressMax,
+    SurfaceStress,
+    traction_fields,
+    window_extrema,
+)
 from .traction import solve_partial_slip
 
 #: values of ``SolverOptions.stress_operators``
@@ -67,227 +86,17 @@ class SolverOptions:
     stress_operators: str = "precompute"
 
     def __post_init__(self):
-        chk.choice("ordering", self.ordering, ORDERINGS)
-        chk.in_range("max_iter", self.max_iter, 1, 10000, "")
-        chk.positive("tol", self.tol, "")
-        lo = chk.positive("a_range[0]", self.a_range[0], "")
-        hi = chk.positive("a_range[1]", self.a_range[1], "")
+        _validate.choice("ordering", self.ordering, ORDERINGS)
+        _validate.in_range("max_iter", self.max_iter, 1, 10000, "")
+        _validate.positive("tol", self.tol, "")
+        lo = _validate.positive("a_range[0]", self.a_range[0], "")
+        hi = _validate.positive("a_range[1]", self.a_range[1], "")
         if lo >= hi:
-            raise chk.fail("a_range", self.a_range, "", "must be (lo, hi) with lo < hi")
-        chk.positive("kappa_tol", self.kappa_tol, "")
-        chk.in_range("eval_depth", self.eval_depth, 0.0, 20.0, "(x a_ref)")
-        chk.in_range("fit_threshold", self.fit_threshold, 0.0, 0.9, "")
-        chk.choice("stress_operators", self.stress_operators, STRESS_OPERATORS)
-
-
-@dataclass(frozen=True)
-class StressMax:
-    """A stress maximum: value (Pa), location (x, z) in m in the body's frame, body name."""
-
-    value: float
-    x: float
-    z: float
-    body: str
-
-
-#: (key, field, arg-extremum) of ``ContactResult.max_by_body[body]``: the first three are maxima
-#: of non-negative quantities, ``<c>_max`` / ``<c>_min`` the largest / most negative value of
-#: component ``<c>``
-_EXTREMA = (("von_mises", "von_mises", np.argmax), ("tau1", "tau1", np.argmax),
-            ("txz_abs", "txz_abs", np.argmax), ("sx_max", "sx", np.argmax), ("sx_min", "sx", np.argmin),
-            ("sz_max", "sz", np.argmax), ("sz_min", "sz", np.argmin), ("sy_max", "sy", np.argmax),
-            ("sy_min", "sy", np.argmin))
-#: keys of ``ContactResult.max_by_body[body]`` (see ``_EXTREMA``)
-MAXIMA_KEYS = tuple(k for k, _, _ in _EXTREMA)
-
-
-def _over_bodies(key: str) -> property:
-    """Read-only ``ContactResult`` attribute: the :class:`StressMax` ``key`` over both bodies
-    (the most negative for ``*_min`` keys, else the largest; the cam's on a tie)."""
-    pick = min if key.endswith("_min") else max
-
-    def get(self) -> StressMax:
-        return pick((m[key] for m in self.max_by_body.values()), key=lambda s: s.value)
-
-    return property(get, doc=f"StressMax of ``{key}`` over both bodies")
-
-
-def _cam_surface(name: str) -> property:
-    """Read-only ``ContactResult`` attribute: field ``name`` of ``surface_by_body["cam"]``."""
-    return property(lambda self: getattr(self.surface_by_body["cam"], name),
-                    doc=f"cam surface ``{name}`` (``surface_by_body['cam'].{name}``)")
-
-
-@dataclass(frozen=True, eq=False)
-class SurfaceStress:
-    """Stresses (Pa) on the contact surface (z = 0) of one body in its Johnson frame, sorted by x
-    (m), at the vertex and P2 midside nodes of the fine-zone contact curve
-    ``|x| <= fine_half_width * a_ref``; ``sy`` the out-of-plane stress."""
-
-    x: np.ndarray
-    sx: np.ndarray
-    sz: np.ndarray
-    txz: np.ndarray
-    sy: np.ndarray
-    body: str
-
-
-@dataclass(frozen=True, eq=False)
-class ContactResult:
-    """Solution of one load case (per the model's face width ``length``).
-
-    Attributes
-    ----------
-    F : float
-        Contact force over ``length`` (N).
-    rho : float
-        Cam radius of curvature passed to the solve (m; inf flat, < 0 concave).
-    mu : float
-        Friction coefficient (-).
-    sliding : int
-        +1/-1, direction of the full-sliding traction on the cam (used when ``Q`` is None).
-    a, x0 : float
-        Fitted Hertz half-width and centre (m) (a Hertz-ellipse fit: near a curvature jump the
-        pressure is not an ellipse, use ``p0_nodal``).
-    p0 : float
-        Fitted peak pressure (Pa).
-    p0_nodal : float
-        Largest nodal pressure (Pa).
-    x, p : ndarray
-        Contact vertex abscissae (m) and pressures (Pa).
-    gap : ndarray
-        Gap after loading at the vertices (m).
-    delta : float
-        Rigid approach (m).
-    force, force_error : float
-        Integral of p times length (N) and its relative error against F (-).
-    max_by_body : dict
-        ``{"cam"|"roller": {key: StressMax}}`` with the keys of :data:`MAXIMA_KEYS` over the
-        stress window ``|x| <= fine_half_width * a_ref``, ``z <= eval_depth * a_ref``; the nine
-        over both bodies (``von_mises_max``, ``tau1_max``, ``txz_abs_max``, ``sx_max``,
-        ``sx_min``, ``sz_max``, ``sz_min``, ``sy_max``, ``sy_min``; Pa) are properties derived
-        from it (e.g. the trailing-edge tension ``sx_max`` ~ 2 mu p0 at x = -a on the cam for
-        ``sliding = +1``).
-    surface_by_body : dict
-        ``{"cam"|"roller": SurfaceStress}`` (Pa, each in its own Johnson frame); ``x_surface``,
-        ``sx``, ``sz``, ``txz`` are the cam's (properties).
-    iterations, residual, history, active : int, float, tuple, ndarray
-        Active-set diagnostics of the normal problem (residual dimensionless).
-    converged : bool
-        True when the normal (and tangential) active sets settled within tolerance; False with
-        the reason in ``message``.
-    timings : dict
-        Seconds per phase (mesh, assembly, factorisation, condensation, contact, recovery).
-    n_dofs : int
-        Total degrees of freedom.
-    hertz_a, hertz_p0 : float
-        Hertz half-width (m) and peak (Pa) of the osculating arcs (nan if Hertz does not apply).
-    outside_hertz : bool
-        Hertz a / min radius > 0.1.
-    q : ndarray
-        Tangential traction at the vertices on the cam in +x (Pa): ``sliding mu p`` for full
-        sliding, the partial-slip solution when ``Q`` was given.
-    Q : float
-        Tangential force carried, ``length * w . q`` (N, on the cam in +x).
-    slip_state : str
-        ``"none"``, ``"stick"``, ``"partial slip"`` or ``"sliding"``.
-    stick : ndarray of bool
-        Stick nodes (partial slip).
-    stick_width : float
-        Extent of the stick zone (m).
-    creep, shift : float
-        Carter creepage (-) when rolling, Cattaneo rigid shift (m) without (nan otherwise).
-    message : str
-        Why the solve did not converge (empty when it did).
-    """
-
-    F: float
-    rho: float
-    mu: float
-    sliding: int
-    a: float
-    x0: float
-    p0: float
-    p0_nodal: float
-    x: np.ndarray
-    p: np.ndarray
-    gap: np.ndarray
-    delta: float
-    force: float
-    force_error: float
-    max_by_body: dict
-    surface_by_body: dict
-    iterations: int
-    residual: float
-    history: tuple
-    active: np.ndarray
-    converged: bool
-    timings: dict
-    n_dofs: int
-    hertz_a: float
-    hertz_p0: float
-    outside_hertz: bool
-    model: ContactModel = field(repr=False)
-    q: np.ndarray | None = None
-    Q: float = 0.0
-    slip_state: str = "none"
-    stick: np.ndarray | None = None
-    stick_width: float = 0.0
-    creep: float = math.nan
-    shift: float = math.nan
-    message: str = ""
-
-    # derived from max_by_body / surface_by_body (not stored twice)
-    von_mises_max = _over_bodies("von_mises")
-    tau1_max = _over_bodies("tau1")
-    txz_abs_max = _over_bodies("txz_abs")
-    sx_max = _over_bodies("sx_max")
-    sx_min = _over_bodies("sx_min")
-    sz_max = _over_bodies("sz_max")
-    sz_min = _over_bodies("sz_min")
-    sy_max = _over_bodies("sy_max")
-    sy_min = _over_bodies("sy_min")
-    x_surface = _cam_surface("x")
-    sx = _cam_surface("sx")
-    sz = _cam_surface("sz")
-    txz = _cam_surface("txz")
-
-    def __getstate__(self):
-        # a pickled result is independent of its model (the factorisation is large and bound
-        # to this process): the full-field methods then take the model explicitly
-        return {**self.__dict__, "model": None}
-
-    def model_or(self, model=None) -> ContactModel:
-        """``model``, else the model that solved this result (None after unpickling: pass it)."""
-        m = model if model is not None else self.model
-        if m is None:
-            raise chk.fail("model", None, "", "this ContactResult was unpickled without its "
-                           "factorised model; pass the ContactModel that solved it (model=...)")
-        return m
-
-    def field_at_nodes(self, body: str = "cam", model=None):
-        """Full-field (u (2, n), stress dict) at the scalar nodes of ``body`` (one back-solve)."""
-        return self.model_or(model).full_field(self, body)
-
-    def stress_at(self, x, z, body: str = "cam", model=None):
-        """(sx, sz, txz, sy, tau1, von_mises) at arbitrary points (x, z >= 0 depth), Pa."""
-        return self.model_or(model).stress_at(self, x, z, body)
-
-    def to_vtu(self, path, model=None):
-        """Write both bodies to one .vtu (see :mod:`femcam.fe.export`); returns the path."""
-        from .export import write_vtu
-
-        return write_vtu(self, path, model=model)
-
-
-def _traction_fields(trac, Q, q, w, x, length, mu) -> dict:
-    """ContactResult traction fields from a TractionSolution (or the friction-free/sliding q)."""
-    if trac is None:
-        state = "sliding" if np.any(q) else "none"
-        return {"Q": float(w @ q) * length, "slip_state": state, "stick": np.zeros(x.size, bool),
-                "stick_width": 0.0, "creep": math.nan, "shift": math.nan}
-    return {"Q": float(w @ trac.q) * length, "slip_state": trac.slip_state, "stick": trac.stick,
-            "stick_width": trac.stick_width, "creep": trac.creep, "shift": trac.shift}
+            raise _validate.fail("a_range", self.a_range, "", "must be (lo, hi) with lo < hi")
+        _validate.positive("kappa_tol", self.kappa_tol, "")
+        _validate.in_range("eval_depth", self.eval_depth, 0.0, 20.0, "(x a_ref)")
+        _validate.in_range("fit_threshold", self.fit_threshold, 0.0, 0.9, "")
+        _validate.choice("stress_operators", self.stress_operators, STRESS_OPERATORS)
 
 
 def _hertz(F, length, rho, Rr, cam, roller, plane):
@@ -302,9 +111,9 @@ def _hertz(F, length, rho, Rr, cam, roller, plane):
 def _radius(name: str, value) -> float:
     """A signed radius of curvature (m): a real number or +-inf (flat), not 0 or nan."""
     if isinstance(value, bool) or not isinstance(value, int | float | np.integer | np.floating):
-        raise chk.fail(name, value, "m", "must be a number (inf for a flat cam)")
+        raise _validate.fail(name, value, "m", "must be a number (inf for a flat cam)")
     if math.isnan(value) or value == 0:
-        raise chk.fail(name, value, "m", "must be nonzero (inf for a flat cam)")
+        raise _validate.fail(name, value, "m", "must be nonzero (inf for a flat cam)")
     return float(value)
 
 
@@ -350,12 +159,12 @@ class ContactModel:
                                     ("mesh", mesh, MeshOptions | None, "MeshOptions or None"),
                                     ("solver", solver, SolverOptions | None, "SolverOptions or None")):
             if not isinstance(v, kind):
-                raise chk.fail(name, v, "", f"must be a {what}")
-        Rr = chk.positive("Rr", Rr, "m")
-        length = chk.positive("length", length, "m")
-        a_ref = chk.positive("a_ref", a_ref, "m")
-        chk.choice("plane", plane, PLANES)
-        chk.choice("element", element, ELEMENTS)
+                raise _validate.fail(name, v, "", f"must be a {what}")
+        Rr = _validate.positive("Rr", Rr, "m")
+        length = _validate.positive("length", length, "m")
+        a_ref = _validate.positive("a_ref", a_ref, "m")
+        _validate.choice("plane", plane, PLANES)
+        _validate.choice("element", element, ELEMENTS)
         solver = solver or SolverOptions()
         t0 = time.perf_counter()
         cm = build_contact_mesh(Rr=Rr, rho=rho_ref, a_ref=a_ref, options=mesh)
@@ -495,20 +304,9 @@ class ContactModel:
         force = float(self.w @ sol_p) * self.length
         maxima, surfaces = {}, {}
         for name, ev in self.evals.items():
-            s = ev.stresses(sol_p, q)
-            sx, sz, txz = s
-            sy = self._sy(name, sx, sz)
-            tau1, vm = derived(sx, sz, txz, sy)
-            fields = {"von_mises": vm, "tau1": tau1, "txz_abs": np.abs(txz), "sx": sx, "sz": sz,
-                      "sy": sy}
-            m = {}
-            for key, comp, arg in _EXTREMA:
-                i = int(arg(fields[comp]))
-                m[key] = StressMax(float(fields[comp][i]), float(ev.x[i]), float(ev.z[i]), name)
-            maxima[name] = m
-            k = ev.surface
-            surfaces[name] = SurfaceStress(x=ev.x[k], sx=sx[k], sz=sz[k], txz=txz[k], sy=sy[k],
-                                           body=name)
+            sx, sz, txz = ev.stresses(sol_p, q)
+            maxima[name], surfaces[name] = window_extrema(name, ev, sx, sz, txz,
+                                                          self._sy(name, sx, sz))
         t2 = time.perf_counter()
         timings = dict(self.timings, contact=t1 - t0, recovery=t2 - t1)
         outside = bool(math.isfinite(aH) and aH / min(self.Rr, abs(rho)) > 0.1)
@@ -519,7 +317,7 @@ class ContactModel:
             max_by_body=maxima, surface_by_body=surfaces,
             iterations=it, residual=res, history=hist, active=active, converged=conv,
             timings=timings, n_dofs=self.n_dofs, hertz_a=aH, hertz_p0=p0H, outside_hertz=outside,
-            model=self, q=q, message=msg, **_traction_fields(trac, Q, q, self.w, self.x, self.length, mu))
+            model=self, q=q, message=msg, **traction_fields(trac, Q, q, self.w, self.x, self.length, mu))
 
     def _contact(self, F, rho, mu, sliding, h0, Q, rolling, aH):
         """Normal LCP, and with ``Q`` the partial-slip traction (fixed point on the normal-
@@ -557,26 +355,27 @@ class ContactModel:
     @staticmethod
     def _check_inputs(F, rho, mu, sliding, Q, rolling):
         """Checked (F, rho, mu, Q) of :meth:`solve`."""
-        F = chk.nonnegative("F", F, "N")
+        F = _validate.nonnegative("F", F, "N")
         rho = _radius("rho", rho)
         if math.isnan(rho) or rho == 0.0:
-            raise chk.fail("rho", rho, "m", "must be nonzero (inf for a flat cam)")
-        mu = chk.nonnegative("mu", mu, "")
+            raise _validate.fail("rho", rho, "m", "must be nonzero (inf for a flat cam)")
+        mu = _validate.nonnegative("mu", mu, "")
         if sliding not in (1, -1):
-            raise chk.fail("sliding", sliding, "", "must be +1 or -1")
+            raise _validate.fail("sliding", sliding, "", "must be +1 or -1")
         if Q is not None:
-            Q = chk.number("Q", Q, "N")
+            Q = _validate.number("Q", Q, "N")
         if rolling not in (0, 1, -1):
-            raise chk.fail("rolling", rolling, "", "must be 0 (no rolling), +1 or -1")
+            raise _validate.fail("rolling", rolling, "", "must be 0 (no rolling), +1 or -1")
         return F, rho, mu, Q
 
     def _gap(self, rho: float, gap) -> np.ndarray:
         """Initial gap (m) at ``self.x``: ``gap`` if given (checked), else the osculating arcs."""
         if gap is None:
             return surface_height(self.x, self.Rr) + surface_height(self.x, rho)
-        g = chk.finite_array("gap", gap, "m")
+        g = _validate.finite_array("gap", gap, "m")
         if g.shape != self.x.shape:
-            raise chk.fail("gap", f"shape {g.shape}", "m", f"must have the shape {self.x.shape} of model.x")
+            raise _validate.fail("gap", f"shape {g.shape}", "m",
+                                 f"must have the shape {self.x.shape} of model.x")
         return g
 
     def _sy(self, name, sx, sz):
@@ -586,10 +385,7 @@ class ContactModel:
     # ------------------------------------------------------------------ full fields
     def full_field(self, r: ContactResult, body: str = "cam"):
         """Displacement (2, n_scalar) and stresses at all scalar nodes of ``body``."""
-        from .elasticity import scalar_node_coordinates, stress_operator
-        from .recovery import depth, johnson_frame
-
-        chk.choice("body", body, ("cam", "roller"))
+        _validate.choice("body", body, ("cam", "roller"))
         b: Body = self.bodies[body]
         q = r.q if r.q is not None else (r.sliding * r.mu) * r.p  # partial slip: the solved q
         f = self.Bn[body] @ r.p + self.Bt[body] @ q
@@ -609,20 +405,18 @@ class ContactModel:
 
     def stress_at(self, r: ContactResult, x, z, body: str = "cam"):
         """Stresses interpolated (P2 nodal field) at points (x, z) of ``body``; Pa."""
-        x = chk.finite_array("x", x, "m")
-        z = chk.finite_array("z", z, "m")
+        x = _validate.finite_array("x", x, "m")
+        z = _validate.finite_array("z", z, "m")
         x, z = np.broadcast_arrays(x, z)
         b: Body = self.bodies[body]
         ys = surface_height(x, b.geometry.R)
         y = (-ys - z) if body == "cam" else (ys + z)
-        from skfem import Basis
-
         _, fld = self.full_field(r, body)
-        sb = Basis(b.mesh, b.basis.elem.elem)
         try:
-            P = sb.probes(np.stack([x.ravel(), y.ravel()]))
+            P = probe_matrix(b, np.stack([x.ravel(), y.ravel()]))
         except ValueError:
-            raise chk.fail("(x, z)", (x.tolist(), z.tolist()), "m", "must lie inside the body") from None
+            raise _validate.fail("(x, z)", (x.tolist(), z.tolist()), "m",
+                                 "must lie inside the body") from None
         return tuple((P @ fld[k]).reshape(x.shape)
                      for k in ("sx", "sz", "txz", "sy", "tau1", "von_mises"))
 
@@ -635,8 +429,9 @@ def solve_contact(F: float, rho: float, Rr: float, cam: Material, roller: Materi
     (or, when Hertz does not apply or F = 0, 1 % of Rr). A one-off model: ``solver`` defaults
     to ``SolverOptions(stress_operators="per_solve")`` (same numbers, no per-unknown solves)."""
     if a_ref is None:
-        aH, _ = _hertz(chk.nonnegative("F", F, "N"), chk.positive("length", length, "m"), float(rho),
-                       chk.positive("Rr", Rr, "m"), cam, roller, plane)
+        aH, _ = _hertz(_validate.nonnegative("F", F, "N"), _validate.positive("length", length, "m"),
+                       float(rho),
+                       _validate.positive("Rr", Rr, "m"), cam, roller, plane)
         a_ref = aH if (math.isfinite(aH) and aH > 0) else 0.01 * Rr
     solver = solver or SolverOptions(stress_operators="per_solve")
     model = ContactModel.build(Rr=Rr, rho_ref=rho, cam=cam, roller=roller, length=length, a_ref=a_ref,

@@ -53,7 +53,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 
 SLIP_STATES = ("none", "stick", "partial slip", "sliding")
 
@@ -142,10 +142,10 @@ def solve_partial_slip(C: np.ndarray, x: np.ndarray, w: np.ndarray, p: np.ndarra
     -------
     TractionSolution
     """
-    mu = chk.nonnegative("mu", mu, "")
-    Qw = chk.number("Q", Qw, "N/m")
+    mu = _validate.nonnegative("mu", mu, "")
+    Qw = _validate.number("Q", Qw, "N/m")
     if rolling not in (0, 1, -1):
-        raise chk.fail("rolling", rolling, "", "must be 0 (shift), +1 or -1 (rolling direction)")
+        raise _validate.fail("rolling", rolling, "", "must be 0 (shift), +1 or -1 (rolling direction)")
     n = x.size
     loaded = p > 0.0
     Wq = mu * float(w @ p)

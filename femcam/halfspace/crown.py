@@ -36,7 +36,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 
 CROWNS = ("none", "circular", "logarithmic")
 
@@ -103,27 +103,29 @@ class RollerProfile:
     misalignment: float = 0.0
 
     def __post_init__(self):
-        chk.positive("roller_width", self.width, "m")
+        _validate.positive("roller_width", self.width, "m")
         if self.crown not in CROWNS:
-            raise chk.fail("crown", self.crown, "", f"must be one of {', '.join(map(repr, CROWNS))}")
+            raise _validate.fail("crown", self.crown, "", f"must be one of {', '.join(map(repr, CROWNS))}")
         if self.crown_radius is not None and self.crown != "circular":
-            raise chk.fail("crown_radius", self.crown_radius, "m", "is only for crown = 'circular'")
+            raise _validate.fail("crown_radius", self.crown_radius, "m", "is only for crown = 'circular'")
         if self.crown_drop is not None:
-            chk.positive("crown_drop", self.crown_drop, "m")
+            _validate.positive("crown_drop", self.crown_drop, "m")
             if self.crown == "none":
-                raise chk.fail("crown_drop", self.crown_drop, "m", "is not used with crown = 'none'")
+                raise _validate.fail("crown_drop", self.crown_drop, "m", "is not used with crown = 'none'")
         if self.crown == "circular":
             if (self.crown_radius is None) == (self.crown_drop is None):
-                raise chk.fail("crown", "circular", "", "give exactly one of crown_radius or crown_drop")
+                raise _validate.fail("crown", "circular", "",
+                                     "give exactly one of crown_radius or crown_drop")
             if self.crown_radius is not None:
-                chk.positive("crown_radius", self.crown_radius, "m")
+                _validate.positive("crown_radius", self.crown_radius, "m")
                 if self.crown_radius <= 0.5 * self.width:
-                    raise chk.fail("crown_radius", self.crown_radius, "m",
-                                   f"must exceed half the roller width {0.5 * self.width:g} m")
-        re = chk.nonnegative("edge_radius", self.edge_radius, "m")
+                    raise _validate.fail("crown_radius", self.crown_radius, "m",
+                                         f"must exceed half the roller width {0.5 * self.width:g} m")
+        re = _validate.nonnegative("edge_radius", self.edge_radius, "m")
         if re > 0.5 * self.width:
-            raise chk.fail("edge_radius", re, "m", f"must be <= half the roller width {0.5 * self.width:g} m")
-        chk.in_range("misalignment", self.misalignment, -0.1, 0.1, "rad")
+            raise _validate.fail("edge_radius", re, "m",
+                                 f"must be <= half the roller width {0.5 * self.width:g} m")
+        _validate.in_range("misalignment", self.misalignment, -0.1, 0.1, "rad")
 
     @property
     def Rc(self) -> float:
@@ -145,8 +147,8 @@ class RollerProfile:
             c = c + circular_drop(y, self.Rc)
         elif self.crown == "logarithmic":
             if design_load is None or b is None or E_star is None:
-                raise chk.fail("design_load", design_load, "N", "the logarithmic crown needs design_load, "
-                               "b and E_star")
+                raise _validate.fail("design_load", design_load, "N",
+                                     "the logarithmic crown needs design_load, b and E_star")
             lg = log_drop(y, self.width, design_load, min(b, 0.25 * self.width), E_star)
             if self.crown_drop is not None:
                 lg = lg * (self.crown_drop / float(log_drop(0.5 * self.width, self.width, design_load,

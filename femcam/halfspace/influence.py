@@ -38,7 +38,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 
 
 def _G(u, v):
@@ -63,9 +63,9 @@ def cell_influence(x, y, dx, dy, E_star):
     >>> round(float(K * np.pi / (4.0 * np.arcsinh(1.0))), 12)
     1.0
     """
-    dx = chk.positive("dx", dx, "m")
-    dy = chk.positive("dy", dy, "m")
-    E_star = chk.positive("E_star", E_star, "Pa")
+    dx = _validate.positive("dx", dx, "m")
+    dy = _validate.positive("dy", dy, "m")
+    E_star = _validate.positive("E_star", E_star, "Pa")
     x = np.asarray(x, float)
     y = np.asarray(y, float)
     hx, hy = 0.5 * dx, 0.5 * dy
@@ -86,7 +86,7 @@ def dcfft_kernel(nx: int, ny: int, dx: float, dy: float, E_star: float) -> np.nd
     """
     for name, n in (("nx", nx), ("ny", ny)):
         if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 1:
-            raise chk.fail(name, n, "cells", "must be an integer >= 1")
+            raise _validate.fail(name, n, "cells", "must be an integer >= 1")
     ix = np.concatenate([np.arange(nx), [0], -np.arange(nx - 1, 0, -1)]).astype(float)
     iy = np.concatenate([np.arange(ny), [0], -np.arange(ny - 1, 0, -1)]).astype(float)
     K = cell_influence(ix[:, None] * dx, iy[None, :] * dy, dx, dy, E_star)

@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 from ..errors import InputError
 from ..materials import effective_modulus
 from .crown import RollerProfile
@@ -77,7 +77,7 @@ def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float 
         0``) or a non-convex relative curvature get NaN and the flag ``"no_contact"`` /
         ``"non_hertzian"``.
     """
-    th = chk.finite_array("theta", np.atleast_1d(theta), "rad").ravel()
+    th = _validate.finite_array("theta", np.atleast_1d(theta), "rad").ravel()
     fl = strip or strip_for_scene(scene, nx=nx, ny=ny, tol=tol)   # refuses a non-roller follower
     st = scene.analyse(th)
     Rr = scene.follower.Rr

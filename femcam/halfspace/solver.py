@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import scipy.fft as sfft
 
-from .. import _validate as chk
+from .. import _validate
 from .influence import dcfft_kernel
 
 
@@ -69,9 +69,9 @@ class HalfSpace:
 
     def __init__(self, *, nx: int, ny: int, dx: float, dy: float, E_star: float):
         self.nx, self.ny = int(nx), int(ny)
-        self.dx = chk.positive("dx", dx, "m")
-        self.dy = chk.positive("dy", dy, "m")
-        self.E_star = chk.positive("E_star", E_star, "Pa")
+        self.dx = _validate.positive("dx", dx, "m")
+        self.dy = _validate.positive("dy", dy, "m")
+        self.E_star = _validate.positive("E_star", E_star, "Pa")
         self.kernel = dcfft_kernel(nx, ny, self.dx, self.dy, self.E_star)
         self._Kf = sfft.rfft2(self.kernel)
         self._pad = np.zeros((2 * self.nx, 2 * self.ny))
@@ -105,11 +105,12 @@ class HalfSpace:
         -------
         ContactSolution
         """
-        h0 = chk.finite_array("h0", h0, "m")
+        h0 = _validate.finite_array("h0", h0, "m")
         if h0.shape != (self.nx, self.ny):
-            raise chk.fail("h0", f"array of shape {h0.shape}", "", f"must have shape {(self.nx, self.ny)}")
-        W = chk.positive("W", W, "N")
-        tol = chk.positive("tol", tol)
+            raise _validate.fail("h0", f"array of shape {h0.shape}", "",
+                                 f"must have shape {(self.nx, self.ny)}")
+        W = _validate.positive("W", W, "N")
+        tol = _validate.positive("tol", tol)
         dA = self.dx * self.dy
         p = self._start(h0, W, p0)
         G_old, delta = 1.0, 0.0
@@ -155,7 +156,7 @@ class HalfSpace:
     def _start(self, h0, W, p0):
         dA = self.dx * self.dy
         if p0 is not None:
-            p = np.clip(chk.finite_array("p0", p0, "Pa"), 0.0, None)
+            p = np.clip(_validate.finite_array("p0", p0, "Pa"), 0.0, None)
             if p.shape == h0.shape and p.sum() > 0:
                 return p * (W / (dA * p.sum()))
         p = (h0 <= np.median(h0)).astype(float)

@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 from .crown import RollerProfile
 from .solver import HalfSpace
 
@@ -93,21 +93,21 @@ class FiniteLengthContact:
                  design_load: float | None = None, design_radius: float | None = None,
                  nx: int = 64, ny: int = 128, tol: float = 1e-5, max_iter: int = 500):
         if not isinstance(profile, RollerProfile):
-            raise chk.fail("profile", type(profile).__name__, "", "must be a RollerProfile")
+            raise _validate.fail("profile", type(profile).__name__, "", "must be a RollerProfile")
         self.profile = profile
-        self.cam_width = chk.positive("cam_width", cam_width, "m")
-        self.E_star = chk.positive("E_star", E_star, "Pa")
+        self.cam_width = _validate.positive("cam_width", cam_width, "m")
+        self.E_star = _validate.positive("E_star", E_star, "Pa")
         for name, n in (("nx", nx), ("ny", ny)):
             if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 4:
-                raise chk.fail(name, n, "cells", "must be an integer >= 4")
+                raise _validate.fail(name, n, "cells", "must be an integer >= 4")
         self.nx, self.ny, self.tol, self.max_iter = int(nx), int(ny), float(tol), int(max_iter)
         self.L = min(profile.width, self.cam_width)
         self.dy = self.L / self.ny
         self.y = (np.arange(self.ny) + 0.5) * self.dy - 0.5 * self.L
         kw = {}
         if profile.crown == "logarithmic":
-            Q = chk.positive("design_load", design_load, "N")
-            Rd = chk.positive("design_radius", design_radius, "m")
+            Q = _validate.positive("design_load", design_load, "N")
+            Rd = _validate.positive("design_radius", design_radius, "m")
             kw = dict(design_load=Q, b=math.sqrt(4.0 * Q / profile.width * Rd / (math.pi * E_star)),
                       E_star=E_star)
         self.c = profile.drop(self.y, **kw)
@@ -127,8 +127,8 @@ class FiniteLengthContact:
 
     def solve(self, F: float, R: float, *, p_start=None) -> StripResult:
         """Contact at normal force ``F`` (N, > 0) and relative radius ``R`` (m, > 0)."""
-        F = chk.positive("F", F, "N")
-        R = chk.positive("R", R, "m")
+        F = _validate.positive("F", F, "N")
+        R = _validate.positive("R", R, "m")
         b = math.sqrt(4.0 * F / self.L * R / (math.pi * self.E_star))
         k = max(0, math.ceil(math.log(1.4 * b / self._X0) / math.log(_LADDER)))
         for _ in range(8):

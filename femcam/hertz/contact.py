@@ -33,9 +33,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 from ..errors import HertzValidityError
 from ..materials import PLANES, Material, effective_modulus
+from .maxima import ScaledMaximum, max_orthogonal_shear, max_shear, max_von_mises
+from .subsurface import stress_field
+from .surface import hertz_pressure, surface_stress
 
 #: a / (smallest radius) above which the half-space idealisation of Hertz theory is flagged.
 VALIDITY_RATIO = 0.1
@@ -109,22 +112,22 @@ def _broadcast(names: str, *arrays) -> tuple:
         return np.broadcast_shapes(*(np.shape(a) for a in arrays))
     except ValueError:
         shapes = ", ".join(str(np.shape(a)) for a in arrays)
-        raise chk.fail(names, f"arrays of shapes {shapes}", "",
-                       "must broadcast against each other (one value, or one per load case)") from None
+        raise _validate.fail(names, f"arrays of shapes {shapes}", "",
+                             "must broadcast against each other (one value, or one per load case)") from None
 
 
 def _radius(name, value):
     if value is None or isinstance(value, bool):
-        raise chk.fail(name, value, "m", "must be a number (negative = concave, inf = flat)")
+        raise _validate.fail(name, value, "m", "must be a number (negative = concave, inf = flat)")
     try:
         arr = np.asarray(value, dtype=float) if not isinstance(value, str | bytes) else None
     except (TypeError, ValueError):
         arr = None
     if arr is None or np.any(np.isnan(arr)):
         bad = value if arr is None else arr[np.isnan(arr)].flat[0]
-        raise chk.fail(name, bad, "m", "must be a number (negative = concave, inf = flat)")
+        raise _validate.fail(name, bad, "m", "must be a number (negative = concave, inf = flat)")
     if np.any(arr == 0.0):
-        raise chk.fail(name, 0.0, "m", "must be nonzero (negative = concave, inf = flat)")
+        raise _validate.fail(name, 0.0, "m", "must be nonzero (negative = concave, inf = flat)")
     return arr
 
 
@@ -188,21 +191,21 @@ class LineContact:
         def put(name, value):
             object.__setattr__(self, name, value)
 
-        F = chk.finite_array("F", self.F, "N")
+        F = _validate.finite_array("F", self.F, "N")
         if np.any(F < 0.0):
-            raise chk.fail("F", F[F < 0.0].flat[0], "N",
-                         "must be >= 0 (a negative contact force is lift-off; see femcam.loads)")
-        length = chk.positive("length", self.length, "m")
+            raise _validate.fail("F", F[F < 0.0].flat[0], "N",
+                                 "must be >= 0 (a negative contact force is lift-off; see femcam.loads)")
+        length = _validate.positive("length", self.length, "m")
         R1 = _radius("R1", self.R1)
         R2 = _radius("R2", self.R2)
         _broadcast("F, R1, R2", F, R1, R2)
         for name in ("cam", "roller"):
             if not isinstance(getattr(self, name), Material):
-                raise chk.fail(name, getattr(self, name), "", "must be a femcam.materials.Material")
-        mu = chk.nonnegative("mu", self.mu, "")
-        chk.choice("plane", self.plane, PLANES)
+                raise _validate.fail(name, getattr(self, name), "", "must be a femcam.materials.Material")
+        mu = _validate.nonnegative("mu", self.mu, "")
+        _validate.choice("plane", self.plane, PLANES)
         if self.direction not in (1, -1):
-            raise chk.fail("direction", self.direction, "", "must be +1 or -1")
+            raise _validate.fail("direction", self.direction, "", "must be +1 or -1")
 
         inv_R = 1.0 / R1 + 1.0 / R2                       # 1/inf = 0: flat surfaces
         if np.any(inv_R <= 0.0):
@@ -254,15 +257,13 @@ class LineContact:
 
     def pressure(self, x):
         """Hertz pressure ``p(x) >= 0`` (Pa); ``x`` (m) broadcasts against :attr:`shape`."""
-        from .surface import hertz_pressure
-        x = chk.finite_array("x", x, "m")
+        x = _validate.finite_array("x", x, "m")
         _broadcast("x and the load cases", x, self.a)
         return _scalar(hertz_pressure(x, self.a, self.p0))
 
     def surface_stress(self, x):
         """``(sx, sz, txz)`` (Pa) on ``z = 0`` for all ``x`` (m); seed 002 eqs. 5-7."""
-        from .surface import surface_stress
-        x = chk.finite_array("x", x, "m")
+        x = _validate.finite_array("x", x, "m")
         _broadcast("x and the load cases", x, self.a)
         return tuple(_scalar(s) for s in surface_stress(x, self.a, self.p0, self.direction * self.mu))
 
@@ -273,17 +274,15 @@ class LineContact:
         ``sy = nu (sx + sz)`` in plane strain (``sy = 0`` in plane stress); the in-plane
         half-space field is the same in both bodies.
         """
-        from .subsurface import stress_field
-        chk.choice("body", body, ("cam", "roller"))
-        x = chk.finite_array("x", x, "m")
-        z = chk.finite_array("z", z, "m")
+        _validate.choice("body", body, ("cam", "roller"))
+        x = _validate.finite_array("x", x, "m")
+        z = _validate.finite_array("z", z, "m")
         _broadcast("x, z and the load cases", x, z, self.a)
         nu = (self.cam if body == "cam" else self.roller).nu
         return stress_field(x, z, self.a, self.p0, self.direction * self.mu, nu=nu, plane=self.plane)
 
     # -- maxima (value in Pa, location in m; vectorised over the load cases) --------------------
     def _scaled(self, m):
-        from .maxima import ScaledMaximum
         s = -1.0 if self.direction == -1 else 1.0
         return ScaledMaximum(value=_scalar(m.value * np.asarray(self.p0)),
                              x=_scalar(s * m.x * np.asarray(self.a)),
@@ -291,17 +290,14 @@ class LineContact:
 
     def max_shear(self):
         """Maximum in-plane principal shear ``tau1`` (Pa) and its location (m)."""
-        from .maxima import max_shear
         return self._scaled(max_shear(self.mu))
 
     def max_von_mises(self, body: str = "cam"):
         """Maximum von Mises stress (Pa) in ``body`` and its location (m)."""
-        from .maxima import max_von_mises
-        chk.choice("body", body, ("cam", "roller"))
+        _validate.choice("body", body, ("cam", "roller"))
         nu = (self.cam if body == "cam" else self.roller).nu
         return self._scaled(max_von_mises(self.mu, nu, self.plane))
 
     def max_orthogonal_shear(self):
         """Maximum ``|tau_xz|`` (Pa) and its location (m)."""
-        from .maxima import max_orthogonal_shear
         return self._scaled(max_orthogonal_shear(self.mu))

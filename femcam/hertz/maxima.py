@@ -28,8 +28,9 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
+from scipy.optimize import minimize
 
-from .. import _validate as chk
+from .. import _validate
 from ..materials import PLANES
 from .subsurface import StressField, unit_stresses
 
@@ -76,8 +77,6 @@ def _measure(quantity, X, Z, mu, nu, plane):
 
 @lru_cache(maxsize=256)
 def _maximise(quantity, mu, nu, plane, n_x=401, n_z=201):
-    from scipy.optimize import minimize  # lazily: keeps ``import femcam.hertz`` light
-
     X = np.linspace(*_X_BOUNDS, n_x)
     Z = np.linspace(*_Z_BOUNDS, n_z)
     XX, ZZ = np.meshgrid(X, Z, indexing="ij")
@@ -118,7 +117,7 @@ def _maximise(quantity, mu, nu, plane, n_x=401, n_z=201):
 
 
 def _mu(mu):
-    return chk.nonnegative("mu", mu, "")
+    return _validate.nonnegative("mu", mu, "")
 
 
 def max_shear(mu: float = 0.0) -> StressMaximum:
@@ -144,8 +143,8 @@ def max_von_mises(mu: float = 0.0, nu: float = 0.3, plane: str = "strain") -> St
     >>> round(max_von_mises(0.0, 0.3).value, 4)   # textbook ~0.557
     0.5575
     """
-    nu = chk.in_range("nu", nu, -1.0, 0.5, "", lo_open=True, hi_open=True)
-    chk.choice("plane", plane, PLANES)
+    nu = _validate.in_range("nu", nu, -1.0, 0.5, "", lo_open=True, hi_open=True)
+    _validate.choice("plane", plane, PLANES)
     return _maximise("von_mises", _mu(mu), nu, plane)
 
 

@@ -48,7 +48,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 from ..materials import PLANES
 
 
@@ -150,12 +150,12 @@ def stress_field(x, z, a, p0, mu=0.0, *, nu=0.3, plane="strain") -> StressField:
     >>> float(f.sx), float(f.sz), float(f.sy)
     (-1000000000.0, -1000000000.0, -600000000.0)
     """
-    x = chk.finite_array("x", x, "m")
-    z = chk.finite_array("z", z, "m")
+    x = _validate.finite_array("x", x, "m")
+    z = _validate.finite_array("z", z, "m")
     if np.any(z < 0.0):
-        raise chk.fail("z", z[z < 0.0].flat[0], "m", "must be >= 0 (depth into the body)")
-    chk.in_range("nu", nu, -1.0, 0.5, "", lo_open=True, hi_open=True)
-    chk.choice("plane", plane, PLANES)
+        raise _validate.fail("z", z[z < 0.0].flat[0], "m", "must be >= 0 (depth into the body)")
+    _validate.in_range("nu", nu, -1.0, 0.5, "", lo_open=True, hi_open=True)
+    _validate.choice("plane", plane, PLANES)
     a = np.asarray(a, dtype=float)
     p0 = np.asarray(p0, dtype=float)
     a_safe = np.where(a > 0.0, a, 1.0)           # a = 0 <=> p0 = 0: 0 * finite = 0, not NaN

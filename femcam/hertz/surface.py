@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 
 
 def hertz_pressure(x, a, p0):
@@ -40,7 +40,7 @@ def hertz_pressure(x, a, p0):
     >>> float(hertz_pressure(0.5, 1.0, 2.0)) == 2.0 * 0.75 ** 0.5
     True
     """
-    x = chk.finite_array("x", x, "m")
+    x = _validate.finite_array("x", x, "m")
     a = np.asarray(a, dtype=float)
     X = x / np.where(a > 0.0, a, 1.0)
     return np.where(a > 0.0, p0 * np.sqrt(np.clip(1.0 - X * X, 0.0, None)), 0.0 * X)
@@ -60,7 +60,7 @@ def surface_stress(x, a, p0, mu=0.0):
     >>> [round(float(s), 6) for s in sx]
     [0.2, -1.0, -0.05359]
     """
-    x = chk.finite_array("x", x, "m")
+    x = _validate.finite_array("x", x, "m")
     a = np.asarray(a, dtype=float)
     p0 = np.asarray(p0, dtype=float)
     X = x / np.where(a > 0.0, a, 1.0)            # a = 0 <=> p0 = 0: every term below is 0 * finite

@@ -45,8 +45,9 @@ from functools import cached_property
 from math import comb, pi
 
 import numpy as np
+from scipy.optimize import minimize_scalar
 
-from .. import _validate as vd
+from .. import _validate
 from ..errors import InputError
 
 __all__ = ["LAW_NAMES", "MotionLaw", "LawEnds", "law", "bernstein"]
@@ -114,10 +115,10 @@ class MotionLaw:
 
     @staticmethod
     def _u(u) -> np.ndarray:
-        arr = vd.finite_array("u", u, "")
+        arr = _validate.finite_array("u", u, "")
         if arr.size and (arr.min() < -_U_TOL or arr.max() > 1.0 + _U_TOL):
             bad = arr[(arr < -_U_TOL) | (arr > 1.0 + _U_TOL)].flat[0]
-            raise vd.fail("u", float(bad), "", "must be in [0, 1] (normalised cam angle)")
+            raise _validate.fail("u", float(bad), "", "must be in [0, 1] (normalised cam angle)")
         return np.clip(arr, 0.0, 1.0)
 
     def s(self, u) -> np.ndarray:
@@ -139,14 +140,12 @@ class MotionLaw:
     def derivative(self, u, k: int) -> np.ndarray:
         """d^k s/du^k for k in 0..3."""
         if k not in (0, 1, 2, 3):
-            raise vd.fail("k", k, "", "must be 0, 1, 2 or 3")
+            raise _validate.fail("k", k, "", "must be 0, 1, 2 or 3")
         return self._deriv(self._u(u), k)
 
     # --- peaks -------------------------------------------------------------------------
     def _peak(self, k: int) -> float:
         """max |d^k s/du^k| on [0, 1]: dense sampling, then bounded Brent around the best sample."""
-        from scipy.optimize import minimize_scalar
-
         u = np.union1d(np.linspace(0.0, 1.0, _N_SAMPLE), np.asarray(self.breakpoints, float))
         f = np.abs(self._deriv(u, k))
         i = int(np.argmax(f))
@@ -243,14 +242,14 @@ class _Polynomial(MotionLaw):
     r"""Polynomial :math:`s = \sum_k c_k u^k` (coefficients ascending), e.g. 3-4-5 (Norton eq. 3.13)."""
 
     def __init__(self, coefficients, name="polynomial"):
-        c = vd.finite_array("coefficients", coefficients, "")
+        c = _validate.finite_array("coefficients", coefficients, "")
         if c.ndim != 1 or c.size < 2:
-            raise vd.fail("coefficients", coefficients, "", "must be a 1-D list of >= 2 numbers "
-                         "c_0..c_n (s = sum c_k u^k)")
+            raise _validate.fail("coefficients", coefficients, "", "must be a 1-D list of >= 2 numbers "
+                                 "c_0..c_n (s = sum c_k u^k)")
         if abs(c[0]) > 1e-12:
-            raise vd.fail("coefficients[0]", float(c[0]), "", "must be 0 so that s(0) = 0")
+            raise _validate.fail("coefficients[0]", float(c[0]), "", "must be 0 so that s(0) = 0")
         if abs(c.sum() - 1.0) > 1e-9:
-            raise vd.fail("sum(coefficients)", float(c.sum()), "", "must be 1 so that s(1) = 1")
+            raise _validate.fail("sum(coefficients)", float(c.sum()), "", "must be 1 so that s(1) = 1")
         self.name = name
         self.coefficients = c
         P = np.polynomial.polynomial
@@ -272,13 +271,13 @@ class _Bezier(MotionLaw):
     """
 
     def __init__(self, control_points, name="bezier"):
-        P = vd.finite_array("control_points", control_points, "")
+        P = _validate.finite_array("control_points", control_points, "")
         if P.ndim != 1 or P.size < 2:
-            raise vd.fail("control_points", control_points, "", "must be a 1-D list of >= 2 numbers")
+            raise _validate.fail("control_points", control_points, "", "must be a 1-D list of >= 2 numbers")
         if abs(P[0]) > 1e-12:
-            raise vd.fail("control_points[0]", float(P[0]), "", "must be 0 so that s(0) = 0")
+            raise _validate.fail("control_points[0]", float(P[0]), "", "must be 0 so that s(0) = 0")
         if abs(P[-1] - 1.0) > 1e-12:
-            raise vd.fail("control_points[-1]", float(P[-1]), "", "must be 1 so that s(1) = 1")
+            raise _validate.fail("control_points[-1]", float(P[-1]), "", "must be 1 so that s(1) = 1")
         self.name = name
         self.control_points = P
         self.degree = n = P.size - 1

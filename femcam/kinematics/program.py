@@ -41,7 +41,7 @@ from math import degrees, pi
 
 import numpy as np
 
-from .. import _validate as vd
+from .. import _validate
 from ..errors import InputError
 from .laws import MotionLaw, law
 
@@ -64,13 +64,13 @@ class Segment:
     law: MotionLaw | None = None
 
     def __post_init__(self):
-        vd.choice("kind", self.kind, _KINDS)
-        object.__setattr__(self, "beta", vd.positive("beta", self.beta, "rad"))
+        _validate.choice("kind", self.kind, _KINDS)
+        object.__setattr__(self, "beta", _validate.positive("beta", self.beta, "rad"))
         if self.kind == "dwell":
             object.__setattr__(self, "h", 0.0)
             object.__setattr__(self, "law", None)
         else:
-            object.__setattr__(self, "h", vd.positive("h", self.h, "m"))
+            object.__setattr__(self, "h", _validate.positive("h", self.h, "m"))
             lw = self.law if self.law is not None else "cycloidal"
             object.__setattr__(self, "law", law(lw))
 
@@ -256,7 +256,7 @@ class CamProgram:
         try:
             segs = tuple(self.segments)
         except TypeError:
-            raise vd.fail("segments", self.segments, "", "must be a sequence of segments") from None
+            raise _validate.fail("segments", self.segments, "", "must be a sequence of segments") from None
         if not segs:
             raise InputError("segments = (): a cam program needs at least one segment")
         for i, sg in enumerate(segs):
@@ -314,7 +314,7 @@ class CamProgram:
 
         At a junction the value of the segment that *starts* there is returned.
         """
-        th = vd.finite_array("theta", theta, "rad")
+        th = _validate.finite_array("theta", theta, "rad")
         t = np.mod(th, TWO_PI)
         idx = np.clip(np.searchsorted(self._starts, t, side="right") - 1, 0, len(self.segments) - 1)
         u = np.clip((t - self._starts[idx]) / self._beta[idx], 0.0, 1.0)
@@ -338,7 +338,7 @@ class CamProgram:
 
         .. math:: v = \\omega s', \\quad a = \\omega^2 s'', \\quad j = \\omega^3 s'''
         """
-        w = vd.positive("omega", omega, "rad/s")
+        w = _validate.positive("omega", omega, "rad/s")
         d = self.derivatives(theta)
         return SVAJ(d.theta, d.s, w * d.s1, w**2 * d.s2, w**3 * d.s3, w)
 
@@ -350,7 +350,7 @@ class CamProgram:
         ``omega`` (rad/s) also the SI jumps ``jump_v = omega jump_s1`` (m/s),
         ``jump_a = omega^2 jump_s2`` (m/s^2) and ``jump_j = omega^3 jump_s3`` (m/s^3).
         """
-        w = None if omega is None else vd.positive("omega", omega, "rad/s")
+        w = None if omega is None else _validate.positive("omega", omega, "rad/s")
         segs = self.segments
         n = len(segs)
         out = []

@@ -134,7 +134,7 @@ class SynthesisOptions:
         object.__setattr__(self, "rtol", _validate.in_range("rtol", self.rtol, 0.0, 1.0, "", lo_open=True))
         object.__setattr__(self, "xtol", _validate.nonnegative("xtol", self.xtol, ""))
         object.__setattr__(self, "phi_limit", _validate.in_range("phi_limit", self.phi_limit, 0.0, np.pi / 2,
-                                                         "rad", lo_open=True, hi_open=True))
+                                                                 "rad", lo_open=True, hi_open=True))
         _validate.choice("stabilization", self.stabilization, STABILIZATIONS)
         object.__setattr__(self, "k_factor", _validate.number("k_factor", self.k_factor, ""))
         if self.k_factor < 1.0:

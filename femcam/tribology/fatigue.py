@@ -46,7 +46,7 @@ from functools import lru_cache
 import numpy as np
 from scipy.spatial import ConvexHull, QhullError
 
-from .. import _validate as chk
+from .. import _validate
 from ..hertz import max_shear, unit_stresses
 
 #: ISO 6336-2 Z_NT slope (see the module docstring) and its reference cycles
@@ -75,7 +75,7 @@ def first_yield_limit(mu: float = 0.0) -> float:
     >>> round(first_yield_limit(0.0), 2)
     3.33
     """
-    return 1.0 / float(max_shear(chk.nonnegative("mu", mu, "")).value)
+    return 1.0 / float(max_shear(_validate.nonnegative("mu", mu, "")).value)
 
 
 @lru_cache(maxsize=64)
@@ -171,8 +171,8 @@ def shakedown_limit(mu: float = 0.0, hardening: str = "perfectly_plastic") -> fl
     >>> round(shakedown_limit(0.0), 2), round(shakedown_limit(0.0, "kinematic"), 2)
     (4.0, 4.0)
     """
-    mu = chk.nonnegative("mu", mu, "")
-    chk.choice("hardening", hardening, ("perfectly_plastic", "kinematic"))
+    mu = _validate.nonnegative("mu", mu, "")
+    _validate.choice("hardening", hardening, ("perfectly_plastic", "kinematic"))
     return _shakedown(mu)[0] if hardening == "perfectly_plastic" else 1.0 / _kinematic(mu)
 
 
@@ -192,7 +192,7 @@ def orthogonal_shear_range(mu: float = 0.0) -> tuple[float, float]:
     >>> [round(v, 3) for v in orthogonal_shear_range(0.0)]
     [0.5, 0.5]
     """
-    return _orth(chk.nonnegative("mu", mu, ""))
+    return _orth(_validate.nonnegative("mu", mu, ""))
 
 
 def sn_cycles(p0, strength, *, N_ref=SN_CYCLES_ISO6336, m=SN_EXPONENT_ISO6336):
@@ -204,6 +204,6 @@ def sn_cycles(p0, strength, *, N_ref=SN_CYCLES_ISO6336, m=SN_EXPONENT_ISO6336):
     '1e+05'
     """
     p0 = np.asarray(p0, float)
-    strength = chk.positive("strength", strength, "Pa")
+    strength = _validate.positive("strength", strength, "Pa")
     with np.errstate(divide="ignore"):
         return np.where(p0 > 0, N_ref * (strength / np.where(p0 > 0, p0, 1.0)) ** m, np.inf)

@@ -45,7 +45,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 
 #: Pan & Hamrock 1989 coefficients and exponents: (C, exponent of W, of Ud, of G)
 PAN_HAMROCK_MIN = (1.714, -0.128, 0.694, 0.568)
@@ -126,7 +126,7 @@ def composite_roughness(Rq1, Rq2):
     >>> round(float(composite_roughness(0.3e-6, 0.4e-6)) * 1e6, 12)
     0.5
     """
-    return np.hypot(chk.nonnegative("Rq1", Rq1, "m"), chk.nonnegative("Rq2", Rq2, "m"))
+    return np.hypot(_validate.nonnegative("Rq1", Rq1, "m"), _validate.nonnegative("Rq2", Rq2, "m"))
 
 
 def lubrication_regime(lam):
@@ -162,12 +162,12 @@ def film_thickness(*, U, w, R, E_star, eta0, alpha, sigma=None) -> dict:
     >>> round(float(r["h_min"]) * 1e6, 3), round(float(r["lam"]), 2)
     (0.097, 0.39)
     """
-    chk.positive("E_star", E_star, "Pa")
-    eta0 = chk.finite_array("eta0", eta0, "Pa s")
-    alpha = chk.finite_array("alpha", alpha, "1/Pa")
+    _validate.positive("E_star", E_star, "Pa")
+    eta0 = _validate.finite_array("eta0", eta0, "Pa s")
+    alpha = _validate.finite_array("alpha", alpha, "1/Pa")
     if np.any(eta0 <= 0) or np.any(alpha <= 0):
         bad = ("eta0", eta0, "Pa s") if np.any(eta0 <= 0) else ("alpha", alpha, "1/Pa")
-        raise chk.fail(bad[0], float(np.min(bad[1])), bad[2], "must be > 0")
+        raise _validate.fail(bad[0], float(np.min(bad[1])), bad[2], "must be > 0")
     R = np.asarray(R, float)
     finite_R = np.isfinite(R) & (R > 0)
     Ud, G, W = dimensionless_groups(U, w, np.where(finite_R, R, 1.0), E_star, eta0, alpha)
@@ -179,7 +179,7 @@ def film_thickness(*, U, w, R, E_star, eta0, alpha, sigma=None) -> dict:
                     ("W_range", pos & ((W < W_RANGE[0]) | (W > W_RANGE[1]))),
                     ("U_range", pos & ((Ud < U_RANGE[0]) | (Ud > U_RANGE[1])))]
     if sigma is not None:
-        sigma = chk.positive("sigma", sigma, "m")
+        sigma = _validate.positive("sigma", sigma, "m")
         out["lam"] = out["h_min"] / sigma
         out["regime"] = lubrication_regime(out["lam"])
     return out

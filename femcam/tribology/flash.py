@@ -43,7 +43,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 
 #: Blok's constant for a semi-elliptical heat source and equal flash temperatures (see above)
 C_BLOK = 0.78598
@@ -61,8 +61,8 @@ def effusivity(K, rho, c):
     >>> round(float(effusivity(46.0, 7850.0, 470.0)))
     13028
     """
-    return np.sqrt(chk.positive("K", K, "W/(m K)") * chk.positive("rho", rho, "kg/m^3")
-                   * chk.positive("c", c, "J/(kg K)"))
+    return np.sqrt(_validate.positive("K", K, "W/(m K)") * _validate.positive("rho", rho, "kg/m^3")
+                   * _validate.positive("c", c, "J/(kg K)"))
 
 
 def peclet(u, a, kappa):
@@ -73,7 +73,8 @@ def peclet(u, a, kappa):
     >>> round(float(peclet(2.0, 1e-4, 1.25e-5)), 6)
     8.0
     """
-    return np.abs(np.asarray(u, float)) * np.asarray(a, float) / (2.0 * chk.positive("kappa", kappa, "m^2/s"))
+    kappa = _validate.positive("kappa", kappa, "m^2/s")
+    return np.abs(np.asarray(u, float)) * np.asarray(a, float) / (2.0 * kappa)
 
 
 def flash_temperature(mu, w, a, u1, u2, beta1, beta2, *, C=C_BLOK):
@@ -87,7 +88,7 @@ def flash_temperature(mu, w, a, u1, u2, beta1, beta2, *, C=C_BLOK):
     >>> round(float(flash_temperature(0.1, 1e5, 1e-4, 3.0, 1.0, 13020.0, 13020.0)), 2)   # K
     44.19
     """
-    mu = chk.nonnegative("mu", mu, "")
+    mu = _validate.nonnegative("mu", mu, "")
     w = np.asarray(w, float)
     a = np.asarray(a, float)
     u1 = np.asarray(u1, float)

@@ -35,7 +35,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import _validate as chk
+from .. import _validate
 from ..errors import InputError
 
 #: name -> (nu40 mm^2/s, nu100 mm^2/s, density kg/m^3, alpha 1/Pa, note)
@@ -68,22 +68,22 @@ class Lubricant:
     source: str = ""
 
     def __post_init__(self):
-        chk.positive("alpha", self.alpha, "1/Pa")
-        chk.positive("rho", self.rho, "kg/m^3")
+        _validate.positive("alpha", self.alpha, "1/Pa")
+        _validate.positive("rho", self.rho, "kg/m^3")
         walther = self.nu40 is not None and self.nu100 is not None
         expo = self.eta_ref is not None and self.T_ref_C is not None and self.beta_T is not None
         if walther == expo:
             raise InputError("lubricant: give either nu40 and nu100 (m^2/s) or eta_ref (Pa s), T_ref_C "
                              "(degC) and beta_T (1/K)")
         if walther:
-            chk.positive("nu40", self.nu40, "m^2/s")
-            chk.positive("nu100", self.nu100, "m^2/s")
+            _validate.positive("nu40", self.nu40, "m^2/s")
+            _validate.positive("nu100", self.nu100, "m^2/s")
             if not self.nu100 < self.nu40:
-                raise chk.fail("nu100", self.nu100, "m^2/s", f"must be < nu40 = {self.nu40:g} m^2/s")
+                raise _validate.fail("nu100", self.nu100, "m^2/s", f"must be < nu40 = {self.nu40:g} m^2/s")
         else:
-            chk.positive("eta_ref", self.eta_ref, "Pa s")
-            chk.number("T_ref_C", self.T_ref_C, "degC")
-            chk.nonnegative("beta_T", self.beta_T, "1/K")
+            _validate.positive("eta_ref", self.eta_ref, "Pa s")
+            _validate.number("T_ref_C", self.T_ref_C, "degC")
+            _validate.nonnegative("beta_T", self.beta_T, "1/K")
 
     def viscosity(self, T_C):
         r"""Dynamic viscosity (Pa s) at ``T_C`` (degC), vectorised.

@@ -38,7 +38,7 @@ import math
 import numpy as np
 from scipy.special import gamma, pbdv
 
-from .. import _validate as chk
+from .. import _validate
 
 
 def greenwood_tripp(n, lam):
@@ -49,8 +49,8 @@ def greenwood_tripp(n, lam):
     >>> round(float(greenwood_tripp(2.5, 0.0)), 6)     # 2^(3/4) Gamma(7/4) / sqrt(2 pi)
     0.616634
     """
-    lam = chk.finite_array("lam", lam, "")
-    n = chk.nonnegative("n", n, "")
+    lam = _validate.finite_array("lam", lam, "")
+    n = _validate.nonnegative("n", n, "")
     D, _ = pbdv(-n - 1.0, lam)
     return gamma(n + 1.0) * np.exp(-lam * lam / 4.0) * D / math.sqrt(2.0 * math.pi)
 
@@ -64,6 +64,6 @@ def wear_coefficient(k0, lam):
     >>> [round(float(x), 4) for x in wear_coefficient(1.0, [0.0, 1.0])]
     [1.0, 0.1306]
     """
-    k0 = chk.nonnegative("k0", k0, "m^3/(N m)")
-    lam = np.clip(chk.finite_array("lam", lam, ""), 0.0, None)
+    k0 = _validate.nonnegative("k0", k0, "m^3/(N m)")
+    lam = np.clip(_validate.finite_array("lam", lam, ""), 0.0, None)
     return k0 * greenwood_tripp(2.5, lam) / greenwood_tripp(2.5, 0.0)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 
 def pyplot():
     """``matplotlib.pyplot`` on the Agg backend (headless; PNG output)."""
@@ -18,3 +20,15 @@ def legend_outside(ax, fontsize: float = 8, **kw):
     makes room for it)."""
     return ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, frameon=False,
                      fontsize=fontsize, **kw)
+
+
+def save(fig, path, *, dpi: int = 100, tight: bool = False) -> Path:
+    """Write ``fig`` to the PNG ``path`` (parent folders made; laid out first when ``tight``)
+    and close it; returns the path as a :class:`~pathlib.Path`."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    if tight:
+        fig.tight_layout()
+    fig.savefig(path, dpi=dpi)
+    pyplot().close(fig)
+    return path

@@ -17,19 +17,11 @@ from pathlib import Path
 import numpy as np
 
 from ..kinematics import law
-from ._mpl import legend_outside, pyplot
+from ._mpl import legend_outside, pyplot, save
 
 
 def _deg(st):
     return np.degrees(np.asarray(st.theta, float))
-
-
-def _save(fig, path):
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=100)
-    pyplot().close(fig)
-    return path
 
 
 def _finish(fig, ax, th, ylabel: str, title: str, path):
@@ -39,7 +31,7 @@ def _finish(fig, ax, th, ylabel: str, title: str, path):
     ax.set_title(title)
     _xaxis(ax, th)
     fig.tight_layout()
-    return _save(fig, path)
+    return save(fig, path)
 
 
 def _xaxis(ax, th):
@@ -64,7 +56,7 @@ def plot_svaj(st, path, title: str = ""):
     axs[-1].set_xlabel("cam angle theta (deg)")
     axs[0].set_title(title or "Follower displacement, velocity, acceleration and jerk")
     fig.tight_layout()
-    return _save(fig, path)
+    return save(fig, path)
 
 
 def plot_pressure_angle(st, path, title: str = "", limit_deg: float = 30.0):
@@ -120,7 +112,7 @@ def plot_rho(st, path, title: str = "", Rr: float = 0.0, clip_mm: float | None =
     legend_outside(ax)
     _xaxis(ax, th)
     fig.tight_layout()
-    return _save(fig, path)
+    return save(fig, path)
 
 
 def plot_contact_force(st, path, title: str = ""):
@@ -161,7 +153,7 @@ def plot_cam(st, path, title: str = ""):
     legend_outside(ax)
     ax.grid(True, alpha=0.3)
     fig.tight_layout()
-    return _save(fig, path)
+    return save(fig, path)
 
 
 def plot_all(st, outdir, prefix: str = "", *, Rr: float = 0.0, limit_deg: float = 30.0,
@@ -209,4 +201,4 @@ def plot_laws(path, names=LAWS_FIGURE, n: int = 401, title: str = ""):
     fig.legend(*axs[0, 0].get_legend_handles_labels(), loc="center right", fontsize=7, frameon=False)
     fig.suptitle(title or "femcam normalised motion laws (unit lift)", fontsize=10)
     fig.tight_layout(rect=(0.0, 0.0, 0.78, 1.0))  # the legend, beside the panels, in the rest
-    return _save(fig, path)
+    return save(fig, path)

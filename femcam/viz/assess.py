@@ -13,31 +13,35 @@ from pathlib import Path
 
 import numpy as np
 
+from ._mpl import pyplot, save
+
 #: safety-factor columns plotted, with their labels
 SAFETY = (("sf_yield", "first yield"), ("sf_shakedown", "shakedown"), ("sf_subsurface", "subsurface fatigue"),
           ("sf_surface_fatigue", "surface fatigue"), ("sf_scuffing", "scuffing"))
 
 
-def _plt():
-    import matplotlib  # optional dependency, imported only to plot
-
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
-
-    return plt
-
-
 def _save(fig, path: Path) -> str:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-    _plt().close(fig)
-    return str(path)
+    return str(save(fig, path, dpi=90, tight=True))
+
+
+def _angle_axes(rows, figsize):
+    """``(fig, ax, cam angle (deg))`` of a one-panel plot against the cam angle."""
+    fig, ax = pyplot().subplots(figsize=figsize)
+    return fig, ax, np.degrees(rows["theta"])
+
+
+def _finish(fig, ax, ylabel: str, path, *, legend_loc: str = "best", grid: str = "major") -> str:
+    """Label the cam-angle axis and ``ylabel``, legend, grid; save to ``path``."""
+    ax.set_xlabel("cam angle (deg)")
+    ax.set_ylabel(ylabel)
+    ax.legend(fontsize=7, loc=legend_loc)
+    ax.grid(alpha=0.3, which=grid)
+    return _save(fig, Path(path))
 
 
 def plot_lambda(rows, path) -> str:
     """lambda (left) and h_min, h_c (right) vs cam angle, regime limits 1 and 3 drawn."""
-    plt = _plt()
+    plt = pyplot()
     deg = np.degrees(rows["theta"])
     fig, (ax, bx) = plt.subplots(1, 2, figsize=(10, 3.4))
     ax.plot(deg, rows["lam"], "C0-")
@@ -59,9 +63,7 @@ def plot_lambda(rows, path) -> str:
 
 def plot_temperatures(rows, path, *, T_oil=None, T_scuff=None) -> str:
     """Flash temperature rise and contact temperature vs cam angle (scuffing limit dashed)."""
-    plt = _plt()
-    deg = np.degrees(rows["theta"])
-    fig, ax = plt.subplots(figsize=(6.5, 3.4))
+    fig, ax, deg = _angle_axes(rows, (6.5, 3.4))
     ax.plot(deg, rows["T_contact"], "C3-", label="contact temperature T_oil + dT_flash")
     if T_oil is not None:
         ax.axhline(T_oil, color="C0", lw=0.8, label=f"oil (bulk) {T_oil:g} C")
@@ -72,33 +74,23 @@ def plot_temperatures(rows, path, *, T_oil=None, T_scuff=None) -> str:
     bx.set_ylabel("flash temperature rise (K)", color="C1")
     bx.set_ylim(bottom=0)
     bx.legend(fontsize=7, loc="upper right")
-    ax.set_xlabel("cam angle (deg)")
-    ax.set_ylabel("temperature (C)")
-    ax.legend(fontsize=7, loc="upper left")
-    ax.grid(alpha=0.3)
-    return _save(fig, Path(path))
+    return _finish(fig, ax, "temperature (C)", path, legend_loc="upper left")
 
 
 def plot_safety(rows, path) -> str:
     """Safety factors vs cam angle on a log axis, the line SF = 1 drawn."""
-    plt = _plt()
-    deg = np.degrees(rows["theta"])
-    fig, ax = plt.subplots(figsize=(6.5, 3.6))
+    fig, ax, deg = _angle_axes(rows, (6.5, 3.6))
     for i, (col, label) in enumerate(SAFETY):
         v = np.where(np.isfinite(rows[col]), rows[col], np.nan)
         if np.any(np.isfinite(v)):
             ax.semilogy(deg, v, f"C{i}-", label=label)
     ax.axhline(1.0, color="k", lw=1.0)
-    ax.set_xlabel("cam angle (deg)")
-    ax.set_ylabel("safety factor")
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=7)
-    return _save(fig, Path(path))
+    return _finish(fig, ax, "safety factor", path, grid="both")
 
 
 def plot_outline(rows, path) -> str:
     """The cam outline coloured by lambda (left) and by the smallest safety factor (right)."""
-    plt = _plt()
+    plt = pyplot()
     x, y = rows["cam_x"] * 1e3, rows["cam_y"] * 1e3
     sf = np.full(x.shape, np.inf)
     for col, _ in SAFETY:

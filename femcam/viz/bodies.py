@@ -7,6 +7,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ._mpl import pyplot, save
+
 
 def plot_hoop(vtu_path, path, *, size=(760, 700), body: int = 1, clim=None):
     """Render the hoop stress (MPa) of the ring (``body`` id 1) from a VTU written by
@@ -33,11 +35,7 @@ def plot_hoop(vtu_path, path, *, size=(760, 700), body: int = 1, clim=None):
 def plot_wall_study(studies: dict, path, *, title: str = ""):
     """Bore hoop stress (MPa) and the cam-contact change (p0, a vs the solid roller, %) against
     the ring wall (mm). ``studies``: ``{label: femcam.bodies.study.wall_study(...) dict}``."""
-    import matplotlib  # heavy optional dependency: only for plotting
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
     for label, s in studies.items():
         w = s["wall"] * 1e3
@@ -55,9 +53,4 @@ def plot_wall_study(studies: dict, path, *, title: str = ""):
     ax2.legend(fontsize=8)
     if title:
         fig.suptitle(title)
-    fig.tight_layout()
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save(fig, path, dpi=110, tight=True)

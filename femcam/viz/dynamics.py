@@ -7,26 +7,10 @@ imported inside each function (Agg backend) so that importing this module stays 
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 
-
-def _plt():
-    import matplotlib  # optional plotting dependency: imported only when a plot is drawn
-
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
-
-    return plt
-
-
-def _save(fig, path):
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=100)
-    _plt().close(fig)
-    return path
+from ._mpl import pyplot, save
 
 
 def plot_force(results: dict, path, title: str = ""):
@@ -35,7 +19,7 @@ def plot_force(results: dict, path, title: str = ""):
     drawn as the reference (dotted: a result's own eq. 11 when its total mass differs);
     free-flight angles are shaded. The lower panel is the displacement error of the last mass
     about its cycle mean (the mean is the static compression of the train)."""
-    plt = _plt()
+    plt = pyplot()
     fig, (ax, ax2) = plt.subplots(2, 1, sharex=True, figsize=(8.0, 6.5),
                                   gridspec_kw={"height_ratios": [3, 2]})
     first = next(iter(results.values()))
@@ -62,7 +46,7 @@ def plot_force(results: dict, path, title: str = ""):
     ax.legend(fontsize=8, loc="best")
     ax.set_title(title or f"Contact force at {first.rpm:g} rpm: rigid vs elastic follower train")
     fig.tight_layout()
-    return _save(fig, path)
+    return save(fig, path)
 
 
 def plot_rpm_sweep(sweep, path, jump=None, title: str = ""):
@@ -70,7 +54,7 @@ def plot_rpm_sweep(sweep, path, jump=None, title: str = ""):
     :class:`~femcam.dynamics.RpmSweep`, with the rigid eq. 11 values dashed and, given a
     :class:`~femcam.dynamics.JumpResult`, the jump speed; speeds without a one-periodic
     answer are marked with x."""
-    plt = _plt()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(8.0, 4.8))
     rpm = sweep.rpm
     ok = sweep.converged
@@ -94,4 +78,4 @@ def plot_rpm_sweep(sweep, path, jump=None, title: str = ""):
     ax.legend(fontsize=8, loc="upper left")
     ax.set_title(title or "Contact force vs speed: peak, least, jump")
     fig.tight_layout()
-    return _save(fig, path)
+    return save(fig, path)

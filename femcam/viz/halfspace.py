@@ -9,20 +9,13 @@ from __future__ import annotations
 
 import numpy as np
 
-
-def _plt():
-    import matplotlib  # lazy: plotting is optional and headless
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
+from ._mpl import pyplot
 
 
 def plot_pressure_map(res, path, *, title: str = ""):
     """Contour map of ``res.p`` (MPa) over rolling ``x`` and axial ``y`` (mm) of a
     :class:`~femcam.halfspace.strip.StripResult`, with the pressure along the length below."""
-    plt = _plt()
+    plt = pyplot()
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(6.8, 6.0), height_ratios=[2, 1], sharex=True)
     Y, X = np.meshgrid(res.y * 1e3, res.x * 1e3)
     cs = ax1.contourf(Y, X, res.p * 1e-6, levels=24, cmap="inferno")
@@ -49,7 +42,7 @@ def plot_peak_along_length(rows_by_crown: dict, path, *, p0_2d=None, title: str 
     """Top: the peak pressure along the length ``p_line`` (MPa) as a map over cam angle and
     axial position, one panel per crown; bottom: the axial peak against cam angle for every crown
     (and the 2D Hertz ``p0_2d`` (Pa), if given). ``rows_by_crown``: label -> rows dict."""
-    plt = _plt()
+    plt = pyplot()
     n = len(rows_by_crown)
     fig = plt.figure(figsize=(3.0 * n + 1.0, 6.4))
     gs = fig.add_gridspec(2, n, height_ratios=[1.2, 1])
@@ -83,7 +76,7 @@ def plot_crown_comparison(y, p_line_by_crown: dict, tilt_deg, peak_by_crown: dic
                           p0_2d=None, title: str = ""):
     """Left: pressure along the length (MPa) at one angle for each crown; right: the axial peak
     (MPa) against misalignment (deg) for each crown. ``y`` in m, pressures in Pa."""
-    plt = _plt()
+    plt = pyplot()
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10.0, 4.0))
     for name, pl in p_line_by_crown.items():
         ax1.plot(np.asarray(y) * 1e3, np.asarray(pl) * 1e-6, label=name)

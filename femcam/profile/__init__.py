@@ -1,0 +1,25 @@
+"""Follower geometry: cam surface, pressure angle, radius of curvature, smallest base circle.
+
+Modules: ``geometry`` (the followers, :func:`cam_profile` and the pure formulas, with the frames,
+sign conventions and the symbol table) and ``base_radius`` (:func:`min_base_radius`).
+"""
+
+from .base_radius import RB_MARGIN, BaseRadiusResult, min_base_radius
+from .geometry import (
+    FOLLOWER_KINDS,
+    CamProfile,
+    FlatFacedFollower,
+    Follower,
+    KnifeEdgeFollower,
+    RollerFollower,
+    bool_intervals,
+    cam_profile,
+    flat_face_radius,
+    make_follower,
+    pitch_curvature,
+    pressure_angle,
+)
+
+__all__ = ["FOLLOWER_KINDS", "RB_MARGIN", "BaseRadiusResult", "CamProfile", "FlatFacedFollower", "Follower",
+           "KnifeEdgeFollower", "RollerFollower", "bool_intervals", "cam_profile", "flat_face_radius",
+           "make_follower", "min_base_radius", "pitch_curvature", "pressure_angle"]
