@@ -21,7 +21,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ._mpl import pyplot
+from ._mpl import legend_outside, pyplot
+from .analytic import rho_clip_mm
 
 
 def _table(result):
@@ -60,7 +61,7 @@ def plot_p0(result, path) -> str:
         ax.plot(deg[lo], np.zeros(lo.sum()), "x", color="k", ms=3, label="lift-off")
     axs[-1, 0].set_xlabel("cam angle theta (deg)")
     ax.set_ylabel("peak pressure p0 (MPa)")
-    ax.legend(loc="best", fontsize=8)
+    legend_outside(ax)
     ax.grid(alpha=0.3)
     ax.set_title("Peak contact pressure over the cam cycle")
     fig.tight_layout()
@@ -87,7 +88,7 @@ def plot_maxima(result, path) -> str:
                 label="tau1 max (Hertz)")
     ax.set_xlabel("cam angle theta (deg)")
     ax.set_ylabel("stress (MPa)")
-    ax.legend(loc="upper left", fontsize=8)
+    legend_outside(ax)
     ax.set_title("Subsurface stress maxima over the cam cycle")
     fig.tight_layout()
     return _save(fig, Path(path))
@@ -107,8 +108,9 @@ def plot_svaj_loads(result, path) -> str:
     for ax, (name, f, label) in zip(axs.T.ravel(), panels, strict=True):
         y = t[name] * f
         if name == "rho":
-            y = np.clip(y, -200, 200)
-            label += ", clipped to +-200"
+            clip = rho_clip_mm(y)  # the one clip rule of every rho plot (femcam.viz.analytic)
+            y = np.clip(y, -clip, clip)
+            label += f", clipped to +-{clip:.0f}"
         ax.plot(deg, y, "-", lw=1)
         ax.set_ylabel(label, fontsize=8)
         ax.grid(alpha=0.3)
@@ -134,8 +136,9 @@ def plot_wear(result, path) -> str:
             axs[0].plot(deg[m], t["wear_depth"][m] * 1e9, ".", ms=3, color=c, label=lab)
     k = result.provenance.get("wear", {}).get("k_m3_per_N_m")
     axs[0].set_ylabel("wear depth per rev (nm)")
+    axs[0].ticklabel_format(axis="y", style="plain", useOffset=False)  # nm, no 1e-5 multiplier
     axs[0].set_title("Archard wear at the contact point" + (f" (k = {k:.3g} m^3/(N m))" if k else ""))
-    axs[0].legend(fontsize=8)
+    legend_outside(axs[0])
     axs[0].grid(alpha=0.3)
     axs[1].plot(deg, t["v_slip"], "-", lw=1)
     axs[1].set_ylabel("sliding speed (m/s)")
@@ -173,7 +176,7 @@ def plot_surface_worst(profile: dict, path) -> str:
         ax.set_xlabel("x / a_Hertz")
         ax.set_ylabel(label)
         ax.grid(alpha=0.3)
-    axs[0].legend(fontsize=8)
+    legend_outside(axs[0])
     fig.suptitle(f"Surface stresses at the worst angle theta = {profile['theta_deg']:.1f} deg "
                  f"(Fc = {profile['Fc']:.0f} N, mu = {profile['mu']:g})")
     fig.tight_layout()
