@@ -50,8 +50,9 @@ def _cpu_count() -> int:
 
 
 #: ``workers="auto"``: estimated time to write one FE ``.vtu`` at a_over_h = 10 (s; full-field
-#: back-solves of both bodies and a ~1 MB file; measured ~0.09 s), scaled with (a_over_h/10)^2
-AUTO_VTU_S = 0.09
+#: back-solves of both bodies with the cached stress operator, ~10 ms, and an uncompressed
+#: ~1.7 MB file, ~4 ms; was 0.09 s with zlib and a rebuilt operator), scaled with (a_over_h/10)^2
+AUTO_VTU_S = 0.015
 
 
 def auto_workers(n_tasks: int, n_solves: int, t_solve: float, n_families: int, t_build: float,
@@ -67,10 +68,10 @@ def auto_workers(n_tasks: int, n_solves: int, t_solve: float, n_families: int, t
     ``t_build`` each). Processes are used only when they are expected to save at least
     :data:`AUTO_MIN_SAVING` of that time after the pool's fixed cost
     :data:`AUTO_POOL_OVERHEAD_S`. For the seed 002 study model (360 angles, ~1 ms per solve,
-    200 of them solved during the verification) serial wins when no VTK is written; writing
-    the CLI's default 36 ``.vtu`` files (~3 s) makes 2 processes pay (measured 5.6 s -> 4.4 s on
-    2 cores). Processes also pay for long angle lists, fine meshes (slower solves) and resumed
-    sweeps, which solve everything in the chunks.
+    200 of them solved during the verification) serial wins, also with the CLI's default 36
+    ``.vtu`` files now that one takes ~15 ms (whole process 5.4-5.9 s with --workers 1 and
+    5.4-5.6 s with 2, load ~2). Processes pay for long angle lists, fine meshes (slower
+    solves), many VTU files and resumed sweeps, which solve everything in the chunks.
 
     Parameters
     ----------
