@@ -281,7 +281,7 @@ def test_cli_assess_from_a_sweep_npz_and_bad_angles(tmp_path, capsys):
     np.testing.assert_allclose(data["p0_MPa"], h["p0"] / 1.01 * 1e-6, rtol=1e-7)
     assert set(data["source"]) == {"fe"}
     assert main(["assess", EXAMPLE, "--out", str(out), "--angles-deg", "0:360"]) == 1
-    assert "START:STOP:STEP" in capsys.readouterr().err
+    assert "start:stop:step" in capsys.readouterr().err
     assert main(["assess", EXAMPLE, "--out", str(out), "--sweep", str(tmp_path / "none")]) == 1
     assert "no sweep.npz" in capsys.readouterr().err
 

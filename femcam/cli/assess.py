@@ -17,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .. import _validate
 from ..assess import assess, csv_columns
 from ..errors import InputError
 from ..io import atomic_write_text, csv_text, provenance
@@ -36,18 +37,6 @@ def register(subparsers) -> None:
                    help="use the angles and FE a/p0 of a finished sweep (SWEEP_DIR/sweep.npz)")
     p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     p.set_defaults(func=_run)
-
-
-def _angles(text: str):
-
-
-    try:
-        start, stop, step = (float(x) for x in text.split(":"))
-    except ValueError:
-        raise InputError(f"--angles-deg = {text!r}: must be START:STOP:STEP in degrees") from None
-    if step <= 0 or stop <= start:
-        raise InputError(f"--angles-deg = {text!r} deg: need STEP > 0 and STOP > START")
-    return np.radians(np.arange(start, stop - 1e-9 * step, step))
 
 
 def _sweep_table(path):
@@ -77,7 +66,7 @@ def _run(args) -> int:
     out_dir(args.out, create=False)  # checked before any work, created below
     scene = load_scene(args.scene)
     table = _sweep_table(args.sweep) if args.sweep else None
-    theta = table["theta"] if table is not None else _angles(args.angles_deg)
+    theta = table["theta"] if table is not None else _validate.angles_deg("--angles-deg", args.angles_deg)
     res = assess(scene, theta, table=table)
     out = out_dir(args.out)
     prov = provenance(scene_path=args.scene, command=shlex.join(["femcam", "assess", *sys.argv[2:]]))
