@@ -142,7 +142,17 @@ def concat_rows(parts: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
         out[name] = np.concatenate([np.asarray(p[name], dtype=float) for p in parts])
     for name in TEXT_COLUMNS:
         out[name] = np.concatenate([np.asarray(p[name]).astype(str) for p in parts])
+    for name in extra_keys(parts[0]):  # extra column providers (femcam.sweep.extras)
+        cols = [np.asarray(p[name]) for p in parts]
+        text = cols[0].dtype.kind in "OUS"
+        out[name] = np.concatenate([c.astype(str) if text else c.astype(float) for c in cols])
     return out
+
+
+def extra_keys(rows: dict) -> list[str]:
+    """Columns of ``rows`` beyond :data:`NUMERIC` and :data:`TEXT_COLUMNS` (added by the extra
+    column providers, :mod:`femcam.sweep.extras`), in their order."""
+    return [k for k in rows if k not in NUMERIC and k not in TEXT_COLUMNS]
 
 
 @dataclass(frozen=True)
@@ -253,7 +263,8 @@ class SweepResult:
             ``Fc_max`` (N), ``phi_max`` (rad), ``p0_hertz_max``, ``p0_fe_max``, ``vm_max``,
             ``tau1_max`` (Pa), ``err_p0_absmax``, ``err_a_absmax`` (relative),
             ``n_liftoff``, ``n_failed``, ``n_undercut``, ``n_families`` (counts),
-            ``reuse_error_max`` (relative), ``wear_depth_max`` (m per revolution).
+            ``reuse_error_max`` (relative), ``wear_depth_max`` (m per revolution), ``extras``
+            (the extra column providers that ran and their summary, :mod:`femcam.sweep.extras`).
         """
         t = self.table
         ok = self.ok
@@ -277,4 +288,5 @@ class SweepResult:
             "n_families": len(self.families),
             "reuse_error_max": self.reuse_error,
             "wear_depth_max": peak("wear_depth"),
+            "extras": self.provenance.get("extras", {}),
         }

@@ -28,6 +28,7 @@ from ..io import (
 from ..scene import Scene, load_scene
 from ..viz.sweep import plot_sweep
 from .cache import default_cache
+from .extras import extra_columns, extras_provenance
 from .families import FamilyRecord, verify_families
 from .options import SweepOptions, contact_params
 from .parallel import AUTO_VTU_S, Progress, auto_workers, run_tasks
@@ -181,6 +182,7 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
                       scene_hash=run.shash, command=command, options=options,
                       families=[r.to_dict() for r in run.records] if fe else None,
                       wear=run.wear.to_dict())
+    prov["extras"] = extras_provenance(run.scene, table)
     timings = {"analytic": t_analytic, "verify": t_verify, "compute": t_compute}
     result = SweepResult(table=table, method=run.opts.method, provenance=prov, paths={},
                          timings=timings, n_chunks_computed=len(tasks),
@@ -340,10 +342,12 @@ def _write_outputs(result: SweepResult, run: _Run, plots: bool, src_path=None,
         prov["scene_copy"] = (f"{copy.name} (copy of {src_path}; the sweep used the parsed scene "
                               "recorded as scene_repr in sweep.npz, which differs from the file "
                               "only if it was changed in code, e.g. --law)")
-    paths.update(csv=str(write_csv(out / "sweep.csv", result.table, prov, columns=COLUMNS,
-                                   text_columns=TEXT_COLUMNS)),
-                 npz=str(write_npz(out / "sweep.npz", result.table, prov, numeric=NUMERIC,
-                                   text_columns=TEXT_COLUMNS, scene_toml=src_text,
+    xcols, xtext = extra_columns(run.scene)  # extra column providers (femcam.sweep.extras)
+    paths.update(csv=str(write_csv(out / "sweep.csv", result.table, prov, columns=COLUMNS + xcols,
+                                   text_columns=TEXT_COLUMNS + xtext)),
+                 npz=str(write_npz(out / "sweep.npz", result.table, prov,
+                                   numeric=NUMERIC + tuple(c[0] for c in xcols),
+                                   text_columns=TEXT_COLUMNS + xtext, scene_toml=src_text,
                                    scene_repr=repr(run.scene))))
     theta = result.table["theta"]
     entries = [(float(np.degrees(theta[i])), out / "vtk" / vtu_name(theta[i]))

@@ -24,7 +24,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..io import atomic_write_bytes, atomic_write_text
-from .result import NUMERIC, TEXT_COLUMNS
+from .result import NUMERIC, TEXT_COLUMNS, extra_keys
 
 MANIFEST = "manifest.json"
 PLAN = "plan.json"
@@ -140,6 +140,9 @@ class ChunkStore:
         arrays = {name: np.asarray(rows[name], dtype=float) for name in NUMERIC}
         for name in TEXT_COLUMNS:
             arrays[name] = np.asarray(rows[name]).astype(str)
+        for name in extra_keys(rows):  # extra column providers: numbers as float, text as str
+            v = np.asarray(rows[name])
+            arrays[name] = v.astype(str) if v.dtype.kind in "OUS" else v.astype(float)
         p = self.path(i)
         atomic_write_bytes(p, lambda f: np.savez(f, **arrays))
         return p

@@ -1,0 +1,311 @@
+r"""Extra column providers of the sweep: physics packages that answer per cam angle.
+
+Each :class:`Provider` says when it applies (from the scene), which columns it adds (SI name,
+CSV name with its unit, factor SI -> CSV, like :data:`femcam.sweep.result.COLUMNS`; text
+columns separately) and how one chunk computes them. :func:`fill_extras` is called once per
+chunk by :func:`femcam.sweep.pipeline.run_chunk`, after the contact rows (Hertz, FE, wear) are
+filled; the writers get :func:`extra_columns`; the provenance gets :func:`extras_provenance`.
+
+=============  ===========================================  ==============================================
+provider       applies when                                 columns (CSV)
+=============  ===========================================  ==============================================
+``halfspace``  finite-length keys (:func:`has_finite_length`) ``p_axial_peak_MPa``, ``y_axial_peak_mm``,
+                                                            ``L_eff_mm``, ``w_max_N_per_mm``, ... ,
+                                                            ``hs_flags``
+``assess``     ``scene.tribology`` has a lubricant          ``lambda``, ``h_min_um``, ``dT_flash_K``,
+                                                            ``sf_*``, ... , ``assess_regime``,
+                                                            ``assess_flags``, ``assess_source``
+``bodies``     ``roller_support`` is ``pin``/``needles``    ``ring_p0_MPa``, ``bore_hoop_max_MPa``,
+                                                            ``pin_p0_MPa``, ``needle_Qmax_on_N``, ...
+``layers``     ``scene.layers`` non-empty                   ``interface_tau_max_MPa``, ``case_margin``, ...
+=============  ===========================================  ==============================================
+
+Finite length changes two sweep columns (Johnson 1985 §5.7 for the slice model): the Archard
+per-pass depth ``k w v_slip / V_cam`` depends on the pressure only through the load per unit
+length ``w = pi a p0 / 2``; the wear column is recomputed at the most loaded slice with
+``p0 -> p_axial_peak`` and ``a -> 2 w_max / (pi p_axial_peak)`` (so ``w = w_max``),
+``wear_source = "axial_peak"``. The assessment (run after it) gets the same ``a``, ``p0`` in
+place of the FE/Hertz ones (its ``source`` reads ``axial_peak``; the FE stress maxima, computed
+at the mean load ``Fc / length``, are then not used by the assessment: Hertz shape factors at the
+axial peak are). The 2D FE columns stay at the mean load (comparable with Hertz).
+
+A provider that the physics refuses for a documented reason (a :class:`~femcam.errors.FemcamError`)
+leaves its columns NaN and writes the reason in the text column ``extras_error``; it never stops
+the contact sweep. Models are built once per process (the ring model does not pickle; its rows
+do): :data:`_CACHE`, keyed by the scene's ``repr``.
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..assess import COLUMNS as ASSESS_COLUMNS
+from ..assess import assess_rows, worst_angles
+from ..bodies.rows import CSV_COLUMNS as RING_COLUMNS
+from ..bodies.rows import build_for, ring_rows
+from ..errors import FemcamError
+from ..halfspace.rows import COLUMNS as HS_COLUMNS
+from ..halfspace.rows import finite_length_rows, strip_for_scene
+from ..layers import scene_layer_rows
+from ..wear.map import wear_depth_per_angle
+
+Column = tuple[str, str, float]
+#: text column of every sweep with providers: ``"<provider>: <reason>"`` where one was refused
+ERROR_COLUMN = "extras_error"
+#: angles of the revolution on which per-process models are graded (independent of chunking)
+_GRID = np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False)
+
+
+@dataclass(frozen=True)
+class Provider:
+    """One extra column provider.
+
+    Parameters
+    ----------
+    name : str
+        Short name (provenance, ``extras_error``).
+    applies : callable(scene) -> bool
+    columns : tuple of (SI name, CSV name, factor)
+        Numeric columns (SI name in the table, ``csv = SI * factor``).
+    text : tuple of str
+        Text columns.
+    compute : callable(task, rows) -> dict
+        The chunk's values: SI arrays of shape (n,) for ``columns`` and ``text``. May also
+        replace sweep columns it documents (``halfspace``: ``wear_depth``, ``wear_source``).
+    """
+
+    name: str
+    applies: Callable
+    columns: tuple
+    text: tuple
+    compute: Callable
+
+
+# ---------------------------------------------------------------------------------------------
+# per-process models
+# ---------------------------------------------------------------------------------------------
+_CACHE: dict = {}
+_LOCK = threading.RLock()
+
+
+def _cached(kind: str, scene, build: Callable):
+    """``build()`` once per process for ``(kind, repr(scene))``."""
+    key = (kind, repr(scene))
+    with _LOCK:
+        if key not in _CACHE:
+            _CACHE[key] = build()
+        return _CACHE[key]
+
+
+def ring_model(scene):
+    """The scene's ring model (:func:`femcam.bodies.rows.build_for`), graded for the largest
+    contact force over one revolution (720 angles), built once per process: the rows then do
+    not depend on how the sweep is chunked."""
+    def build():
+        st = scene.analyse(_GRID)
+        Fc = np.where(np.asarray(st.Fc) > 0, st.Fc, np.nan)
+        return build_for(scene, Fc, np.asarray(st.rho, float))
+    return _cached("ring", scene, build)
+
+
+def strip_model(scene):
+    """The scene's :class:`~femcam.halfspace.strip.FiniteLengthContact` (kernel FFTs), once per
+    process."""
+    return _cached("strip", scene, lambda: strip_for_scene(scene))
+
+
+# ---------------------------------------------------------------------------------------------
+# providers
+# ---------------------------------------------------------------------------------------------
+def _prefixed(name: str) -> str:
+    return f"assess_{name}"
+
+
+_ASSESS_SKIP = ("theta", "Fc")
+ASSESS = tuple((_prefixed(si), csv if csv not in ("a_um", "p0_MPa") else f"assess_{csv}", f)
+               for si, csv, f in ASSESS_COLUMNS if si not in _ASSESS_SKIP)
+ASSESS_TEXT = ("assess_regime", "assess_flags", "assess_source")
+HALFSPACE = tuple((f"hs_{k}", csv, f) for k, (csv, f) in HS_COLUMNS.items())
+RING = tuple((f"ring_{k}", csv, f) for k, (csv, f) in RING_COLUMNS.items() if k != "theta")
+LAYER_CSV = (("interface_tau_max_MPa", 1e-6), ("interface_sn_min_MPa", 1e-6),
+             ("interface_sn_max_MPa", 1e-6), ("interface_utilisation", 1.0),
+             ("coating_sx_max_MPa", 1e-6), ("coating_sx_utilisation", 1.0),
+             ("case_utilisation_max", 1.0), ("case_z_at_max_mm", 1e3), ("case_margin", 1.0))
+LAYERS = tuple((f"layer_{csv}", csv, f) for csv, f in LAYER_CSV)
+
+
+def axial_contact(rows) -> tuple[np.ndarray, np.ndarray]:
+    """``(a, p0)`` (m, Pa) of the most loaded slice of a finite-length contact: ``p0 =
+    p_axial_peak`` and ``a = 2 w_max / (pi p_axial_peak)``, so ``pi a p0 / 2 = w_max``.
+
+    >>> a, p0 = axial_contact({"hs_p_axial_peak": np.array([1e9]), "hs_w_max": np.array([1e5])})
+    >>> round(float(a[0]) * 1e6, 3), float(p0[0])
+    (63.662, 1000000000.0)
+    """
+    p = np.asarray(rows["hs_p_axial_peak"], float)
+    w = np.asarray(rows["hs_w_max"], float)
+    ok = np.isfinite(p) & np.isfinite(w) & (p > 0)
+    a = np.where(ok, 2.0 * w / (np.pi * np.where(ok, p, 1.0)), np.nan)
+    return a, np.where(ok, p, np.nan)
+
+
+def _halfspace(task, rows) -> dict:
+    r = finite_length_rows(task.scene, task.theta, strip=strip_model(task.scene))
+    out = {f"hs_{k}": np.asarray(r[k], float) for k in HS_COLUMNS}
+    out["hs_flags"] = np.array([";".join(f) for f in r["flags"]], dtype=object)
+    if task.slip is not None and math.isfinite(task.wear_k):
+        a, p0 = axial_contact(out)
+        use = np.isfinite(a) & (np.asarray(rows["status"]).astype(str) == "ok")
+        depth = wear_depth_per_angle(rows["theta"], np.where(use, a, 0.0), np.where(use, p0, 0.0),
+                                     np.where(use, rows["Fc"], 0.0), task.slip, task.wear_k)
+        out["wear_depth"] = np.where(use, depth, rows["wear_depth"])
+        out["wear_source"] = np.where(use, "axial_peak", np.asarray(rows["wear_source"]).astype(str))
+    return out
+
+
+def _assess(task, rows) -> dict:
+    table = {"a_fe": rows["a_fe"], "p0_fe": rows["p0_fe"], "tau1_max": rows["tau1_max"],
+             "txz_absmax": rows["txz_absmax"]}
+    axial = "hs_p_axial_peak" in rows
+    if axial:  # finite length: the most loaded slice, Hertz shape factors at its p0
+        a, p0 = axial_contact(rows)
+        table = {"a_fe": a, "p0_fe": p0}
+    r = assess_rows(task.scene, task.theta, table=table)
+    out = {_prefixed(si): np.asarray(r[si], float) for si, _, _ in ASSESS_COLUMNS if si not in _ASSESS_SKIP}
+    src = np.asarray(r["source"]).astype(str)
+    if axial:
+        src = np.where(src == "fe", "axial_peak", src)
+    out.update(assess_regime=np.asarray(r["regime"]).astype(str),
+               assess_flags=np.asarray(r["flags"]).astype(str), assess_source=src)
+    return out
+
+
+def _ring(task, rows) -> dict:
+    Fc = np.where(np.asarray(rows["status"]).astype(str) == "liftoff", 0.0, rows["Fc"])
+    r = ring_rows(task.scene, task.theta, Fc, rows["rho"], model=ring_model(task.scene))
+    return {f"ring_{k}": np.asarray(r[k], float) for k in RING_COLUMNS if k != "theta"}
+
+
+def _layers(task, rows) -> dict:
+    r = scene_layer_rows(task.scene, task.theta, a_over_h=task.options.a_over_h)
+    n = task.theta.size
+    return {si: np.asarray(r.get(csv, np.full(n, np.nan)), float) / f for si, csv, f in LAYERS}
+
+
+def has_finite_length(scene) -> bool:
+    """True when the scene asks for the finite-length contact: a crown, edge radius or
+    misalignment key, or a roller or cam width that differs from the 2D contact length. (The
+    scene fills ``finite_length`` with both widths for every roller scene with a face width, so
+    non-empty alone does not mean asked for.)"""
+    fl = getattr(scene, "finite_length", None) or {}
+    if not fl:
+        return False
+    widths = (fl.get("roller_width", scene.length), fl.get("cam_width", scene.length))
+    return bool(set(fl) - {"roller_width", "cam_width"}) or any(w != scene.length for w in widths)
+
+
+def _has_support(scene) -> bool:
+    return (getattr(scene, "bodies", None) or {}).get("support", "solid") != "solid"
+
+
+#: the table, in the order the providers run (halfspace before assess: the axial peak)
+PROVIDERS: tuple[Provider, ...] = (
+    Provider("halfspace", has_finite_length, HALFSPACE, ("hs_flags",),
+             _halfspace),
+    Provider("assess", lambda s: "lubricant" in (getattr(s, "tribology", None) or {}), ASSESS,
+             ASSESS_TEXT, _assess),
+    Provider("bodies", _has_support, RING, (), _ring),
+    Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), _layers),
+)
+
+
+def providers_for(scene) -> tuple[Provider, ...]:
+    """The providers that apply to ``scene``, in run order."""
+    return tuple(p for p in PROVIDERS if p.applies(scene))
+
+
+def extra_columns(scene) -> tuple[tuple[Column, ...], tuple[str, ...]]:
+    """``(numeric columns, text columns)`` the providers of ``scene`` add to the sweep table
+    (both empty when none applies; ``extras_error`` is the last text column otherwise)."""
+    ps = providers_for(scene)
+    if not ps:
+        return (), ()
+    return (tuple(c for p in ps for c in p.columns),
+            tuple(t for p in ps for t in p.text) + (ERROR_COLUMN,))
+
+
+def fill_extras(task, rows) -> None:
+    """Compute the applicable providers' columns of one chunk into ``rows`` (in place).
+
+    Parameters
+    ----------
+    task : femcam.sweep.pipeline.ChunkTask
+        ``scene``, ``theta``, ``options``, ``slip``, ``wear_k`` of the chunk.
+    rows : dict[str, ndarray]
+        The chunk's table with the contact and wear columns filled.
+    """
+    ps = providers_for(task.scene)
+    if not ps:
+        return
+    n = rows["theta"].size
+    errors = []
+    for p in ps:
+        try:
+            vals = p.compute(task, rows)
+        except FemcamError as exc:
+            errors.append(f"{p.name}: {type(exc).__name__}: {exc}")
+            vals = {}
+        for si, _, _ in p.columns:
+            rows[si] = np.asarray(vals.get(si, np.full(n, np.nan)), float)
+        for t in p.text:
+            rows[t] = np.asarray(vals.get(t, np.full(n, "")), dtype=object)
+        for k in ("wear_depth", "wear_source"):
+            if k in vals:
+                rows[k] = vals[k]
+    rows[ERROR_COLUMN] = np.full(n, " | ".join(errors), dtype=object)
+
+
+def _peak(table, name, ok, how=np.nanmax):
+    v = np.where(ok, np.asarray(table[name], float), np.nan)
+    return float(how(v)) if np.any(np.isfinite(v)) else float("nan")
+
+
+def extras_provenance(scene, table) -> dict:
+    """Which providers ran and their summary over the swept angles (JSON-able).
+
+    ``providers``: names; ``errors``: the refusals; ``assess``: the worst angle per criterion
+    (:func:`femcam.assess.worst_angles`: ``{criterion: {"value", "theta_deg"}}``);
+    ``halfspace``: largest axial peak (MPa) and the FE load basis; ``bodies``: largest bore hoop
+    stress (MPa) and needle load (N); ``layers``: largest interface utilisation, smallest case margin.
+    """
+    ps = providers_for(scene)
+    out = {"providers": [p.name for p in ps]}
+    if not ps:
+        return out
+    errs = sorted({e for e in np.asarray(table.get(ERROR_COLUMN, [])).astype(str) if e})
+    if errs:
+        out["errors"] = errs
+    ok = np.asarray(table["status"]).astype(str) == "ok"
+    names = [p.name for p in ps]
+    if "assess" in names:
+        rows = {si: np.asarray(table[_prefixed(si)], float) for si, _, _ in ASSESS_COLUMNS
+                if si not in _ASSESS_SKIP}
+        rows.update(theta=table["theta"], Fc=np.where(ok, table["Fc"], 0.0))
+        out["assess"] = {c: {"value": v, "theta_deg": math.degrees(t)}
+                         for c, (v, t, _) in worst_angles(rows).items()}
+    if "halfspace" in names:
+        out["halfspace"] = {"p_axial_peak_max_MPa": _peak(table, "hs_p_axial_peak", ok) * 1e-6,
+                            "wear": "most loaded slice: p0 = p_axial_peak, a = 2 w_max/(pi p0)",
+                            "fe_load_basis": "mean load Fc / length (2D FE columns)"}
+    if "bodies" in names:
+        out["bodies"] = {"bore_hoop_max_MPa": _peak(table, "ring_hoop_max", ok) * 1e-6,
+                         "needle_Qmax_N": _peak(table, "ring_needle_Q_on", ok)}
+    if "layers" in names:
+        out["layers"] = {"interface_utilisation_max": _peak(table, "layer_interface_utilisation", ok),
+                         "case_margin_min": _peak(table, "layer_case_margin", ok, np.nanmin)}
+    return out
