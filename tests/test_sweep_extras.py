@@ -1,0 +1,204 @@
+"""Wiring of the extra column providers (femcam.sweep.extras) into the sweep.
+
+These are wiring tests: the sweep CSV must hold each provider's columns with the values of the
+provider's own function called directly at the same angles (the physics of each provider is
+validated in its package's tests: test_assess, test_halfspace, test_bodies_*, test_layers). The
+CSV writes 10 significant digits, hence ``rtol = 1e-9`` against the direct call. The wear column
+of a finite-length scene is checked against Archard's per-pass closed form written here.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+from femcam.assess import COLUMNS as ASSESS_COLUMNS
+from femcam.assess import assess_rows, worst_angles
+from femcam.bodies.rows import CSV_COLUMNS as RING_COLUMNS
+from femcam.bodies.rows import build_for, ring_rows
+from femcam.errors import InputError
+from femcam.halfspace.rows import COLUMNS as HS_COLUMNS
+from femcam.halfspace.rows import finite_length_rows
+from femcam.io import read_csv
+from femcam.layers import scene_layer_rows
+from femcam.scene import load_scene
+from femcam.sweep import extras, sweep
+from femcam.wear.options import wear_coefficient_info
+
+EX = "examples/"
+TH8 = np.radians(np.arange(0.0, 360.0, 45.0))   # coarse: 0, 45, ..., 315 deg
+RTOL = 1e-9                                        # CSV: 10 significant digits
+
+
+def _sweep_csv(scene, theta, tmp_path, **kw):
+    kw = {"method": "hertz", "workers": 1, **kw}
+    r = sweep(scene, angles=theta, out=tmp_path, **kw)
+    cols, _ = read_csv(r.paths["csv"])
+    return r, cols
+
+
+def _close(csv_values, direct, factor=1.0):
+    np.testing.assert_allclose(csv_values, np.asarray(direct, float) * factor, rtol=RTOL, atol=0.0,
+                               equal_nan=True)
+
+
+# ---------------------------------------------------------------------------------------------
+def test_which_providers_apply_to_the_examples():
+    names = {f: [p.name for p in extras.providers_for(load_scene(EX + f + ".toml"))]
+             for f in ("seed002_study_model", "seed002_assess", "seed002_crowned",
+                       "seed002_needle_roller", "seed002_coated")}
+    assert names == {"seed002_study_model": [], "seed002_assess": ["assess"],
+                     "seed002_crowned": ["halfspace"], "seed002_needle_roller": ["bodies"],
+                     "seed002_coated": ["layers"]}
+
+
+def test_plain_scene_has_no_extra_columns(tmp_path):
+    scene = load_scene(EX + "seed002_study_model.toml")
+    r, cols = _sweep_csv(scene, TH8, tmp_path)
+    assert extras.extra_columns(scene) == ((), ())
+    assert "extras_error" not in cols and "lambda" not in cols
+    assert r.provenance["extras"] == {"providers": []}
+
+
+def test_assess_columns_equal_direct_call(tmp_path):
+    scene = load_scene(EX + "seed002_assess.toml")
+    r, cols = _sweep_csv(scene, TH8, tmp_path, chunk_size=3)
+    direct = assess_rows(scene, TH8)          # method hertz: no FE a/p0, Hertz as the direct call
+    for si, csv, f in ASSESS_COLUMNS:
+        if si in ("theta", "Fc"):
+            continue
+        name = csv if csv not in ("a_um", "p0_MPa") else "assess_" + csv
+        _close(cols[name], direct[si], f)
+    assert list(cols["assess_regime"]) == [str(v) for v in direct["regime"]]
+    assert list(cols["assess_flags"]) == [str(v) for v in direct["flags"]]
+    assert set(cols["assess_source"]) == {"hertz"}
+    # the worst-angle summary in the provenance and the summary is assess's own
+    worst = worst_angles(direct)
+    prov = r.provenance["extras"]["assess"]
+    assert set(prov) == set(worst)
+    for crit, (v, t, _) in worst.items():
+        assert prov[crit]["value"] == pytest.approx(v, rel=1e-12)
+        assert prov[crit]["theta_deg"] == pytest.approx(math.degrees(t), abs=1e-9)
+    assert r.summary()["extras"]["providers"] == ["assess"]
+
+
+@pytest.mark.slow
+def test_assess_uses_fe_contact_of_the_sweep(tmp_path):
+    scene = load_scene(EX + "seed002_assess.toml")
+    th = np.radians([0.0, 130.0])
+    r, cols = _sweep_csv(scene, th, tmp_path, method="fe")
+    direct = assess_rows(scene, th, table=r.table)
+    _close(cols["assess_p0_MPa"], direct["p0"], 1e-6)
+    _close(cols["assess_p0_MPa"], cols["p0_fe_MPa"])        # FE p0 replaces Hertz where finite
+    _close(cols["sf_yield"], direct["sf_yield"])
+    assert set(cols["assess_source"]) == {"fe"}
+
+
+# ---------------------------------------------------------------------------------------------
+def test_halfspace_columns_and_axial_peak_wear(tmp_path):
+    scene = load_scene(EX + "seed002_crowned.toml")
+    r, cols = _sweep_csv(scene, TH8, tmp_path)
+    direct = finite_length_rows(scene, TH8)   # one chunk: the same warm starts as the sweep
+    for k, (csv, f) in HS_COLUMNS.items():
+        _close(cols[csv], direct[k], f)
+    assert list(cols["hs_flags"]) == [";".join(f) for f in direct["flags"]]
+    # Archard per pass at the most loaded slice: h = k w_max v_slip / V_cam (independent form)
+    k = wear_coefficient_info(scene)[0]
+    ok = cols["status"] == "ok"
+    h_ref = k * direct["w_max"] * cols["v_slip_m_s"] / cols["V_cam_m_s"]
+    np.testing.assert_allclose(cols["wear_depth_per_rev_nm"][ok], h_ref[ok] * 1e9, rtol=1e-8)
+    assert set(cols["wear_source"][ok]) == {"axial_peak"}
+    assert "halfspace" in r.provenance["extras"]["providers"]
+
+
+def test_assessment_of_a_finite_length_scene_uses_the_axial_peak(tmp_path):
+    lub = load_scene(EX + "seed002_assess.toml")
+    crowned = load_scene(EX + "seed002_crowned.toml")
+    scene = dataclasses.replace(lub, finite_length=crowned.finite_length)
+    th = TH8[:4]
+    _, cols = _sweep_csv(scene, th, tmp_path)
+    ok = cols["status"] == "ok"
+    np.testing.assert_allclose(cols["assess_p0_MPa"][ok], cols["p_axial_peak_MPa"][ok], rtol=RTOL)
+    # a from w_max: pi a p0 / 2 = w_max (N/mm = 1e3 N/m; a in um, p0 in MPa)
+    w = math.pi * cols["assess_a_um"] * 1e-6 * cols["assess_p0_MPa"] * 1e6 / 2.0
+    np.testing.assert_allclose(w[ok], cols["w_max_N_per_mm"][ok] * 1e3, rtol=1e-8)
+    assert set(cols["assess_source"][ok]) == {"axial_peak"}
+
+
+# ---------------------------------------------------------------------------------------------
+@pytest.mark.slow
+def test_needle_roller_sweep_writes_ring_results(tmp_path):
+    scene = load_scene(EX + "seed002_needle_roller.toml")
+    th = np.radians([0.0, 130.0, 230.0])
+    r, cols = _sweep_csv(scene, th, tmp_path)
+    grid = np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False)
+    g = scene.analyse(grid)
+    model = build_for(scene, np.where(g.Fc > 0, g.Fc, np.nan), g.rho)   # graded as the provider says
+    st = scene.analyse(th)
+    direct = ring_rows(scene, th, st.Fc, st.rho, model=model)
+    for k, (csv, f) in RING_COLUMNS.items():
+        _close(cols[csv], direct[k], f)
+    assert np.all(np.isfinite(cols["bore_hoop_max_MPa"])) and np.all(cols["needle_Qmax_on_N"] > 0)
+    assert r.provenance["extras"]["bodies"]["bore_hoop_max_MPa"] == pytest.approx(
+        np.nanmax(direct["hoop_max"]) * 1e-6, rel=1e-12)
+
+
+def test_ring_model_is_built_once_per_process():
+    scene = load_scene(EX + "seed002_needle_roller.toml")
+    calls = []
+    extras._CACHE.pop(("ring", repr(scene)), None)
+    orig = extras.build_for
+    try:
+        extras.build_for = lambda *a, **k: calls.append(1) or object()
+        m1, m2 = extras.ring_model(scene), extras.ring_model(scene)
+    finally:
+        extras.build_for = orig
+        extras._CACHE.pop(("ring", repr(scene)), None)
+    assert m1 is m2 and calls == [1]
+
+
+# ---------------------------------------------------------------------------------------------
+@pytest.mark.slow
+def test_layer_columns_equal_direct_call(tmp_path):
+    scene = load_scene(EX + "seed002_coated.toml")
+    th = np.radians([0.0, 130.0])
+    r, cols = _sweep_csv(scene, th, tmp_path)
+    direct = scene_layer_rows(scene, th, a_over_h=10.0)
+    for _, csv, _ in extras.LAYERS:
+        _close(cols[csv], direct[csv])
+    assert r.provenance["extras"]["layers"]["case_margin_min"] == pytest.approx(
+        np.nanmin(direct["case_margin"]), rel=1e-12)
+
+
+# ---------------------------------------------------------------------------------------------
+def test_refused_provider_gives_nan_columns_and_the_reason(tmp_path, monkeypatch):
+    def refuse(task, rows):
+        raise InputError("viscosity = -1 Pa s: must be > 0")
+
+    p = extras.PROVIDERS[1]
+    assert p.name == "assess"
+    monkeypatch.setattr(extras, "PROVIDERS", (dataclasses.replace(p, compute=refuse),))
+    scene = load_scene(EX + "seed002_assess.toml")
+    r, cols = _sweep_csv(scene, TH8[:3], tmp_path)
+    assert np.all(np.isnan(cols["lambda"]))
+    assert set(cols["extras_error"]) == {"assess: InputError: viscosity = -1 Pa s: must be > 0"}
+    assert np.all(cols["status"] == "ok")           # the contact sweep went on
+    assert r.provenance["extras"]["errors"] == ["assess: InputError: viscosity = -1 Pa s: must be > 0"]
+
+
+def test_resume_keeps_the_extra_columns(tmp_path):
+    scene = load_scene(EX + "seed002_assess.toml")
+    r1 = sweep(scene, angles=TH8, method="hertz", workers=1, out=tmp_path, chunk_size=3)
+    r2 = sweep(scene, angles=TH8, method="hertz", workers=1, out=tmp_path, chunk_size=3, resume=True)
+    assert r2.n_chunks_resumed == 3 and r2.n_chunks_computed == 0
+    for name in ("assess_lam", "assess_sf_yield", "assess_regime", "extras_error"):
+        assert name in r2.table
+        if r1.table[name].dtype.kind == "f":
+            np.testing.assert_array_equal(r2.table[name], r1.table[name])
+        else:
+            assert list(r2.table[name]) == list(r1.table[name])
+    with np.load(r2.paths["npz"]) as z:
+        np.testing.assert_array_equal(z["assess_lam"], r1.table["assess_lam"])
