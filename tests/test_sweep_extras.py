@@ -202,3 +202,24 @@ def test_resume_keeps_the_extra_columns(tmp_path):
             assert list(r2.table[name]) == list(r1.table[name])
     with np.load(r2.paths["npz"]) as z:
         np.testing.assert_array_equal(z["assess_lam"], r1.table["assess_lam"])
+
+
+@pytest.mark.slow
+def test_fe_answers_at_the_most_loaded_slice(tmp_path):
+    """method fe on a crowned roller: the 2D FE is solved again at F = w_max * length; its p0 is
+    the 2D Hertz p0 at that load per unit length (Johnson 1985 eq. 4.45) within 1 % (the sweep's
+    mean-load FE p0 is within 0.2 % of Hertz at a_over_h = 10 in this run; 1 % bounds the FE
+    discretisation error at the larger load, where the family model may be rebuilt)."""
+    scene = load_scene(EX + "seed002_crowned.toml")
+    th = np.radians([0.0, 230.0])
+    _, cols = _sweep_csv(scene, th, tmp_path, method="fe")
+    w = cols["w_max_N_per_mm"] * 1e3
+    np.testing.assert_allclose(cols["fe_slice_F_N"], w * scene.length, rtol=RTOL)
+    R = 1.0 / (1.0 / (cols["rho_mm"] * 1e-3) + 1.0 / scene.follower.Rr)
+    E_star = 1.0 / (2.0 * (1.0 - 0.3**2) / 210e9)             # plane strain, steel on steel
+    p0_ref = np.sqrt(w * E_star / (math.pi * R))
+    np.testing.assert_allclose(cols["fe_slice_p0_MPa"] * 1e6, p0_ref, rtol=1e-2)
+    assert list(cols["fe_load_basis"]) == ["w_max*length"] * 2
+    # the mean-load FE columns are untouched: still the Hertz load Fc / length
+    p0_mean = np.sqrt(cols["Fc_N"] / scene.length * E_star / (math.pi * R))
+    np.testing.assert_allclose(cols["p0_fe_MPa"] * 1e6, p0_mean, rtol=1e-2)

@@ -20,14 +20,21 @@ provider       applies when                                 columns (CSV)
 ``layers``     ``scene.layers`` non-empty                   ``interface_tau_max_MPa``, ``case_margin``, ...
 =============  ===========================================  ==============================================
 
-Finite length changes two sweep columns (Johnson 1985 §5.7 for the slice model): the Archard
-per-pass depth ``k w v_slip / V_cam`` depends on the pressure only through the load per unit
-length ``w = pi a p0 / 2``; the wear column is recomputed at the most loaded slice with
-``p0 -> p_axial_peak`` and ``a -> 2 w_max / (pi p_axial_peak)`` (so ``w = w_max``),
-``wear_source = "axial_peak"``. The assessment (run after it) gets the same ``a``, ``p0`` in
-place of the FE/Hertz ones (its ``source`` reads ``axial_peak``; the FE stress maxima, computed
-at the mean load ``Fc / length``, are then not used by the assessment: Hertz shape factors at the
-axial peak are). The 2D FE columns stay at the mean load (comparable with Hertz).
+Finite length (Johnson 1985 §5.7 for the slice model of a line contact):
+
+* the 2D FE answers again at the most loaded slice with that slice's load per unit length
+  (method fe): ``F = w_max * length``, columns ``fe_slice_F_N``, ``fe_slice_a_um``,
+  ``fe_slice_p0_MPa``, ``fe_slice_vm_max_MPa``, ``fe_slice_tau1_max_MPa``,
+  ``fe_slice_txz_absmax_MPa`` and the text column ``fe_load_basis = "w_max*length"``; the sweep's
+  own FE columns (``a_fe``, ``p0_fe``, ``vm_max``, ...) stay at the mean load ``Fc / length``,
+  comparable with Hertz (``err_a``, ``err_p0``);
+* the wear column uses the axial peak: the Archard per-pass depth ``k w v_slip / V_cam`` depends
+  on the pressure only through ``w = pi a p0 / 2``, so it is recomputed with ``p0 ->
+  p_axial_peak`` and ``a -> 2 w_max / (pi p_axial_peak)`` (i.e. ``w = w_max``), ``wear_source =
+  "axial_peak"``;
+* the assessment (run after it) gets the same ``a``, ``p0`` in place of the FE/Hertz ones (its
+  ``source`` reads ``axial_peak``) and the FE stress maxima of the most loaded slice where the FE
+  answered (method hertz: Hertz shape factors at the axial peak).
 
 A provider that the physics refuses for a documented reason (a :class:`~femcam.errors.FemcamError`)
 leaves its columns NaN and writes the reason in the text column ``extras_error``; it never stops
@@ -53,6 +60,9 @@ from ..halfspace.rows import COLUMNS as HS_COLUMNS
 from ..halfspace.rows import finite_length_rows, strip_for_scene
 from ..layers import scene_layer_rows
 from ..wear.map import wear_depth_per_angle
+from .cache import default_cache
+from .families import hertz_half_width
+from .options import contact_params
 
 Column = tuple[str, str, float]
 #: text column of every sweep with providers: ``"<provider>: <reason>"`` where one was refused
@@ -130,7 +140,12 @@ _ASSESS_SKIP = ("theta", "Fc")
 ASSESS = tuple((_prefixed(si), csv if csv not in ("a_um", "p0_MPa") else f"assess_{csv}", f)
                for si, csv, f in ASSESS_COLUMNS if si not in _ASSESS_SKIP)
 ASSESS_TEXT = ("assess_regime", "assess_flags", "assess_source")
-HALFSPACE = tuple((f"hs_{k}", csv, f) for k, (csv, f) in HS_COLUMNS.items())
+#: the 2D FE at the most loaded slice (method fe): F = w_max * length
+FE_SLICE = (("hs_fe_F", "fe_slice_F_N", 1.0), ("hs_fe_a", "fe_slice_a_um", 1e6),
+            ("hs_fe_p0", "fe_slice_p0_MPa", 1e-6), ("hs_fe_vm_max", "fe_slice_vm_max_MPa", 1e-6),
+            ("hs_fe_tau1_max", "fe_slice_tau1_max_MPa", 1e-6),
+            ("hs_fe_txz_absmax", "fe_slice_txz_absmax_MPa", 1e-6))
+HALFSPACE = tuple((f"hs_{k}", csv, f) for k, (csv, f) in HS_COLUMNS.items()) + FE_SLICE
 RING = tuple((f"ring_{k}", csv, f) for k, (csv, f) in RING_COLUMNS.items() if k != "theta")
 LAYER_CSV = (("interface_tau_max_MPa", 1e-6), ("interface_sn_min_MPa", 1e-6),
              ("interface_sn_max_MPa", 1e-6), ("interface_utilisation", 1.0),
@@ -154,10 +169,43 @@ def axial_contact(rows) -> tuple[np.ndarray, np.ndarray]:
     return a, np.where(ok, p, np.nan)
 
 
+def _fe_slice(task, rows, out) -> None:
+    """The 2D FE at the most loaded slice: ``F = w_max * length`` at every ``ok`` row (method
+    fe), with the family's model where it covers that load, else a model of the angle's own (as
+    the chunk runner does), through the process's :class:`~femcam.sweep.cache.ModelCache`."""
+    n = rows["theta"].size
+    for si, _, _ in FE_SLICE:
+        out[si] = np.full(n, np.nan)
+    out["fe_load_basis"] = np.full(n, "", dtype=object)
+    if task.options.method != "fe":
+        return
+    cp, cache = contact_params(task.scene), default_cache()
+    status = np.asarray(rows["status"]).astype(str)
+    for i in np.flatnonzero((status == "ok") & np.isfinite(out["hs_w_max"])):
+        F, rho = float(out["hs_w_max"][i]) * cp.length, float(rows["rho"][i])
+        fid = int(task.family[i]) if task.family.size else -1
+        model = cache.model_for(cp, *task.refs[fid], task.options) if fid in task.refs else None
+        if model is None or not model.covers(F, rho):
+            a_i = float(hertz_half_width(np.array([F]), np.array([rho]), cp)[0])
+            model = cache.model_for(cp, rho, a_i, task.options)
+        try:
+            r = cache.solve(model, F, rho, cp.mu, cp.sliding, check=False)
+        except FemcamError:
+            continue
+        if not r.converged:
+            continue
+        for si, v in (("hs_fe_F", F), ("hs_fe_a", r.a), ("hs_fe_p0", r.p0),
+                      ("hs_fe_vm_max", r.von_mises_max.value), ("hs_fe_tau1_max", r.tau1_max.value),
+                      ("hs_fe_txz_absmax", float(np.abs(r.txz).max()) if r.txz.size else np.nan)):
+            out[si][i] = v
+        out["fe_load_basis"][i] = "w_max*length"
+
+
 def _halfspace(task, rows) -> dict:
     r = finite_length_rows(task.scene, task.theta, strip=strip_model(task.scene))
     out = {f"hs_{k}": np.asarray(r[k], float) for k in HS_COLUMNS}
     out["hs_flags"] = np.array([";".join(f) for f in r["flags"]], dtype=object)
+    _fe_slice(task, rows, out)
     if task.slip is not None and math.isfinite(task.wear_k):
         a, p0 = axial_contact(out)
         use = np.isfinite(a) & (np.asarray(rows["status"]).astype(str) == "ok")
@@ -174,7 +222,8 @@ def _assess(task, rows) -> dict:
     axial = "hs_p_axial_peak" in rows
     if axial:  # finite length: the most loaded slice, Hertz shape factors at its p0
         a, p0 = axial_contact(rows)
-        table = {"a_fe": a, "p0_fe": p0}
+        table = {"a_fe": a, "p0_fe": p0, "tau1_max": rows["hs_fe_tau1_max"],
+                 "txz_absmax": rows["hs_fe_txz_absmax"]}
     r = assess_rows(task.scene, task.theta, table=table)
     out = {_prefixed(si): np.asarray(r[si], float) for si, _, _ in ASSESS_COLUMNS if si not in _ASSESS_SKIP}
     src = np.asarray(r["source"]).astype(str)
@@ -215,7 +264,7 @@ def _has_support(scene) -> bool:
 
 #: the table, in the order the providers run (halfspace before assess: the axial peak)
 PROVIDERS: tuple[Provider, ...] = (
-    Provider("halfspace", has_finite_length, HALFSPACE, ("hs_flags",),
+    Provider("halfspace", has_finite_length, HALFSPACE, ("hs_flags", "fe_load_basis"),
              _halfspace),
     Provider("assess", lambda s: "lubricant" in (getattr(s, "tribology", None) or {}), ASSESS,
              ASSESS_TEXT, _assess),
@@ -301,7 +350,8 @@ def extras_provenance(scene, table) -> dict:
     if "halfspace" in names:
         out["halfspace"] = {"p_axial_peak_max_MPa": _peak(table, "hs_p_axial_peak", ok) * 1e-6,
                             "wear": "most loaded slice: p0 = p_axial_peak, a = 2 w_max/(pi p0)",
-                            "fe_load_basis": "mean load Fc / length (2D FE columns)"}
+                            "fe_load_basis": ("a_fe, p0_fe, vm_max, ...: mean load Fc; fe_slice_*: "
+                                              "F = w_max * length (most loaded slice)")}
     if "bodies" in names:
         out["bodies"] = {"bore_hoop_max_MPa": _peak(table, "ring_hoop_max", ok) * 1e-6,
                          "needle_Qmax_N": _peak(table, "ring_needle_Q_on", ok)}
