@@ -223,3 +223,98 @@ def test_fe_answers_at_the_most_loaded_slice(tmp_path):
     # the mean-load FE columns are untouched: still the Hertz load Fc / length
     p0_mean = np.sqrt(cols["Fc_N"] / scene.length * E_star / (math.pi * R))
     np.testing.assert_allclose(cols["p0_fe_MPa"] * 1e6, p0_mean, rtol=1e-2)
+
+
+# ---------------------------------------------------------------------------------------------
+# coating wear coefficient (femcam.wear.coating)
+# ---------------------------------------------------------------------------------------------
+COAT = """
+[materials.{body}.coating]
+thickness_um = {t}
+E_GPa = 170.0
+nu = 0.22
+{wear}
+"""
+
+
+def _coated_scene(tmp_path, body="cam", t=2.0, wear="wear_k_mm3_per_N_m = 1e-8"):
+    text = open(EX + "seed002_study_model.toml").read() + COAT.format(body=body, t=t, wear=wear)
+    p = tmp_path / f"coated_{body}.toml"
+    p.write_text(text)
+    return load_scene(p)
+
+
+@pytest.mark.parametrize("wear, msg", [
+    ("wear_K = 1e-8", "materials.cam.coating.wear_K"),
+    ("wear_K = 1e-8\nwear_k_mm3_per_N_m = 1e-8\nhardness_MPa = 9000.0", "not both"),
+    ("wear_k_mm3_per_N_m = -1e-8", "materials.cam.coating.wear_k_mm3_per_N_m"),
+])
+def test_coating_wear_keys_bad_input(tmp_path, wear, msg):
+    from femcam.errors import SceneError
+    with pytest.raises(SceneError, match=msg):
+        _coated_scene(tmp_path, wear=wear)
+
+
+def _layered(d_c, d_s, t, N):
+    """Hand form: N d_c until N d_c = t, then the substrate rate (written out per point)."""
+    out = []
+    for dc, ds in zip(d_c, d_s, strict=True):
+        out.append(N * dc if N * dc <= t else t + (N - t / dc) * ds)
+    return np.array(out)
+
+
+def test_wear_map_uses_the_coating_k_until_worn_through(tmp_path):
+    from femcam.wear.scene import scene_wear
+    bare = load_scene(EX + "seed002_study_model.toml")
+    scene = _coated_scene(tmp_path, t=2.0, wear="wear_K = 1e-9\nhardness_MPa = 18000.0")
+    k_s = wear_coefficient_info(bare)[0]
+    k_c = 1e-9 / 18000e6                      # K / H, m^3/(N m)
+    th = np.radians(np.arange(0.0, 360.0, 1.0))
+    ref, _, _ = scene_wear(bare, th, cycles=1.0)
+    d_s = ref.depth_cam                       # m per revolution with the substrate k
+    d_c = d_s * k_c / k_s
+    N_t = 2e-6 / d_c.max()                    # revolutions to wear through at the deepest point
+    N = 2e-6 / np.median(d_c)                 # half the points worn through, half not
+    wm, _, _ = scene_wear(scene, th, cycles=N)
+    h_ref = _layered(d_c, d_s, 2e-6, N)
+    np.testing.assert_allclose(wm.depth_cam_total, h_ref, rtol=1e-12, atol=1e-18)
+    assert wm.max_depth == pytest.approx(2e-6 + (N - N_t) * d_s.max(), rel=1e-12)
+    assert wm.coating["revolutions_through"] == pytest.approx(N_t, rel=1e-12)
+    assert np.any(h_ref < 2e-6)               # the hard case: both branches are exercised
+    # the roller keeps the substrate k (the coating is on the cam)
+    ref_n, _, _ = scene_wear(bare, th, cycles=N)
+    np.testing.assert_allclose(wm.depth_follower_total, ref_n.depth_follower_total, rtol=1e-12)
+
+
+def test_wear_map_coated_roller_uses_the_drift_averaged_rate(tmp_path):
+    from femcam.wear.scene import scene_wear
+    bare = load_scene(EX + "seed002_study_model.toml")
+    scene = _coated_scene(tmp_path, body="roller", t=1.0, wear="wear_k_mm3_per_N_m = 1e-8")
+    k_s = wear_coefficient_info(bare)[0]
+    th = np.radians(np.arange(0.0, 360.0, 1.0))
+    N = 1e9
+    ref, _, _ = scene_wear(bare, th, cycles=N)
+    d_s = ref.depth_follower_total / N
+    d_c = d_s * 1e-17 / k_s
+    wm, _, _ = scene_wear(scene, th, cycles=N)
+    np.testing.assert_allclose(wm.depth_follower_total, _layered(d_c, d_s, 1e-6, N), rtol=1e-12,
+                               atol=1e-18)
+    assert wm.coating["revolutions_through"] == pytest.approx(1e-6 / d_c.max(), rel=1e-12)
+    np.testing.assert_allclose(wm.depth_cam_total, ref.depth_cam_total, rtol=1e-12)
+
+
+def test_sweep_wear_column_uses_the_coating_k(tmp_path, monkeypatch):
+    # only the coating-wear provider (the layers provider's FE checks are tested above, slow)
+    monkeypatch.setattr(extras, "PROVIDERS", tuple(p for p in extras.PROVIDERS if p.name == "coating_wear"))
+    bare = load_scene(EX + "seed002_study_model.toml")
+    scene = _coated_scene(tmp_path, t=2.0, wear="wear_k_mm3_per_N_m = 1e-8")
+    ratio = 1e-17 / wear_coefficient_info(bare)[0]
+    r0 = sweep(bare, angles=TH8, method="hertz", workers=1)
+    r, cols = _sweep_csv(scene, TH8, tmp_path / "out")
+    ok = cols["status"] == "ok"
+    np.testing.assert_allclose(cols["wear_depth_per_rev_nm"][ok], r0.table["wear_depth"][ok] * ratio * 1e9,
+                               rtol=RTOL)
+    assert set(cols["wear_source"][ok]) == {"hertz;coating"}
+    rec = r.provenance["extras"]["coating_wear"]
+    assert rec["revolutions_through"] == pytest.approx(2e-6 / (r0.table["wear_depth"][ok].max() * ratio),
+                                                       rel=1e-12)

@@ -59,6 +59,7 @@ from ..errors import FemcamError
 from ..halfspace.rows import COLUMNS as HS_COLUMNS
 from ..halfspace.rows import finite_length_rows, strip_for_scene
 from ..layers import scene_layer_rows
+from ..wear.coating import coating_wear
 from ..wear.map import wear_depth_per_angle
 from .cache import default_cache
 from .families import hertz_half_width
@@ -258,6 +259,22 @@ def has_finite_length(scene) -> bool:
     return bool(set(fl) - {"roller_width", "cam_width"}) or any(w != scene.length for w in widths)
 
 
+def _coated_cam(scene) -> bool:
+    cw = coating_wear(scene)
+    return cw is not None and cw.body == "cam"
+
+
+def _coating_wear(task, rows) -> dict:
+    """A coated cam with a coating wear coefficient: the wear column (cam depth per revolution
+    at the contact) with the coating's k, ``wear_source`` gets ``;coating``."""
+    cw = coating_wear(task.scene)
+    depth = np.asarray(rows["wear_depth"], float)
+    src = np.asarray(rows["wear_source"]).astype(str)
+    on = np.isfinite(depth) & (depth > 0)
+    return {"wear_depth": np.where(on, depth * cw.ratio, depth),
+            "wear_source": np.where(on, np.char.add(src, ";coating"), src)}
+
+
 def _has_support(scene) -> bool:
     return (getattr(scene, "bodies", None) or {}).get("support", "solid") != "solid"
 
@@ -270,6 +287,7 @@ PROVIDERS: tuple[Provider, ...] = (
              ASSESS_TEXT, _assess),
     Provider("bodies", _has_support, RING, (), _ring),
     Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), _layers),
+    Provider("coating_wear", _coated_cam, (), (), _coating_wear),
 )
 
 
@@ -358,4 +376,10 @@ def extras_provenance(scene, table) -> dict:
     if "layers" in names:
         out["layers"] = {"interface_utilisation_max": _peak(table, "layer_interface_utilisation", ok),
                          "case_margin_min": _peak(table, "layer_case_margin", ok, np.nanmin)}
+    if "coating_wear" in names:
+        cw = coating_wear(scene)
+        d = _peak(table, "wear_depth", ok)
+        out["coating_wear"] = {"k_coating_m3_per_N_m": cw.k_coating, "k_substrate_m3_per_N_m": cw.k_substrate,
+                               "thickness_m": cw.thickness, "source": cw.source,
+                               "revolutions_through": cw.thickness / d if d > 0 else math.inf}
     return out
