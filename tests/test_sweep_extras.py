@@ -318,3 +318,12 @@ def test_sweep_wear_column_uses_the_coating_k(tmp_path, monkeypatch):
     rec = r.provenance["extras"]["coating_wear"]
     assert rec["revolutions_through"] == pytest.approx(2e-6 / (r0.table["wear_depth"][ok].max() * ratio),
                                                        rel=1e-12)
+
+
+def test_plots_of_the_extra_columns(tmp_path):
+    scene = load_scene(EX + "seed002_assess.toml")
+    r = sweep(scene, angles=TH8, method="hertz", workers=1, out=tmp_path, plots=True)
+    p = r.paths["plot_extras_assess"]
+    assert p.endswith("extras_assess.png")
+    with open(p, "rb") as f:
+        assert f.read(8) == b"\x89PNG\r\n\x1a\n"

@@ -48,6 +48,7 @@ import math
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 
@@ -59,6 +60,7 @@ from ..errors import FemcamError
 from ..halfspace.rows import COLUMNS as HS_COLUMNS
 from ..halfspace.rows import finite_length_rows, strip_for_scene
 from ..layers import scene_layer_rows
+from ..viz.extras import plot_extra_panels
 from ..wear.coating import coating_wear
 from ..wear.map import wear_depth_per_angle
 from .cache import default_cache
@@ -88,6 +90,8 @@ class Provider:
     compute : callable(task, rows) -> dict
         The chunk's values: SI arrays of shape (n,) for ``columns`` and ``text``. May also
         replace sweep columns it documents (``halfspace``: ``wear_depth``, ``wear_source``).
+    panels : tuple of (ylabel, ((SI column, label, factor), ...), log)
+        Plots against cam angle (:func:`femcam.viz.extras.plot_extra_panels`).
     """
 
     name: str
@@ -95,6 +99,7 @@ class Provider:
     columns: tuple
     text: tuple
     compute: Callable
+    panels: tuple = ()
 
 
 # ---------------------------------------------------------------------------------------------
@@ -279,16 +284,62 @@ def _has_support(scene) -> bool:
     return (getattr(scene, "bodies", None) or {}).get("support", "solid") != "solid"
 
 
+MPA = 1e-6
+_HS_PANELS = (("pressure (MPa)", (("hs_p_axial_peak", "axial peak p(x, y) (3D half-space)", MPA),
+                                  ("p0_hertz", "2D Hertz p0 at Fc / length", MPA),
+                                  ("hs_fe_p0", "2D FE p0 at the most loaded slice", MPA)), False),
+              ("load per length (N/mm)", (("hs_w_max", "most loaded slice w_max", 1e-3),), False))
+_ASSESS_PANELS = (("lambda (-)", (("assess_lam", "lambda = h_min / sigma", 1.0),), True),
+                  ("safety factor (-)", (("assess_sf_yield", "first yield", 1.0),
+                                         ("assess_sf_shakedown", "shakedown", 1.0),
+                                         ("assess_sf_subsurface", "subsurface fatigue", 1.0),
+                                         ("assess_sf_surface_fatigue", "surface fatigue", 1.0)), True),
+                  ("temperature (degC)", (("assess_T_contact", "contact temperature", 1.0),), False))
+_RING_PANELS = (("bore hoop stress (MPa)", (("ring_hoop_max", "largest tensile bore hoop stress", MPA),),
+                 False),
+                ("cam-roller p0 (MPa)", (("ring_p0", "ring", MPA), ("ring_p0_solid", "solid roller", MPA)),
+                 False),
+                ("needle load (N)", (("ring_needle_Q_on", "most loaded, needle on the load line", 1.0),
+                                     ("ring_needle_Q_between", "most loaded, load between needles", 1.0)),
+                 False))
+_LAYER_PANELS = (("interface shear (MPa)", (("layer_interface_tau_max_MPa", "max |tau| at the interface",
+                                             MPA),), False),
+                 ("utilisation (-)", (("layer_interface_utilisation", "interface shear / strength", 1.0),
+                                      ("layer_case_utilisation_max", "case: tau1 / k(z) max", 1.0)), False))
+
 #: the table, in the order the providers run (halfspace before assess: the axial peak)
 PROVIDERS: tuple[Provider, ...] = (
     Provider("halfspace", has_finite_length, HALFSPACE, ("hs_flags", "fe_load_basis"),
-             _halfspace),
+             _halfspace, _HS_PANELS),
     Provider("assess", lambda s: "lubricant" in (getattr(s, "tribology", None) or {}), ASSESS,
-             ASSESS_TEXT, _assess),
-    Provider("bodies", _has_support, RING, (), _ring),
-    Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), _layers),
+             ASSESS_TEXT, _assess, _ASSESS_PANELS),
+    Provider("bodies", _has_support, RING, (), _ring, _RING_PANELS),
+    Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), _layers, _LAYER_PANELS),
     Provider("coating_wear", _coated_cam, (), (), _coating_wear),
 )
+
+
+def plot_extras(scene, table, out) -> dict[str, str]:
+    """One PNG per applicable provider with panels, ``out/plots/extras_<name>.png`` (rows that
+    are not ``ok`` are left out).
+
+    Returns
+    -------
+    dict[str, str]
+        ``{"plot_extras_<name>": path}``.
+    """
+    ok = np.asarray(table["status"]).astype(str) == "ok"
+    paths = {}
+    for p in providers_for(scene):
+        if not p.panels:
+            continue
+        panels = [(ylabel, [(label, np.where(ok, np.asarray(table[c], float) * f, np.nan))
+                            for c, label, f in series if c in table], log)
+                  for ylabel, series, log in p.panels]
+        path = Path(out) / "plots" / f"extras_{p.name}.png"
+        paths[f"plot_extras_{p.name}"] = str(plot_extra_panels(table["theta"], panels, path,
+                                                               title=f"{scene.name}: {p.name}"))
+    return paths
 
 
 def providers_for(scene) -> tuple[Provider, ...]:

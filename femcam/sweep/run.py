@@ -28,7 +28,7 @@ from ..io import (
 from ..scene import Scene, load_scene
 from ..viz.sweep import plot_sweep
 from .cache import default_cache
-from .extras import extra_columns, extras_provenance
+from .extras import extra_columns, extras_provenance, plot_extras
 from .families import FamilyRecord, verify_families
 from .options import SweepOptions, contact_params
 from .parallel import AUTO_VTU_S, Progress, auto_workers, run_tasks
@@ -360,6 +360,7 @@ def _write_outputs(result: SweepResult, run: _Run, plots: bool, src_path=None,
         result = _with_plot_data(result, run)
         try:
             paths.update(plot_sweep(result, out))
+            paths.update(plot_extras(run.scene, result.table, out))
         except ImportError as exc:  # pragma: no cover - matplotlib missing
             raise InputError(f"plots = True: {exc}") from None
     return result
