@@ -334,8 +334,12 @@ def plot_extras(scene, table, out) -> dict[str, str]:
         if not p.panels:
             continue
         panels = [(ylabel, [(label, np.where(ok, np.asarray(table[c], float) * f, np.nan))
-                            for c, label, f in series if c in table], log)
+                            for c, label, f in series
+                            if c in table and np.any(np.isfinite(np.asarray(table[c], float)[ok]))], log)
                   for ylabel, series, log in p.panels]
+        panels = [q for q in panels if q[1]]
+        if not panels:
+            continue
         path = Path(out) / "plots" / f"extras_{p.name}.png"
         paths[f"plot_extras_{p.name}"] = str(plot_extra_panels(table["theta"], panels, path,
                                                                title=f"{scene.name}: {p.name}"))
