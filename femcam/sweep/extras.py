@@ -18,9 +18,11 @@ provider       applies when                                 columns (CSV)
 ``bodies``     ``roller_support`` is ``pin``/``needles``    ``ring_p0_MPa``, ``bore_hoop_max_MPa``,
                                                             ``pin_p0_MPa``, ``needle_Qmax_on_N``, ...
 ``layers``     ``scene.layers`` non-empty                   ``interface_tau_max_MPa``, ``case_margin``, ...
+``coating_``   a coated cam with ``wear_k_mm3_per_N_m`` or  (none: the wear column uses the coating's k,
+``wear``       ``wear_K`` (:mod:`femcam.wear.coating`)      ``wear_source`` gets ``;coating``)
 =============  ===========================================  ==============================================
 
-Finite length (Johnson 1985 §5.7 for the slice model of a line contact):
+Finite length (the axial slices of :mod:`femcam.halfspace.strip`):
 
 * the 2D FE answers again at the most loaded slice with that slice's load per unit length
   (method fe): ``F = w_max * length``, columns ``fe_slice_F_N``, ``fe_slice_a_um``,
