@@ -191,22 +191,30 @@ def _fe_slice(task, rows, out) -> None:
     status = np.asarray(rows["status"]).astype(str)
     for i in np.flatnonzero((status == "ok") & np.isfinite(out["hs_w_max"])):
         F, rho = float(out["hs_w_max"][i]) * cp.length, float(rows["rho"][i])
-        fid = int(task.family[i]) if task.family.size else -1
-        model = cache.model_for(cp, *task.refs[fid], task.options) if fid in task.refs else None
-        if model is None or not model.covers(F, rho):
-            a_i = float(hertz_half_width(np.array([F]), np.array([rho]), cp)[0])
-            model = cache.model_for(cp, rho, a_i, task.options)
         try:
-            r = cache.solve(model, F, rho, cp.mu, cp.sliding, check=False)
-        except FemcamError:
+            r = _solve_slice(task, cp, cache, i, F, rho)
+        except (FemcamError, ValueError, ArithmeticError, RuntimeError, MemoryError) as exc:
+            out["fe_load_basis"][i] = f"w_max*length: failed: {type(exc).__name__}: {exc}"
             continue
         if not r.converged:
+            out["fe_load_basis"][i] = f"w_max*length: not converged ({r.iterations} iterations)"
             continue
         for si, v in (("hs_fe_F", F), ("hs_fe_a", r.a), ("hs_fe_p0", r.p0),
                       ("hs_fe_vm_max", r.von_mises_max.value), ("hs_fe_tau1_max", r.tau1_max.value),
                       ("hs_fe_txz_absmax", float(np.abs(r.txz).max()) if r.txz.size else np.nan)):
             out[si][i] = v
         out["fe_load_basis"][i] = "w_max*length"
+
+
+def _solve_slice(task, cp, cache, i: int, F: float, rho: float):
+    """Row ``i`` at load ``F`` (N): its family's model if it covers ``(F, rho)``, else one of
+    its own (sized by the Hertz half-width at ``F``), as the chunk runner does."""
+    fid = int(task.family[i]) if task.family.size else -1
+    model = cache.model_for(cp, *task.refs[fid], task.options) if fid in task.refs else None
+    if model is None or not model.covers(F, rho):
+        a_i = float(hertz_half_width(np.array([F]), np.array([rho]), cp)[0])
+        model = cache.model_for(cp, rho, a_i, task.options)
+    return cache.solve(model, F, rho, cp.mu, cp.sliding, check=False)
 
 
 def _halfspace(task, rows) -> dict:

@@ -28,7 +28,7 @@ from .result import NUMERIC, TEXT_COLUMNS, extra_keys
 
 MANIFEST = "manifest.json"
 PLAN = "plan.json"
-FORMAT_VERSION = 2  # 2: wear and build-time columns, plan.json
+FORMAT_VERSION = 3  # 2: wear and build-time columns, plan.json; 3: extra provider columns
 
 
 def array_hash(arr) -> str:
