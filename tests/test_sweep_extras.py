@@ -83,6 +83,8 @@ def test_assess_columns_equal_direct_call(tmp_path):
         assert prov[crit]["value"] == pytest.approx(v, rel=1e-12)
         assert prov[crit]["theta_deg"] == pytest.approx(math.degrees(t), abs=1e-9)
     assert r.summary()["extras"]["providers"] == ["assess"]
+    _, header = read_csv(r.paths["csv"])
+    assert '"providers": ["assess"]' in header["extras"]      # the CSV header says which ran
 
 
 @pytest.mark.slow
