@@ -25,7 +25,7 @@ from femcam.halfspace.rows import finite_length_rows
 from femcam.io import read_csv
 from femcam.layers import scene_layer_rows
 from femcam.scene import load_scene
-from femcam.sweep import extras, sweep
+from femcam.sweep import extras, providers, sweep
 from femcam.wear.options import wear_coefficient_info
 
 EX = "examples/"
@@ -151,14 +151,14 @@ def test_needle_roller_sweep_writes_ring_results(tmp_path):
 def test_ring_model_is_built_once_per_process():
     scene = load_scene(EX + "seed002_needle_roller.toml")
     calls = []
-    extras._CACHE.pop(("ring", repr(scene)), None)
-    orig = extras.build_for
+    providers._CACHE.pop(("ring", repr(scene)), None)
+    orig = providers.build_for
     try:
-        extras.build_for = lambda *a, **k: calls.append(1) or object()
-        m1, m2 = extras.ring_model(scene), extras.ring_model(scene)
+        providers.build_for = lambda *a, **k: calls.append(1) or object()
+        m1, m2 = providers.ring_model(scene), providers.ring_model(scene)
     finally:
-        extras.build_for = orig
-        extras._CACHE.pop(("ring", repr(scene)), None)
+        providers.build_for = orig
+        providers._CACHE.pop(("ring", repr(scene)), None)
     assert m1 is m2 and calls == [1]
 
 
@@ -169,7 +169,7 @@ def test_layer_columns_equal_direct_call(tmp_path):
     th = np.radians([0.0, 130.0])
     r, cols = _sweep_csv(scene, th, tmp_path)
     direct = scene_layer_rows(scene, th, a_over_h=10.0)
-    for _, csv, _ in extras.LAYERS:
+    for _, csv, _ in providers.LAYERS:
         _close(cols[csv], direct[csv])
     assert r.provenance["extras"]["layers"]["case_margin_min"] == pytest.approx(
         np.nanmin(direct["case_margin"]), rel=1e-12)

@@ -41,13 +41,12 @@ Finite length (the axial slices of :mod:`femcam.halfspace.strip`):
 A provider that the physics refuses for a documented reason (a :class:`~femcam.errors.FemcamError`)
 leaves its columns NaN and writes the reason in the text column ``extras_error``; it never stops
 the contact sweep. Models are built once per process (the ring model does not pickle; its rows
-do): :data:`_CACHE`, keyed by the scene's ``repr``.
+do): ``femcam.sweep.providers.ring_model`` and ``strip_model``, keyed by the scene's ``repr``.
 """
 
 from __future__ import annotations
 
 import math
-import threading
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -55,25 +54,35 @@ from pathlib import Path
 import numpy as np
 
 from ..assess import COLUMNS as ASSESS_COLUMNS
-from ..assess import assess_rows, worst_angles
-from ..bodies.rows import CSV_COLUMNS as RING_COLUMNS
-from ..bodies.rows import build_for, ring_rows
+from ..assess import worst_angles
 from ..errors import FemcamError
-from ..halfspace.rows import COLUMNS as HS_COLUMNS
-from ..halfspace.rows import finite_length_rows, strip_for_scene
-from ..layers import scene_layer_rows
 from ..viz.extras import plot_extra_panels
 from ..wear.coating import coating_wear
-from ..wear.map import wear_depth_per_angle
-from .cache import default_cache
-from .families import hertz_half_width
-from .options import contact_params
+from .providers import (
+    ASSESS,
+    ASSESS_PANELS,
+    ASSESS_SKIP,
+    ASSESS_TEXT,
+    HALFSPACE,
+    HS_PANELS,
+    LAYER_PANELS,
+    LAYERS,
+    RING,
+    RING_PANELS,
+    assess_chunk,
+    assess_name,
+    coated_cam,
+    coating_wear_chunk,
+    halfspace_chunk,
+    has_finite_length,
+    has_support,
+    layers_chunk,
+    ring_chunk,
+)
 
 Column = tuple[str, str, float]
 #: text column of every sweep with providers: ``"<provider>: <reason>"`` where one was refused
 ERROR_COLUMN = "extras_error"
-#: angles of the revolution on which per-process models are graded (independent of chunking)
-_GRID = np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False)
 
 
 @dataclass(frozen=True)
@@ -104,228 +113,15 @@ class Provider:
     panels: tuple = ()
 
 
-# ---------------------------------------------------------------------------------------------
-# per-process models
-# ---------------------------------------------------------------------------------------------
-_CACHE: dict = {}
-_LOCK = threading.RLock()
-
-
-def _cached(kind: str, scene, build: Callable):
-    """``build()`` once per process for ``(kind, repr(scene))``."""
-    key = (kind, repr(scene))
-    with _LOCK:
-        if key not in _CACHE:
-            _CACHE[key] = build()
-        return _CACHE[key]
-
-
-def ring_model(scene):
-    """The scene's ring model (:func:`femcam.bodies.rows.build_for`), graded for the largest
-    contact force over one revolution (720 angles), built once per process: the rows then do
-    not depend on how the sweep is chunked."""
-    def build():
-        st = scene.analyse(_GRID)
-        Fc = np.where(np.asarray(st.Fc) > 0, st.Fc, np.nan)
-        return build_for(scene, Fc, np.asarray(st.rho, float))
-    return _cached("ring", scene, build)
-
-
-def strip_model(scene):
-    """The scene's :class:`~femcam.halfspace.strip.FiniteLengthContact` (kernel FFTs), once per
-    process."""
-    return _cached("strip", scene, lambda: strip_for_scene(scene))
-
-
-# ---------------------------------------------------------------------------------------------
-# providers
-# ---------------------------------------------------------------------------------------------
-def _prefixed(name: str) -> str:
-    return f"assess_{name}"
-
-
-_ASSESS_SKIP = ("theta", "Fc")
-ASSESS = tuple((_prefixed(si), csv if csv not in ("a_um", "p0_MPa") else f"assess_{csv}", f)
-               for si, csv, f in ASSESS_COLUMNS if si not in _ASSESS_SKIP)
-ASSESS_TEXT = ("assess_regime", "assess_flags", "assess_source")
-#: the 2D FE at the most loaded slice (method fe): F = w_max * length
-FE_SLICE = (("hs_fe_F", "fe_slice_F_N", 1.0), ("hs_fe_a", "fe_slice_a_um", 1e6),
-            ("hs_fe_p0", "fe_slice_p0_MPa", 1e-6), ("hs_fe_vm_max", "fe_slice_vm_max_MPa", 1e-6),
-            ("hs_fe_tau1_max", "fe_slice_tau1_max_MPa", 1e-6),
-            ("hs_fe_txz_absmax", "fe_slice_txz_absmax_MPa", 1e-6))
-HALFSPACE = tuple((f"hs_{k}", csv, f) for k, (csv, f) in HS_COLUMNS.items()) + FE_SLICE
-RING = tuple((f"ring_{k}", csv, f) for k, (csv, f) in RING_COLUMNS.items() if k != "theta")
-LAYER_CSV = (("interface_tau_max_MPa", 1e-6), ("interface_sn_min_MPa", 1e-6),
-             ("interface_sn_max_MPa", 1e-6), ("interface_utilisation", 1.0),
-             ("coating_sx_max_MPa", 1e-6), ("coating_sx_utilisation", 1.0),
-             ("case_utilisation_max", 1.0), ("case_z_at_max_mm", 1e3), ("case_margin", 1.0))
-LAYERS = tuple((f"layer_{csv}", csv, f) for csv, f in LAYER_CSV)
-
-
-def axial_contact(rows) -> tuple[np.ndarray, np.ndarray]:
-    """``(a, p0)`` (m, Pa) of the most loaded slice of a finite-length contact: ``p0 =
-    p_axial_peak`` and ``a = 2 w_max / (pi p_axial_peak)``, so ``pi a p0 / 2 = w_max``.
-
-    >>> a, p0 = axial_contact({"hs_p_axial_peak": np.array([1e9]), "hs_w_max": np.array([1e5])})
-    >>> round(float(a[0]) * 1e6, 3), float(p0[0])
-    (63.662, 1000000000.0)
-    """
-    p = np.asarray(rows["hs_p_axial_peak"], float)
-    w = np.asarray(rows["hs_w_max"], float)
-    ok = np.isfinite(p) & np.isfinite(w) & (p > 0)
-    a = np.where(ok, 2.0 * w / (np.pi * np.where(ok, p, 1.0)), np.nan)
-    return a, np.where(ok, p, np.nan)
-
-
-def _fe_slice(task, rows, out) -> None:
-    """The 2D FE at the most loaded slice: ``F = w_max * length`` at every ``ok`` row (method
-    fe), with the family's model where it covers that load, else a model of the angle's own (as
-    the chunk runner does), through the process's :class:`~femcam.sweep.cache.ModelCache`."""
-    n = rows["theta"].size
-    for si, _, _ in FE_SLICE:
-        out[si] = np.full(n, np.nan)
-    out["fe_load_basis"] = np.full(n, "", dtype=object)
-    if task.options.method != "fe":
-        return
-    cp, cache = contact_params(task.scene), default_cache()
-    status = np.asarray(rows["status"]).astype(str)
-    for i in np.flatnonzero((status == "ok") & np.isfinite(out["hs_w_max"])):
-        F, rho = float(out["hs_w_max"][i]) * cp.length, float(rows["rho"][i])
-        try:
-            r = _solve_slice(task, cp, cache, i, F, rho)
-        except (FemcamError, ValueError, ArithmeticError, RuntimeError, MemoryError) as exc:
-            out["fe_load_basis"][i] = f"w_max*length: failed: {type(exc).__name__}: {exc}"
-            continue
-        if not r.converged:
-            out["fe_load_basis"][i] = f"w_max*length: not converged ({r.iterations} iterations)"
-            continue
-        for si, v in (("hs_fe_F", F), ("hs_fe_a", r.a), ("hs_fe_p0", r.p0),
-                      ("hs_fe_vm_max", r.von_mises_max.value), ("hs_fe_tau1_max", r.tau1_max.value),
-                      ("hs_fe_txz_absmax", float(np.abs(r.txz).max()) if r.txz.size else np.nan)):
-            out[si][i] = v
-        out["fe_load_basis"][i] = "w_max*length"
-
-
-def _solve_slice(task, cp, cache, i: int, F: float, rho: float):
-    """Row ``i`` at load ``F`` (N): its family's model if it covers ``(F, rho)``, else one of
-    its own (sized by the Hertz half-width at ``F``), as the chunk runner does."""
-    fid = int(task.family[i]) if task.family.size else -1
-    model = cache.model_for(cp, *task.refs[fid], task.options) if fid in task.refs else None
-    if model is None or not model.covers(F, rho):
-        a_i = float(hertz_half_width(np.array([F]), np.array([rho]), cp)[0])
-        model = cache.model_for(cp, rho, a_i, task.options)
-    return cache.solve(model, F, rho, cp.mu, cp.sliding, check=False)
-
-
-def _halfspace(task, rows) -> dict:
-    r = finite_length_rows(task.scene, task.theta, strip=strip_model(task.scene))
-    out = {f"hs_{k}": np.asarray(r[k], float) for k in HS_COLUMNS}
-    out["hs_flags"] = np.array([";".join(f) for f in r["flags"]], dtype=object)
-    _fe_slice(task, rows, out)
-    if task.slip is not None and math.isfinite(task.wear_k):
-        a, p0 = axial_contact(out)
-        use = np.isfinite(a) & (np.asarray(rows["status"]).astype(str) == "ok")
-        depth = wear_depth_per_angle(rows["theta"], np.where(use, a, 0.0), np.where(use, p0, 0.0),
-                                     np.where(use, rows["Fc"], 0.0), task.slip, task.wear_k)
-        out["wear_depth"] = np.where(use, depth, rows["wear_depth"])
-        out["wear_source"] = np.where(use, "axial_peak", np.asarray(rows["wear_source"]).astype(str))
-    return out
-
-
-def _assess(task, rows) -> dict:
-    table = {"a_fe": rows["a_fe"], "p0_fe": rows["p0_fe"], "tau1_max": rows["tau1_max"],
-             "txz_absmax": rows["txz_absmax"]}
-    axial = "hs_p_axial_peak" in rows
-    if axial:  # finite length: the most loaded slice, Hertz shape factors at its p0
-        a, p0 = axial_contact(rows)
-        table = {"a_fe": a, "p0_fe": p0, "tau1_max": rows["hs_fe_tau1_max"],
-                 "txz_absmax": rows["hs_fe_txz_absmax"]}
-    r = assess_rows(task.scene, task.theta, table=table)
-    out = {_prefixed(si): np.asarray(r[si], float) for si, _, _ in ASSESS_COLUMNS if si not in _ASSESS_SKIP}
-    src = np.asarray(r["source"]).astype(str)
-    if axial:
-        src = np.where(src == "fe", "axial_peak", src)
-    out.update(assess_regime=np.asarray(r["regime"]).astype(str),
-               assess_flags=np.asarray(r["flags"]).astype(str), assess_source=src)
-    return out
-
-
-def _ring(task, rows) -> dict:
-    Fc = np.where(np.asarray(rows["status"]).astype(str) == "liftoff", 0.0, rows["Fc"])
-    r = ring_rows(task.scene, task.theta, Fc, rows["rho"], model=ring_model(task.scene))
-    return {f"ring_{k}": np.asarray(r[k], float) for k in RING_COLUMNS if k != "theta"}
-
-
-def _layers(task, rows) -> dict:
-    r = scene_layer_rows(task.scene, task.theta, a_over_h=task.options.a_over_h)
-    n = task.theta.size
-    return {si: np.asarray(r.get(csv, np.full(n, np.nan)), float) / f for si, csv, f in LAYERS}
-
-
-def has_finite_length(scene) -> bool:
-    """True when the scene asks for the finite-length contact: a crown, edge radius or
-    misalignment key, or a roller or cam width that differs from the 2D contact length. (The
-    scene fills ``finite_length`` with both widths for every roller scene with a face width, so
-    non-empty alone does not mean asked for.)"""
-    fl = getattr(scene, "finite_length", None) or {}
-    if not fl:
-        return False
-    widths = (fl.get("roller_width", scene.length), fl.get("cam_width", scene.length))
-    return bool(set(fl) - {"roller_width", "cam_width"}) or any(w != scene.length for w in widths)
-
-
-def _coated_cam(scene) -> bool:
-    cw = coating_wear(scene)
-    return cw is not None and cw.body == "cam"
-
-
-def _coating_wear(task, rows) -> dict:
-    """A coated cam with a coating wear coefficient: the wear column (cam depth per revolution
-    at the contact) with the coating's k, ``wear_source`` gets ``;coating``."""
-    cw = coating_wear(task.scene)
-    depth = np.asarray(rows["wear_depth"], float)
-    src = np.asarray(rows["wear_source"]).astype(str)
-    on = np.isfinite(depth) & (depth > 0)
-    return {"wear_depth": np.where(on, depth * cw.ratio, depth),
-            "wear_source": np.where(on, np.char.add(src, ";coating"), src)}
-
-
-def _has_support(scene) -> bool:
-    return (getattr(scene, "bodies", None) or {}).get("support", "solid") != "solid"
-
-
-MPA = 1e-6
-_HS_PANELS = (("pressure (MPa)", (("hs_p_axial_peak", "axial peak p(x, y) (3D half-space)", MPA),
-                                  ("p0_hertz", "2D Hertz p0 at Fc / length", MPA),
-                                  ("hs_fe_p0", "2D FE p0 at the most loaded slice", MPA)), False),
-              ("load per length (N/mm)", (("hs_w_max", "most loaded slice w_max", 1e-3),), False))
-_ASSESS_PANELS = (("lambda (-)", (("assess_lam", "lambda = h_min / sigma", 1.0),), True),
-                  ("safety factor (-)", (("assess_sf_yield", "first yield", 1.0),
-                                         ("assess_sf_shakedown", "shakedown", 1.0),
-                                         ("assess_sf_subsurface", "subsurface fatigue", 1.0),
-                                         ("assess_sf_surface_fatigue", "surface fatigue", 1.0)), True),
-                  ("temperature (degC)", (("assess_T_contact", "contact temperature", 1.0),), False))
-_RING_PANELS = (("bore hoop stress (MPa)", (("ring_hoop_max", "largest tensile bore hoop stress", MPA),),
-                 False),
-                ("cam-roller p0 (MPa)", (("ring_p0", "ring", MPA), ("ring_p0_solid", "solid roller", MPA)),
-                 False),
-                ("needle load (N)", (("ring_needle_Q_on", "most loaded, needle on the load line", 1.0),
-                                     ("ring_needle_Q_between", "most loaded, load between needles", 1.0)),
-                 False))
-_LAYER_PANELS = (("interface shear (MPa)", (("layer_interface_tau_max_MPa", "max |tau| at the interface",
-                                             MPA),), False),
-                 ("utilisation (-)", (("layer_interface_utilisation", "interface shear / strength", 1.0),
-                                      ("layer_case_utilisation_max", "case: tau1 / k(z) max", 1.0)), False))
-
 #: the table, in the order the providers run (halfspace before assess: the axial peak)
 PROVIDERS: tuple[Provider, ...] = (
     Provider("halfspace", has_finite_length, HALFSPACE, ("hs_flags", "fe_load_basis"),
-             _halfspace, _HS_PANELS),
+             halfspace_chunk, HS_PANELS),
     Provider("assess", lambda s: "lubricant" in (getattr(s, "tribology", None) or {}), ASSESS,
-             ASSESS_TEXT, _assess, _ASSESS_PANELS),
-    Provider("bodies", _has_support, RING, (), _ring, _RING_PANELS),
-    Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), _layers, _LAYER_PANELS),
-    Provider("coating_wear", _coated_cam, (), (), _coating_wear),
+             ASSESS_TEXT, assess_chunk, ASSESS_PANELS),
+    Provider("bodies", has_support, RING, (), ring_chunk, RING_PANELS),
+    Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), layers_chunk, LAYER_PANELS),
+    Provider("coating_wear", coated_cam, (), (), coating_wear_chunk),
 )
 
 
@@ -425,8 +221,8 @@ def extras_provenance(scene, table) -> dict:
     ok = np.asarray(table["status"]).astype(str) == "ok"
     names = [p.name for p in ps]
     if "assess" in names:
-        rows = {si: np.asarray(table[_prefixed(si)], float) for si, _, _ in ASSESS_COLUMNS
-                if si not in _ASSESS_SKIP}
+        rows = {si: np.asarray(table[assess_name(si)], float) for si, _, _ in ASSESS_COLUMNS
+                if si not in ASSESS_SKIP}
         rows.update(theta=table["theta"], Fc=np.where(ok, table["Fc"], 0.0))
         out["assess"] = {c: {"value": v, "theta_deg": math.degrees(t)}
                          for c, (v, t, _) in worst_angles(rows).items()}
