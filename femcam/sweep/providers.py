@@ -145,10 +145,20 @@ def _solve_slice(task, cp, cache, i: int, F: float, rho: float):
     return cache.solve(model, F, rho, cp.mu, cp.sliding, check=False)
 
 
+def halfspace_rows(scene, theta) -> dict:
+    """The half-space columns at ``theta`` (rad), each angle solved from a cold start
+    (:func:`femcam.halfspace.rows.finite_length_rows` of that angle alone): the rows then do not
+    depend on how the sweep is chunked or on the order of the angles (a warm start from the
+    previous angle changes the answer within the solver tolerance and the CG iterations)."""
+    strip = strip_model(scene)
+    parts = [finite_length_rows(scene, np.atleast_1d(t), strip=strip) for t in np.asarray(theta, float)]
+    out = {f"hs_{k}": np.array([float(r[k][0]) for r in parts]) for k in HS_COLUMNS}
+    out["hs_flags"] = np.array([";".join(r["flags"][0]) for r in parts], dtype=object)
+    return out
+
+
 def halfspace_chunk(task, rows) -> dict:
-    r = finite_length_rows(task.scene, task.theta, strip=strip_model(task.scene))
-    out = {f"hs_{k}": np.asarray(r[k], float) for k in HS_COLUMNS}
-    out["hs_flags"] = np.array([";".join(f) for f in r["flags"]], dtype=object)
+    out = halfspace_rows(task.scene, task.theta)
     _fe_slice(task, rows, out)
     if task.slip is not None and math.isfinite(task.wear_k):
         a, p0 = axial_contact(out)
