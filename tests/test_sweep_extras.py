@@ -347,3 +347,19 @@ def test_extra_columns_parallel_equal_serial():
         np.testing.assert_allclose(r2.table[si], r1.table[si], rtol=1e-12, equal_nan=True)
     for t in text:
         assert list(r2.table[t]) == list(r1.table[t])
+
+
+def test_undercut_rows_are_left_out_of_the_providers():
+    """An undercut row (the roller does not fit the concave cam) has no contact solution: the
+    assessment is NaN there and the other rows equal the direct call at their angles."""
+    import types
+    scene = load_scene(EX + "seed002_assess.toml")
+    r = sweep(scene, angles=TH8[:4], method="hertz", workers=1)
+    rows = {k: np.array(v, dtype=object if v.dtype.kind in "US" else float) for k, v in r.table.items()}
+    rows["status"][1] = "undercut"
+    task = types.SimpleNamespace(scene=scene, theta=TH8[:4])
+    out = providers.assess_chunk(task, rows)
+    keep = np.array([0, 2, 3])
+    direct = assess_rows(scene, TH8[:4][keep])
+    assert np.isnan(out["assess_lam"][1]) and out["assess_regime"][1] == ""
+    np.testing.assert_allclose(out["assess_lam"][keep], direct["lam"], rtol=1e-12)

@@ -171,6 +171,8 @@ def halfspace_chunk(task, rows) -> dict:
 
 
 def assess_chunk(task, rows) -> dict:
+    """The assessment of the chunk's angles except undercut ones (no contact solution: NaN and
+    empty text there), with the sweep's FE (or the most loaded slice's) contact as its table."""
     table = {"a_fe": rows["a_fe"], "p0_fe": rows["p0_fe"], "tau1_max": rows["tau1_max"],
              "txz_absmax": rows["txz_absmax"]}
     axial = "hs_p_axial_peak" in rows
@@ -178,26 +180,47 @@ def assess_chunk(task, rows) -> dict:
         a, p0 = axial_contact(rows)
         table = {"a_fe": a, "p0_fe": p0, "tau1_max": rows["hs_fe_tau1_max"],
                  "txz_absmax": rows["hs_fe_txz_absmax"]}
-    r = assess_rows(task.scene, task.theta, table=table)
-    out = {assess_name(si): np.asarray(r[si], float) for si, _, _ in ASSESS_COLUMNS if si not in ASSESS_SKIP}
+    n = task.theta.size
+    idx = np.flatnonzero(np.asarray(rows["status"]).astype(str) != "undercut")
+    out = {assess_name(si): np.full(n, np.nan) for si, _, _ in ASSESS_COLUMNS if si not in ASSESS_SKIP}
+    out.update({t: np.full(n, "", dtype=object) for t in ASSESS_TEXT})
+    if idx.size == 0:
+        return out
+    r = assess_rows(task.scene, task.theta[idx], table={k: np.asarray(v)[idx] for k, v in table.items()})
+    for si, _, _ in ASSESS_COLUMNS:
+        if si not in ASSESS_SKIP:
+            out[assess_name(si)][idx] = r[si]
     src = np.asarray(r["source"]).astype(str)
     if axial:
         src = np.where(src == "fe", "axial_peak", src)
-    out.update(assess_regime=np.asarray(r["regime"]).astype(str),
-               assess_flags=np.asarray(r["flags"]).astype(str), assess_source=src)
+    for name, v in (("assess_regime", r["regime"]), ("assess_flags", r["flags"]), ("assess_source", src)):
+        out[name][idx] = np.asarray(v).astype(str)
     return out
 
 
+def _contact_rows(rows) -> np.ndarray:
+    """Rows with a contact solution to build on: ``ok``, or ``failed`` (the FE failed there, the
+    contact exists); lift-off and undercut rows (the roller does not fit) get NaN."""
+    status = np.asarray(rows["status"]).astype(str)
+    return (status == "ok") | (status == "failed")
+
+
 def ring_chunk(task, rows) -> dict:
-    Fc = np.where(np.asarray(rows["status"]).astype(str) == "liftoff", 0.0, rows["Fc"])
+    Fc = np.where(_contact_rows(rows), rows["Fc"], 0.0)   # ring_rows: Fc <= 0 -> NaN row
     r = ring_rows(task.scene, task.theta, Fc, rows["rho"], model=ring_model(task.scene))
     return {f"ring_{k}": np.asarray(r[k], float) for k in RING_COLUMNS if k != "theta"}
 
 
 def layers_chunk(task, rows) -> dict:
-    r = scene_layer_rows(task.scene, task.theta, a_over_h=task.options.a_over_h)
     n = task.theta.size
-    return {si: np.asarray(r.get(csv, np.full(n, np.nan)), float) / f for si, csv, f in LAYERS}
+    out = {si: np.full(n, np.nan) for si, _, _ in LAYERS}
+    idx = np.flatnonzero(_contact_rows(rows))
+    if idx.size:
+        r = scene_layer_rows(task.scene, task.theta[idx], a_over_h=task.options.a_over_h)
+        for si, csv, f in LAYERS:
+            if csv in r:
+                out[si][idx] = np.asarray(r[csv], float) / f
+    return out
 
 
 def has_finite_length(scene) -> bool:
