@@ -25,7 +25,6 @@ from __future__ import annotations
 import csv
 import datetime as _dt
 import importlib
-import io as _io
 import json
 import os
 import platform
@@ -38,7 +37,7 @@ from xml.sax.saxutils import escape, quoteattr
 
 import numpy as np
 
-from .fe.export import scene_arrays
+from .fe.export import scene_arrays, stress_tensor, vtk_point_data
 from .hertz import LineContact
 
 #: one column of a written table: (internal SI name, CSV column name, factor SI -> CSV unit)
@@ -174,13 +173,19 @@ def _header_lines(prov: dict) -> list[str]:
 _CSV_TEXT = str.maketrans({",": ";", "#": "No.", '"': "'", "\n": " ", "\r": " "})
 
 
-def csv_text(value) -> str:
-    """A text field as written to the CSV: no ``,``, ``#``, quotes or line breaks.
+#: an empty text field as written to the CSV: ``numpy.genfromtxt(..., dtype=None)`` reads a
+#: column of empty fields as bool, a column with ``-`` as text (:func:`read_csv` maps it back)
+CSV_EMPTY = "-"
 
-    >>> csv_text('a, "b" #1')
-    "a; 'b' No.1"
+
+def csv_text(value) -> str:
+    """A text field as written to the CSV: no ``,``, ``#``, quotes or line breaks; an empty
+    field is :data:`CSV_EMPTY`.
+
+    >>> csv_text('a, "b" #1'), csv_text("")
+    ("a; 'b' No.1", '-')
     """
-    return str(value).translate(_CSV_TEXT)
+    return str(value).translate(_CSV_TEXT) or CSV_EMPTY
 
 
 def write_csv(path, table: dict, prov: dict | None = None, *, columns: Sequence[Column],
@@ -206,17 +211,21 @@ def write_csv(path, table: dict, prov: dict | None = None, *, columns: Sequence[
         ``path``.
     """
     path = Path(path)
-    buf = _io.StringIO()
     names = [c[1] for c in columns] + list(text_columns)
-    buf.write(",".join(names) + "\n")  # first line: numpy.genfromtxt(names=True) reads it
-    for line in _header_lines(prov or {}):
-        buf.write(line + "\n")
+    head = [",".join(names)] + _header_lines(prov or {})  # line 1: genfromtxt(names=True)
     n = len(table["theta"])
-    cols = [np.asarray(table[k], dtype=float) * f for k, _, f in columns]
-    text = [[csv_text(v) for v in np.asarray(table[k]).astype(str)] for k in text_columns]
-    for i in range(n):
-        buf.write(",".join([f"{c[i]:.10g}" for c in cols] + [t[i] for t in text]) + "\n")
-    atomic_write_text(path, buf.getvalue())
+
+    def write(f, block: int = 2000):  # in blocks of rows: memory independent of n
+        f.write(("\n".join(head) + "\n").encode())
+        for a in range(0, n, block):
+            b = min(a + block, n)
+            cols = [np.asarray(table[k][a:b], dtype=float) * fac for k, _, fac in columns]
+            text = [[csv_text(v) for v in np.asarray(table[k][a:b]).astype(str)]
+                    for k in text_columns]
+            f.write("".join(",".join([f"{c[i]:.10g}" for c in cols] + [t[i] for t in text]) + "\n"
+                            for i in range(b - a)).encode())
+
+    atomic_write_bytes(path, write)
     return path
 
 
@@ -255,12 +264,13 @@ def read_csv(path) -> tuple[dict, dict]:
         try:
             cols[name] = np.array(vals, dtype=float)
         except ValueError:
-            cols[name] = np.array(vals, dtype=str)
+            cols[name] = np.array(["" if v == CSV_EMPTY else v for v in vals], dtype=str)
     return cols, header
 
 
 def write_npz(path, table: dict, prov: dict | None = None, *, numeric: Sequence[str],
-              text_columns: Sequence[str] = (), scene_toml: str = "", scene_repr: str = "") -> Path:
+              text_columns: Sequence[str] = (), integer_columns: Sequence[str] = (),
+              scene_toml: str = "", scene_repr: str = "", extra: dict | None = None) -> Path:
     """The table in SI units (internal names) plus provenance and scene text; atomic.
 
     Parameters
@@ -273,8 +283,12 @@ def write_npz(path, table: dict, prov: dict | None = None, *, numeric: Sequence[
         Provenance, stored as the JSON string ``provenance_json``.
     numeric, text_columns : sequence of str
         Names of the float and the string columns to store.
+    integer_columns : sequence of str
+        Those of ``numeric`` stored as int64 (counts, ids), with -1 where the table has NaN.
     scene_toml, scene_repr : str
         The scene file's text and the parsed scene's ``repr``.
+    extra : dict[str, ndarray], optional
+        More arrays stored as they are (e.g. the plots' data, so a reloaded sweep re-plots).
 
     Returns
     -------
@@ -282,11 +296,14 @@ def write_npz(path, table: dict, prov: dict | None = None, *, numeric: Sequence[
         ``path``.
     """
     arrays = {k: np.asarray(table[k], dtype=float) for k in numeric if k in table}
+    for k in set(integer_columns) & set(arrays):  # counts and ids: int64, -1 where undefined (NaN)
+        arrays[k] = np.where(np.isfinite(arrays[k]), arrays[k], -1).astype(np.int64)
     for k in text_columns:
         arrays[k] = np.asarray(table[k]).astype(str)
     arrays["provenance_json"] = np.array(json.dumps(prov or {}, sort_keys=True))
     arrays["scene_toml"] = np.array(str(scene_toml))
     arrays["scene_repr"] = np.array(str(scene_repr))
+    arrays.update({k: np.asarray(v) for k, v in (extra or {}).items()})
     path = Path(path)
     atomic_write_bytes(path, lambda f: np.savez_compressed(f, **arrays))
     return path
@@ -313,8 +330,9 @@ def write_pvd(path, entries) -> Path:
            '<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">',
            "  <Collection>"]
     for t, vtu in sorted(entries, key=lambda e: float(e[0])):
-        rel = Path(vtu).resolve().relative_to(path.parent.resolve()).as_posix() \
-            if Path(vtu).is_absolute() else Path(vtu).as_posix()
+        # relative to the .pvd (ParaView's convention), whatever the form (relative to the
+        # working directory, or absolute) of the paths given
+        rel = Path(os.path.relpath(Path(vtu).resolve(), path.parent.resolve())).as_posix()
         out.append(f'    <DataSet timestep="{float(t):.10g}" group="" part="0" '
                    f"file={quoteattr(rel)}/>")
     out += ["  </Collection>", "</VTKFile>", ""]
@@ -357,10 +375,15 @@ def write_vtu(path, points, cells, point_data: dict, field_data: dict | None = N
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     tmp = path.with_name(path.stem + ".part.vtu")
-    meshio.write(tmp, mesh, file_format="vtu", binary=True)
-    if field_data:
-        _insert_field_data(tmp, field_data)
-    tmp.replace(path)
+    try:
+        # compression=None: zlib took 29 of 32 ms per file (measured), for files read once
+        meshio.write(tmp, mesh, file_format="vtu", binary=True, compression=None)
+        if field_data:
+            _insert_field_data(tmp, field_data)
+        tmp.replace(path)
+    except BaseException:  # a full disk, Ctrl-C: no half-written .part.vtu is left behind
+        tmp.unlink(missing_ok=True)
+        raise
     return path
 
 
@@ -413,7 +436,7 @@ def write_fe_vtu(path, r, wear: dict | None = None) -> Path:
         The solved load case.
     wear : dict, optional
         ``{"k" (m^3/(N m)), "v_slip" (m/s), "V_cam" (m/s), "wear_depth_per_rev" (m),
-        "theta_deg" (deg), "Fc" (N)}``. Adds the point data ``wear_rate`` (m/s): Archard's local
+        "theta_deg" (deg), "Fc" (N)}``. Adds the point data ``wear_rate_m_s``: Archard's local
         rate ``k p v_slip`` on the contact surfaces (``p`` = the FE nodal contact pressure), 0
         elsewhere, and the field data ``theta_deg``, ``Fc_N``, ``wear_k_m3_per_N_m``,
         ``v_slip_m_s``, ``V_cam_m_s``, ``wear_depth_per_rev_m``.
@@ -427,7 +450,8 @@ def write_fe_vtu(path, r, wear: dict | None = None) -> Path:
     if wear:
         point_data = dict(point_data, wear_rate=wear["k"] * np.asarray(point_data["contact_pressure"])
                           * wear["v_slip"])
-    return write_vtu(path, points, [(cell_type, cells)], point_data, field_data=_field_data(wear),
+    return write_vtu(path, points, [(cell_type, cells)], vtk_point_data(point_data),
+                     field_data=_field_data(wear),
                      cell_data={"body": [body]})
 
 
@@ -443,12 +467,13 @@ def write_hertz_vtu(path, hc: LineContact, n: int = 41, wear: dict | None = None
     n : int
         Grid points in depth (``2 n - 1`` along x).
     wear : dict, optional
-        As in :func:`write_fe_vtu`; adds ``wear_rate = k p v_slip`` (m/s) on the surface row.
+        As in :func:`write_fe_vtu`; adds ``wear_rate_m_s = k p v_slip`` on the surface row.
 
     Returns
     -------
     Path
-        ``path``. Point data ``sx, sz, txz, sy, tau1, von_mises, contact_pressure`` (Pa); the cam
+        ``path``. Point data ``stress_Pa`` (6 components XX, YY, ZZ, XY, YZ, XZ:
+        ``sx, sz, sy, -txz, 0, 0``), ``tau1_Pa``, ``von_mises_Pa``, ``contact_pressure_Pa``; the cam
         lies below the surface (``y = -z``).
     """
     a = float(hc.a)
@@ -460,11 +485,12 @@ def write_hertz_vtu(path, hc: LineContact, n: int = 41, wear: dict | None = None
     quads = np.column_stack([ids[:-1, :-1].ravel(), ids[:-1, 1:].ravel(), ids[1:, 1:].ravel(),
                              ids[1:, :-1].ravel()])
     pts = np.column_stack([X.ravel(), -Z.ravel()])  # cam below the surface: y = -z
-    data = {"sx": sf.sx, "sz": sf.sz, "txz": sf.txz, "sy": sf.sy, "tau1": sf.tau1,
+    data = {"stress": stress_tensor(sf.sx, sf.sz, sf.sy, sf.txz, -1.0), "tau1": sf.tau1,
             "von_mises": sf.von_mises}
     p = np.where(Z == 0.0, hc.pressure(X), 0.0).ravel()
     data["contact_pressure"] = p
     if wear:
         data["wear_rate"] = wear["k"] * p * wear["v_slip"]
-    return write_vtu(path, pts, [("quad", quads)], {k: np.asarray(v, float) for k, v in data.items()},
+    return write_vtu(path, pts, [("quad", quads)],
+                     vtk_point_data({k: np.asarray(v, float) for k, v in data.items()}),
                      field_data=_field_data(wear))

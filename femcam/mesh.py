@@ -49,6 +49,10 @@ from . import _validate
 from .errors import FemcamError, InputError
 from .hertz.conformity import roller_does_not_fit
 
+#: Held around every use of gmsh (initialise, mesh, finalise): gmsh keeps one global state per
+#: process and is not thread-safe (Dask runs several tasks in threads of one worker process).
+GMSH_LOCK = threading.RLock()
+
 #: physical names written into the gmsh model (one set per body)
 PHYSICAL_NAMES = ("roller_contact", "cam_contact", "roller_fixed", "cam_fixed", "roller", "cam")
 
@@ -395,24 +399,25 @@ def build_contact_mesh(*, Rr: float, rho: float, a_ref: float,
     L_cam = _body_size(rho, cap, Rr)
     import gmsh  # lazy: gmsh is a large native library, loaded only to build meshes
 
-    init_here = not gmsh.isInitialized()
-    if init_here:
-        # gmsh installs a SIGINT handler, which Python allows only in the main thread (Dask
-        # runs tasks in worker threads)
-        gmsh.initialize(["-nopopup"], readConfigFiles=False,
-                        interruptible=threading.current_thread() is threading.main_thread())
-    try:
-        gmsh.option.setNumber("General.Terminal", 0)
-        gmsh.option.setNumber("General.Verbosity", 1)
-        cam = _mesh_body(gmsh, "cam", rho, L_cam, a_ref, opts)
-        roller = _mirror(_mesh_body(gmsh, "roller", Rr, L_roller, a_ref, opts))
-    except FemcamError:
-        raise
-    except Exception as exc:  # gmsh raises plain Exception
-        raise FemcamError(f"gmsh failed to mesh the contact region: {exc}") from None
-    finally:
+    with GMSH_LOCK:  # gmsh is one global, non-thread-safe state per process
+        init_here = not gmsh.isInitialized()
         if init_here:
-            gmsh.finalize()
+            # interruptible=False: gmsh would install its own SIGINT handler (which ends the
+            # process silently on Ctrl-C, and which Python allows only in the main thread, while
+            # Dask runs tasks in worker threads); Python's KeyboardInterrupt stays in charge
+            gmsh.initialize(["-nopopup"], readConfigFiles=False, interruptible=False)
+        try:
+            gmsh.option.setNumber("General.Terminal", 0)
+            gmsh.option.setNumber("General.Verbosity", 1)
+            cam = _mesh_body(gmsh, "cam", rho, L_cam, a_ref, opts)
+            roller = _mirror(_mesh_body(gmsh, "roller", Rr, L_roller, a_ref, opts))
+        except FemcamError:
+            raise
+        except Exception as exc:  # gmsh raises plain Exception
+            raise FemcamError(f"gmsh failed to mesh the contact region: {exc}") from None
+        finally:
+            if init_here:
+                gmsh.finalize()
     return ContactMesh(cam=cam, roller=roller, Rr=Rr, rho=rho, a_ref=a_ref,
                        h=a_ref / opts.a_over_h, options=opts)
 

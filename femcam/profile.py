@@ -265,8 +265,10 @@ def bool_intervals(theta, mask):
     return [(float(theta[a]), float(theta[b])) for a, b in zip(starts, ends, strict=True)]
 
 
-def _fmt_intervals_deg(intervals) -> str:
-    return ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}] deg" for a, b in intervals)
+def _fmt_intervals_deg(intervals, most: int = 20) -> str:
+    """The first ``most`` intervals in degrees, then ``... and N more`` (a message stays short)."""
+    text = ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}] deg" for a, b in intervals[:most])
+    return text + (f", ... and {len(intervals) - most} more" if len(intervals) > most else "")
 
 
 def cam_profile(f: Follower, theta, s, s1, s2, *, allow_undercut: bool = False) -> CamProfile:

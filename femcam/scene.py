@@ -41,7 +41,10 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
                        pin_clearance_um, needle_count, needle_radius_mm; [materials.pin]?
                        (pin and needles, default: the roller's); [cam]? bore_mm (shaft bore
                        RADIUS), [materials.shaft]?
-    [fe]?, [wear]?     passed through unchanged (dicts) to the FE/sweep and wear layers
+    [fe]?              a_over_h?, tolerance? (femcam sweep's --mesh-size, --tolerance)
+    [sweep]?           method?, angles_deg? ("0:360:1"), chunk_size?, vtk_every?, plots?
+    [wear]?            K | k_mm3_per_N_m, roller_model?, srr?, J_kg_m2?, T_drag_N_m?, tip_radius_mm?,
+                       cycles? (femcam.wear.options)
 
 Only numpy/scipy and the standard library (``tomllib``) are imported.
 """
@@ -57,6 +60,7 @@ from pathlib import Path
 
 import numpy as np
 
+from . import _validate
 from .dynamics import TrainModel, periodic_response
 from .errors import ConvergenceError, InputError, SceneError, UndercutError
 from .halfspace.crown import RollerProfile
@@ -143,6 +147,21 @@ _CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", 
             "plane": ("strain", "stress"), "sliding": ("+x", "-x"),
             "model": ("rigid", "one_dof", "two_dof"),
             "crown": ("none", "circular", "logarithmic")}
+# -- study settings read by `femcam sweep` (CLI flags override them), and the [wear] table
+#    (femcam.wear.options); ranges: femcam.sweep.options (a_over_h [2, 400], TOLERANCE_FLOOR) --
+_FE = {"a_over_h": ("(elements per contact half-width)", 1.0, "pos", False),
+       "tolerance": ("(relative p0 reuse error)", 1.0, "pos", False)}
+_SWEEP = {"method": ("", None, "str", False), "angles_deg": ("", None, "str", False),
+          "chunk_size": ("angles", 1.0, "int1", False), "vtk_every": ("angles", 1.0, "int0", False),
+          "plots": ("", None, "bool", False)}
+_RANGES = {"a_over_h": (2.0, 400.0), "tolerance": (1e-4, 0.5)}
+_WEAR = {"K": ("(dimensionless)", 1.0, "nonneg", False),
+         "k_mm3_per_N_m": ("mm^3/(N m)", 1e-9, "nonneg", False),
+         "roller_model": ("", None, "str", False), "srr": ("(dimensionless)", 1.0, "num", False),
+         "J_kg_m2": ("kg m^2", 1.0, "pos", False), "T_drag_N_m": ("N m", 1.0, "nonneg", False),
+         "tip_radius_mm": ("mm", 1e-3, "pos", False), "cycles": ("revolutions", 1.0, "nonneg", False)}
+_CHOICES.update(method=("fe", "hertz"), roller_model=("srr", "inertia"))
+_TABLES += ("sweep",)
 
 
 def _train(ck, raw: dict, dy: dict, dyn):
@@ -364,6 +383,10 @@ def _fmt(v) -> str:
     return repr(v) if isinstance(v, str) else str(v).lower() if isinstance(v, bool) else f"{v}"
 
 
+#: problems one SceneError lists (then "... and N more")
+MAX_PROBLEMS = 20
+
+
 class _Checker:
     """Collects every problem of a scene file, then raises one SceneError."""
 
@@ -428,7 +451,16 @@ class _Checker:
             return [float(x) for x in v]
         if check == "seglist":
             return v  # handled by the caller
-        return self._number(dk, v, unit, factor, check)
+        if check == "bool":
+            if not isinstance(v, bool):
+                self.add(dk, f"= {_fmt(v)}: must be true or false")
+                return None
+            return v
+        x = self._number(dk, v, unit, factor, check)
+        if x is not None and k in _RANGES and not _RANGES[k][0] <= x <= _RANGES[k][1]:
+            self.add(dk, f"= {_fmt(v)} {unit}: must be in [{_RANGES[k][0]:g}, {_RANGES[k][1]:g}]")
+            return None
+        return x
 
     def _number(self, dk, v, unit, factor, check):
         u = f" {unit}" if unit else ""
@@ -445,16 +477,20 @@ class _Checker:
             bad = "must be >= 0"
         elif check == "nu" and not (-1.0 < x < 0.5):
             bad = "Poisson's ratio must be in (-1, 0.5)"
+        elif check in ("int0", "int1") and (x != int(x) or x < int(check[-1])):
+            bad = f"must be a whole number >= {check[-1]}"
         if bad:
             self.add(dk, f"= {_fmt(v)}{u}: {bad}")
             return None
-        return x * factor
+        return int(x) if check in ("int0", "int1") else x * factor
 
     def raise_if_any(self):
         if self.problems:
             n = len(self.problems)
             head = f"scene file {self.path}: {n} problem{'s' if n > 1 else ''}"
-            raise SceneError(head + "\n  " + "\n  ".join(self.problems))
+            shown = self.problems[:MAX_PROBLEMS] + ([f"... and {n - MAX_PROBLEMS} more"]
+                                                    if n > MAX_PROBLEMS else [])
+            raise SceneError(head + "\n  " + "\n  ".join(shown))
 
 
 # --------------------------------------------------------------------------------------------
@@ -535,8 +571,12 @@ class Scene:
     sliding : str or None
         ``"+x"`` or ``"-x"``: direction of the friction traction on the cam.
     description, source : str
-    fe, wear : dict
-        The optional pass-through tables (``wear`` is checked by :mod:`femcam.wear.options`).
+    fe, sweep : dict
+        The checked study settings of [fe] (``a_over_h``, ``tolerance``) and [sweep]
+        (``method``, ``angles_deg``, ``chunk_size``, ``vtk_every``, ``plots``): ``femcam sweep``
+        uses them where no flag is given.
+    wear : dict
+        The [wear] table as written (checked at load; SI values: :mod:`femcam.wear.options`).
     source_path : str
         The scene file ("" if built in code).
     raw : dict
@@ -570,6 +610,8 @@ class Scene:
     #: real bodies (femcam.bodies): roller support geometry (SI: Ro, Ri, support, Rp, c, Z, r_n),
     #: cam_bore (m) and the "pin" / "shaft" Materials; empty for the solid roller
     bodies: dict = field(default_factory=dict)
+    #: checked [sweep] settings (see ``fe``)
+    sweep: dict = field(default_factory=dict)
 
     @property
     def rpm(self) -> float:
@@ -712,20 +754,50 @@ def load_scene(path) -> Scene:
     finite = _finite_length(ck, raw, fo, fo.get("type"))
     bodies = _check_bodies(ck, raw, fo, mats)
     layers = _layers(ck, raw)
-    # contact and pass-through tables
     co = ck.table(raw.get("contact", {}), "contact", _CONTACT)
-    for t in ("fe", "wear"):
-        if t in raw and not isinstance(raw[t], dict):
-            ck.add(t, f"= {_fmt(raw[t])}: must be a table [{t}]")
+    study = _study(ck, raw, mats)
     ck.raise_if_any()
 
     return Scene(name=top["name"], description=top.get("description", ""), source=top.get("source", ""),
                  program=program, follower=follower, dynamics=dyn, omega=omega, cam=mats["cam"],
                  roller=mats["roller"], length=fo["face_width_mm"], mu=co.get("friction", 0.0),
-                 plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=dict(raw.get("fe", {})),
+                 plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=study["fe"],
                  wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw, train=train,
                  tribology=tribo, finite_length=finite, bodies=bodies, layers=layers,
-                 steps_per_rev=steps_per_rev)
+                 steps_per_rev=steps_per_rev, sweep=study["sweep"])
+
+
+def _study(ck: _Checker, raw: dict, mats: dict) -> dict:
+    """``{"fe": ..., "sweep": ...}``: the checked [fe] and [sweep] settings (SI), and the
+    [wear] table checked by :func:`wear_table` (the cam hardness from ``mats``)."""
+    out = {t: ck.table(raw[t], t, spec) if t in raw else {} for t, spec in (("fe", _FE), ("sweep", _SWEEP))}
+    if isinstance(out["sweep"].get("angles_deg"), str):
+        try:
+            _validate.angles_deg("sweep.angles_deg", out["sweep"]["angles_deg"])
+        except InputError as exc:
+            ck.add("sweep.angles_deg", str(exc).removeprefix("sweep.angles_deg "))
+    if "wear" in raw:
+        cam = mats.get("cam")
+        wear_table(ck, raw["wear"], cam.hardness if cam is not None else None)
+    return out
+
+
+def wear_table(ck: _Checker, raw, hardness) -> dict:
+    """The [wear] table checked into ``ck`` (keys, units, srr in (-2, 2), K or k, K needs the
+    cam ``hardness`` (Pa, None: not given)); SI values. Used by :func:`load_scene` and
+    :func:`femcam.wear.options.wear_options`."""
+    out = ck.table(raw, "wear", _WEAR)
+    if not isinstance(raw, dict):
+        return out
+    if "srr" in out and not (-2.0 < out["srr"] < 2.0):
+        ck.add("wear.srr", f"= {raw['srr']} (dimensionless): must be in (-2, 2)")
+    if "K" in raw and "k_mm3_per_N_m" in raw:
+        ck.add("wear", "give either K (dimensionless, with the cam hardness_MPa) or k_mm3_per_N_m "
+               "(mm^3/(N m)), not both")
+    elif "K" in out and not hardness:
+        ck.add("wear.K", f"= {raw['K']} (dimensionless): needs the cam hardness "
+               "[materials.cam] hardness_MPa (MPa), k = K/H; or give k_mm3_per_N_m (mm^3/(N m))")
+    return out
 
 
 def _read_toml(path: Path) -> dict:
@@ -734,8 +806,15 @@ def _read_toml(path: Path) -> dict:
             return tomllib.load(fh)
     except FileNotFoundError:
         raise SceneError(f"scene file {path}: not found") from None
+    except IsADirectoryError:
+        raise SceneError(f"scene file {path}: is a directory; give a .toml file") from None
+    except UnicodeDecodeError as exc:  # a binary file, or text not saved as UTF-8
+        raise SceneError(f"scene file {path}: not a UTF-8 text file (byte {exc.start}: "
+                         f"{exc.object[exc.start:exc.start + 1]!r}); TOML must be UTF-8") from None
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(f"scene file {path}: not valid TOML: {exc}") from None
+    except OSError as exc:  # permission denied, a path under a file, ...
+        raise SceneError(f"scene file {path}: cannot be read ({exc.strerror or exc})") from None
 
 
 def _top_level(ck: _Checker, raw: dict) -> dict:

@@ -174,6 +174,6 @@ def test_partial_slip_stresses_and_vtu(model, tmp_path):
     e2 = (fld["txz"][k][ins] + np.interp(xs[ins], r.x, r.q)) / (mu * P0)
     assert float(np.sqrt(np.mean(e2**2))) < 3e-2, "full field carries the partial-slip traction"
     m = meshio.read(r.to_vtu(tmp_path / "slip.vtu"))
-    ct = m.point_data["contact_traction"]
+    ct = m.point_data["contact_traction_Pa"]
     assert ct.max() == pytest.approx(float(r.q.max()), rel=1e-6)
     assert ct.min() == pytest.approx(-float(r.q.max()), rel=1e-6), "the roller carries -q"

@@ -10,14 +10,19 @@ import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
-BLOCKS = re.findall(r"```python\n(.*?)```", (ROOT / "README.md").read_text(encoding="utf-8"), re.S)
+#: (marker, code) of every python block; a block preceded by ``<!-- readme-test: slow -->`` (an
+#: FE model build of several seconds) runs with the slow tests
+_FOUND = re.findall(r"(<!-- readme-test: slow -->\s*)?```python\n(.*?)```",
+                    (ROOT / "README.md").read_text(encoding="utf-8"), re.S)
+BLOCKS = [code for _, code in _FOUND]
+PARAMS = [pytest.param(i, marks=pytest.mark.slow) if slow else i for i, (slow, _) in enumerate(_FOUND)]
 
 
 def test_readme_has_python_examples():
     assert len(BLOCKS) >= 1
 
 
-@pytest.mark.parametrize("i", range(len(BLOCKS)))
+@pytest.mark.parametrize("i", PARAMS)
 def test_readme_python_block_runs(i, tmp_path, monkeypatch, capsys):
     shutil.copytree(ROOT / "examples", tmp_path / "examples")
     monkeypatch.chdir(tmp_path)

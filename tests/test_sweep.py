@@ -480,16 +480,16 @@ def test_outputs_provenance_and_pvd(scene, tmp_path):
     reader.set_active_time_value(reader.time_values[1])
     mesh = reader.read()
     block = mesh[0] if isinstance(mesh, pv.MultiBlock) else mesh
-    assert block.n_points > 100 and "von_mises" in block.point_data
+    assert block.n_points > 100 and "von_mises_Pa" in block.point_data
     # wear in the VTU: Archard's local rate k p v_slip on the contact surface, and field data
     k = 1e-8 / 2000e6
     i = 2  # the second written angle: th[2]
     fd = block.field_data
     np.testing.assert_allclose(fd["theta_deg"][0], np.degrees(th[i]), atol=1e-9)
     np.testing.assert_allclose(fd["wear_depth_per_rev_m"][0], r["wear_depth"][i], rtol=1e-12)
-    np.testing.assert_allclose(block.point_data["wear_rate"],
-                               k * block.point_data["contact_pressure"] * r["v_slip"][i], rtol=1e-12)
-    assert np.max(block.point_data["wear_rate"]) > 0
+    np.testing.assert_allclose(block.point_data["wear_rate_m_s"],
+                               k * block.point_data["contact_pressure_Pa"] * r["v_slip"][i], rtol=1e-12)
+    assert np.max(block.point_data["wear_rate_m_s"]) > 0
     # plots: PNG files, small
     for key in ("plot_p0", "plot_maxima", "plot_svaj", "plot_surface", "plot_wear"):
         p = Path(r.paths[key])
@@ -513,14 +513,15 @@ def test_store_refuses_a_different_sweep_and_ignores_partial_files(tmp_path):
 
 def test_fe_resume_reuses_the_stored_family_plan(scene, tmp_path):
     th = np.radians([0.0, 30.0, 60.0, 90.0])
-    full = sweep(scene, angles=th, out=tmp_path, chunk_size=2)
+    full = sweep(scene, angles=th, out=tmp_path, chunk_size=2, vtk_every=0, plots=False)
     plan_path = tmp_path / "chunks" / "plan.json"
     plan = json.loads(plan_path.read_text())
     assert plan["family"] == [int(f) for f in full["family"]]
     plan["records"][0]["check_time"] = 12345.0  # a marker: a resume must not re-verify
     plan_path.write_text(json.dumps(plan))
     (tmp_path / "chunks" / "chunk_00001.npz").unlink()
-    again = sweep(scene, angles=th, out=tmp_path, chunk_size=2, resume=True)
+    again = sweep(scene, angles=th, out=tmp_path, chunk_size=2, resume=True, vtk_every=0,
+                  plots=False)
     assert (again.n_chunks_computed, again.n_chunks_resumed) == (1, 1)
     assert again.families[0]["check_time"] == 12345.0
     np.testing.assert_array_equal(again["family"], full["family"])
@@ -532,14 +533,16 @@ def test_fe_resume_reuses_the_stored_family_plan(scene, tmp_path):
 
 def test_resume_in_process_reuses_chunks(scene, tmp_path):
     th = np.radians(np.arange(0.0, 360.0, 20.0))
-    full = sweep(scene, angles=th, out=tmp_path, method="hertz", chunk_size=4)
+    full = sweep(scene, angles=th, out=tmp_path, method="hertz", chunk_size=4, vtk_every=0)
     (tmp_path / "chunks" / "chunk_00002.npz").unlink()
-    again = sweep(scene, angles=th, out=tmp_path, method="hertz", chunk_size=4, resume=True)
+    again = sweep(scene, angles=th, out=tmp_path, method="hertz", chunk_size=4, resume=True,
+                  vtk_every=0)
     assert (again.n_chunks_computed, again.n_chunks_resumed) == (1, 4)
     for k in ("p0_hertz", "vm_max", "Fc"):
         np.testing.assert_array_equal(again[k], full[k])
     with pytest.raises(InputError, match="different sweep"):
-        sweep(scene, angles=th[:-1], out=tmp_path, method="hertz", chunk_size=4, resume=True)
+        sweep(scene, angles=th[:-1], out=tmp_path, method="hertz", chunk_size=4, resume=True,
+                  vtk_every=0)
 
 
 def test_cli_in_process(tmp_path, capsys):
@@ -602,9 +605,9 @@ def test_package_is_callable_and_hertz_vtk_series(scene, tmp_path):
     # the analytic field written at the sample point nearest (0, 0.786 a): tau1 ~ 0.300 p0 ... with
     # mu = 0.1 use femcam.hertz.maxima's value; the grid max is at most the true max
     k = max_shear(scene.mu).value
-    assert np.max(m.point_data["tau1"]) <= k * r["p0_hertz"][1] * (1 + 1e-9)
-    assert np.max(m.point_data["tau1"]) >= 0.98 * k * r["p0_hertz"][1]
+    assert np.max(m.point_data["tau1_Pa"]) <= k * r["p0_hertz"][1] * (1 + 1e-9)
+    assert np.max(m.point_data["tau1_Pa"]) >= 0.98 * k * r["p0_hertz"][1]
     # wear rate on the surface row: Archard k p v_slip, largest at x = 0 (p = p0)
-    np.testing.assert_allclose(np.max(m.point_data["wear_rate"]),
+    np.testing.assert_allclose(np.max(m.point_data["wear_rate_m_s"]),
                                1e-8 / 2000e6 * r["p0_hertz"][1] * r["v_slip"][1], rtol=1e-12)
     np.testing.assert_allclose(m.field_data["theta_deg"][0], 90.0, atol=1e-12)

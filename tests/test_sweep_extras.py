@@ -34,7 +34,7 @@ RTOL = 1e-9                                        # CSV: 10 significant digits
 
 
 def _sweep_csv(scene, theta, tmp_path, **kw):
-    kw = {"method": "hertz", "workers": 1, **kw}
+    kw = {"method": "hertz", "workers": 1, "plots": False, "vtk_every": 0, **kw}
     r = sweep(scene, angles=theta, out=tmp_path, **kw)
     cols, _ = read_csv(r.paths["csv"])
     return r, cols
@@ -195,8 +195,10 @@ def test_refused_provider_gives_nan_columns_and_the_reason(tmp_path, monkeypatch
 
 def test_resume_keeps_the_extra_columns(tmp_path):
     scene = load_scene(EX + "seed002_assess.toml")
-    r1 = sweep(scene, angles=TH8, method="hertz", workers=1, out=tmp_path, chunk_size=3)
-    r2 = sweep(scene, angles=TH8, method="hertz", workers=1, out=tmp_path, chunk_size=3, resume=True)
+    kw = {"method": "hertz", "workers": 1, "out": tmp_path, "chunk_size": 3, "plots": False,
+          "vtk_every": 0}
+    r1 = sweep(scene, angles=TH8, **kw)
+    r2 = sweep(scene, angles=TH8, resume=True, **kw)
     assert r2.n_chunks_resumed == 3 and r2.n_chunks_computed == 0
     for name in ("assess_lam", "assess_sf_yield", "assess_regime", "extras_error"):
         assert name in r2.table
@@ -206,6 +208,10 @@ def test_resume_keeps_the_extra_columns(tmp_path):
             assert list(r2.table[name]) == list(r1.table[name])
     with np.load(r2.paths["npz"]) as z:
         np.testing.assert_array_equal(z["assess_lam"], r1.table["assess_lam"])
+    from femcam.sweep.result import SweepResult
+    r3 = SweepResult.load(tmp_path)           # the extra columns come back with the table
+    np.testing.assert_array_equal(r3.table["assess_lam"], r1.table["assess_lam"])
+    assert list(r3.table["assess_regime"]) == list(r1.table["assess_regime"])
 
 
 @pytest.mark.slow
@@ -326,7 +332,7 @@ def test_sweep_wear_column_uses_the_coating_k(tmp_path, monkeypatch):
 
 def test_plots_of_the_extra_columns(tmp_path):
     scene = load_scene(EX + "seed002_assess.toml")
-    r = sweep(scene, angles=TH8, method="hertz", workers=1, out=tmp_path, plots=True)
+    r = sweep(scene, angles=TH8, method="hertz", workers=1, out=tmp_path, plots=True, vtk_every=0)
     p = r.paths["plot_extras_assess"]
     assert p.endswith("extras_assess.png")
     with open(p, "rb") as f:

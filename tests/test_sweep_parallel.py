@@ -57,11 +57,12 @@ def test_process_pool_equals_serial(serial, tmp_path):
     assert r.provenance["options"]["workers"] == 2
     # workers that build and solve everything themselves: resume the stored plan with an
     # empty model cache (nothing verified, nothing cached in this process)
-    sweep(STUDY, angles=th, chunk_size=4, out=tmp_path, workers=1)
+    sweep(STUDY, angles=th, chunk_size=4, out=tmp_path, workers=1, vtk_every=0, plots=False)
     for p in (tmp_path / "chunks").glob("chunk_*.npz"):
         p.unlink()
     default_cache().clear()
-    r2 = sweep(STUDY, angles=th, chunk_size=4, out=tmp_path, resume=True, workers=2)
+    r2 = sweep(STUDY, angles=th, chunk_size=4, out=tmp_path, resume=True, workers=2,
+               vtk_every=0, plots=False)
     assert (r2.n_chunks_computed, r2.n_chunks_resumed) == (6, 0)
     assert_same(r2.table, ref)
 
@@ -123,7 +124,8 @@ def test_killed_subprocess_resumes_in_process(tmp_path):
     assert 1 <= n_done < 6, "the sweep should have been killed midway"
     assert not (out / "sweep.csv").exists()
     th = parse_angles_deg("0:360:20")
-    res = sweep(STUDY, angles=th, chunk_size=3, method="hertz", out=out, resume=True, workers=1)
+    res = sweep(STUDY, angles=th, chunk_size=3, method="hertz", out=out, resume=True, workers=1,
+                vtk_every=0)
     assert (res.n_chunks_resumed, res.n_chunks_computed) == (n_done, 6 - n_done)
     ref = sweep(STUDY, angles=th, chunk_size=3, method="hertz", workers=1)
     assert_same(res.table, ref.table)

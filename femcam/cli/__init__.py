@@ -15,6 +15,7 @@ import sys
 
 from .. import __version__
 from ..errors import FemcamError
+from ._common import os_error_line
 
 #: subcommand modules, in the order they appear in ``femcam --help``
 SUBCOMMANDS = ("run", "sweep", "wear", "synth", "dynamics", "assess")
@@ -70,19 +71,56 @@ def main(argv=None) -> int:
     Returns
     -------
     int
-        Exit code: 0 success, 1 a :class:`~femcam.errors.FemcamError` (printed as one line),
-        2 usage.
+        Exit code: 0 success, 1 a :class:`~femcam.errors.FemcamError` or an ``OSError`` (a
+        file that cannot be read or written, a full disk), printed as one line
+        ``femcam <command>: error: ...`` naming the path, never a traceback; 2 usage.
     """
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_args(_join_negative(sys.argv[1:] if argv is None else list(argv)))
     if not getattr(args, "func", None):
         parser.print_help()
         return 2
     try:
         return int(args.func(args) or 0)
     except FemcamError as exc:
-        print(f"femcam {args.command}: error: {exc}", file=sys.stderr)
+        print(f"femcam {args.command}: error: {_capped(str(exc))}", file=sys.stderr)
         return 1
+    except OSError as exc:  # the disk, not femcam: say which file and why
+        print(f"femcam {args.command}: error: {os_error_line(exc)}", file=sys.stderr)
+        return 1
+
+
+#: flags whose value is a range START:STOP:STEP that may start with a minus sign
+RANGE_FLAGS = ("--angles-deg", "--rpm-sweep")
+
+
+def _join_negative(argv: list) -> list:
+    """``--angles-deg -360:0:30`` -> ``--angles-deg=-360:0:30``: argparse reads a value that
+    starts with ``-`` (and is not a plain number) as an option; the ``=`` form it takes."""
+    out, i = [], 0
+    while i < len(argv):
+        a = argv[i]
+        if a in RANGE_FLAGS and i + 1 < len(argv) and str(argv[i + 1]).startswith("-") \
+                and ":" in str(argv[i + 1]):
+            out.append(f"{a}={argv[i + 1]}")
+            i += 2
+            continue
+        out.append(a)
+        i += 1
+    return out
+
+
+#: most problem lines one error message shows (a scene with 1800 bad segments lists 1800)
+MAX_LINES = 20
+
+
+def _capped(text: str) -> str:
+    """``text`` with at most :data:`MAX_LINES` lines after the first, then ``... and N more``."""
+    lines = text.split("\n")
+    if len(lines) <= MAX_LINES + 1:
+        return text
+    more = len(lines) - 1 - MAX_LINES
+    return "\n".join(lines[:MAX_LINES + 1] + [f"  ... and {more} more"])
 
 
 if __name__ == "__main__":  # pragma: no cover

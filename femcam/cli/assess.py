@@ -22,11 +22,12 @@ from ..errors import InputError
 from ..io import atomic_write_text, csv_text, provenance
 from ..scene import load_scene
 from ..viz.assess import plot_assessment, report_markdown
+from ._common import out_dir, plain
 
 
 def register(subparsers) -> None:
     p = subparsers.add_parser("assess", help="will it fail? film, flash temperature, fatigue, safety factors",
-                              description=__doc__.split("\n\n")[0])
+                              description=plain(__doc__))
     p.add_argument("scene", metavar="SCENE.toml", help="scene file (with [lubricant], [surface], ...)")
     p.add_argument("--out", required=True, metavar="DIR", help="output directory")
     p.add_argument("--angles-deg", default="0:360:1", metavar="START:STOP:STEP",
@@ -73,14 +74,12 @@ def _write_csv(path, cols: dict, header: list[str]) -> None:
 
 
 def _run(args) -> int:
-
-
+    out_dir(args.out, create=False)  # checked before any work, created below
     scene = load_scene(args.scene)
     table = _sweep_table(args.sweep) if args.sweep else None
     theta = table["theta"] if table is not None else _angles(args.angles_deg)
     res = assess(scene, theta, table=table)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = out_dir(args.out)
     prov = provenance(scene_path=args.scene, command=shlex.join(["femcam", "assess", *sys.argv[2:]]))
     head = ["femcam assess results (units in the column names)", f"scene: {args.scene}",
             f"command: {prov['command']}", f"date: {prov['date']}",

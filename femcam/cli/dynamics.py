@@ -22,16 +22,18 @@ from ..dynamics import jump_speed, rpm_sweep
 from ..errors import InputError
 from ..scene import load_scene
 from ..viz.dynamics import plot_force, plot_rpm_sweep
+from ._common import out_dir, plain
 
 
 def register(subparsers) -> None:
     p = subparsers.add_parser("dynamics", help="follower-train dynamics: contact force, jump speed",
-                              description=__doc__.split("\n\n")[0])
-    p.add_argument("scene", help="scene TOML with [dynamics] model = one_dof or two_dof")
-    p.add_argument("--out", required=True, help="output directory")
+                              description=plain(__doc__))
+    p.add_argument("scene", metavar="SCENE.toml", help="scene with [dynamics] model = one_dof or two_dof")
+    p.add_argument("--out", required=True, metavar="DIR", help="output directory")
     p.add_argument("--rpm-sweep", metavar="START:STOP:STEP", default=None,
                    help="also sweep the cam speed (rpm, stop inclusive) and find the jump speed")
-    p.add_argument("--workers", type=int, default=1, help="processes for the rpm sweep (default 1)")
+    p.add_argument("--workers", type=int, default=1, metavar="N",
+                   help="processes for the rpm sweep (default 1)")
     p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     p.set_defaults(func=run)
 
@@ -85,14 +87,13 @@ def _write_sweep(out: Path, scene, sw):
 
 
 def run(args) -> int:
-
+    out_dir(args.out, create=False)  # checked before any work, created below
     scene = load_scene(args.scene)
     if scene.train is None:
         raise InputError(f"{args.scene}: [dynamics] model = 'rigid' (eq. 11) has no train to "
                          "integrate; set model = \"one_dof\" or \"two_dof\" (docs/dynamics.md)")
     workers = int(_validate.positive("--workers", args.workers, ""))
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = out_dir(args.out)
     r = scene.dynamic_response
     f_hz = ", ".join(f"{w / (2 * math.pi):.5g}" for w in r.natural_frequencies)
     print(f"{scene.name}: {r.model} at {r.rpm:g} rpm, natural frequencies {f_hz} Hz")

@@ -17,8 +17,10 @@ from pathlib import Path
 import numpy as np
 
 from .. import __version__, _validate
+from ..kinematics import LAW_NAMES
 from ..scene import load_scene
 from ..viz.analytic import plot_all
+from ._common import out_dir, plain
 
 #: CSV columns: (name with unit, SceneState attribute, factor from SI)
 COLUMNS = (
@@ -41,7 +43,7 @@ def register(subparsers) -> None:
     """Add the ``run`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
     p = subparsers.add_parser(
         "run", help="kinematics, profile and load tables of a scene, with PNG plots",
-        description=__doc__.split("\n\n")[0])
+        description=plain(__doc__))
     p.add_argument("scene", metavar="SCENE.toml", help="scene file (see examples/)")
     p.add_argument("--out", default=None, metavar="DIR",
                    help="output directory (default: femcam-out/<scene name>)")
@@ -50,7 +52,8 @@ def register(subparsers) -> None:
     p.add_argument("--print-every-deg", type=float, default=10.0, metavar="STEP",
                    help="angle step of the printed table in degrees (default 10); the CSV has all")
     p.add_argument("--law", default=None, metavar="NAME",
-                   help="override the rise/fall motion law of the scene (e.g. bezier7)")
+                   help="override the rise/fall motion law of the scene: "
+                        + ", ".join(n for n in LAW_NAMES if n not in ("bezier", "polynomial")))
     p.add_argument("--phi-limit-deg", type=float, default=30.0, metavar="DEG",
                    help="pressure-angle limit drawn and checked in the summary (default 30)")
     p.add_argument("--allow-undercut", action="store_true",
@@ -59,8 +62,10 @@ def register(subparsers) -> None:
     p.set_defaults(func=_run)
 
 
-def _intervals_deg(iv) -> str:
-    return ", ".join(f"{math.degrees(a):.2f}-{math.degrees(b):.2f} deg" for a, b in iv) or "none"
+def _intervals_deg(iv, most: int = 20) -> str:
+    """The first ``most`` intervals, then ``... and N more``."""
+    text = ", ".join(f"{math.degrees(a):.2f}-{math.degrees(b):.2f} deg" for a, b in iv[:most]) or "none"
+    return text + (f", ... and {len(iv) - most} more" if len(iv) > most else "")
 
 
 def _undercut_intervals(st):
@@ -130,14 +135,26 @@ def write_csv(path, scene, st, command: str) -> Path:
     return path
 
 
+def _check_args(args) -> None:
+    """The numeric flags, refused with the flag's name, value and unit."""
+    step = _validate.number("--print-every-deg", args.print_every_deg, "deg")
+    if step <= 0:
+        raise _validate.fail("--print-every-deg", args.print_every_deg, "deg",
+                             "must be > 0 (the angle step of the printed table)")
+    lim = _validate.number("--phi-limit-deg", args.phi_limit_deg, "deg")
+    if not 0 < lim < 90:
+        raise _validate.fail("--phi-limit-deg", args.phi_limit_deg, "deg",
+                             "must be in (0, 90): a pressure angle of 90 deg or more transmits no lift")
+
+
 def _run(args) -> int:
+    _check_args(args)
     theta = _validate.angles_deg("--angles-deg", args.angles_deg)
     scene = load_scene(args.scene)
     if args.law:
         scene = scene.with_law(args.law)
     st = scene.analyse(theta, allow_undercut=args.allow_undercut)
-    out = Path(args.out) if args.out else Path("femcam-out") / scene.name
-    out.mkdir(parents=True, exist_ok=True)
+    out = out_dir(args.out if args.out else Path("femcam-out") / scene.name)
     # rebuilt from the parsed options (sys.argv is not ours when main() is called in-process)
     opts = ["--out", str(out), "--angles-deg", args.angles_deg]
     opts += ["--law", args.law] if args.law else []

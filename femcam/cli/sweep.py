@@ -1,66 +1,122 @@
 """``femcam sweep SCENE.toml --out DIR``: the FE (or Hertz) sweep over cam angle.
 
-Writes ``DIR/sweep.csv`` (units in the column names, provenance header), ``DIR/sweep.npz``
-(SI, plus the scene file's text), ``DIR/scene.toml`` (a copy of the scene file),
-``DIR/chunks/`` (the resumable store), ``DIR/sweep.pvd`` + ``DIR/vtk/*.vtu`` (every 10th angle
-by default; ``--vtk-every K``) and PNG plots in ``DIR/plots/`` (unless ``--no-plots``).
+Writes DIR/sweep.csv (units in the column names, provenance header), DIR/sweep.npz (SI, plus
+the scene file's text), DIR/scene.toml (a copy of the scene file), DIR/chunks/ (the resumable
+store), DIR/sweep.pvd + DIR/vtk/*.vtu (every 10th angle by default; --vtk-every K) and PNG plots
+in DIR/plots/ (unless --no-plots).
+
+Settings: a flag given on the command line wins; else the scene's [fe] a_over_h, tolerance and
+[sweep] method, angles_deg, chunk_size, vtk_every, plots; else the defaults shown below.
 """
 
 from __future__ import annotations
 
 import argparse
+import math
+import os
 import shlex
 import sys
 
 from .. import _validate
+from ..kinematics import LAW_NAMES
 from ..scene import load_scene
 from ..sweep import parse_angles_deg, sweep
 from ..sweep.options import TOLERANCE_FLOOR
+from ._common import out_dir, plain
 
 
 def register(subparsers) -> None:
     """Add the ``sweep`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
     p = subparsers.add_parser(
         "sweep", help="FE contact sweep over cam angle (CSV/NPZ, VTK series, plots)",
-        description=__doc__.split("\n\n")[0])
+        description=plain(__doc__, 3),
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("scene", metavar="SCENE.toml", help="scene file")
     p.add_argument("--out", required=True, metavar="DIR", help="output directory")
-    p.add_argument("--angles-deg", default="0:360:1", metavar="START:STOP:STEP",
-                   help="cam angles in degrees, stop exclusive (default 0:360:1)")
+    p.add_argument("--angles-deg", default=None, metavar="START:STOP:STEP",
+                   help="cam angles in degrees, stop exclusive (default: [sweep] angles_deg, else "
+                        "0:360:1); a negative start is accepted (--angles-deg -360:0:30)")
     p.add_argument("--workers", default="auto", metavar="N|auto",
                    help="local worker processes; 1 = serial in this process; auto (default) = "
                         "processes only when the expected saving beats the pool start-up: the "
                         "model families are built and verified before the chunks run, so the "
                         "chunks are only ~1-2 ms contact solves per angle: a sweep without VTK "
                         "usually runs serially, while writing many VTU files pays on 2 "
-                        "processes")
+                        "processes; capped at the useful number (CPU cores, chunks)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="Dask scheduler address, e.g. tcp://host:8786 (needs femcam[dask])")
     p.add_argument("--resume", action="store_true",
                    help="continue an interrupted sweep in DIR (computes only missing chunks)")
-    p.add_argument("--mesh-size", type=float, default=10.0, metavar="A_OVER_H",
-                   help="FE element size in the contact zone, h = a / A_OVER_H (default 10)")
-    p.add_argument("--tolerance", type=float, default=2e-3, metavar="TOL",
+    p.add_argument("--overwrite", action="store_true",
+                   help="replace the results in a non-empty DIR (refused otherwise)")
+    p.add_argument("--animate", action="store_true",
+                   help="also write DIR/animation.gif: von Mises over cam angle (the VTK series)")
+    p.add_argument("--mesh-size", type=float, default=None, metavar="A_OVER_H",
+                   help="FE element size in the contact zone, h = a / A_OVER_H (default: [fe] "
+                        "a_over_h, else 10)")
+    p.add_argument("--tolerance", type=float, default=None, metavar="TOL",
                    help="bound on the relative p0 difference between an angle solved with its "
                         "family's shared model and with a model built for it alone; checked with "
                         "fresh models at each family's worst angles, families are split until it "
-                        "holds (default 2e-3; >= 1e-4)")
-    p.add_argument("--chunk-size", type=int, default=30, metavar="N",
-                   help="angles per chunk on disk / per parallel task (default 30)")
-    p.add_argument("--vtk-every", type=int, default=10, metavar="K",
+                        "holds (default: [fe] tolerance, else 2e-3; >= 1e-4)")
+    p.add_argument("--chunk-size", type=int, default=None, metavar="N",
+                   help="angles per chunk on disk / per parallel task (default: [sweep] "
+                        "chunk_size, else 30)")
+    p.add_argument("--vtk-every", type=int, default=None, metavar="K",
                    help="write a .vtu (both bodies, ~1 MB) every K angles plus sweep.pvd "
-                        "(default 10; 1 = every angle; 0 = none)")
-    p.add_argument("--method", choices=("fe", "hertz"), default="fe",
-                   help="fe: FE contact solve (default); hertz: analytic only")
+                        "(default: [sweep] vtk_every, else 10; 1 = every angle; 0 = none)")
+    p.add_argument("--method", choices=("fe", "hertz"), default=None,
+                   help="fe: FE contact solve; hertz: analytic only (default: [sweep] method, "
+                        "else fe)")
     p.add_argument("--law", default=None, metavar="NAME",
-                   help="override the rise/fall motion law of the scene (e.g. bezier7)")
-    p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+                   help="override the rise/fall motion law of the scene: "
+                        + ", ".join(n for n in LAW_NAMES if n not in ("bezier", "polynomial")))
+    p.add_argument("--plots", dest="plots", action="store_true", default=None,
+                   help="write the PNG plots (default: [sweep] plots, else yes)")
+    p.add_argument("--no-plots", dest="plots", action="store_false", help="skip the PNG plots")
     p.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
                    help="progress bar on stderr (auto: only on a terminal)")
     # a test aid (not shown in --help): sleep after each chunk, so that a test can kill the
     # sweep between chunks deterministically
     p.add_argument("--chunk-delay-s", type=float, default=0.0, help=argparse.SUPPRESS)
     p.set_defaults(func=_run)
+
+
+#: flag dest -> (scene table, key, default): the scene value is used where no flag is given
+SETTINGS = {"angles_deg": ("sweep", "angles_deg", "0:360:1"), "mesh_size": ("fe", "a_over_h", 10.0),
+            "tolerance": ("fe", "tolerance", 2e-3), "chunk_size": ("sweep", "chunk_size", 30),
+            "vtk_every": ("sweep", "vtk_every", 10), "method": ("sweep", "method", "fe"),
+            "plots": ("sweep", "plots", True)}
+
+
+def resolve_settings(args, scene) -> list[str]:
+    """Fill the settings not given as flags from the scene's [fe]/[sweep] tables, else the
+    defaults (flag > scene > default). Returns the ``[table] key = value`` taken from the scene."""
+    used = []
+    for dest, (table, key, default) in SETTINGS.items():
+        if getattr(args, dest) is not None:
+            continue
+        tab = getattr(scene, table, {}) or {}
+        if key in tab:
+            v = tab[key]
+            used.append(f"[{table}] {key} = " + (f'"{v}"' if isinstance(v, str) else
+                                                  str(v).lower() if isinstance(v, bool) else f"{v:g}"))
+        setattr(args, dest, tab.get(key, default))
+    return used
+
+
+def useful_workers(requested, n_angles: int, chunk_size: int) -> tuple:
+    """``(workers, note)``: an integer request capped at the CPU cores and the number of chunks
+    (more processes than either only wait); ``note`` says so ("" when not capped)."""
+    if not isinstance(requested, int):
+        return requested, ""
+    cores = os.cpu_count() or 1
+    chunks = max(1, math.ceil(n_angles / chunk_size))
+    cap = max(1, min(cores, chunks))
+    if requested <= cap:
+        return requested, ""
+    return cap, (f"--workers {requested} capped at {cap} (the useful number: {cores} CPU cores, "
+                 f"{chunks} chunks of {chunk_size} angles)")
 
 
 def _check_args(args) -> None:
@@ -94,24 +150,41 @@ def _command_line(args) -> str:
         parts += ["--law", args.law]
     if args.resume:
         parts.append("--resume")
-    if args.no_plots:
+    if not args.plots:
         parts.append("--no-plots")
+    if args.overwrite:
+        parts.append("--overwrite")
+    if args.animate:
+        parts.append("--animate")
     return shlex.join(parts)
 
 
 def _run(args) -> int:
+    out_dir(args.out, create=False)
+    scene = load_scene(args.scene)
+    from_scene = resolve_settings(args, scene)
     _check_args(args)
     angles = parse_angles_deg(args.angles_deg)
-    scene = load_scene(args.scene)
+    args.workers, note = useful_workers(args.workers, angles.size, args.chunk_size)
+    if from_scene:
+        print("femcam sweep: settings from the scene file: " + ", ".join(from_scene))
+    if note:
+        print(f"femcam sweep: note: {note}", file=sys.stderr)
     if args.law:
         scene = scene.with_law(args.law)
     progress = {"auto": None, "on": True, "off": False}[args.progress]
-    res = sweep(scene, angles=angles, method=args.method, a_over_h=args.mesh_size,
-                tolerance=args.tolerance, chunk_size=args.chunk_size, out=args.out,
-                resume=args.resume, workers=args.workers, scheduler=args.scheduler,
-                vtk_every=args.vtk_every, progress=progress, plots=not args.no_plots,
-                command=_command_line(args), scene_path=args.scene,
-                chunk_delay_s=args.chunk_delay_s)
+    try:
+        res = sweep(scene, angles=angles, method=args.method, a_over_h=args.mesh_size,
+                    tolerance=args.tolerance, chunk_size=args.chunk_size, out=args.out,
+                    resume=args.resume, workers=args.workers, scheduler=args.scheduler,
+                    vtk_every=args.vtk_every, progress=progress, plots=args.plots,
+                    command=_command_line(args), scene_path=args.scene,
+                    chunk_delay_s=args.chunk_delay_s, overwrite=args.overwrite,
+                    animate=args.animate)
+    except KeyboardInterrupt as exc:  # Ctrl-C: one line (what was saved, how to resume)
+        nl = "\n" if sys.stderr.isatty() else ""  # end a progress bar's line
+        print(f"{nl}femcam sweep: {exc or 'interrupted'}", file=sys.stderr)
+        return 130
     s = res.summary()
     o = res.provenance.get("options", {})
     print(f"femcam sweep: {res.n_angles} angles ({res.n_chunks_resumed} chunks resumed, "

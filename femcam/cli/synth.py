@@ -19,10 +19,10 @@ import json
 import math
 import shlex
 import sys
-from pathlib import Path
 
 from .. import _validate, io
 from ..errors import ConvergenceError, InputError
+from ..kinematics import LAW_NAMES
 from ..profile import KnifeEdgeFollower, min_base_radius
 from ..scene import load_scene
 from ..synthesis import SynthesisOptions, compare_direct, synthesize_knife_edge
@@ -35,6 +35,7 @@ from ..synthesis.study import (
     write_study_csv,
 )
 from ..viz import synthesis as vz
+from ._common import out_dir, plain
 
 #: design limit used by ``--base-radius-mm auto`` (seed 003 section 5: phi <= 30 deg)
 AUTO_PHI_MAX_DEG = 30.0
@@ -45,20 +46,28 @@ N_RESIDUALS_SHOWN = 5
 def register(subparsers) -> None:
     """Add the ``synth`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
     p = subparsers.add_parser("synth", help="knife-edge cam curve by potential-energy FE (seed 003)",
-                              description=__doc__.split("\n\n")[0])
-    p.add_argument("scene", nargs="?", help="scene TOML with a knife_edge follower")
-    p.add_argument("--case", choices=["seed003"], help="built-in case instead of a scene")
-    p.add_argument("--out", required=True, help="output directory")
-    p.add_argument("--elements", type=int, default=180, help="quadratic elements (default 180)")
-    p.add_argument("--k", type=float, default=1e6, help="penalty constant k (dimensionless)")
-    p.add_argument("--mu", type=float, default=1.0, help="stabilisation parameter mu")
+                              description=plain(__doc__))
+    p.add_argument("scene", nargs="?", metavar="SCENE.toml",
+                   help="scene with a knife_edge follower; its rise/fall laws are any of: "
+                        + ", ".join(LAW_NAMES) + " (or control_points)")
+    p.add_argument("--case", choices=["seed003"],
+                   help="built-in case instead of a scene: seed 003's in-line knife edge, "
+                        "poly345 rise 120 deg to 3 mm, dwell 90, fall 90, dwell 60, Rb = 5 mm")
+    p.add_argument("--out", required=True, metavar="DIR", help="output directory")
+    p.add_argument("--elements", type=int, default=180, metavar="N",
+                   help="quadratic elements around the cam (default 180)")
+    p.add_argument("--k", type=float, default=1e6, metavar="K",
+                   help="penalty constant k (dimensionless; default 1e6)")
+    p.add_argument("--mu", type=float, default=1.0, metavar="MU",
+                   help="stabilisation parameter mu (dimensionless; default 1)")
     p.add_argument("--base-radius-mm", default=None, metavar="auto|RB_MM",
                    help="base circle radius in mm, or 'auto': the smallest one with max "
                         "pressure angle <= 30 deg (femcam.profile.min_base_radius); default: "
                         "the case's 5 mm or the scene's Rb")
-    p.add_argument("--max-iter", type=int, default=50,
+    p.add_argument("--max-iter", type=int, default=50, metavar="N",
                    help="Newton iterations per k stage before giving up (default 50)")
-    p.add_argument("--study", action="store_true", help="also run the k and k/mu studies")
+    p.add_argument("--study", action="store_true",
+                   help="also run the k and k/mu studies (tables .md/.csv and plots; off by default)")
     p.set_defaults(func=run)
 
 
@@ -100,6 +109,7 @@ def _residual_tail(history, n=N_RESIDUALS_SHOWN) -> str:
 
 def run(args) -> int:
     """``femcam synth``: synthesise, compare with the direct profile, write CSV/PNG; exit code."""
+    out_dir(args.out, create=False)  # checked before any work, created below
     name, program, Rb = _case(args)
     Rb, rb_source = _base_radius(args.base_radius_mm, Rb, program,
                                  "seed 003 case" if args.case else "scene")
@@ -111,8 +121,7 @@ def run(args) -> int:
         raise ConvergenceError(f"{exc} (Rb = {Rb * 1e3:.6g} mm); {_residual_tail(exc.history)}",
                                exc.history) from None
     cmp_ = compare_direct(res, program)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = out_dir(args.out)
     prov = io.provenance(scene_path=args.scene, command="femcam " + shlex.join(sys.argv[1:]),
                          options={"n_elements": opt.n_elements, "k": opt.k, "mu": opt.mu,
                                   "max_iter": opt.max_iter, "Rb_mm": Rb * 1e3,

@@ -37,26 +37,40 @@ from ..wear.evolution import convergence_table, evolution_case
 from ..wear.options import describe_k, wear_coefficient_info, wear_options
 from ..wear.scene import scene_tip_radius, scene_wear, tip_scene
 from ..wear.seed000 import PAPER_LAWS, format_table3, seed000_table, table_rows_for_csv
+from ._common import out_dir, plain
 
 
 def register(subparsers) -> None:
     """Add the ``wear`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
     p = subparsers.add_parser("wear", help="Archard wear: seed 000's table, or a wear map of a scene",
-                              description=__doc__.split("\n\n")[0])
+                              description=plain(__doc__))
     sub = p.add_subparsers(dest="wear_command", metavar="WHAT")
-    s = sub.add_parser("seed000", help="seed 000's Table 3 and wear list, recomputed")
+    s = sub.add_parser("seed000", help="seed 000's Table 3 and wear list, recomputed",
+                       description="Seed 000's Table 3 recomputed: v_rms (mm/s), its ratio to SHM, "
+                       "sliding distance S (mm), the Archard wear list W (mm^3), interior and "
+                       "with-dwell peak jerk, junction continuity, and where femcam differs "
+                       "from the paper.")
     s.add_argument("--csv", default=None, metavar="FILE", help="also write the table as CSV")
-    s.add_argument("--all-laws", action="store_true", help="every femcam motion law, not only the paper's 3")
+    s.add_argument("--all-laws", action="store_true",
+                   help="every femcam motion law (" + ", ".join(LAW_NAMES) + "), not only the "
+                        "paper's " + ", ".join(PAPER_LAWS))
     s.set_defaults(func=_seed000)
-    m = sub.add_parser("map", help="Archard wear depth on the cam and the follower of a scene")
-    m.add_argument("scene", metavar="SCENE.toml")
-    m.add_argument("--out", required=True, metavar="DIR")
+    m = sub.add_parser("map", help="Archard wear depth on the cam and the follower of a scene",
+                       description="Archard wear depth per cam angle, along the cam surface and "
+                       "on the follower; writes DIR/wear_<law>.csv, wear_<law>_surface.csv, "
+                       "wear_<law>_follower.csv, wear_summary.csv and PNG plots. Scene [wear] "
+                       "keys: K (with [materials.cam] hardness_MPa) or k_mm3_per_N_m, "
+                       "roller_model = srr|inertia, srr, J_kg_m2, T_drag_N_m, tip_radius_mm, "
+                       "cycles.")
+    m.add_argument("scene", metavar="SCENE.toml", help="scene file (see examples/)")
+    m.add_argument("--out", required=True, metavar="DIR", help="output directory")
     m.add_argument("--cycles", type=float, default=None, metavar="N",
                    help="number of cam revolutions (default: scene [wear] cycles or 1e6)")
     m.add_argument("--source", choices=("hertz", "fe"), default="hertz",
                    help="contact pressure from Hertz (default) or the FE sweep (slow)")
     m.add_argument("--laws", default=None, metavar="A,B,C",
-                   help="compare motion laws (comma-separated; default: the scene's)")
+                   help="compare motion laws (comma-separated; default: the scene's): "
+                        + ", ".join(LAW_NAMES))
     m.add_argument("--step-deg", type=float, default=0.5, metavar="DEG", help="cam angle step (default 0.5)")
     m.add_argument("--tip-radius-mm", type=float, default=None, metavar="R",
                    help="knife-edge followers: tip radius in mm (default: scene [wear] tip_radius_mm); "
@@ -64,7 +78,7 @@ def register(subparsers) -> None:
     m.add_argument("--evolve-blocks", type=int, default=None, metavar="K",
                    help="roller followers: also evolve the profile (wear -> geometry -> pressure -> wear) "
                         "in 1, 2, 4, ... K blocks of cycles and write the convergence table")
-    m.add_argument("--no-plots", action="store_true")
+    m.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     m.set_defaults(func=_map)
     p.set_defaults(func=lambda args: (p.print_help(), 2)[1])
 
@@ -78,7 +92,7 @@ def _seed000(args) -> int:
     if args.csv:
         header, rows = table_rows_for_csv(t)
         path = Path(args.csv)
-        path.parent.mkdir(parents=True, exist_ok=True)
+        out_dir(path.parent, "--csv (its directory)")
         with path.open("w", newline="") as fh:
             fh.write(f"# femcam wear seed000; command: {shlex.join(sys.argv)}\n")
             w = csv.writer(fh)
@@ -118,6 +132,7 @@ def _check_map_args(args) -> tuple[float, float | None]:
 
 
 def _map(args) -> int:
+    out_dir(args.out, create=False)  # checked before any work, created below
     scene = load_scene(args.scene)
     opts = wear_options(scene)
     cycles = args.cycles if args.cycles is not None else float(opts.get("cycles", 1e6))
@@ -126,8 +141,7 @@ def _map(args) -> int:
     laws = [x.strip() for x in args.laws.split(",")] if args.laws else [None]
     k, k_where = wear_coefficient_info(scene)
     print(describe_k(k, k_where))
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = out_dir(args.out)
     head = f"# femcam wear map; scene: {args.scene}; command: {shlex.join(sys.argv)}\n"
     results = {}
     for name in laws:
@@ -136,7 +150,7 @@ def _map(args) -> int:
         fe = None
         if args.source == "fe":  # the FE pressure: a sweep of the (tip) scene at these angles
             fe = sweep(tip_scene(sc, scene_tip_radius(sc, tip)), angles=theta, method="fe",
-                       progress=False)
+                       progress=None, **sc.fe)  # the scene's [fe] settings; progress on a terminal
         k_factor, regime = wear_factor(sc, theta, fe.table if fe is not None else None, tip)
         wm, st, slip = scene_wear(sc, theta, cycles=cycles, tip_radius=tip, fe=fe,
                                   k_factor=k_factor, regime=regime)

@@ -3,10 +3,11 @@
 Points are in the FE contact frame (m): ``x`` along the common tangent, ``y`` from the cam into
 the roller. P2 models are written as quadratic ``triangle6`` cells (skfem's local P2 node order
 -- vertices, then edges 01, 12, 20 -- is VTK's), P1 models as ``triangle``. Point data:
-``displacement`` (m, 3 components), ``sx, sz, txz, sy, tau1, von_mises`` (Pa, each body in its
-own Johnson frame, see :mod:`femcam.fe.recovery`), ``depth`` (m) and ``contact_pressure`` (Pa,
+``displacement_m`` (3 components), ``stress_Pa`` (the tensor in the FE frame, 6 components
+XX, YY, ZZ, XY, YZ, XZ: sx, sz, sy, +-txz, 0, 0; :func:`stress_tensor`), ``tau1_Pa``,
+``von_mises_Pa``, ``depth_m`` (m below each body's surface) and ``contact_pressure_Pa`` (Pa,
 the P1 interpolant of the nodal pressure at the vertex and midside nodes of the fine-zone contact
-curve, 0 elsewhere), ``contact_traction`` (Pa, the tangential traction on each body along x in
+curve, 0 elsewhere), ``contact_traction_Pa`` (the tangential traction on each body along x in
 the contact frame, ``q`` on the cam and ``-q`` on the roller, same interpolation). Cell data
 ``body``: 0 cam, 1 roller.
 """
@@ -19,14 +20,38 @@ import numpy as np
 
 FIELDS = ("sx", "sz", "txz", "sy", "tau1", "von_mises")
 
+#: names of the arrays in the .vtu files (units in the names): scene_arrays key -> VTU name
+VTK_NAMES = {"displacement": "displacement_m", "stress": "stress_Pa", "tau1": "tau1_Pa",
+             "von_mises": "von_mises_Pa", "depth": "depth_m",
+             "contact_pressure": "contact_pressure_Pa", "contact_traction": "contact_traction_Pa",
+             "wear_rate": "wear_rate_m_s"}
 
-def scene_arrays(result):
-    """(points (n, 3), cells (nel, k), cell_type, point_data, body_id) for both bodies."""
+
+def stress_tensor(sx, sz, sy, txz, sign: float):
+    """The stress tensor in the FE frame as one VTK array (n, 6), order XX, YY, ZZ, XY, YZ, XZ.
+
+    ``sx, sz, txz`` are in the body's Johnson frame (``z`` depth), ``sy`` out of plane; the FE
+    frame has ``y`` from the cam into the roller, so ``XY = sign * txz`` with ``sign = -1`` for
+    the cam (below, ``y = -z``) and ``+1`` for the roller (:func:`femcam.fe.recovery.johnson_frame`).
+    """
+    zero = np.zeros_like(np.asarray(sx, float))
+    return np.column_stack([sx, sz, sy, sign * np.asarray(txz, float), zero, zero])
+
+
+def vtk_point_data(data: dict) -> dict:
+    """Point data as written to .vtu: the stress tensor as one array ``stress_Pa`` (replacing
+    ``sx, sz, txz, sy``) and every name with its unit (:data:`VTK_NAMES`)."""
+    return {VTK_NAMES.get(k, k): v for k, v in data.items() if k not in ("sx", "sz", "txz", "sy")}
+
+
+def scene_arrays(result, model=None):
+    """(points (n, 3), cells (nel, k), cell_type, point_data, body_id) for both bodies
+    (``model``: the solving model, needed for an unpickled ``result``)."""
     from .recovery import surface_nodes
 
-    model = result.model
-    pts, cells, data, body_id = [], [], {k: [] for k in (*FIELDS, "displacement", "depth",
-                                                          "contact_pressure", "contact_traction")}, []
+    model = result.model_or(model)
+    keys = (*FIELDS, "displacement", "depth", "contact_pressure", "contact_traction", "stress")
+    pts, cells, data, body_id = [], [], {k: [] for k in keys}, []
     offset = 0
     for i, name in enumerate(("cam", "roller")):
         b = model.bodies[name]
@@ -38,6 +63,8 @@ def scene_arrays(result):
         cells.append(conn + offset)
         for k in FIELDS:
             data[k].append(fld[k])
+        data["stress"].append(stress_tensor(fld["sx"], fld["sz"], fld["sy"], fld["txz"],
+                                            -1.0 if name == "cam" else 1.0))
         data["displacement"].append(np.column_stack([u.T, np.zeros(n)]))
         data["depth"].append(fld["z"])
         # the fine-zone contact curve: vertices and P2 midside nodes (on the chords, so not
@@ -58,15 +85,15 @@ def scene_arrays(result):
             {k: np.concatenate(v) for k, v in data.items()}, np.concatenate(body_id))
 
 
-def write_vtu(result, path) -> Path:
+def write_vtu(result, path, model=None) -> Path:
     """Write ``result`` (a :class:`~femcam.fe.ContactResult`) to ``path`` (.vtu); returns the path."""
     import meshio
 
     path = Path(path)
     if path.suffix != ".vtu":
         path = path.with_suffix(".vtu")
-    points, cells, cell_type, point_data, body = scene_arrays(result)
-    mesh = meshio.Mesh(points, [(cell_type, cells)], point_data=point_data,
+    points, cells, cell_type, point_data, body = scene_arrays(result, model)
+    mesh = meshio.Mesh(points, [(cell_type, cells)], point_data=vtk_point_data(point_data),
                        cell_data={"body": [body]})
     path.parent.mkdir(parents=True, exist_ok=True)
     meshio.write(path, mesh, binary=True)

@@ -252,19 +252,32 @@ class ContactResult:
     sz = _cam_surface("sz")
     txz = _cam_surface("txz")
 
-    def field_at_nodes(self, body: str = "cam"):
+    def __getstate__(self):
+        # a pickled result is independent of its model (the factorisation is large and bound
+        # to this process): the full-field methods then take the model explicitly
+        return {**self.__dict__, "model": None}
+
+    def model_or(self, model=None) -> ContactModel:
+        """``model``, else the model that solved this result (None after unpickling: pass it)."""
+        m = model if model is not None else self.model
+        if m is None:
+            raise chk.fail("model", None, "", "this ContactResult was unpickled without its "
+                           "factorised model; pass the ContactModel that solved it (model=...)")
+        return m
+
+    def field_at_nodes(self, body: str = "cam", model=None):
         """Full-field (u (2, n), stress dict) at the scalar nodes of ``body`` (one back-solve)."""
-        return self.model.full_field(self, body)
+        return self.model_or(model).full_field(self, body)
 
-    def stress_at(self, x, z, body: str = "cam"):
+    def stress_at(self, x, z, body: str = "cam", model=None):
         """(sx, sz, txz, sy, tau1, von_mises) at arbitrary points (x, z >= 0 depth), Pa."""
-        return self.model.stress_at(self, x, z, body)
+        return self.model_or(model).stress_at(self, x, z, body)
 
-    def to_vtu(self, path):
+    def to_vtu(self, path, model=None):
         """Write both bodies to one .vtu (see :mod:`femcam.fe.export`); returns the path."""
         from .export import write_vtu
 
-        return write_vtu(self, path)
+        return write_vtu(self, path, model=model)
 
 
 def _traction_fields(trac, Q, q, w, x, length, mu) -> dict:
@@ -284,6 +297,15 @@ def _hertz(F, length, rho, Rr, cam, roller, plane):
     w = F / length
     a = float(half_width(w, effective_radius(rho, Rr), effective_modulus(cam, roller, plane)))
     return a, float(peak_pressure(w, a))
+
+
+def _radius(name: str, value) -> float:
+    """A signed radius of curvature (m): a real number or +-inf (flat), not 0 or nan."""
+    if isinstance(value, bool) or not isinstance(value, int | float | np.integer | np.floating):
+        raise chk.fail(name, value, "m", "must be a number (inf for a flat cam)")
+    if math.isnan(value) or value == 0:
+        raise chk.fail(name, value, "m", "must be nonzero (inf for a flat cam)")
+    return float(value)
 
 
 @dataclass(frozen=True, eq=False)
@@ -322,6 +344,13 @@ class ContactModel:
               a_ref: float, mesh: MeshOptions | None = None, solver: SolverOptions | None = None,
               plane: str = "strain", element: str = "P2") -> ContactModel:
         """Mesh, assemble, factorise and condense (see module docstring)."""
+        rho_ref = _radius("rho_ref", rho_ref)
+        for name, v, kind, what in (("cam", cam, Material, "Material"),
+                                    ("roller", roller, Material, "Material"),
+                                    ("mesh", mesh, MeshOptions | None, "MeshOptions or None"),
+                                    ("solver", solver, SolverOptions | None, "SolverOptions or None")):
+            if not isinstance(v, kind):
+                raise chk.fail(name, v, "", f"must be a {what}")
         Rr = chk.positive("Rr", Rr, "m")
         length = chk.positive("length", length, "m")
         a_ref = chk.positive("a_ref", a_ref, "m")
@@ -529,7 +558,7 @@ class ContactModel:
     def _check_inputs(F, rho, mu, sliding, Q, rolling):
         """Checked (F, rho, mu, Q) of :meth:`solve`."""
         F = chk.nonnegative("F", F, "N")
-        rho = float(rho)
+        rho = _radius("rho", rho)
         if math.isnan(rho) or rho == 0.0:
             raise chk.fail("rho", rho, "m", "must be nonzero (inf for a flat cam)")
         mu = chk.nonnegative("mu", mu, "")

@@ -187,8 +187,7 @@ def default_cache() -> ModelCache:
     return _PROCESS_CACHE
 
 
-def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions,
-                _threaded: bool = False) -> ContactModel:
+def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions) -> ContactModel:
     """A fresh :class:`femcam.fe.ContactModel` (mesh + factorisation).
 
     Parameters
@@ -203,18 +202,6 @@ def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepO
     -------
     femcam.fe.ContactModel
     """
-    if not _threaded and threading.current_thread() is not threading.main_thread():
-        # Dask runs tasks in worker threads; gmsh.initialize() installs a SIGINT handler, which
-        # Python allows only in the main thread. Initialise gmsh here without it (same
-        # arguments as femcam.mesh otherwise) so that femcam.mesh finds it initialised.
-        import gmsh  # lazy: gmsh is a large native library, loaded only to build meshes
-
-        if not gmsh.isInitialized():
-            gmsh.initialize(["-nopopup"], readConfigFiles=False, interruptible=False)
-            try:
-                return build_model(cp, rho_ref, a_ref, options, _threaded=True)
-            finally:
-                gmsh.finalize()
     return ContactModel.build(Rr=cp.Rr, rho_ref=rho_ref, cam=cp.cam, roller=cp.roller,
                               length=cp.length, a_ref=a_ref,
                               mesh=MeshOptions(a_over_h=options.a_over_h),

@@ -206,8 +206,9 @@ def _peak(table, name, ok, how=np.nanmax):
 def extras_provenance(scene, table) -> dict:
     """Which providers ran and their summary over the swept angles (JSON-able).
 
-    ``providers``: names; ``errors``: the refusals; ``assess``: the worst angle per criterion
-    (:func:`femcam.assess.worst_angles`: ``{criterion: {"value", "theta_deg"}}``);
+    ``providers``: names; ``columns``: the SI names of their columns; ``errors``: the refusals;
+    ``assess``: the worst angle per criterion (:func:`femcam.assess.worst_angles`:
+    ``{criterion: {"value", "theta_deg"}}``);
     ``halfspace``: largest axial peak (MPa) and the FE load basis; ``bodies``: largest bore hoop
     stress (MPa) and needle load (N); ``layers``: largest interface utilisation, smallest case margin.
     """
@@ -215,6 +216,8 @@ def extras_provenance(scene, table) -> dict:
     out = {"providers": [p.name for p in ps]}
     if not ps:
         return out
+    cols, text = extra_columns(scene)
+    out["columns"] = [c[0] for c in cols] + list(text)   # SI names (SweepResult.load reads them)
     errs = sorted({e for e in np.asarray(table.get(ERROR_COLUMN, [])).astype(str) if e})
     if errs:
         out["errors"] = errs

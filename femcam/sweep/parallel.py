@@ -19,16 +19,22 @@ expected work.
 
 from __future__ import annotations
 
+import contextlib
+import dataclasses
 import multiprocessing
 import os
+import signal
 import sys
+import tempfile
 import threading
 import time
 from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import ProcessPoolExecutor, as_completed
+from pathlib import Path
 
 from .._threads import limit_blas_threads
 from ..errors import InputError
+from ..io import atomic_write_bytes
 
 #: ``workers="auto"``: use processes only if they are expected to save at least this fraction
 AUTO_MIN_SAVING = 0.25
@@ -143,6 +149,8 @@ def run_tasks(fn: Callable, tasks: Iterable, *, workers: int = 1, scheduler=None
 
 def _worker_init(parent_pid: int | None = None):
     limit_blas_threads(1)
+    # Ctrl-C is the parent's to handle (one line, exit 130); the parent stops the pool
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     if parent_pid is not None:
         threading.Thread(target=_exit_with_parent, args=(parent_pid,), daemon=True,
                          name="femcam-parent-watch").start()
@@ -174,6 +182,8 @@ def _run_pool(fn, tasks, workers):
         except BaseException:
             for f in futs:
                 f.cancel()
+            # (chunks in flight finish, bounded by one chunk per worker; terminating the workers
+            # instead breaks the executor's pipes mid-shutdown)
             raise
 
 
@@ -194,24 +204,60 @@ def _run_dask(fn, tasks, *, scheduler=None, client=None):
     elif not isinstance(client, Client):  # a LocalCluster / cluster object
         own = client = Client(client)
     try:
-        futs = [client.submit(fn, t, pure=False, key=f"femcam-chunk-{i}-{time.time_ns()}")
+        futs = [client.submit(_files_back, fn, t, pure=False,
+                              key=f"femcam-chunk-{i}-{time.time_ns()}")
                 for i, t in enumerate(tasks)]
         index = {f.key: i for i, f in enumerate(futs)}
         for f in dask_completed(futs):
-            yield index[f.key], f.result()
+            rows, files = f.result()
+            _write_back(tasks[index[f.key]], files)
+            yield index[f.key], rows
     finally:
         if own is not None:
             own.close()
 
 
+def _files_back(fn, task):
+    """Run ``fn(task)`` on a Dask worker with its files written to a private temporary directory,
+    and return ``(rows, {file name: bytes})``: the client writes them (:func:`_write_back`).
+
+    A worker's working directory and disk are not the client's (another directory for a
+    relative ``--out``, another machine on a cluster), so a worker writes nothing into the
+    output directory itself."""
+    vtk_dir = getattr(task, "vtk_dir", None)
+    if vtk_dir is None:
+        return fn(task), {}
+    with tempfile.TemporaryDirectory(prefix="femcam-chunk-") as tmp:
+        rows = fn(dataclasses.replace(task, vtk_dir=tmp))
+        files = {p.name: p.read_bytes() for p in sorted(Path(tmp).iterdir())
+                 if not p.name.endswith(".part.vtu")}
+    return rows, files
+
+
+def _write_back(task, files: dict) -> None:
+    """Write the files a Dask worker returned into the task's ``vtk_dir`` (atomically)."""
+    if not files:
+        return
+    root = Path(task.vtk_dir)
+    root.mkdir(parents=True, exist_ok=True)
+    for name, data in files.items():
+        atomic_write_bytes(root / name, lambda f, d=data: f.write(d))
+
+
 class Progress:
-    """A one-line progress bar on stderr, shown only when stderr is a TTY (no tqdm needed)."""
+    """A one-line progress bar on stderr, shown only when stderr is a TTY (no tqdm needed).
+
+    :meth:`phase` shows the elapsed time of a phase without a count (model families, output
+    files, plots) once it has lasted ``delay_s`` (1 s): short phases stay silent.
+    """
 
     def __init__(self, total: int, label: str = "sweep", enabled: bool | None = None,
-                 stream=None):
+                 stream=None, delay_s: float = 1.0):
         self.stream = stream or sys.stderr
         if enabled is None:
             enabled = bool(getattr(self.stream, "isatty", lambda: False)())
+        self.on = bool(enabled)
+        self.delay_s = float(delay_s)
         self.enabled = enabled and total > 0
         self.total, self.done, self.label = total, 0, label
         self.t0 = time.perf_counter()
@@ -235,3 +281,33 @@ class Progress:
         if self.enabled:
             self.stream.write("\n")
             self.stream.flush()
+
+    @contextlib.contextmanager
+    def phase(self, label: str, period_s: float = 0.25):
+        """Context manager: ``label ... 3.2 s`` redrawn every ``period_s`` once the phase has
+        lasted ``delay_s``, then ``label: 4.1 s`` on its own line (nothing for a short phase)."""
+        if not self.on:
+            yield
+            return
+        stop, shown, t0 = threading.Event(), [False], time.perf_counter()
+
+        def tick():
+            if stop.wait(self.delay_s):
+                return
+            while True:
+                shown[0] = True
+                self.stream.write(f"\r{label} ... {time.perf_counter() - t0:5.1f} s")
+                self.stream.flush()
+                if stop.wait(period_s):
+                    return
+
+        th = threading.Thread(target=tick, daemon=True, name="femcam-progress")
+        th.start()
+        try:
+            yield
+        finally:
+            stop.set()
+            th.join()
+            if shown[0]:
+                self.stream.write(f"\r{label}: {time.perf_counter() - t0:5.1f} s\n")
+                self.stream.flush()

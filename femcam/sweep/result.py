@@ -32,9 +32,16 @@ Wear: ``wear_source`` says which pressure the ``wear_depth`` column used (``fe``
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import numpy as np
+
+from ..errors import InputError
+
+#: prefix of the worst angle's surface-profile arrays in ``sweep.npz`` (for re-plotting)
+PROFILE_PREFIX = "profile__"
 
 #: (internal SI name, CSV column name, factor SI -> CSV unit). Order = CSV column order.
 COLUMNS: tuple[tuple[str, str, float], ...] = (
@@ -74,6 +81,8 @@ TEXT_COLUMNS = ("status", "flags", "wear_source", "message")
 EXTRA_COLUMNS = ("iterations", "residual", "n_dofs", "family")
 
 NUMERIC = tuple(c[0] for c in COLUMNS) + EXTRA_COLUMNS
+#: numeric columns that are counts or ids: int64 in the NPZ (-1 where undefined)
+INTEGER_COLUMNS = ("iterations", "n_dofs", "family")
 STATUSES = ("ok", "liftoff", "undercut", "failed")
 
 #: wall-clock columns (differ from run to run; excluded from equality checks)
@@ -153,6 +162,45 @@ def extra_keys(rows: dict) -> list[str]:
     """Columns of ``rows`` beyond :data:`NUMERIC` and :data:`TEXT_COLUMNS` (added by the extra
     column providers, :mod:`femcam.sweep.extras`), in their order."""
     return [k for k in rows if k not in NUMERIC and k not in TEXT_COLUMNS]
+
+
+class TableBuilder:
+    """The sweep table filled chunk by chunk as chunks finish (any order), without keeping the
+    chunks: one float array per numeric column, preallocated (memory ~ one copy of the table).
+
+    Parameters
+    ----------
+    bounds : list of (int, int)
+        Row ranges of the chunks.
+    """
+
+    def __init__(self, bounds):
+        self.bounds = list(bounds)
+        n = self.bounds[-1][1] if self.bounds else 0
+        self.n = n
+        self.numeric = {name: np.full(n, np.nan) for name in NUMERIC}
+        self.text = {name: [np.zeros(0, str)] * len(self.bounds) for name in TEXT_COLUMNS}
+
+    def put(self, c: int, rows: dict) -> None:
+        """Chunk ``c``'s rows (dict of arrays) into the table."""
+        a, b = self.bounds[c]
+        for name in NUMERIC:
+            self.numeric[name][a:b] = np.asarray(rows[name], dtype=float)
+        for name in TEXT_COLUMNS:
+            self.text[name][c] = np.asarray(rows[name]).astype(str)
+        for name in extra_keys(rows):  # extra column providers (femcam.sweep.extras)
+            v = np.asarray(rows[name])
+            if v.dtype.kind in "OUS":
+                self.text.setdefault(name, [np.zeros(0, str)] * len(self.bounds))[c] = v.astype(str)
+            else:
+                self.numeric.setdefault(name, np.full(self.n, np.nan))[a:b] = v.astype(float)
+
+    def table(self) -> dict:
+        """The whole table (float and ``str`` columns, as :func:`concat_rows`)."""
+        out = dict(self.numeric)
+        for name in self.text:
+            out[name] = np.concatenate(self.text[name]) if self.text[name] else np.zeros(0, str)
+        return out
 
 
 @dataclass(frozen=True)
@@ -290,3 +338,103 @@ class SweepResult:
             "wear_depth_max": peak("wear_depth"),
             "extras": self.provenance.get("extras", {}),
         }
+
+    @classmethod
+    def load(cls, directory) -> SweepResult:
+        """Reload a finished sweep from its output directory (``DIR/sweep.npz``).
+
+        The table (SI), provenance (families, options, versions) and, when the sweep wrote its
+        plots, the plots' data: ``plot_sweep(SweepResult.load(DIR), DIR)`` re-plots it.
+
+        Parameters
+        ----------
+        directory : str or Path
+            The sweep's ``out``.
+
+        Returns
+        -------
+        SweepResult
+            ``paths`` lists the output files found; ``timings`` is empty.
+        """
+        d = Path(directory)
+        npz = d / "sweep.npz"
+        if not npz.is_file():
+            raise InputError(f"directory = {d}: no sweep.npz (not a finished sweep's output "
+                             "directory; an interrupted one resumes with --resume)")
+        profile, table = {}, {}
+        with np.load(npz, allow_pickle=False) as z:
+            prov = json.loads(str(z["provenance_json"]))
+            extra_names = set(prov.get("extras", {}).get("columns", ()))
+            for name in z.files:
+                if name.startswith(PROFILE_PREFIX):
+                    v = z[name]
+                    profile[name[len(PROFILE_PREFIX):]] = v.item() if v.ndim == 0 else v
+                elif name in NUMERIC:
+                    v = z[name]
+                    # integer columns are stored with -1 for "undefined" (NaN in the table)
+                    table[name] = np.where(v < 0, np.nan, v).astype(float) if v.dtype.kind == "i" \
+                        else v.astype(float)
+                elif name in TEXT_COLUMNS:
+                    table[name] = z[name].astype(str)
+                elif name in extra_names:  # extra column providers (femcam.sweep.extras)
+                    v = z[name]
+                    table[name] = v.astype(str) if v.dtype.kind in "US" else v.astype(float)
+            hf = json.loads(str(z["hertz_factors_json"])) if "hertz_factors_json" in z.files else None
+        method = prov.get("options", {}).get("method", "fe")
+        names = {"csv": "sweep.csv", "npz": "sweep.npz", "pvd": "sweep.pvd",
+                 "scene": "scene.toml", "report": "report.md"}
+        paths = {k: str(d / f) for k, f in names.items() if (d / f).exists()}
+        return cls(table=table, method=method, provenance=prov, paths=paths,
+                   surface_profile=profile or None, hertz_factors=hf)
+
+
+def plot_data_arrays(result: SweepResult) -> dict:
+    """The plots' data of ``result`` as ``sweep.npz`` arrays (read back by
+    :meth:`SweepResult.load`): the surface profile under :data:`PROFILE_PREFIX` and the Hertz
+    factors as JSON. Empty when the sweep computed no plot data."""
+    out = {}
+    for k, v in (result.surface_profile or {}).items():
+        out[PROFILE_PREFIX + k] = np.asarray(v)
+    if result.hertz_factors is not None:
+        out["hertz_factors_json"] = np.array(json.dumps(result.hertz_factors, sort_keys=True))
+    return out
+
+
+def _fmt(x: float, scale: float = 1.0, digits: int = 1) -> str:
+    return "-" if not np.isfinite(x) else f"{x * scale:.{digits}f}"
+
+
+def report_markdown(result: SweepResult) -> str:
+    """The sweep's summary as Markdown (written to ``DIR/report.md`` beside the CSV).
+
+    Parameters
+    ----------
+    result : SweepResult
+
+    Returns
+    -------
+    str
+    """
+    s, p = result.summary(), result.provenance
+    o = p.get("options", {})
+    lines = ["# femcam sweep report", "",
+             f"- scene: `{p.get('scene', '(in memory)')}` (sha256 `{str(p.get('scene_sha256', ''))[:16]}`)",
+             f"- command: `{p.get('command', '')}`",
+             f"- method: {result.method}; {result.n_angles} angles; "
+             f"{result.n_chunks_resumed} chunks resumed, {result.n_chunks_computed} computed",
+             f"- lift-off {s['n_liftoff']}, undercut {s['n_undercut']}, failed {s['n_failed']} "
+             "angle(s)"]
+    if result.method == "fe":
+        lines.append(f"- {s['n_families']} model families, reuse error <= "
+                     f"{_fmt(s['reuse_error_max'], 100, 3)} % at the checked angles (tolerance "
+                     f"{100 * float(o.get('tolerance', float('nan'))):g} %)")
+    lines += ["", "| quantity | peak over the cycle |", "|---|---|",
+              f"| Fc (N) | {_fmt(s['Fc_max'])} |",
+              f"| p0 Hertz (MPa) | {_fmt(s['p0_hertz_max'], 1e-6)} |",
+              f"| p0 FE (MPa) | {_fmt(s['p0_fe_max'], 1e-6)} |",
+              f"| max FE/Hertz - 1 for p0 (%) | {_fmt(s['err_p0_absmax'], 100, 3)} |",
+              f"| von Mises (MPa) | {_fmt(s['vm_max'], 1e-6)} |",
+              f"| tau1 (MPa) | {_fmt(s['tau1_max'], 1e-6)} |",
+              f"| wear depth per revolution (nm) | {_fmt(s['wear_depth_max'], 1e9, 3)} |",
+              "", "Files: " + ", ".join(f"`{Path(v).name}`" for v in result.paths.values()), ""]
+    return "\n".join(lines)

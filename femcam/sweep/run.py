@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import _validate
-from ..errors import InputError
+from ..errors import FemcamError, InputError
 from ..hertz.conformity import roller_does_not_fit, shape_factors
 from ..io import (
     atomic_write_text,
@@ -26,6 +26,7 @@ from ..io import (
     write_pvd,
 )
 from ..scene import Scene, load_scene
+from ..viz.animate import animate_pvd
 from ..viz.sweep import plot_sweep
 from .cache import default_cache
 from .extras import extra_columns, extras_provenance, plot_extras
@@ -34,11 +35,22 @@ from .options import SweepOptions, contact_params
 from .parallel import AUTO_VTU_S, Progress, auto_workers, run_tasks
 from .pipeline import ChunkTask, analytic_rows, contact_mask, run_chunk
 from .profile import worst_surface_profile
-from .result import COLUMNS, NUMERIC, TEXT_COLUMNS, SweepResult, concat_rows
-from .store import ChunkStore, array_hash
+from .result import (
+    COLUMNS,
+    INTEGER_COLUMNS,
+    NUMERIC,
+    TEXT_COLUMNS,
+    SweepResult,
+    TableBuilder,
+    plot_data_arrays,
+    report_markdown,
+)
+from .store import LOCK, ChunkStore, DirLock, array_hash
 from .wear import WearSetup, wear_setup
 
 DEFAULT_STEP_DEG = 1.0
+#: ``.vtu`` every k angles with ``out`` (API and CLI default)
+DEFAULT_VTK_EVERY = 10
 
 
 def parse_angles_deg(spec: str) -> np.ndarray:
@@ -103,13 +115,17 @@ class _Run:
     family: np.ndarray | None = None
     records: list | None = None
     verified_here: bool = False
+    overwrite: bool = False
+    animate: bool = False
+    lock: DirLock | None = None
 
 
 def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
           tolerance: float = 2e-3, chunk_size: int = 30, out=None, resume: bool = False,
-          workers: int | str = "auto", scheduler=None, client=None, vtk_every: int = 0,
-          progress: bool | None = None, plots: bool = False, command: str | None = None,
-          scene_path=None, chunk_delay_s: float = 0.0) -> SweepResult:
+          workers: int | str = "auto", scheduler=None, client=None, vtk_every: int | None = None,
+          progress: bool | None = None, plots: bool | None = None, command: str | None = None,
+          scene_path=None, chunk_delay_s: float = 0.0, overwrite: bool = False,
+          animate: bool = False) -> SweepResult:
     """Sweep a scene over cam angles: kinematics, loads, Hertz and FE contact at every angle.
 
     Parameters
@@ -130,21 +146,26 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
     chunk_size : int
         Angles per chunk (unit of parallel work and of the on-disk store).
     out : str or Path, optional
-        Output directory; ``None`` keeps everything in memory.
+        Output directory; ``None`` keeps everything in memory. Locked while the sweep runs (a
+        second sweep into it is refused); a non-empty directory is refused unless ``resume``
+        or ``overwrite``.
     resume : bool
-        Continue a killed sweep in ``out`` (loads finished chunks, computes the rest).
+        Continue a killed sweep in ``out`` (loads finished chunks, computes the rest; each
+        chunk is checked against the manifest's scene hash).
     workers : int or str
         Local worker processes (``1`` = serial in this process), or ``"auto"`` (default):
         processes only when the expected saving is worth it (:func:`auto_workers`); ignored
         with ``scheduler``/``client``.
     scheduler, client : str or dask.distributed.Client, optional
         Dask scheduler address, or a ``Client``/``LocalCluster``.
-    vtk_every : int
-        With ``out``, write one ``.vtu`` every k angles and ``sweep.pvd`` (0 = none).
+    vtk_every : int, optional
+        With ``out``, write one ``.vtu`` every k angles and ``sweep.pvd`` (0 = none). Default:
+        the CLI's, :data:`DEFAULT_VTK_EVERY` (so ``sweep(..., out=DIR)`` writes what
+        ``femcam sweep --out DIR`` writes).
     progress : bool, optional
         Stderr progress bar (default: only when stderr is a TTY).
-    plots : bool
-        With ``out``, write the PNG plots (:mod:`femcam.viz.sweep`).
+    plots : bool, optional
+        With ``out``, write the PNG plots (:mod:`femcam.viz.sweep`); default True (as the CLI).
     command : str, optional
         Command line recorded in the provenance.
     scene_path : str or Path, optional
@@ -152,19 +173,60 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
     chunk_delay_s : float
         Seconds to sleep after each chunk (>= 0; a test aid that makes "kill after k chunks"
         deterministic).
+    overwrite : bool
+        Allow a fresh sweep into a non-empty ``out`` (its earlier results are replaced).
+    animate : bool
+        With ``out`` and VTK output, also write ``DIR/animation.gif``: von Mises over cam angle
+        (:func:`femcam.viz.animate.animate_pvd`).
 
     Returns
     -------
     SweepResult
+
+    Raises
+    ------
+    SweepInterrupted
+        On Ctrl-C (a ``KeyboardInterrupt`` saying what was saved and how to resume).
     """
     t_start = time.perf_counter()
     run = _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume, workers,
                    vtk_every, scene_path, chunk_delay_s)
+    run.overwrite = bool(overwrite)
+    run.animate = bool(animate)
+    if run.animate and not run.opts.vtk_every:
+        raise _validate.fail("animate", animate, "", "needs the VTK series: an output directory "
+                             "(out) and vtk_every > 0 (--vtk-every)")
+    plots = (run.out is not None) if plots is None else bool(plots)
+    try:
+        return _sweep(run, scheduler, client, progress, plots, command, t_start)
+    except KeyboardInterrupt:
+        raise SweepInterrupted(_interrupt_message(run)) from None
+    finally:
+        if run.lock is not None:
+            run.lock.release()
+
+
+class SweepInterrupted(KeyboardInterrupt):
+    """Ctrl-C during a sweep; the message says what was saved and how to resume."""
+
+
+def _interrupt_message(run: _Run) -> str:
+    if run.store is None or run.out is None:
+        return "interrupted; nothing was saved" + ("" if run.out is None else
+                                                   f" in {run.out} (rerun the same command)")
+    saved = sum(1 for i in range(len(run.bounds)) if run.store.path(i).exists())
+    return (f"interrupted; {saved} of {len(run.bounds)} chunks saved in {run.out / 'chunks'}; "
+            "rerun the same command with --resume to compute the rest")
+
+
+def _sweep(run: _Run, scheduler, client, progress, plots, command, t_start) -> SweepResult:
     _analytic(run)
     t_analytic = time.perf_counter() - t_start
     _open_store(run)
     t0 = time.perf_counter()
-    _plan(run)
+    talk = Progress(0, enabled=progress)
+    with talk.phase("model families: build and verify"):
+        _plan(run)
     t_verify = time.perf_counter() - t0
     tasks, task_chunk = _tasks(run)
     workers, workers_note = _choose_workers(run, tasks, task_chunk, scheduler, client)
@@ -188,7 +250,8 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
                          timings=timings, n_chunks_computed=len(tasks),
                          n_chunks_resumed=len(run.done))
     if run.out is not None:
-        result = _write_outputs(result, run, plots, src_path, src_text)
+        with talk.phase(f"writing {run.out}" + (" (tables, plots)" if plots else "")):
+            result = _write_outputs(result, run, plots, src_path, src_text)
     result.timings["total"] = time.perf_counter() - t_start
     return result
 
@@ -205,6 +268,8 @@ def _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume
     if angles.size == 0:
         raise _validate.fail("angles", "[]", "rad", "must contain at least one angle")
     workers = _validate.workers("workers", workers)
+    if vtk_every is None:
+        vtk_every = DEFAULT_VTK_EVERY
     opts = SweepOptions(method=method, a_over_h=a_over_h, tolerance=tolerance,
                         chunk_size=chunk_size, vtk_every=vtk_every if out is not None else 0)
     if resume and out is None:
@@ -221,6 +286,7 @@ def _analytic(run: _Run) -> None:
     """The analytic chain for all angles (cheap, vectorised): contact mask and slip."""
     run.rows0, st0 = analytic_rows(run.scene, run.angles)
     run.contact = contact_mask(run.rows0, st0)
+    run.rows0 = {k: run.rows0[k] for k in ("Fc", "rho")}  # all the planning needs (memory)
     run.wear = wear_setup(run.scene, run.angles, st0)
 
 
@@ -235,6 +301,11 @@ def _open_store(run: _Run) -> None:
     key = {"scene_sha256": run.shash, "angles_sha256": array_hash(run.angles), "n_angles": int(n),
            **run.opts.to_dict()}
     run.out.mkdir(parents=True, exist_ok=True)
+    run.lock = DirLock(run.out).acquire()
+    if not run.resume and not run.overwrite and any(p.name != LOCK for p in run.out.iterdir()):
+        raise InputError(f"out = {run.out}: the directory is not empty; pass --resume to continue "
+                         "the sweep in it, --overwrite to replace its results (overwrite=True), "
+                         "or choose another --out")
     run.store = ChunkStore(run.out / "chunks", key, run.bounds)
     run.done = frozenset(run.store.open(run.resume))
     if not run.done:  # fresh sweep: no stale series from an earlier run in the same DIR
@@ -310,8 +381,9 @@ def _choose_workers(run: _Run, tasks, task_chunk, scheduler, client) -> tuple[in
 
 def _compute(run: _Run, tasks, task_chunk, workers, scheduler, client, progress) -> dict:
     """Run the chunks (stored as they finish), load the resumed ones, return the whole table."""
-    parts: dict[int, dict] = {}
+    table = TableBuilder(run.bounds)  # filled as chunks finish: no second copy of the rows
     bar = Progress(sum(b - a for c, (a, b) in enumerate(run.bounds) if c not in run.done),
+                   label="solves" + (" and VTU files" if run.opts.vtk_every else ""),
                    enabled=progress)
     try:
         for k, rows in run_tasks(run_chunk, tasks, workers=workers, scheduler=scheduler,
@@ -319,13 +391,14 @@ def _compute(run: _Run, tasks, task_chunk, workers, scheduler, client, progress)
             c = task_chunk[k]
             if run.store is not None:
                 run.store.write(c, rows)
-            parts[c] = rows
+            table.put(c, rows)
+            del rows
             bar.update(run.bounds[c][1] - run.bounds[c][0])
     finally:
         bar.close()
     for c in run.done:
-        parts[c] = run.store.load(c)
-    return concat_rows([parts[c] for c in range(len(run.bounds))])
+        table.put(c, run.store.load(c))
+    return table.table()
 
 
 def _write_outputs(result: SweepResult, run: _Run, plots: bool, src_path=None,
@@ -342,28 +415,48 @@ def _write_outputs(result: SweepResult, run: _Run, plots: bool, src_path=None,
         prov["scene_copy"] = (f"{copy.name} (copy of {src_path}; the sweep used the parsed scene "
                               "recorded as scene_repr in sweep.npz, which differs from the file "
                               "only if it was changed in code, e.g. --law)")
+    result = replace(result, provenance=prov)
+    if plots:
+        result = _with_plot_data(result, run)
     xcols, xtext = extra_columns(run.scene)  # extra column providers (femcam.sweep.extras)
     paths.update(csv=str(write_csv(out / "sweep.csv", result.table, prov, columns=COLUMNS + xcols,
                                    text_columns=TEXT_COLUMNS + xtext)),
                  npz=str(write_npz(out / "sweep.npz", result.table, prov,
                                    numeric=NUMERIC + tuple(c[0] for c in xcols),
-                                   text_columns=TEXT_COLUMNS + xtext, scene_toml=src_text,
-                                   scene_repr=repr(run.scene))))
+                                   text_columns=TEXT_COLUMNS + xtext, integer_columns=INTEGER_COLUMNS,
+                                   scene_toml=src_text,
+                                   scene_repr=repr(run.scene), extra=plot_data_arrays(result))))
     theta = result.table["theta"]
     entries = [(float(np.degrees(theta[i])), out / "vtk" / vtu_name(theta[i]))
                for i in np.flatnonzero(run.vtk_mask)]
+    _check_vtus(result, run)
     entries = [(t, p) for t, p in entries if p.exists()]
     if entries:
         paths["pvd"] = str(write_pvd(out / "sweep.pvd", entries))
-    result = replace(result, provenance=prov, paths=paths)
+    result = replace(result, paths=paths)
     if plots:
-        result = _with_plot_data(result, run)
         try:
             paths.update(plot_sweep(result, out))
             paths.update(plot_extras(run.scene, result.table, out))
         except ImportError as exc:  # pragma: no cover - matplotlib missing
             raise InputError(f"plots = True: {exc}") from None
+    if run.animate and "pvd" in paths:
+        paths["animation"] = animate_pvd(paths["pvd"], out / "animation.gif")
+    atomic_write_text(out / "report.md", report_markdown(result))
+    paths["report"] = str(out / "report.md")
     return result
+
+
+def _check_vtus(result: SweepResult, run: _Run) -> None:
+    """Every ``ok`` angle of the VTK series has its ``.vtu`` in ``DIR/vtk``, or the sweep fails
+    loudly (never a silent exit 0 with files missing, e.g. written on another machine)."""
+    want = np.flatnonzero(run.vtk_mask & (result.table["status"] == "ok"))
+    missing = [vtu_name(result.table["theta"][i]) for i in want
+               if not (run.out / "vtk" / vtu_name(result.table["theta"][i])).exists()]
+    if missing:
+        raise FemcamError(f"{len(missing)} of {want.size} .vtu files are missing from "
+                          f"{run.out / 'vtk'} (first: {missing[0]}); the table is saved in "
+                          f"{run.out / 'chunks'}")
 
 
 def _with_plot_data(result: SweepResult, run: _Run) -> SweepResult:

@@ -18,9 +18,15 @@ from __future__ import annotations
 
 import hashlib
 import json
+import os
 from pathlib import Path
 
 import numpy as np
+
+try:
+    import fcntl
+except ImportError:  # pragma: no cover - Windows: no directory lock
+    fcntl = None
 
 from ..errors import InputError
 from ..io import atomic_write_bytes, atomic_write_text
@@ -28,7 +34,11 @@ from .result import NUMERIC, TEXT_COLUMNS, extra_keys
 
 MANIFEST = "manifest.json"
 PLAN = "plan.json"
-FORMAT_VERSION = 3  # 2: wear and build-time columns, plan.json; 3: extra provider columns
+FORMAT_VERSION = 4  # 2: wear and build-time columns, plan.json; 3: scene hash in each chunk;
+#                     4: extra provider columns (femcam.sweep.extras)
+LOCK = ".femcam.lock"
+#: name of the scene hash stored in each chunk file (not a column)
+CHUNK_SCENE_KEY = "_scene_sha256"
 
 
 def array_hash(arr) -> str:
@@ -92,19 +102,33 @@ class ChunkStore:
             if old is not None and old != json.loads(json.dumps(self._manifest(), sort_keys=True)):
                 diff = sorted(k for k in set(old.get("key", {})) | set(self.key)
                               if old.get("key", {}).get(k) != self.key.get(k))
-                if old.get("bounds") != self.bounds:
+                if old.get("bounds") != [list(b) for b in self.bounds]:  # JSON lists
                     diff.append("chunk bounds")
                 raise InputError(
                     f"resume = True: {mpath} belongs to a different sweep (differs in: "
                     f"{', '.join(diff) or 'format'}); rerun without --resume or use another --out")
             if old is not None:
-                return {i for i in range(len(self.bounds)) if self._readable(i)}
+                done = {i for i in range(len(self.bounds)) if self._readable(i)}
+                self._check_scene(done)
+                return done
         # fresh sweep: drop old chunks and plan, write the manifest
         for p in self.root.glob("chunk_*.npz"):
             p.unlink()
         (self.root / PLAN).unlink(missing_ok=True)
         atomic_write_text(mpath, json.dumps(self._manifest(), indent=1, sort_keys=True))
         return set()
+
+    def _check_scene(self, done) -> None:
+        """Refuse finished chunks computed for another scene than the manifest's."""
+        want = self.key.get("scene_sha256")
+        for i in sorted(done):
+            with np.load(self.path(i), allow_pickle=False) as z:
+                got = str(z[CHUNK_SCENE_KEY]) if CHUNK_SCENE_KEY in z.files else "(none)"
+            if want is not None and got != want:
+                raise InputError(
+                    f"resume = True: {self.path(i)} was computed for another scene (scene hash "
+                    f"{got[:12]}, the manifest's is {want[:12]}); the directory holds two "
+                    "sweeps' chunks: rerun without --resume (--overwrite) or use another --out")
 
     # -- the verified family plan ----------------------------------------------------
     def save_plan(self, plan: dict) -> None:
@@ -143,6 +167,8 @@ class ChunkStore:
         for name in extra_keys(rows):  # extra column providers: numbers as float, text as str
             v = np.asarray(rows[name])
             arrays[name] = v.astype(str) if v.dtype.kind in "OUS" else v.astype(float)
+        if self.key.get("scene_sha256") is not None:
+            arrays[CHUNK_SCENE_KEY] = np.array(str(self.key["scene_sha256"]))
         p = self.path(i)
         atomic_write_bytes(p, lambda f: np.savez(f, **arrays))
         return p
@@ -150,4 +176,42 @@ class ChunkStore:
     def load(self, i: int) -> dict:
         """The table of chunk ``i`` (dict of arrays)."""
         with np.load(self.path(i), allow_pickle=False) as z:
-            return {name: z[name] for name in z.files}
+            return {name: z[name] for name in z.files if name != CHUNK_SCENE_KEY}
+
+
+class DirLock:
+    """An exclusive OS lock on an output directory (``fcntl.flock`` on ``DIR/.femcam.lock``).
+
+    A second writer into the same directory is refused with one line naming the holder's pid.
+    The kernel releases the lock when the holder's file descriptor closes: on :meth:`release`,
+    on exit, and on a kill (SIGKILL included), so a killed sweep never leaves a stale lock.
+    Without ``fcntl`` (Windows) the lock is a no-op.
+    """
+
+    def __init__(self, directory):
+        self.path = Path(directory) / LOCK
+        self._fd = None
+
+    def acquire(self, flag: str = "out") -> DirLock:
+        """Take the lock or raise :class:`InputError` (``flag``: the option named in it)."""
+        if fcntl is None:  # pragma: no cover - Windows
+            return self
+        fd = os.open(self.path, os.O_RDWR | os.O_CREAT, 0o644)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            holder = os.pread(fd, 64, 0).decode(errors="replace").strip() or "?"
+            os.close(fd)
+            raise InputError(f"{flag} = {self.path.parent}: another femcam sweep (pid {holder}) "
+                             "is writing into this directory; wait for it to finish or use "
+                             "another output directory") from None
+        os.ftruncate(fd, 0)
+        os.pwrite(fd, str(os.getpid()).encode(), 0)
+        self._fd = fd
+        return self
+
+    def release(self) -> None:
+        """Release the lock (idempotent)."""
+        if self._fd is not None:
+            os.close(self._fd)
+            self._fd = None

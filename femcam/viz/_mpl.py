@@ -11,3 +11,10 @@ def pyplot():
     import matplotlib.pyplot as plt
 
     return plt
+
+
+def legend_outside(ax, fontsize: float = 8, **kw):
+    """The legend of ``ax`` to the right of the axes, never over the data (``tight_layout``
+    makes room for it)."""
+    return ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, frameon=False,
+                     fontsize=fontsize, **kw)

@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from ..kinematics import law
-from ._mpl import pyplot
+from ._mpl import legend_outside, pyplot
 
 
 def _deg(st):
@@ -81,25 +81,35 @@ def plot_pressure_angle(st, path, title: str = "", limit_deg: float = 30.0):
                    title or f"Pressure angle (max |phi| = {pm:.2f} deg)", path)
 
 
+#: rho plots clip |rho| at this multiple of the median convex |rho| (every rho plot: this
+#: module's and the sweep's svaj_loads.png, through :func:`rho_clip_mm`)
+RHO_CLIP_FACTOR = 4.0
+
+
+def rho_clip_mm(rho_mm) -> float:
+    """The clip value (mm) of every rho plot: :data:`RHO_CLIP_FACTOR` x the median convex
+    radius (100 mm when no part is convex). Near an inflection |rho| grows without bound."""
+    rho_mm = np.asarray(rho_mm, float)
+    pos = rho_mm[np.isfinite(rho_mm) & (rho_mm > 0)]
+    return RHO_CLIP_FACTOR * float(np.median(pos)) if pos.size else 100.0
+
+
 def plot_rho(st, path, title: str = "", Rr: float = 0.0, clip_mm: float | None = None):
-    """Cam-surface radius of curvature rho (mm); concave parts are negative. Near an inflection
-    |rho| grows without bound, so values beyond ``clip_mm`` (default 4 x the median convex
-    radius) are clipped and marked."""
+    """Cam-surface radius of curvature rho (mm); concave parts are negative. Values beyond
+    ``clip_mm`` (default :func:`rho_clip_mm`) are clipped; the legend states the value."""
     plt = pyplot()
     th = _deg(st)
     rho = np.asarray(st.rho, float) * 1e3
     fin = np.isfinite(rho)
     if clip_mm is None:
-        pos = rho[fin & (rho > 0)]
-        clip_mm = 4.0 * float(np.median(pos)) if pos.size else 100.0
+        clip_mm = rho_clip_mm(rho)
     shown = np.clip(np.where(fin, rho, np.sign(rho) * np.inf), -clip_mm, clip_mm)
-    fig, ax = plt.subplots(figsize=(7.0, 3.4))
+    fig, ax = plt.subplots(figsize=(8.4, 3.4))
     ax.plot(th, shown, lw=1.4, label="rho (cam surface)")
     if np.any(np.abs(rho) > clip_mm):
-        ax.axhline(clip_mm, color="0.6", lw=0.6, ls=":")
+        ax.axhline(clip_mm, color="0.6", lw=0.6, ls=":",
+                   label=f"|rho| > {clip_mm:.3g} mm clipped\n(nearly flat; {RHO_CLIP_FACTOR:g} x median rho)")
         ax.axhline(-clip_mm, color="0.6", lw=0.6, ls=":")
-        ax.text(th.min(), clip_mm, f" |rho| > {clip_mm:.0f} mm clipped (nearly flat)", fontsize=8,
-                va="top", color="0.4")
     if Rr > 0:
         ax.axhline(Rr * 1e3, color="C3", ls="--", lw=0.8, label=f"roller radius {Rr * 1e3:g} mm")
     ax.axhline(0.0, color="k", lw=0.5)
@@ -107,7 +117,7 @@ def plot_rho(st, path, title: str = "", Rr: float = 0.0, clip_mm: float | None =
     ax.set_ylabel("radius of curvature rho (mm)")
     ax.set_xlabel("cam angle theta (deg)")
     ax.set_title(title or f"Cam radius of curvature at the contact (min |rho| = {fmin:.2f} mm)")
-    ax.legend(fontsize=8, loc="lower right")
+    legend_outside(ax)
     _xaxis(ax, th)
     fig.tight_layout()
     return _save(fig, path)
@@ -124,7 +134,7 @@ def plot_contact_force(st, path, title: str = ""):
     if lift.any():
         ax.fill_between(th, 0, 1, where=lift, transform=ax.get_xaxis_transform(), color="r",
                         alpha=0.15, label="lift-off (Fc <= 0)")
-        ax.legend(fontsize=8)
+        legend_outside(ax)
     return _finish(fig, ax, th, "contact force Fc (N)",
                    title or f"Contact force (max {np.max(st.Fc):.1f} N, min {np.min(st.Fc):.1f} N)",
                    path)
@@ -134,7 +144,7 @@ def plot_cam(st, path, title: str = ""):
     """Cam shape (cam frame, mm) with the pitch curve, base circle and undercut points."""
     plt = pyplot()
     p = st.profile
-    fig, ax = plt.subplots(figsize=(5.0, 5.0))
+    fig, ax = plt.subplots(figsize=(6.6, 5.0))
     ax.plot(np.r_[p.x, p.x[:1]] * 1e3, np.r_[p.y, p.y[:1]] * 1e3, lw=1.6, label="cam surface")
     if p.follower.kind == "roller":
         ax.plot(p.pitch_x * 1e3, p.pitch_y * 1e3, "--", lw=0.8, label="pitch curve")
@@ -148,7 +158,7 @@ def plot_cam(st, path, title: str = ""):
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
     ax.set_title(title or f"Cam profile ({p.follower.kind})")
-    ax.legend(fontsize=7, loc="upper right")
+    legend_outside(ax)
     ax.grid(True, alpha=0.3)
     fig.tight_layout()
     return _save(fig, path)
@@ -184,7 +194,7 @@ def plot_laws(path, names=LAWS_FIGURE, n: int = 401, title: str = ""):
     """
     plt = pyplot()
     u = np.linspace(0.0, 1.0, n)
-    fig, axs = plt.subplots(2, 2, sharex=True, figsize=(6.4, 4.2))
+    fig, axs = plt.subplots(2, 2, sharex=True, figsize=(8.0, 4.2))
     panels = [("s", "s (lift / h)"), ("v", "v = ds/du"), ("a", "a = d\u00b2s/du\u00b2"),
               ("j", "j = d\u00b3s/du\u00b3")]
     for name in names:
@@ -196,7 +206,7 @@ def plot_laws(path, names=LAWS_FIGURE, n: int = 401, title: str = ""):
         ax.grid(True, alpha=0.3)
     for ax in axs[-1]:
         ax.set_xlabel("u = \u03b8/\u03b2 (-)")
-    axs[0, 0].legend(fontsize=6)
+    fig.legend(*axs[0, 0].get_legend_handles_labels(), loc="center right", fontsize=7, frameon=False)
     fig.suptitle(title or "femcam normalised motion laws (unit lift)", fontsize=10)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0.0, 0.0, 0.78, 1.0))  # the legend, beside the panels, in the rest
     return _save(fig, path)

@@ -11,7 +11,8 @@ def plot_von_mises(result, path, *, window: float = 3.0, size=(760, 640), scalar
                    show_edges: bool = False):
     """Render ``scalar`` (default von Mises, shown in MPa) over ``|x|, |y| <= window * a`` to a PNG.
 
-    ``result`` is a :class:`femcam.fe.ContactResult`; lengths are shown in mm. Returns the path.
+    ``result`` is a :class:`femcam.fe.ContactResult`; the x and y axes are drawn with their
+    ticks in mm. Returns the path.
     """
     import pyvista as pv  # lazy: pyvista/VTK is heavy and only this rendering needs it
 
@@ -24,15 +25,17 @@ def plot_von_mises(result, path, *, window: float = 3.0, size=(760, 640), scalar
     clip = grid.clip_box([-L, L, -L, L, -1.0, 1.0], invert=False)
     pl = pv.Plotter(off_screen=True, window_size=list(size))
     pl.add_mesh(clip, scalars=f"{scalar} (MPa)", cmap="viridis", show_edges=False,
-                scalar_bar_args={"title": f"{scalar.replace('_', ' ')} (MPa)", "vertical": False,
-                                   "position_x": 0.2, "position_y": 0.02, "width": 0.6})
+                scalar_bar_args={"title": f"{scalar.replace('_', ' ')} (MPa)", "vertical": True,
+                                   "position_x": 0.86, "position_y": 0.2, "height": 0.6, "width": 0.08})
     if show_edges:
         pl.add_mesh(clip.extract_all_edges(), color="white", opacity=0.08, line_width=0.5)
     pl.add_text(f"F = {result.F:g} N, rho = {result.rho * 1e3:g} mm, mu = {result.mu:g}, "
-                f"a = {result.a * 1e3:.4f} mm, p0 = {result.p0 / 1e6:.0f} MPa (x, y in mm)",
+                f"a = {result.a * 1e3:.4f} mm, p0 = {result.p0 / 1e6:.0f} MPa",
                 font_size=9, position="upper_left")
+    pl.show_bounds(mesh=clip, xtitle="x (mm)", ytitle="y (mm)", ztitle="z", show_zaxis=False,
+                   show_zlabels=False, location="outer", ticks="outside", font_size=10, fmt="%.2f")
     pl.view_xy()
-    pl.camera.zoom(1.1)
+    pl.camera.zoom(0.95)  # room for the axis labels
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     pl.screenshot(str(path))

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._mpl import pyplot
+from ._mpl import legend_outside, pyplot
 
 
 def _save(fig, path, dpi: int = 90):
@@ -19,6 +19,7 @@ def _save(fig, path, dpi: int = 90):
     pyplot().close(fig)
     return path
 
+
 def plot_wear_map(wm, path, *, title: str = "", follower_label: str | None = None):
     """Three panels: cam depth after ``wm.cycles`` revolutions vs cam angle (deg) and vs arc
     length (mm), and the follower (roller, face or tip) depth vs its surface coordinate (mm).
@@ -27,13 +28,14 @@ def plot_wear_map(wm, path, *, title: str = "", follower_label: str | None = Non
     from one revolution to the next (``wm.depth_follower_cycles``) and the phase-locked bound
     ``cycles x`` one revolution's depth (dashed)."""
     plt = pyplot()
-    fig, (ax1, ax2, ax3) = plt.subplots(3, 1, figsize=(6.4, 7.6))
+    fig, (ax1, ax2, ax3) = plt.subplots(3, 1, figsize=(8.4, 7.6))
     c = wm.cycles
     ax1.plot(np.degrees(wm.theta), wm.depth_at_theta * c * 1e6, label="map (moving Hertz ellipse)")
     ax1.plot(np.degrees(wm.theta), wm.depth_pass * c * 1e6, "--", label="closed form k w v_slip / V_cam")
     ax1.set_xlabel("cam angle theta (deg)")
-    ax1.set_ylabel(f"cam wear depth after {c:g} rev (um)")
-    ax1.legend(fontsize=8)
+    ax1.set_ylabel("cam depth (um)")
+    ax1.set_title(f"cam wear depth after {c:g} revolutions", fontsize=9)
+    legend_outside(ax1)
     ax2.plot(wm.x_cam * 1e3, wm.depth_cam * c * 1e6)
     ax2.axvline(wm.x_max * 1e3, color="r", lw=0.8)
     ax2.set_xlabel("cam arc length from the contact at theta = 0 (mm)")
@@ -45,7 +47,7 @@ def plot_wear_map(wm, path, *, title: str = "", follower_label: str | None = Non
                  label=f"with drift {wm.follower_drift * 1e3:.3g} mm/rev")
         ax3.plot(wm.x_follower * 1e3, c * wm.depth_follower * 1e6, "--", lw=0.8,
                  label=f"{c:g} x one revolution (phase-locked bound)")
-        ax3.legend(fontsize=8)
+        legend_outside(ax3)
     else:
         ax3.plot(wm.x_follower * 1e3, total * 1e6)
     ax3.axvline(wm.x_max_follower * 1e3, color="r", lw=0.8)
@@ -85,13 +87,13 @@ def plot_wear_polar(wm, x, y, path, *, magnify: float | None = None, title: str 
         size = np.ptp(np.asarray(x))
         magnify = 0.05 * size / hmax if hmax > 0 else 1.0
     xw, yw = worn_profile(wm, x, y, magnify)
-    fig, ax = plt.subplots(figsize=(5, 5))
+    fig, ax = plt.subplots(figsize=(7.0, 5))
     ax.plot(np.asarray(x) * 1e3, np.asarray(y) * 1e3, "k-", lw=0.8, label="new profile")
     ax.plot(xw * 1e3, yw * 1e3, "r-", lw=1.0, label=f"worn, depth x {magnify:.3g}")
     ax.set_aspect("equal")
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
-    ax.legend(fontsize=8, loc="lower right")
+    legend_outside(ax)
     ax.set_title((title + "\n" if title else "") + f"{wm.cycles:g} rev, max depth {hmax * 1e6:.3g} um",
                  fontsize=9)
     return _save(fig, path)
@@ -106,10 +108,9 @@ def plot_wear_comparison(maps: dict, path, *, title: str = ""):
                 label=f"{label}: max {wm.max_depth * 1e6:.3g} um")
     ax.set_xlabel("cam angle theta (deg)")
     c = next(iter(maps.values())).cycles
-    ax.set_ylabel(f"cam wear depth after {c:g} rev (um)")
-    ax.legend(fontsize=8)
-    if title:
-        ax.set_title(title, fontsize=10)
+    ax.set_ylabel("cam wear depth (um)")
+    legend_outside(ax)
+    ax.set_title((f"{title}: " if title else "") + f"after {c:g} revolutions", fontsize=10)
     return _save(fig, path)
 
 
@@ -117,12 +118,12 @@ def plot_evolution(res, path, *, title: str = ""):
     """Two panels of a :class:`~femcam.wear.evolution.EvolutionResult`: the evolved and the linear
     cam depth after ``res.cycles`` revolutions vs arc length (um), and their difference (nm)."""
     plt = pyplot()
-    fig, (a1, a2) = plt.subplots(2, 1, figsize=(6.4, 6.0), sharex=True)
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(8.0, 6.0), sharex=True)
     x = res.x_cam * 1e3
     a1.plot(x, res.depth_linear * 1e6, label="linear (unworn geometry) x N")
     a1.plot(x, res.depth_cam * 1e6, "--", label=f"evolved, {res.blocks} blocks")
     a1.set_ylabel("cam wear depth (um)")
-    a1.legend()
+    legend_outside(a1)
     a1.set_title(f"{title + ': ' if title else ''}{res.cycles:g} revolutions")
     a2.plot(x, (res.depth_cam - res.depth_linear) * 1e9)
     a2.set_ylabel("evolved - linear (nm)")

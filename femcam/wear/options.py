@@ -1,8 +1,10 @@
 """A scene's ``[wear]`` table: checked keys (units in the key names) and the wear coefficient used.
 
-The scene loader passes ``[wear]`` through unchecked; :func:`wear_options` checks it the way the
-scene loader checks its own tables (unknown key, value, expected unit, a "did you mean" hint),
-and raises one :class:`~femcam.errors.SceneError` listing every problem.
+:func:`femcam.scene.load_scene` checks ``[wear]`` with the other tables (unknown key, value,
+expected unit, a "did you mean" hint: :func:`femcam.scene.wear_table`, whose schema is
+:data:`WEAR_KEYS`); :func:`wear_options` checks it again for a scene built in code or edited
+with ``dataclasses.replace`` and raises one :class:`~femcam.errors.SceneError` listing every
+problem.
 
 Keys (all optional)
 -------------------
@@ -27,20 +29,11 @@ seed 000's H = 2000 N/mm^2. The returned text says which case applied.
 
 from __future__ import annotations
 
-from ..scene import _Checker
+from ..scene import _WEAR, _Checker, wear_table
 from .archard import dimensional_coefficient
 
-#: key -> (unit shown to the user, SI factor, check, required) -- the scene loader's convention
-WEAR_KEYS = {
-    "K": ("(dimensionless)", 1.0, "nonneg", False),
-    "k_mm3_per_N_m": ("mm^3/(N m)", 1e-9, "nonneg", False),
-    "roller_model": ("", None, "str", False),
-    "srr": ("(dimensionless)", 1.0, "num", False),
-    "J_kg_m2": ("kg m^2", 1.0, "pos", False),
-    "T_drag_N_m": ("N m", 1.0, "nonneg", False),
-    "tip_radius_mm": ("mm", 1e-3, "pos", False),
-    "cycles": ("revolutions", 1.0, "nonneg", False),
-}
+#: key -> (unit shown to the user, SI factor, check, required) -- the scene loader's schema
+WEAR_KEYS = _WEAR
 
 #: seed 000's inputs, the defaults
 DEFAULT_K = 1e-8
@@ -54,22 +47,9 @@ def wear_options(scene) -> dict:
     bad value with the expected unit, e.g. ``wear.k = 1e-17: unknown key; did you mean
     'k_mm3_per_N_m' in mm^3/(N m)? (units go in the key name)``.
     """
-    raw = dict(scene.wear or {})
     ck = _Checker(scene.source_path or scene.name)
-    out = ck.table(raw, "wear", WEAR_KEYS)
-    if "roller_model" in out and out["roller_model"] not in ("srr", "inertia"):
-        ck.add("wear.roller_model", f"= {out['roller_model']!r}: must be one of 'srr', 'inertia'")
-    if "srr" in out and not (-2.0 < out["srr"] < 2.0):
-        ck.add("wear.srr", f"= {raw['srr']} (dimensionless): must be in (-2, 2)")
-    if "K" in raw and "k_mm3_per_N_m" in raw:
-        ck.add("wear", "give either K (dimensionless, with the cam hardness_MPa) or k_mm3_per_N_m "
-               "(mm^3/(N m)), not both")
-    hardness = scene.cam.hardness
-    if "K" in out and "k_mm3_per_N_m" not in raw and not hardness:
-        ck.add("wear.K", f"= {raw['K']} (dimensionless): needs the cam hardness "
-               "[materials.cam] hardness_MPa (MPa), k = K/H; or give k_mm3_per_N_m (mm^3/(N m))")
-    if ck.problems:
-        ck.raise_if_any()
+    out = wear_table(ck, dict(scene.wear or {}), scene.cam.hardness)
+    ck.raise_if_any()
     return out
 
 

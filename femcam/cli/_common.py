@@ -1,0 +1,62 @@
+"""Shared checks of the subcommands: the output directory and the one-line error text.
+
+A subcommand calls :func:`out_dir` before any work, so that ``--out`` naming an existing
+file, a path under a file or a directory it cannot create is one line naming the flag and the
+path, not a traceback after minutes of computing. :func:`os_error_line` is the text
+``femcam.cli.main`` prints for an ``OSError`` that still escapes (a full disk, say).
+"""
+
+from __future__ import annotations
+
+import errno
+import os
+import re
+from pathlib import Path
+
+from .. import _validate
+
+
+def out_dir(path, flag: str = "--out", *, create: bool = True) -> Path:
+    """Create the output directory ``path`` (with parents) and check it is writable.
+
+    Raises :class:`~femcam.errors.InputError` naming ``flag`` and the path when ``path`` is an
+    existing file, lies under a file, or cannot be created or written. ``create=False`` only
+    checks (the first existing component of the path must be a writable directory).
+    """
+    p = Path(path)
+    for q in (p, *p.parents):  # the first existing component must be a directory
+        if q.exists() or q.is_symlink():
+            if not q.is_dir():
+                where = "is an existing file" if q == p else f"is under the file {q}"
+                raise _validate.fail(flag, str(p), "", f"{where}, not a directory")
+            break
+    if not create:
+        if not os.access(q, os.W_OK | os.X_OK):
+            raise _validate.fail(flag, str(p), "", f"directory {q} is not writable")
+        return p
+    try:
+        p.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        why = f"cannot create the directory ({os_error_line(exc)})"
+        raise _validate.fail(flag, str(p), "", why) from None
+    if not os.access(p, os.W_OK | os.X_OK):
+        raise _validate.fail(flag, str(p), "", "directory is not writable")
+    return p
+
+
+def os_error_line(exc: OSError) -> str:
+    """``"No space left on device: 'DIR/sweep.csv'"``: the reason and the path(s) of ``exc``."""
+    why = exc.strerror or str(exc) or type(exc).__name__
+    if exc.errno == errno.ENOSPC:
+        why += " (free some space, then rerun; a sweep can continue with --resume)"
+    names = [repr(str(f)) for f in (exc.filename, exc.filename2) if f is not None]
+    return f"{why}: {' -> '.join(names)}" if names else why
+
+
+def plain(doc: str, paragraphs: int = 1) -> str:
+    """The first ``paragraphs`` of a module docstring for ``--help``, without RST markup
+    (````x```` -> ``x``, ``:func:`~a.b``` -> ``b``)."""
+    text = "\n\n".join(doc.strip().split("\n\n")[:paragraphs])
+    text = re.sub(r":[a-z]+:`~?([^`]+)`", lambda m: m.group(1).split(".")[-1]
+                  if m.group(0).count("~") else m.group(1), text)
+    return text.replace("``", "")

@@ -1,0 +1,220 @@
+"""Bad input and faulty disks on the command line: one line ``femcam <cmd>: error: ...``, exit
+1 (or 2 for argparse usage), never a traceback.
+
+References are the inputs themselves: each test builds the bad path/flag and checks that the
+message names it (flag, value, unit or path) and that stderr holds no ``Traceback``.
+"""
+
+import errno
+import math
+from pathlib import Path
+
+import pytest
+
+from femcam.cli import main
+from femcam.errors import UndercutError
+from femcam.profile import _fmt_intervals_deg
+
+STUDY_PATH = Path(__file__).resolve().parents[1] / "examples" / "seed002_study_model.toml"
+
+SCENE = str(STUDY_PATH)
+#: (subcommand, arguments before the scene/--out) of every subcommand that reads a scene
+WITH_SCENE = {"run": ["run"], "sweep": ["sweep"], "wear": ["wear", "map"], "synth": ["synth"],
+              "dynamics": ["dynamics"], "assess": ["assess"]}
+
+
+def _one_line(capsys, cmd: str) -> str:
+    err = capsys.readouterr().err.strip()
+    assert "Traceback" not in err
+    assert err.startswith(f"femcam {cmd}: error: ")
+    assert len(err.splitlines()) == 1, err
+    return err
+
+
+@pytest.mark.parametrize("cmd", list(WITH_SCENE))
+def test_scene_path_is_a_directory(cmd, tmp_path, capsys):
+    assert main([*WITH_SCENE[cmd], str(tmp_path), "--out", str(tmp_path / "o")]) == 1
+    assert f"scene file {tmp_path}: is a directory" in _one_line(capsys, cmd)
+
+
+@pytest.mark.parametrize("cmd", list(WITH_SCENE))
+def test_binary_scene(cmd, tmp_path, capsys):
+    bad = tmp_path / "scene.toml"
+    bad.write_bytes(b"\x89PNG\r\n\x1a\n\x00\xff")
+    assert main([*WITH_SCENE[cmd], str(bad), "--out", str(tmp_path / "o")]) == 1
+    assert f"scene file {bad}: not a UTF-8 text file (byte 0" in _one_line(capsys, cmd)
+
+
+def test_latin1_scene_names_the_byte(tmp_path, capsys):
+    bad = tmp_path / "scene.toml"
+    bad.write_bytes('name = "caf\u00e9"\n'.encode("latin-1"))  # e-acute is 0xe9 in Latin-1
+    assert main(["run", str(bad)]) == 1
+    pos = len(b'name = "caf')  # the offset of the 0xe9 byte
+    assert f"(byte {pos}: b'\\xe9')" in _one_line(capsys, "run")
+
+
+@pytest.mark.parametrize("cmd", list(WITH_SCENE))
+@pytest.mark.parametrize("under", [False, True])
+def test_out_is_a_file_or_under_one(cmd, under, tmp_path, capsys):
+    f = tmp_path / "afile"
+    f.write_text("x")
+    out = f / "sub" if under else f
+    args = [*WITH_SCENE[cmd], SCENE, "--out", str(out)]
+    if cmd == "synth":  # synth takes a knife-edge case; the --out check comes first
+        args = ["synth", "--case", "seed003", "--out", str(out)]
+    if cmd == "dynamics":  # needs a scene with an elastic train
+        args[1] = str(STUDY_PATH.with_name("seed002_dynamic.toml"))
+    if cmd == "sweep":
+        args += ["--method", "hertz"]
+    assert main(args) == 1
+    what = f"is under the file {f}" if under else "is an existing file"
+    assert f"--out = '{out}': {what}, not a directory" in _one_line(capsys, cmd)
+
+
+def test_wear_seed000_csv_under_a_file(tmp_path, capsys):
+    f = tmp_path / "afile"
+    f.write_text("x")
+    assert main(["wear", "seed000", "--csv", str(f / "t.csv")]) == 1
+    err = _one_line(capsys, "wear")
+    assert f"--csv (its directory) = '{f}': is an existing file, not a directory" in err
+
+
+def test_unwritable_directory_is_refused(tmp_path, capsys, monkeypatch):
+    # the tests run as root, for whom chmod 0o500 does not stop writes: os.access is what the
+    # check asks, so it is made to answer "not writable" for the output directory
+    import femcam.cli._common as common
+    ro = tmp_path / "ro"
+    ro.mkdir()
+    real = common.os.access
+    monkeypatch.setattr(common.os, "access", lambda p, m: False if str(p) == str(ro) else real(p, m))
+    assert main(["run", SCENE, "--out", str(ro), "--no-plots"]) == 1
+    assert f"--out = '{ro}': directory is not writable" in _one_line(capsys, "run")
+    assert main(["sweep", SCENE, "--out", str(ro / "new"), "--method", "hertz"]) == 1
+    assert f"directory {ro} is not writable" in _one_line(capsys, "sweep")
+
+
+def test_full_disk_is_one_line(tmp_path, capsys, monkeypatch):
+    """ENOSPC while writing the CSV (simulated: the writer raises OSError(ENOSPC))."""
+    import femcam.cli.run as run
+
+    def full(path, *a, **k):
+        raise OSError(errno.ENOSPC, "No space left on device", str(path))
+
+    monkeypatch.setattr(run, "write_csv", full)
+    out = tmp_path / "o"
+    assert main(["run", SCENE, "--out", str(out), "--no-plots"]) == 1
+    err = _one_line(capsys, "run")
+    assert "No space left on device (free some space, then rerun" in err
+    assert f"'{out / 'analytic.csv'}'" in err
+
+
+def test_full_disk_in_vtu_writer_is_one_line(tmp_path, capsys, monkeypatch):
+    """ENOSPC inside meshio while a sweep writes its VTU files: one line, exit 1."""
+    meshio = pytest.importorskip("meshio")
+
+    def full(path, *a, **k):
+        open(path, "wb").write(b"<VTKFile")  # a partial file, as a full disk leaves it
+        raise OSError(errno.ENOSPC, "No space left on device", str(path))
+
+    monkeypatch.setattr(meshio, "write", full)
+    out = tmp_path / "o"
+    rc = main(["sweep", SCENE, "--out", str(out), "--method", "hertz", "--angles-deg", "0:20:10",
+               "--vtk-every", "1", "--no-plots", "--workers", "1", "--progress", "off"])
+    assert rc == 1
+    assert "No space left on device" in _one_line(capsys, "sweep")
+
+
+def test_full_disk_leaves_no_part_file(tmp_path, monkeypatch):
+    meshio = pytest.importorskip("meshio")
+
+    def full(path, *a, **k):
+        open(path, "wb").write(b"<VTKFile")
+        raise OSError(errno.ENOSPC, "No space left on device", str(path))
+
+    monkeypatch.setattr(meshio, "write", full)
+    out = tmp_path / "o"
+    main(["sweep", SCENE, "--out", str(out), "--method", "hertz", "--angles-deg", "0:20:10",
+          "--vtk-every", "1", "--no-plots", "--workers", "1", "--progress", "off"])
+    assert not [p for p in out.rglob("*") if p.name.endswith((".part.vtu", ".tmp"))]
+
+
+@pytest.mark.parametrize("flag, value, why", [
+    ("--print-every-deg", "0", "must be > 0"), ("--print-every-deg", "-1", "must be > 0"),
+    ("--print-every-deg", "nan", "must be finite"), ("--phi-limit-deg", "nan", "must be finite"),
+    ("--phi-limit-deg", "-5", "must be in (0, 90)"), ("--phi-limit-deg", "95", "must be in (0, 90)")])
+def test_run_flags_are_checked(flag, value, why, tmp_path, capsys):
+    assert main(["run", SCENE, "--out", str(tmp_path), "--no-plots", flag, value]) == 1
+    err = _one_line(capsys, "run")
+    assert f"{flag} = {float(value):g} deg: {why}" in err
+    assert not (tmp_path / "analytic.csv").exists()  # refused before any work
+
+
+def test_long_lists_are_capped(capsys, tmp_path):
+    # 50 intervals: the message lists 20 of them and counts the rest
+    iv = [(math.radians(i), math.radians(i + 0.5)) for i in range(50)]
+    text = _fmt_intervals_deg(iv)
+    assert text.count(" deg") == 20 and text.endswith(", ... and 30 more")
+    # a scene of 1800 alternating rise/fall segments of 0.2 deg is undercut at ~3600 angles
+    src = STUDY_PATH.read_text()
+    i, j = src.index("[[program.segment]]"), src.index("[follower]")
+    segs = "".join(f'[[program.segment]]\nkind = "{"rise" if k % 2 == 0 else "fall"}"\n'
+                   "beta_deg = 0.2\nlift_mm = 0.01\n" for k in range(1800))
+    big = tmp_path / "big.toml"
+    big.write_text(src[:i] + segs + src[j:])
+    assert main(["run", str(big), "--out", str(tmp_path / "o"), "--no-plots"]) == 1
+    err = _one_line(capsys, "run")
+    assert len(err) < 1500 and ", ... and " in err
+    assert err.count("] deg") == 20
+
+
+def test_many_scene_problems_are_capped(tmp_path):
+    from femcam.errors import SceneError
+    from femcam.scene import MAX_PROBLEMS, load_scene
+    src = STUDY_PATH.read_text()
+    bad = tmp_path / "bad.toml"
+    # 30 misspelt keys in [follower]
+    bogus = "".join(f"bogus{k} = 1\n" for k in range(30))
+    bad.write_text(src.replace("[follower]\n", "[follower]\n" + bogus))
+    with pytest.raises(SceneError) as ei:
+        load_scene(bad)
+    lines = str(ei.value).splitlines()
+    assert lines[0].endswith(": 30 problems")
+    assert len(lines) == 1 + MAX_PROBLEMS + 1 and lines[-1].strip() == "... and 10 more"
+    assert UndercutError  # the undercut message of the test above is an UndercutError
+
+
+def _parsers():
+    """Every (sub)parser of the femcam CLI, by its prog name."""
+    import argparse
+
+    from femcam.cli import build_parser
+    todo, seen = [build_parser()], {}
+    while todo:
+        p = todo.pop()
+        seen[p.prog] = p
+        for a in p._actions:
+            if isinstance(a, argparse._SubParsersAction):
+                todo += list(a.choices.values())
+    return seen
+
+
+def test_help_is_plain_text_and_complete():
+    import re
+    parsers = _parsers()
+    assert {"femcam wear map", "femcam wear seed000", "femcam synth", "femcam sweep"} <= set(parsers)
+    for prog, p in parsers.items():
+        text = p.format_help()
+        assert "``" not in text and not re.search(r":[a-z]+:`", text), prog  # no RST markup
+        if prog != "femcam":
+            assert p.description, f"{prog} has no description"
+        for a in p._actions:
+            if a.help is not None and a.help != "==SUPPRESS==" and a.dest not in ("help", "command"):
+                assert a.help.strip(), f"{prog} {a.option_strings or a.dest}"
+            elif a.help is None and a.dest not in ("help", "command", "wear_command"):
+                raise AssertionError(f"{prog}: {a.option_strings or a.dest} has no help text")
+
+
+def test_synth_help_shows_defaults_and_law_names():
+    text = _parsers()["femcam synth"].format_help()
+    for s in ("default 180", "default 1e6", "default 1)", "default 50", "poly345", "bezier7"):
+        assert s in " ".join(text.split()), s

@@ -1,0 +1,42 @@
+"""The README's scene snippet (proposed in docs/readme/13b.md, pasted into README.md) is a
+complete scene that loads, and it is the seed 002 study model of examples/: reference = the
+example file, loaded independently, compared at every whole degree."""
+
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from femcam.scene import load_scene
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _scene_blocks():
+    """```toml blocks with a ``name =`` line (whole scenes) in the README and its proposals."""
+    blocks = []
+    for md in [ROOT / "README.md", *sorted((ROOT / "docs" / "readme").glob("13*.md"))]:
+        for b in re.findall(r"```toml\n(.*?)```", md.read_text(encoding="utf-8"), re.S):
+            if re.search(r"^name\s*=", b, re.M):
+                blocks.append(pytest.param(b, id=f"{md.name}:{len(blocks)}"))
+    return blocks
+
+
+def test_a_scene_snippet_exists():
+    assert _scene_blocks()
+
+
+@pytest.mark.parametrize("text", _scene_blocks())
+def test_scene_snippet_loads_and_is_the_study_model(text, tmp_path):
+    p = tmp_path / "snippet.toml"
+    p.write_text(text, encoding="utf-8")
+    sc = load_scene(p)
+    ref = load_scene(ROOT / "examples" / "seed002_study_model.toml")
+    theta = np.radians(np.arange(0.0, 360.0, 1.0))
+    a, b = sc.analyse(theta), ref.analyse(theta)
+    assert sc.omega == pytest.approx(20 * np.pi, rel=1e-15)  # 600 rpm
+    for k in ("s", "phi", "rho", "Fc"):
+        np.testing.assert_allclose(getattr(a, k), getattr(b, k), rtol=1e-12, atol=0, err_msg=k)
+    assert sc.fe == {"a_over_h": 10.0, "tolerance": 2e-3}
+    assert sc.sweep["angles_deg"] == "0:360:1" and sc.sweep["plots"] is True
