@@ -85,6 +85,10 @@ def test_assess_columns_equal_direct_call(tmp_path):
     assert r.summary()["extras"]["providers"] == ["assess"]
     _, header = read_csv(r.paths["csv"])
     assert '"providers": ["assess"]' in header["extras"]      # the CSV header says which ran
+    report = open(r.paths["report"]).read()                    # and report.md, with the worst angles
+    lam = worst["film (lambda)"]
+    assert "Extra columns from: assess." in report
+    assert f"| film (lambda) | {lam[0]:.4g} | {math.degrees(lam[1]):.1f} |" in report
 
 
 @pytest.mark.slow

@@ -436,5 +436,20 @@ def report_markdown(result: SweepResult) -> str:
               f"| von Mises (MPa) | {_fmt(s['vm_max'], 1e-6)} |",
               f"| tau1 (MPa) | {_fmt(s['tau1_max'], 1e-6)} |",
               f"| wear depth per revolution (nm) | {_fmt(s['wear_depth_max'], 1e9, 3)} |",
-              "", "Files: " + ", ".join(f"`{Path(v).name}`" for v in result.paths.values()), ""]
+              ]
+    lines += _extras_lines(p.get("extras", {}))
+    lines += ["", "Files: " + ", ".join(f"`{Path(v).name}`" for v in result.paths.values()), ""]
     return "\n".join(lines)
+
+
+def _extras_lines(ex: dict) -> list[str]:
+    """Report lines of the extra column providers (:mod:`femcam.sweep.extras`): which ran, the
+    assessment's worst angle per criterion, refusals."""
+    if not ex.get("providers"):
+        return []
+    lines = ["", f"Extra columns from: {', '.join(ex['providers'])}."]
+    if ex.get("assess"):
+        lines += ["", "| criterion (assessment) | worst value | at cam angle (deg) |", "|---|---|---|"]
+        lines += [f"| {c} | {w['value']:.4g} | {w['theta_deg']:.1f} |" for c, w in ex["assess"].items()]
+    lines += [f"- refused: {e}" for e in ex.get("errors", ())]
+    return lines
