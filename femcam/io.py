@@ -164,7 +164,7 @@ def _header_lines(prov: dict) -> list[str]:
     for key in ("scene", "scene_sha256", "scene_copy", "command", "date", "machine"):
         if key in prov:
             lines.append(f"{key}: {prov[key]}")
-    for key in ("options", "families", "wear"):
+    for key in ("options", "families", "wear", "extras"):
         if key in prov:
             lines.append(f"{key}: " + json.dumps(prov[key], sort_keys=True))
     return ["# " + s.replace("\n", " ").replace("\r", " ") for s in lines]

@@ -344,7 +344,10 @@ _CHOICES["hardness_law"] = ("exponential", "linear")
 _COATING = {"thickness_um": ("um", 1e-6, "pos", True), "E_GPa": ("GPa", 1e9, "pos", True),
             "nu": ("(dimensionless)", 1.0, "nu", True), "name": ("", None, "str", False),
             "interface_shear_strength_MPa": ("MPa", 1e6, "pos", False),
-            "hardness_MPa": ("MPa", 1e6, "pos", False)}
+            "hardness_MPa": ("MPa", 1e6, "pos", False),
+            # coating wear (femcam.wear.coating): k directly, or Archard K with hardness_MPa
+            "wear_k_mm3_per_N_m": ("mm^3/(N m)", 1e-9, "pos", False),
+            "wear_K": ("(dimensionless)", 1.0, "pos", False)}
 _CASE = {"depth_mm": ("mm", 1e-3, "pos", True), "hardness_law": ("", None, "str", False),
          "surface_hardness_HV": ("HV", 9.80665e6, "pos", False),
          "core_hardness_HV": ("HV", 9.80665e6, "pos", False),
@@ -360,6 +363,12 @@ def _layers(ck, raw: dict) -> dict:
         for t, spec in (("coating", _COATING), ("case", _CASE)):
             if isinstance(tabs, dict) and t in tabs:
                 out.setdefault(body, {})[t] = ck.table(tabs[t], f"materials.{alias}.{t}", spec)
+        coat = out.get(body, {}).get("coating", {})
+        if "wear_k_mm3_per_N_m" in coat and "wear_K" in coat:
+            ck.add(f"materials.{alias}.coating", "give wear_k_mm3_per_N_m or wear_K, not both")
+        elif "wear_K" in coat and "hardness_MPa" not in coat:
+            ck.add(f"materials.{alias}.coating.wear_K", f"= {_fmt(coat['wear_K'])}: needs the "
+                   "coating's hardness_MPa (k = K / H)")
         case = out.get(body, {}).get("case", {})
         pairs = [("surface_hardness_HV", "core_hardness_HV"), ("surface_yield_MPa", "core_yield_MPa")]
         given = [p for p in pairs if any(k in case for k in p)]

@@ -49,6 +49,7 @@ from ..hertz.conformity import (
 from ..io import vtu_name, write_fe_vtu, write_hertz_vtu
 from ..wear.slip import SlipResult
 from .cache import ModelCache, default_cache
+from .extras import fill_extras
 from .families import hertz_half_width
 from .options import ContactParams, SweepOptions, contact_params
 from .result import empty_rows
@@ -263,6 +264,7 @@ def _run_chunk(task: ChunkTask) -> dict:
     else:
         vtk_fe = _fe_rows(task, cp, rows, flags, good, default_cache())
     fill_wear(rows, task.slip, task.wear_k, opts.method)
+    fill_extras(task, rows)  # extra column providers (femcam.sweep.extras), after contact and wear
     _write_vtus(task, cp, rows, vtk_fe)  # last: not part of any timing column
     for i in range(n):
         rows["flags"][i] = ";".join(flags[i])

@@ -151,7 +151,17 @@ def concat_rows(parts: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
         out[name] = np.concatenate([np.asarray(p[name], dtype=float) for p in parts])
     for name in TEXT_COLUMNS:
         out[name] = np.concatenate([np.asarray(p[name]).astype(str) for p in parts])
+    for name in extra_keys(parts[0]):  # extra column providers (femcam.sweep.extras)
+        cols = [np.asarray(p[name]) for p in parts]
+        text = cols[0].dtype.kind in "OUS"
+        out[name] = np.concatenate([c.astype(str) if text else c.astype(float) for c in cols])
     return out
+
+
+def extra_keys(rows: dict) -> list[str]:
+    """Columns of ``rows`` beyond :data:`NUMERIC` and :data:`TEXT_COLUMNS` (added by the extra
+    column providers, :mod:`femcam.sweep.extras`), in their order."""
+    return [k for k in rows if k not in NUMERIC and k not in TEXT_COLUMNS]
 
 
 class TableBuilder:
@@ -167,6 +177,7 @@ class TableBuilder:
     def __init__(self, bounds):
         self.bounds = list(bounds)
         n = self.bounds[-1][1] if self.bounds else 0
+        self.n = n
         self.numeric = {name: np.full(n, np.nan) for name in NUMERIC}
         self.text = {name: [np.zeros(0, str)] * len(self.bounds) for name in TEXT_COLUMNS}
 
@@ -177,11 +188,17 @@ class TableBuilder:
             self.numeric[name][a:b] = np.asarray(rows[name], dtype=float)
         for name in TEXT_COLUMNS:
             self.text[name][c] = np.asarray(rows[name]).astype(str)
+        for name in extra_keys(rows):  # extra column providers (femcam.sweep.extras)
+            v = np.asarray(rows[name])
+            if v.dtype.kind in "OUS":
+                self.text.setdefault(name, [np.zeros(0, str)] * len(self.bounds))[c] = v.astype(str)
+            else:
+                self.numeric.setdefault(name, np.full(self.n, np.nan))[a:b] = v.astype(float)
 
     def table(self) -> dict:
         """The whole table (float and ``str`` columns, as :func:`concat_rows`)."""
         out = dict(self.numeric)
-        for name in TEXT_COLUMNS:
+        for name in self.text:
             out[name] = np.concatenate(self.text[name]) if self.text[name] else np.zeros(0, str)
         return out
 
@@ -294,7 +311,8 @@ class SweepResult:
             ``Fc_max`` (N), ``phi_max`` (rad), ``p0_hertz_max``, ``p0_fe_max``, ``vm_max``,
             ``tau1_max`` (Pa), ``err_p0_absmax``, ``err_a_absmax`` (relative),
             ``n_liftoff``, ``n_failed``, ``n_undercut``, ``n_families`` (counts),
-            ``reuse_error_max`` (relative), ``wear_depth_max`` (m per revolution).
+            ``reuse_error_max`` (relative), ``wear_depth_max`` (m per revolution), ``extras``
+            (the extra column providers that ran and their summary, :mod:`femcam.sweep.extras`).
         """
         t = self.table
         ok = self.ok
@@ -318,6 +336,7 @@ class SweepResult:
             "n_families": len(self.families),
             "reuse_error_max": self.reuse_error,
             "wear_depth_max": peak("wear_depth"),
+            "extras": self.provenance.get("extras", {}),
         }
 
     @classmethod
@@ -345,6 +364,7 @@ class SweepResult:
         profile, table = {}, {}
         with np.load(npz, allow_pickle=False) as z:
             prov = json.loads(str(z["provenance_json"]))
+            extra_names = set(prov.get("extras", {}).get("columns", ()))
             for name in z.files:
                 if name.startswith(PROFILE_PREFIX):
                     v = z[name]
@@ -356,6 +376,9 @@ class SweepResult:
                         else v.astype(float)
                 elif name in TEXT_COLUMNS:
                     table[name] = z[name].astype(str)
+                elif name in extra_names:  # extra column providers (femcam.sweep.extras)
+                    v = z[name]
+                    table[name] = v.astype(str) if v.dtype.kind in "US" else v.astype(float)
             hf = json.loads(str(z["hertz_factors_json"])) if "hertz_factors_json" in z.files else None
         method = prov.get("options", {}).get("method", "fe")
         names = {"csv": "sweep.csv", "npz": "sweep.npz", "pvd": "sweep.pvd",
@@ -413,5 +436,20 @@ def report_markdown(result: SweepResult) -> str:
               f"| von Mises (MPa) | {_fmt(s['vm_max'], 1e-6)} |",
               f"| tau1 (MPa) | {_fmt(s['tau1_max'], 1e-6)} |",
               f"| wear depth per revolution (nm) | {_fmt(s['wear_depth_max'], 1e9, 3)} |",
-              "", "Files: " + ", ".join(f"`{Path(v).name}`" for v in result.paths.values()), ""]
+              ]
+    lines += _extras_lines(p.get("extras", {}))
+    lines += ["", "Files: " + ", ".join(f"`{Path(v).name}`" for v in result.paths.values()), ""]
     return "\n".join(lines)
+
+
+def _extras_lines(ex: dict) -> list[str]:
+    """Report lines of the extra column providers (:mod:`femcam.sweep.extras`): which ran, the
+    assessment's worst angle per criterion, refusals."""
+    if not ex.get("providers"):
+        return []
+    lines = ["", f"Extra columns from: {', '.join(ex['providers'])}."]
+    if ex.get("assess"):
+        lines += ["", "| criterion (assessment) | worst value | at cam angle (deg) |", "|---|---|---|"]
+        lines += [f"| {c} | {w['value']:.4g} | {w['theta_deg']:.1f} |" for c, w in ex["assess"].items()]
+    lines += [f"- refused: {e}" for e in ex.get("errors", ())]
+    return lines

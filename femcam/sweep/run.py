@@ -29,6 +29,7 @@ from ..scene import Scene, load_scene
 from ..viz.animate import animate_pvd
 from ..viz.sweep import plot_sweep
 from .cache import default_cache
+from .extras import extra_columns, extras_provenance, plot_extras
 from .families import FamilyRecord, verify_families
 from .options import SweepOptions, contact_params
 from .parallel import AUTO_VTU_S, Progress, auto_workers, run_tasks
@@ -243,6 +244,7 @@ def _sweep(run: _Run, scheduler, client, progress, plots, command, t_start) -> S
                       scene_hash=run.shash, command=command, options=options,
                       families=[r.to_dict() for r in run.records] if fe else None,
                       wear=run.wear.to_dict())
+    prov["extras"] = extras_provenance(run.scene, table)
     timings = {"analytic": t_analytic, "verify": t_verify, "compute": t_compute}
     result = SweepResult(table=table, method=run.opts.method, provenance=prov, paths={},
                          timings=timings, n_chunks_computed=len(tasks),
@@ -416,10 +418,12 @@ def _write_outputs(result: SweepResult, run: _Run, plots: bool, src_path=None,
     result = replace(result, provenance=prov)
     if plots:
         result = _with_plot_data(result, run)
-    paths.update(csv=str(write_csv(out / "sweep.csv", result.table, prov, columns=COLUMNS,
-                                   text_columns=TEXT_COLUMNS)),
-                 npz=str(write_npz(out / "sweep.npz", result.table, prov, numeric=NUMERIC,
-                                   text_columns=TEXT_COLUMNS, integer_columns=INTEGER_COLUMNS,
+    xcols, xtext = extra_columns(run.scene)  # extra column providers (femcam.sweep.extras)
+    paths.update(csv=str(write_csv(out / "sweep.csv", result.table, prov, columns=COLUMNS + xcols,
+                                   text_columns=TEXT_COLUMNS + xtext)),
+                 npz=str(write_npz(out / "sweep.npz", result.table, prov,
+                                   numeric=NUMERIC + tuple(c[0] for c in xcols),
+                                   text_columns=TEXT_COLUMNS + xtext, integer_columns=INTEGER_COLUMNS,
                                    scene_toml=src_text,
                                    scene_repr=repr(run.scene), extra=plot_data_arrays(result))))
     theta = result.table["theta"]
@@ -433,6 +437,7 @@ def _write_outputs(result: SweepResult, run: _Run, plots: bool, src_path=None,
     if plots:
         try:
             paths.update(plot_sweep(result, out))
+            paths.update(plot_extras(run.scene, result.table, out))
         except ImportError as exc:  # pragma: no cover - matplotlib missing
             raise InputError(f"plots = True: {exc}") from None
     if run.animate and "pvd" in paths:

@@ -30,11 +30,12 @@ except ImportError:  # pragma: no cover - Windows: no directory lock
 
 from ..errors import InputError
 from ..io import atomic_write_bytes, atomic_write_text
-from .result import NUMERIC, TEXT_COLUMNS
+from .result import NUMERIC, TEXT_COLUMNS, extra_keys
 
 MANIFEST = "manifest.json"
 PLAN = "plan.json"
-FORMAT_VERSION = 3  # 2: wear and build-time columns, plan.json; 3: scene hash in each chunk
+FORMAT_VERSION = 4  # 2: wear and build-time columns, plan.json; 3: scene hash in each chunk;
+#                     4: extra provider columns (femcam.sweep.extras)
 LOCK = ".femcam.lock"
 #: name of the scene hash stored in each chunk file (not a column)
 CHUNK_SCENE_KEY = "_scene_sha256"
@@ -163,6 +164,9 @@ class ChunkStore:
         arrays = {name: np.asarray(rows[name], dtype=float) for name in NUMERIC}
         for name in TEXT_COLUMNS:
             arrays[name] = np.asarray(rows[name]).astype(str)
+        for name in extra_keys(rows):  # extra column providers: numbers as float, text as str
+            v = np.asarray(rows[name])
+            arrays[name] = v.astype(str) if v.dtype.kind in "OUS" else v.astype(float)
         if self.key.get("scene_sha256") is not None:
             arrays[CHUNK_SCENE_KEY] = np.array(str(self.key["scene_sha256"]))
         p = self.path(i)

@@ -330,9 +330,16 @@ class WearMap:
     #: lubrication regime of each angle ("boundary", "mixed", "full", "no contact"); None: dry k
     k_factor: np.ndarray | None = None
     regime: np.ndarray | None = None
+    #: a coated body's depth after ``cycles`` (femcam.wear.coating: the coating's k until worn
+    #: through) and the coating record (body, thickness_m, k_coating, k_substrate,
+    #: revolutions_through, source); None: uncoated
+    depth_cam_cycles: np.ndarray | None = None
+    coating: dict | None = None
 
     @property
     def depth_cam_total(self) -> np.ndarray:
+        if self.depth_cam_cycles is not None:
+            return self.depth_cam_cycles
         return self.cycles * self.depth_cam
 
     @property
@@ -342,7 +349,7 @@ class WearMap:
     @property
     def max_depth(self) -> float:
         """Largest cam wear depth after ``cycles`` revolutions (m)."""
-        return float(self.cycles * np.max(self.depth_cam))
+        return float(np.max(self.depth_cam_total))
 
     @property
     def x_max(self) -> float:
@@ -388,6 +395,7 @@ class WearMap:
                 "conservation_error": self.conservation_error, "load_error": self.load_error,
                 "skipped_angles_rad": [float(self.theta[i]) for i in self.skipped],
                 "cycles": self.cycles, "model": self.model,
+                **({} if self.coating is None else {"coating": dict(self.coating)}),
                 **({} if self.regime is None else
                    {"regime_angles": {str(g): int(n) for g, n in
                                       zip(*np.unique(np.asarray(self.regime).astype(str), return_counts=True),

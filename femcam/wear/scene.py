@@ -18,6 +18,7 @@ from .. import _validate
 from ..errors import InputError
 from ..hertz import LineContact
 from ..profile import KnifeEdgeFollower, RollerFollower
+from .coating import coating_wear
 from .map import WearMap, wear_map
 from .options import slip_kwargs, wear_coefficient_info, wear_options
 from .slip import SlipResult, follower_slip
@@ -121,4 +122,28 @@ def scene_wear(scene, theta, *, cycles: float = 1e6, tip_radius: float | None = 
     k, _where = wear_coefficient_info(scene)
     wm = wear_map(table, slip, k=k, length=scene.length, cycles=cycles, pressure=pressure,
                   k_factor=k_factor, regime=regime)
-    return wm, st, slip
+    return with_coating(scene, wm), st, slip
+
+
+def with_coating(scene, wm: WearMap) -> WearMap:
+    """``wm`` with the coated body's depth after ``wm.cycles`` revolutions worn at the
+    coating's k until the coating is worn through (:mod:`femcam.wear.coating`); ``wm`` itself
+    for an uncoated scene or a coating without a wear coefficient.
+
+    The roller's pattern drifts from revolution to revolution; its per-revolution rate at a point
+    is taken as the drift-averaged ``depth_follower_total / cycles`` (exact for a phase-locked
+    roller and for a drift that has spread the wear evenly).
+    """
+    cw = coating_wear(scene)
+    if cw is None:
+        return wm
+    if cw.body == "cam":
+        rate = wm.depth_cam
+        new = {"depth_cam_cycles": cw.depth_after(rate, wm.cycles)}
+    else:
+        rate = wm.depth_follower_total / wm.cycles if wm.cycles > 0 else wm.depth_follower
+        new = {"depth_follower_cycles": cw.depth_after(rate, wm.cycles)}
+    rec = {"body": cw.body, "thickness_m": cw.thickness, "k_coating": cw.k_coating,
+           "k_substrate": cw.k_substrate, "revolutions_through": cw.revolutions_through(rate),
+           "source": cw.source}
+    return dataclasses.replace(wm, coating=rec, **new)

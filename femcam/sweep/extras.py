@@ -1,0 +1,249 @@
+r"""Extra column providers of the sweep: physics packages that answer per cam angle.
+
+Each :class:`Provider` says when it applies (from the scene), which columns it adds (SI name,
+CSV name with its unit, factor SI -> CSV, like :data:`femcam.sweep.result.COLUMNS`; text
+columns separately) and how one chunk computes them. :func:`fill_extras` is called once per
+chunk by :func:`femcam.sweep.pipeline.run_chunk`, after the contact rows (Hertz, FE, wear) are
+filled; the writers get :func:`extra_columns`; the provenance gets :func:`extras_provenance`.
+
+=============  ===========================================  ==============================================
+provider       applies when                                 columns (CSV)
+=============  ===========================================  ==============================================
+``halfspace``  finite-length keys (:func:`has_finite_length`) ``p_axial_peak_MPa``, ``y_axial_peak_mm``,
+                                                            ``L_eff_mm``, ``w_max_N_per_mm``, ... ,
+                                                            ``hs_flags``
+``assess``     ``scene.tribology`` has a lubricant          ``lambda``, ``h_min_um``, ``dT_flash_K``,
+                                                            ``sf_*``, ... , ``assess_regime``,
+                                                            ``assess_flags``, ``assess_source``
+``bodies``     ``roller_support`` is ``pin``/``needles``    ``ring_p0_MPa``, ``bore_hoop_max_MPa``,
+                                                            ``pin_p0_MPa``, ``needle_Qmax_on_N``, ...
+``layers``     ``scene.layers`` non-empty                   ``interface_tau_max_MPa``, ``case_margin``, ...
+``coating_``   a coated cam with ``wear_k_mm3_per_N_m`` or  (none: the wear column uses the coating's k,
+``wear``       ``wear_K`` (:mod:`femcam.wear.coating`)      ``wear_source`` gets ``;coating``)
+=============  ===========================================  ==============================================
+
+Finite length (the axial slices of :mod:`femcam.halfspace.strip`):
+
+* the 2D FE answers again at the most loaded slice with that slice's load per unit length
+  (method fe): ``F = w_max * length``, columns ``fe_slice_F_N``, ``fe_slice_a_um``,
+  ``fe_slice_p0_MPa``, ``fe_slice_vm_max_MPa``, ``fe_slice_tau1_max_MPa``,
+  ``fe_slice_txz_absmax_MPa`` and the text column ``fe_load_basis = "w_max*length"``; the sweep's
+  own FE columns (``a_fe``, ``p0_fe``, ``vm_max``, ...) stay at the mean load ``Fc / length``,
+  comparable with Hertz (``err_a``, ``err_p0``);
+* the wear column uses the axial peak: the Archard per-pass depth ``k w v_slip / V_cam`` depends
+  on the pressure only through ``w = pi a p0 / 2``, so it is recomputed with ``p0 ->
+  p_axial_peak`` and ``a -> 2 w_max / (pi p_axial_peak)`` (i.e. ``w = w_max``), ``wear_source =
+  "axial_peak"``;
+* the assessment (run after it) gets the same ``a``, ``p0`` in place of the FE/Hertz ones (its
+  ``source`` reads ``axial_peak``) and the FE stress maxima of the most loaded slice where the FE
+  answered (method hertz: Hertz shape factors at the axial peak).
+
+A provider that the physics refuses for a documented reason (a :class:`~femcam.errors.FemcamError`)
+leaves its columns NaN and writes the reason in the text column ``extras_error``; it never stops
+the contact sweep. Models are built once per process (the ring model does not pickle; its rows
+do): ``femcam.sweep.providers.ring_model`` and ``strip_model``, keyed by the scene's ``repr``.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..assess import COLUMNS as ASSESS_COLUMNS
+from ..assess import worst_angles
+from ..errors import FemcamError
+from ..viz.extras import plot_extra_panels
+from ..wear.coating import coating_wear
+from .providers import (
+    ASSESS,
+    ASSESS_PANELS,
+    ASSESS_SKIP,
+    ASSESS_TEXT,
+    HALFSPACE,
+    HS_PANELS,
+    LAYER_PANELS,
+    LAYERS,
+    RING,
+    RING_PANELS,
+    assess_chunk,
+    assess_name,
+    coated_cam,
+    coating_wear_chunk,
+    halfspace_chunk,
+    has_finite_length,
+    has_support,
+    layers_chunk,
+    ring_chunk,
+)
+
+Column = tuple[str, str, float]
+#: text column of every sweep with providers: ``"<provider>: <reason>"`` where one was refused
+ERROR_COLUMN = "extras_error"
+
+
+@dataclass(frozen=True)
+class Provider:
+    """One extra column provider.
+
+    Parameters
+    ----------
+    name : str
+        Short name (provenance, ``extras_error``).
+    applies : callable(scene) -> bool
+    columns : tuple of (SI name, CSV name, factor)
+        Numeric columns (SI name in the table, ``csv = SI * factor``).
+    text : tuple of str
+        Text columns.
+    compute : callable(task, rows) -> dict
+        The chunk's values: SI arrays of shape (n,) for ``columns`` and ``text``. May also
+        replace sweep columns it documents (``halfspace``: ``wear_depth``, ``wear_source``).
+    panels : tuple of (ylabel, ((SI column, label, factor), ...), log)
+        Plots against cam angle (:func:`femcam.viz.extras.plot_extra_panels`).
+    """
+
+    name: str
+    applies: Callable
+    columns: tuple
+    text: tuple
+    compute: Callable
+    panels: tuple = ()
+
+
+#: the table, in the order the providers run (halfspace before assess: the axial peak)
+PROVIDERS: tuple[Provider, ...] = (
+    Provider("halfspace", has_finite_length, HALFSPACE, ("hs_flags", "fe_load_basis"),
+             halfspace_chunk, HS_PANELS),
+    Provider("assess", lambda s: "lubricant" in (getattr(s, "tribology", None) or {}), ASSESS,
+             ASSESS_TEXT, assess_chunk, ASSESS_PANELS),
+    Provider("bodies", has_support, RING, (), ring_chunk, RING_PANELS),
+    Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), layers_chunk, LAYER_PANELS),
+    Provider("coating_wear", coated_cam, (), (), coating_wear_chunk),
+)
+
+
+def plot_extras(scene, table, out) -> dict[str, str]:
+    """One PNG per applicable provider with panels, ``out/plots/extras_<name>.png`` (rows that
+    are not ``ok`` are left out).
+
+    Returns
+    -------
+    dict[str, str]
+        ``{"plot_extras_<name>": path}``.
+    """
+    ok = np.asarray(table["status"]).astype(str) == "ok"
+    paths = {}
+    for p in providers_for(scene):
+        if not p.panels:
+            continue
+        panels = [(ylabel, [(label, np.where(ok, np.asarray(table[c], float) * f, np.nan))
+                            for c, label, f in series
+                            if c in table and np.any(np.isfinite(np.asarray(table[c], float)[ok]))], log)
+                  for ylabel, series, log in p.panels]
+        panels = [q for q in panels if q[1]]
+        if not panels:
+            continue
+        path = Path(out) / "plots" / f"extras_{p.name}.png"
+        paths[f"plot_extras_{p.name}"] = str(plot_extra_panels(table["theta"], panels, path,
+                                                               title=f"{scene.name}: {p.name}"))
+    return paths
+
+
+def providers_for(scene) -> tuple[Provider, ...]:
+    """The providers that apply to ``scene``, in run order."""
+    return tuple(p for p in PROVIDERS if p.applies(scene))
+
+
+def extra_columns(scene) -> tuple[tuple[Column, ...], tuple[str, ...]]:
+    """``(numeric columns, text columns)`` the providers of ``scene`` add to the sweep table
+    (both empty when none applies; ``extras_error`` is the last text column otherwise)."""
+    ps = providers_for(scene)
+    if not ps:
+        return (), ()
+    return (tuple(c for p in ps for c in p.columns),
+            tuple(t for p in ps for t in p.text) + (ERROR_COLUMN,))
+
+
+def fill_extras(task, rows) -> None:
+    """Compute the applicable providers' columns of one chunk into ``rows`` (in place).
+
+    Parameters
+    ----------
+    task : femcam.sweep.pipeline.ChunkTask
+        ``scene``, ``theta``, ``options``, ``slip``, ``wear_k`` of the chunk.
+    rows : dict[str, ndarray]
+        The chunk's table with the contact and wear columns filled.
+    """
+    ps = providers_for(task.scene)
+    if not ps:
+        return
+    n = rows["theta"].size
+    errors = []
+    for p in ps:
+        try:
+            vals = p.compute(task, rows)
+        except FemcamError as exc:
+            errors.append(f"{p.name}: {type(exc).__name__}: {exc}")
+            vals = {}
+        for si, _, _ in p.columns:
+            rows[si] = np.asarray(vals.get(si, np.full(n, np.nan)), float)
+        for t in p.text:
+            rows[t] = np.asarray(vals.get(t, np.full(n, "")), dtype=object)
+        for k in ("wear_depth", "wear_source"):
+            if k in vals:
+                rows[k] = vals[k]
+    rows[ERROR_COLUMN] = np.full(n, " | ".join(errors), dtype=object)
+
+
+def _peak(table, name, ok, how=np.nanmax):
+    v = np.where(ok, np.asarray(table[name], float), np.nan)
+    return float(how(v)) if np.any(np.isfinite(v)) else float("nan")
+
+
+def extras_provenance(scene, table) -> dict:
+    """Which providers ran and their summary over the swept angles (JSON-able).
+
+    ``providers``: names; ``columns``: the SI names of their columns; ``errors``: the refusals;
+    ``assess``: the worst angle per criterion (:func:`femcam.assess.worst_angles`:
+    ``{criterion: {"value", "theta_deg"}}``);
+    ``halfspace``: largest axial peak (MPa) and the FE load basis; ``bodies``: largest bore hoop
+    stress (MPa) and needle load (N); ``layers``: largest interface utilisation, smallest case margin.
+    """
+    ps = providers_for(scene)
+    out = {"providers": [p.name for p in ps]}
+    if not ps:
+        return out
+    cols, text = extra_columns(scene)
+    out["columns"] = [c[0] for c in cols] + list(text)   # SI names (SweepResult.load reads them)
+    errs = sorted({e for e in np.asarray(table.get(ERROR_COLUMN, [])).astype(str) if e})
+    if errs:
+        out["errors"] = errs
+    ok = np.asarray(table["status"]).astype(str) == "ok"
+    names = [p.name for p in ps]
+    if "assess" in names:
+        rows = {si: np.asarray(table[assess_name(si)], float) for si, _, _ in ASSESS_COLUMNS
+                if si not in ASSESS_SKIP}
+        rows.update(theta=table["theta"], Fc=np.where(ok, table["Fc"], 0.0))
+        out["assess"] = {c: {"value": v, "theta_deg": math.degrees(t)}
+                         for c, (v, t, _) in worst_angles(rows).items()}
+    if "halfspace" in names:
+        out["halfspace"] = {"p_axial_peak_max_MPa": _peak(table, "hs_p_axial_peak", ok) * 1e-6,
+                            "wear": "most loaded slice: p0 = p_axial_peak, a = 2 w_max/(pi p0)",
+                            "fe_load_basis": ("a_fe, p0_fe, vm_max, ...: mean load Fc; fe_slice_*: "
+                                              "F = w_max * length (most loaded slice)")}
+    if "bodies" in names:
+        out["bodies"] = {"bore_hoop_max_MPa": _peak(table, "ring_hoop_max", ok) * 1e-6,
+                         "needle_Qmax_N": _peak(table, "ring_needle_Q_on", ok)}
+    if "layers" in names:
+        out["layers"] = {"interface_utilisation_max": _peak(table, "layer_interface_utilisation", ok),
+                         "case_margin_min": _peak(table, "layer_case_margin", ok, np.nanmin)}
+    if "coating_wear" in names:
+        cw = coating_wear(scene)
+        d = _peak(table, "wear_depth", ok)
+        out["coating_wear"] = {"k_coating_m3_per_N_m": cw.k_coating, "k_substrate_m3_per_N_m": cw.k_substrate,
+                               "thickness_m": cw.thickness, "source": cw.source,
+                               "revolutions_through": cw.thickness / d if d > 0 else math.inf}
+    return out

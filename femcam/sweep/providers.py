@@ -1,0 +1,279 @@
+r"""The extra column providers' columns, per-chunk compute functions and per-process models
+(the mechanism and the table are :mod:`femcam.sweep.extras`; what each provider does and why is
+documented there and in docs/sweep.md, "Extra columns").
+
+Column triples are ``(SI name in the sweep table, CSV name with unit, factor SI -> CSV)``; each
+compute function takes the chunk's task and rows and returns the provider's arrays (shape (n,)).
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+from collections.abc import Callable
+
+import numpy as np
+
+from ..assess import COLUMNS as ASSESS_COLUMNS
+from ..assess import assess_rows
+from ..bodies.rows import CSV_COLUMNS as RING_COLUMNS
+from ..bodies.rows import build_for, ring_rows
+from ..errors import FemcamError
+from ..halfspace.rows import COLUMNS as HS_COLUMNS
+from ..halfspace.rows import finite_length_rows, strip_for_scene
+from ..layers import scene_layer_rows
+from ..wear.coating import coating_wear
+from ..wear.map import wear_depth_per_angle
+from .cache import default_cache
+from .families import hertz_half_width
+from .options import contact_params
+
+#: angles of the revolution on which per-process models are graded (independent of chunking)
+_GRID = np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False)
+
+
+# ---------------------------------------------------------------------------------------------
+# per-process models
+# ---------------------------------------------------------------------------------------------
+_CACHE: dict = {}
+_LOCK = threading.RLock()
+
+
+def _cached(kind: str, scene, build: Callable):
+    """``build()`` once per process for ``(kind, repr(scene))``."""
+    key = (kind, repr(scene))
+    with _LOCK:
+        if key not in _CACHE:
+            _CACHE[key] = build()
+        return _CACHE[key]
+
+
+def ring_model(scene):
+    """The scene's ring model (:func:`femcam.bodies.rows.build_for`), graded for the largest
+    contact force over one revolution (720 angles), built once per process: the rows then do
+    not depend on how the sweep is chunked."""
+    def build():
+        st = scene.analyse(_GRID)
+        Fc = np.where(np.asarray(st.Fc) > 0, st.Fc, np.nan)
+        return build_for(scene, Fc, np.asarray(st.rho, float))
+    return _cached("ring", scene, build)
+
+
+def strip_model(scene):
+    """The scene's :class:`~femcam.halfspace.strip.FiniteLengthContact` (kernel FFTs), once per
+    process."""
+    return _cached("strip", scene, lambda: strip_for_scene(scene))
+
+
+# ---------------------------------------------------------------------------------------------
+# providers
+# ---------------------------------------------------------------------------------------------
+def assess_name(name: str) -> str:
+    return f"assess_{name}"
+
+
+ASSESS_SKIP = ("theta", "Fc")
+ASSESS = tuple((assess_name(si), csv if csv not in ("a_um", "p0_MPa") else f"assess_{csv}", f)
+               for si, csv, f in ASSESS_COLUMNS if si not in ASSESS_SKIP)
+ASSESS_TEXT = ("assess_regime", "assess_flags", "assess_source")
+#: the 2D FE at the most loaded slice (method fe): F = w_max * length
+FE_SLICE = (("hs_fe_F", "fe_slice_F_N", 1.0), ("hs_fe_a", "fe_slice_a_um", 1e6),
+            ("hs_fe_p0", "fe_slice_p0_MPa", 1e-6), ("hs_fe_vm_max", "fe_slice_vm_max_MPa", 1e-6),
+            ("hs_fe_tau1_max", "fe_slice_tau1_max_MPa", 1e-6),
+            ("hs_fe_txz_absmax", "fe_slice_txz_absmax_MPa", 1e-6))
+HALFSPACE = tuple((f"hs_{k}", csv, f) for k, (csv, f) in HS_COLUMNS.items()) + FE_SLICE
+RING = tuple((f"ring_{k}", csv, f) for k, (csv, f) in RING_COLUMNS.items() if k != "theta")
+LAYER_CSV = (("interface_tau_max_MPa", 1e-6), ("interface_sn_min_MPa", 1e-6),
+             ("interface_sn_max_MPa", 1e-6), ("interface_utilisation", 1.0),
+             ("coating_sx_max_MPa", 1e-6), ("coating_sx_utilisation", 1.0),
+             ("case_utilisation_max", 1.0), ("case_z_at_max_mm", 1e3), ("case_margin", 1.0))
+LAYERS = tuple((f"layer_{csv}", csv, f) for csv, f in LAYER_CSV)
+
+
+def axial_contact(rows) -> tuple[np.ndarray, np.ndarray]:
+    """``(a, p0)`` (m, Pa) of the most loaded slice of a finite-length contact: ``p0 =
+    p_axial_peak`` and ``a = 2 w_max / (pi p_axial_peak)``, so ``pi a p0 / 2 = w_max``.
+
+    >>> a, p0 = axial_contact({"hs_p_axial_peak": np.array([1e9]), "hs_w_max": np.array([1e5])})
+    >>> round(float(a[0]) * 1e6, 3), float(p0[0])
+    (63.662, 1000000000.0)
+    """
+    p = np.asarray(rows["hs_p_axial_peak"], float)
+    w = np.asarray(rows["hs_w_max"], float)
+    ok = np.isfinite(p) & np.isfinite(w) & (p > 0)
+    a = np.where(ok, 2.0 * w / (np.pi * np.where(ok, p, 1.0)), np.nan)
+    return a, np.where(ok, p, np.nan)
+
+
+def _fe_slice(task, rows, out) -> None:
+    """The 2D FE at the most loaded slice: ``F = w_max * length`` at every ``ok`` row (method
+    fe), with the family's model where it covers that load, else a model of the angle's own (as
+    the chunk runner does), through the process's :class:`~femcam.sweep.cache.ModelCache`."""
+    n = rows["theta"].size
+    for si, _, _ in FE_SLICE:
+        out[si] = np.full(n, np.nan)
+    out["fe_load_basis"] = np.full(n, "", dtype=object)
+    if task.options.method != "fe":
+        return
+    cp, cache = contact_params(task.scene), default_cache()
+    status = np.asarray(rows["status"]).astype(str)
+    for i in np.flatnonzero((status == "ok") & np.isfinite(out["hs_w_max"])):
+        F, rho = float(out["hs_w_max"][i]) * cp.length, float(rows["rho"][i])
+        try:
+            r = _solve_slice(task, cp, cache, i, F, rho)
+        except (FemcamError, ValueError, ArithmeticError, RuntimeError, MemoryError) as exc:
+            out["fe_load_basis"][i] = f"w_max*length: failed: {type(exc).__name__}: {exc}"
+            continue
+        if not r.converged:
+            out["fe_load_basis"][i] = f"w_max*length: not converged ({r.iterations} iterations)"
+            continue
+        for si, v in (("hs_fe_F", F), ("hs_fe_a", r.a), ("hs_fe_p0", r.p0),
+                      ("hs_fe_vm_max", r.von_mises_max.value), ("hs_fe_tau1_max", r.tau1_max.value),
+                      ("hs_fe_txz_absmax", float(np.abs(r.txz).max()) if r.txz.size else np.nan)):
+            out[si][i] = v
+        out["fe_load_basis"][i] = "w_max*length"
+
+
+def _solve_slice(task, cp, cache, i: int, F: float, rho: float):
+    """Row ``i`` at load ``F`` (N): its family's model if it covers ``(F, rho)``, else one of
+    its own (sized by the Hertz half-width at ``F``), as the chunk runner does."""
+    fid = int(task.family[i]) if task.family.size else -1
+    model = cache.model_for(cp, *task.refs[fid], task.options) if fid in task.refs else None
+    if model is None or not model.covers(F, rho):
+        a_i = float(hertz_half_width(np.array([F]), np.array([rho]), cp)[0])
+        model = cache.model_for(cp, rho, a_i, task.options)
+    return cache.solve(model, F, rho, cp.mu, cp.sliding, check=False)
+
+
+def halfspace_rows(scene, theta) -> dict:
+    """The half-space columns at ``theta`` (rad), each angle solved from a cold start
+    (:func:`femcam.halfspace.rows.finite_length_rows` of that angle alone): the rows then do not
+    depend on how the sweep is chunked or on the order of the angles (a warm start from the
+    previous angle changes the answer within the solver tolerance and the CG iterations)."""
+    strip = strip_model(scene)
+    parts = [finite_length_rows(scene, np.atleast_1d(t), strip=strip) for t in np.asarray(theta, float)]
+    out = {f"hs_{k}": np.array([float(r[k][0]) for r in parts]) for k in HS_COLUMNS}
+    out["hs_flags"] = np.array([";".join(r["flags"][0]) for r in parts], dtype=object)
+    return out
+
+
+def halfspace_chunk(task, rows) -> dict:
+    out = halfspace_rows(task.scene, task.theta)
+    _fe_slice(task, rows, out)
+    if task.slip is not None and math.isfinite(task.wear_k):
+        a, p0 = axial_contact(out)
+        use = np.isfinite(a) & (np.asarray(rows["status"]).astype(str) == "ok")
+        depth = wear_depth_per_angle(rows["theta"], np.where(use, a, 0.0), np.where(use, p0, 0.0),
+                                     np.where(use, rows["Fc"], 0.0), task.slip, task.wear_k)
+        out["wear_depth"] = np.where(use, depth, rows["wear_depth"])
+        out["wear_source"] = np.where(use, "axial_peak", np.asarray(rows["wear_source"]).astype(str))
+    return out
+
+
+def assess_chunk(task, rows) -> dict:
+    """The assessment of the chunk's angles except undercut ones (no contact solution: NaN and
+    empty text there), with the sweep's FE (or the most loaded slice's) contact as its table."""
+    table = {"a_fe": rows["a_fe"], "p0_fe": rows["p0_fe"], "tau1_max": rows["tau1_max"],
+             "txz_absmax": rows["txz_absmax"]}
+    axial = "hs_p_axial_peak" in rows
+    if axial:  # finite length: the most loaded slice, Hertz shape factors at its p0
+        a, p0 = axial_contact(rows)
+        table = {"a_fe": a, "p0_fe": p0, "tau1_max": rows["hs_fe_tau1_max"],
+                 "txz_absmax": rows["hs_fe_txz_absmax"]}
+    n = task.theta.size
+    idx = np.flatnonzero(np.asarray(rows["status"]).astype(str) != "undercut")
+    out = {assess_name(si): np.full(n, np.nan) for si, _, _ in ASSESS_COLUMNS if si not in ASSESS_SKIP}
+    out.update({t: np.full(n, "", dtype=object) for t in ASSESS_TEXT})
+    if idx.size == 0:
+        return out
+    r = assess_rows(task.scene, task.theta[idx], table={k: np.asarray(v)[idx] for k, v in table.items()})
+    for si, _, _ in ASSESS_COLUMNS:
+        if si not in ASSESS_SKIP:
+            out[assess_name(si)][idx] = r[si]
+    src = np.asarray(r["source"]).astype(str)
+    if axial:
+        src = np.where(src == "fe", "axial_peak", src)
+    for name, v in (("assess_regime", r["regime"]), ("assess_flags", r["flags"]), ("assess_source", src)):
+        out[name][idx] = np.asarray(v).astype(str)
+    return out
+
+
+def _contact_rows(rows) -> np.ndarray:
+    """Rows with a contact solution to build on: ``ok``, or ``failed`` (the FE failed there, the
+    contact exists); lift-off and undercut rows (the roller does not fit) get NaN."""
+    status = np.asarray(rows["status"]).astype(str)
+    return (status == "ok") | (status == "failed")
+
+
+def ring_chunk(task, rows) -> dict:
+    Fc = np.where(_contact_rows(rows), rows["Fc"], 0.0)   # ring_rows: Fc <= 0 -> NaN row
+    r = ring_rows(task.scene, task.theta, Fc, rows["rho"], model=ring_model(task.scene))
+    return {f"ring_{k}": np.asarray(r[k], float) for k in RING_COLUMNS if k != "theta"}
+
+
+def layers_chunk(task, rows) -> dict:
+    n = task.theta.size
+    out = {si: np.full(n, np.nan) for si, _, _ in LAYERS}
+    idx = np.flatnonzero(_contact_rows(rows))
+    if idx.size:
+        r = scene_layer_rows(task.scene, task.theta[idx], a_over_h=task.options.a_over_h)
+        for si, csv, f in LAYERS:
+            if csv in r:
+                out[si][idx] = np.asarray(r[csv], float) / f
+    return out
+
+
+def has_finite_length(scene) -> bool:
+    """True when the scene asks for the finite-length contact: a crown, edge radius or
+    misalignment key, or a roller or cam width that differs from the 2D contact length. (The
+    scene fills ``finite_length`` with both widths for every roller scene with a face width, so
+    non-empty alone does not mean asked for.)"""
+    fl = getattr(scene, "finite_length", None) or {}
+    if not fl:
+        return False
+    widths = (fl.get("roller_width", scene.length), fl.get("cam_width", scene.length))
+    return bool(set(fl) - {"roller_width", "cam_width"}) or any(w != scene.length for w in widths)
+
+
+def coated_cam(scene) -> bool:
+    cw = coating_wear(scene)
+    return cw is not None and cw.body == "cam"
+
+
+def coating_wear_chunk(task, rows) -> dict:
+    """A coated cam with a coating wear coefficient: the wear column (cam depth per revolution
+    at the contact) with the coating's k, ``wear_source`` gets ``;coating``."""
+    cw = coating_wear(task.scene)
+    depth = np.asarray(rows["wear_depth"], float)
+    src = np.asarray(rows["wear_source"]).astype(str)
+    on = np.isfinite(depth) & (depth > 0)
+    return {"wear_depth": np.where(on, depth * cw.ratio, depth),
+            "wear_source": np.where(on, np.char.add(src, ";coating"), src)}
+
+
+def has_support(scene) -> bool:
+    return (getattr(scene, "bodies", None) or {}).get("support", "solid") != "solid"
+
+
+MPA = 1e-6
+HS_PANELS = (("pressure (MPa)", (("hs_p_axial_peak", "axial peak p(x, y) (3D half-space)", MPA),
+                                  ("p0_hertz", "2D Hertz p0 at Fc / length", MPA),
+                                  ("hs_fe_p0", "2D FE p0 at the most loaded slice", MPA)), False),
+              ("load per length (N/mm)", (("hs_w_max", "most loaded slice w_max", 1e-3),), False))
+ASSESS_PANELS = (("lambda (-)", (("assess_lam", "lambda = h_min / sigma", 1.0),), True),
+                  ("safety factor (-)", (("assess_sf_yield", "first yield", 1.0),
+                                         ("assess_sf_shakedown", "shakedown", 1.0),
+                                         ("assess_sf_subsurface", "subsurface fatigue", 1.0),
+                                         ("assess_sf_surface_fatigue", "surface fatigue", 1.0)), True),
+                  ("temperature (degC)", (("assess_T_contact", "contact temperature", 1.0),), False))
+RING_PANELS = (("bore hoop stress (MPa)", (("ring_hoop_max", "largest tensile bore hoop stress", MPA),),
+                 False),
+                ("cam-roller p0 (MPa)", (("ring_p0", "ring", MPA), ("ring_p0_solid", "solid roller", MPA)),
+                 False),
+                ("needle load (N)", (("ring_needle_Q_on", "most loaded, needle on the load line", 1.0),
+                                     ("ring_needle_Q_between", "most loaded, load between needles", 1.0)),
+                 False))
+LAYER_PANELS = (("interface shear (MPa)", (("layer_interface_tau_max_MPa", "max |tau| at the interface",
+                                             MPA),), False),
+                 ("utilisation (-)", (("layer_interface_utilisation", "interface shear / strength", 1.0),
+                                      ("layer_case_utilisation_max", "case: tau1 / k(z) max", 1.0)), False))
