@@ -13,7 +13,7 @@ import pytest
 
 from femcam.cli import main
 from femcam.errors import UndercutError
-from femcam.profile import _fmt_intervals_deg
+from femcam.profile.geometry import _fmt_intervals_deg
 
 STUDY_PATH = Path(__file__).resolve().parents[1] / "examples" / "seed002_study_model.toml"
 
