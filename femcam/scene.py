@@ -561,6 +561,10 @@ class Scene:
     #: real bodies (femcam.bodies): roller support geometry (SI: Ro, Ri, support, Rp, c, Z, r_n),
     #: cam_bore (m) and the "pin" / "shaft" Materials; empty for the solid roller
     bodies: dict = field(default_factory=dict)
+    #: knife-edge tip radius (m, [follower] tip_radius_mm) and flat-face length (m,
+    #: [follower] face_length_mm); None when not given (femcam.fe.followers)
+    tip_radius: float | None = None
+    face_length: float | None = None
 
     @property
     def rpm(self) -> float:
@@ -716,7 +720,8 @@ def load_scene(path) -> Scene:
                  plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=dict(raw.get("fe", {})),
                  wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw, train=train,
                  tribology=tribo, finite_length=finite, bodies=bodies, layers=layers,
-                 steps_per_rev=steps_per_rev)
+                 steps_per_rev=steps_per_rev, tip_radius=fo.get("tip_radius_mm"),
+                 face_length=fo.get("face_length_mm"))
 
 
 def _read_toml(path: Path) -> dict:
