@@ -30,7 +30,7 @@ from ..hertz import HertzValidityWarning, LineContact
 from ..profile import RollerFollower
 from ..tribology import fatigue, film, flash
 from ..tribology.regime import wear_coefficient
-from ..wear.options import follower_tip_radius, slip_kwargs, wear_coefficient_info, wear_options
+from ..wear.options import follower_tip_radius, slip_kwargs, wear_coefficient_info
 from ..wear.slip import follower_slip
 from .inputs import AssessInputs, assessment_inputs
 
