@@ -3,8 +3,8 @@
 Knife-edge followers need a tip radius (``tip_radius`` in m, or the scene's ``[follower]
 tip_radius_mm``; ``[wear] tip_radius_mm`` is a deprecated alias): the kinematics, pressure
 angle, contact force and cam curvature are then those of the cam cut for the radiused tip (a
-roller of that radius that does not turn), the pressure is Hertz of the cam against the tip radius (Johnson 1985 §4.3), and the slip is
-:func:`femcam.wear.slip.radiused_tip`.
+roller of that radius that does not turn), the pressure is Hertz of the cam against the tip
+radius (Johnson 1985 §4.3), and the slip is :func:`femcam.wear.slip.radiused_tip`.
 """
 
 from __future__ import annotations
