@@ -44,7 +44,7 @@ def plot_p0(result, path) -> str:
     path written (str).
     """
     plt, t, deg = _table(result)
-    fe = result.method == "fe"
+    fe = result.method != "hertz"
     fig, axs = plt.subplots(2 if fe else 1, 1, figsize=(7, 5 if fe else 3.4), sharex=True,
                             squeeze=False, gridspec_kw={"height_ratios": [2.2, 1] if fe else [1]})
     ax = axs[0, 0]
@@ -77,7 +77,7 @@ def plot_maxima(result, path) -> str:
     plt, t, deg = _table(result)
     fig, ax = plt.subplots(figsize=(7, 3.6))
     k = result.hertz_factors
-    if result.method == "fe":
+    if result.method != "hertz":
         ax.plot(deg, t["vm_max"] / 1e6, ".", ms=3, color="C3", label="von Mises max (FE)")
         ax.plot(deg, t["tau1_max"] / 1e6, ".", ms=3, color="C2", label="tau1 max (FE)")
     if k is not None:
