@@ -313,18 +313,17 @@ def _fe_angle(task: ChunkTask, cp: ContactParams, rows, flags, i: int,
         model = cache.model_for(cp, rho, a_i, task.options)
         flags[i].append("rebuilt")
     sl, Q, roll = traction_args(task.traction, i, cp.sliding)
-    r = cache.solve(model, F, rho, cp.mu, sl, check=not own, Q=Q, rolling=roll)
-    rows["fe_time"][i] = r.timings["contact"] + r.timings.get("recovery", 0.0)
-    rows["model"][i] = "fe_arc"
     jump = bool(task.jump[i]) if task.jump is not None else False
     tol_pct = 100.0 * task.options.tolerance
     if jump or 100.0 * rows["est_err_arc"][i] > tol_pct:  # the exact gap where the choice needs it
         res = exact_solve(task.scene, cp, model, float(rows["theta"][i]), F, Q=Q, jump=jump,
                           tol_pct=tol_pct)
         r = res.result
-        rows["fe_time"][i] += r.timings.get("contact", 0.0) + r.timings.get("recovery", 0.0)
         fill_choice(rows, i, res)
-        rows["est_err_arc"][i] = res.est_err_arc_pct / 100.0
+    else:
+        r = cache.solve(model, F, rho, cp.mu, sl, check=not own, Q=Q, rolling=roll)
+        rows["model"][i] = "fe_arc"
+    rows["fe_time"][i] = r.timings["contact"] + r.timings.get("recovery", 0.0)
     fe_fill(rows, i, r)
     rows["Q_over_muFc"][i] = r.Q / (cp.mu * F) if cp.mu > 0 else np.nan
     rows["family"][i] = fid
