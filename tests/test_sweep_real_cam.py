@@ -14,11 +14,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from halfspace_ref import envelope_height, halfspace_solve  # tests/ is on sys.path (pytest rootdir)
 
 from femcam.errors import InputError
 from femcam.scene import load_scene
 from femcam.sweep import sweep
-from halfspace_ref import envelope_height, halfspace_solve  # tests/ is on sys.path (pytest rootdir)
 
 EX = Path(__file__).resolve().parents[1] / "examples"
 E_STEEL = 210e9 / (2 * (1 - 0.3**2))  # plane strain E* of steel on steel (E = 210 GPa, nu = 0.3)
