@@ -97,7 +97,8 @@ def test_junction_p0_curve_is_smooth(junction_sweep):
     F = r["Fc"][j]
     Rr, Rp, s2 = 0.010, 0.030, 0.008 * math.pi**2 / (2 * (math.pi / 2) ** 2)
     rho_r = 1 / ((Rp**2 - Rp * s2) / Rp**3) - Rr
-    hz = (hertz_p0(F[0], sc.length, 1 / (1 / Rr + 1 / 0.020)), hertz_p0(F[-1], sc.length, 1 / (1 / Rr + 1 / rho_r)))
+    hz = (hertz_p0(F[0], sc.length, 1 / (1 / Rr + 1 / 0.020)),
+          hertz_p0(F[-1], sc.length, 1 / (1 / Rr + 1 / rho_r)))
     assert np.all(np.diff(p0) <= 1e-4 * p0[0]), "monotone from the dwell to the rise side"
     assert np.max(np.abs(np.diff(p0))) < (hz[0] - hz[1]) / 3
     assert p0[0] == pytest.approx(hz[0], rel=5e-3) and p0[-1] == pytest.approx(hz[1], rel=5e-3)
