@@ -180,6 +180,40 @@ def plot_surface_worst(profile: dict, path) -> str:
     return _save(fig, Path(path))
 
 
+def plot_junction_p0(result, path, reference=None) -> str:
+    """Peak pressure across the curvature jumps of a sweep (rows ``curvature_jump``): Hertz
+    (osculating arcs, jumps), the FE with the osculating-arc gap and with the exact gap (largest
+    nodal pressure; the arc FE's p0 from ``exact_vs_arc_p0``), optionally a reference.
+
+    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG),
+    ``reference`` (optional ``(theta_deg, p0_Pa)`` arrays, e.g. an independent half-space solve).
+    Returns the path written (str).
+    """
+    plt, t, deg = _table(result)
+    j = (t["curvature_jump"] == 1) & (t["status"] == "ok")
+    order = np.argsort(deg[j])
+    x = deg[j][order]
+    ex = t["p0_nodal"][j][order]
+    arc = ex * (1.0 + t["exact_vs_arc_p0"][j][order])
+    hz = t["p0_hertz"][j][order]
+    brk = np.flatnonzero(np.diff(x) > 1.0) + 1  # separate jumps: no line between them
+    x, ex, arc, hz = (np.insert(v, brk, np.nan) for v in (x, ex, arc, hz))
+    fig, ax = plt.subplots(figsize=(7, 3.8))
+    ax.plot(x, hz / 1e6, "-", color="C0", label="Hertz (osculating arcs)")
+    ax.plot(x, arc / 1e6, "s", ms=3, color="C1", label="FE, arc gap")
+    ax.plot(x, ex / 1e6, "o-", ms=3, lw=1, color="C3", label="FE, exact gap (sweep)")
+    if reference is not None:
+        ax.plot(np.asarray(reference[0]), np.asarray(reference[1]) / 1e6, "k+", ms=8,
+                label="half-space reference, exact gap")
+    ax.set_xlabel("cam angle theta (deg)")
+    ax.set_ylabel("peak pressure (MPa)")
+    ax.legend(loc="best", fontsize=8)
+    ax.grid(alpha=0.3)
+    ax.set_title("Peak pressure across a curvature jump")
+    fig.tight_layout()
+    return _save(fig, Path(path))
+
+
 def plot_sweep(result, out) -> dict[str, str]:
     """All sweep plots into ``out/plots``.
 
@@ -203,6 +237,8 @@ def plot_sweep(result, out) -> dict[str, str]:
              "plot_svaj": plot_svaj_loads(r, d / "svaj_loads.png")}
     if np.any(np.isfinite(result.table["wear_depth"])):
         paths["plot_wear"] = plot_wear(r, d / "wear_vs_angle.png")
+    if "curvature_jump" in result.table and np.any(result.table["curvature_jump"] == 1):
+        paths["plot_junction"] = plot_junction_p0(r, d / "p0_curvature_jumps.png")
     if result.surface_profile is not None and "x_hertz" in result.surface_profile:
         paths["plot_surface"] = plot_surface_worst(result.surface_profile,
                                                    d / "surface_stress_worst.png")
