@@ -315,9 +315,11 @@ def _fe_angle(task: ChunkTask, cp: ContactParams, rows, flags, i: int,
     sl, Q, roll = traction_args(task.traction, i, cp.sliding)
     jump = bool(task.jump[i]) if task.jump is not None else False
     tol_pct = 100.0 * task.options.tolerance
+    res = None
     if jump or 100.0 * rows["est_err_arc"][i] > tol_pct:  # the exact gap where the choice needs it
         res = exact_solve(task.scene, cp, model, float(rows["theta"][i]), F, Q=Q, jump=jump,
                           tol_pct=tol_pct)
+    if res is not None:
         r = res.result
         fill_choice(rows, i, res)
     else:

@@ -87,13 +87,16 @@ def family_real_cam(scene, cp, model) -> RealCam:
 
 
 def exact_solve(scene, cp, model, theta, F, *, Q, jump: bool, tol_pct: float):
-    """The exact-gap answer of one roller or knife-edge row on its family model (both gaps are
-    solved, ``exact_vs_arc_p0_pct`` reported). ``Q``: the roller's tangential force (N) or None
-    for full sliding (knife-edge: direction from the sliding velocity)."""
+    """The exact-gap answer of one roller or knife-edge row on its family model, or None when
+    the exact-gap estimate of :func:`femcam.fe.choice.solve_angle` finds the arc gap within
+    ``tol_pct`` after all (the caller then solves the arc gap). Curvature-jump rows solve both
+    gaps (``exact_vs_arc_p0_pct``). ``Q``: the roller's tangential force (N) or None for full
+    sliding (knife-edge: direction from the sliding velocity)."""
     if isinstance(scene.follower, RollerFollower) and Q is None:  # [contact] sliding override
         Q = cp.sliding * cp.mu * F
-    return solve_angle(family_real_cam(scene, cp, model), theta, F, mu=cp.mu, Q=Q,
-                       curvature_jump=jump, tol_pct=tol_pct, force_exact=True)
+    res = solve_angle(family_real_cam(scene, cp, model), theta, F, mu=cp.mu, Q=Q,
+                      curvature_jump=jump, tol_pct=tol_pct, force_exact=jump)
+    return res if res.model == "fe_exact" else None
 
 
 def hertz_answer(rows, idx, cp, traction) -> None:
