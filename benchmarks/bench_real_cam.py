@@ -233,6 +233,27 @@ def sweep_table(quick, plots=False):
                             F / sc.length, Es, 3e-4)
                for t, F in zip(np.radians(deg), rr["Fc"][rr["curvature_jump"] == 1], strict=True)]
         print(plot_junction_p0(rr, ROOT / "docs" / "img" / "sweep_junction_p0.png", reference=(deg, ref)))
+        sweep_follower_plots()
+
+
+def sweep_follower_plots():
+    """The p0 plot of a seed 003 knife-edge sweep and of a flat-faced sweep (every 5 deg) ->
+    docs/img/sweep_knife_edge_p0.png, docs/img/sweep_flat_faced_p0.png."""
+    import shutil
+    import tempfile
+
+    from femcam.sweep import sweep
+
+    for fname, png in (("seed003_knife_edge.toml", "sweep_knife_edge_p0.png"),
+                       ("flat_faced.toml", "sweep_flat_faced_p0.png")):
+        with tempfile.TemporaryDirectory() as d:
+            t0 = time.perf_counter()
+            r = sweep(ROOT / "examples" / fname, angles=np.radians(np.arange(0.0, 360.0, 5.0)),
+                      out=d, plots=True, workers=1)
+            print(f"{fname}: {r.n_angles} angles in {time.perf_counter() - t0:.1f} s (load "
+                  f"{os.getloadavg()[0]:.2f}), models {r.provenance['options']['models']}, max |FE p0 / "
+                  f"Hertz - 1| = {100 * np.nanmax(np.abs(r['err_p0'])):.3f} %")
+            shutil.copy(r.paths["plot_p0"], ROOT / "docs" / "img" / png)
 
 
 def plots(A, P0, carter):
