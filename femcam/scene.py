@@ -524,7 +524,9 @@ class Scene:
     plane : str
         ``"strain"`` or ``"stress"``.
     sliding : str or None
-        ``"+x"`` or ``"-x"``: direction of the friction traction on the cam.
+        ``"+x"`` or ``"-x"``: direction of the friction traction on the cam. The sweep takes the
+        traction from the mechanism (femcam.sweep.realcam); this key is an explicit override
+        (full sliding in this direction at every angle).
     description, source : str
     fe, wear : dict
         The optional pass-through tables (``wear`` is checked by :mod:`femcam.wear.options`).

@@ -154,7 +154,7 @@ def test_seed003_knife_edge_sweeps(tmp_path):
 
     out = tmp_path / "k"
     assert main(["sweep", str(EX / "seed003_knife_edge.toml"), "--out", str(out),
-                 "--angles-deg", "0:360:60", "--no-plots", "--vtk-every", "0"]) == 0
+                 "--angles-deg", "0:360:60", "--no-plots", "--vtk-every", "6"]) == 0
     head = (out / "sweep.csv").read_text().splitlines()[0].split(",")
     for col in ("model", "curvature_jump", "exact_vs_arc_p0_pct", "Q_N", "Q_over_muFc",
                 "stick_width_um", "slip_state", "est_err_hertz_pct", "est_err_arc_pct"):
@@ -167,6 +167,13 @@ def test_seed003_knife_edge_sweeps(tmp_path):
     np.testing.assert_allclose(r["p0_fe"][base], p0, rtol=3e-3)
     np.testing.assert_allclose(r["Q"][base], 0.1 * 20.0, rtol=1e-9)
     assert set(r["slip_state"]) == {"sliding"}
+    # the VTU carries the traction: Coulomb full sliding, |q| = mu p at every contact node
+    meshio = pytest.importorskip("meshio")
+    m = meshio.read(out / "vtk" / "angle_0000.000deg.vtu")
+    q, p = np.abs(m.point_data["contact_traction"]), m.point_data["contact_pressure"]
+    q = np.linalg.norm(q, axis=1) if q.ndim == 2 else q
+    assert p.max() > 0
+    np.testing.assert_allclose(q, 0.1 * np.abs(p), rtol=1e-9, atol=1e-9 * p.max())
 
 
 def test_flat_faced_sweep_and_edge_contact():
