@@ -21,7 +21,8 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
                        second_mass_kg, second_stiffness_N_per_m, second_damping_ratio | ..._N_s_per_m
     [materials.cam], [materials.roller] (alias [materials.follower]):
                        E_GPa, nu, hardness_MPa?, name?
-    [contact]?         friction?, plane? = "strain"|"stress", sliding? = "+x"|"-x"
+    [contact]?         friction?, plane? = "strain"|"stress", sliding? = "+x"|"-x" (sweep: explicit
+                       full-sliding override; default: traction from the mechanism)
     assessment (femcam.assess; all optional): [operating] oil_temperature_C?;
     [lubricant]?       name? (femcam.tribology.OILS) | viscosity_Pa_s + temperature_C +
                        viscosity_temperature_coefficient_per_K | kinematic_viscosity_40C_mm2_per_s +
