@@ -12,7 +12,15 @@ Run:  python benchmarks/bench_real_cam.py [--plots] [--quick]
 2. Partial slip: time of ContactModel.solve with Q (Cattaneo and Carter) minus the time of the
    full-sliding solve, median over repeats (seed 002 study model, a/h = 20); checked first
    against Carter's stick size.
-3. ``--plots``: docs/img/fe_junction_p0.png (p0 vs angle: Hertz, arc FE, exact FE, reference),
+3. The sweep at the junction scene (``femcam.sweep.sweep``, 80..100 deg every 1 deg plus the
+   jump refinement): models per angle (method fe and auto), total time and median time per angle
+   of each model, and the partial-slip cost in the sweep (median fe_time of the arc-gap rows with
+   the mechanism's Q minus the same rows with the ``[contact] sliding`` full-sliding override).
+   CORRECTNESS FIRST: the sweep's exact-gap p0 within 1 % of the half-space reference at the
+   junction and +-0.1 deg.
+4. ``--plots``: docs/img/sweep_junction_p0.png (the sweep's junction rows: Hertz, arc FE, exact
+   FE, reference; :func:`femcam.viz.sweep.plot_junction_p0`), docs/img/fe_junction_p0.png
+   (p0 vs angle: Hertz, arc FE, exact FE, reference),
    docs/img/fe_carter.png (FE traction vs Carter), docs/img/fe_followers.png (seed 003
    knife-edge with a 2 mm tip and the flat-faced scene: FE p0 over the revolution vs Hertz).
 
@@ -162,8 +170,90 @@ def main(argv=None):
     print(f"| Cattaneo, Q = 0.5 mu P | {catt * 1e3:.2f} | {(catt - base) * 1e3:+.2f} |")
     print(f"| Carter, Q = 0.5 mu P | {cart * 1e3:.2f} | {(cart - base) * 1e3:+.2f} |")
     print(f"| solve_partial_slip alone (Carter) | {alone * 1e3:.2f} | - |")
+    sweep_table(quick, plots="--plots" in argv)
     if "--plots" in argv:
         plots(A, P0, carter)
+
+
+def sweep_table(quick, plots=False):
+    import dataclasses
+
+    from femcam.fe.angles import curvature_jumps as jumps_of
+    from femcam.sweep import sweep
+    from femcam.sweep.cache import default_cache
+
+    sc = load_scene(ROOT / "examples" / "shm_dwell_junction.toml")
+    Es = effective_modulus(sc.cam, sc.roller, sc.plane)
+    thj = jumps_of(sc.program, sc.follower)[0].theta
+    ang = np.radians(np.arange(80.0, 100.01, 2.0 if quick else 1.0))
+    cases = (("fe", "mechanism", sc), ("auto", "mechanism", sc),
+             ("fe", "override +x", dataclasses.replace(sc, sliding="+x")))
+    res = {}
+    for method, trac, scene in cases:
+        default_cache().clear()
+        t0 = time.perf_counter()
+        r = sweep(scene, angles=ang, method=method, workers=1)
+        res[(method, trac)] = (r, time.perf_counter() - t0, os.getloadavg()[0])
+    r = res[("fe", "mechanism")][0]
+    refs = []
+    for d in (-0.1, 0.0, 0.1):  # correctness before timing
+        i = int(np.argmin(np.abs(r["theta"] - (thj + math.radians(d)))))
+        t, F = float(r["theta"][i]), float(r["Fc"][i])
+        ref = halfspace_p0(lambda x, t=t: exact_gap(sc.program, sc.follower, t, x, kind="vertical"),
+                           F / sc.length, Es, 3e-4)
+        assert abs(r["p0_nodal"][i] / ref - 1) < 1e-2, f"sweep exact-gap p0 off the reference at {d:+} deg"
+        refs.append((math.degrees(t), ref, r["p0_nodal"][i]))
+    print(f"\n3. sweep of the junction scene, {ang.size} requested angles 80..100 deg + jump refinement "
+          f"({r.n_angles} rows), a/h = 10, serial, cold cache")
+    print("| method | traction | rows hertz / fe_arc / fe_exact | total (s) | median per angle (ms): "
+          "hertz / fe_arc / fe_exact | load |\n|---|---|---|---|---|---|")
+    for (method, trac), (rr, tt, load) in res.items():
+        m = rr["model"]
+        med = [float(np.median(rr["fe_time"][m == k])) * 1e3 if np.any(m == k) else float("nan")
+               for k in ("hertz", "fe_arc", "fe_exact")]
+        cnt = " / ".join(str(int(np.sum(m == k))) for k in ("hertz", "fe_arc", "fe_exact"))
+        print(f"| {method} | {trac} | {cnt} | {tt:.2f} | {med[0]:.2f} / {med[1]:.2f} / {med[2]:.2f} | "
+              f"{load:.2f} |")
+    a, b = res[("fe", "mechanism")][0], res[("fe", "override +x")][0]
+    arc = (a["model"] == "fe_arc") & (b["model"] == "fe_arc")
+    print(f"partial slip in the sweep: median fe_time of the {int(arc.sum())} arc-gap rows "
+          f"{np.median(a['fe_time'][arc]) * 1e3:.2f} ms (mechanism Q, partial slip) vs "
+          f"{np.median(b['fe_time'][arc]) * 1e3:.2f} ms (full sliding): "
+          f"{(np.median(a['fe_time'][arc]) - np.median(b['fe_time'][arc])) * 1e3:+.2f} ms per angle")
+    print("| dtheta (deg) | reference p0 (MPa) | sweep exact FE p0 (MPa) | error % |\n|---|---|---|---|")
+    for t, ref, p in refs:
+        print(f"| {t - math.degrees(thj):+.2f} | {ref / 1e6:.1f} | {p / 1e6:.1f} | "
+              f"{100 * (p / ref - 1):+.3f} |")
+    if plots:
+        from femcam.viz.sweep import plot_junction_p0
+
+        rr = sweep(sc, angles=np.radians([89.0, 91.0]), workers=1)
+        deg = np.degrees(rr["theta"][rr["curvature_jump"] == 1])
+        ref = [halfspace_p0(lambda x, t=t: exact_gap(sc.program, sc.follower, t, x, kind="vertical"),
+                            F / sc.length, Es, 3e-4)
+               for t, F in zip(np.radians(deg), rr["Fc"][rr["curvature_jump"] == 1], strict=True)]
+        print(plot_junction_p0(rr, ROOT / "docs" / "img" / "sweep_junction_p0.png", reference=(deg, ref)))
+        sweep_follower_plots()
+
+
+def sweep_follower_plots():
+    """The p0 plot of a seed 003 knife-edge sweep and of a flat-faced sweep (every 5 deg) ->
+    docs/img/sweep_knife_edge_p0.png, docs/img/sweep_flat_faced_p0.png."""
+    import shutil
+    import tempfile
+
+    from femcam.sweep import sweep
+
+    for fname, png in (("seed003_knife_edge.toml", "sweep_knife_edge_p0.png"),
+                       ("flat_faced.toml", "sweep_flat_faced_p0.png")):
+        with tempfile.TemporaryDirectory() as d:
+            t0 = time.perf_counter()
+            r = sweep(ROOT / "examples" / fname, angles=np.radians(np.arange(0.0, 360.0, 5.0)),
+                      out=d, plots=True, workers=1)
+            print(f"{fname}: {r.n_angles} angles in {time.perf_counter() - t0:.1f} s (load "
+                  f"{os.getloadavg()[0]:.2f}), models {r.provenance['options']['models']}, max |FE p0 / "
+                  f"Hertz - 1| = {100 * np.nanmax(np.abs(r['err_p0'])):.3f} %")
+            shutil.copy(r.paths["plot_p0"], ROOT / "docs" / "img" / png)
 
 
 def plots(A, P0, carter):

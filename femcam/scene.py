@@ -21,7 +21,8 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
                        second_mass_kg, second_stiffness_N_per_m, second_damping_ratio | ..._N_s_per_m
     [materials.cam], [materials.roller] (alias [materials.follower]):
                        E_GPa, nu, hardness_MPa?, name?
-    [contact]?         friction?, plane? = "strain"|"stress", sliding? = "+x"|"-x"
+    [contact]?         friction?, plane? = "strain"|"stress", sliding? = "+x"|"-x" (sweep: explicit
+                       full-sliding override; default: traction from the mechanism)
     assessment (femcam.assess; all optional): [operating] oil_temperature_C?;
     [lubricant]?       name? (femcam.tribology.OILS) | viscosity_Pa_s + temperature_C +
                        viscosity_temperature_coefficient_per_K | kinematic_viscosity_40C_mm2_per_s +
@@ -569,7 +570,9 @@ class Scene:
     plane : str
         ``"strain"`` or ``"stress"``.
     sliding : str or None
-        ``"+x"`` or ``"-x"``: direction of the friction traction on the cam.
+        ``"+x"`` or ``"-x"``: direction of the friction traction on the cam. The sweep takes the
+        traction from the mechanism (femcam.sweep.realcam); this key is an explicit override
+        (full sliding in this direction at every angle).
     description, source : str
     fe, sweep : dict
         The checked study settings of [fe] (``a_over_h``, ``tolerance``) and [sweep]
@@ -612,6 +615,10 @@ class Scene:
     bodies: dict = field(default_factory=dict)
     #: checked [sweep] settings (see ``fe``)
     sweep: dict = field(default_factory=dict)
+    #: knife-edge tip radius (m, [follower] tip_radius_mm) and flat-face length (m,
+    #: [follower] face_length_mm); None when not given (femcam.fe.followers)
+    tip_radius: float | None = None
+    face_length: float | None = None
 
     @property
     def rpm(self) -> float:
@@ -764,7 +771,8 @@ def load_scene(path) -> Scene:
                  plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=study["fe"],
                  wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw, train=train,
                  tribology=tribo, finite_length=finite, bodies=bodies, layers=layers,
-                 steps_per_rev=steps_per_rev, sweep=study["sweep"])
+                 steps_per_rev=steps_per_rev, sweep=study["sweep"], tip_radius=fo.get("tip_radius_mm"),
+                 face_length=fo.get("face_length_mm"))
 
 
 def _study(ck: _Checker, raw: dict, mats: dict) -> dict:

@@ -1,5 +1,6 @@
 """Slip models and the local Archard wear map (femcam.wear.slip, femcam.wear.map)."""
 
+import dataclasses
 import math
 from pathlib import Path
 
@@ -490,8 +491,9 @@ def test_knife_edge_wear_map_needs_tip_radius():
     from femcam.wear.scene import scene_wear
 
     sc = sc_mod.load_scene(str(EXAMPLES / "seed003_knife_edge.toml"))
-    with pytest.raises(InputError, match="tip_radius_mm"):
-        scene_wear(sc, TH)
+    assert sc.tip_radius == pytest.approx(2e-3)  # [follower] tip_radius_mm = 2.0
+    with pytest.raises(InputError, match=r"\[follower\] tip_radius_mm"):
+        scene_wear(dataclasses.replace(sc, tip_radius=None), TH)
     rt = 1e-3
     TH2 = TH[::2]
     wm, st, slip = scene_wear(sc, TH2, tip_radius=rt, cycles=1.0)
@@ -554,8 +556,11 @@ def test_cli_map_checks_wear_keys_and_knife_edge(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "wear.k = 1e-17: unknown key; did you mean 'k_mm3_per_N_m' in mm^3/(N m)?" in err
     knife = str(EXAMPLES / "seed003_knife_edge.toml")
-    assert main(["wear", "map", knife, "--out", str(tmp_path / "k"), "--no-plots"]) == 1
-    assert "tip_radius_mm" in capsys.readouterr().err
+    sharp = tmp_path / "sharp.toml"  # the example without its [follower] tip_radius_mm
+    sharp.write_text("\n".join(ln for ln in Path(knife).read_text().splitlines()
+                               if not ln.startswith("tip_radius_mm")))
+    assert main(["wear", "map", str(sharp), "--out", str(tmp_path / "k"), "--no-plots"]) == 1
+    assert "[follower] tip_radius_mm" in capsys.readouterr().err
     assert main(["wear", "map", knife, "--out", str(tmp_path / "k"), "--no-plots", "--step-deg", "2",
                  "--tip-radius-mm", "0.5"]) == 0
     fol = (tmp_path / "k" / "wear_scene_follower.csv").read_text().splitlines()

@@ -30,7 +30,7 @@ from ..hertz import HertzValidityWarning, LineContact
 from ..profile import RollerFollower
 from ..tribology import fatigue, film, flash
 from ..tribology.regime import wear_coefficient
-from ..wear.options import slip_kwargs, wear_coefficient_info, wear_options
+from ..wear.options import follower_tip_radius, slip_kwargs, wear_coefficient_info
 from ..wear.slip import follower_slip
 from .inputs import AssessInputs, assessment_inputs
 
@@ -81,10 +81,10 @@ def _geometry(scene):
         return scene, scene.follower.Rr, None
     if kind == "FlatFacedFollower":
         return scene, math.inf, None
-    tip = wear_options(scene).get("tip_radius_mm")
+    tip = follower_tip_radius(scene)
     if tip is None:
         raise InputError("follower type = knife_edge: a sharp tip has no contact width, so film, "
-                         "pressure and temperatures are undefined; give the tip radius: scene [wear] "
+                         "pressure and temperatures are undefined; give the tip radius: scene [follower] "
                          "tip_radius_mm (mm)")
 
     f = scene.follower
@@ -302,6 +302,6 @@ def wear_factor(scene, theta, table=None, tip_radius=None):
     if "lubricant" not in scene.tribology or not k > 0:
         return None, None
     if tip_radius is not None:
-        scene = dataclasses.replace(scene, wear={**scene.wear, "tip_radius_mm": tip_radius * 1e3})
+        scene = dataclasses.replace(scene, tip_radius=tip_radius)
     r = assess_rows(scene, theta, table)
     return r["k_wear"] / k, r["regime"]

@@ -65,9 +65,10 @@ def register(subparsers) -> None:
     p.add_argument("--vtk-every", type=int, default=None, metavar="K",
                    help="write a .vtu (both bodies, ~1 MB) every K angles plus sweep.pvd "
                         "(default: [sweep] vtk_every, else 10; 1 = every angle; 0 = none)")
-    p.add_argument("--method", choices=("fe", "hertz"), default=None,
-                   help="fe: FE contact solve; hertz: analytic only (default: [sweep] method, "
-                        "else fe)")
+    p.add_argument("--method", choices=("fe", "hertz", "auto"), default=None,
+                   help="fe: FE contact solve; hertz: analytic only; auto: the cheapest of Hertz, "
+                        "FE arc gap, FE exact gap within --tolerance per angle (default: [sweep] "
+                        "method, else fe)")
     p.add_argument("--law", default=None, metavar="NAME",
                    help="override the rise/fall motion law of the scene: "
                         + ", ".join(n for n in LAW_NAMES if n not in ("bezier", "polynomial")))
@@ -190,7 +191,11 @@ def _run(args) -> int:
     print(f"femcam sweep: {res.n_angles} angles ({res.n_chunks_resumed} chunks resumed, "
           f"{res.n_chunks_computed} computed) in {res.timings['total']:.2f} s; "
           f"liftoff {s['n_liftoff']}, undercut {s['n_undercut']}, failed {s['n_failed']}")
-    if res.method == "fe":
+    if o.get("models"):
+        print(f"  models: {o['models']} (tolerance {100 * args.tolerance:g} %); curvature-jump rows "
+              f"{o.get('n_curvature_jump', 0)}, edge contacts {o.get('n_edge_contact', 0)}; traction: "
+              f"{o.get('traction')}")
+    if res.method != "hertz":
         print(f"  {s['n_families']} model families, reuse error <= {100 * s['reuse_error_max']:.3f} % "
               f"at the checked angles (tolerance {100 * args.tolerance:g} %); workers "
               f"{o.get('workers')}" + (f" ({o['workers_reason']})" if o.get("workers_reason") else ""))

@@ -13,7 +13,7 @@
 
 Scene ``[wear]`` keys (checked; see :mod:`femcam.wear.options`): ``K`` (dimensionless; with the
 cam's ``hardness_MPa``) or ``k_mm3_per_N_m``; ``roller_model = "srr"|"inertia"``, ``srr``,
-``J_kg_m2``, ``T_drag_N_m``; ``tip_radius_mm`` (knife-edge); ``cycles``.
+``J_kg_m2``, ``T_drag_N_m``; ``tip_radius_mm`` (deprecated: use [follower] tip_radius_mm); ``cycles``.
 """
 
 from __future__ import annotations
@@ -73,7 +73,7 @@ def register(subparsers) -> None:
                         + ", ".join(LAW_NAMES))
     m.add_argument("--step-deg", type=float, default=0.5, metavar="DEG", help="cam angle step (default 0.5)")
     m.add_argument("--tip-radius-mm", type=float, default=None, metavar="R",
-                   help="knife-edge followers: tip radius in mm (default: scene [wear] tip_radius_mm); "
+                   help="knife-edge followers: tip radius in mm (default: scene [follower] tip_radius_mm); "
                         "a sharp tip has no contact width, so the wear map needs one")
     m.add_argument("--evolve-blocks", type=int, default=None, metavar="K",
                    help="roller followers: also evolve the profile (wear -> geometry -> pressure -> wear) "

@@ -81,7 +81,7 @@ class ModelCache:
             return m
 
     def solve(self, model: ContactModel, F: float, rho: float, mu: float, sliding: int,
-              check: bool = True) -> ContactResult:
+              check: bool = True, Q: float | None = None, rolling: int = 0) -> ContactResult:
         """``model.solve(...)``, remembered for models in this cache.
 
         The family verification solves every angle of a family with its model; the chunks
@@ -102,24 +102,29 @@ class ModelCache:
             +1 or -1.
         check : bool
             Refuse load cases the model does not cover.
+        Q : float, optional
+            Tangential force on the cam (N): Coulomb partial slip (``ContactModel.solve``).
+        rolling : int
+            With ``Q``: rolling direction (0, +1, -1).
 
         Returns
         -------
         femcam.fe.ContactResult
         """
-        key = (float(F), float(rho), float(mu), int(sliding))
+        key = (float(F), float(rho), float(mu), int(sliding), None if Q is None else float(Q), int(rolling))
         with self._lock:
             memo = self._results.get(id(model))
             if memo is not None and key in memo:
                 return memo[key]
-        r = model.solve(F=float(F), rho=float(rho), mu=mu, sliding=sliding, check=check)
+        r = model.solve(F=float(F), rho=float(rho), mu=mu, sliding=sliding, check=check, Q=Q,
+                        rolling=rolling if Q is not None else 0)
         with self._lock:
             if memo is not None and id(model) in self._results:
                 memo[key] = r
         return r
 
     def fresh_p0(self, cp: ContactParams, rho: float, a: float, options: SweepOptions,
-                 F: float) -> float:
+                 F: float, load: tuple = (None, None, 0)) -> float:
         """FE p0 of a model built fresh for one load case (remembered per load case).
 
         Parameters
@@ -130,13 +135,18 @@ class ModelCache:
         options : SweepOptions
         F : float
             Contact force (N).
+        load : tuple
+            ``(sliding, Q, rolling)`` of the load case (:func:`femcam.sweep.realcam.traction_args`);
+            ``sliding`` None: ``cp.sliding``.
 
         Returns
         -------
         float
             p0 (Pa); NaN if the fresh model cannot be built or solved.
         """
-        key = (_key(cp, rho, a, options), F, cp.mu, cp.sliding)
+        sliding, Q, rolling = load
+        sliding = cp.sliding if sliding is None else sliding
+        key = (_key(cp, rho, a, options), F, cp.mu, sliding, Q, rolling)
         with self._lock:
             p0 = self._fresh_p0.get(key)
         if p0 is not None:
@@ -144,7 +154,8 @@ class ModelCache:
         try:
             with self._lock:  # gmsh is not thread-safe
                 fresh = build_model(cp, rho, a, options)
-            p0 = fresh.solve(F=F, rho=rho, mu=cp.mu, sliding=cp.sliding, check=False).p0
+            p0 = fresh.solve(F=F, rho=rho, mu=cp.mu, sliding=sliding, check=False, Q=Q,
+                             rolling=rolling if Q is not None else 0).p0
         except (FemcamError, ValueError, ArithmeticError):
             return math.nan
         with self._lock:
@@ -152,6 +163,24 @@ class ModelCache:
             while len(self._fresh_p0) > 1024:
                 self._fresh_p0.popitem(last=False)
         return p0
+
+    def real_cam(self, key: tuple, build):
+        """A :class:`femcam.fe.choice.RealCam` of the models table (key ``("real_cam", ...)``),
+        cached or built now by ``build()`` (flat-faced sweeps; LRU as the family models)."""
+        with self._lock:
+            m = self._models.get(key)
+            if m is not None:
+                self._models.move_to_end(key)
+                return m
+            t0 = time.perf_counter()
+            m = build()
+            self.stats["built"] += 1
+            self.stats["build_time"] += time.perf_counter() - t0
+            self._models[key] = m
+            while len(self._models) > self.max_models:
+                _, old = self._models.popitem(last=False)
+                self._results.pop(id(old), None)
+            return m
 
     def forget(self, cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions) -> None:
         """Drop the model of references ``(rho_ref, a_ref)`` (m) and its solved cases (the

@@ -47,6 +47,7 @@ from ..errors import FemcamError
 from ..hertz.conformity import sizing_half_width
 from .cache import ModelCache, default_cache
 from .options import TOLERANCE_FLOOR, ContactParams, SweepOptions
+from .realcam import traction_args
 
 __all__ = ["MAX_SCAN", "N_CHECKS", "TOLERANCE_FLOOR", "FamilyRecord", "check_angles",
            "curvature_ratio", "family_spans", "hertz_half_width", "plan_families",
@@ -324,7 +325,7 @@ def _same_case(rho, a, rho_ref, a_ref) -> bool:
 
 def verify_families(F, rho, theta, cp: ContactParams, options: SweepOptions,
                     contact: np.ndarray, n_checks: int = N_CHECKS, *,
-                    cache: ModelCache | None = None):
+                    cache: ModelCache | None = None, traction=None):
     """Plan the families and verify the reuse error against ``options.tolerance``.
 
     Runs in the calling process (deterministically: the result depends only on the angles and
@@ -345,6 +346,9 @@ def verify_families(F, rho, theta, cp: ContactParams, options: SweepOptions,
         Fresh-model checks per family.
     cache : ModelCache, optional
         Where the family models are kept.
+    traction : femcam.sweep.realcam.Traction, optional
+        Per-angle traction of the load cases (default: full sliding in ``cp.sliding``); the
+        chunks solve the same load cases, so they reuse the scanned results.
 
     Returns
     -------
@@ -367,7 +371,8 @@ def verify_families(F, rho, theta, cp: ContactParams, options: SweepOptions,
     done: list[tuple[np.ndarray, FamilyRecord]] = []
     while queue:
         g = queue.pop(0)
-        rec = _verify_group(cache, cp, options, n_checks, F, rho, theta, idx[g], a_all[g], k_all[g])
+        rec = _verify_group(cache, cp, options, n_checks, F, rho, theta, idx[g], a_all[g], k_all[g],
+                            traction)
         if rec.reuse_error <= float(options.tolerance):
             done.append((g, rec))
             continue
@@ -384,7 +389,7 @@ def verify_families(F, rho, theta, cp: ContactParams, options: SweepOptions,
     return fam, refs, records
 
 
-def _verify_group(cache, cp, options, n_checks, F, rho, theta, rows, a, kap) -> FamilyRecord:
+def _verify_group(cache, cp, options, n_checks, F, rho, theta, rows, a, kap, traction) -> FamilyRecord:
     """Build one group's model, scan its load cases, check the worst with fresh models."""
     rho_ref, a_ref = _reference(a, kap, rho[rows], cp.Rr)
     k_ref = cp.Rr / rho_ref if math.isfinite(rho_ref) else 0.0
@@ -398,7 +403,7 @@ def _verify_group(cache, cp, options, n_checks, F, rho, theta, rows, a, kap) -> 
     covered = np.array([model.covers(F[i], rho[i]) for i in rows])
     rec.n_rebuilt = int(np.count_nonzero(~covered))  # solved with models of their own
     cov = np.flatnonzero(covered)
-    e_h, failed = _scan_family(cache, model, cp, rec, rows[cov], a[cov], kap[cov], F, rho)
+    e_h, failed = _scan_family(cache, model, cp, rec, rows[cov], a[cov], kap[cov], F, rho, traction)
     worst = math.inf if failed else 0.0
     t1 = time.perf_counter()
     for j in ([] if failed else check_angles(a[cov], kap[cov], a_ref, k_ref, model.x, n_checks,
@@ -406,7 +411,8 @@ def _verify_group(cache, cp, options, n_checks, F, rho, theta, rows, a, kap) -> 
         jj = int(cov[j])
         i = int(rows[jj])
         err = _reuse_error(cache, model, cp, options, float(F[i]), float(rho[i]), float(a[jj]),
-                           _same_case(float(rho[i]), float(a[jj]), rho_ref, a_ref))
+                           _same_case(float(rho[i]), float(a[jj]), rho_ref, a_ref),
+                           traction_args(traction, i, cp.sliding))
         rec.checks.append((float(np.degrees(theta[i])), float(a[jj] / a_ref), float(kap[jj]), err))
         worst = max(worst, abs(err)) if not math.isnan(err) else worst
     if np.any(np.isfinite(e_h)):
@@ -418,7 +424,7 @@ def _verify_group(cache, cp, options, n_checks, F, rho, theta, rows, a, kap) -> 
     return rec
 
 
-def _scan_family(cache, model, cp, rec, rows, a, kap, F, rho) -> tuple[np.ndarray, bool]:
+def _scan_family(cache, model, cp, rec, rows, a, kap, F, rho, traction=None) -> tuple[np.ndarray, bool]:
     """Solve the family model at (up to MAX_SCAN of) its covered load cases: ``p0 / p0_Hertz - 1``
     per case (NaN where not scanned) and whether a solve failed. The results stay in ``cache``,
     so the chunks computed in this process or in forked workers reuse them."""
@@ -428,7 +434,8 @@ def _scan_family(cache, model, cp, rec, rows, a, kap, F, rho) -> tuple[np.ndarra
     for j in _scan_subset(a, kap, F[rows], rho[rows]):
         i = int(rows[j])
         try:
-            r = cache.solve(model, float(F[i]), float(rho[i]), cp.mu, cp.sliding)
+            sl, Q, roll = traction_args(traction, i, cp.sliding)
+            r = cache.solve(model, float(F[i]), float(rho[i]), cp.mu, sl, Q=Q, rolling=roll)
         except (FemcamError, ValueError, ArithmeticError):
             failed = True
             break
@@ -466,14 +473,16 @@ def _split(g, a, kap) -> list[np.ndarray]:
     return [g[lo], g[~lo]]
 
 
-def _reuse_error(cache, model, cp, options, F, rho, a, same: bool) -> float:
-    """``p0(family model)/p0(fresh model) - 1`` at one load case; ``inf`` if the family model
-    cannot solve it (the family must be split), NaN if the fresh model cannot."""
+def _reuse_error(cache, model, cp, options, F, rho, a, same: bool, load=(None, None, 0)) -> float:
+    """``p0(family model)/p0(fresh model) - 1`` at one load case (``load``: sliding, Q, rolling);
+    ``inf`` if the family model cannot solve it (the family must be split), NaN if the fresh
+    model cannot."""
+    sl, Q, roll = load
     try:
-        r = cache.solve(model, F, rho, cp.mu, cp.sliding)
+        r = cache.solve(model, F, rho, cp.mu, cp.sliding if sl is None else sl, Q=Q, rolling=roll)
     except (FemcamError, ValueError, ArithmeticError):
         return math.inf
     if same:
         return 0.0
-    p0_fresh = cache.fresh_p0(cp, rho, a, options, F)
+    p0_fresh = cache.fresh_p0(cp, rho, a, options, F, load)
     return float(r.p0 / p0_fresh - 1.0) if math.isfinite(p0_fresh) else math.nan

@@ -2,13 +2,17 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from .. import _validate
 from ..errors import InputError
 from ..materials import Material, effective_modulus
+from ..wear.options import follower_tip_radius
 
-METHODS = ("fe", "hertz")
+#: ``fe``: the FE answers every contact angle (arc or exact gap); ``hertz``: analytic only;
+#: ``auto``: the cheapest model within the tolerance (Hertz, FE arc gap, FE exact gap)
+METHODS = ("fe", "hertz", "auto")
 #: smallest accepted ``tolerance`` (relative p0 reuse error); see :mod:`femcam.sweep.families`
 TOLERANCE_FLOOR = 1e-4
 
@@ -20,7 +24,7 @@ class SweepOptions:
     Parameters
     ----------
     method : str
-        ``"fe"`` (default) or ``"hertz"``.
+        ``"fe"`` (default), ``"hertz"`` or ``"auto"`` (:data:`METHODS`).
     a_over_h : float
         FE element size in the contact zone, ``h = a / a_over_h`` (``--mesh-size``), in [2, 400].
     tolerance : float
@@ -80,7 +84,13 @@ class ContactParams:
     plane : str
         ``"strain"`` or ``"stress"``.
     sliding : int
-        +1: friction traction on the cam in +x (scene ``"+x"``), -1: ``"-x"``.
+        +1: friction traction on the cam in +x (scene ``"+x"``), -1: ``"-x"``; the default
+        direction when no per-angle traction is given (:mod:`femcam.sweep.realcam`).
+    kind : str
+        Follower type: ``"roller"``, ``"knife_edge"`` (``Rr`` is the tip radius, the cam the one
+        cut for it) or ``"flat_faced"`` (``Rr`` = inf).
+    face_length : float or None
+        Flat face length (m, ``[follower] face_length_mm``).
     """
 
     Rr: float
@@ -90,6 +100,8 @@ class ContactParams:
     mu: float
     plane: str
     sliding: int = 1
+    kind: str = "roller"
+    face_length: float | None = None
 
     @property
     def E_star(self) -> float:
@@ -98,12 +110,12 @@ class ContactParams:
 
 
 def contact_params(scene) -> ContactParams:
-    """Roller radius, face width, materials, mu, plane and sliding direction of a scene.
+    """Follower radius, face width, materials, mu, plane and sliding direction of a scene.
 
     Parameters
     ----------
     scene : femcam.scene.Scene
-        A roller-follower scene.
+        Roller, knife-edge (with ``[follower] tip_radius_mm``) or flat-faced follower.
 
     Returns
     -------
@@ -112,14 +124,21 @@ def contact_params(scene) -> ContactParams:
     Raises
     ------
     InputError
-        If the follower is not a roller (a knife edge has no contact width; a flat-faced
-        follower has no FE contact model yet).
+        A knife edge without a tip radius (a sharp tip has no contact width), naming the key.
     """
     kind = scene.follower.kind
-    if kind != "roller":
-        raise InputError(f"follower.type = {kind!r}: the contact sweep needs a roller follower "
-                         "(a knife edge has no contact width; a flat-faced follower has no FE "
-                         "contact model yet)")
     sliding = -1 if str(scene.sliding or "+x").strip() == "-x" else 1
-    return ContactParams(float(scene.follower.Rr), float(scene.length), scene.cam, scene.roller,
-                         float(scene.mu), str(scene.plane), sliding)
+    if kind == "flat_faced":
+        R = math.inf
+    elif kind == "knife_edge":
+        tip = follower_tip_radius(scene)
+        if tip is None:
+            raise InputError("follower.type = knife_edge: a sharp tip has no contact width, so the "
+                             "contact stresses are undefined; add the tip radius to the scene: "
+                             "[follower] tip_radius_mm = ... (mm)")
+        R = float(tip)
+    else:
+        R = float(scene.follower.Rr)
+    return ContactParams(R, float(scene.length), scene.cam, scene.roller, float(scene.mu),
+                         str(scene.plane), sliding, kind=kind,
+                         face_length=getattr(scene, "face_length", None))

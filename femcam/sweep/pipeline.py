@@ -43,7 +43,6 @@ from ..hertz.conformity import (
     NEARLY_CONFORMAL_GAP,
     gap_nonparabolicity,
     roller_does_not_fit,
-    shape_factors,
     undercut_message,
 )
 from ..io import vtu_name, write_fe_vtu, write_hertz_vtu
@@ -52,7 +51,9 @@ from .cache import ModelCache, default_cache
 from .extras import fill_extras
 from .families import hertz_half_width
 from .options import ContactParams, SweepOptions, contact_params
-from .result import empty_rows
+from .realcam import Traction, arc_error_estimate, contact_scene, hertz_within_tolerance, traction_args
+from .realrows import exact_solve, fe_fill, fill_choice, flat_edge_rows, flat_rows, hertz_answer, hertz_stress
+from .result import TEXT_COLUMNS, empty_rows
 from .wear import fill_wear
 
 #: result columns that are 0 (not NaN) at lift-off: no contact has zero width and zero pressure
@@ -94,36 +95,8 @@ def _hertz_rows(rows, flags, idx, cp: ContactParams, F, rho, method: str):
     rows["a_hertz"][idx] = hc.a
     rows["p0_hertz"][idx] = hc.p0
     if method == "hertz":
-        k = shape_factors(cp.mu, cp.cam.nu, cp.plane)
-        p0, a = np.asarray(hc.p0), np.asarray(hc.a)
-        rows["vm_max"][idx] = k["von_mises"][0] * p0
-        rows["vm_depth"][idx] = k["von_mises"][1] * a
-        rows["tau1_max"][idx] = k["tau1"][0] * p0
-        rows["tau1_depth"][idx] = k["tau1"][1] * a
-        for name in ("sx_min", "sx_max", "sz_min", "txz_absmax"):
-            rows[name][idx] = k[name] * p0
-
-
-def _fe_fill(rows, i, r: ContactResult):
-    """Copy one :class:`femcam.fe.ContactResult` into row ``i``.
-
-    Maxima are over both bodies (``StressMax.value``, depth ``z`` below that body's surface);
-    surface extremes are on the cam surface of the FE model's stress window.
-    """
-    rows["a_fe"][i] = r.a
-    rows["p0_fe"][i] = r.p0
-    rows["vm_max"][i] = r.von_mises_max.value
-    rows["vm_depth"][i] = r.von_mises_max.z
-    rows["tau1_max"][i] = r.tau1_max.value
-    rows["tau1_depth"][i] = r.tau1_max.z
-    if r.sx.size:
-        rows["sx_min"][i] = r.sx.min()
-        rows["sx_max"][i] = r.sx.max()
-        rows["sz_min"][i] = r.sz.min()
-        rows["txz_absmax"][i] = np.abs(r.txz).max()
-    rows["iterations"][i] = r.iterations
-    rows["residual"][i] = r.residual
-    rows["n_dofs"][i] = r.n_dofs
+        hertz_stress(rows, idx, cp, hc.p0, hc.a)
+        rows["model"][idx] = "hertz"
 
 
 # ---------------------------------------------------------------------------------------------
@@ -155,6 +128,12 @@ class ChunkTask:
         Archard k (m^3/(N m)).
     delay_s : float
         Seconds to sleep after the chunk (>= 0; tests use it to kill a sweep between chunks).
+    jump : ndarray of bool, shape (n,), optional
+        Rows in a curvature jump's straddle span (:func:`femcam.sweep.realcam.jump_angles`).
+    traction : femcam.sweep.realcam.Traction, optional
+        Per-angle traction (None: full sliding in the scene's direction).
+    hertz : ndarray of bool, shape (n,), optional
+        Method ``auto``: rows Hertz answers (:func:`femcam.sweep.realcam.auto_hertz_rows`).
     """
 
     index: int
@@ -168,6 +147,9 @@ class ChunkTask:
     slip: SlipResult | None = None
     wear_k: float = float("nan")
     delay_s: float = 0.0
+    jump: np.ndarray | None = None
+    traction: Traction | None = None
+    hertz: np.ndarray | None = None
 
 
 def analytic_rows(scene, theta) -> tuple[dict, object]:
@@ -183,11 +165,11 @@ def analytic_rows(scene, theta) -> tuple[dict, object]:
     -------
     rows : dict[str, ndarray]
         The table (:func:`femcam.sweep.result.empty_rows`) with ``theta, s, v, a, j, phi, rho,
-        Fc`` (SI) filled.
+        Fc`` (SI) filled (knife-edge: of the cam cut for the tip radius).
     state : femcam.scene.SceneState
     """
     theta = np.asarray(theta, dtype=float)
-    st = scene.analyse(theta)
+    st = contact_scene(scene).analyse(theta)  # knife-edge: the cam cut for the radiused tip
     rows = empty_rows(theta.size)
     rows["theta"][:] = theta
     for name in ("s", "v", "a", "j", "phi", "rho", "Fc"):
@@ -253,26 +235,49 @@ def _run_chunk(task: ChunkTask) -> dict:
         rows["status"][i] = "undercut"
         rows["message"][i] = undercut_message(float(rows["rho"][i]), cp.Rr)
     good = np.flatnonzero(contact & ~nofit)
-    _hertz_rows(rows, flags, good, cp, rows["Fc"], rows["rho"], opts.method)
+    if task.jump is not None:
+        rows["curvature_jump"][:] = task.jump
     rows["fe_time"][:] = 0.0
     rows["build_time"][:] = 0.0
+    _hertz_rows(rows, flags, good, cp, rows["Fc"], rows["rho"], opts.method)
+    if cp.kind == "flat_faced":  # past the face end: an edge contact, never Hertz
+        good = flat_edge_rows(task.scene, cp, rows, good)
     vtk_fe = {}
     if opts.method == "hertz":
         rows["a_fe"][:] = np.nan
         rows["p0_fe"][:] = np.nan
         rows["status"][good] = "ok"
     else:
-        vtk_fe = _fe_rows(task, cp, rows, flags, good, default_cache())
+        fe = _choose_models(task, cp, rows, good)
+        if cp.kind == "flat_faced":
+            vtk_fe = flat_rows(task, cp, rows, flags, fe, default_cache())
+        else:
+            vtk_fe = _fe_rows(task, cp, rows, flags, fe, default_cache())
     fill_wear(rows, task.slip, task.wear_k, opts.method)
     fill_extras(task, rows)  # extra column providers (femcam.sweep.extras), after contact and wear
     _write_vtus(task, cp, rows, vtk_fe)  # last: not part of any timing column
     for i in range(n):
         rows["flags"][i] = ";".join(flags[i])
-    for name in ("status", "flags", "wear_source", "message"):
+    for name in TEXT_COLUMNS:
         rows[name] = np.asarray(rows[name]).astype(str)
     if task.delay_s > 0:
         time.sleep(task.delay_s)
     return rows
+
+
+def _choose_models(task: ChunkTask, cp: ContactParams, rows, good) -> np.ndarray:
+    """The error estimates of rows ``good``; method ``auto``: Hertz answers the rows within the
+    tolerance (not in a curvature jump's span). Returns the rows the FE answers."""
+    e_arc, e_h = arc_error_estimate(task.scene, rows["theta"][good], rows["a_hertz"][good], cp.Rr)
+    rows["est_err_arc"][good] = e_arc / 100.0
+    rows["est_err_hertz"][good] = e_h / 100.0
+    if task.options.method != "auto":
+        return good
+    hz = (task.hertz[good] if task.hertz is not None else
+          hertz_within_tolerance(e_h, task.jump[good] if task.jump is not None else None,
+                                 task.options.tolerance))
+    hertz_answer(rows, good[hz], cp, task.traction)
+    return good[~hz]
 
 
 def _fe_rows(task: ChunkTask, cp: ContactParams, rows, flags, good, cache: ModelCache) -> dict:
@@ -309,9 +314,22 @@ def _fe_angle(task: ChunkTask, cp: ContactParams, rows, flags, i: int,
         a_i = float(hertz_half_width(np.array([F]), np.array([rho]), cp)[0])
         model = cache.model_for(cp, rho, a_i, task.options)
         flags[i].append("rebuilt")
-    r = cache.solve(model, F, rho, cp.mu, cp.sliding, check=not own)
+    sl, Q, roll = traction_args(task.traction, i, cp.sliding)
+    jump = bool(task.jump[i]) if task.jump is not None else False
+    tol_pct = 100.0 * task.options.tolerance
+    res = None
+    if jump or 100.0 * rows["est_err_arc"][i] > tol_pct:  # the exact gap where the choice needs it
+        res = exact_solve(task.scene, cp, model, float(rows["theta"][i]), F, Q=Q, jump=jump,
+                          tol_pct=tol_pct)
+    if res is not None:
+        r = res.result
+        fill_choice(rows, i, res)
+    else:
+        r = cache.solve(model, F, rho, cp.mu, sl, check=not own, Q=Q, rolling=roll)
+        rows["model"][i] = "fe_arc"
     rows["fe_time"][i] = r.timings["contact"] + r.timings.get("recovery", 0.0)
-    _fe_fill(rows, i, r)
+    fe_fill(rows, i, r)
+    rows["Q_over_muFc"][i] = r.Q / (cp.mu * F) if cp.mu > 0 else np.nan
     rows["family"][i] = fid
     if r.outside_hertz and "hertz_large_a" not in flags[i]:
         flags[i].append("hertz_large_a")

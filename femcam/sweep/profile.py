@@ -37,6 +37,10 @@ def worst_surface_profile(table: dict, method: str, cp: ContactParams, families:
     cache : ModelCache, optional
         Where the sweep's models are (default: this process's).
 
+    The FE profile is recomputed with the family's osculating-arc gap and full sliding in the
+    scene's direction (``cp.sliding``): for rows the sweep answered with the exact gap or with
+    the mechanism's partial slip it is the full-sliding, arc-gap companion of that row.
+
     Returns
     -------
     dict

@@ -14,6 +14,15 @@ Per-angle ``status``:
   concave cam (1/rho + 1/Rr <= 0; the pitch curve is undercut or the bodies interfere). No
   contact solution exists, Hertz or FE; every result column is NaN and ``message`` says why;
 * ``"failed"``    -- the FE solve at this angle failed; ``message`` says why, the sweep went on.
+* ``"edge_contact"`` -- flat-faced follower: the contact runs past the end of the face
+  (``[follower] face_length_mm``); not modelled (never Hertz), ``message`` gives the angle range.
+
+Real-cam columns (:mod:`femcam.sweep.realcam`): ``model`` (``hertz``, ``fe_arc``, ``fe_exact``:
+which model answered), ``est_err_arc_pct``/``est_err_hertz_pct`` (estimated p0 error of the
+cheaper models), ``curvature_jump`` (1 inside a curvature jump's straddle span),
+``exact_vs_arc_p0_pct`` (p0 of the arc-gap FE vs the exact-gap FE, jump rows), ``p0_nodal_MPa``
+(largest nodal pressure: near a jump the pressure is not a Hertz ellipse), ``Q_N`` (tangential
+force on the cam along local x), ``Q_over_muFc``, ``stick_width_um``, ``slip_state``.
 
 ``flags`` is a ``;``-separated list of remarks on ``ok`` rows:
 
@@ -70,12 +79,21 @@ COLUMNS: tuple[tuple[str, str, float], ...] = (
     ("v_slip", "v_slip_m_s", 1.0),
     ("V_cam", "V_cam_m_s", 1.0),
     ("wear_depth", "wear_depth_per_rev_nm", 1e9),
+    # FE on the real cam (femcam.sweep.realcam): model choice, curvature jumps, traction
+    ("p0_nodal", "p0_nodal_MPa", 1e-6),
+    ("curvature_jump", "curvature_jump", 1.0),
+    ("exact_vs_arc_p0", "exact_vs_arc_p0_pct", 100.0),
+    ("est_err_hertz", "est_err_hertz_pct", 100.0),
+    ("est_err_arc", "est_err_arc_pct", 100.0),
+    ("Q", "Q_N", 1.0),
+    ("Q_over_muFc", "Q_over_muFc", 1.0),
+    ("stick_width", "stick_width_um", 1e6),
     ("fe_time", "fe_time_ms", 1e3),
     ("build_time", "build_time_ms", 1e3),
 )
 
 #: string columns (in the CSV with ``,``, ``#``, quotes and newlines replaced, see femcam.io)
-TEXT_COLUMNS = ("status", "flags", "wear_source", "message")
+TEXT_COLUMNS = ("status", "flags", "wear_source", "message", "model", "slip_state")
 
 #: numeric diagnostics stored in the NPZ only
 EXTRA_COLUMNS = ("iterations", "residual", "n_dofs", "family")
@@ -83,7 +101,7 @@ EXTRA_COLUMNS = ("iterations", "residual", "n_dofs", "family")
 NUMERIC = tuple(c[0] for c in COLUMNS) + EXTRA_COLUMNS
 #: numeric columns that are counts or ids: int64 in the NPZ (-1 where undefined)
 INTEGER_COLUMNS = ("iterations", "n_dofs", "family")
-STATUSES = ("ok", "liftoff", "undercut", "failed")
+STATUSES = ("ok", "liftoff", "undercut", "failed", "edge_contact")
 
 #: wall-clock columns (differ from run to run; excluded from equality checks)
 WALL_CLOCK = ("fe_time", "build_time")

@@ -35,6 +35,7 @@ from .options import SweepOptions, contact_params
 from .parallel import AUTO_VTU_S, Progress, auto_workers, run_tasks
 from .pipeline import ChunkTask, analytic_rows, contact_mask, run_chunk
 from .profile import worst_surface_profile
+from .realcam import auto_hertz_rows, jump_angles, real_cam_summary, scene_traction
 from .result import (
     COLUMNS,
     INTEGER_COLUMNS,
@@ -118,6 +119,9 @@ class _Run:
     overwrite: bool = False
     animate: bool = False
     lock: DirLock | None = None
+    jump: np.ndarray | None = None
+    traction: object = None
+    hertz: np.ndarray | None = None
 
 
 def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
@@ -135,7 +139,9 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
     angles : array_like, optional
         Cam angles (rad); default 0, 1, ..., 359 degrees.
     method : str
-        ``"fe"`` (FE contact solve, default) or ``"hertz"`` (analytic only, fast).
+        ``"fe"`` (FE contact solve, default), ``"hertz"`` (analytic only, fast) or ``"auto"``
+        (the cheapest of Hertz, FE arc gap, FE exact gap within ``tolerance`` per angle;
+        :mod:`femcam.sweep.realcam`).
     a_over_h : float
         FE element size in the contact zone ``h = a / a_over_h``.
     tolerance : float
@@ -239,7 +245,8 @@ def _sweep(run: _Run, scheduler, client, progress, plots, command, t_start) -> S
                "n_angles": int(run.angles.size), "n_families": len(run.records)}
     if run.workers == "auto":
         options.update(workers_requested="auto", workers_reason=workers_note)
-    fe = run.opts.method == "fe"
+    options.update(real_cam_summary(table, run.traction))
+    fe = run.opts.method != "hertz"
     prov = provenance(scene_path=run.scene_path if run.scene_path is not None else src_path,
                       scene_hash=run.shash, command=command, options=options,
                       families=[r.to_dict() for r in run.records] if fe else None,
@@ -275,17 +282,20 @@ def _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume
     if resume and out is None:
         raise _validate.fail("resume", resume, "", "needs an output directory (out)")
     delay = _validate.nonnegative("chunk_delay_s", chunk_delay_s, "s")
+    angles, jump = jump_angles(scene, angles)  # curvature jumps resolved (femcam.sweep.realcam)
     n = angles.size
     bounds = [(i, min(i + opts.chunk_size, n)) for i in range(0, n, opts.chunk_size)]
     return _Run(scene=scene, scene_path=scene_path, angles=angles, opts=opts, workers=workers,
                 out=Path(out) if out is not None else None, resume=bool(resume), bounds=bounds,
-                delay_s=delay)
+                delay_s=delay, jump=jump)
 
 
 def _analytic(run: _Run) -> None:
     """The analytic chain for all angles (cheap, vectorised): contact mask and slip."""
     run.rows0, st0 = analytic_rows(run.scene, run.angles)
     run.contact = contact_mask(run.rows0, st0)
+    if run.opts.method != "hertz":
+        run.traction = scene_traction(run.scene, run.angles)
     run.rows0 = {k: run.rows0[k] for k in ("Fc", "rho")}  # all the planning needs (memory)
     run.wear = wear_setup(run.scene, run.angles, st0)
 
@@ -320,8 +330,11 @@ def _plan(run: _Run) -> None:
     """Model families verified against the tolerance (FE only); a resume reuses the stored plan."""
     n = run.angles.size
     run.family, run.records = np.full(n, -1), []
-    if run.opts.method != "fe":
+    if run.opts.method == "hertz":
         return
+    cp = contact_params(run.scene)
+    run.hertz = auto_hertz_rows(run.scene, cp, run.opts, run.angles, run.rows0["Fc"], run.rows0["rho"],
+                                run.contact, run.jump)
     plan = run.store.load_plan() if (run.store is not None and run.resume) else None
     if plan is not None and len(plan.get("family", ())) == n:
         run.family = np.asarray(plan["family"], dtype=int)
@@ -329,10 +342,12 @@ def _plan(run: _Run) -> None:
                                        "checks": [tuple(c) for c in r["checks"]]})
                        for r in plan["records"]]
         return
-    cp = contact_params(run.scene)
-    fit = run.contact & ~roller_does_not_fit(run.rows0["rho"], cp.Rr)
+    if cp.kind == "flat_faced":  # binned real-cam models (femcam.sweep.realrows), no families
+        return
+    fit = run.contact & ~roller_does_not_fit(run.rows0["rho"], cp.Rr) & ~run.hertz
     run.family, _, run.records = verify_families(run.rows0["Fc"], run.rows0["rho"], run.angles, cp,
-                                                 run.opts, fit, cache=default_cache())
+                                                 run.opts, fit, cache=default_cache(),
+                                                 traction=run.traction)
     run.verified_here = True
     if run.store is not None:
         run.store.save_plan({"family": run.family.tolist(),
@@ -351,7 +366,9 @@ def _tasks(run: _Run) -> tuple[list[ChunkTask], list[int]]:
         sub = {int(f): refs[int(f)] for f in np.unique(fam) if f >= 0}
         tasks.append(ChunkTask(index=c, scene=run.scene, theta=run.angles[a:b], options=run.opts,
                                family=fam, refs=sub, vtk_dir=vtk_dir, vtk_mask=run.vtk_mask[a:b],
-                               slip=run.wear.chunk(a, b), wear_k=run.wear.k, delay_s=run.delay_s))
+                               slip=run.wear.chunk(a, b), wear_k=run.wear.k, delay_s=run.delay_s,
+                               jump=run.jump[a:b], hertz=None if run.hertz is None else run.hertz[a:b],
+                               traction=run.traction.chunk(a, b) if run.traction is not None else None))
         task_chunk.append(c)
     return tasks, task_chunk
 
@@ -375,7 +392,7 @@ def _choose_workers(run: _Run, tasks, task_chunk, scheduler, client) -> tuple[in
                                               else 2e-3 * (opts.a_over_h / 10.0) ** 2)
     t_build = float(np.mean(tb)) if tb else 0.5 * (opts.a_over_h / 10.0) ** 2
     n_vtu = int(np.count_nonzero(todo & run.vtk_mask & run.contact))
-    t_vtu = n_vtu * AUTO_VTU_S * ((opts.a_over_h / 10.0) ** 2 if opts.method == "fe" else 0.1)
+    t_vtu = n_vtu * AUTO_VTU_S * ((opts.a_over_h / 10.0) ** 2 if opts.method != "hertz" else 0.1)
     return auto_workers(len(tasks), n_solves, t_solve, len(records), t_build, t_other=t_vtu)
 
 
@@ -464,7 +481,8 @@ def _with_plot_data(result: SweepResult, run: _Run) -> SweepResult:
     cp = contact_params(run.scene)
     profile = None
     if np.any(result.ok):
-        profile = worst_surface_profile(result.table, result.method, cp, result.families, run.opts,
+        fe = "hertz" if (result.method == "hertz" or cp.kind == "flat_faced") else "fe"
+        profile = worst_surface_profile(result.table, fe, cp, result.families, run.opts,
                                         default_cache())
     return replace(result, surface_profile=profile,
                    hertz_factors=shape_factors(cp.mu, cp.cam.nu, cp.plane))

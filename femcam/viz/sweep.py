@@ -45,7 +45,7 @@ def plot_p0(result, path) -> str:
     path written (str).
     """
     plt, t, deg = _table(result)
-    fe = result.method == "fe"
+    fe = result.method != "hertz"
     fig, axs = plt.subplots(2 if fe else 1, 1, figsize=(7, 5 if fe else 3.4), sharex=True,
                             squeeze=False, gridspec_kw={"height_ratios": [2.2, 1] if fe else [1]})
     ax = axs[0, 0]
@@ -78,7 +78,7 @@ def plot_maxima(result, path) -> str:
     plt, t, deg = _table(result)
     fig, ax = plt.subplots(figsize=(7, 3.6))
     k = result.hertz_factors
-    if result.method == "fe":
+    if result.method != "hertz":
         ax.plot(deg, t["vm_max"] / 1e6, ".", ms=3, color="C3", label="von Mises max (FE)")
         ax.plot(deg, t["tau1_max"] / 1e6, ".", ms=3, color="C2", label="tau1 max (FE)")
     if k is not None:
@@ -183,6 +183,53 @@ def plot_surface_worst(profile: dict, path) -> str:
     return _save(fig, Path(path))
 
 
+def _jump_clusters(deg):
+    """Row groups of the flagged angles ``deg`` (deg), one per curvature jump (gaps > 1 deg
+    separate them; a jump at 0 deg joins its rows near 360 deg, shifted by -360)."""
+    order = np.argsort(deg)
+    x = deg[order]
+    cuts = np.flatnonzero(np.diff(x) > 1.0) + 1
+    groups = [(order[g], x[g]) for g in np.split(np.arange(x.size), cuts)]
+    if len(groups) > 1 and groups[0][1][0] < 1.0 and groups[-1][1][-1] > 359.0:
+        last = groups.pop()
+        groups[0] = (np.concatenate([last[0], groups[0][0]]), np.concatenate([last[1] - 360.0, groups[0][1]]))
+    return groups
+
+
+def plot_junction_p0(result, path, reference=None) -> str:
+    """Peak pressure across each curvature jump of a sweep (rows ``curvature_jump``, one panel
+    per jump): Hertz (osculating arcs, jumps), the FE with the osculating-arc gap and with the
+    exact gap (largest nodal pressure; the arc FE's p0 from ``exact_vs_arc_p0``), optionally a
+    reference.
+
+    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG),
+    ``reference`` (optional ``(theta_deg, p0_Pa)`` arrays, e.g. an independent half-space solve).
+    Returns the path written (str).
+    """
+    plt, t, deg = _table(result)
+    j = np.flatnonzero((t["curvature_jump"] == 1) & (t["status"] == "ok"))
+    groups = _jump_clusters(deg[j])[:4]
+    fig, axs = plt.subplots(1, len(groups), figsize=(3.2 * len(groups) + 1.5, 3.8), squeeze=False)
+    for ax, (rows, x) in zip(axs[0], groups, strict=True):
+        i = j[rows]
+        ex = t["p0_nodal"][i]
+        ax.plot(x, t["p0_hertz"][i] / 1e6, "-", color="C0", label="Hertz (osculating arcs)")
+        ax.plot(x, ex * (1.0 + t["exact_vs_arc_p0"][i]) / 1e6, "s", ms=3, color="C1", label="FE, arc gap")
+        ax.plot(x, ex / 1e6, "o-", ms=3, lw=1, color="C3", label="FE, exact gap (sweep)")
+        if reference is not None:
+            rd = np.asarray(reference[0])
+            k = (rd >= x.min() - 1e-9) & (rd <= x.max() + 1e-9)
+            ax.plot(rd[k], np.asarray(reference[1])[k] / 1e6, "k+", ms=8,
+                    label="half-space reference, exact gap")
+        ax.set_xlabel("cam angle theta (deg)")
+        ax.grid(alpha=0.3)
+    axs[0, 0].set_ylabel("peak pressure (MPa)")
+    axs[0, 0].legend(loc="best", fontsize=7)
+    fig.suptitle("Peak pressure across the curvature jumps")
+    fig.tight_layout()
+    return _save(fig, Path(path))
+
+
 def plot_sweep(result, out) -> dict[str, str]:
     """All sweep plots into ``out/plots``.
 
@@ -206,6 +253,8 @@ def plot_sweep(result, out) -> dict[str, str]:
              "plot_svaj": plot_svaj_loads(r, d / "svaj_loads.png")}
     if np.any(np.isfinite(result.table["wear_depth"])):
         paths["plot_wear"] = plot_wear(r, d / "wear_vs_angle.png")
+    if "curvature_jump" in result.table and np.any(result.table["curvature_jump"] == 1):
+        paths["plot_junction"] = plot_junction_p0(r, d / "p0_curvature_jumps.png")
     if result.surface_profile is not None and "x_hertz" in result.surface_profile:
         paths["plot_surface"] = plot_surface_worst(result.surface_profile,
                                                    d / "surface_stress_worst.png")

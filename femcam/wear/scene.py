@@ -1,10 +1,10 @@
 """The Archard wear map of a scene: kinematics, contact pressure and slip put together.
 
-Knife-edge followers need a tip radius (``tip_radius`` in m, or the scene's ``[wear]
-tip_radius_mm``): the kinematics, pressure angle, contact force and cam curvature are then
-those of the cam cut for the radiused tip (a roller of that radius that does not turn), the
-pressure is Hertz of the cam against the tip radius (Johnson 1985 §4.3), and the slip is
-:func:`femcam.wear.slip.radiused_tip`.
+Knife-edge followers need a tip radius (``tip_radius`` in m, or the scene's ``[follower]
+tip_radius_mm``; ``[wear] tip_radius_mm`` is a deprecated alias): the kinematics, pressure
+angle, contact force and cam curvature are then those of the cam cut for the radiused tip (a
+roller of that radius that does not turn), the pressure is Hertz of the cam against the tip
+radius (Johnson 1985 §4.3), and the slip is :func:`femcam.wear.slip.radiused_tip`.
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ from ..hertz import LineContact
 from ..profile import KnifeEdgeFollower, RollerFollower
 from .coating import coating_wear
 from .map import WearMap, wear_map
-from .options import slip_kwargs, wear_coefficient_info, wear_options
+from .options import follower_tip_radius, slip_kwargs, wear_coefficient_info, wear_options
 from .slip import SlipResult, follower_slip
 
 
@@ -51,7 +51,7 @@ def tip_scene(scene, tip_radius: float | None):
         return scene
     if tip_radius is None:
         raise InputError("follower type = knife_edge: a sharp tip has no contact width, so the contact "
-                         "pressure and the wear depth are undefined; give the tip radius: scene [wear] "
+                         "pressure and the wear depth are undefined; give the tip radius: scene [follower] "
                          "tip_radius_mm (mm) or --tip-radius-mm (mm)")
     f = scene.follower
     return dataclasses.replace(scene, follower=RollerFollower(Rb=f.Rb, Rr=tip_radius, e=f.e))
@@ -64,8 +64,9 @@ def scene_tip_radius(scene, tip_radius: float | None = None) -> float | None:
     ----------
     scene : femcam.scene.Scene
     tip_radius : float, optional
-        Tip radius (m), checked > 0 for a knife edge; default the scene's ``[wear]
-        tip_radius_mm`` (converted to m by :func:`femcam.wear.options.wear_options`).
+        Tip radius (m), checked > 0 for a knife edge; default the scene's ``[follower]
+        tip_radius_mm`` (:func:`femcam.wear.options.follower_tip_radius`, which also takes the
+        deprecated ``[wear] tip_radius_mm`` with a warning).
 
     Returns
     -------
@@ -73,7 +74,7 @@ def scene_tip_radius(scene, tip_radius: float | None = None) -> float | None:
         m.
     """
     if tip_radius is None:
-        return wear_options(scene).get("tip_radius_mm")
+        return follower_tip_radius(scene)
     if isinstance(scene.follower, KnifeEdgeFollower):
         return _validate.positive("tip radius", tip_radius, "m")
     return tip_radius
@@ -91,7 +92,7 @@ def scene_wear(scene, theta, *, cycles: float = 1e6, tip_radius: float | None = 
     cycles : float
         Number of cam revolutions.
     tip_radius : float, optional
-        Knife-edge tip radius (m); default the scene's ``[wear] tip_radius_mm``.
+        Knife-edge tip radius (m); default the scene's ``[follower] tip_radius_mm``.
     fe : femcam.sweep.SweepResult, optional
         An FE sweep of ``tip_scene(scene, tip)`` at ``theta``: its ``a_fe``/``p0_fe`` are the
         pressure (angles whose FE solve failed are skipped with a warning). Default: Hertz.

@@ -1,0 +1,200 @@
+"""The real-cam columns of a chunk's rows: the model that answered, the exact-gap solve where
+the choice needs it, the traction, and the flat-faced sweep (:mod:`femcam.sweep.realcam`).
+
+The roller and knife-edge rows keep the family models of :mod:`femcam.sweep.families` (arc gap,
+traction from the mechanism); a row whose arc-gap error estimate exceeds the tolerance, or that
+lies in a curvature jump's straddle span, is solved again with the exact gap by
+:func:`femcam.fe.choice.solve_angle` on the same model. Flat-faced rows are answered by
+:func:`femcam.fe.choice.solve_angle` (the cheapest model within the tolerance) on models binned
+by half-width and cam radius.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..errors import PhysicsError
+from ..fe import ContactResult, SolverOptions
+from ..fe.choice import RealCam, build_real_cam, solve_angle
+from ..fe.followers import check_face
+from ..hertz.conformity import shape_factors
+from ..mesh import MeshOptions
+from ..profile import KnifeEdgeFollower, RollerFollower
+from .realcam import traction_args
+
+#: geometric bin ratio (half-width and cam radius) of the flat-faced models
+FLAT_BIN_RATIO = 1.25
+
+
+def fe_fill(rows, i, r: ContactResult):
+    """Copy one :class:`femcam.fe.ContactResult` into row ``i``.
+
+    Maxima are over both bodies (``StressMax.value``, depth ``z`` below that body's surface);
+    surface extremes are on the cam surface of the FE model's stress window.
+    """
+    rows["a_fe"][i] = r.a
+    rows["p0_fe"][i] = r.p0
+    rows["vm_max"][i] = r.von_mises_max.value
+    rows["vm_depth"][i] = r.von_mises_max.z
+    rows["tau1_max"][i] = r.tau1_max.value
+    rows["tau1_depth"][i] = r.tau1_max.z
+    if r.sx.size:
+        rows["sx_min"][i] = r.sx.min()
+        rows["sx_max"][i] = r.sx.max()
+        rows["sz_min"][i] = r.sz.min()
+        rows["txz_absmax"][i] = np.abs(r.txz).max()
+    rows["iterations"][i] = r.iterations
+    rows["residual"][i] = r.residual
+    rows["n_dofs"][i] = r.n_dofs
+    rows["p0_nodal"][i] = r.p0_nodal
+    rows["Q"][i] = r.Q
+    rows["stick_width"][i] = r.stick_width
+    rows["slip_state"][i] = r.slip_state
+
+
+def hertz_stress(rows, idx, cp, p0, a) -> None:
+    """Stress maxima of rows ``idx`` from the Hertz shape factors (p0, a in Pa, m)."""
+    k = shape_factors(cp.mu, cp.cam.nu, cp.plane)
+    p0, a = np.asarray(p0, float), np.asarray(a, float)
+    rows["vm_max"][idx] = k["von_mises"][0] * p0
+    rows["vm_depth"][idx] = k["von_mises"][1] * a
+    rows["tau1_max"][idx] = k["tau1"][0] * p0
+    rows["tau1_depth"][idx] = k["tau1"][1] * a
+    for name in ("sx_min", "sx_max", "sz_min", "txz_absmax"):
+        rows[name][idx] = k[name] * p0
+
+
+def fill_choice(rows, i, res) -> None:
+    """The model-choice columns of row ``i`` from a :class:`femcam.fe.choice.AngleResult`."""
+    rows["model"][i] = res.model
+    rows["est_err_arc"][i] = res.est_err_arc_pct / 100.0
+    rows["est_err_hertz"][i] = res.est_err_hertz_pct / 100.0
+    rows["exact_vs_arc_p0"][i] = res.exact_vs_arc_p0_pct / 100.0
+    rows["Q"][i] = res.Q
+    rows["Q_over_muFc"][i] = res.Q_over_muFc
+    rows["stick_width"][i] = res.stick_width
+    rows["slip_state"][i] = res.slip_state
+
+
+def family_real_cam(scene, cp, model) -> RealCam:
+    """A :class:`femcam.fe.choice.RealCam` around a family model (roller or knife-edge: the
+    family's ``Rr`` is the roller or the tip radius)."""
+    tip = cp.Rr if isinstance(scene.follower, KnifeEdgeFollower) else None
+    return RealCam(program=scene.program, follower=scene.follower, model=model, tip_radius=tip,
+                   face_length=None, swapped=False, E_star=cp.E_star)
+
+
+def exact_solve(scene, cp, model, theta, F, *, Q, jump: bool, tol_pct: float):
+    """The exact-gap answer of one roller or knife-edge row on its family model, or None when
+    the exact-gap estimate of :func:`femcam.fe.choice.solve_angle` finds the arc gap within
+    ``tol_pct`` after all (the caller then solves the arc gap). Curvature-jump rows solve both
+    gaps (``exact_vs_arc_p0_pct``). ``Q``: the roller's tangential force (N) or None for full
+    sliding (knife-edge: direction from the sliding velocity)."""
+    if isinstance(scene.follower, RollerFollower) and Q is None:  # [contact] sliding override
+        Q = cp.sliding * cp.mu * F
+    res = solve_angle(family_real_cam(scene, cp, model), theta, F, mu=cp.mu, Q=Q,
+                      curvature_jump=jump, tol_pct=tol_pct, force_exact=jump)
+    return res if res.model == "fe_exact" else None
+
+
+def hertz_answer(rows, idx, cp, traction) -> None:
+    """Rows ``idx`` answered by Hertz (method ``auto``, estimate within the tolerance): stress
+    maxima from the shape factors, traction from the closed forms (Carter / Cattaneo stick
+    width ``2 a sqrt(1 - |Q|/(mu F))``, Johnson 1985 §7.1, §8.2; full sliding: ``Q = s mu F``)."""
+    idx = np.asarray(idx, int)
+    if idx.size == 0:
+        return
+    hertz_stress(rows, idx, cp, rows["p0_hertz"][idx], rows["a_hertz"][idx])
+    for i in idx:
+        F, a = float(rows["Fc"][i]), float(rows["a_hertz"][i])
+        sl, Q, _ = traction_args(traction, int(i), cp.sliding)
+        if Q is None:
+            Q, f = sl * cp.mu * F, 1.0
+        else:
+            f = abs(Q) / (cp.mu * F) if cp.mu > 0 else (math.inf if Q else 0.0)
+            Q = math.copysign(min(abs(Q), cp.mu * F), Q)
+        rows["Q"][i] = Q
+        rows["Q_over_muFc"][i] = Q / (cp.mu * F) if cp.mu > 0 else np.nan
+        rows["stick_width"][i] = 2 * a * math.sqrt(1 - f) if f < 1 else 0.0
+        rows["slip_state"][i] = "none" if Q == 0 else ("sliding" if f >= 1 else "partial slip")
+        rows["model"][i] = "hertz"
+        rows["p0_nodal"][i] = np.nan
+        rows["status"][i] = "ok"
+
+
+def flat_edge_rows(scene, cp, rows, good) -> np.ndarray:
+    """Flat-faced rows of ``good`` whose contact runs past the face end: status
+    ``edge_contact`` with the angle ranges of this chunk (never Hertz); returns the others."""
+    good = np.asarray(good, int)
+    if cp.face_length is None or good.size == 0:
+        return good
+    th, a = rows["theta"][good], rows["a_hertz"][good]
+    off = np.abs(scene.program.derivatives(th).s1 - scene.follower.e) + a
+    edge = off > 0.5 * cp.face_length
+    if np.any(edge):
+        try:
+            check_face(scene.program, scene.follower, cp.face_length, th, a)
+        except PhysicsError as exc:
+            rows["message"][good[edge]] = str(exc)
+        rows["status"][good[edge]] = "edge_contact"
+        for name in ("a_hertz", "p0_hertz"):
+            rows[name][good[edge]] = np.nan
+    return good[~edge]
+
+
+def _flat_model(cache, scene, cp, options, a: float, rho: float) -> RealCam:
+    """The flat-faced model of the bin of ``(a, rho)``: references at the bin's geometric centre
+    (so the model depends on the angle only, not on the chunking)."""
+    la = math.floor(math.log(a) / math.log(FLAT_BIN_RATIO))
+    lr = math.floor(math.log(rho) / math.log(FLAT_BIN_RATIO))
+    a_ref, rho_ref = FLAT_BIN_RATIO ** (la + 0.5), FLAT_BIN_RATIO ** (lr + 0.5)
+    F_ref = a_ref ** 2 * math.pi * cp.E_star * cp.length / (4 * rho_ref)
+    key = ("real_cam", "flat_faced", repr(cp.cam), repr(cp.roller), cp.length, cp.plane, la, lr,
+           options.a_over_h)
+    # face_length None: the edge check is done before (flat_edge_rows) and the FE answers
+    return cache.real_cam(key, lambda: build_real_cam(
+        program=scene.program, follower=scene.follower, cam=cp.cam, roller=cp.roller,
+        length=cp.length, plane=cp.plane, F_ref=F_ref, rho_ref=rho_ref,
+        face_length=None, mesh=MeshOptions(a_over_h=options.a_over_h),
+        solver=SolverOptions()))
+
+
+def flat_rows(task, cp, rows, flags, good, cache) -> dict:
+    """Flat-faced rows ``good``: :func:`femcam.fe.choice.solve_angle` per angle; returns
+    ``{row: ContactResult}`` of the FE-answered rows that get a VTU."""
+    vtk = {}
+    tol_pct = 100.0 * task.options.tolerance
+    jump = task.jump if task.jump is not None else np.zeros(rows["theta"].size, bool)
+    for i in good:
+        F, rho, th = float(rows["Fc"][i]), float(rows["rho"][i]), float(rows["theta"][i])
+        a = math.sqrt(4 * F * rho / (cp.length * math.pi * cp.E_star))
+        b0 = cache.stats["build_time"]
+        try:
+            rc = _flat_model(cache, task.scene, cp, task.options, a, rho)
+            res = solve_angle(rc, th, F, mu=cp.mu, curvature_jump=bool(jump[i]), tol_pct=tol_pct)
+        except PhysicsError as exc:  # a cusp or undercut inside the contact zone, with the angle
+            rows["status"][i] = "undercut"
+            rows["message"][i] = str(exc)
+            continue
+        finally:
+            rows["build_time"][i] = cache.stats["build_time"] - b0
+        r = res.result
+        if r is None:
+            hertz_stress(rows, [i], cp, res.p0_hertz, rows["a_hertz"][i])
+            rows["fe_time"][i] = 0.0
+        else:
+            fe_fill(rows, i, r)
+            rows["fe_time"][i] = r.timings.get("contact", 0.0) + r.timings.get("recovery", 0.0)
+            if task.vtk_mask is not None and task.vtk_mask[i]:
+                vtk[int(i)] = r
+        fill_choice(rows, i, res)
+        rows["status"][i] = "ok" if (r is None or r.converged) else "failed"
+        if r is not None and not r.converged:
+            rows["message"][i] = r.message or "FE contact solve did not converge"
+    ok = (rows["status"] == "ok") & np.isfinite(rows["p0_fe"])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        rows["err_a"][:] = np.where(ok, rows["a_fe"] / rows["a_hertz"] - 1.0, np.nan)
+        rows["err_p0"][:] = np.where(ok, rows["p0_fe"] / rows["p0_hertz"] - 1.0, np.nan)
+    return vtk
