@@ -226,6 +226,7 @@ def test_family_reuse_error_is_verified_and_reported(scene, fe_sample):
     np.testing.assert_allclose(r["p0_fe"][i] / p0_fresh - 1, err, rtol=0, atol=MESH_NOISE)
 
 
+@pytest.mark.slow  # several seconds; the default suite stays under 90 s
 def test_liftoff_rows_do_not_crash(scene):
     # weak preload, triple speed: the follower leaves the cam near the nose
     sc = dataclasses.replace(scene, omega=3 * scene.omega,
@@ -304,6 +305,7 @@ def test_undercut_and_nearly_conformal_rows(scene, monkeypatch):
     assert list(r.status[[0, 3]]) == ["ok", "ok"] and r["flags"][0] == ""
 
 
+@pytest.mark.slow  # several seconds; the default suite stays under 90 s
 def test_rebuilt_flag_uses_a_model_of_its_own(scene, monkeypatch):
     real = ContactModel.covers
     th = np.radians([40.0, 50.0, 60.0])
@@ -327,6 +329,7 @@ def test_rebuilt_flag_uses_a_model_of_its_own(scene, monkeypatch):
                                rtol=MESH_NOISE)
 
 
+@pytest.mark.slow  # several seconds; the default suite stays under 90 s
 def test_tight_tolerance_gives_more_families_and_holds(scene):
     th = np.radians(np.arange(0.0, 100.0, 12.5))  # the rise: a varies by ~40 %
     scene = dataclasses.replace(scene, sliding="+x")  # full sliding, as the fresh reference

@@ -49,6 +49,7 @@ def serial():
     return th, sweep(STUDY, angles=th, chunk_size=4).table
 
 
+@pytest.mark.slow  # several seconds; the default suite stays under 90 s
 def test_process_pool_equals_serial(serial, tmp_path):
     th, ref = serial
     # the usual path: families verified in this process, forked workers inherit the models
@@ -138,6 +139,7 @@ def test_killed_subprocess_resumes_in_process(tmp_path):
     assert_same(npz, {k: v for k, v in ref.table.items() if k in npz})
 
 
+@pytest.mark.slow  # several seconds; the default suite stays under 90 s
 def test_pool_workers_exit_when_the_sweep_is_killed(tmp_path):
     """SIGKILL the parent of a 2-process pool: its workers must not stay orphaned. They hold the
     parent's stdout, so the pipe reaches EOF (communicate returns) only once every worker has

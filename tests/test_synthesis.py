@@ -395,6 +395,7 @@ def test_format_table_csv_and_plot_with_failed_row(study_rows, tmp_path):
 
 
 # ----------------------------------------------------------------------------- CLI options
+@pytest.mark.slow  # several seconds; the default suite stays under 90 s
 def test_cli_study_writes_md_csv_png(tmp_path):
     from femcam.cli import main
 
