@@ -207,3 +207,21 @@ def test_tip_radius_key_and_deprecated_alias():
     with warnings.catch_warnings(), pytest.raises(InputError, match="differ"):
         warnings.simplefilter("ignore", FutureWarning)
         follower_tip_radius(dataclasses.replace(sc, wear={"tip_radius_mm": 1.5}))
+
+
+def test_method_auto_writes_the_hertz_vtu_of_hertz_rows(tmp_path):
+    """--method auto with a VTU at every angle: the rows Hertz answers get the analytic Hertz
+    field, so the series is complete (the end-of-run check stays strict); the VTU's peak
+    pressure is Hertz p0 written out (Johnson 1985 eq. 4.45) at the row's Fc and rho."""
+    from femcam.cli import main
+
+    out = tmp_path / "auto"
+    assert main(["sweep", str(EX / "seed002_study_model.toml"), "--out", str(out), "--method", "auto",
+                 "--angles-deg", "0:360:30", "--vtk-every", "1", "--no-plots", "--workers", "1"]) == 0
+    assert len(list((out / "vtk").glob("*.vtu"))) == 12
+    r = np.load(out / "sweep.npz", allow_pickle=False)
+    i = int(np.flatnonzero(r["model"] == "hertz")[0])
+    meshio = pytest.importorskip("meshio")
+    m = meshio.read(out / "vtk" / f"angle_{np.degrees(r['theta'][i]):08.3f}deg.vtu")
+    p0 = hertz_p0(float(r["Fc"][i]), 0.010, 1 / (1 / float(r["rho"][i]) + 1 / 0.010))  # face 10 mm, Rr 10 mm
+    assert m.point_data["contact_pressure_Pa"].max() == pytest.approx(p0, rel=1e-9)
