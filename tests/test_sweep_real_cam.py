@@ -225,3 +225,47 @@ def test_method_auto_writes_the_hertz_vtu_of_hertz_rows(tmp_path):
     m = meshio.read(out / "vtk" / f"angle_{np.degrees(r['theta'][i]):08.3f}deg.vtu")
     p0 = hertz_p0(float(r["Fc"][i]), 0.010, 1 / (1 / float(r["rho"][i]) + 1 / 0.010))  # face 10 mm, Rr 10 mm
     assert m.point_data["contact_pressure_Pa"].max() == pytest.approx(p0, rel=1e-9)
+
+
+def test_worst_profile_is_the_rows_own_solve_with_its_traction():
+    """The worst-angle profile is solved with the row's gap and the mechanism's traction: its FE
+    surface sx maximum is the row's sx_max (the same solve: 1e-9), the title states the traction,
+    and for |Q| << mu Fc the Hertz curve is the frictionless one, sx = -p0 sqrt(1 - x^2/a^2)
+    (Johnson 1985 eq. 4.45), labelled so."""
+    from femcam.sweep.options import SweepOptions, contact_params
+    from femcam.sweep.profile import worst_surface_profile
+
+    sc = load_scene(EX / "seed002_study_model.toml")
+    r = sweep(sc, angles=np.radians([180.0, 210.0, 240.0]), workers=1)
+    i = r.worst_index("p0_fe")
+    assert r["slip_state"][i] == "stick" and abs(r["Q_over_muFc"][i]) < 1e-3
+    prof = worst_surface_profile(r.table, "fe", contact_params(sc), r.families, SweepOptions(), scene=sc)
+    assert prof["sx_fe"].max() == pytest.approx(r["sx_max"][i], rel=1e-9)
+    assert "stick" in prof["traction"] and "Q/(mu Fc)" in prof["traction"]
+    assert "frictionless" in prof["hertz_label"]
+    x, a = prof["x_hertz"], prof["a_hertz"]
+    p0 = hertz_p0(r["Fc"][i], 0.010, 1 / (1 / r["rho"][i] + 1 / 0.010))
+    p = p0 * np.sqrt(np.clip(1 - (x / a) ** 2, 0, None))
+    np.testing.assert_allclose(prof["sx_hertz"], -p, rtol=0, atol=1e-9 * p0)
+
+
+def test_profile_hertz_curve_with_cattaneo_partial_slip():
+    """Partial slip Q = 0.5 mu F (Johnson 1985 §7.1): stick zone |x| < c = a sqrt(1 - 0.5);
+    q = mu p on the slip zone, q = mu p - mu p0 (c/a) sqrt(1 - x^2/c^2) on the stick zone, and in
+    the stick zone the tangential parts of sx cancel (2 mu p0 x/a - 2 mu p0 (c/a) x/c = 0):
+    sx = -p there."""
+    from femcam.sweep.options import contact_params
+    from femcam.sweep.profile import _hertz_curve
+
+    cp = contact_params(load_scene(EX / "seed002_study_model.toml"))
+    h = _hertz_curve({"Q_over_muFc": np.array([0.5]), "slip_state": np.array(["partial slip"])}, 0, cp,
+                     1000.0, 0.02)
+    x, a, mu = h["x_hertz"], h["a_hertz"], cp.mu
+    p0 = hertz_p0(1000.0, 0.010, 1 / (1 / 0.02 + 1 / 0.010))
+    c = a * math.sqrt(0.5)
+    p = p0 * np.sqrt(np.clip(1 - (x / a) ** 2, 0, None))
+    q = mu * p - mu * p0 * (c / a) * np.sqrt(np.clip(1 - (x / c) ** 2, 0, None))
+    np.testing.assert_allclose(np.abs(h["txz_hertz"]), q, rtol=0, atol=1e-9 * p0)
+    stick = np.abs(x) < c
+    np.testing.assert_allclose(h["sx_hertz"][stick], -p[stick], rtol=0, atol=1e-9 * p0)
+    assert "Cattaneo" in h["hertz_label"]

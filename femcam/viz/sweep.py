@@ -169,7 +169,7 @@ def plot_surface_worst(profile: dict, path) -> str:
     for ax, name, label in zip(axs, ("sx", "sz", "txz"),
                                ("sigma_x (MPa)", "sigma_z (MPa)", "tau_xz (MPa)"), strict=True):
         ax.plot(profile["x_hertz"] / a, profile[name + "_hertz"] / 1e6, "-", color="C0",
-                label="Hertz, seed 002 eqs. 5-7")
+                label=profile.get("hertz_label", "Hertz, seed 002 eqs. 5-7"))
         if "x_fe" in profile:
             ax.plot(profile["x_fe"] / a, profile[name + "_fe"] / 1e6, ".", color="C3", ms=4,
                     label="FE")
@@ -178,7 +178,8 @@ def plot_surface_worst(profile: dict, path) -> str:
         ax.grid(alpha=0.3)
     legend_outside(axs[0])
     fig.suptitle(f"Surface stresses at the worst angle theta = {profile['theta_deg']:.1f} deg "
-                 f"(Fc = {profile['Fc']:.0f} N, mu = {profile['mu']:g})")
+                 f"(Fc = {profile['Fc']:.0f} N, mu = {profile['mu']:g}"
+                 + (f", {profile['traction']})" if "traction" in profile else ")"))
     fig.tight_layout()
     return _save(fig, Path(path))
 
