@@ -23,7 +23,7 @@ from ..scene import load_scene
 from ..sweep import parse_angles_deg, sweep
 from ..sweep.options import TOLERANCE_FLOOR
 from ..sweep.result import families_text
-from ._common import out_dir, plain
+from ._common import check_law, out_dir, plain
 
 
 def register(subparsers) -> None:
@@ -163,6 +163,8 @@ def _command_line(args) -> str:
 
 def _run(args) -> int:
     out_dir(args.out, create=False)
+    if args.law:
+        check_law("--law", args.law)
     scene = load_scene(args.scene)
     from_scene = resolve_settings(args, scene)
     _check_args(args)
