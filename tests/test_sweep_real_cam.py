@@ -269,3 +269,20 @@ def test_profile_hertz_curve_with_cattaneo_partial_slip():
     stick = np.abs(x) < c
     np.testing.assert_allclose(h["sx_hertz"][stick], -p[stick], rtol=0, atol=1e-9 * p0)
     assert "Cattaneo" in h["hertz_label"]
+
+
+def test_worst_profile_of_method_auto_includes_the_hertz_rows():
+    """Method auto: the worst angle is by the row's answer (Hertz p0 where Hertz answered), not
+    only among the FE rows; a Hertz row gets the Hertz curve and no FE points."""
+    from femcam.sweep.options import SweepOptions, contact_params
+    from femcam.sweep.profile import worst_surface_profile
+
+    cp = contact_params(load_scene(EX / "seed002_study_model.toml"))
+    t = {"theta": np.radians([10.0, 20.0]), "Fc": np.array([1600.0, 1000.0]), "rho": np.array([0.02, 0.02]),
+         "status": np.array(["ok", "ok"]), "model": np.array(["hertz", "fe_arc"]),
+         "p0_fe": np.array([np.nan, 9e8]), "p0_hertz": np.array([1.1e9, 9e8]),
+         "Q_over_muFc": np.array([0.0, 0.0]), "slip_state": np.array(["stick", "stick"])}
+    prof = worst_surface_profile(t, "fe", cp, [], SweepOptions())
+    assert prof["theta_deg"] == pytest.approx(10.0) and "x_fe" not in prof
+    p0 = hertz_p0(1600.0, 0.010, 1 / (1 / 0.02 + 1 / 0.010))
+    assert -prof["sx_hertz"].min() == pytest.approx(p0, rel=1e-6)  # grid point at x = 0

@@ -37,7 +37,8 @@ FRICTIONLESS_Q = 1e-3  # |Q| / (mu F) below which the Hertz curve is drawn frict
 def worst_surface_profile(table: dict, method: str, cp: ContactParams, families: list[dict],
                           options: SweepOptions, cache: ModelCache | None = None,
                           scene=None) -> dict:
-    """Surface stresses along x at the angle of highest p0: Hertz lines (+ FE points).
+    """Surface stresses along x at the angle of highest p0 (the row's answer: FE p0, or Hertz
+    p0 for the rows Hertz answered): Hertz lines (+ FE points for an FE row).
 
     Parameters
     ----------
@@ -67,7 +68,9 @@ def worst_surface_profile(table: dict, method: str, cp: ContactParams, families:
         ``fe_model`` (``"family <id>"`` or ``"own"``).
     """
     cache = default_cache() if cache is None else cache
-    i = worst_row(table, "p0_fe" if method == "fe" else "p0_hertz")
+    # the row's answer: FE p0 where the FE answered, else Hertz (method auto's Hertz rows)
+    p0 = np.where(np.isfinite(table["p0_fe"]), table["p0_fe"], table["p0_hertz"])
+    i = worst_row({**table, "p0_answer": p0}, "p0_answer" if method == "fe" else "p0_hertz")
     F, rho, theta = float(table["Fc"][i]), float(table["rho"][i]), float(table["theta"][i])
     out = {"theta_deg": float(np.degrees(theta)), "Fc": F, "rho": rho, "mu": cp.mu,
            "traction": _traction_text(table, i, cp)}

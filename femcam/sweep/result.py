@@ -427,7 +427,7 @@ def families_text(n_families: int, reuse_error_max: float) -> str:
     families (e.g. flat-faced binned models) says so instead of a NaN error."""
     n = int(n_families)
     if n == 0 or not np.isfinite(reuse_error_max):
-        return "no verified model families (no reuse error to check)"
+        return "no verified model families, no reuse error to check"
     return (f"{n} model {'family' if n == 1 else 'families'}, reuse error <= "
             f"{100 * reuse_error_max:.3f} % at the checked angles")
 
