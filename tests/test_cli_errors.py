@@ -218,3 +218,30 @@ def test_synth_help_shows_defaults_and_law_names():
     text = _parsers()["femcam synth"].format_help()
     for s in ("default 180", "default 1e6", "default 1)", "default 50", "poly345", "bezier7"):
         assert s in " ".join(text.split()), s
+
+
+DYNAMIC = STUDY_PATH.parent / "seed002_dynamic.toml"  # a one_dof train: dynamics has work to do
+
+
+@pytest.mark.parametrize("cmd, argv, want", [
+    ("dynamics", ["--rpm-sweep", "100:6000"], "--rpm-sweep = '100:6000': must be START:STOP:STEP"),
+    ("wear", ["map", "--laws", "bezier5,bez7"],
+     "--laws = 'bez7': unknown motion law (did you mean 'bezier7'?)"),
+    ("sweep", ["--law", "bezeir9"], "--law = 'bezeir9': unknown motion law (did you mean 'bezier9'?)"),
+])
+def test_bad_flag_refused_before_any_work(cmd, argv, want, tmp_path, capsys):
+    """A bad --rpm-sweep / --laws / --law is refused before anything is computed or written:
+    the output directory is not even created; the message names the flag and a did-you-mean."""
+    out = tmp_path / "o"
+    head, tail = ([argv[0]], argv[1:]) if cmd == "wear" else ([], argv)
+    scene = DYNAMIC if cmd == "dynamics" else STUDY_PATH
+    assert main([cmd, *head, str(scene), "--out", str(out), *tail]) == 1
+    assert want in _one_line(capsys, cmd)
+    assert not out.exists()
+
+
+def test_run_law_did_you_mean(capsys):
+    assert main(["run", SCENE, "--law", "bezeir9"]) == 1
+    err = _one_line(capsys, "run")
+    assert "--law = 'bezeir9': unknown motion law (did you mean 'bezier9'?)" in err
+    assert "valid names: " in err and "bezier9" in err

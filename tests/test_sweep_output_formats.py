@@ -50,3 +50,65 @@ def test_resume_refusal_names_only_what_differs(hertz_sweep, tmp_path):
               vtk_every=0, plots=False, progress=False, workers=1)
     msg = str(info.value)
     assert "tolerance" in msg and "chunk bounds" not in msg, msg
+
+
+def test_report_wear_depth_has_significant_digits(hertz_sweep):
+    """seed 002's wear depth per revolution is ~1.6e-5 nm: the report shows 3 significant digits
+    (it read "0.000" with a fixed 3-decimal format); the number itself is validated against
+    Archard's closed form in test_sweep.py::test_wear_column_is_archard_per_pass_closed_form."""
+    out, res = hertz_sweep
+    lines = (out / "report.md").read_text().splitlines()
+    line = next(ln for ln in lines if "wear depth per revolution" in ln)
+    shown = float(line.split("|")[2])
+    want = float(np.nanmax(res.table["wear_depth"])) * 1e9
+    assert 0 < want < 1e-3
+    assert shown == pytest.approx(want, rel=5e-3)  # 3 significant digits: rounding <= 0.5e-2
+
+
+def test_families_text_singular_and_no_nan():
+    from femcam.sweep.result import families_text
+
+    assert families_text(1, 1.2e-4).startswith("1 model family, reuse error <= 0.012 %")
+    assert families_text(3, 1.2e-4).startswith("3 model families,")
+    for n, err in ((0, float("nan")), (0, 0.0)):
+        t = families_text(n, err)
+        assert "nan" not in t and "no verified model families" in t
+
+
+def test_legend_only_with_labelled_artists_and_wear_plot_of_axial_peak_rows(hertz_sweep, tmp_path):
+    """No matplotlib 'No artists with labels' warning; the crowned (finite-length) sweep's wear
+    rows (wear_source axial_peak) are drawn and labelled."""
+    import warnings
+
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from femcam.viz._mpl import legend_outside
+    from femcam.viz.sweep import plot_wear
+
+    fig, ax = plt.subplots()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert legend_outside(ax) is None
+    plt.close(fig)
+    import dataclasses
+
+    _, hs = hertz_sweep
+    res = dataclasses.replace(hs, table={**hs.table, "wear_source": np.full(hs.n_angles, "axial_peak")})
+    seen = {}
+    real_legend = matplotlib.axes.Axes.legend
+
+    def spy(self, *a, **kw):
+        seen.setdefault("labels", []).extend(self.get_legend_handles_labels()[1])
+        return real_legend(self, *a, **kw)
+
+    matplotlib.axes.Axes.legend = spy
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", UserWarning)
+            plot_wear(res, tmp_path / "w.png")
+    finally:
+        matplotlib.axes.Axes.legend = real_legend
+    assert any("axial peak" in s for s in seen["labels"])

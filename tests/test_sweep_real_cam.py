@@ -207,3 +207,82 @@ def test_tip_radius_key_and_deprecated_alias():
     with warnings.catch_warnings(), pytest.raises(InputError, match="differ"):
         warnings.simplefilter("ignore", FutureWarning)
         follower_tip_radius(dataclasses.replace(sc, wear={"tip_radius_mm": 1.5}))
+
+
+def test_method_auto_writes_the_hertz_vtu_of_hertz_rows(tmp_path):
+    """--method auto with a VTU at every angle: the rows Hertz answers get the analytic Hertz
+    field, so the series is complete (the end-of-run check stays strict); the VTU's peak
+    pressure is Hertz p0 written out (Johnson 1985 eq. 4.45) at the row's Fc and rho."""
+    from femcam.cli import main
+
+    out = tmp_path / "auto"
+    assert main(["sweep", str(EX / "seed002_study_model.toml"), "--out", str(out), "--method", "auto",
+                 "--angles-deg", "0:360:30", "--vtk-every", "1", "--no-plots", "--workers", "1"]) == 0
+    assert len(list((out / "vtk").glob("*.vtu"))) == 12
+    r = np.load(out / "sweep.npz", allow_pickle=False)
+    i = int(np.flatnonzero(r["model"] == "hertz")[0])
+    meshio = pytest.importorskip("meshio")
+    m = meshio.read(out / "vtk" / f"angle_{np.degrees(r['theta'][i]):08.3f}deg.vtu")
+    p0 = hertz_p0(float(r["Fc"][i]), 0.010, 1 / (1 / float(r["rho"][i]) + 1 / 0.010))  # face 10 mm, Rr 10 mm
+    assert m.point_data["contact_pressure_Pa"].max() == pytest.approx(p0, rel=1e-9)
+
+
+def test_worst_profile_is_the_rows_own_solve_with_its_traction():
+    """The worst-angle profile is solved with the row's gap and the mechanism's traction: its FE
+    surface sx maximum is the row's sx_max (the same solve: 1e-9), the title states the traction,
+    and for |Q| << mu Fc the Hertz curve is the frictionless one, sx = -p0 sqrt(1 - x^2/a^2)
+    (Johnson 1985 eq. 4.45), labelled so."""
+    from femcam.sweep.options import SweepOptions, contact_params
+    from femcam.sweep.profile import worst_surface_profile
+
+    sc = load_scene(EX / "seed002_study_model.toml")
+    r = sweep(sc, angles=np.radians([180.0, 210.0, 240.0]), workers=1)
+    i = r.worst_index("p0_fe")
+    assert r["slip_state"][i] == "stick" and abs(r["Q_over_muFc"][i]) < 1e-3
+    prof = worst_surface_profile(r.table, "fe", contact_params(sc), r.families, SweepOptions(), scene=sc)
+    assert prof["sx_fe"].max() == pytest.approx(r["sx_max"][i], rel=1e-9)
+    assert "stick" in prof["traction"] and "Q/(mu Fc)" in prof["traction"]
+    assert "frictionless" in prof["hertz_label"]
+    x, a = prof["x_hertz"], prof["a_hertz"]
+    p0 = hertz_p0(r["Fc"][i], 0.010, 1 / (1 / r["rho"][i] + 1 / 0.010))
+    p = p0 * np.sqrt(np.clip(1 - (x / a) ** 2, 0, None))
+    np.testing.assert_allclose(prof["sx_hertz"], -p, rtol=0, atol=1e-9 * p0)
+
+
+def test_profile_hertz_curve_with_cattaneo_partial_slip():
+    """Partial slip Q = 0.5 mu F (Johnson 1985 §7.1): stick zone |x| < c = a sqrt(1 - 0.5);
+    q = mu p on the slip zone, q = mu p - mu p0 (c/a) sqrt(1 - x^2/c^2) on the stick zone, and in
+    the stick zone the tangential parts of sx cancel (2 mu p0 x/a - 2 mu p0 (c/a) x/c = 0):
+    sx = -p there."""
+    from femcam.sweep.options import contact_params
+    from femcam.sweep.profile import _hertz_curve
+
+    cp = contact_params(load_scene(EX / "seed002_study_model.toml"))
+    h = _hertz_curve({"Q_over_muFc": np.array([0.5]), "slip_state": np.array(["partial slip"])}, 0, cp,
+                     1000.0, 0.02)
+    x, a, mu = h["x_hertz"], h["a_hertz"], cp.mu
+    p0 = hertz_p0(1000.0, 0.010, 1 / (1 / 0.02 + 1 / 0.010))
+    c = a * math.sqrt(0.5)
+    p = p0 * np.sqrt(np.clip(1 - (x / a) ** 2, 0, None))
+    q = mu * p - mu * p0 * (c / a) * np.sqrt(np.clip(1 - (x / c) ** 2, 0, None))
+    np.testing.assert_allclose(np.abs(h["txz_hertz"]), q, rtol=0, atol=1e-9 * p0)
+    stick = np.abs(x) < c
+    np.testing.assert_allclose(h["sx_hertz"][stick], -p[stick], rtol=0, atol=1e-9 * p0)
+    assert "Cattaneo" in h["hertz_label"]
+
+
+def test_worst_profile_of_method_auto_includes_the_hertz_rows():
+    """Method auto: the worst angle is by the row's answer (Hertz p0 where Hertz answered), not
+    only among the FE rows; a Hertz row gets the Hertz curve and no FE points."""
+    from femcam.sweep.options import SweepOptions, contact_params
+    from femcam.sweep.profile import worst_surface_profile
+
+    cp = contact_params(load_scene(EX / "seed002_study_model.toml"))
+    t = {"theta": np.radians([10.0, 20.0]), "Fc": np.array([1600.0, 1000.0]), "rho": np.array([0.02, 0.02]),
+         "status": np.array(["ok", "ok"]), "model": np.array(["hertz", "fe_arc"]),
+         "p0_fe": np.array([np.nan, 9e8]), "p0_hertz": np.array([1.1e9, 9e8]),
+         "Q_over_muFc": np.array([0.0, 0.0]), "slip_state": np.array(["stick", "stick"])}
+    prof = worst_surface_profile(t, "fe", cp, [], SweepOptions())
+    assert prof["theta_deg"] == pytest.approx(10.0) and "x_fe" not in prof
+    p0 = hertz_p0(1600.0, 0.010, 1 / (1 / 0.02 + 1 / 0.010))
+    assert -prof["sx_hertz"].min() == pytest.approx(p0, rel=1e-6)  # grid point at x = 0

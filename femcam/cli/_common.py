@@ -8,12 +8,15 @@ path, not a traceback after minutes of computing. :func:`os_error_line` is the t
 
 from __future__ import annotations
 
+import difflib
 import errno
 import os
 import re
 from pathlib import Path
 
 from .. import _validate
+from ..errors import InputError
+from ..kinematics import LAW_NAMES
 
 
 def out_dir(path, flag: str = "--out", *, create: bool = True) -> Path:
@@ -60,3 +63,14 @@ def plain(doc: str, paragraphs: int = 1) -> str:
     text = re.sub(r":[a-z]+:`~?([^`]+)`", lambda m: m.group(1).split(".")[-1]
                   if m.group(0).count("~") else m.group(1), text)
     return text.replace("``", "")
+
+
+def check_law(flag: str, name: str) -> str:
+    """A motion-law name given on the command line (``--law``, ``--laws``), checked before any
+    work: an :class:`~femcam.errors.InputError` naming the flag, the value and a did-you-mean."""
+    if name not in LAW_NAMES:
+        near = difflib.get_close_matches(name, list(LAW_NAMES), n=1, cutoff=0.6)
+        hint = f" (did you mean {near[0]!r}?)" if near else ""
+        raise InputError(f"{flag} = {name!r}: unknown motion law{hint}; valid names: "
+                         f"{', '.join(LAW_NAMES)}")
+    return name

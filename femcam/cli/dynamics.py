@@ -88,6 +88,7 @@ def _write_sweep(out: Path, scene, sw):
 
 def run(args) -> int:
     out_dir(args.out, create=False)  # checked before any work, created below
+    rpm = _rpm_range(args.rpm_sweep) if args.rpm_sweep else None  # checked before any work
     scene = load_scene(args.scene)
     if scene.train is None:
         raise InputError(f"{args.scene}: [dynamics] model = 'rigid' (eq. 11) has no train to "
@@ -106,8 +107,7 @@ def run(args) -> int:
     if not args.no_plots:
 
         print(f"  png: {plot_force({scene.train.model: r}, out / 'dynamics_force.png')}")
-    if args.rpm_sweep:
-        rpm = _rpm_range(args.rpm_sweep)
+    if rpm is not None:
         sw = rpm_sweep(scene.train, scene.program, rpm, steps_per_rev=scene.steps_per_rev,
                        workers=workers)
         j = jump_speed(scene.train, scene.program, rpm[0], rpm[-1],

@@ -20,7 +20,7 @@ from .. import __version__, _validate
 from ..kinematics import LAW_NAMES
 from ..scene import load_scene
 from ..viz.analytic import plot_all
-from ._common import out_dir, plain
+from ._common import check_law, out_dir, plain
 
 #: CSV columns: (name with unit, SceneState attribute, factor from SI)
 COLUMNS = (
@@ -149,6 +149,8 @@ def _check_args(args) -> None:
 
 def _run(args) -> int:
     _check_args(args)
+    if args.law:
+        check_law("--law", args.law)
     theta = _validate.angles_deg("--angles-deg", args.angles_deg)
     scene = load_scene(args.scene)
     if args.law:

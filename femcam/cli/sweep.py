@@ -22,7 +22,8 @@ from ..kinematics import LAW_NAMES
 from ..scene import load_scene
 from ..sweep import parse_angles_deg, sweep
 from ..sweep.options import TOLERANCE_FLOOR
-from ._common import out_dir, plain
+from ..sweep.result import families_text
+from ._common import check_law, out_dir, plain
 
 
 def register(subparsers) -> None:
@@ -162,6 +163,8 @@ def _command_line(args) -> str:
 
 def _run(args) -> int:
     out_dir(args.out, create=False)
+    if args.law:
+        check_law("--law", args.law)
     scene = load_scene(args.scene)
     from_scene = resolve_settings(args, scene)
     _check_args(args)
@@ -196,8 +199,8 @@ def _run(args) -> int:
               f"{o.get('n_curvature_jump', 0)}, edge contacts {o.get('n_edge_contact', 0)}; traction: "
               f"{o.get('traction')}")
     if res.method != "hertz":
-        print(f"  {s['n_families']} model families, reuse error <= {100 * s['reuse_error_max']:.3f} % "
-              f"at the checked angles (tolerance {100 * args.tolerance:g} %); workers "
+        print(f"  {families_text(s['n_families'], s['reuse_error_max'])} "
+              f"(tolerance {100 * args.tolerance:g} %); workers "
               f"{o.get('workers')}" + (f" ({o['workers_reason']})" if o.get("workers_reason") else ""))
     print(f"  peak Fc {s['Fc_max']:.1f} N, p0 Hertz {s['p0_hertz_max'] / 1e6:.1f} MPa"
           + (f", p0 FE {s['p0_fe_max'] / 1e6:.1f} MPa (max |err| {100 * s['err_p0_absmax']:.3f} %)"

@@ -37,7 +37,7 @@ from ..wear.evolution import convergence_table, evolution_case
 from ..wear.options import describe_k, wear_coefficient_info, wear_options
 from ..wear.scene import scene_tip_radius, scene_wear, tip_scene
 from ..wear.seed000 import PAPER_LAWS, format_table3, seed000_table, table_rows_for_csv
-from ._common import out_dir, plain
+from ._common import check_law, out_dir, plain
 
 
 def register(subparsers) -> None:
@@ -133,12 +133,12 @@ def _check_map_args(args) -> tuple[float, float | None]:
 
 def _map(args) -> int:
     out_dir(args.out, create=False)  # checked before any work, created below
+    step, tip = _check_map_args(args)
+    laws = [check_law("--laws", x.strip()) for x in args.laws.split(",")] if args.laws else [None]
     scene = load_scene(args.scene)
     opts = wear_options(scene)
     cycles = args.cycles if args.cycles is not None else float(opts.get("cycles", 1e6))
-    step, tip = _check_map_args(args)
     theta = np.radians(np.arange(0.0, 360.0, step))
-    laws = [x.strip() for x in args.laws.split(",")] if args.laws else [None]
     k, k_where = wear_coefficient_info(scene)
     print(describe_k(k, k_where))
     out = out_dir(args.out)

@@ -343,13 +343,17 @@ def _fe_angle(task: ChunkTask, cp: ContactParams, rows, flags, i: int,
 
 
 def _write_vtus(task: ChunkTask, cp: ContactParams, rows, vtk_fe: dict) -> None:
-    """The chunk's ``.vtu`` files: FE results, or the analytic field for method hertz."""
+    """The chunk's ``.vtu`` files: FE results, or the analytic field for the rows Hertz
+    answered (method hertz, and method auto's Hertz rows), so the series is complete."""
     if task.vtk_dir is None or task.vtk_mask is None:
         return
     for i, r in vtk_fe.items():
         write_fe_vtu(Path(task.vtk_dir) / vtu_name(task.theta[i]), r, wear=_vtu_wear(task, rows, i))
+    analytic = (rows["status"] == "ok") & (rows["model"] == "hertz")
     if task.options.method == "hertz":
-        for i in np.flatnonzero(task.vtk_mask & (rows["status"] == "ok")):
+        analytic = rows["status"] == "ok"
+    for i in np.flatnonzero(task.vtk_mask & analytic):
+        if int(i) not in vtk_fe:
             hc = LineContact(F=rows["Fc"][i], length=cp.length, R1=rows["rho"][i], R2=cp.Rr,
                              cam=cp.cam, roller=cp.roller, mu=cp.mu, plane=cp.plane,
                              direction=cp.sliding)

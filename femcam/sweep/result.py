@@ -418,8 +418,18 @@ def plot_data_arrays(result: SweepResult) -> dict:
     return out
 
 
-def _fmt(x: float, scale: float = 1.0, digits: int = 1) -> str:
-    return "-" if not np.isfinite(x) else f"{x * scale:.{digits}f}"
+def _fmt(x: float, scale: float = 1.0, digits: int = 1, spec: str = "f") -> str:
+    return "-" if not np.isfinite(x) else f"{x * scale:.{digits}{spec}}"
+
+
+def families_text(n_families: int, reuse_error_max: float) -> str:
+    """``"1 model family, reuse error <= 0.012 % at the checked angles"``; without verified
+    families (e.g. flat-faced binned models) says so instead of a NaN error."""
+    n = int(n_families)
+    if n == 0 or not np.isfinite(reuse_error_max):
+        return "no verified model families, no reuse error to check"
+    return (f"{n} model {'family' if n == 1 else 'families'}, reuse error <= "
+            f"{100 * reuse_error_max:.3f} % at the checked angles")
 
 
 def report_markdown(result: SweepResult) -> str:
@@ -443,8 +453,7 @@ def report_markdown(result: SweepResult) -> str:
              f"- lift-off {s['n_liftoff']}, undercut {s['n_undercut']}, failed {s['n_failed']} "
              "angle(s)"]
     if result.method == "fe":
-        lines.append(f"- {s['n_families']} model families, reuse error <= "
-                     f"{_fmt(s['reuse_error_max'], 100, 3)} % at the checked angles (tolerance "
+        lines.append(f"- {families_text(s['n_families'], s['reuse_error_max'])} (tolerance "
                      f"{100 * float(o.get('tolerance', float('nan'))):g} %)")
     lines += ["", "| quantity | peak over the cycle |", "|---|---|",
               f"| Fc (N) | {_fmt(s['Fc_max'])} |",
@@ -453,7 +462,7 @@ def report_markdown(result: SweepResult) -> str:
               f"| max FE/Hertz - 1 for p0 (%) | {_fmt(s['err_p0_absmax'], 100, 3)} |",
               f"| von Mises (MPa) | {_fmt(s['vm_max'], 1e-6)} |",
               f"| tau1 (MPa) | {_fmt(s['tau1_max'], 1e-6)} |",
-              f"| wear depth per revolution (nm) | {_fmt(s['wear_depth_max'], 1e9, 3)} |",
+              f"| wear depth per revolution (nm) | {_fmt(s['wear_depth_max'], 1e9, 3, 'g')} |",
               ]
     lines += _extras_lines(p.get("extras", {}))
     lines += ["", "Files: " + ", ".join(f"`{Path(v).name}`" for v in result.paths.values()), ""]

@@ -483,6 +483,6 @@ def _with_plot_data(result: SweepResult, run: _Run) -> SweepResult:
     if np.any(result.ok):
         fe = "hertz" if (result.method == "hertz" or cp.kind == "flat_faced") else "fe"
         profile = worst_surface_profile(result.table, fe, cp, result.families, run.opts,
-                                        default_cache())
+                                        default_cache(), scene=run.scene)
     return replace(result, surface_profile=profile,
                    hertz_factors=shape_factors(cp.mu, cp.cam.nu, cp.plane))

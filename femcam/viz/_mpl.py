@@ -17,7 +17,9 @@ def pyplot():
 
 def legend_outside(ax, fontsize: float = 8, **kw):
     """The legend of ``ax`` to the right of the axes, never over the data (``tight_layout``
-    makes room for it)."""
+    makes room for it); None (no legend, no matplotlib warning) when no artist has a label."""
+    if not ax.get_legend_handles_labels()[0]:
+        return None
     return ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, frameon=False,
                      fontsize=fontsize, **kw)
 

@@ -130,18 +130,21 @@ def plot_wear(result, path) -> str:
     plt, t, deg = _table(result)
     fig, axs = plt.subplots(2, 1, figsize=(7, 4.6), sharex=True)
     src = np.asarray(t["wear_source"]).astype(str)
-    for s_, c, lab in (("fe", "C3", "FE pressure"), ("hertz", "C0", "Hertz pressure")):
+    known = {"fe": ("C3", "FE pressure"), "hertz": ("C0", "Hertz pressure"),
+             "axial_peak": ("C2", "finite-length axial peak pressure")}
+    for j, s_ in enumerate(sorted({x for x in src if x}, key=lambda x: (x not in known, x))):
+        c, lab = known.get(s_, (f"C{4 + j}", f"{s_.replace('_', ' ')} pressure"))
         m = src == s_
-        if np.any(m):
-            axs[0].plot(deg[m], t["wear_depth"][m] * 1e9, ".", ms=3, color=c, label=lab)
+        axs[0].plot(deg[m], t["wear_depth"][m] * 1e9, ".", ms=3, color=c, label=lab)
     k = result.provenance.get("wear", {}).get("k_m3_per_N_m")
     axs[0].set_ylabel("wear depth per rev (nm)")
     axs[0].ticklabel_format(axis="y", style="plain", useOffset=False)  # nm, no 1e-5 multiplier
     axs[0].set_title("Archard wear at the contact point" + (f" (k = {k:.3g} m^3/(N m))" if k else ""))
     legend_outside(axs[0])
     axs[0].grid(alpha=0.3)
-    axs[1].plot(deg, t["v_slip"], "-", lw=1)
+    axs[1].plot(deg, t["v_slip"], "-", lw=1, label="sliding speed at the contact")
     axs[1].set_ylabel("sliding speed (m/s)")
+    legend_outside(axs[1])
     axs[1].set_xlabel("cam angle theta (deg)")
     axs[1].grid(alpha=0.3)
     fig.tight_layout()
@@ -169,7 +172,7 @@ def plot_surface_worst(profile: dict, path) -> str:
     for ax, name, label in zip(axs, ("sx", "sz", "txz"),
                                ("sigma_x (MPa)", "sigma_z (MPa)", "tau_xz (MPa)"), strict=True):
         ax.plot(profile["x_hertz"] / a, profile[name + "_hertz"] / 1e6, "-", color="C0",
-                label="Hertz, seed 002 eqs. 5-7")
+                label=profile.get("hertz_label", "Hertz, seed 002 eqs. 5-7"))
         if "x_fe" in profile:
             ax.plot(profile["x_fe"] / a, profile[name + "_fe"] / 1e6, ".", color="C3", ms=4,
                     label="FE")
@@ -178,7 +181,8 @@ def plot_surface_worst(profile: dict, path) -> str:
         ax.grid(alpha=0.3)
     legend_outside(axs[0])
     fig.suptitle(f"Surface stresses at the worst angle theta = {profile['theta_deg']:.1f} deg "
-                 f"(Fc = {profile['Fc']:.0f} N, mu = {profile['mu']:g})")
+                 f"(Fc = {profile['Fc']:.0f} N, mu = {profile['mu']:g}"
+                 + (f", {profile['traction']})" if "traction" in profile else ")"))
     fig.tight_layout()
     return _save(fig, Path(path))
 
