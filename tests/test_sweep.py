@@ -249,6 +249,7 @@ def test_liftoff_rows_do_not_crash(scene):
     assert set(r["wear_source"][lift]) == {"none"}
 
 
+@pytest.mark.slow  # several seconds; the default suite stays under 90 s
 def test_failed_angle_is_recorded_and_sweep_continues(scene, monkeypatch):
     real = ContactModel.solve
     bad_F = {}
@@ -351,6 +352,7 @@ def test_tight_tolerance_gives_more_families_and_holds(scene):
         assert abs(got) <= 5e-4 + MESH_NOISE
 
 
+@pytest.mark.slow  # several seconds; the default suite stays under 90 s
 def test_worst_angle_profile_reuses_the_family_model(scene):
     # the profile is recomputed with the arc gap and full sliding in the scene's direction: the
     # "+x" override and angles answered by the family's arc-gap model
@@ -550,6 +552,7 @@ def test_fe_resume_reuses_the_stored_family_plan(scene, tmp_path):
         np.testing.assert_allclose(again[k], full[k], rtol=1e-12, atol=0, err_msg=k)
 
 
+@pytest.mark.slow  # several seconds; the default suite stays under 90 s
 def test_resume_in_process_reuses_chunks(scene, tmp_path):
     th = np.radians(np.arange(0.0, 360.0, 20.0))
     full = sweep(scene, angles=th, out=tmp_path, method="hertz", chunk_size=4, vtk_every=0)
