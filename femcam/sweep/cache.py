@@ -63,18 +63,24 @@ class ModelCache:
         -------
         femcam.fe.ContactModel
         """
-        key = _key(cp, rho_ref, a_ref, options)
+        return self._get_or_build(_key(cp, rho_ref, a_ref, options),
+                                  lambda: build_model(cp, rho_ref, a_ref, options), memo=True)
+
+    def _get_or_build(self, key: tuple, build, memo: bool = False):
+        """The model under ``key`` (LRU: most recently used last), or ``build()`` now (counted in
+        :attr:`stats`); ``memo``: keep its solved load cases (:meth:`solve`)."""
         with self._lock:
             m = self._models.get(key)
             if m is not None:
                 self._models.move_to_end(key)
                 return m
             t0 = time.perf_counter()
-            m = build_model(cp, rho_ref, a_ref, options)
+            m = build()
             self.stats["built"] += 1
             self.stats["build_time"] += time.perf_counter() - t0
             self._models[key] = m
-            self._results[id(m)] = {}
+            if memo:
+                self._results[id(m)] = {}
             while len(self._models) > self.max_models:
                 _, old = self._models.popitem(last=False)
                 self._results.pop(id(old), None)
@@ -167,20 +173,7 @@ class ModelCache:
     def real_cam(self, key: tuple, build):
         """A :class:`femcam.fe.choice.RealCam` of the models table (key ``("real_cam", ...)``),
         cached or built now by ``build()`` (flat-faced sweeps; LRU as the family models)."""
-        with self._lock:
-            m = self._models.get(key)
-            if m is not None:
-                self._models.move_to_end(key)
-                return m
-            t0 = time.perf_counter()
-            m = build()
-            self.stats["built"] += 1
-            self.stats["build_time"] += time.perf_counter() - t0
-            self._models[key] = m
-            while len(self._models) > self.max_models:
-                _, old = self._models.popitem(last=False)
-                self._results.pop(id(old), None)
-            return m
+        return self._get_or_build(key, build)
 
     def forget(self, cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions) -> None:
         """Drop the model of references ``(rho_ref, a_ref)`` (m) and its solved cases (the
