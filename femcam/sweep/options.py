@@ -1,4 +1,9 @@
-"""Numerical options of a sweep, and the scene adapter: the few contact parameters it needs."""
+"""Numerical options of a sweep, and the scene adapter: the few contact parameters it needs.
+
+The accepted methods and ranges are the scene's (:data:`METHODS`, :data:`TOLERANCE_FLOOR` and
+:func:`femcam.scene.schema.study_problem`, one copy used by the ``[fe]``/``[sweep]`` tables and
+by :class:`SweepOptions`).
+"""
 
 from __future__ import annotations
 
@@ -8,13 +13,10 @@ from dataclasses import dataclass
 from .. import _validate
 from ..errors import InputError
 from ..materials import Material, effective_modulus
+from ..scene.schema import METHODS, STUDY_WHOLE, TOLERANCE_FLOOR, study_problem
 from ..wear.options import follower_tip_radius
 
-#: ``fe``: the FE answers every contact angle (arc or exact gap); ``hertz``: analytic only;
-#: ``auto``: the cheapest model within the tolerance (Hertz, FE arc gap, FE exact gap)
-METHODS = ("fe", "hertz", "auto")
-#: smallest accepted ``tolerance`` (relative p0 reuse error); see :mod:`femcam.sweep.families`
-TOLERANCE_FLOOR = 1e-4
+__all__ = ["METHODS", "TOLERANCE_FLOOR", "ContactParams", "SweepOptions", "contact_params"]
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -24,17 +26,26 @@ class SweepOptions:
     Parameters
     ----------
     method : str
-        ``"fe"`` (default), ``"hertz"`` or ``"auto"`` (:data:`METHODS`).
+        ``"fe"`` (default: the FE answers every contact angle, arc or exact gap), ``"hertz"``
+        (analytic only) or ``"auto"`` (the cheapest model within the tolerance: Hertz, FE arc
+        gap, FE exact gap) (:data:`METHODS`).
     a_over_h : float
-        FE element size in the contact zone, ``h = a / a_over_h`` (``--mesh-size``), in [2, 400].
+        FE element size in the contact zone, ``h = a / a_over_h`` (``--mesh-size``;
+        dimensionless), in :data:`femcam.scene.STUDY_RANGES` ([2, 400]).
     tolerance : float
         Bound on the reuse error ``|p0(family model) / p0(fresh model) - 1|`` (``--tolerance``),
         verified with fresh models at each family's worst-covered angles; families are split
-        until it holds (:mod:`femcam.sweep.families`). At least :data:`TOLERANCE_FLOOR` (1e-4).
+        until it holds (:mod:`femcam.sweep.families`). Dimensionless, in
+        [:data:`TOLERANCE_FLOOR`, 0.5] ([1e-4, 0.5]).
     chunk_size : int
-        Angles per chunk (unit of work and of the on-disk store), >= 1.
+        Angles per chunk (unit of work and of the on-disk store), a whole number >= 1.
     vtk_every : int
-        Write a ``.vtu`` every k-th angle (0: none).
+        Write a ``.vtu`` every k-th angle (0: none), a whole number >= 0.
+
+    Raises
+    ------
+    InputError
+        An unknown method or a value out of range, naming the option, value and unit.
     """
 
     method: str = "fe"
@@ -45,21 +56,14 @@ class SweepOptions:
 
     def __post_init__(self):
         _validate.choice("method", self.method, METHODS)
-        object.__setattr__(self, "a_over_h", _validate.in_range("a_over_h", self.a_over_h, 2.0, 400.0))
-        tol = _validate.in_range("tolerance", self.tolerance, 0.0, 0.5, lo_open=True)
-        if tol < TOLERANCE_FLOOR:
-            raise _validate.fail(
-                "tolerance", tol, "", f"must be >= {TOLERANCE_FLOOR:g}: the reuse error is a "
-                "discretisation effect of the order of the FE error itself (~0.2 % at "
-                "a_over_h = 10, smaller on finer meshes); below the floor nearly every "
-                "angle needs its own model. Refine a_over_h for more accurate p0")
-        object.__setattr__(self, "tolerance", tol)
-        if int(self.chunk_size) != self.chunk_size or self.chunk_size < 1:
-            raise _validate.fail("chunk_size", self.chunk_size, "angles", "must be an integer >= 1")
-        if int(self.vtk_every) != self.vtk_every or self.vtk_every < 0:
-            raise _validate.fail("vtk_every", self.vtk_every, "angles", "must be an integer >= 0")
-        object.__setattr__(self, "chunk_size", int(self.chunk_size))
-        object.__setattr__(self, "vtk_every", int(self.vtk_every))
+        units = {"a_over_h": "", "tolerance": "", "chunk_size": "angles", "vtk_every": "angles"}
+        for key, unit in units.items():
+            value = getattr(self, key)
+            x = _validate.number(key, value, unit)
+            problem = study_problem(key, x)
+            if problem:
+                raise _validate.fail(key, value, unit, problem)
+            object.__setattr__(self, key, int(x) if key in STUDY_WHOLE else x)
 
     def to_dict(self) -> dict:
         """The options as a JSON-able dict (manifest key and provenance)."""

@@ -1,0 +1,80 @@
+"""``[follower]`` and ``[cam]``: the follower geometry, the keys of one follower type, and the
+finite-length contact keys of a roller (femcam.halfspace; docs/halfspace.md).
+
+Lengths are given in mm (``_mm``) and um (``_um``), angles in deg; the checked values are SI.
+"""
+
+from __future__ import annotations
+
+from ..errors import InputError
+from ..halfspace.crown import RollerProfile
+from ..profile import make_follower
+from .checker import _Checker, _fmt
+from .schema import _CAM, _FINITE, _FINITE_SI, _FOLLOWER, _FOLLOWER_ONLY
+
+
+def _follower(ck: _Checker, raw: dict):
+    """``(checked [follower] table in SI, follower or None)``."""
+    g = raw.get("follower", {})
+    fo = ck.table(g, "follower", _FOLLOWER)
+    ftype = fo.get("type")
+    follower = None
+    if ftype == "roller" and "roller_radius_mm" not in g:
+        ck.add("follower.roller_radius_mm", "missing required key for a roller follower (unit: mm)")
+    elif _follower_only_keys(ck, g, ftype):
+        pass
+    elif ftype in ("knife_edge", "flat_faced") and "roller_radius_mm" in g:
+        ck.add("follower.roller_radius_mm", f"= {_fmt(g['roller_radius_mm'])}: "
+               f"a {ftype} follower has no roller")
+    elif ftype and isinstance(g, dict) and set(g) <= set(fo) and "base_radius_mm" in fo:
+        try:
+            follower = make_follower(ftype, Rb=fo["base_radius_mm"], Rr=fo.get("roller_radius_mm", 0.0),
+                                     e=fo.get("offset_mm", 0.0))
+        except InputError:  # only the offset can fail here: |e| < prime radius
+            Rr_m = fo.get("roller_radius_mm", 0.0) if ftype == "roller" else 0.0
+            Rp_mm = (fo["base_radius_mm"] + Rr_m) * 1e3
+            ck.add("follower.offset_mm", f"= {_fmt(g['offset_mm'])} mm: must satisfy "
+                   f"|offset| < prime-circle radius {Rp_mm:g} mm")
+    return fo, follower
+
+
+def _follower_only_keys(ck: _Checker, raw, ftype) -> bool:
+    """Report keys of another follower type (tip_radius_mm on a roller, ...); True if any."""
+    bad = [k for k in _FOLLOWER_ONLY if ftype and isinstance(raw, dict) and k in raw
+           and _FOLLOWER_ONLY[k] != ftype]
+    for k in bad:
+        ck.add(f"follower.{k}", f"= {_fmt(raw[k])}: only a {_FOLLOWER_ONLY[k]} follower has this key, "
+               f"not a {ftype}")
+    return bool(bad)
+
+
+
+def _finite_length(ck: _Checker, raw: dict, fo: dict, ftype) -> dict:
+    """Check the finite-length keys; returns them in SI (``roller_width``, ``cam_width``, ``crown``,
+    ``crown_radius``, ``crown_drop``, ``edge_radius``, ``misalignment``) or {} on a problem."""
+    cam = ck.table(raw.get("cam", {}), "cam", _CAM)
+    graw = raw.get("follower", {}) if isinstance(raw.get("follower"), dict) else {}
+    given = [k for k in _FINITE if k in graw]
+    if given and ftype in ("knife_edge", "flat_faced"):
+        ck.add(f"follower.{given[0]}", f"= {_fmt(graw[given[0]])}: a {ftype} follower has no roller")
+        return {}
+    if any(k in graw and k not in fo for k in _FINITE) or "face_width_mm" not in fo:
+        return {}
+    out = {v: fo[k] for k, v in _FINITE_SI.items() if k in fo}
+    out.setdefault("roller_width", fo["face_width_mm"])
+    out["cam_width"] = cam.get("face_width_mm", fo["face_width_mm"])
+    kw = {k: out[k] for k in ("crown", "crown_radius", "crown_drop", "edge_radius", "misalignment")
+          if k in out}
+    try:
+        RollerProfile(width=out["roller_width"], **kw)
+    except InputError as exc:
+        msg = str(exc)
+        for k, v in _FINITE_SI.items():  # name the scene key and unit, not the SI parameter
+            if msg.startswith(v + " ") or msg.startswith(v + ":"):
+                unit = _FINITE[k][0]
+                ck.add(f"follower.{k}", f"= {_fmt(graw.get(k, fo.get(k)))}{' ' + unit if unit else ''}: "
+                       f"{msg.split(': ', 1)[-1]}")
+                return {}
+        ck.add("follower", msg)
+        return {}
+    return out

@@ -1,0 +1,216 @@
+"""The scene schema: every key of every table, its unit, SI factor and check, and the accepted
+ranges of the study settings.
+
+A key table maps ``key -> (unit shown to the user, SI factor, check, required)``; the checks
+are applied by :class:`femcam.scene.checker._Checker`:
+
+======== ==================================================================
+check    accepted value
+======== ==================================================================
+``pos``    a finite number > 0
+``nonneg`` a finite number >= 0
+``num``    any finite number
+``nu``     Poisson's ratio, in (-1, 0.5)
+``str``    a string (one of :data:`_CHOICES` where the key is listed there)
+``list``   a list of numbers
+``seglist`` the ``[[program.segment]]`` array (checked by :mod:`femcam.scene.program`)
+``bool``   true or false
+======== ==================================================================
+
+The numbers of ``[fe]`` and ``[sweep]`` (``a_over_h``, ``tolerance``, ``chunk_size``,
+``vtk_every``) are then checked by :func:`study_problem` (range or whole number).
+
+One compact block per table group; a new key goes into its group's block. The ranges of the
+``[fe]``/``[sweep]`` settings are written once here (:data:`STUDY_RANGES`,
+:data:`STUDY_WHOLE`, :func:`study_problem`) and used by both the scene checker and
+:class:`femcam.sweep.options.SweepOptions`.
+"""
+
+from __future__ import annotations
+
+import math
+
+_DEG = math.pi / 180.0
+
+# ---- top level, [operating] ------------------------------------------------------------------
+_TOP = {"name": ("", None, "str", True), "description": ("", None, "str", False),
+        "source": ("", None, "str", False)}
+_TABLES = ("operating", "program", "follower", "dynamics", "materials", "contact", "fe", "wear",
+           "lubricant", "surface", "cam", "sweep")
+_OPERATING = {"rpm": ("rpm", 2.0 * math.pi / 60.0, "pos", False),
+              "omega_rad_s": ("rad/s", 1.0, "pos", False),
+              "oil_temperature_C": ("degC", 1.0, "num", False)}  # assessment (femcam.assess)
+
+# ---- [program], [[program.segment]] ------------------------------------------------------------
+_PROGRAM = {"law": ("", None, "str", False), "control_points": ("", None, "list", False),
+            "segment": ("", None, "seglist", True)}
+_SEGMENT = {"kind": ("", None, "str", True), "beta_deg": ("deg", _DEG, "pos", True),
+            "lift_mm": ("mm", 1e-3, "pos", False), "law": ("", None, "str", False),
+            "control_points": ("", None, "list", False)}
+
+# ---- [follower] and [cam] ----------------------------------------------------------------------
+_FOLLOWER = {"type": ("", None, "str", True), "base_radius_mm": ("mm", 1e-3, "pos", True),
+             "roller_radius_mm": ("mm", 1e-3, "pos", False), "offset_mm": ("mm", 1e-3, "num", False),
+             "face_width_mm": ("mm", 1e-3, "pos", True),
+             # FE contact of the non-roller followers (femcam.fe.followers)
+             "tip_radius_mm": ("mm", 1e-3, "pos", False), "face_length_mm": ("mm", 1e-3, "pos", False)}
+#: keys only one follower type has
+_FOLLOWER_ONLY = {"tip_radius_mm": "knife_edge", "face_length_mm": "flat_faced"}
+# finite-length contact (femcam.halfspace; docs/halfspace.md): follower.face_width_mm stays the
+# 2D contact length (w = Fc / face_width in Hertz and the 2D FE); roller_width_mm and
+# cam.face_width_mm default to it and only enter the half-space strip, whose contact length is
+# min(roller_width_mm, cam.face_width_mm).
+_FINITE = {"roller_width_mm": ("mm", 1e-3, "pos", False), "crown": ("", None, "str", False),
+           "crown_radius_mm": ("mm", 1e-3, "pos", False), "crown_drop_um": ("um", 1e-6, "pos", False),
+           "edge_radius_mm": ("mm", 1e-3, "nonneg", False),
+           "misalignment_deg": ("deg", _DEG, "num", False)}
+#: scene key -> SI name in ``Scene.finite_length`` (and ``RollerProfile`` parameter)
+_FINITE_SI = {"roller_width_mm": "roller_width", "crown": "crown", "crown_radius_mm": "crown_radius",
+              "crown_drop_um": "crown_drop", "edge_radius_mm": "edge_radius",
+              "misalignment_deg": "misalignment"}
+# real bodies (femcam.bodies): the roller as a ring on a pin or needles, the cam on a shaft
+_SUPPORT = {"roller_support": ("", None, "str", False), "roller_bore_mm": ("mm", 1e-3, "pos", False),
+            "pin_radius_mm": ("mm", 1e-3, "pos", False),
+            "pin_clearance_um": ("um", 1e-6, "nonneg", False),
+            "needle_count": ("(count)", 1.0, "pos", False),
+            "needle_radius_mm": ("mm", 1e-3, "pos", False)}
+_FOLLOWER.update(_FINITE)
+_FOLLOWER.update(_SUPPORT)
+#: the follower keys each ``roller_support`` needs
+_SUPPORT_KEYS = {"solid": (), "pin": ("roller_bore_mm", "pin_radius_mm", "pin_clearance_um"),
+                 "needles": ("roller_bore_mm", "pin_radius_mm", "pin_clearance_um", "needle_count",
+                             "needle_radius_mm")}
+_CAM = {"face_width_mm": ("mm", 1e-3, "pos", False),
+        "bore_mm": ("mm", 1e-3, "pos", False)}  # shaft bore radius (femcam.bodies)
+
+# ---- [dynamics] ----------------------------------------------------------------------------------
+_DYNAMICS = {"mass_kg": ("kg", 1.0, "nonneg", True), "spring_N_per_m": ("N/m", 1.0, "nonneg", True),
+             "preload_N": ("N", 1.0, "nonneg", True),
+             "damping_N_s_per_m": ("N s/m", 1.0, "nonneg", False),
+             "damping_ratio": ("(dimensionless)", 1.0, "nonneg", False)}
+# follower-train dynamics (femcam.dynamics): model = "rigid" (eq. 11, default) | one_dof | two_dof
+_TRAIN = {"model": ("", None, "str", False), "steps_per_rev": ("(count)", 1.0, "pos", False),
+          "train_stiffness_N_per_m": ("N/m", 1.0, "pos", False),
+          "train_damping_ratio": ("(dimensionless)", 1.0, "nonneg", False),
+          "train_damping_N_s_per_m": ("N s/m", 1.0, "nonneg", False),
+          "second_mass_kg": ("kg", 1.0, "pos", False), "second_stiffness_N_per_m": ("N/m", 1.0, "pos", False),
+          "second_damping_ratio": ("(dimensionless)", 1.0, "nonneg", False),
+          "second_damping_N_s_per_m": ("N s/m", 1.0, "nonneg", False)}
+_DYNAMICS.update(_TRAIN)
+
+# ---- [materials.<body>] (cam, roller alias follower, pin, shaft) ---------------------------------
+_MATERIAL = {"E_GPa": ("GPa", 1e9, "pos", True), "nu": ("(dimensionless)", 1.0, "nu", True),
+             "hardness_MPa": ("MPa", 1e6, "pos", False), "name": ("", None, "str", False)}
+# assessment data (femcam.assess), kept in Scene.tribology["materials"]
+_MATERIAL_EXTRA = {"yield_strength_MPa": ("MPa", 1e6, "pos", False),
+                   "thermal_conductivity_W_per_m_K": ("W/(m K)", 1.0, "pos", False),
+                   "density_kg_per_m3": ("kg/m^3", 1.0, "pos", False),
+                   "specific_heat_J_per_kg_K": ("J/(kg K)", 1.0, "pos", False),
+                   "contact_fatigue_strength_MPa": ("MPa", 1e6, "pos", False),
+                   "contact_fatigue_cycles": ("cycles", 1.0, "pos", False),
+                   "contact_fatigue_exponent": ("(dimensionless)", 1.0, "pos", False),
+                   "shear_fatigue_limit_MPa": ("MPa", 1e6, "pos", False),
+                   "scuffing_temperature_C": ("degC", 1.0, "num", False)}
+_MATERIAL.update(_MATERIAL_EXTRA)
+#: material tables of the real bodies (femcam.bodies), besides cam and roller
+_BODY_MATERIALS = ("pin", "shaft")
+
+# ---- [contact], [lubricant], [surface] -----------------------------------------------------------
+_CONTACT = {"friction": ("(dimensionless)", 1.0, "nonneg", False), "plane": ("", None, "str", False),
+            "sliding": ("", None, "str", False)}
+_LUBRICANT = {"name": ("", None, "str", False), "source": ("", None, "str", False),
+              "viscosity_Pa_s": ("Pa s", 1.0, "pos", False), "temperature_C": ("degC", 1.0, "num", False),
+              "viscosity_temperature_coefficient_per_K": ("1/K", 1.0, "nonneg", False),
+              "kinematic_viscosity_40C_mm2_per_s": ("mm^2/s", 1e-6, "pos", False),
+              "kinematic_viscosity_100C_mm2_per_s": ("mm^2/s", 1e-6, "pos", False),
+              "pressure_viscosity_per_GPa": ("1/GPa", 1e-9, "pos", False),
+              "alpha_per_Pa": ("1/Pa", 1.0, "pos", False), "density_kg_per_m3": ("kg/m^3", 1.0, "pos", False)}
+_SURFACE = {k: ("um", 1e-6, "nonneg", False)
+            for k in ("cam_Ra_um", "roller_Ra_um", "cam_Rq_um", "roller_Rq_um")}
+
+# ---- coated and case-hardened bodies (femcam.layers): [materials.<body>.coating|case] -----------
+_COATING = {"thickness_um": ("um", 1e-6, "pos", True), "E_GPa": ("GPa", 1e9, "pos", True),
+            "nu": ("(dimensionless)", 1.0, "nu", True), "name": ("", None, "str", False),
+            "interface_shear_strength_MPa": ("MPa", 1e6, "pos", False),
+            "hardness_MPa": ("MPa", 1e6, "pos", False),
+            # coating wear (femcam.wear.coating): k directly, or Archard K with hardness_MPa
+            "wear_k_mm3_per_N_m": ("mm^3/(N m)", 1e-9, "pos", False),
+            "wear_K": ("(dimensionless)", 1.0, "pos", False)}
+_CASE = {"depth_mm": ("mm", 1e-3, "pos", True), "hardness_law": ("", None, "str", False),
+         "surface_hardness_HV": ("HV", 9.80665e6, "pos", False),
+         "core_hardness_HV": ("HV", 9.80665e6, "pos", False),
+         "surface_yield_MPa": ("MPa", 1e6, "pos", False), "core_yield_MPa": ("MPa", 1e6, "pos", False)}
+
+# ---- study settings read by `femcam sweep` (CLI flags override them): [fe], [sweep] ----------
+#: sweep methods: ``fe`` (the FE answers every contact angle), ``hertz`` (analytic only),
+#: ``auto`` (the cheapest model within the tolerance)
+METHODS = ("fe", "hertz", "auto")
+#: smallest accepted ``tolerance`` (relative p0 reuse error); see :mod:`femcam.sweep.families`
+TOLERANCE_FLOOR = 1e-4
+#: closed ranges of the real-valued study settings
+STUDY_RANGES = {"a_over_h": (2.0, 400.0), "tolerance": (TOLERANCE_FLOOR, 0.5)}
+_RANGES = STUDY_RANGES  # the name tests/test_scene_tables.py reads
+#: whole-number study settings and their smallest value
+STUDY_WHOLE = {"chunk_size": 1, "vtk_every": 0}
+_FLOOR_WHY = ("the reuse error is a discretisation effect of the order of the FE error itself "
+              "(~0.2 % at a_over_h = 10, smaller on finer meshes); below the floor nearly every "
+              "angle needs its own model. Refine a_over_h for more accurate p0")
+_FE = {"a_over_h": ("(elements per contact half-width)", 1.0, "pos", False),
+       "tolerance": ("(relative p0 reuse error)", 1.0, "pos", False)}
+_SWEEP = {"method": ("", None, "str", False), "angles_deg": ("", None, "str", False),
+          "chunk_size": ("angles", 1.0, "num", False), "vtk_every": ("angles", 1.0, "num", False),
+          "plots": ("", None, "bool", False)}
+
+
+def study_problem(key: str, x: float) -> str | None:
+    """The condition a study setting breaks, or None if it is accepted (the one range check).
+
+    Parameters
+    ----------
+    key : str
+        ``"a_over_h"`` (elements per contact half-width), ``"tolerance"`` (relative p0 reuse
+        error), ``"chunk_size"`` or ``"vtk_every"`` (angles).
+    x : float
+        The value, finite (dimensionless, or a count of angles).
+
+    Returns
+    -------
+    str or None
+        ``"must be ..."`` (the end of a ``"<name> = <value> <unit>: must be ..."`` message), or
+        None for an accepted value.
+
+    Examples
+    --------
+    >>> study_problem("a_over_h", 1.0)
+    'must be in [2, 400]'
+    >>> study_problem("chunk_size", 2.5)
+    'must be a whole number >= 1'
+    >>> study_problem("tolerance", 2e-3) is None
+    True
+    """
+    if key in STUDY_WHOLE:
+        lo = STUDY_WHOLE[key]
+        return None if x == int(x) and x >= lo else f"must be a whole number >= {lo}"
+    lo, hi = STUDY_RANGES[key]
+    if lo <= x <= hi:
+        return None
+    if key == "tolerance" and x < lo:
+        return f"must be >= {lo:g}: {_FLOOR_WHY}"
+    return f"must be in [{lo:g}, {hi:g}]"
+
+
+# ---- [wear] (femcam.wear.options) --------------------------------------------------------------
+_WEAR = {"K": ("(dimensionless)", 1.0, "nonneg", False),
+         "k_mm3_per_N_m": ("mm^3/(N m)", 1e-9, "nonneg", False),
+         "roller_model": ("", None, "str", False), "srr": ("(dimensionless)", 1.0, "num", False),
+         "J_kg_m2": ("kg m^2", 1.0, "pos", False), "T_drag_N_m": ("N m", 1.0, "nonneg", False),
+         "tip_radius_mm": ("mm", 1e-3, "pos", False), "cycles": ("revolutions", 1.0, "nonneg", False)}
+
+#: the accepted strings of the ``str`` keys
+_CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", "flat_faced"),
+            "plane": ("strain", "stress"), "sliding": ("+x", "-x"),
+            "model": ("rigid", "one_dof", "two_dof"),
+            "crown": ("none", "circular", "logarithmic"),
+            "method": METHODS, "roller_model": ("srr", "inertia"),
+            "roller_support": ("solid", "pin", "needles"),
+            "hardness_law": ("exponential", "linear")}

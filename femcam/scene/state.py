@@ -1,0 +1,314 @@
+"""The scene in SI (:class:`Scene`) and the analytic chain at cam angles (:class:`SceneState`):
+kinematics -> profile -> contact force, with the dense undercut check of the whole cam.
+
+Only numpy/scipy and the femcam analytic chain (kinematics, profile, loads, dynamics) are
+imported.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import numpy as np
+
+from ..dynamics import TrainModel, periodic_response
+from ..errors import ConvergenceError, InputError, UndercutError
+from ..kinematics import CamProgram, law
+from ..loads import FollowerDynamics, LoadResult, contact_force
+from ..materials import Material
+from ..profile import CamProfile, bool_intervals, cam_profile
+
+#: angles of the dense undercut check of Scene.analyse over one revolution (0.05 deg apart)
+UNDERCUT_CHECK_N = 7200
+
+
+def _dense_theta() -> np.ndarray:
+    """The ``UNDERCUT_CHECK_N`` angles (rad) of the dense undercut check."""
+    return np.linspace(0.0, 2.0 * math.pi, UNDERCUT_CHECK_N, endpoint=False)
+
+
+@dataclass(frozen=True)
+class SceneState:
+    """The analytic chain at cam angles ``theta`` (built by :meth:`Scene.analyse`); SI units.
+
+    Parameters
+    ----------
+    theta : ndarray, shape (n,), float
+        Cam angles (rad).
+    s, v, a, j : ndarray, shape (n,), float
+        Lift (m), velocity (m/s), acceleration (m/s^2), jerk (m/s^3) at ``omega``.
+    s1, s2 : ndarray, shape (n,), float
+        ds/dtheta (m/rad), d2s/dtheta2 (m/rad^2).
+    phi : ndarray, shape (n,), float
+        Pressure angle (rad).
+    rho : ndarray, shape (n,), float
+        Cam surface radius of curvature at the contact (m; < 0 concave, inf flat).
+    Fc : ndarray, shape (n,), float
+        Contact force (N; <= 0 at lift-off).
+    liftoff : ndarray, shape (n,), bool
+        Follower off the cam.
+    contact_x, contact_y : ndarray, shape (n,), float
+        Contact point in the cam frame (m).
+    profile : femcam.profile.CamProfile
+        The cam profile at ``theta`` (m, rad).
+    loads : femcam.loads.LoadResult
+        The contact force and lift-off (N).
+    undercut_intervals : list of (float, float)
+        Undercut angle intervals of the whole revolution (rad), from the dense check.
+    """
+
+    theta: np.ndarray
+    s: np.ndarray
+    v: np.ndarray
+    a: np.ndarray
+    j: np.ndarray
+    s1: np.ndarray
+    s2: np.ndarray
+    phi: np.ndarray
+    rho: np.ndarray
+    Fc: np.ndarray
+    liftoff: np.ndarray
+    contact_x: np.ndarray
+    contact_y: np.ndarray
+    profile: CamProfile
+    loads: LoadResult
+    undercut_intervals: list = field(default_factory=list)
+
+    @property
+    def undercut(self) -> np.ndarray:
+        """Undercut flags at the analysed angles ``theta`` (bool, shape (n,); see
+        ``undercut_intervals`` for the whole revolution)."""
+        return self.profile.undercut
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A cam-follower case in SI units (built by :func:`femcam.scene.load_scene`).
+
+    Parameters
+    ----------
+    name : str
+        Case name.
+    program : femcam.kinematics.CamProgram
+        The cam program (segment angles in rad, lifts in m).
+    follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
+        Follower geometry (m).
+    dynamics : femcam.loads.FollowerDynamics
+        Rigid-follower dynamics of seed 002 eq. 11 (kg, N/m, N, N s/m).
+    omega : float
+        Cam speed (rad/s).
+    cam, roller : femcam.materials.Material
+        Cam and follower materials (Pa).
+    length : float
+        Axial contact length (face width / cam thickness, m).
+    mu : float
+        Friction coefficient (dimensionless).
+    plane : str
+        ``"strain"`` or ``"stress"``.
+    sliding : str or None
+        ``"+x"`` or ``"-x"``: direction of the friction traction on the cam. The sweep takes the
+        traction from the mechanism (femcam.sweep.realcam); this key is an explicit override
+        (full sliding in this direction at every angle).
+    description, source : str
+        Free text of the scene file.
+    fe, sweep : dict
+        The checked study settings of [fe] (``a_over_h``, ``tolerance``: dimensionless) and
+        [sweep] (``method``, ``angles_deg``, ``chunk_size``, ``vtk_every`` in angles,
+        ``plots``): ``femcam sweep`` uses them where no flag is given.
+    wear : dict
+        The [wear] table as written (checked at load; SI values: :mod:`femcam.wear.options`).
+    finite_length : dict
+        The femcam.halfspace keys in SI (``roller_width``, ``cam_width``, ``crown_radius``,
+        ``crown_drop``, ``edge_radius`` in m, ``misalignment`` in rad, ``crown``); empty when
+        not given or invalid.
+    layers : dict
+        Coatings and cases per body (``{body: {"coating": {...}, "case": {...}}}``, SI, checked;
+        :func:`femcam.layers.scene_layers` builds them).
+    source_path : str
+        The scene file ("" if built in code).
+    tribology : dict
+        Checked SI values of the assessment keys: ``lubricant``, ``surface`` (m),
+        ``oil_temperature_C`` (degC), ``materials`` (per body).
+    raw : dict
+        The parsed TOML.
+    train : femcam.dynamics.TrainModel or None
+        The elastic follower train of ``[dynamics] model = one_dof | two_dof``; None: rigid
+        (eq. 11).
+    steps_per_rev : int or None
+        Time steps per revolution of the train response (None: its default).
+    bodies : dict
+        Real bodies (femcam.bodies): roller support geometry (``Ro``, ``Ri``, ``Rp``, ``c``,
+        ``r_n`` in m, ``Z`` needles, ``support``), ``cam_bore`` (m) and the ``"pin"`` /
+        ``"shaft"`` Materials; empty for the solid roller.
+    tip_radius : float or None
+        Knife-edge tip radius (m, ``[follower] tip_radius_mm``); None when not given
+        (femcam.fe.followers).
+    face_length : float or None
+        Flat-face length (m, ``[follower] face_length_mm``); None when not given.
+    """
+
+    name: str
+    program: CamProgram
+    follower: object
+    dynamics: FollowerDynamics
+    omega: float
+    cam: Material
+    roller: Material
+    length: float
+    mu: float = 0.0
+    plane: str = "strain"
+    sliding: str | None = None
+    description: str = ""
+    source: str = ""
+    fe: dict = field(default_factory=dict)
+    wear: dict = field(default_factory=dict)
+    finite_length: dict = field(default_factory=dict)
+    layers: dict = field(default_factory=dict)
+    source_path: str = ""
+    tribology: dict = field(default_factory=dict)
+    raw: dict = field(default_factory=dict, repr=False)
+    train: TrainModel | None = None
+    steps_per_rev: int | None = None
+    bodies: dict = field(default_factory=dict)
+    sweep: dict = field(default_factory=dict)
+    tip_radius: float | None = None
+    face_length: float | None = None
+
+    @property
+    def rpm(self) -> float:
+        """Cam speed (rpm)."""
+        return self.omega * 60.0 / (2.0 * math.pi)
+
+    @cached_property
+    def _dense_undercut(self) -> tuple:
+        """``(flags, message)`` of the dense undercut check on :func:`_dense_theta` (``message``:
+        the :class:`~femcam.errors.UndercutError` text of :func:`~femcam.profile.cam_profile`,
+        or None). Computed once per scene (the scene is immutable), not per :meth:`analyse`
+        call (the sweep analyses chunk by chunk)."""
+        dense = _dense_theta()
+        dd = self.program.derivatives(dense)
+        try:
+            return cam_profile(self.follower, dense, dd.s, dd.s1, dd.s2).undercut, None
+        except UndercutError as exc:
+            flags = cam_profile(self.follower, dense, dd.s, dd.s1, dd.s2, allow_undercut=True).undercut
+            return flags, str(exc)
+
+    @cached_property
+    def dynamic_response(self):
+        """Periodic response of the follower train (:class:`femcam.dynamics.DynamicsResult`),
+        computed once per scene; None for the rigid model (eq. 11)."""
+        if self.train is None:
+            return None
+        return periodic_response(self.train, self.program, self.omega, steps_per_rev=self.steps_per_rev)
+
+    def undercut_check(self, theta=None, undercut=None) -> list:
+        """Undercut intervals of the whole cam, found on a dense grid.
+
+        The profile is checked on a dense grid of ``UNDERCUT_CHECK_N`` angles over one
+        revolution (0.05 deg apart; computed once per scene) merged with ``theta``, so a narrow
+        undercut band between coarse analysis angles is still found. Vectorised.
+
+        Parameters
+        ----------
+        theta : array_like of float, optional
+            Extra cam angles (rad, taken mod 2 pi).
+        undercut : array_like of bool, optional
+            The already computed undercut flags at ``theta`` (one per angle).
+
+        Returns
+        -------
+        list of (float, float)
+            ``[(start, end), ...]`` (rad, in [0, 2 pi)).
+
+        Raises
+        ------
+        InputError
+            ``undercut`` without one flag per angle of ``theta``.
+        """
+        dense, flags = _dense_theta(), self._dense_undercut[0]
+        if theta is None:
+            return bool_intervals(dense, flags)
+        extra = np.mod(np.ravel(np.asarray(theta, float)), 2.0 * math.pi)
+        if undercut is None:
+            de = self.program.derivatives(extra)
+            undercut = cam_profile(self.follower, extra, de.s, de.s1, de.s2,
+                                   allow_undercut=True).undercut
+        undercut = np.ravel(np.asarray(undercut, bool))
+        if undercut.size != extra.size:
+            raise InputError(f"undercut has {undercut.size} flags: must have one per theta "
+                             f"({extra.size} angles)")
+        th = np.concatenate([dense, extra])
+        order = np.argsort(th, kind="stable")
+        return bool_intervals(th[order], np.concatenate([flags, undercut])[order])
+
+    def analyse(self, theta, *, allow_undercut: bool = False) -> SceneState:
+        """Kinematics, profile and contact force at cam angles ``theta``, vectorised.
+
+        Undercut is a property of the whole cam, so besides ``theta`` the profile is checked on a
+        dense grid over one revolution (:meth:`undercut_check`).
+
+        ``Fc`` is seed 002's eq. 11 (rigid follower) unless ``[dynamics] model`` is one_dof or
+        two_dof: then it is the periodic contact force of the elastic train
+        (:attr:`dynamic_response`, interpolated to ``theta``; free flight is ``liftoff``).
+
+        Parameters
+        ----------
+        theta : float or array_like of float
+            Cam angles (rad).
+        allow_undercut : bool
+            Return the state of an undercut cam instead of raising.
+
+        Returns
+        -------
+        SceneState
+            SI values at ``theta``; ``undercut_intervals`` (rad, in [0, 2 pi)) of the whole cam.
+
+        Raises
+        ------
+        UndercutError
+            An undercut cam (angle ranges in degrees), unless ``allow_undercut=True``.
+        ConvergenceError
+            A train response that is not one-periodic.
+        """
+        d = self.program.derivatives(theta)
+        w = self.omega
+        v, a, j = w * d.s1, w**2 * d.s2, w**3 * d.s3
+        p = cam_profile(self.follower, d.theta, d.s, d.s1, d.s2, allow_undercut=allow_undercut)
+        intervals = self.undercut_check(d.theta, p.undercut)
+        if intervals and not allow_undercut:
+            # cam_profile passed on theta, so the dense grid found it (and holds the message)
+            raise UndercutError(f"{self._dense_undercut[1]} (found by the dense check on "
+                                f"{UNDERCUT_CHECK_N} angles over one revolution; the analysed "
+                                "angles miss it)")
+        if self.train is None:
+            r = contact_force(self.dynamics, d.theta, d.s, v, a, p.phi)
+        else:  # the dynamic contact force of the periodic train response, at theta
+            res = self.dynamic_response
+            if not res.converged:
+                raise ConvergenceError(f"[dynamics] model = {res.model!r} at {self.rpm:g} rpm: {res.message}")
+            r = res.load_result(d.theta, p.phi)
+        return SceneState(theta=np.asarray(d.theta, float), s=d.s, v=v, a=a, j=j, s1=d.s1, s2=d.s2,
+                          phi=p.phi, rho=p.rho, Fc=r.Fc, liftoff=r.liftoff, contact_x=p.contact_x,
+                          contact_y=p.contact_y, profile=p, loads=r, undercut_intervals=intervals)
+
+    def with_law(self, name: str, **params) -> Scene:
+        """The same scene with every rise/fall segment using one motion law.
+
+        Parameters
+        ----------
+        name : str
+            Motion law name (:data:`femcam.kinematics.LAW_NAMES`).
+        **params
+            Law parameters (e.g. ``control_points`` of ``"bezier"``, normalised lift).
+
+        Returns
+        -------
+        Scene
+            A copy with the new program (dwells unchanged).
+        """
+        lw = law(name, **params)
+        segs = [s if s.law is None else dataclasses.replace(s, law=lw) for s in self.program.segments]
+        return dataclasses.replace(self, program=CamProgram(segs))
