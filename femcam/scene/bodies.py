@@ -13,9 +13,39 @@ from .schema import _BODY_MATERIALS, _FOLLOWER, _SUPPORT_KEYS
 
 
 def roller_support_problems(*, Ro, Ri, support, Rp, c, Z, r_n) -> list[str]:
-    """Geometry problems of a ring support (SI in, messages in the scene's mm / um): bore inside
-    the roller, pin + clearance = bore (pin), pin + 2 needles + clearance = bore and needles
-    that fit around the pitch circle (needles)."""
+    """Geometry problems of a ring support: bore inside the roller, pin + clearance = bore
+    (pin), pin + 2 needles + clearance = bore and needles that fit around the pitch circle
+    (needles). Used by the scene loader and by :mod:`femcam.bodies.geometry`.
+
+    Parameters
+    ----------
+    Ro : float
+        Roller (ring) outer radius (m).
+    Ri : float
+        Roller bore radius (m).
+    support : str
+        ``"solid"`` (no problems), ``"pin"`` or ``"needles"``.
+    Rp : float
+        Pin radius (m).
+    c : float
+        Radial clearance (m).
+    Z : float
+        Number of needles (a whole number >= 3 for ``"needles"``).
+    r_n : float
+        Needle radius (m).
+
+    Returns
+    -------
+    list of str
+        One message a problem, in the scene's units (mm, um); empty when the geometry fits.
+
+    Examples
+    --------
+    >>> roller_support_problems(Ro=0.01, Ri=0.005, support="pin", Rp=0.00499, c=1e-5, Z=0, r_n=0)
+    []
+    >>> roller_support_problems(Ro=0.01, Ri=0.012, support="pin", Rp=0.005, c=0.0, Z=0, r_n=0)
+    ['roller_bore_mm = 12 mm: must be in (0, roller_radius_mm = 10 mm)']
+    """
     out = []
     if support == "solid":
         return out

@@ -54,14 +54,17 @@ class ModelCache:
         Parameters
         ----------
         cp : ContactParams
+            The scene's follower radius and face width (m), materials, plane (part of the key).
         rho_ref, a_ref : float
             Reference cam radius and half-width (m) the mesh is built for.
         options : SweepOptions
-            ``a_over_h``.
+            ``a_over_h`` (elements per contact half-width) of the mesh.
 
         Returns
         -------
         femcam.fe.ContactModel
+            The model of this key: the cached one (now the most recently used), or one built
+            now by :func:`build_model` and counted in :attr:`stats`.
         """
         return self._get_or_build(_key(cp, rho_ref, a_ref, options),
                                   lambda: build_model(cp, rho_ref, a_ref, options), memo=True)
@@ -98,14 +101,15 @@ class ModelCache:
         Parameters
         ----------
         model : femcam.fe.ContactModel
+            A model of this cache (results of other models are not remembered).
         F : float
             Contact force (N).
         rho : float
             Cam radius of curvature (m).
         mu : float
-            Friction coefficient.
+            Friction coefficient (dimensionless).
         sliding : int
-            +1 or -1.
+            Direction of the friction traction on the cam: +1 (+x) or -1 (-x).
         check : bool
             Refuse load cases the model does not cover.
         Q : float, optional
@@ -136,9 +140,11 @@ class ModelCache:
         Parameters
         ----------
         cp : ContactParams
+            Follower radius and face width (m), materials, plane, friction ``mu``.
         rho, a : float
             The load case's cam radius and Hertz half-width (m): the fresh mesh is graded to them.
         options : SweepOptions
+            ``a_over_h`` (elements per contact half-width) of the fresh mesh.
         F : float
             Contact force (N).
         load : tuple
@@ -171,13 +177,34 @@ class ModelCache:
         return p0
 
     def real_cam(self, key: tuple, build):
-        """A :class:`femcam.fe.choice.RealCam` of the models table (key ``("real_cam", ...)``),
-        cached or built now by ``build()`` (flat-faced sweeps; LRU as the family models)."""
+        """A real-cam model of the models table (flat-faced sweeps; LRU as the family models).
+
+        Parameters
+        ----------
+        key : tuple
+            ``("real_cam", ...)``: what the model is built from.
+        build : callable
+            ``build() -> femcam.fe.choice.RealCam``, called on a miss.
+
+        Returns
+        -------
+        femcam.fe.choice.RealCam
+            Cached, or built now (counted in :attr:`stats`).
+        """
         return self._get_or_build(key, build)
 
     def forget(self, cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions) -> None:
-        """Drop the model of references ``(rho_ref, a_ref)`` (m) and its solved cases (the
-        arguments as in :meth:`model_for`)."""
+        """Drop the model of references ``(rho_ref, a_ref)`` and its solved cases.
+
+        Parameters
+        ----------
+        cp : ContactParams
+            The contact parameters the model was built for.
+        rho_ref, a_ref : float
+            Its reference cam radius and half-width (m).
+        options : SweepOptions
+            Its ``a_over_h``.
+        """
         with self._lock:
             m = self._models.pop(_key(cp, rho_ref, a_ref, options), None)
             if m is not None:
@@ -215,14 +242,16 @@ def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepO
     Parameters
     ----------
     cp : ContactParams
+        Follower radius Rr (m), face width (m), cam and roller materials, plane.
     rho_ref, a_ref : float
-        Reference cam radius and half-width (m).
+        Reference cam radius and contact half-width (m): the mesh is graded to them.
     options : SweepOptions
-        ``a_over_h``.
+        Its ``a_over_h`` sets the element size ``a_ref / a_over_h`` (m) in the contact zone.
 
     Returns
     -------
     femcam.fe.ContactModel
+        Built and factorised now (not cached: :meth:`ModelCache.model_for` caches).
     """
     return ContactModel.build(Rr=cp.Rr, rho_ref=rho_ref, cam=cp.cam, roller=cp.roller,
                               length=cp.length, a_ref=a_ref,
