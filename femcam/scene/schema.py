@@ -4,18 +4,18 @@ ranges of the study settings.
 A key table maps ``key -> (unit shown to the user, SI factor, check, required)``; the checks
 are applied by :class:`femcam.scene.checker._Checker`:
 
-======== ==================================================================
-check    accepted value
-======== ==================================================================
-``pos``    a finite number > 0
-``nonneg`` a finite number >= 0
-``num``    any finite number
-``nu``     Poisson's ratio, in (-1, 0.5)
-``str``    a string (one of :data:`_CHOICES` where the key is listed there)
-``list``   a list of numbers
-``seglist`` the ``[[program.segment]]`` array (checked by :mod:`femcam.scene.program`)
-``bool``   true or false
-======== ==================================================================
+=============== ==============================================================
+check           accepted value
+=============== ==============================================================
+``pos``         a finite number > 0
+``nonneg``      a finite number >= 0
+``num``         any finite number
+``nu``          Poisson's ratio, in (-1, 0.5)
+``str``         a string (one of ``_CHOICES`` where the key is listed there)
+``list``        a list of numbers
+``seglist``     the ``[[program.segment]]`` array (checked by :mod:`femcam.scene.program`)
+``bool``        true or false
+=============== ==============================================================
 
 The numbers of ``[fe]`` and ``[sweep]`` (``a_over_h``, ``tolerance``, ``chunk_size``,
 ``vtk_every``) are then checked by :func:`study_problem` (range or whole number).
