@@ -242,16 +242,14 @@ def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepO
     Parameters
     ----------
     cp : ContactParams
-        Follower radius Rr (m), face width (m), cam and roller materials, plane.
     rho_ref, a_ref : float
-        Reference cam radius and contact half-width (m): the mesh is graded to them.
+        Reference cam radius and half-width (m).
     options : SweepOptions
-        Its ``a_over_h`` sets the element size ``a_ref / a_over_h`` (m) in the contact zone.
+        ``a_over_h``.
 
     Returns
     -------
     femcam.fe.ContactModel
-        Built and factorised now (not cached: :meth:`ModelCache.model_for` caches).
     """
     return ContactModel.build(Rr=cp.Rr, rho_ref=rho_ref, cam=cp.cam, roller=cp.roller,
                               length=cp.length, a_ref=a_ref,
