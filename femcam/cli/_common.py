@@ -1,4 +1,6 @@
-"""Shared checks of the subcommands: the output directory and the one-line error text.
+"""Shared pieces of the subcommands: the argparse blocks every subcommand repeats
+(:func:`add_scene_out`, :func:`add_law_override`, :func:`add_no_plots`), the output directory
+and the one-line error text.
 
 A subcommand calls :func:`out_dir` before any work, so that ``--out`` naming an existing
 file, a path under a file or a directory it cannot create is one line naming the flag and the
@@ -17,6 +19,45 @@ from pathlib import Path
 from .. import _validate
 from ..errors import InputError
 from ..kinematics import LAW_NAMES
+
+#: motion laws a flag can name alone (``bezier`` and ``polynomial`` need control points)
+NAMED_LAWS = tuple(n for n in LAW_NAMES if n not in ("bezier", "polynomial"))
+
+
+def add_scene_out(p, scene_help: str = "scene file", *, out_help: str = "output directory",
+                  out_required: bool = True) -> None:
+    """Add the positional ``SCENE.toml`` and the ``--out DIR`` flag.
+
+    Parameters
+    ----------
+    p : argparse.ArgumentParser
+        The subcommand's parser.
+    scene_help : str
+        Help text of the scene argument.
+    out_help : str
+        Help text of ``--out``.
+    out_required : bool
+        ``--out`` must be given (False: default None, the subcommand picks the directory).
+    """
+    p.add_argument("scene", metavar="SCENE.toml", help=scene_help)
+    p.add_argument("--out", required=out_required, default=None, metavar="DIR", help=out_help)
+
+
+def add_law_override(p) -> None:
+    """Add ``--law NAME``, overriding the scene's rise/fall motion law (:data:`NAMED_LAWS`).
+
+    Parameters
+    ----------
+    p : argparse.ArgumentParser
+        The subcommand's parser; the value is checked with :func:`check_law` before any work.
+    """
+    p.add_argument("--law", default=None, metavar="NAME",
+                   help="override the rise/fall motion law of the scene: " + ", ".join(NAMED_LAWS))
+
+
+def add_no_plots(p) -> None:
+    """Add ``--no-plots`` (``args.no_plots``, default False) to the parser ``p``."""
+    p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
 
 
 def out_dir(path, flag: str = "--out", *, create: bool = True) -> Path:

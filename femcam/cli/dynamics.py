@@ -22,19 +22,18 @@ from ..dynamics import jump_speed, rpm_sweep
 from ..errors import InputError
 from ..scene import load_scene
 from ..viz.dynamics import plot_force, plot_rpm_sweep
-from ._common import out_dir, plain
+from ._common import add_no_plots, add_scene_out, out_dir, plain
 
 
 def register(subparsers) -> None:
     p = subparsers.add_parser("dynamics", help="follower-train dynamics: contact force, jump speed",
                               description=plain(__doc__))
-    p.add_argument("scene", metavar="SCENE.toml", help="scene with [dynamics] model = one_dof or two_dof")
-    p.add_argument("--out", required=True, metavar="DIR", help="output directory")
+    add_scene_out(p, "scene with [dynamics] model = one_dof or two_dof")
     p.add_argument("--rpm-sweep", metavar="START:STOP:STEP", default=None,
                    help="also sweep the cam speed (rpm, stop inclusive) and find the jump speed")
     p.add_argument("--workers", type=int, default=1, metavar="N",
                    help="processes for the rpm sweep (default 1)")
-    p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    add_no_plots(p)
     p.set_defaults(func=run)
 
 

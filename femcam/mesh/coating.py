@@ -102,11 +102,11 @@ def mesh_coated_body(gmsh, lay: BodyLayout, opts: MeshOptions) -> BodyMesh:
     Parameters
     ----------
     gmsh : module
-        gmsh of an open session with an empty current model.
+        The gmsh module; :func:`~femcam.mesh.mesh_body` has added the body's empty model.
     lay : BodyLayout
-        The body's sizes (m).
+        Fine spacing ``h``, fine zone ``xf``, arc half-width ``W`` and body size ``L`` (m).
     opts : MeshOptions
-        Mesh options with ``coat_body == lay.name``.
+        ``coat_body == lay.name``; ``coat_thickness`` (m) and ``coat_layers`` set the band.
 
     Returns
     -------
