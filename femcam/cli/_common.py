@@ -56,16 +56,39 @@ def add_law_override(p) -> None:
 
 
 def add_no_plots(p) -> None:
-    """Add ``--no-plots`` (``args.no_plots``, default False) to the parser ``p``."""
+    """Add ``--no-plots`` (``args.no_plots``, default False).
+
+    Parameters
+    ----------
+    p : argparse.ArgumentParser
+        The subcommand's parser.
+    """
     p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
 
 
 def out_dir(path, flag: str = "--out", *, create: bool = True) -> Path:
     """Create the output directory ``path`` (with parents) and check it is writable.
 
-    Raises :class:`~femcam.errors.InputError` naming ``flag`` and the path when ``path`` is an
-    existing file, lies under a file, or cannot be created or written. ``create=False`` only
-    checks (the first existing component of the path must be a writable directory).
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The directory.
+    flag : str
+        The flag named in the error (``--out``, ``--csv (its directory)``, ...).
+    create : bool
+        False: only check (the first existing component of the path must be a writable
+        directory).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+
+    Raises
+    ------
+    InputError
+        Naming ``flag`` and the path when ``path`` is an existing file, lies under a file, or
+        cannot be created or written.
     """
     p = Path(path)
     for q in (p, *p.parents):  # the first existing component must be a directory
@@ -89,7 +112,18 @@ def out_dir(path, flag: str = "--out", *, create: bool = True) -> Path:
 
 
 def os_error_line(exc: OSError) -> str:
-    """``"No space left on device: 'DIR/sweep.csv'"``: the reason and the path(s) of ``exc``."""
+    """The reason and the path(s) of an ``OSError`` on one line.
+
+    Parameters
+    ----------
+    exc : OSError
+        The error (``strerror``, ``filename``, ``filename2``).
+
+    Returns
+    -------
+    str
+        e.g. ``"No space left on device: 'DIR/sweep.csv'"`` (with a hint on a full disk).
+    """
     why = exc.strerror or str(exc) or type(exc).__name__
     if exc.errno == errno.ENOSPC:
         why += " (free some space, then rerun; a sweep can continue with --resume)"
@@ -98,8 +132,20 @@ def os_error_line(exc: OSError) -> str:
 
 
 def plain(doc: str, paragraphs: int = 1) -> str:
-    """The first ``paragraphs`` of a module docstring for ``--help``, without RST markup
-    (````x```` -> ``x``, ``:func:`~a.b``` -> ``b``)."""
+    """The first paragraphs of a module docstring for ``--help``, without RST markup.
+
+    Parameters
+    ----------
+    doc : str
+        The docstring.
+    paragraphs : int
+        How many blank-line separated paragraphs to keep.
+
+    Returns
+    -------
+    str
+        The text, ````x```` -> ``x`` and ``:func:`~a.b``` -> ``b``.
+    """
     text = "\n\n".join(doc.strip().split("\n\n")[:paragraphs])
     text = re.sub(r":[a-z]+:`~?([^`]+)`", lambda m: m.group(1).split(".")[-1]
                   if m.group(0).count("~") else m.group(1), text)
@@ -107,8 +153,25 @@ def plain(doc: str, paragraphs: int = 1) -> str:
 
 
 def check_law(flag: str, name: str) -> str:
-    """A motion-law name given on the command line (``--law``, ``--laws``), checked before any
-    work: an :class:`~femcam.errors.InputError` naming the flag, the value and a did-you-mean."""
+    """Check a motion-law name given on the command line, before any work.
+
+    Parameters
+    ----------
+    flag : str
+        The flag (``--law``, ``--laws``), named in the error.
+    name : str
+        The value given.
+
+    Returns
+    -------
+    str
+        ``name``, one of :data:`~femcam.kinematics.LAW_NAMES`.
+
+    Raises
+    ------
+    InputError
+        Naming the flag, the value and a did-you-mean.
+    """
     if name not in LAW_NAMES:
         near = difflib.get_close_matches(name, list(LAW_NAMES), n=1, cutoff=0.6)
         hint = f" (did you mean {near[0]!r}?)" if near else ""

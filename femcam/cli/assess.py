@@ -27,6 +27,13 @@ from ._common import add_no_plots, add_scene_out, out_dir, plain
 
 
 def register(subparsers) -> None:
+    """Add the ``assess`` sub-parser (film, flash temperature, fatigue, safety factors) and set its ``func``.
+
+    Parameters
+    ----------
+    subparsers : argparse._SubParsersAction
+        Where ``femcam``'s parser (:func:`femcam.cli.build_parser`) collects its subcommands.
+    """
     p = subparsers.add_parser("assess", help="will it fail? film, flash temperature, fatigue, safety factors",
                               description=plain(__doc__))
     add_scene_out(p, "scene file (with [lubricant], [surface], ...)")

@@ -26,6 +26,13 @@ from ._common import add_no_plots, add_scene_out, out_dir, plain
 
 
 def register(subparsers) -> None:
+    """Add the ``dynamics`` sub-parser (follower-train response, jump speed) and set its ``func``.
+
+    Parameters
+    ----------
+    subparsers : argparse._SubParsersAction
+        Where ``femcam``'s parser (:func:`femcam.cli.build_parser`) collects its subcommands.
+    """
     p = subparsers.add_parser("dynamics", help="follower-train dynamics: contact force, jump speed",
                               description=plain(__doc__))
     add_scene_out(p, "scene with [dynamics] model = one_dof or two_dof")
@@ -86,6 +93,18 @@ def _write_sweep(out: Path, scene, sw):
 
 
 def run(args) -> int:
+    """``femcam dynamics``: periodic response, optional rpm sweep; CSV and PNG files.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The parsed flags (``scene``, ``out``, ``rpm_sweep`` in rpm, ``workers``, ``no_plots``).
+
+    Returns
+    -------
+    int
+        Exit code 0 (errors are raised as :class:`~femcam.errors.FemcamError`).
+    """
     out_dir(args.out, create=False)  # checked before any work, created below
     rpm = _rpm_range(args.rpm_sweep) if args.rpm_sweep else None  # checked before any work
     scene = load_scene(args.scene)

@@ -35,7 +35,13 @@ COLUMNS = (*((_SWEEP_COLUMNS[a][0], a, _SWEEP_COLUMNS[a][1]) for a in _ANALYTIC)
 
 
 def register(subparsers) -> None:
-    """Add the ``run`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
+    """Add the ``run`` sub-parser (the analytic chain of a scene) and set its ``func``.
+
+    Parameters
+    ----------
+    subparsers : argparse._SubParsersAction
+        Where ``femcam``'s parser (:func:`femcam.cli.build_parser`) collects its subcommands.
+    """
     p = subparsers.add_parser(
         "run", help="kinematics, profile and load tables of a scene, with PNG plots",
         description=plain(__doc__))
@@ -67,7 +73,22 @@ def _undercut_intervals(st):
 
 
 def summary_lines(scene, st, phi_limit_deg: float = 30.0) -> list[str]:
-    """Summary of a SceneState: max |phi|, min |rho|, Fc range, lift-off and undercut."""
+    """Summary of the analytic chain: max |phi|, min |rho|, Fc range, lift-off and undercut.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene (its follower kind).
+    st : femcam.scene.SceneState
+        The chain at the scene's angles (SI, rad).
+    phi_limit_deg : float
+        Pressure-angle limit the maximum is checked against (deg).
+
+    Returns
+    -------
+    list of str
+        One line per quantity, angles in deg, lengths in mm, forces in N.
+    """
     phi = np.degrees(np.abs(st.phi))
     i_phi = int(np.argmax(phi))
     rho = np.asarray(st.rho, float)
@@ -111,7 +132,24 @@ def _table(st, every_deg: float) -> str:
 
 
 def write_csv(path, scene, st, command: str) -> Path:
-    """All angles, unit-suffixed columns, ``#`` provenance header."""
+    """Write the analytic chain at all angles as CSV (:data:`COLUMNS`, units in the names).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        Output file.
+    scene : femcam.scene.Scene
+        The scene (provenance header: file, name, rpm, follower).
+    st : femcam.scene.SceneState
+        The chain (SI, rad; converted to the column units).
+    command : str
+        The command line, written in the ``#`` provenance header.
+
+    Returns
+    -------
+    pathlib.Path
+        The path written.
+    """
     path = Path(path)
     cols = [(n, np.asarray(getattr(st, a), float) * f) for n, a, f in COLUMNS]
     with open(path, "w", newline="") as fh:

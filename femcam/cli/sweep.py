@@ -26,7 +26,13 @@ from ._common import add_law_override, add_scene_out, check_law, out_dir, plain
 
 
 def register(subparsers) -> None:
-    """Add the ``sweep`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
+    """Add the ``sweep`` sub-parser (the FE or Hertz sweep over cam angle) and set its ``func``.
+
+    Parameters
+    ----------
+    subparsers : argparse._SubParsersAction
+        Where ``femcam``'s parser (:func:`femcam.cli.build_parser`) collects its subcommands.
+    """
     p = subparsers.add_parser(
         "sweep", help="FE contact sweep over cam angle (CSV/NPZ, VTK series, plots)",
         description=plain(__doc__, 3),
@@ -101,8 +107,21 @@ def _default_text(dest: str, note: str = "") -> str:
 
 
 def resolve_settings(args, scene) -> list[str]:
-    """Fill the settings not given as flags from the scene's [fe]/[sweep] tables, else the
-    defaults (flag > scene > default). Returns the ``[table] key = value`` taken from the scene."""
+    """Fill the settings not given as flags: flag > scene [fe]/[sweep] table > default.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The parsed flags; the missing :data:`SETTINGS` are set in place (scene units: deg,
+        a/h, relative tolerance, angles).
+    scene : femcam.scene.Scene
+        The scene (its ``fe`` and ``sweep`` tables).
+
+    Returns
+    -------
+    list of str
+        ``[table] key = value`` of each setting taken from the scene.
+    """
     used = []
     for dest, (table, key, default) in SETTINGS.items():
         if getattr(args, dest) is not None:
@@ -117,8 +136,22 @@ def resolve_settings(args, scene) -> list[str]:
 
 
 def useful_workers(requested, n_angles: int, chunk_size: int) -> tuple:
-    """``(workers, note)``: an integer request capped at the CPU cores and the number of chunks
-    (more processes than either only wait); ``note`` says so ("" when not capped)."""
+    """Cap a worker count at the CPU cores and the number of chunks (more only wait).
+
+    Parameters
+    ----------
+    requested : int or str
+        ``--workers`` after validation (an int, or ``"auto"``, passed through).
+    n_angles : int
+        Number of cam angles.
+    chunk_size : int
+        Angles per chunk.
+
+    Returns
+    -------
+    (int or str, str)
+        ``(workers, note)``; ``note`` says why it was capped ("" when not).
+    """
     if not isinstance(requested, int):
         return requested, ""
     cores = os.cpu_count() or 1

@@ -42,7 +42,22 @@ def surface_height(x, R):
 
 
 def body_size(R: float, cap: float | None, default_cap: float) -> float:
-    """Body size ``L = min(|R|, cap)`` (m); ``default_cap`` (m) where ``cap`` is None."""
+    """Body size ``L = min(|R|, cap)``.
+
+    Parameters
+    ----------
+    R : float
+        Signed surface radius (m; inf flat).
+    cap : float or None
+        Size cap (m); None: ``default_cap``.
+    default_cap : float
+        Cap used when ``cap`` is None (m; inf: none).
+
+    Returns
+    -------
+    float
+        L (m).
+    """
     L = abs(R) if math.isfinite(R) else math.inf
     c = cap if cap is not None else default_cap
     return min(L, c)
@@ -84,7 +99,25 @@ class BodyLayout:
 
 
 def body_layout(name: str, R: float, L: float, a_ref: float, opts: MeshOptions) -> BodyLayout:
-    """The :class:`BodyLayout` of one body (``R``, ``L``, ``a_ref`` in m).
+    """The :class:`BodyLayout` of one body.
+
+    Parameters
+    ----------
+    name : str
+        The body (``"cam"`` or ``"roller"``).
+    R : float
+        Signed surface radius (m; < 0 concave, inf flat).
+    L : float
+        Body size (m).
+    a_ref : float
+        Reference half-width (m).
+    opts : MeshOptions
+        Mesh options (fine zone, element sizes).
+
+    Returns
+    -------
+    BodyLayout
+        ``h``, ``n_fine``, ``xf`` (a whole number of ``h``), ``W = 0.9 L``, ``lc`` (m).
 
     Raises
     ------
@@ -107,10 +140,22 @@ def outline(gmsh, lay: BodyLayout):
     """The body's outline: three surface arcs (the middle one is the fine zone ``|x| <= xf``),
     the sides and the fixed bottom at ``y = -L``.
 
+    Parameters
+    ----------
+    gmsh : module
+        gmsh with the body's (empty) current model.
+    lay : BodyLayout
+        The body's sizes (m).
+
     Returns
     -------
     (list of int, int, int)
         gmsh tags ``(arcs, bottom, surface)``.
+
+    Raises
+    ------
+    InputError
+        The arc reaches the fixed support.
     """
     geo = gmsh.model.geo
     R, L, W, xf, lc = lay.R, lay.L, lay.W, lay.xf, lay.lc
@@ -133,9 +178,23 @@ def outline(gmsh, lay: BodyLayout):
 
 
 def size_field(gmsh, fine_curve: int, lay: BodyLayout, opts: MeshOptions) -> None:
-    """Element size ``h`` within ``fine_depth * a_ref`` of the fine curve (gmsh tag), growing
-    with slope ``growth`` to ``lc``; size-from-points/curvature/boundary switched off (they
-    override the field)."""
+    """Set the background size field: ``h`` near the fine curve, growing to ``lc``.
+
+    The size is ``h`` within ``fine_depth * a_ref`` of the fine curve and grows with slope
+    ``growth`` up to ``lc``; size-from-points/curvature/boundary are switched off (they
+    override the field).
+
+    Parameters
+    ----------
+    gmsh : module
+        gmsh with the body's synchronised geometry.
+    fine_curve : int
+        gmsh tag of the fine-zone curve.
+    lay : BodyLayout
+        The body's sizes (m).
+    opts : MeshOptions
+        ``fine_depth`` (x a_ref) and ``growth`` (-).
+    """
     h, lc, a_ref = lay.h, lay.lc, lay.a_ref
     f = gmsh.model.mesh.field
     fd = f.add("Distance")

@@ -56,6 +56,17 @@ def _physical_groups(gmsh, index) -> dict:
 def extract(gmsh, surface, arcs, bottom):
     """Nodes, triangles, node sets and physical groups of the meshed model (0-based indices).
 
+    Parameters
+    ----------
+    gmsh : module
+        gmsh with the body's meshed model.
+    surface : int
+        gmsh tag of the surface whose triangles are taken (-1: all surfaces).
+    arcs : list of int
+        gmsh tags of the three surface arcs (``arcs[1]`` the fine zone).
+    bottom : int
+        gmsh tag of the fixed bottom line.
+
     Returns
     -------
     tuple
@@ -79,9 +90,16 @@ def extract(gmsh, surface, arcs, bottom):
 def finish_body(lay: BodyLayout, pts, tri, fine, surf, fixed, groups) -> BodyMesh:
     """Drop unreferenced nodes, snap the fine zone to the exact arc, orient triangles.
 
-    The arguments after ``lay`` are those :func:`extract` returns. The fine-zone vertices are
-    moved to the uniform abscissae ``x_i = -xf + i h`` on the exact arc so that the cam and
-    roller contact vertices pair one to one.
+    The fine-zone vertices are moved to the uniform abscissae ``x_i = -xf + i h`` on the exact
+    arc so that the cam and roller contact vertices pair one to one.
+
+    Parameters
+    ----------
+    lay : BodyLayout
+        The body's sizes (m).
+    pts, tri, fine, surf, fixed, groups
+        What :func:`extract` returns: points (N, 2) m, triangles (T, 3), node sets of the fine
+        arc, the surface and the support, ``{name: (dim, tag, elements)}``.
 
     Returns
     -------
@@ -143,7 +161,18 @@ def ccw(pts: np.ndarray, tri: np.ndarray) -> np.ndarray:
 
 
 def mirror(b: BodyMesh) -> BodyMesh:
-    """The body mirrored to ``y >= 0`` (``y -> -y``, triangles kept counter-clockwise)."""
+    """The body mirrored to ``y >= 0`` (``y -> -y``, triangles kept counter-clockwise).
+
+    Parameters
+    ----------
+    b : BodyMesh
+        A body meshed in the cam orientation (the roller).
+
+    Returns
+    -------
+    BodyMesh
+        A new body; node numbering and node sets unchanged.
+    """
     pts = b.points.copy()
     pts[1] *= -1.0
     tri = b.triangles[[0, 2, 1]].copy()
