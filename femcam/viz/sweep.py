@@ -41,8 +41,17 @@ def _save(fig, path: Path) -> str:
 def plot_p0(result, path) -> str:
     """Peak pressure against cam angle: Hertz (line), FE (points) and FE/Hertz - 1.
 
-    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG). Returns the
-    path written (str).
+    Parameters
+    ----------
+    result : femcam.sweep.SweepResult
+        The sweep (its ``table``, SI).
+    path : str or os.PathLike
+        Output PNG.
+
+    Returns
+    -------
+    str
+        The path written.
     """
     plt, t, deg = _table(result)
     fe = result.method != "hertz"
@@ -72,8 +81,17 @@ def plot_maxima(result, path) -> str:
     """Von Mises and tau1 maxima (MPa) against cam angle: FE points, Hertz lines (when
     ``result.hertz_factors`` is set).
 
-    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG). Returns the
-    path written (str).
+    Parameters
+    ----------
+    result : femcam.sweep.SweepResult
+        The sweep (its ``table``, SI). Needs ``hertz_factors`` for the Hertz lines.
+    path : str or os.PathLike
+        Output PNG.
+
+    Returns
+    -------
+    str
+        The path written.
     """
     plt, t, deg = _table(result)
     fig, ax = plt.subplots(figsize=(7, 3.6))
@@ -97,8 +115,17 @@ def plot_maxima(result, path) -> str:
 def plot_svaj_loads(result, path) -> str:
     """s, v, a, j, phi, rho, Fc and Hertz p0 against cam angle.
 
-    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG). Returns the
-    path written (str).
+    Parameters
+    ----------
+    result : femcam.sweep.SweepResult
+        The sweep (its ``table``, SI).
+    path : str or os.PathLike
+        Output PNG.
+
+    Returns
+    -------
+    str
+        The path written.
     """
     plt, t, deg = _table(result)
     fig, axs = plt.subplots(4, 2, figsize=(9, 7.5), sharex=True)
@@ -124,8 +151,17 @@ def plot_svaj_loads(result, path) -> str:
 def plot_wear(result, path) -> str:
     """Archard wear depth per revolution (nm) and sliding speed (m/s) against cam angle.
 
-    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG). Returns the
-    path written (str).
+    Parameters
+    ----------
+    result : femcam.sweep.SweepResult
+        The sweep (its ``table``, SI). Needs the wear columns.
+    path : str or os.PathLike
+        Output PNG.
+
+    Returns
+    -------
+    str
+        The path written.
     """
     plt, t, deg = _table(result)
     fig, axs = plt.subplots(2, 1, figsize=(7, 4.6), sharex=True)
@@ -206,9 +242,19 @@ def plot_junction_p0(result, path, reference=None) -> str:
     exact gap (largest nodal pressure; the arc FE's p0 from ``exact_vs_arc_p0``), optionally a
     reference.
 
-    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG),
-    ``reference`` (optional ``(theta_deg, p0_Pa)`` arrays, e.g. an independent half-space solve).
-    Returns the path written (str).
+    Parameters
+    ----------
+    result : femcam.sweep.SweepResult
+        The sweep (its ``table``, SI). Rows flagged ``curvature_jump``.
+    path : str or os.PathLike
+        Output PNG.
+    reference : (array_like, array_like), optional
+        ``(theta_deg, p0_Pa)``, e.g. an independent half-space solve (deg, Pa).
+
+    Returns
+    -------
+    str
+        The path written.
     """
     plt, t, deg = _table(result)
     j = np.flatnonzero((t["curvature_jump"] == 1) & (t["status"] == "ok"))
