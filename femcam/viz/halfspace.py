@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._mpl import pyplot
+from ._mpl import pyplot, save
 
 
 def plot_pressure_map(res, path, *, title: str = ""):
@@ -50,9 +50,7 @@ def plot_pressure_map(res, path, *, title: str = ""):
     h1, l1 = ax2.get_legend_handles_labels()
     h2, l2 = ax2b.get_legend_handles_labels()
     ax2.legend(h1 + h2, l1 + l2, fontsize=8, loc="lower center")
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
+    save(fig, path, dpi=90, tight=True)
     return path
 
 
@@ -102,8 +100,7 @@ def plot_peak_along_length(rows_by_crown: dict, path, *, p0_2d=None, title: str 
     ax_b.legend(fontsize=8, ncol=4)
     if title:
         fig.suptitle(title, fontsize=10)
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
+    save(fig, path, dpi=90)
     return path
 
 
@@ -153,7 +150,5 @@ def plot_crown_comparison(y, p_line_by_crown: dict, tilt_deg, peak_by_crown: dic
         ax.legend(fontsize=8)
     if title:
         fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
+    save(fig, path, dpi=90, tight=True)
     return path

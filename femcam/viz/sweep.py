@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ._mpl import legend_outside, pyplot
+from ._mpl import legend_outside, pyplot, save
 from .analytic import rho_clip_mm
 
 
@@ -31,11 +31,9 @@ def _table(result):
     return pyplot(), t, np.degrees(t["theta"])
 
 
-def _save(fig, path: Path) -> str:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=90)
-    pyplot().close(fig)
-    return str(path)
+def _save(fig, path) -> str:
+    """Lay out, write (90 dpi) and close ``fig``; the path as str."""
+    return str(save(fig, path, dpi=90, tight=True))
 
 
 def plot_p0(result, path) -> str:
@@ -73,8 +71,7 @@ def plot_p0(result, path) -> str:
     legend_outside(ax)
     ax.grid(alpha=0.3)
     ax.set_title("Peak contact pressure over the cam cycle")
-    fig.tight_layout()
-    return _save(fig, Path(path))
+    return _save(fig, path)
 
 
 def plot_maxima(result, path) -> str:
@@ -108,8 +105,7 @@ def plot_maxima(result, path) -> str:
     ax.set_ylabel("stress (MPa)")
     legend_outside(ax)
     ax.set_title("Subsurface stress maxima over the cam cycle")
-    fig.tight_layout()
-    return _save(fig, Path(path))
+    return _save(fig, path)
 
 
 def plot_svaj_loads(result, path) -> str:
@@ -144,8 +140,7 @@ def plot_svaj_loads(result, path) -> str:
     for ax in axs[-1]:
         ax.set_xlabel("cam angle theta (deg)")
     fig.suptitle("Kinematics (SVAJ), geometry and load over the cam cycle")
-    fig.tight_layout()
-    return _save(fig, Path(path))
+    return _save(fig, path)
 
 
 def plot_wear(result, path) -> str:
@@ -183,8 +178,7 @@ def plot_wear(result, path) -> str:
     legend_outside(axs[1])
     axs[1].set_xlabel("cam angle theta (deg)")
     axs[1].grid(alpha=0.3)
-    fig.tight_layout()
-    return _save(fig, Path(path))
+    return _save(fig, path)
 
 
 def plot_surface_worst(profile: dict, path) -> str:
@@ -219,8 +213,7 @@ def plot_surface_worst(profile: dict, path) -> str:
     fig.suptitle(f"Surface stresses at the worst angle theta = {profile['theta_deg']:.1f} deg "
                  f"(Fc = {profile['Fc']:.0f} N, mu = {profile['mu']:g}"
                  + (f", {profile['traction']})" if "traction" in profile else ")"))
-    fig.tight_layout()
-    return _save(fig, Path(path))
+    return _save(fig, path)
 
 
 def _jump_clusters(deg):
@@ -276,8 +269,7 @@ def plot_junction_p0(result, path, reference=None) -> str:
     axs[0, 0].set_ylabel("peak pressure (MPa)")
     axs[0, 0].legend(loc="best", fontsize=7)
     fig.suptitle("Peak pressure across the curvature jumps")
-    fig.tight_layout()
-    return _save(fig, Path(path))
+    return _save(fig, path)
 
 
 def plot_sweep(result, out) -> dict[str, str]:

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ._mpl import pyplot
+from ._mpl import pyplot, save
 
 
 def plot_curve(result, path, *, direct_r=None) -> Path:
@@ -49,10 +49,7 @@ def plot_curve(result, path, *, direct_r=None) -> Path:
     ax.set_ylabel("y (mm)")
     ax.set_title(f"knife-edge cam, Rb = {Rb:g} mm, {result.options.n_elements} elements")
     ax.legend(fontsize=7, loc="lower left")
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
-    return Path(path)
+    return save(fig, path, dpi=90, tight=True)  # the figure's own 90 dpi
 
 
 def plot_error_phi(result, path) -> Path:
@@ -83,10 +80,7 @@ def plot_error_phi(result, path) -> Path:
     a2.set_ylabel("pressure angle phi (deg)")
     a2.set_xlabel("cam angle theta (deg)")
     a2.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
-    return Path(path)
+    return save(fig, path, dpi=90, tight=True)  # the figure's own 90 dpi
 
 
 def plot_study(rows, path, *, x: str = "k") -> Path:
@@ -116,7 +110,4 @@ def plot_study(rows, path, *, x: str = "k") -> Path:
     a2.semilogx(xs, [math.degrees(r.phi_max) for r in ok], "o-", ms=3)
     a2.set_xlabel("k (-)" if x == "k" else "k/mu (-)")
     a2.set_ylabel("max pressure angle (deg)")
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
-    return Path(path)
+    return save(fig, path, dpi=90, tight=True)  # the figure's own 90 dpi

@@ -9,14 +9,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._mpl import legend_outside, pyplot
+from ._mpl import legend_outside, pyplot, save
 
 
 def _save(fig, path, dpi: int = 90):
     """Lay out, write and close a figure; returns ``path``."""
-    fig.tight_layout()
-    fig.savefig(path, dpi=dpi)
-    pyplot().close(fig)
+    save(fig, path, dpi=dpi, tight=True)
     return path
 
 
