@@ -1,11 +1,11 @@
 // femcam contact-region body (the cam; the roller is the same body with R = Rr mirrored to y > 0).
-// Same construction as femcam.mesh._mesh_body; defaults from contact_region.toml. Units: mm.
+// Same construction as femcam.mesh.mesh_plain_body; defaults from contact_region.toml. Units: mm.
 // Open in the gmsh GUI and move the sliders:  gmsh meshes/contact_region.geo
 //
 // Flat cam (rho = inf): set "flat" = 1 (R is then ignored and the surface is straight; the .geo
 // language has no infinity, and k = 1/R cannot draw it). R = 0 has no meaning (femcam refuses
 // it) and stops here with an error instead of dividing by zero.
-// Differences from the API (femcam/mesh.py), on purpose: one body only; the body size is
+// Differences from the API (femcam/mesh/), on purpose: one body only; the body size is
 // L = min(|R|, L_cap) (the API caps the cam at Rr and the roller at domain_over_a * a_ref); the
 // fine-zone vertices are not snapped to the exact uniform abscissae (the API moves them by a
 // fraction of h onto the arc). The Distance-field sampling is the API's: max(2 n_fine, 100).

@@ -245,3 +245,29 @@ def test_run_law_did_you_mean(capsys):
     err = _one_line(capsys, "run")
     assert "--law = 'bezeir9': unknown motion law (did you mean 'bezier9'?)" in err
     assert "valid names: " in err and "bezier9" in err
+
+
+def test_sweep_help_states_each_scene_default_once():
+    """The defaults a scene can override are written once (``femcam.cli.sweep.SETTINGS``) and
+    shown in --help; the expected values are typed from docs/sweep.md's settings table."""
+    text = " ".join(_parsers()["femcam sweep"].format_help().split())
+    for s in ("(default: [sweep] angles_deg, else 0:360:1)", "(default: [fe] a_over_h, else 10)",
+              "(default: [fe] tolerance, else 0.002; >= 0.0001)", "(default: [sweep] chunk_size, else 30)",
+              "(default: [sweep] vtk_every, else 10; 1 = every angle; 0 = none)",
+              "(default: [sweep] method, else fe)", "(default: [sweep] plots, else yes)"):
+        assert s in text, s
+
+
+def test_subcommands_share_scene_out_and_law_flags():
+    """SCENE.toml and --out (femcam.cli._common.add_scene_out) and --law read the same way in
+    every subcommand that has them; --law lists the laws named alone (not bezier/polynomial)."""
+    parsers = _parsers()
+    for prog in ("femcam run", "femcam sweep", "femcam assess", "femcam dynamics", "femcam wear map"):
+        p = parsers[prog]
+        args = p.parse_args(["scene.toml", "--out", "d"])
+        assert (args.scene, args.out) == ("scene.toml", "d"), prog
+    assert parsers["femcam run"].parse_args(["scene.toml"]).out is None  # run picks its own DIR
+    for prog in ("femcam run", "femcam sweep"):
+        law = next(a for a in parsers[prog]._actions if "--law" in a.option_strings)
+        assert "cycloidal" in law.help and "poly345" in law.help, prog
+        assert "bezier," not in law.help and "polynomial" not in law.help, prog

@@ -208,3 +208,17 @@ def test_write_msh_bad_path(cm, tmp_path):
     with pytest.raises(InputError, match=r"path = None: must be a file path"):
         cm.write_msh(None)
     assert not (tmp_path / "contact.vtu").exists()
+
+
+def test_names_of_the_single_module_still_import():
+    """femcam.mesh became a package: every name the single module had (also the private ones
+    femcam.bodies uses) imports from femcam.mesh and is the package's function."""
+    import femcam.mesh as M  # noqa: N812
+    from femcam.mesh import build, coating, nodes, session
+
+    for name in ("MeshOptions", "PhysicalGroup", "BodyMesh", "ContactMesh", "GMSH_LOCK",
+                 "PHYSICAL_NAMES", "COAT_MAX_ASPECT", "gmsh_session", "surface_height",
+                 "gmsh_nodes", "build_contact_mesh", "_mesh_body", "_ccw"):
+        assert hasattr(M, name), name
+    assert M._mesh_body is build.mesh_body and M._ccw is nodes.ccw
+    assert M.gmsh_session is session.gmsh_session and M.COAT_MAX_ASPECT == coating.COAT_MAX_ASPECT

@@ -42,7 +42,13 @@ class _VersionAction(argparse.Action):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    """The ``femcam`` parser with one sub-parser per module of :data:`SUBCOMMANDS`."""
+    """The ``femcam`` parser with one sub-parser per module of :data:`SUBCOMMANDS`.
+
+    Returns
+    -------
+    argparse.ArgumentParser
+        The parser; a subcommand module that does not exist yet is skipped.
+    """
     parser = argparse.ArgumentParser(
         prog="femcam",
         description="Finite-element contact-stress analysis of cam-follower mechanisms.",

@@ -1,4 +1,6 @@
-"""Shared checks of the subcommands: the output directory and the one-line error text.
+"""Shared pieces of the subcommands: the argparse blocks every subcommand repeats
+(:func:`add_scene_out`, :func:`add_law_override`, :func:`add_no_plots`), the output directory
+and the one-line error text.
 
 A subcommand calls :func:`out_dir` before any work, so that ``--out`` naming an existing
 file, a path under a file or a directory it cannot create is one line naming the flag and the
@@ -18,13 +20,75 @@ from .. import _validate
 from ..errors import InputError
 from ..kinematics import LAW_NAMES
 
+#: motion laws a flag can name alone (``bezier`` and ``polynomial`` need control points)
+NAMED_LAWS = tuple(n for n in LAW_NAMES if n not in ("bezier", "polynomial"))
+
+
+def add_scene_out(p, scene_help: str = "scene file", *, out_help: str = "output directory",
+                  out_required: bool = True) -> None:
+    """Add the positional ``SCENE.toml`` and the ``--out DIR`` flag.
+
+    Parameters
+    ----------
+    p : argparse.ArgumentParser
+        The subcommand's parser.
+    scene_help : str
+        Help text of the scene argument.
+    out_help : str
+        Help text of ``--out``.
+    out_required : bool
+        ``--out`` must be given (False: default None, the subcommand picks the directory).
+    """
+    p.add_argument("scene", metavar="SCENE.toml", help=scene_help)
+    p.add_argument("--out", required=out_required, default=None, metavar="DIR", help=out_help)
+
+
+def add_law_override(p) -> None:
+    """Add ``--law NAME``, overriding the scene's rise/fall motion law (:data:`NAMED_LAWS`).
+
+    Parameters
+    ----------
+    p : argparse.ArgumentParser
+        The subcommand's parser; the value is checked with :func:`check_law` before any work.
+    """
+    p.add_argument("--law", default=None, metavar="NAME",
+                   help="override the rise/fall motion law of the scene: " + ", ".join(NAMED_LAWS))
+
+
+def add_no_plots(p) -> None:
+    """Add ``--no-plots`` (``args.no_plots``, default False).
+
+    Parameters
+    ----------
+    p : argparse.ArgumentParser
+        The subcommand's parser.
+    """
+    p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+
 
 def out_dir(path, flag: str = "--out", *, create: bool = True) -> Path:
     """Create the output directory ``path`` (with parents) and check it is writable.
 
-    Raises :class:`~femcam.errors.InputError` naming ``flag`` and the path when ``path`` is an
-    existing file, lies under a file, or cannot be created or written. ``create=False`` only
-    checks (the first existing component of the path must be a writable directory).
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The directory.
+    flag : str
+        The flag named in the error (``--out``, ``--csv (its directory)``, ...).
+    create : bool
+        False: only check (the first existing component of the path must be a writable
+        directory).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+
+    Raises
+    ------
+    InputError
+        Naming ``flag`` and the path when ``path`` is an existing file, lies under a file, or
+        cannot be created or written.
     """
     p = Path(path)
     for q in (p, *p.parents):  # the first existing component must be a directory
@@ -48,7 +112,18 @@ def out_dir(path, flag: str = "--out", *, create: bool = True) -> Path:
 
 
 def os_error_line(exc: OSError) -> str:
-    """``"No space left on device: 'DIR/sweep.csv'"``: the reason and the path(s) of ``exc``."""
+    """The reason and the path(s) of an ``OSError`` on one line.
+
+    Parameters
+    ----------
+    exc : OSError
+        The error (``strerror``, ``filename``, ``filename2``).
+
+    Returns
+    -------
+    str
+        e.g. ``"No space left on device: 'DIR/sweep.csv'"`` (with a hint on a full disk).
+    """
     why = exc.strerror or str(exc) or type(exc).__name__
     if exc.errno == errno.ENOSPC:
         why += " (free some space, then rerun; a sweep can continue with --resume)"
@@ -57,8 +132,20 @@ def os_error_line(exc: OSError) -> str:
 
 
 def plain(doc: str, paragraphs: int = 1) -> str:
-    """The first ``paragraphs`` of a module docstring for ``--help``, without RST markup
-    (````x```` -> ``x``, ``:func:`~a.b``` -> ``b``)."""
+    """The first paragraphs of a module docstring for ``--help``, without RST markup.
+
+    Parameters
+    ----------
+    doc : str
+        The docstring.
+    paragraphs : int
+        How many blank-line separated paragraphs to keep.
+
+    Returns
+    -------
+    str
+        The text, ````x```` -> ``x`` and ``:func:`~a.b``` -> ``b``.
+    """
     text = "\n\n".join(doc.strip().split("\n\n")[:paragraphs])
     text = re.sub(r":[a-z]+:`~?([^`]+)`", lambda m: m.group(1).split(".")[-1]
                   if m.group(0).count("~") else m.group(1), text)
@@ -66,8 +153,25 @@ def plain(doc: str, paragraphs: int = 1) -> str:
 
 
 def check_law(flag: str, name: str) -> str:
-    """A motion-law name given on the command line (``--law``, ``--laws``), checked before any
-    work: an :class:`~femcam.errors.InputError` naming the flag, the value and a did-you-mean."""
+    """Check a motion-law name given on the command line, before any work.
+
+    Parameters
+    ----------
+    flag : str
+        The flag (``--law``, ``--laws``), named in the error.
+    name : str
+        The value given.
+
+    Returns
+    -------
+    str
+        ``name``, one of :data:`~femcam.kinematics.LAW_NAMES`.
+
+    Raises
+    ------
+    InputError
+        Naming the flag, the value and a did-you-mean.
+    """
     if name not in LAW_NAMES:
         near = difflib.get_close_matches(name, list(LAW_NAMES), n=1, cutoff=0.6)
         hint = f" (did you mean {near[0]!r}?)" if near else ""

@@ -23,19 +23,25 @@ from ..errors import InputError
 from ..io import atomic_write_text, csv_text, provenance
 from ..scene import load_scene
 from ..viz.assess import plot_assessment, report_markdown
-from ._common import out_dir, plain
+from ._common import add_no_plots, add_scene_out, out_dir, plain
 
 
 def register(subparsers) -> None:
+    """Add the ``assess`` sub-parser (film, flash temperature, fatigue, safety factors) and set its ``func``.
+
+    Parameters
+    ----------
+    subparsers : argparse._SubParsersAction
+        Where ``femcam``'s parser (:func:`femcam.cli.build_parser`) collects its subcommands.
+    """
     p = subparsers.add_parser("assess", help="will it fail? film, flash temperature, fatigue, safety factors",
                               description=plain(__doc__))
-    p.add_argument("scene", metavar="SCENE.toml", help="scene file (with [lubricant], [surface], ...)")
-    p.add_argument("--out", required=True, metavar="DIR", help="output directory")
+    add_scene_out(p, "scene file (with [lubricant], [surface], ...)")
     p.add_argument("--angles-deg", default="0:360:1", metavar="START:STOP:STEP",
                    help="cam angles in degrees, stop exclusive (default 0:360:1)")
     p.add_argument("--sweep", default=None, metavar="SWEEP_DIR",
                    help="use the angles and FE a/p0 of a finished sweep (SWEEP_DIR/sweep.npz)")
-    p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    add_no_plots(p)
     p.set_defaults(func=_run)
 
 

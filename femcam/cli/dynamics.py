@@ -22,19 +22,25 @@ from ..dynamics import jump_speed, rpm_sweep
 from ..errors import InputError
 from ..scene import load_scene
 from ..viz.dynamics import plot_force, plot_rpm_sweep
-from ._common import out_dir, plain
+from ._common import add_no_plots, add_scene_out, out_dir, plain
 
 
 def register(subparsers) -> None:
+    """Add the ``dynamics`` sub-parser (follower-train response, jump speed) and set its ``func``.
+
+    Parameters
+    ----------
+    subparsers : argparse._SubParsersAction
+        Where ``femcam``'s parser (:func:`femcam.cli.build_parser`) collects its subcommands.
+    """
     p = subparsers.add_parser("dynamics", help="follower-train dynamics: contact force, jump speed",
                               description=plain(__doc__))
-    p.add_argument("scene", metavar="SCENE.toml", help="scene with [dynamics] model = one_dof or two_dof")
-    p.add_argument("--out", required=True, metavar="DIR", help="output directory")
+    add_scene_out(p, "scene with [dynamics] model = one_dof or two_dof")
     p.add_argument("--rpm-sweep", metavar="START:STOP:STEP", default=None,
                    help="also sweep the cam speed (rpm, stop inclusive) and find the jump speed")
     p.add_argument("--workers", type=int, default=1, metavar="N",
                    help="processes for the rpm sweep (default 1)")
-    p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    add_no_plots(p)
     p.set_defaults(func=run)
 
 
@@ -87,6 +93,18 @@ def _write_sweep(out: Path, scene, sw):
 
 
 def run(args) -> int:
+    """``femcam dynamics``: periodic response, optional rpm sweep; CSV and PNG files.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The parsed flags (``scene``, ``out``, ``rpm_sweep`` in rpm, ``workers``, ``no_plots``).
+
+    Returns
+    -------
+    int
+        Exit code 0 (errors are raised as :class:`~femcam.errors.FemcamError`).
+    """
     out_dir(args.out, create=False)  # checked before any work, created below
     rpm = _rpm_range(args.rpm_sweep) if args.rpm_sweep else None  # checked before any work
     scene = load_scene(args.scene)

@@ -17,48 +17,46 @@ from pathlib import Path
 import numpy as np
 
 from .. import __version__, _validate
-from ..kinematics import LAW_NAMES
 from ..scene import load_scene
+from ..sweep.result import COLUMNS as SWEEP_COLUMNS
 from ..viz.analytic import plot_all
-from ._common import check_law, out_dir, plain
+from ._common import add_law_override, add_no_plots, add_scene_out, check_law, out_dir, plain
 
-#: CSV columns: (name with unit, SceneState attribute, factor from SI)
-COLUMNS = (
-    ("theta_deg", "theta", 180.0 / math.pi),
-    ("s_mm", "s", 1e3),
-    ("v_m_s", "v", 1.0),
-    ("a_m_s2", "a", 1.0),
-    ("j_m_s3", "j", 1.0),
-    ("phi_deg", "phi", 180.0 / math.pi),
-    ("rho_mm", "rho", 1e3),
-    ("Fc_N", "Fc", 1.0),
-    ("contact_x_mm", "contact_x", 1e3),
-    ("contact_y_mm", "contact_y", 1e3),
-    ("liftoff", "liftoff", 1),
-    ("undercut", "undercut", 1),
-)
+#: the analytic chain's columns, named and scaled as in the sweep table (one copy of each
+#: column's unit: :data:`femcam.sweep.result.COLUMNS`)
+_ANALYTIC = ("theta", "s", "v", "a", "j", "phi", "rho", "Fc")
+_SWEEP_COLUMNS = {si: (name, f) for si, name, f in SWEEP_COLUMNS}
+
+#: CSV columns: (name with unit, SceneState attribute, factor from SI); the first eight are
+#: the printed table
+COLUMNS = (*((_SWEEP_COLUMNS[a][0], a, _SWEEP_COLUMNS[a][1]) for a in _ANALYTIC),
+           ("contact_x_mm", "contact_x", 1e3), ("contact_y_mm", "contact_y", 1e3),
+           ("liftoff", "liftoff", 1), ("undercut", "undercut", 1))
 
 
 def register(subparsers) -> None:
-    """Add the ``run`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
+    """Add the ``run`` sub-parser (the analytic chain of a scene) and set its ``func``.
+
+    Parameters
+    ----------
+    subparsers : argparse._SubParsersAction
+        Where ``femcam``'s parser (:func:`femcam.cli.build_parser`) collects its subcommands.
+    """
     p = subparsers.add_parser(
         "run", help="kinematics, profile and load tables of a scene, with PNG plots",
         description=plain(__doc__))
-    p.add_argument("scene", metavar="SCENE.toml", help="scene file (see examples/)")
-    p.add_argument("--out", default=None, metavar="DIR",
-                   help="output directory (default: femcam-out/<scene name>)")
+    add_scene_out(p, "scene file (see examples/)", out_required=False,
+                  out_help="output directory (default: femcam-out/<scene name>)")
     p.add_argument("--angles-deg", default="0:360:0.5", metavar="START:STOP:STEP",
                    help="cam angles in degrees, stop exclusive (default 0:360:0.5)")
     p.add_argument("--print-every-deg", type=float, default=10.0, metavar="STEP",
                    help="angle step of the printed table in degrees (default 10); the CSV has all")
-    p.add_argument("--law", default=None, metavar="NAME",
-                   help="override the rise/fall motion law of the scene: "
-                        + ", ".join(n for n in LAW_NAMES if n not in ("bezier", "polynomial")))
+    add_law_override(p)
     p.add_argument("--phi-limit-deg", type=float, default=30.0, metavar="DEG",
                    help="pressure-angle limit drawn and checked in the summary (default 30)")
     p.add_argument("--allow-undercut", action="store_true",
                    help="report an undercut profile as a warning instead of an error")
-    p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    add_no_plots(p)
     p.set_defaults(func=_run)
 
 
@@ -75,7 +73,22 @@ def _undercut_intervals(st):
 
 
 def summary_lines(scene, st, phi_limit_deg: float = 30.0) -> list[str]:
-    """Summary of a SceneState: max |phi|, min |rho|, Fc range, lift-off and undercut."""
+    """Summary of the analytic chain: max |phi|, min |rho|, Fc range, lift-off and undercut.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene (its follower kind).
+    st : femcam.scene.SceneState
+        The chain at the scene's angles (SI, rad).
+    phi_limit_deg : float
+        Pressure-angle limit the maximum is checked against (deg).
+
+    Returns
+    -------
+    list of str
+        One line per quantity, angles in deg, lengths in mm, forces in N.
+    """
     phi = np.degrees(np.abs(st.phi))
     i_phi = int(np.argmax(phi))
     rho = np.asarray(st.rho, float)
@@ -119,7 +132,24 @@ def _table(st, every_deg: float) -> str:
 
 
 def write_csv(path, scene, st, command: str) -> Path:
-    """All angles, unit-suffixed columns, ``#`` provenance header."""
+    """Write the analytic chain at all angles as CSV (:data:`COLUMNS`, units in the names).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        Output file.
+    scene : femcam.scene.Scene
+        The scene (provenance header: file, name, rpm, follower).
+    st : femcam.scene.SceneState
+        The chain (SI, rad; converted to the column units).
+    command : str
+        The command line, written in the ``#`` provenance header.
+
+    Returns
+    -------
+    pathlib.Path
+        The path written.
+    """
     path = Path(path)
     cols = [(n, np.asarray(getattr(st, a), float) * f) for n, a, f in COLUMNS]
     with open(path, "w", newline="") as fh:

@@ -18,25 +18,29 @@ import shlex
 import sys
 
 from .. import _validate
-from ..kinematics import LAW_NAMES
 from ..scene import load_scene
 from ..sweep import parse_angles_deg, sweep
 from ..sweep.options import TOLERANCE_FLOOR
 from ..sweep.result import families_text
-from ._common import check_law, out_dir, plain
+from ._common import add_law_override, add_scene_out, check_law, out_dir, plain
 
 
 def register(subparsers) -> None:
-    """Add the ``sweep`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
+    """Add the ``sweep`` sub-parser (the FE or Hertz sweep over cam angle) and set its ``func``.
+
+    Parameters
+    ----------
+    subparsers : argparse._SubParsersAction
+        Where ``femcam``'s parser (:func:`femcam.cli.build_parser`) collects its subcommands.
+    """
     p = subparsers.add_parser(
         "sweep", help="FE contact sweep over cam angle (CSV/NPZ, VTK series, plots)",
         description=plain(__doc__, 3),
         formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("scene", metavar="SCENE.toml", help="scene file")
-    p.add_argument("--out", required=True, metavar="DIR", help="output directory")
+    add_scene_out(p)
     p.add_argument("--angles-deg", default=None, metavar="START:STOP:STEP",
-                   help="cam angles in degrees, stop exclusive (default: [sweep] angles_deg, else "
-                        "0:360:1); a negative start is accepted (--angles-deg -360:0:30)")
+                   help="cam angles in degrees, stop exclusive " + _default_text("angles_deg")
+                   + "; a negative start is accepted (--angles-deg -360:0:30)")
     p.add_argument("--workers", default="auto", metavar="N|auto",
                    help="local worker processes; 1 = serial in this process; auto (default) = "
                         "processes only when the expected saving beats the pool start-up: the "
@@ -52,29 +56,17 @@ def register(subparsers) -> None:
                    help="replace the results in a non-empty DIR (refused otherwise)")
     p.add_argument("--animate", action="store_true",
                    help="also write DIR/animation.gif: von Mises over cam angle (the VTK series)")
-    p.add_argument("--mesh-size", type=float, default=None, metavar="A_OVER_H",
-                   help="FE element size in the contact zone, h = a / A_OVER_H (default: [fe] "
-                        "a_over_h, else 10)")
-    p.add_argument("--tolerance", type=float, default=None, metavar="TOL",
-                   help="bound on the relative p0 difference between an angle solved with its "
-                        "family's shared model and with a model built for it alone; checked with "
-                        "fresh models at each family's worst angles, families are split until it "
-                        "holds (default: [fe] tolerance, else 2e-3; >= 1e-4)")
-    p.add_argument("--chunk-size", type=int, default=None, metavar="N",
-                   help="angles per chunk on disk / per parallel task (default: [sweep] "
-                        "chunk_size, else 30)")
-    p.add_argument("--vtk-every", type=int, default=None, metavar="K",
-                   help="write a .vtu (both bodies, ~1 MB) every K angles plus sweep.pvd "
-                        "(default: [sweep] vtk_every, else 10; 1 = every angle; 0 = none)")
+    for flag, typ, metavar, text, extra in _SCENE_FLAGS:
+        dest = flag[2:].replace("-", "_")
+        p.add_argument(flag, type=typ, default=None, metavar=metavar,
+                       help=f"{text} {_default_text(dest, extra)}")
     p.add_argument("--method", choices=("fe", "hertz", "auto"), default=None,
                    help="fe: FE contact solve; hertz: analytic only; auto: the cheapest of Hertz, "
-                        "FE arc gap, FE exact gap within --tolerance per angle (default: [sweep] "
-                        "method, else fe)")
-    p.add_argument("--law", default=None, metavar="NAME",
-                   help="override the rise/fall motion law of the scene: "
-                        + ", ".join(n for n in LAW_NAMES if n not in ("bezier", "polynomial")))
+                        "FE arc gap, FE exact gap within --tolerance per angle "
+                        + _default_text("method"))
+    add_law_override(p)
     p.add_argument("--plots", dest="plots", action="store_true", default=None,
-                   help="write the PNG plots (default: [sweep] plots, else yes)")
+                   help="write the PNG plots " + _default_text("plots"))
     p.add_argument("--no-plots", dest="plots", action="store_false", help="skip the PNG plots")
     p.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
                    help="progress bar on stderr (auto: only on a terminal)")
@@ -84,16 +76,52 @@ def register(subparsers) -> None:
     p.set_defaults(func=_run)
 
 
-#: flag dest -> (scene table, key, default): the scene value is used where no flag is given
+#: flag dest -> (scene table, key, default): the scene value is used where no flag is given;
+#: the one place each default is written (the --help text is made from it)
 SETTINGS = {"angles_deg": ("sweep", "angles_deg", "0:360:1"), "mesh_size": ("fe", "a_over_h", 10.0),
             "tolerance": ("fe", "tolerance", 2e-3), "chunk_size": ("sweep", "chunk_size", 30),
             "vtk_every": ("sweep", "vtk_every", 10), "method": ("sweep", "method", "fe"),
             "plots": ("sweep", "plots", True)}
 
+#: the numeric flags a scene can set: (flag, type, metavar, help, note after the default)
+_SCENE_FLAGS = (
+    ("--mesh-size", float, "A_OVER_H", "FE element size in the contact zone, h = a / A_OVER_H", ""),
+    ("--tolerance", float, "TOL",
+     "bound on the relative p0 difference between an angle solved with its family's shared model "
+     "and with a model built for it alone; checked with fresh models at each family's worst "
+     "angles, families are split until it holds", f">= {TOLERANCE_FLOOR:g}"),
+    ("--chunk-size", int, "N", "angles per chunk on disk / per parallel task", ""),
+    ("--vtk-every", int, "K", "write a .vtu (both bodies, ~1 MB) every K angles plus sweep.pvd",
+     "1 = every angle; 0 = none"),
+)
+
+
+def _default_text(dest: str, note: str = "") -> str:
+    """``"(default: [table] key, else VALUE; note)"`` for ``--help``, from :data:`SETTINGS`."""
+    table, key, default = SETTINGS[dest]
+    if isinstance(default, bool):
+        shown = "yes" if default else "no"
+    else:
+        shown = f"{default:g}" if isinstance(default, int | float) else str(default)
+    return f"(default: [{table}] {key}, else {shown}" + (f"; {note}" if note else "") + ")"
+
 
 def resolve_settings(args, scene) -> list[str]:
-    """Fill the settings not given as flags from the scene's [fe]/[sweep] tables, else the
-    defaults (flag > scene > default). Returns the ``[table] key = value`` taken from the scene."""
+    """Fill the settings not given as flags: flag > scene [fe]/[sweep] table > default.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The parsed flags; the missing :data:`SETTINGS` are set in place (scene units: deg,
+        a/h, relative tolerance, angles).
+    scene : femcam.scene.Scene
+        The scene (its ``fe`` and ``sweep`` tables).
+
+    Returns
+    -------
+    list of str
+        ``[table] key = value`` of each setting taken from the scene.
+    """
     used = []
     for dest, (table, key, default) in SETTINGS.items():
         if getattr(args, dest) is not None:
@@ -108,8 +136,22 @@ def resolve_settings(args, scene) -> list[str]:
 
 
 def useful_workers(requested, n_angles: int, chunk_size: int) -> tuple:
-    """``(workers, note)``: an integer request capped at the CPU cores and the number of chunks
-    (more processes than either only wait); ``note`` says so ("" when not capped)."""
+    """Cap a worker count at the CPU cores and the number of chunks (more only wait).
+
+    Parameters
+    ----------
+    requested : int or str
+        ``--workers`` after validation (an int, or ``"auto"``, passed through).
+    n_angles : int
+        Number of cam angles.
+    chunk_size : int
+        Angles per chunk.
+
+    Returns
+    -------
+    (int or str, str)
+        ``(workers, note)``; ``note`` says why it was capped ("" when not).
+    """
     if not isinstance(requested, int):
         return requested, ""
     cores = os.cpu_count() or 1

@@ -44,7 +44,13 @@ N_RESIDUALS_SHOWN = 5
 
 
 def register(subparsers) -> None:
-    """Add the ``synth`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
+    """Add the ``synth`` sub-parser (seed-003 knife-edge synthesis) and set its ``func``.
+
+    Parameters
+    ----------
+    subparsers : argparse._SubParsersAction
+        Where ``femcam``'s parser (:func:`femcam.cli.build_parser`) collects its subcommands.
+    """
     p = subparsers.add_parser("synth", help="knife-edge cam curve by potential-energy FE (seed 003)",
                               description=plain(__doc__))
     p.add_argument("scene", nargs="?", metavar="SCENE.toml",
@@ -108,7 +114,19 @@ def _residual_tail(history, n=N_RESIDUALS_SHOWN) -> str:
 
 
 def run(args) -> int:
-    """``femcam synth``: synthesise, compare with the direct profile, write CSV/PNG; exit code."""
+    """``femcam synth``: synthesise, compare with the direct profile, write CSV/PNG.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The parsed flags (``scene`` or ``case``, ``out``, ``elements``, ``k``, ``mu``,
+        ``base_radius_mm`` in mm, ``max_iter``, ...).
+
+    Returns
+    -------
+    int
+        Exit code 0 (errors are raised as :class:`~femcam.errors.FemcamError`).
+    """
     out_dir(args.out, create=False)  # checked before any work, created below
     name, program, Rb = _case(args)
     Rb, rb_source = _base_radius(args.base_radius_mm, Rb, program,

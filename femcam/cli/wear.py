@@ -37,7 +37,7 @@ from ..wear.evolution import convergence_table, evolution_case
 from ..wear.options import describe_k, wear_coefficient_info, wear_options
 from ..wear.scene import scene_tip_radius, scene_wear, tip_scene
 from ..wear.seed000 import PAPER_LAWS, format_table3, seed000_table, table_rows_for_csv
-from ._common import check_law, out_dir, plain
+from ._common import NAMED_LAWS, add_scene_out, check_law, out_dir, plain
 
 
 def register(subparsers) -> None:
@@ -62,8 +62,7 @@ def register(subparsers) -> None:
                        "keys: K (with [materials.cam] hardness_MPa) or k_mm3_per_N_m, "
                        "roller_model = srr|inertia, srr, J_kg_m2, T_drag_N_m, tip_radius_mm, "
                        "cycles.")
-    m.add_argument("scene", metavar="SCENE.toml", help="scene file (see examples/)")
-    m.add_argument("--out", required=True, metavar="DIR", help="output directory")
+    add_scene_out(m, "scene file (see examples/)")
     m.add_argument("--cycles", type=float, default=None, metavar="N",
                    help="number of cam revolutions (default: scene [wear] cycles or 1e6)")
     m.add_argument("--source", choices=("hertz", "fe"), default="hertz",
@@ -86,7 +85,7 @@ def register(subparsers) -> None:
 def _seed000(args) -> int:
     laws = PAPER_LAWS
     if args.all_laws:
-        laws = tuple(n for n in LAW_NAMES if n not in ("bezier", "polynomial"))
+        laws = NAMED_LAWS
     t = seed000_table(laws)
     print(format_table3(t))
     if args.csv:

@@ -6,8 +6,10 @@
 >>> res.converged, round(res.phi_max * 180 / 3.141592653589793, 1)
 (True, 29.6)
 
-Modules: :mod:`~femcam.synthesis.pefem` (energy, quadratic elements, residual, consistent
-tangent, Newton-Raphson) and :mod:`~femcam.synthesis.study` (the seed-003 case, parameter
+Modules: :mod:`~femcam.synthesis.pefem` (the driver, symbol table),
+:mod:`~femcam.synthesis.options` (inputs, result), :mod:`~femcam.synthesis.energy` (quadratic
+elements, energy, residual, consistent tangent), :mod:`~femcam.synthesis.newton` (globalised
+Newton-Raphson) and :mod:`~femcam.synthesis.study` (the seed-003 case, parameter
 studies as Markdown and CSV tables, comparison with the direct analytic profile). Only
 numpy/scipy are imported.
 """

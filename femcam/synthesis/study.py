@@ -58,17 +58,42 @@ def seed003_program(h: float = 3.0e-3, law: str = "poly345"):
 
 
 def derivatives(program, theta):
-    """``(s, s1, s2)`` of ``program`` at ``theta`` (m, m/rad, m/rad^2)."""
+    """Lift and its first two derivatives of ``program``.
+
+    Parameters
+    ----------
+    program : femcam.kinematics.CamProgram
+        The cam program.
+    theta : array_like
+        Cam angles (rad).
+
+    Returns
+    -------
+    (ndarray, ndarray, ndarray)
+        ``(s, s1, s2)`` at ``theta`` (m, m/rad, m/rad^2).
+    """
     d = program.derivatives(theta)
     return tuple(np.asarray(getattr(d, n), float) for n in ("s", "s1", "s2"))
 
 
 def direct_profile(program, Rb: float, theta):
-    """Direct analytic knife-edge synthesis at cam angles ``theta`` (rad).
+    """Direct analytic knife-edge synthesis at cam angles ``theta``.
 
-    Returns ``(r, phi)``: the polar radius of the cam point in contact at ``theta``
-    (``r = |(x, y)| = Rb + s``) and the pressure angle, both from
-    :func:`femcam.profile.cam_profile` (Norton eq. 8.31).
+    Parameters
+    ----------
+    program : femcam.kinematics.CamProgram
+        The cam program.
+    Rb : float
+        Base-circle radius (m).
+    theta : array_like
+        Cam angles (rad).
+
+    Returns
+    -------
+    r : ndarray
+        Polar radius of the cam point in contact at ``theta``, ``|(x, y)| = Rb + s`` (m).
+    phi : ndarray
+        Pressure angle (rad), from :func:`femcam.profile.cam_profile` (Norton eq. 8.31).
     """
     s, s1, s2 = derivatives(program, theta)
     p = cam_profile(KnifeEdgeFollower(Rb=Rb), theta, s, s1, s2, allow_undercut=True)
@@ -77,7 +102,23 @@ def direct_profile(program, Rb: float, theta):
 
 @dataclass(frozen=True)
 class Comparison:
-    """FE curve vs direct synthesis at the FE sample angles (SI, rad, seconds)."""
+    """FE curve vs direct synthesis at the FE sample angles.
+
+    Parameters
+    ----------
+    max_radius_deviation, rms_radius_deviation : float
+        max and rms of ``|r_FE - r_direct|`` (m).
+    phi_max_fe : float
+        max |phi| of the FE curve (rad).
+    phi_max_direct : float
+        max |phi| of the direct profile on a dense grid (rad).
+    max_phi_deviation : float
+        max |phi_FE - phi_direct| at the same angles (rad).
+    time_fe : float
+        FE Newton solve (s).
+    time_direct : float
+        Direct profile at the same number of angles (s).
+    """
 
     max_radius_deviation: float      # max |r_FE - r_direct| (m)
     rms_radius_deviation: float      # rms of the same (m)
@@ -89,7 +130,22 @@ class Comparison:
 
 
 def compare_direct(result: SynthesisResult, program, *, n_dense: int = 72001) -> Comparison:
-    """Compare a converged FE curve with :func:`direct_profile` of the same program."""
+    """Compare a converged FE curve with :func:`direct_profile` of the same program.
+
+    Parameters
+    ----------
+    result : SynthesisResult
+        The FE curve.
+    program : femcam.kinematics.CamProgram
+        The program it was synthesised for.
+    n_dense : int
+        Grid points over one revolution for the direct max |phi|.
+
+    Returns
+    -------
+    Comparison
+        Deviations (m, rad) and times (s).
+    """
     t0 = time.perf_counter()
     r_d, phi_d = direct_profile(program, result.Rb, result.theta)
     t_direct = time.perf_counter() - t0
@@ -106,7 +162,31 @@ def compare_direct(result: SynthesisResult, program, *, n_dense: int = 72001) ->
 
 @dataclass(frozen=True)
 class StudyRow:
-    """One point of a parameter study (SI units; ``error`` is max |y - y_o| in m)."""
+    """One point of a parameter study.
+
+    Parameters
+    ----------
+    k, mu : float
+        Penalty constant and stabilisation parameter (-).
+    n_elements : int
+        Quadratic elements.
+    max_error : float
+        max |y - y_o| over the sampled curve (m; NaN if not converged).
+    node_error : float
+        max |y - y_o| at the nodes (m; NaN if not converged).
+    phi_max : float
+        max |phi| of the FE curve (rad).
+    iterations : int
+        Newton iterations (those done before the failure if not converged).
+    condition : float
+        1-norm condition estimate of the final tangent (-).
+    time : float
+        Newton solve time (s).
+    converged : bool
+        False when the solve raised :class:`~femcam.errors.ConvergenceError`.
+    message : str
+        The solver's message or the error text.
+    """
 
     k: float
     mu: float
@@ -122,6 +202,7 @@ class StudyRow:
 
     @property
     def k_over_mu(self) -> float:
+        """k / mu (-)."""
         return self.k / self.mu
 
 
@@ -140,7 +221,26 @@ def _row(program, Rb, opt) -> StudyRow:
 
 def study_k(program, *, Rb: float, ks, mu: float = 1.0,
             options: SynthesisOptions | None = None) -> list[StudyRow]:
-    """Error and pressure angle against k at fixed mu (seed 003 Figs. 6 and 7)."""
+    """Error and pressure angle against k at fixed mu (seed 003 Figs. 6 and 7).
+
+    Parameters
+    ----------
+    program : CamProgram or callable
+        The lift law (see :func:`~femcam.synthesis.synthesize_knife_edge`).
+    Rb : float
+        Base-circle radius (m).
+    ks : iterable of float
+        Penalty constants (-).
+    mu : float
+        Stabilisation parameter (-).
+    options : SynthesisOptions, optional
+        Other settings (k and mu replaced).
+
+    Returns
+    -------
+    list of StudyRow
+        One per k; a failed solve is a row with ``converged = False``.
+    """
     base = options or SynthesisOptions()
     return [_row(program, Rb, replace(base, k=float(k), mu=float(mu))) for k in ks]
 
@@ -150,14 +250,46 @@ def study_k_over_mu(program, *, Rb: float, ratios, k: float = 1.0e6,
     """Error and pressure angle against k/mu at fixed k (seed 003 Figs. 8 and 9).
 
     Continuation starts at ``k_start mu``, so it is lowered with mu to keep the first stage
-    at k/mu = 1e4 or less."""
+    at k/mu = 1e4 or less.
+
+    Parameters
+    ----------
+    program : CamProgram or callable
+        The lift law (see :func:`~femcam.synthesis.synthesize_knife_edge`).
+    Rb : float
+        Base-circle radius (m).
+    ratios : iterable of float
+        Values of k/mu (-).
+    k : float
+        Penalty constant (-).
+    options : SynthesisOptions, optional
+        Other settings (k and mu replaced).
+
+    Returns
+    -------
+    list of StudyRow
+        One per ratio; a failed solve is a row with ``converged = False``.
+    """
     base = options or SynthesisOptions()
     return [_row(program, Rb, replace(base, k=float(k), mu=float(k) / float(q)))
             for q in ratios]
 
 
 def format_table(rows, *, key: str = "k") -> str:
-    """Markdown table of a study (errors in mm, angles in deg)."""
+    """Markdown table of a study (errors in mm, angles in deg).
+
+    Parameters
+    ----------
+    rows : iterable of StudyRow
+        The study.
+    key : str
+        Unused (no caller passes it): the table always shows k, mu and k/mu.
+
+    Returns
+    -------
+    str
+        The table, one line per row.
+    """
     head = ("| k | mu | k/mu | elements | max error (mm) | max node error (mm) | phi max (deg) "
             "| iterations | cond. est. | time (s) |")
     lines = [head, "|" + "---|" * 10]
@@ -182,8 +314,22 @@ STUDY_CSV_COLUMNS = ("k_nondim", "mu_nondim", "k_over_mu_nondim", "n_elements", 
 def write_study_csv(rows, path, *, comments=()) -> Path:
     """Write a study as CSV with :data:`STUDY_CSV_COLUMNS` (errors in mm, angles in deg).
 
-    ``comments`` are written first as ``# ...`` lines (provenance). A row whose solve raised
-    :class:`ConvergenceError` has ``converged = False``, ``nan`` results and the error message.
+    A row whose solve raised :class:`ConvergenceError` has ``converged = False``, ``nan``
+    results and the error message.
+
+    Parameters
+    ----------
+    rows : iterable of StudyRow
+        The study.
+    path : str or os.PathLike
+        Output file.
+    comments : iterable of str
+        Written first as ``# ...`` lines (provenance).
+
+    Returns
+    -------
+    pathlib.Path
+        The path written.
 
     >>> import io, tempfile, os
     >>> row = StudyRow(k=1e3, mu=1.0, n_elements=30, max_error=5e-6, node_error=4e-6,

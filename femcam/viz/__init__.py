@@ -3,9 +3,8 @@
 functions so that the analytic chain never needs them. The plots draw results; they never
 compute or solve.
 
-Parameters and returns common to every ``plot_*`` function: the object to draw (a
-``SceneState``, ``SweepResult``, ``WearMap``, ``EvolutionResult``, ``SynthesisResult`` or
-``ContactResult``, as each names it), ``path`` (the PNG to write, str or Path) and keyword
-options (``title`` and the ones documented, units in each docstring). Each returns the path
-written.
+Every ``plot_*`` function takes the object to draw (a ``SceneState``, ``SweepResult``,
+``WearMap``, ``EvolutionResult``, ``SynthesisResult`` or ``ContactResult``), ``path`` (the PNG
+to write, str or Path) and keyword options, each documented in its numpydoc Parameters (units
+included); each returns the path written.
 """

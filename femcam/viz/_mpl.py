@@ -6,7 +6,13 @@ from pathlib import Path
 
 
 def pyplot():
-    """``matplotlib.pyplot`` on the Agg backend (headless; PNG output)."""
+    """``matplotlib.pyplot`` on the Agg backend (headless; PNG output).
+
+    Returns
+    -------
+    module
+        ``matplotlib.pyplot``.
+    """
     import matplotlib  # lazy: matplotlib is heavy and only the plots need it
 
     matplotlib.use("Agg", force=False)
@@ -17,7 +23,22 @@ def pyplot():
 
 def legend_outside(ax, fontsize: float = 8, **kw):
     """The legend of ``ax`` to the right of the axes, never over the data (``tight_layout``
-    makes room for it); None (no legend, no matplotlib warning) when no artist has a label."""
+    makes room for it); None (no legend, no matplotlib warning) when no artist has a label.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        The axes.
+    fontsize : float
+        Legend font size (pt).
+    **kw
+        Passed to ``ax.legend``.
+
+    Returns
+    -------
+    matplotlib.legend.Legend or None
+        The legend, None when nothing is labelled.
+    """
     if not ax.get_legend_handles_labels()[0]:
         return None
     return ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, frameon=False,
@@ -26,7 +47,24 @@ def legend_outside(ax, fontsize: float = 8, **kw):
 
 def save(fig, path, *, dpi: int = 100, tight: bool = False) -> Path:
     """Write ``fig`` to the PNG ``path`` (parent folders made; laid out first when ``tight``)
-    and close it; returns the path as a :class:`~pathlib.Path`."""
+    and close it; returns the path as a :class:`~pathlib.Path`.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        The figure (closed afterwards).
+    path : str or os.PathLike
+        Output PNG.
+    dpi : int
+        Resolution (dots per inch).
+    tight : bool
+        ``fig.tight_layout()`` first.
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+    """
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     if tight:

@@ -6,7 +6,7 @@ Every function takes a :class:`femcam.scene.SceneState` (``st``) and a PNG path 
 the path. Labels carry units: mm, m/s, m/s^2, m/s^3, deg, N. :func:`plot_laws` (the
 normalised motion laws, ``docs/img/kinematics_laws.png``) needs no scene.
 
-Parameters and returns of the ``plot_*`` functions: see :mod:`femcam.viz`.
+Each function documents its parameters and return value (numpydoc, with units).
 """
 
 from __future__ import annotations
@@ -42,7 +42,22 @@ def _xaxis(ax, th):
 
 
 def plot_svaj(st, path, title: str = ""):
-    """Four stacked panels: lift s (mm), velocity v (m/s), acceleration a (m/s^2), jerk j (m/s^3)."""
+    """Four stacked panels: lift s (mm), velocity v (m/s), acceleration a (m/s^2), jerk j (m/s^3).
+
+    Parameters
+    ----------
+    st : femcam.scene.SceneState
+        The analytic chain (SI, rad).
+    path : str or os.PathLike
+        Output PNG.
+    title : str
+        Figure title ("": a default).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+    """
     plt = pyplot()
     th = _deg(st)
     fig, axs = plt.subplots(4, 1, sharex=True, figsize=(7.0, 8.0))
@@ -60,7 +75,24 @@ def plot_svaj(st, path, title: str = ""):
 
 
 def plot_pressure_angle(st, path, title: str = "", limit_deg: float = 30.0):
-    """Pressure angle phi (deg) with the +-limit lines (30 deg by default)."""
+    """Pressure angle phi (deg) with the +-limit lines (30 deg by default).
+
+    Parameters
+    ----------
+    st : femcam.scene.SceneState
+        The analytic chain (SI, rad).
+    path : str or os.PathLike
+        Output PNG.
+    title : str
+        Figure title ("": a default naming the maximum).
+    limit_deg : float
+        Pressure-angle limit drawn as +- lines (deg).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+    """
     plt = pyplot()
     th = _deg(st)
     fig, ax = plt.subplots(figsize=(7.0, 3.4))
@@ -80,7 +112,18 @@ RHO_CLIP_FACTOR = 4.0
 
 def rho_clip_mm(rho_mm) -> float:
     """The clip value (mm) of every rho plot: :data:`RHO_CLIP_FACTOR` x the median convex
-    radius (100 mm when no part is convex). Near an inflection |rho| grows without bound."""
+    radius (100 mm when no part is convex). Near an inflection |rho| grows without bound.
+
+    Parameters
+    ----------
+    rho_mm : array_like
+        Radius of curvature (mm, signed; inf where flat).
+
+    Returns
+    -------
+    float
+        The clip value (mm).
+    """
     rho_mm = np.asarray(rho_mm, float)
     pos = rho_mm[np.isfinite(rho_mm) & (rho_mm > 0)]
     return RHO_CLIP_FACTOR * float(np.median(pos)) if pos.size else 100.0
@@ -88,7 +131,26 @@ def rho_clip_mm(rho_mm) -> float:
 
 def plot_rho(st, path, title: str = "", Rr: float = 0.0, clip_mm: float | None = None):
     """Cam-surface radius of curvature rho (mm); concave parts are negative. Values beyond
-    ``clip_mm`` (default :func:`rho_clip_mm`) are clipped; the legend states the value."""
+    ``clip_mm`` (default :func:`rho_clip_mm`) are clipped; the legend states the value.
+
+    Parameters
+    ----------
+    st : femcam.scene.SceneState
+        The analytic chain (SI, rad).
+    path : str or os.PathLike
+        Output PNG.
+    title : str
+        Figure title ("": a default naming the maximum).
+    Rr : float
+        Roller radius drawn as a line (m; 0: none).
+    clip_mm : float, optional
+        Clip value (mm; default :func:`rho_clip_mm`).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+    """
     plt = pyplot()
     th = _deg(st)
     rho = np.asarray(st.rho, float) * 1e3
@@ -116,7 +178,22 @@ def plot_rho(st, path, title: str = "", Rr: float = 0.0, clip_mm: float | None =
 
 
 def plot_contact_force(st, path, title: str = ""):
-    """Contact force Fc (N, seed 002 eq. 11) with lift-off (Fc <= 0) shaded."""
+    """Contact force Fc (N, seed 002 eq. 11) with lift-off (Fc <= 0) shaded.
+
+    Parameters
+    ----------
+    st : femcam.scene.SceneState
+        The analytic chain (SI, rad).
+    path : str or os.PathLike
+        Output PNG.
+    title : str
+        Figure title ("": a default naming the maximum).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+    """
     plt = pyplot()
     th = _deg(st)
     fig, ax = plt.subplots(figsize=(7.0, 3.4))
@@ -133,7 +210,22 @@ def plot_contact_force(st, path, title: str = ""):
 
 
 def plot_cam(st, path, title: str = ""):
-    """Cam shape (cam frame, mm) with the pitch curve, base circle and undercut points."""
+    """Cam shape (cam frame, mm) with the pitch curve, base circle and undercut points.
+
+    Parameters
+    ----------
+    st : femcam.scene.SceneState
+        The analytic chain (SI, rad).
+    path : str or os.PathLike
+        Output PNG.
+    title : str
+        Figure title ("": names the follower kind).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+    """
     plt = pyplot()
     p = st.profile
     fig, ax = plt.subplots(figsize=(6.6, 5.0))
@@ -158,7 +250,28 @@ def plot_cam(st, path, title: str = ""):
 
 def plot_all(st, outdir, prefix: str = "", *, Rr: float = 0.0, limit_deg: float = 30.0,
              title: str = "") -> list[Path]:
-    """All analytic plots into ``outdir`` as ``[<prefix>_]{svaj,phi,rho,fc,cam}.png``."""
+    """All analytic plots into ``outdir`` as ``[<prefix>_]{svaj,phi,rho,fc,cam}.png``.
+
+    Parameters
+    ----------
+    st : femcam.scene.SceneState
+        The analytic chain (SI, rad).
+    outdir : str or os.PathLike
+        Output directory (must exist).
+    prefix : str
+        File-name prefix (``<prefix>_svaj.png``; "": none).
+    Rr : float
+        Roller radius drawn on the rho plot (m; 0: none).
+    limit_deg : float
+        Pressure-angle limit (deg).
+    title : str
+        Prefix of the SVAJ title ("": defaults).
+
+    Returns
+    -------
+    list of pathlib.Path
+        The five PNGs.
+    """
     outdir = Path(outdir)
     name = (lambda k: outdir / (f"{prefix}_{k}.png" if prefix else f"{k}.png"))  # noqa: E731
     pre = f"{title}: " if title else ""
@@ -183,6 +296,22 @@ def plot_laws(path, names=LAWS_FIGURE, n: int = 401, title: str = ""):
     This draws ``docs/img/kinematics_laws.png``::
 
         python -c "from femcam.viz.analytic import plot_laws; plot_laws('docs/img/kinematics_laws.png')"
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        Output PNG.
+    names : sequence of str
+        Motion-law names (:data:`femcam.kinematics.LAW_NAMES`).
+    n : int
+        Points per curve over u in [0, 1].
+    title : str
+        Figure title ("": a default).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
     """
     plt = pyplot()
     u = np.linspace(0.0, 1.0, n)

@@ -40,7 +40,20 @@ def _finish(fig, ax, ylabel: str, path, *, legend_loc: str = "best", grid: str =
 
 
 def plot_lambda(rows, path) -> str:
-    """lambda (left) and h_min, h_c (right) vs cam angle, regime limits 1 and 3 drawn."""
+    """lambda (left) and h_min, h_c (right) vs cam angle, regime limits 1 and 3 drawn.
+
+    Parameters
+    ----------
+    rows : dict of ndarray
+        :func:`femcam.assess.assess_rows` columns (SI; ``theta`` in rad).
+    path : str or os.PathLike
+        Output PNG.
+
+    Returns
+    -------
+    str
+        The path written.
+    """
     plt = pyplot()
     deg = np.degrees(rows["theta"])
     fig, (ax, bx) = plt.subplots(1, 2, figsize=(10, 3.4))
@@ -62,7 +75,24 @@ def plot_lambda(rows, path) -> str:
 
 
 def plot_temperatures(rows, path, *, T_oil=None, T_scuff=None) -> str:
-    """Flash temperature rise and contact temperature vs cam angle (scuffing limit dashed)."""
+    """Flash temperature rise and contact temperature vs cam angle (scuffing limit dashed).
+
+    Parameters
+    ----------
+    rows : dict of ndarray
+        :func:`femcam.assess.assess_rows` columns (SI; ``theta`` in rad).
+    path : str or os.PathLike
+        Output PNG.
+    T_oil : float, optional
+        Bulk oil temperature drawn as a line (C).
+    T_scuff : float, optional
+        Scuffing limit drawn dashed (C).
+
+    Returns
+    -------
+    str
+        The path written.
+    """
     fig, ax, deg = _angle_axes(rows, (6.5, 3.4))
     ax.plot(deg, rows["T_contact"], "C3-", label="contact temperature T_oil + dT_flash")
     if T_oil is not None:
@@ -78,7 +108,20 @@ def plot_temperatures(rows, path, *, T_oil=None, T_scuff=None) -> str:
 
 
 def plot_safety(rows, path) -> str:
-    """Safety factors vs cam angle on a log axis, the line SF = 1 drawn."""
+    """Safety factors vs cam angle on a log axis, the line SF = 1 drawn.
+
+    Parameters
+    ----------
+    rows : dict of ndarray
+        :func:`femcam.assess.assess_rows` columns (SI; ``theta`` in rad).
+    path : str or os.PathLike
+        Output PNG.
+
+    Returns
+    -------
+    str
+        The path written.
+    """
     fig, ax, deg = _angle_axes(rows, (6.5, 3.6))
     for i, (col, label) in enumerate(SAFETY):
         v = np.where(np.isfinite(rows[col]), rows[col], np.nan)
@@ -89,7 +132,20 @@ def plot_safety(rows, path) -> str:
 
 
 def plot_outline(rows, path) -> str:
-    """The cam outline coloured by lambda (left) and by the smallest safety factor (right)."""
+    """The cam outline coloured by lambda (left) and by the smallest safety factor (right).
+
+    Parameters
+    ----------
+    rows : dict of ndarray
+        :func:`femcam.assess.assess_rows` columns (SI; ``theta`` in rad). Needs ``cam_x``, ``cam_y`` (m).
+    path : str or os.PathLike
+        Output PNG.
+
+    Returns
+    -------
+    str
+        The path written.
+    """
     plt = pyplot()
     x, y = rows["cam_x"] * 1e3, rows["cam_y"] * 1e3
     sf = np.full(x.shape, np.inf)
@@ -117,7 +173,26 @@ WORST_UNITS = {"film (lambda)": "", "contact temperature": " C", "pitting life":
 
 def report_markdown(assessment, plots: dict, *, title: str = "", provenance: str = "", base=None) -> str:
     """The one-page report: inputs, worst angle per criterion, flags, skipped criteria, plots
-    (linked relative to the directory ``base`` of the report file)."""
+    (linked relative to the directory ``base`` of the report file).
+
+    Parameters
+    ----------
+    assessment : femcam.assess.Assessment
+        The assessment (rows, inputs, worst angles, flags).
+    plots : dict of str to path
+        ``{name: PNG path}`` to link.
+    title : str
+        Report title ("": a default).
+    provenance : str
+        Text of the provenance section.
+    base : str or os.PathLike, optional
+        Directory of the report; links are made relative to it.
+
+    Returns
+    -------
+    str
+        The Markdown text (angles in deg, stresses in MPa, temperatures in C).
+    """
     a = assessment
     r, inp = a.rows, a.inputs
     on = r["Fc"] > 0
@@ -153,7 +228,21 @@ def report_markdown(assessment, plots: dict, *, title: str = "", provenance: str
 
 
 def plot_assessment(assessment, out) -> dict:
-    """All four figures into ``out`` (a directory); returns ``{name: path}``."""
+    """All four figures into ``out`` (a directory); returns ``{name: path}``.
+
+    Parameters
+    ----------
+    assessment : femcam.assess.Assessment
+        The assessment.
+    out : str or os.PathLike
+        Output directory.
+
+    Returns
+    -------
+    dict of str to str
+        ``{name: path}`` of the PNGs written (lambda only with a lubricant, temperatures only
+        where they are finite).
+    """
     out = Path(out)
     r, inp = assessment.rows, assessment.inputs
     T_s = min((m["T_scuff"] for m in (inp.cam, inp.roller) if "T_scuff" in m), default=None)

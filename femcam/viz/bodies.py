@@ -12,7 +12,26 @@ from ._mpl import pyplot, save
 
 def plot_hoop(vtu_path, path, *, size=(760, 700), body: int = 1, clim=None):
     """Render the hoop stress (MPa) of the ring (``body`` id 1) from a VTU written by
-    :func:`femcam.bodies.export.write_ring_vtu` to a PNG; returns the path."""
+    :func:`femcam.bodies.export.write_ring_vtu` to a PNG; returns the path.
+
+    Parameters
+    ----------
+    vtu_path : str or os.PathLike
+        The ring's ``.vtu`` (stresses in Pa).
+    path : str or os.PathLike
+        Output PNG.
+    size : (int, int)
+        Image size (pixels).
+    body : int
+        ``body`` id of the cells drawn (1: the ring).
+    clim : (float, float), optional
+        Colour range (MPa; default: the data range).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+    """
     import pyvista as pv  # heavy optional dependency: only for rendering
 
     grid = pv.read(str(vtu_path))
@@ -34,7 +53,22 @@ def plot_hoop(vtu_path, path, *, size=(760, 700), body: int = 1, clim=None):
 
 def plot_wall_study(studies: dict, path, *, title: str = ""):
     """Bore hoop stress (MPa) and the cam-contact change (p0, a vs the solid roller, %) against
-    the ring wall (mm). ``studies``: ``{label: femcam.bodies.study.wall_study(...) dict}``."""
+    the ring wall (mm). ``studies``: ``{label: femcam.bodies.study.wall_study(...) dict}``.
+
+    Parameters
+    ----------
+    studies : dict
+        ``{label: femcam.bodies.study.wall_study(...) dict}`` (SI).
+    path : str or os.PathLike
+        Output PNG.
+    title : str
+        Figure title.
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+    """
     plt = pyplot()
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
     for label, s in studies.items():

@@ -18,7 +18,22 @@ def plot_force(results: dict, path, title: str = ""):
     :class:`~femcam.dynamics.DynamicsResult`; the rigid eq. 11 force of the first result is
     drawn as the reference (dotted: a result's own eq. 11 when its total mass differs);
     free-flight angles are shaded. The lower panel is the displacement error of the last mass
-    about its cycle mean (the mean is the static compression of the train)."""
+    about its cycle mean (the mean is the static compression of the train).
+
+    Parameters
+    ----------
+    results : dict of str to femcam.dynamics.DynamicsResult
+        Label -> response (forces in N, displacements in m).
+    path : str or os.PathLike
+        Output PNG.
+    title : str
+        Figure title ("": a default).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+    """
     plt = pyplot()
     fig, (ax, ax2) = plt.subplots(2, 1, sharex=True, figsize=(8.0, 6.5),
                                   gridspec_kw={"height_ratios": [3, 2]})
@@ -53,7 +68,24 @@ def plot_rpm_sweep(sweep, path, jump=None, title: str = ""):
     """Peak and least axial contact force (N) vs cam speed (rpm) of an
     :class:`~femcam.dynamics.RpmSweep`, with the rigid eq. 11 values dashed and, given a
     :class:`~femcam.dynamics.JumpResult`, the jump speed; speeds without a one-periodic
-    answer are marked with x."""
+    answer are marked with x.
+
+    Parameters
+    ----------
+    sweep : femcam.dynamics.RpmSweep
+        The sweep (speeds in rpm, forces in N).
+    path : str or os.PathLike
+        Output PNG.
+    jump : femcam.dynamics.JumpResult, optional
+        Jump speed to mark (rpm).
+    title : str
+        Figure title ("": a default).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+    """
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(8.0, 4.8))
     rpm = sweep.rpm

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ._mpl import pyplot
+from ._mpl import pyplot, save
 
 
 def plot_extra_panels(theta, panels, path, *, title: str = "") -> Path:
@@ -51,9 +51,4 @@ def plot_extra_panels(theta, panels, path, *, title: str = "") -> Path:
     axes[-1, 0].set_xlabel("cam angle (deg)")
     if title:
         fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    return path
+    return save(fig, path, dpi=90, tight=True)

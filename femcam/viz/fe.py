@@ -13,6 +13,26 @@ def plot_von_mises(result, path, *, window: float = 3.0, size=(760, 640), scalar
 
     ``result`` is a :class:`femcam.fe.ContactResult`; the x and y axes are drawn with their
     ticks in mm. Returns the path.
+
+    Parameters
+    ----------
+    result : femcam.fe.ContactResult
+        The FE solution with its full fields (Pa, m).
+    path : str or os.PathLike
+        Output PNG.
+    window : float
+        Half-size of the view in contact half-widths a (-).
+    size : (int, int)
+        Image size (pixels).
+    scalar : str
+        Point field to draw (Pa fields shown in MPa).
+    show_edges : bool
+        Draw the mesh edges.
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
     """
     import pyvista as pv  # lazy: pyvista/VTK is heavy and only this rendering needs it
 

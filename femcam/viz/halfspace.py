@@ -9,12 +9,27 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._mpl import pyplot
+from ._mpl import pyplot, save
 
 
 def plot_pressure_map(res, path, *, title: str = ""):
     """Contour map of ``res.p`` (MPa) over rolling ``x`` and axial ``y`` (mm) of a
-    :class:`~femcam.halfspace.strip.StripResult`, with the pressure along the length below."""
+    :class:`~femcam.halfspace.strip.StripResult`, with the pressure along the length below.
+
+    Parameters
+    ----------
+    res : femcam.halfspace.strip.StripResult
+        Pressure ``p`` (Pa) on the ``x``, ``y`` grid (m).
+    path : str or os.PathLike
+        Output PNG.
+    title : str
+        Figure title.
+
+    Returns
+    -------
+    str or pathlib.Path
+        ``path`` as given.
+    """
     plt = pyplot()
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(6.8, 6.0), height_ratios=[2, 1], sharex=True)
     Y, X = np.meshgrid(res.y * 1e3, res.x * 1e3)
@@ -35,16 +50,31 @@ def plot_pressure_map(res, path, *, title: str = ""):
     h1, l1 = ax2.get_legend_handles_labels()
     h2, l2 = ax2b.get_legend_handles_labels()
     ax2.legend(h1 + h2, l1 + l2, fontsize=8, loc="lower center")
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
+    save(fig, path, dpi=90, tight=True)
     return path
 
 
 def plot_peak_along_length(rows_by_crown: dict, path, *, p0_2d=None, title: str = ""):
     """Top: the peak pressure along the length ``p_line`` (MPa) as a map over cam angle and
     axial position, one panel per crown; bottom: the axial peak against cam angle for every crown
-    (and the 2D Hertz ``p0_2d`` (Pa), if given). ``rows_by_crown``: label -> rows dict."""
+    (and the 2D Hertz ``p0_2d`` (Pa), if given). ``rows_by_crown``: label -> rows dict.
+
+    Parameters
+    ----------
+    rows_by_crown : dict of str to dict
+        Crown label -> :func:`~femcam.halfspace.rows.finite_length_rows` dict (SI).
+    path : str or os.PathLike
+        Output PNG.
+    p0_2d : array_like, optional
+        2D Hertz peak pressure per angle (Pa).
+    title : str
+        Figure title.
+
+    Returns
+    -------
+    str or pathlib.Path
+        ``path`` as given.
+    """
     plt = pyplot()
     n = len(rows_by_crown)
     fig = plt.figure(figsize=(3.0 * n + 1.0, 6.4))
@@ -70,15 +100,37 @@ def plot_peak_along_length(rows_by_crown: dict, path, *, p0_2d=None, title: str 
     ax_b.legend(fontsize=8, ncol=4)
     if title:
         fig.suptitle(title, fontsize=10)
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
+    save(fig, path, dpi=90)
     return path
 
 
 def plot_crown_comparison(y, p_line_by_crown: dict, tilt_deg, peak_by_crown: dict, path, *,
                           p0_2d=None, title: str = ""):
     """Left: pressure along the length (MPa) at one angle for each crown; right: the axial peak
-    (MPa) against misalignment (deg) for each crown. ``y`` in m, pressures in Pa."""
+    (MPa) against misalignment (deg) for each crown. ``y`` in m, pressures in Pa.
+
+    Parameters
+    ----------
+    y : array_like
+        Axial positions (m).
+    p_line_by_crown : dict of str to array_like
+        Crown label -> pressure along the length at one angle (Pa).
+    tilt_deg : array_like
+        Misalignment angles (deg).
+    peak_by_crown : dict of str to array_like
+        Crown label -> axial peak pressure per misalignment (Pa).
+    path : str or os.PathLike
+        Output PNG.
+    p0_2d : float, optional
+        2D Hertz peak pressure (Pa), drawn as a reference.
+    title : str
+        Figure title.
+
+    Returns
+    -------
+    str or pathlib.Path
+        ``path`` as given.
+    """
     plt = pyplot()
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10.0, 4.0))
     for name, pl in p_line_by_crown.items():
@@ -98,7 +150,5 @@ def plot_crown_comparison(y, p_line_by_crown: dict, tilt_deg, peak_by_crown: dic
         ax.legend(fontsize=8)
     if title:
         fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
+    save(fig, path, dpi=90, tight=True)
     return path

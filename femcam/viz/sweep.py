@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ._mpl import legend_outside, pyplot
+from ._mpl import legend_outside, pyplot, save
 from .analytic import rho_clip_mm
 
 
@@ -31,18 +31,25 @@ def _table(result):
     return pyplot(), t, np.degrees(t["theta"])
 
 
-def _save(fig, path: Path) -> str:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=90)
-    pyplot().close(fig)
-    return str(path)
+def _save(fig, path) -> str:
+    """Lay out, write (90 dpi) and close ``fig``; the path as str."""
+    return str(save(fig, path, dpi=90, tight=True))
 
 
 def plot_p0(result, path) -> str:
     """Peak pressure against cam angle: Hertz (line), FE (points) and FE/Hertz - 1.
 
-    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG). Returns the
-    path written (str).
+    Parameters
+    ----------
+    result : femcam.sweep.SweepResult
+        The sweep (its ``table``, SI).
+    path : str or os.PathLike
+        Output PNG.
+
+    Returns
+    -------
+    str
+        The path written.
     """
     plt, t, deg = _table(result)
     fe = result.method != "hertz"
@@ -64,16 +71,24 @@ def plot_p0(result, path) -> str:
     legend_outside(ax)
     ax.grid(alpha=0.3)
     ax.set_title("Peak contact pressure over the cam cycle")
-    fig.tight_layout()
-    return _save(fig, Path(path))
+    return _save(fig, path)
 
 
 def plot_maxima(result, path) -> str:
     """Von Mises and tau1 maxima (MPa) against cam angle: FE points, Hertz lines (when
     ``result.hertz_factors`` is set).
 
-    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG). Returns the
-    path written (str).
+    Parameters
+    ----------
+    result : femcam.sweep.SweepResult
+        The sweep (its ``table``, SI). Needs ``hertz_factors`` for the Hertz lines.
+    path : str or os.PathLike
+        Output PNG.
+
+    Returns
+    -------
+    str
+        The path written.
     """
     plt, t, deg = _table(result)
     fig, ax = plt.subplots(figsize=(7, 3.6))
@@ -90,15 +105,23 @@ def plot_maxima(result, path) -> str:
     ax.set_ylabel("stress (MPa)")
     legend_outside(ax)
     ax.set_title("Subsurface stress maxima over the cam cycle")
-    fig.tight_layout()
-    return _save(fig, Path(path))
+    return _save(fig, path)
 
 
 def plot_svaj_loads(result, path) -> str:
     """s, v, a, j, phi, rho, Fc and Hertz p0 against cam angle.
 
-    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG). Returns the
-    path written (str).
+    Parameters
+    ----------
+    result : femcam.sweep.SweepResult
+        The sweep (its ``table``, SI).
+    path : str or os.PathLike
+        Output PNG.
+
+    Returns
+    -------
+    str
+        The path written.
     """
     plt, t, deg = _table(result)
     fig, axs = plt.subplots(4, 2, figsize=(9, 7.5), sharex=True)
@@ -117,15 +140,23 @@ def plot_svaj_loads(result, path) -> str:
     for ax in axs[-1]:
         ax.set_xlabel("cam angle theta (deg)")
     fig.suptitle("Kinematics (SVAJ), geometry and load over the cam cycle")
-    fig.tight_layout()
-    return _save(fig, Path(path))
+    return _save(fig, path)
 
 
 def plot_wear(result, path) -> str:
     """Archard wear depth per revolution (nm) and sliding speed (m/s) against cam angle.
 
-    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG). Returns the
-    path written (str).
+    Parameters
+    ----------
+    result : femcam.sweep.SweepResult
+        The sweep (its ``table``, SI). Needs the wear columns.
+    path : str or os.PathLike
+        Output PNG.
+
+    Returns
+    -------
+    str
+        The path written.
     """
     plt, t, deg = _table(result)
     fig, axs = plt.subplots(2, 1, figsize=(7, 4.6), sharex=True)
@@ -147,8 +178,7 @@ def plot_wear(result, path) -> str:
     legend_outside(axs[1])
     axs[1].set_xlabel("cam angle theta (deg)")
     axs[1].grid(alpha=0.3)
-    fig.tight_layout()
-    return _save(fig, Path(path))
+    return _save(fig, path)
 
 
 def plot_surface_worst(profile: dict, path) -> str:
@@ -183,8 +213,7 @@ def plot_surface_worst(profile: dict, path) -> str:
     fig.suptitle(f"Surface stresses at the worst angle theta = {profile['theta_deg']:.1f} deg "
                  f"(Fc = {profile['Fc']:.0f} N, mu = {profile['mu']:g}"
                  + (f", {profile['traction']})" if "traction" in profile else ")"))
-    fig.tight_layout()
-    return _save(fig, Path(path))
+    return _save(fig, path)
 
 
 def _jump_clusters(deg):
@@ -206,9 +235,19 @@ def plot_junction_p0(result, path, reference=None) -> str:
     exact gap (largest nodal pressure; the arc FE's p0 from ``exact_vs_arc_p0``), optionally a
     reference.
 
-    Parameters: ``result`` (:class:`femcam.sweep.SweepResult`), ``path`` (the PNG),
-    ``reference`` (optional ``(theta_deg, p0_Pa)`` arrays, e.g. an independent half-space solve).
-    Returns the path written (str).
+    Parameters
+    ----------
+    result : femcam.sweep.SweepResult
+        The sweep (its ``table``, SI). Rows flagged ``curvature_jump``.
+    path : str or os.PathLike
+        Output PNG.
+    reference : (array_like, array_like), optional
+        ``(theta_deg, p0_Pa)``, e.g. an independent half-space solve (deg, Pa).
+
+    Returns
+    -------
+    str
+        The path written.
     """
     plt, t, deg = _table(result)
     j = np.flatnonzero((t["curvature_jump"] == 1) & (t["status"] == "ok"))
@@ -230,8 +269,7 @@ def plot_junction_p0(result, path, reference=None) -> str:
     axs[0, 0].set_ylabel("peak pressure (MPa)")
     axs[0, 0].legend(loc="best", fontsize=7)
     fig.suptitle("Peak pressure across the curvature jumps")
-    fig.tight_layout()
-    return _save(fig, Path(path))
+    return _save(fig, path)
 
 
 def plot_sweep(result, out) -> dict[str, str]:

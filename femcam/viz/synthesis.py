@@ -3,7 +3,7 @@
 matplotlib is imported inside each function (Agg, headless). Lengths are plotted in mm and
 angles in degrees, with the unit in every label.
 
-Parameters and returns of the ``plot_*`` functions: see :mod:`femcam.viz`.
+Each function documents its parameters and return value (numpydoc, with units).
 """
 
 from __future__ import annotations
@@ -13,11 +13,26 @@ from pathlib import Path
 
 import numpy as np
 
-from ._mpl import pyplot
+from ._mpl import pyplot, save
 
 
 def plot_curve(result, path, *, direct_r=None) -> Path:
-    """Cam curve (FE nodes and interpolated curve), base circle, optional direct profile."""
+    """Cam curve (FE nodes and interpolated curve), base circle, optional direct profile.
+
+    Parameters
+    ----------
+    result : femcam.synthesis.SynthesisResult
+        The FE curve (m, rad).
+    path : str or os.PathLike
+        Output PNG.
+    direct_r : array_like, optional
+        Direct-profile radius at ``result.theta`` (m).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+    """
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(4.6, 4.6), dpi=90)
     t = np.linspace(0, 2 * np.pi, 400)
@@ -34,14 +49,24 @@ def plot_curve(result, path, *, direct_r=None) -> Path:
     ax.set_ylabel("y (mm)")
     ax.set_title(f"knife-edge cam, Rb = {Rb:g} mm, {result.options.n_elements} elements")
     ax.legend(fontsize=7, loc="lower left")
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
-    return Path(path)
+    return save(fig, path, dpi=90, tight=True)  # the figure's own 90 dpi
 
 
 def plot_error_phi(result, path) -> Path:
-    """Transfer-function error and pressure angle (FE vs exact) against cam angle."""
+    """Transfer-function error and pressure angle (FE vs exact) against cam angle.
+
+    Parameters
+    ----------
+    result : femcam.synthesis.SynthesisResult
+        The FE curve (error in m, angles in rad).
+    path : str or os.PathLike
+        Output PNG.
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+    """
     plt = pyplot()
     fig, (a1, a2) = plt.subplots(2, 1, figsize=(6.0, 4.6), dpi=90, sharex=True)
     th = np.degrees(result.theta)
@@ -55,14 +80,26 @@ def plot_error_phi(result, path) -> Path:
     a2.set_ylabel("pressure angle phi (deg)")
     a2.set_xlabel("cam angle theta (deg)")
     a2.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
-    return Path(path)
+    return save(fig, path, dpi=90, tight=True)  # the figure's own 90 dpi
 
 
 def plot_study(rows, path, *, x: str = "k") -> Path:
-    """Error and phi_max against k or k/mu (seed 003 Figs. 6-9), log x axis."""
+    """Error and phi_max against k or k/mu (seed 003 Figs. 6-9), log x axis.
+
+    Parameters
+    ----------
+    rows : sequence of femcam.synthesis.StudyRow
+        The study (errors in m, angles in rad).
+    path : str or os.PathLike
+        Output PNG.
+    x : str
+        ``"k"``: k on the log x axis; anything else: k/mu (-).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+    """
     plt = pyplot()
     ok = [r for r in rows if r.converged]
     xs = np.array([r.k if x == "k" else r.k_over_mu for r in ok])
@@ -73,7 +110,4 @@ def plot_study(rows, path, *, x: str = "k") -> Path:
     a2.semilogx(xs, [math.degrees(r.phi_max) for r in ok], "o-", ms=3)
     a2.set_xlabel("k (-)" if x == "k" else "k/mu (-)")
     a2.set_ylabel("max pressure angle (deg)")
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
-    return Path(path)
+    return save(fig, path, dpi=90, tight=True)  # the figure's own 90 dpi

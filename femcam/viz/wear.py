@@ -2,21 +2,19 @@
 length, the follower (roller) depth, a polar view of the cam with the wear magnified, a
 motion-law comparison, and the evolved vs linear depth of a profile evolution.
 
-Parameters and returns of the ``plot_*`` functions: see :mod:`femcam.viz`.
+Each function documents its parameters and return value (numpydoc, with units).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from ._mpl import legend_outside, pyplot
+from ._mpl import legend_outside, pyplot, save
 
 
 def _save(fig, path, dpi: int = 90):
     """Lay out, write and close a figure; returns ``path``."""
-    fig.tight_layout()
-    fig.savefig(path, dpi=dpi)
-    pyplot().close(fig)
+    save(fig, path, dpi=dpi, tight=True)
     return path
 
 
@@ -26,7 +24,24 @@ def plot_wear_map(wm, path, *, title: str = "", follower_label: str | None = Non
 
     On a roller the follower panel shows the depth after ``cycles`` with the contact's drift
     from one revolution to the next (``wm.depth_follower_cycles``) and the phase-locked bound
-    ``cycles x`` one revolution's depth (dashed)."""
+    ``cycles x`` one revolution's depth (dashed).
+
+    Parameters
+    ----------
+    wm : femcam.wear.map.WearMap
+        The wear map (depths in m per revolution, ``cycles``).
+    path : str or os.PathLike
+        Output PNG.
+    title : str
+        Figure title.
+    follower_label : str, optional
+        Label of the follower surface coordinate (default from the map).
+
+    Returns
+    -------
+    str or pathlib.Path
+        ``path`` as given.
+    """
     plt = pyplot()
     fig, (ax1, ax2, ax3) = plt.subplots(3, 1, figsize=(8.4, 7.6))
     c = wm.cycles
@@ -61,7 +76,22 @@ def plot_wear_map(wm, path, *, title: str = "", follower_label: str | None = Non
 
 
 def worn_profile(wm, x, y, magnify: float):
-    """Cam-frame points of the profile moved inward by ``magnify x depth`` (m)."""
+    """Cam-frame points of the profile moved inward by ``magnify x depth`` (m).
+
+    Parameters
+    ----------
+    wm : femcam.wear.map.WearMap
+        The wear map (depths in m per revolution, ``cycles``).
+    x, y : array_like
+        Cam profile points in the cam frame (m), ordered along the profile.
+    magnify : float
+        Wear magnification factor (-).
+
+    Returns
+    -------
+    (ndarray, ndarray)
+        The worn profile's x and y (m).
+    """
     x = np.asarray(x, float)
     y = np.asarray(y, float)
     seg = np.hypot(np.diff(x, append=x[0]), np.diff(y, append=y[0]))
@@ -80,7 +110,27 @@ def worn_profile(wm, x, y, magnify: float):
 
 
 def plot_wear_polar(wm, x, y, path, *, magnify: float | None = None, title: str = ""):
-    """The cam profile (cam frame) and the worn profile with the wear magnified."""
+    """The cam profile (cam frame) and the worn profile with the wear magnified.
+
+    Parameters
+    ----------
+    wm : femcam.wear.map.WearMap
+        The wear map (depths in m per revolution, ``cycles``).
+    x, y : array_like
+        Cam profile points in the cam frame (m), ordered along the profile.
+    path : str or os.PathLike
+        Output PNG.
+    magnify : float, optional
+        Wear magnification (-; default: the largest depth drawn as 5 % of the profile's x
+        extent).
+    title : str
+        Figure title.
+
+    Returns
+    -------
+    str or pathlib.Path
+        ``path`` as given.
+    """
     plt = pyplot()
     hmax = wm.max_depth
     if magnify is None:
@@ -100,7 +150,22 @@ def plot_wear_polar(wm, x, y, path, *, magnify: float | None = None, title: str 
 
 
 def plot_wear_comparison(maps: dict, path, *, title: str = ""):
-    """Depth vs cam angle for several motion laws (``{label: WearMap}``)."""
+    """Depth vs cam angle for several motion laws (``{label: WearMap}``).
+
+    Parameters
+    ----------
+    maps : dict of str to femcam.wear.map.WearMap
+        Motion-law label -> wear map (m per revolution).
+    path : str or os.PathLike
+        Output PNG.
+    title : str
+        Figure title.
+
+    Returns
+    -------
+    str or pathlib.Path
+        ``path`` as given.
+    """
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.4, 3.6))
     for label, wm in maps.items():
@@ -116,7 +181,22 @@ def plot_wear_comparison(maps: dict, path, *, title: str = ""):
 
 def plot_evolution(res, path, *, title: str = ""):
     """Two panels of a :class:`~femcam.wear.evolution.EvolutionResult`: the evolved and the linear
-    cam depth after ``res.cycles`` revolutions vs arc length (um), and their difference (nm)."""
+    cam depth after ``res.cycles`` revolutions vs arc length (um), and their difference (nm).
+
+    Parameters
+    ----------
+    res : femcam.wear.evolution.EvolutionResult
+        Evolved and linear depths (m) along the cam arc (m).
+    path : str or os.PathLike
+        Output PNG.
+    title : str
+        Figure title.
+
+    Returns
+    -------
+    str or pathlib.Path
+        ``path`` as given.
+    """
     plt = pyplot()
     fig, (a1, a2) = plt.subplots(2, 1, figsize=(8.0, 6.0), sharex=True)
     x = res.x_cam * 1e3

@@ -1,0 +1,58 @@
+"""One gmsh session at a time: :data:`GMSH_LOCK` and :func:`gmsh_session` (the only place gmsh
+is imported; used by the contact mesh and by :mod:`femcam.bodies`)."""
+
+from __future__ import annotations
+
+import threading
+from contextlib import contextmanager
+
+from ..errors import FemcamError
+
+#: Held around every use of gmsh (initialise, mesh, finalise): gmsh keeps one global state per
+#: process and is not thread-safe (Dask runs several tasks in threads of one worker process).
+GMSH_LOCK = threading.RLock()
+
+
+@contextmanager
+def gmsh_session(what: str):
+    """An initialised gmsh, held under :data:`GMSH_LOCK`.
+
+    gmsh is initialised here only if it is not already, and finalised on exit if it was
+    initialised here.
+
+    Parameters
+    ----------
+    what : str
+        What is meshed, for the error message (e.g. ``"the contact region"``).
+
+    Yields
+    ------
+    module
+        The ``gmsh`` module, terminal output off.
+
+    Raises
+    ------
+    FemcamError
+        ``"gmsh failed to mesh <what>: ..."`` for any gmsh failure (gmsh raises plain
+        ``Exception``); a :class:`FemcamError` raised inside passes unchanged.
+    """
+    import gmsh  # lazy: gmsh is a large native library, loaded only to build meshes
+
+    with GMSH_LOCK:  # gmsh is one global, non-thread-safe state per process
+        init_here = not gmsh.isInitialized()
+        if init_here:
+            # interruptible=False: gmsh would install its own SIGINT handler (which ends the
+            # process silently on Ctrl-C, and which Python allows only in the main thread, while
+            # Dask runs tasks in worker threads); Python's KeyboardInterrupt stays in charge
+            gmsh.initialize(["-nopopup"], readConfigFiles=False, interruptible=False)
+        try:
+            gmsh.option.setNumber("General.Terminal", 0)
+            gmsh.option.setNumber("General.Verbosity", 1)
+            yield gmsh
+        except FemcamError:
+            raise
+        except Exception as exc:  # gmsh raises plain Exception
+            raise FemcamError(f"gmsh failed to mesh {what}: {exc}") from None
+        finally:
+            if init_here:
+                gmsh.finalize()
