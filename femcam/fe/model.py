@@ -31,7 +31,7 @@ from ..hertz.conformity import roller_does_not_fit
 from ..hertz.contact import effective_radius, half_width, peak_pressure
 from ..materials import PLANES, Material, effective_modulus
 from ..mesh import ContactMesh, MeshOptions, build_contact_mesh, surface_height
-from .contact import load_matrix, solve_lcp, trapezoid_weights
+from .contact import load_operator, solve_lcp, trapezoid_weights
 from .elasticity import (
     ELEMENTS,
     ORDERINGS,
@@ -181,10 +181,8 @@ class ContactModel:
             # body-specific signs: pressure into the body, friction +x on cam, -x on roller
             sn = -1.0 if name == "cam" else 1.0
             st = 1.0 if name == "cam" else -1.0
-            # sparse: a hat loads 3 nodes (the dense (n_dofs, n_c) arrays were 2 x 54 MB per
-            # body at a/h = 40, kept for full_field)
-            Bn[name] = sp.csc_matrix(sn * load_matrix(b, geo.contact, x, 1))
-            Bt[name] = sp.csc_matrix(st * load_matrix(b, geo.contact, x, 0))
+            Bn[name] = sn * load_operator(b, geo.contact, x, 1)
+            Bt[name] = st * load_operator(b, geo.contact, x, 0)
             # displacements read at the contact vertices: normal (y) rows, then tangential (x)
             ydof = b.basis.nodal_dofs[1, geo.contact]
             cdof = np.concatenate([ydof, b.basis.nodal_dofs[0, geo.contact]])
