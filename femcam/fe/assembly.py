@@ -71,15 +71,14 @@ def elasticity_stiffness(points: np.ndarray, triangles: np.ndarray, element_dofs
     inv[0, :, 1] = -J[0, :, 1] / det
     inv[1, :, 0] = -J[1, :, 0] / det
     inv[1, :, 1] = J[0, :, 0] / det
-    g = np.einsum("jkq,kei->ejiq", G, inv)  # physical gradients (nel, nloc, 2[i], nq)
+    g = np.einsum("jkq,kei->ejiq", G, inv).reshape(det.size, 2 * nloc, -1)  # (nel, (j c), nq)
     wq = np.abs(det)[:, None] * _QUAD_W  # (nel, nq)
-    lam = np.broadcast_to(np.asarray(lam, dtype=float), det.shape)
-    mu = np.broadcast_to(np.asarray(mu_L, dtype=float), det.shape)
-    gw = g * wq[:, None, None, :]
-    # (nel, j, c, l, d): lam g_jc g_ld + mu g_jd g_lc, then + mu delta_cd g_j . g_l
-    Kloc = lam[:, None, None, None, None] * np.einsum("ejcq,eldq->ejcld", gw, g)
-    Kloc += mu[:, None, None, None, None] * np.einsum("ejdq,elcq->ejcld", gw, g)
-    gg = mu[:, None, None] * np.einsum("ejiq,eliq->ejl", gw, g)
+    # M[e, (j c), (l d)] = sum_q w_q g_jc g_ld: one batched product gives all three terms
+    M = np.matmul(g * wq[:, None, :], g.transpose(0, 2, 1)).reshape(det.size, nloc, 2, nloc, 2)
+    lam = np.asarray(lam, dtype=float).reshape(-1, 1, 1, 1, 1)
+    mu = np.asarray(mu_L, dtype=float).reshape(-1, 1, 1)
+    Kloc = lam * M + mu[..., None, None] * M.transpose(0, 1, 4, 3, 2)  # lam g_jc g_ld + mu g_jd g_lc
+    gg = mu * (M[:, :, 0, :, 0] + M[:, :, 1, :, 1])  # mu g_j . g_l on the diagonal c = d
     Kloc[:, :, 0, :, 0] += gg
     Kloc[:, :, 1, :, 1] += gg
     n = 2 * nloc

@@ -265,8 +265,20 @@ def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matri
     for j in range(nloc):
         _, dphi = elem.lbasis(ref, j)
         G[j] = dphi
-    p = mesh.p
+    nscal = b.N // 2
+    sdofs = b.element_dofs[::2] // 2  # scalar dofs (vector dofs interleaved (ux, uy) per node)
+    cnt = np.bincount(sdofs.ravel(), minlength=nscal).astype(float)  # elements per node
+    lam, mu = (body.lam, body.mu_L) if body.lam_e is None else (body.lam_e, body.mu_e)
+    edofs = b.element_dofs
     t = mesh.t
+    if nodes is not None:  # only the elements around the selected nodes (the stress window)
+        on = np.zeros(nscal, dtype=bool)
+        on[np.asarray(nodes)] = True
+        els = np.nonzero(on[sdofs].any(axis=0))[0]
+        t, sdofs, edofs = t[:, els], sdofs[:, els], edofs[:, els]
+        if body.lam_e is not None:
+            lam, mu = lam[els], mu[els]
+    p = mesh.p
     x0 = p[:, t[0]]
     J = np.stack([p[:, t[1]] - x0, p[:, t[2]] - x0], axis=2)  # (2, nel, 2): dx_i/dxi_k
     detJ = J[0, :, 0] * J[1, :, 1] - J[0, :, 1] * J[1, :, 0]
@@ -277,22 +289,15 @@ def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matri
     invJ[1, :, 1] = J[0, :, 0] / detJ
     # physical gradients: (nloc_j, 2[i], nel, nloc_k)
     dphi = np.einsum("jkn,kei->jien", G, invJ)
-    # scalar dofs of each element (local order matches elem.lbasis order)
-    sdofs = b.element_dofs[::2] // 2  # vector dofs interleaved (ux, uy) per scalar node
-    nel = t.shape[1]
-    lam, mu = (body.lam, body.mu_L) if body.lam_e is None else (body.lam_e, body.mu_e)
     rows, cols, vals = [], [], []
-    nscal = b.N // 2
-    # counts for averaging
-    cnt = np.bincount(sdofs.ravel(), minlength=nscal).astype(float)
     for k in range(nloc):  # node at which stress is evaluated
         node = sdofs[k]
         w = 1.0 / cnt[node]
         for j in range(nloc):
             dx = dphi[j, 0, :, k]
             dy = dphi[j, 1, :, k]
-            ux = b.element_dofs[2 * j]
-            uy = b.element_dofs[2 * j + 1]
+            ux = edofs[2 * j]
+            uy = edofs[2 * j + 1]
             # sxx = (lam+2mu) du/dx + lam dv/dy ; syy = lam du/dx + (lam+2mu) dv/dy ; sxy = mu(du/dy+dv/dx)
             for comp, cu, cv in ((0, (lam + 2 * mu) * dx, lam * dy),
                                  (1, lam * dx, (lam + 2 * mu) * dy),
@@ -301,7 +306,6 @@ def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matri
                 rows += [r, r]
                 cols += [ux, uy]
                 vals += [w * cu, w * cv]
-    del nel
     S = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
                       shape=(3 * nscal, b.N))
     if nodes is not None:
