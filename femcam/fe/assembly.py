@@ -115,3 +115,4 @@ def contact_last_order(K: sp.csr_matrix, free: np.ndarray, last: np.ndarray,
     dofs = np.stack([2 * first, 2 * first + 1], axis=1).ravel()
     order = np.concatenate([pos[dofs], pos[np.asarray(last)]])
     return order[order >= 0]
+

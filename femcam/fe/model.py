@@ -196,10 +196,17 @@ class ContactModel:
         x = cm.cam.contact_x
         args = dict(x=x, plane=plane, element=element, solver=solver, a_ref=a_ref)
         jobs = (("cam", cm.cam, cam), ("roller", cm.roller, roller))
-        # the two bodies in two threads: SuperLU's factorisation and numpy's kernels release
-        # the GIL, so on 2 cores the bodies build side by side (docs/performance.md)
-        with single_threaded_blas(), ThreadPoolExecutor(max_workers=2) as pool:
-            parts = dict(pool.map(lambda job: (job[0], _body_part(*job, **args)), jobs))
+        # one-off models (per_solve): the two bodies in two threads (SuperLU's factorisation and
+        # numpy's kernels release the GIL: on 2 cores the bodies build side by side). Models
+        # built for many load cases (precompute: the sweep's families, kept in a cache) are
+        # built in the main thread: in worker threads the a/h = 26 sweep's peak RSS grew from
+        # 1.12 GB to 1.46 GB (glibc per-thread arenas; docs/performance.md)
+        with single_threaded_blas():
+            if solver.stress_operators == "per_solve":
+                with ThreadPoolExecutor(max_workers=2) as pool:
+                    parts = dict(pool.map(lambda job: (job[0], _body_part(*job, **args)), jobs))
+            else:
+                parts = {job[0]: _body_part(*job, **args) for job in jobs}
         bodies = {k: v.body for k, v in parts.items()}
         Bn = {k: v.Bn for k, v in parts.items()}
         Bt = {k: v.Bt for k, v in parts.items()}
