@@ -75,7 +75,8 @@ class SolverOptions:
         solved at many load cases (sweep families). ``"per_solve"``: the contact DOFs are
         factorised last and the contact compliance is the Schur complement in the trailing
         factor blocks (no solve per contact unknown); each solve back-solves both bodies once
-        for the stresses: for one-off models (a single scene, fresh verification models).
+        for the stresses: for one-off models (a single scene, fresh verification models); the
+        two bodies of such a model are built in two threads.
         Same numbers to ~1e-12; times in docs/performance.md (benchmarks/bench_fe.py --modes).
     """
 
