@@ -16,7 +16,9 @@ Run:  python benchmarks/bench_fe.py [--quick] [--markdown] [--threaded-blas]
 * ``--modes`` (``--modes-only``: nothing else): cold scene per a/h (fresh process each, peak RSS) with
   ``SolverOptions(stress_operators="precompute")`` (sweep families) and ``"per_solve"``
   (Schur-complement contact compliance, one back-solve per load case: single scenes,
-  ``solve_contact``, fresh check models); the accuracy targets asserted on every row.
+  ``solve_contact``, fresh check models); the accuracy targets asserted on every row. The before/after
+  table of one cold scene per phase, with the answers checked equal to the previous version, is
+  ``benchmarks/bench_fe_cold.py --base DIR``.
 
 Sections (full run)
 1. accuracy and time vs mesh density a/h (seed 002 study model, steel/steel, Rr = 10 mm,

@@ -34,6 +34,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.sparse as sp
 
 from ..errors import ConvergenceError
 
@@ -56,29 +57,34 @@ def edge_midside_dofs(body, contact: np.ndarray) -> np.ndarray | None:
     return body.basis.facet_dofs[:, f]
 
 
-def load_matrix(body, contact: np.ndarray, x: np.ndarray, component: int) -> np.ndarray:
-    """Dense ``B`` (n_dofs, n_c): nodal forces in direction ``component`` (0 x, 1 y) of unit hats."""
+def load_operator(body, contact: np.ndarray, x: np.ndarray, component: int) -> sp.csc_matrix:
+    """Sparse ``B`` (n_dofs, n_c): nodal forces in direction ``component`` (0 x, 1 y) of unit hats
+    (a hat loads its vertex and the midside nodes of its two edges: at a/h = 40 the dense
+    ``(n_dofs, n_c)`` array was 107 MB per body and direction)."""
     nc = contact.size
     # edge lengths projected on x: small-slope theory, as in Hertz (docs/fe.md, "Limits of the
     # model"). The arc slope is x/R, so the true edge is longer by ~ (x/R)^2 / 2: 3e-4 h at the
     # end of the fine zone of the seed 002 case (2.5 a / Rr = 2.6 %), but 1.7 % h at x = a
     # for the nearly conformal rho = -1.005 Rr (a = 0.18 Rr) and more under huge loads
     hs = np.diff(x)
-    B = np.zeros((body.n_dofs, nc))
     vd = body.basis.nodal_dofs[component, contact]
     md = edge_midside_dofs(body, contact)
     k = np.arange(nc - 1)
     if md is None:  # P1: int L_a L_a = h/3, int L_a L_b = h/6
-        np.add.at(B, (vd[k], k), hs / 3)
-        np.add.at(B, (vd[k + 1], k + 1), hs / 3)
-        np.add.at(B, (vd[k + 1], k), hs / 6)
-        np.add.at(B, (vd[k], k + 1), hs / 6)
+        rows = (vd[k], vd[k + 1], vd[k + 1], vd[k])
+        vals = (hs / 3, hs / 3, hs / 6, hs / 6)
     else:  # P2 trace x P1 hats: ends h/6 (own hat), 0 (other hat); midside h/3 each
-        np.add.at(B, (vd[k], k), hs / 6)
-        np.add.at(B, (vd[k + 1], k + 1), hs / 6)
-        np.add.at(B, (md[component], k), hs / 3)
-        np.add.at(B, (md[component], k + 1), hs / 3)
-    return B
+        rows = (vd[k], vd[k + 1], md[component], md[component])
+        vals = (hs / 6, hs / 6, hs / 3, hs / 3)
+    cols = (k, k + 1, k, k + 1)
+    # duplicates (a vertex shared by two edges) are summed, as np.add.at did
+    return sp.csc_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
+                         shape=(body.n_dofs, nc))
+
+
+def load_matrix(body, contact: np.ndarray, x: np.ndarray, component: int) -> np.ndarray:
+    """Dense ``B`` (n_dofs, n_c) of :func:`load_operator`."""
+    return load_operator(body, contact, x, component).toarray()
 
 
 def trapezoid_weights(x: np.ndarray) -> np.ndarray:

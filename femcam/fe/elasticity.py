@@ -1,8 +1,9 @@
-"""Plane linear elasticity of one body with scikit-fem: assembly, supports, factorisation.
+"""Plane linear elasticity of one body: assembly, supports, factorisation.
 
 Symbols: ``K`` stiffness matrix (N/m per unit thickness), ``u`` nodal displacements (m),
 ``lam, mu_L`` Lamé parameters (Pa; :func:`femcam.materials.lame_parameters`, the plane-stress
-``lambda*`` when ``plane="stress"``). Weak form (scikit-fem ``linear_elasticity``):
+``lambda*`` when ``plane="stress"``). Weak form (scikit-fem's ``linear_elasticity``, assembled
+by the vectorised kernel of :mod:`femcam.fe.assembly` on scikit-fem's DOF numbering):
 
 .. math:: \\int_\\Omega \\sigma(u) : \\varepsilon(v)\\,d\\Omega, \\qquad
           \\sigma = \\lambda\\,\\mathrm{tr}(\\varepsilon) I + 2\\mu\\,\\varepsilon
@@ -29,6 +30,7 @@ from .._threads import single_threaded_blas
 from ..errors import FemcamError
 from ..materials import Material, lame_parameters
 from ..mesh import BodyMesh
+from .assembly import contact_last_order, elasticity_stiffness
 from .contact import edge_midside_dofs
 
 ELEMENTS = ("P1", "P2")
@@ -161,22 +163,6 @@ def _element(element: str):
     return ElementVector(ElementTriP2() if element == "P2" else ElementTriP1())
 
 
-def _contact_last_order(Kff, free, last, ordering):
-    """Factor order of the free DOFs: ``ordering``'s fill-reducing order with ``last`` (global
-    DOF indices) moved to the end. The order comes from SuperLU's column ordering of an
-    incomplete factorisation with everything dropped (``spilu``: the same ``perm_c`` as
-    ``splu``, measured identical, at a fraction of the cost)."""
-    ilu = spla.spilu(Kff, drop_tol=1e300, fill_factor=1.0, permc_spec=ordering,
-                     diag_pivot_thresh=0.0, options={"SymmetricMode": True})
-    order = np.argsort(ilu.perm_c)  # perm_c[j] is the position of column j
-    pos = np.full(int(free.max()) + 1 if free.size else 0, -1)
-    pos[free] = np.arange(free.size)
-    lf = pos[last]
-    is_last = np.zeros(free.size, dtype=bool)
-    is_last[lf] = True
-    return np.concatenate([order[~is_last[order]], lf])
-
-
 def contact_surface_dofs(mesh, basis, element: str, contact: np.ndarray) -> np.ndarray:
     """Vector DOFs (x and y) of the contact vertices and of the midside nodes between them."""
 
@@ -197,18 +183,20 @@ def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strai
     (:mod:`femcam.bodies`): its reactions are then zero.
 
     ``contact_last``: order the contact-surface DOFs (:func:`contact_surface_dofs`) last in the
-    factor, so that :meth:`Body.schur_inverse` gives the contact compliance (more fill than
-    ``ordering`` alone: 16.9 M vs 11.6 M nonzeros in L + U for the cam at a/h = 40).
+    factor (:func:`femcam.fe.assembly.contact_last_order`), so that :meth:`Body.schur_inverse`
+    gives the contact compliance (a little more fill than ``ordering`` alone: 13.0 M vs 10.4 M
+    nonzeros in L + U for the cam at a/h = 40).
     """
-    from skfem import Basis, MeshTri, asm  # skfem: kept out of ``import femcam`` (tests/test_imports.py)
-    from skfem.models.elasticity import linear_elasticity
+    from skfem import Basis, MeshTri  # skfem: kept out of ``import femcam`` (tests/test_imports.py)
 
     t0 = time.perf_counter()
     mesh = MeshTri(geometry.points, geometry.triangles, validate=False, sort_t=False)
     basis = Basis(mesh, _element(element))
     lam, mu_L = lame_parameters(material.E, material.nu, plane)
-    K = asm(linear_elasticity(float(lam), float(mu_L)), basis).tocsr()
-    lam_e, mu_e, K = _coating_stiffness(geometry, material, plane, basis, K, lam, mu_L)
+    lam_e, mu_e = _coating_lame(geometry, material, plane, lam, mu_L)
+    K = elasticity_stiffness(mesh.p, mesh.t, basis.element_dofs, basis.elem.elem, basis.N,
+                             float(lam) if lam_e is None else lam_e,
+                             float(mu_L) if mu_e is None else mu_e)
     fixed_nodes = np.zeros(mesh.p.shape[1], dtype=bool)
     fixed_nodes[geometry.fixed] = True
     fac = np.nonzero(fixed_nodes[mesh.facets].all(axis=0))[0]
@@ -217,14 +205,15 @@ def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strai
         fixed = np.array([basis.nodal_dofs[c, n] for n, c in supports], dtype=np.int64)
     free = np.setdiff1d(np.arange(basis.N), fixed)
     t1 = time.perf_counter()
-    Kff = K[free][:, free].tocsc()
     perm = last = None
     try:
         if contact_last:
             last = contact_surface_dofs(mesh, basis, element, geometry.contact)
-            perm = _contact_last_order(Kff, free, last, ordering)
+            perm = contact_last_order(K, free, last, ordering)
             last = free[perm[free.size - last.size:]]  # in factor order
-            Kff = Kff[perm][:, perm].tocsc()
+            Kff = K[free[perm]][:, free[perm]].tocsc()
+        else:
+            Kff = K[free][:, free].tocsc()
         lu = spla.splu(Kff, permc_spec="NATURAL" if contact_last else ordering,
                        diag_pivot_thresh=0.0, options={"SymmetricMode": True})
     except RuntimeError as exc:  # singular: support missing
@@ -237,23 +226,17 @@ def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strai
                 perm=perm, last=last)
 
 
-def _coating_stiffness(geometry: BodyMesh, material: Material, plane, basis, K, lam, mu_L):
+def _coating_lame(geometry: BodyMesh, material: Material, plane, lam, mu_L):
     """Layered body: a ``material`` with a ``coating`` Material (``femcam.layers.CoatedMaterial``)
     on a mesh with a coating band (``geometry.coating``) gets the coating's Lamé parameters in
-    the band: ``K += K_band(coating) - K_band(substrate)``. Returns (lam_e, mu_e, K)."""
+    the band. Returns element-wise (lam_e, mu_e) in Pa, or (None, None) for a homogeneous body."""
     coat = getattr(material, "coating", None)
     if coat is None or geometry.coating is None:
-        return None, None, K
-    from skfem import Basis, asm  # skfem: kept out of ``import femcam`` (tests/test_imports.py)
-    from skfem.models.elasticity import linear_elasticity
-
-    band = np.nonzero(geometry.coating)[0]
-    bb = Basis(basis.mesh, basis.elem, elements=band)
+        return None, None
     lc, mc = lame_parameters(coat.E, coat.nu, plane)
-    K = K + asm(linear_elasticity(float(lc - lam), float(mc - mu_L)), bb).tocsr()
     lam_e = np.where(geometry.coating, float(lc), float(lam))
     mu_e = np.where(geometry.coating, float(mc), float(mu_L))
-    return lam_e, mu_e, K
+    return lam_e, mu_e
 
 
 def probe_matrix(body: Body, xy: np.ndarray) -> sp.csr_matrix:
@@ -282,8 +265,20 @@ def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matri
     for j in range(nloc):
         _, dphi = elem.lbasis(ref, j)
         G[j] = dphi
-    p = mesh.p
+    nscal = b.N // 2
+    sdofs = b.element_dofs[::2] // 2  # scalar dofs (vector dofs interleaved (ux, uy) per node)
+    cnt = np.bincount(sdofs.ravel(), minlength=nscal).astype(float)  # elements per node
+    lam, mu = (body.lam, body.mu_L) if body.lam_e is None else (body.lam_e, body.mu_e)
+    edofs = b.element_dofs
     t = mesh.t
+    if nodes is not None:  # only the elements around the selected nodes (the stress window)
+        on = np.zeros(nscal, dtype=bool)
+        on[np.asarray(nodes)] = True
+        els = np.nonzero(on[sdofs].any(axis=0))[0]
+        t, sdofs, edofs = t[:, els], sdofs[:, els], edofs[:, els]
+        if body.lam_e is not None:
+            lam, mu = lam[els], mu[els]
+    p = mesh.p
     x0 = p[:, t[0]]
     J = np.stack([p[:, t[1]] - x0, p[:, t[2]] - x0], axis=2)  # (2, nel, 2): dx_i/dxi_k
     detJ = J[0, :, 0] * J[1, :, 1] - J[0, :, 1] * J[1, :, 0]
@@ -294,22 +289,15 @@ def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matri
     invJ[1, :, 1] = J[0, :, 0] / detJ
     # physical gradients: (nloc_j, 2[i], nel, nloc_k)
     dphi = np.einsum("jkn,kei->jien", G, invJ)
-    # scalar dofs of each element (local order matches elem.lbasis order)
-    sdofs = b.element_dofs[::2] // 2  # vector dofs interleaved (ux, uy) per scalar node
-    nel = t.shape[1]
-    lam, mu = (body.lam, body.mu_L) if body.lam_e is None else (body.lam_e, body.mu_e)
     rows, cols, vals = [], [], []
-    nscal = b.N // 2
-    # counts for averaging
-    cnt = np.bincount(sdofs.ravel(), minlength=nscal).astype(float)
     for k in range(nloc):  # node at which stress is evaluated
         node = sdofs[k]
         w = 1.0 / cnt[node]
         for j in range(nloc):
             dx = dphi[j, 0, :, k]
             dy = dphi[j, 1, :, k]
-            ux = b.element_dofs[2 * j]
-            uy = b.element_dofs[2 * j + 1]
+            ux = edofs[2 * j]
+            uy = edofs[2 * j + 1]
             # sxx = (lam+2mu) du/dx + lam dv/dy ; syy = lam du/dx + (lam+2mu) dv/dy ; sxy = mu(du/dy+dv/dx)
             for comp, cu, cv in ((0, (lam + 2 * mu) * dx, lam * dy),
                                  (1, lam * dx, (lam + 2 * mu) * dy),
@@ -318,7 +306,6 @@ def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matri
                 rows += [r, r]
                 cols += [ux, uy]
                 vals += [w * cu, w * cv]
-    del nel
     S = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
                       shape=(3 * nscal, b.N))
     if nodes is not None:

@@ -20,18 +20,21 @@ from __future__ import annotations
 
 import math
 import time
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
+from types import SimpleNamespace
 
 import numpy as np
 import scipy.sparse as sp
 
 from .. import _validate
+from .._threads import single_threaded_blas
 from ..errors import PhysicsError
 from ..hertz.conformity import roller_does_not_fit
 from ..hertz.contact import effective_radius, half_width, peak_pressure
 from ..materials import PLANES, Material, effective_modulus
 from ..mesh import ContactMesh, MeshOptions, build_contact_mesh, surface_height
-from .contact import load_matrix, solve_lcp, trapezoid_weights
+from .contact import load_operator, solve_lcp, trapezoid_weights
 from .elasticity import (
     ELEMENTS,
     ORDERINGS,
@@ -72,7 +75,8 @@ class SolverOptions:
         solved at many load cases (sweep families). ``"per_solve"``: the contact DOFs are
         factorised last and the contact compliance is the Schur complement in the trailing
         factor blocks (no solve per contact unknown); each solve back-solves both bodies once
-        for the stresses: for one-off models (a single scene, fresh verification models).
+        for the stresses: for one-off models (a single scene, fresh verification models); the
+        two bodies of such a model are built in two threads.
         Same numbers to ~1e-12; times in docs/performance.md (benchmarks/bench_fe.py --modes).
     """
 
@@ -115,6 +119,27 @@ def _radius(name: str, value) -> float:
     if math.isnan(value) or value == 0:
         raise _validate.fail(name, value, "m", "must be nonzero (inf for a flat cam)")
     return float(value)
+
+
+def _body_part(name, geo, mat, *, x, plane, element, solver, a_ref) -> SimpleNamespace:
+    """Assemble, factorise and condense one body: ``body``, its load operators ``Bn, Bt`` (with
+    the body's signs: pressure into the body, friction +x on the cam, -x on the roller), its
+    stress window ``ev``, the condensed displacements ``Yn, Yt`` at its contact vertices (normal
+    rows, then tangential) and the condensation time ``t_cond`` (s)."""
+    b = assemble_body(geo, mat, plane=plane, element=element, ordering=solver.ordering,
+                      contact_last=solver.stress_operators == "per_solve")
+    t1 = time.perf_counter()
+    sn, st = (-1.0, 1.0) if name == "cam" else (1.0, -1.0)
+    Bn = sn * load_operator(b, geo.contact, x, 1)
+    Bt = st * load_operator(b, geo.contact, x, 0)
+    ydof = b.basis.nodal_dofs[1, geo.contact]
+    cdof = np.concatenate([ydof, b.basis.nodal_dofs[0, geo.contact]])
+    S_c = sp.csr_matrix((np.ones(cdof.size), (np.arange(cdof.size), cdof)),
+                        shape=(cdof.size, b.n_dofs))
+    ev, Yn, Yt = build_eval_set(b, Bn, Bt, S_c, float(x[-1]), solver.eval_depth * a_ref,
+                                precompute=solver.stress_operators == "precompute")
+    return SimpleNamespace(body=b, Bn=Bn, Bt=Bt, ev=ev, Yn=Yn, Yt=Yt,
+                           t_cond=time.perf_counter() - t1)
 
 
 @dataclass(frozen=True, eq=False)
@@ -169,43 +194,36 @@ class ContactModel:
         t0 = time.perf_counter()
         cm = build_contact_mesh(Rr=Rr, rho=rho_ref, a_ref=a_ref, options=mesh)
         t_mesh = time.perf_counter() - t0
-        bodies, Bn, Bt, An, At, evals = {}, {}, {}, None, None, {}
-        Ctt, Ctn = 0.0, 0.0  # tangential condensed compliances (femcam.fe.traction)
-        t_cond = 0.0
         x = cm.cam.contact_x
-        for name, geo, mat in (("cam", cm.cam, cam), ("roller", cm.roller, roller)):
-            b = assemble_body(geo, mat, plane=plane, element=element, ordering=solver.ordering,
-                              contact_last=solver.stress_operators == "per_solve")
-            bodies[name] = b
-            t1 = time.perf_counter()
-            # body-specific signs: pressure into the body, friction +x on cam, -x on roller
-            sn = -1.0 if name == "cam" else 1.0
-            st = 1.0 if name == "cam" else -1.0
-            # sparse: a hat loads 3 nodes (the dense (n_dofs, n_c) arrays were 2 x 54 MB per
-            # body at a/h = 40, kept for full_field)
-            Bn[name] = sp.csc_matrix(sn * load_matrix(b, geo.contact, x, 1))
-            Bt[name] = sp.csc_matrix(st * load_matrix(b, geo.contact, x, 0))
-            # displacements read at the contact vertices: normal (y) rows, then tangential (x)
-            ydof = b.basis.nodal_dofs[1, geo.contact]
-            cdof = np.concatenate([ydof, b.basis.nodal_dofs[0, geo.contact]])
-            S_c = sp.csr_matrix((np.ones(cdof.size), (np.arange(cdof.size), cdof)),
-                                shape=(cdof.size, b.n_dofs))
-            evals[name], Yn, Yt = build_eval_set(
-                b, Bn[name], Bt[name], S_c, float(x[-1]), solver.eval_depth * a_ref,
-                precompute=solver.stress_operators == "precompute")
-            # separation grows with roller uy and with -cam uy
-            sg = 1.0 if name == "roller" else -1.0
-            nc = ydof.size
-            An = sg * Yn[:nc] if An is None else An + sg * Yn[:nc]
-            At = sg * Yt[:nc] if At is None else At + sg * Yt[:nc]
-            # relative tangential displacement u_cam,x - u_roller,x (femcam.fe.traction)
-            Ctt = Ctt - sg * Yt[nc:]
-            Ctn = Ctn - sg * Yn[nc:]
-            t_cond += time.perf_counter() - t1
+        args = dict(x=x, plane=plane, element=element, solver=solver, a_ref=a_ref)
+        jobs = (("cam", cm.cam, cam), ("roller", cm.roller, roller))
+        # one-off models (per_solve): the two bodies in two threads (SuperLU's factorisation and
+        # numpy's kernels release the GIL: on 2 cores the bodies build side by side). Models
+        # built for many load cases (precompute: the sweep's families, kept in a cache) are
+        # built in the main thread: in worker threads the a/h = 26 sweep's peak RSS grew from
+        # 1.12 GB to 1.46 GB (glibc per-thread arenas; docs/performance.md)
+        with single_threaded_blas():
+            if solver.stress_operators == "per_solve":
+                with ThreadPoolExecutor(max_workers=2) as pool:
+                    parts = dict(pool.map(lambda job: (job[0], _body_part(*job, **args)), jobs))
+            else:
+                parts = {job[0]: _body_part(*job, **args) for job in jobs}
+        bodies = {k: v.body for k, v in parts.items()}
+        Bn = {k: v.Bn for k, v in parts.items()}
+        Bt = {k: v.Bt for k, v in parts.items()}
+        evals = {k: v.ev for k, v in parts.items()}
+        nc = x.size
+        # separation grows with roller uy and with -cam uy; the relative tangential
+        # displacement is u_cam,x - u_roller,x (femcam.fe.traction)
+        An = parts["roller"].Yn[:nc] - parts["cam"].Yn[:nc]
+        At = parts["roller"].Yt[:nc] - parts["cam"].Yt[:nc]
+        Ctt = parts["cam"].Yt[nc:] - parts["roller"].Yt[nc:]
+        Ctn = parts["cam"].Yn[nc:] - parts["roller"].Yn[nc:]
         timings = {"mesh": t_mesh,
                    "assembly": sum(b.t_assembly for b in bodies.values()),
                    "factorisation": sum(b.t_factor for b in bodies.values()),
-                   "condensation": t_cond}
+                   "condensation": sum(v.t_cond for v in parts.values()),
+                   "bodies_wall": time.perf_counter() - t0 - t_mesh}
         return cls(Rr=Rr, rho_ref=float(rho_ref), a_ref=a_ref, length=length, cam=cam, roller=roller,
                    plane=plane, element=element, mesh=cm, bodies=bodies, x=x,
                    w=trapezoid_weights(x), An=An, At=At, Bn=Bn, Bt=Bt, evals=evals,

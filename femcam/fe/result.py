@@ -121,7 +121,9 @@ class ContactResult:
         True when the normal (and tangential) active sets settled within tolerance; False with
         the reason in ``message``.
     timings : dict
-        Seconds per phase (mesh, assembly, factorisation, condensation, contact, recovery).
+        Seconds per phase (mesh, assembly, factorisation, condensation, contact, recovery);
+        the two bodies are built in two threads, so assembly, factorisation and condensation
+        are summed over bodies that ran side by side, and ``bodies_wall`` is their wall time.
     n_dofs : int
         Total degrees of freedom.
     hertz_a, hertz_p0 : float
