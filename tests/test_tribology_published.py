@@ -21,7 +21,7 @@ from femcam.tribology.film import dimensionless_groups
 # for two steel balls", read at https://text.123docz.com/document/2198932-engineering-tribology-2e-episode-8-ppt.htm
 # Inputs as printed: W = 5 N, R_A = 10e-3 m, R_B = 15e-3 m, E = 2.1e11 Pa, nu = 0.3 (both balls).
 # Printed answers: 1/R_x = 166.67 -> R_x = 6 x 10^-3 m; E' = 2.308 x 10^11 Pa, with the book's
-# 1/E' = 1/2 [(1 - nu_A^2)/E_A + (1 - nu_B^2)/E_B] (eq. 7.4 of the book), which is Hamrock's E'.
+# 1/E' = 1/2 [(1 - nu_A^2)/E_A + (1 - nu_B^2)/E_B], which is Hamrock's E'.
 R_A, R_B, E, NU = 10e-3, 15e-3, 2.1e11, 0.3
 PRINTED_INV_RX, PRINTED_RX, PRINTED_E_RED = 166.67, 6e-3, 2.308e11
 
@@ -33,7 +33,7 @@ def test_stachowiak_batchelor_2001_reduced_radius_and_modulus():
     to 5 figures (half a unit: 0.005/166.67 = 3.0e-5); R_x = 6e-3 is exact (10 x 15 / 25);
     E' = 2.308e11 is printed to 4 figures (half a unit: 0.0005/2.308 = 2.2e-4).
 
-    How femcam differs: none in the definitions. The book's E' (eq. 7.4) is twice femcam's E*;
+    How femcam differs: none in the definitions. The book's E' is twice femcam's E*;
     femcam's film module uses Hamrock's E' = 2 E* (``dimensionless_groups``), the same as this E',
     which the last assertions check through the material parameter G = alpha E' and the speed
     parameter Ud = eta0 U / (E' R) that femcam forms from E*."""
