@@ -1,0 +1,123 @@
+"""Sweep-facing: the cam disk on its shaft per cam angle, from one global model per scene.
+
+``cam_disk_rows(scene, theta, Fc)`` builds ONE :class:`~femcam.bodies.cam_global.CamGlobalModel`
+for the scene's cam (``[cam] bore_mm``) and solves the shaft-bore contact at every angle
+(global-local scheme: the cam-roller contact itself stays today's local body). It returns a
+dict of SI arrays; :data:`CAM_CSV_COLUMNS` gives the CSV name (unit in the name) and the factor
+from SI. Angles where ``Fc <= 0`` (lift-off) give NaN.
+
+==================  ===========================================================  =======================
+key                 meaning (SI)                                                 CSV name
+==================  ===========================================================  =======================
+``hoop_max``        largest tensile hoop stress at the cam bore (Pa)             ``cam_bore_hoop_max_MPa``
+``hoop_angle``      its angle from the contact direction, counter-clockwise      ``cam_bore_hoop_angle_deg``
+                    in the cam frame (rad)
+``shaft_p0``        largest shaft-bore contact pressure (Pa)                     ``shaft_p0_MPa``
+``shaft_arc``       angular extent of the loaded bore (rad; NaN bonded)          ``shaft_arc_deg``
+``web``             thinnest web ``r_min - Rb`` (m, the same on every row)       ``cam_web_mm``
+==================  ===========================================================  =======================
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .. import _validate
+from ..errors import InputError
+from .cam_geometry import CamDisk, outline_from_scene
+from .cam_global import CamGlobalModel
+from .cam_model import CamMeshOptions
+from .cam_solve import shaft_arc
+from .contact import solve_multi_lcp
+
+#: key -> (CSV column name, factor from SI)
+CAM_CSV_COLUMNS = {
+    "hoop_max": ("cam_bore_hoop_max_MPa", 1e-6), "hoop_angle": ("cam_bore_hoop_angle_deg", 180.0 / math.pi),
+    "shaft_p0": ("shaft_p0_MPa", 1e-6), "shaft_arc": ("shaft_arc_deg", 180.0 / math.pi),
+    "web": ("cam_web_mm", 1e3),
+}
+
+
+def has_cam_bore(scene) -> bool:
+    """True when the scene gives ``[cam] bore_mm`` (the cam disk on its shaft)."""
+    return "cam_bore" in (getattr(scene, "bodies", None) or {})
+
+
+def _cam_yield(scene):
+    mats = (getattr(scene, "tribology", None) or {}).get("materials", {}) or {}
+    cam = mats.get("cam", {}) if isinstance(mats, dict) else {}
+    y = cam.get("yield_strength_MPa", cam.get("Y")) if isinstance(cam, dict) else None
+    return float(y) if isinstance(y, int | float) else None
+
+
+def disk_from_scene(scene, *, n_outline: int = 720, fit: str = "contact") -> CamDisk:
+    """The scene's :class:`CamDisk`: outline from its profile, ``[cam] bore_mm``, shaft material
+    ``[materials.shaft]`` (default: the cam's), a line-to-line fit (``Rs = Rb``)."""
+    g = getattr(scene, "bodies", None) or {}
+    if "cam_bore" not in g:
+        raise InputError("scene has no [cam] bore_mm: the cam is today's local body (no disk model)")
+    return CamDisk(outline=outline_from_scene(scene, n_outline), Rb=g["cam_bore"], fit=fit,
+                   cam=scene.cam, shaft=g.get("shaft", scene.cam), cam_yield=_cam_yield(scene))
+
+
+def solve_global(model: CamGlobalModel, C: np.ndarray, n: np.ndarray, F: np.ndarray) -> dict:
+    """Bore hoop stress and shaft contact at contacts ``C`` (2, k; m, cam frame), outward cam
+    normals ``n`` (2, k) and forces ``F`` (k,; N, > 0). Returns SI arrays (keys of
+    :data:`CAM_CSV_COLUMNS` without ``web``) and ``hoop`` (k, n_b), ``bore_p`` (k, n_b)."""
+    d = model.disk
+    W = np.asarray(F, float) / model.length
+    f = -W * np.asarray(n, float)
+    L = model.load_weights(np.asarray(C, float), f)
+    g_f = L @ model.Uf.T                    # (k, n_b) bore radial displacement of the loads
+    h_f = L @ model.Hf.T
+    th = model.theta
+    G = np.stack([np.cos(th), np.sin(th)], axis=1)
+    Cm = np.stack([model.wb * np.cos(th), model.wb * np.sin(th)])
+    bil = np.full(th.size, d.fit == "bonded")
+    k = W.size
+    lam = np.zeros((k, th.size))
+    for i in range(k):
+        toward = np.cos(th - math.atan2(-f[1, i], -f[0, i])) > 0.7
+        sol = solve_multi_lcp(model.A, d.c + g_f[i], G, Cm, -f[:, i], active0=toward,
+                              bilateral=bil)
+        lam[i] = sol.lam
+    hoop = h_f + lam @ model.H.T
+    ang0 = np.arctan2(C[1], C[0])
+    rel = np.angle(np.exp(1j * (th[None, :] - ang0[:, None])))
+    j = np.argmax(hoop, axis=1)
+    r = np.arange(k)
+    arcs = (np.array([shaft_arc(rel[i], lam[i]) for i in r]) if d.fit == "contact" else np.full(k, np.nan))
+    return {"hoop_max": hoop[r, j], "hoop_angle": rel[r, j], "shaft_p0": lam.max(axis=1), "shaft_arc": arcs,
+            "hoop": hoop, "bore_p": lam}
+
+
+def cam_disk_rows(scene, theta, Fc, *, model: CamGlobalModel | None = None,
+                  cam_mesh: CamMeshOptions | None = None) -> dict:
+    """Per-angle cam-disk results (dict of SI arrays, keys of :data:`CAM_CSV_COLUMNS`);
+    ``theta`` (rad) and ``Fc`` (N) are the sweep's arrays; ``model`` reuses a built model."""
+    theta = _validate.finite_array("theta", theta, "rad")
+    Fc = np.asarray(Fc, dtype=float)
+    if theta.shape != Fc.shape:
+        raise InputError(f"theta, Fc: shapes {theta.shape}, {Fc.shape} must match")
+    model = model or CamGlobalModel.build(disk=disk_from_scene(scene), length=scene.length,
+                                          cam_mesh=cam_mesh, plane=scene.plane)
+    out = {k: np.full(theta.shape, np.nan) for k in CAM_CSV_COLUMNS}
+    out["web"][:] = model.disk.web
+    on = np.flatnonzero(np.isfinite(Fc) & (Fc > 0))
+    if on.size:
+        p = scene.analyse(theta[on]).profile
+        C = np.stack([p.x, p.y])
+        nn = np.stack([p.pitch_x, p.pitch_y]) - C
+        nn = nn / np.hypot(*nn)
+        r = solve_global(model, C, nn, Fc[on])
+        for k in ("hoop_max", "hoop_angle", "shaft_p0", "shaft_arc"):
+            out[k][on] = r[k]
+    return out
+
+
+def to_csv_columns(rows: dict) -> dict:
+    """``{csv name with unit: array}`` from :func:`cam_disk_rows` output."""
+    return {CAM_CSV_COLUMNS[k][0]: np.asarray(v) * CAM_CSV_COLUMNS[k][1] for k, v in rows.items()
+            if k in CAM_CSV_COLUMNS}
