@@ -31,7 +31,7 @@ from ..fe.elasticity import assemble_body
 from .cam_geometry import CamDisk
 from .cam_mesh import mesh_cam_disk
 from .cam_model import CamMeshOptions, check_bore_spacing, floating_supports, shaft_operator, torque_vector
-from .contact import arc_load_matrix, arc_weights, radial_measure, solve_multi_lcp
+from .contact import arc_load_matrix, arc_weights, radial_measure
 from .model import _condense, _hoop_rows
 
 
