@@ -34,6 +34,12 @@ from .cam_model import CamMeshOptions, check_bore_spacing, floating_supports, sh
 from .contact import arc_load_matrix, arc_weights, radial_measure
 from .model import _condense, _hoop_rows
 
+#: default mesh of the global model: largest element 0.1 x web, growth 0.15 from the bore. With
+#: the refined model's 0.5 x web and growth 0.3 the coarse global mesh gave the bore hoop stress
+#: 1.6 % low (20 mm circle, 6 mm bore, rigid shaft: 10.71 vs 10.89 MPa); it converges to the
+#: refined model's value (0.05 x web: 10.88, 0.02 x web: 10.90 MPa); 0.1 / 0.15: 10.85 (-0.3 %)
+GLOBAL_MESH = CamMeshOptions(h_max_over_web=0.1, growth=0.15)
+
 
 @dataclass(frozen=True, eq=False)
 class CamGlobalModel:
@@ -64,7 +70,7 @@ class CamGlobalModel:
     @classmethod
     def build(cls, *, disk: CamDisk, length: float, cam_mesh: CamMeshOptions | None = None,
               plane: str = "strain", element: str = "P2") -> CamGlobalModel:
-        cm = cam_mesh or CamMeshOptions(h_max_over_web=0.25)
+        cm = cam_mesh or GLOBAL_MESH
         check_bore_spacing(disk, cm)
         t0 = time.perf_counter()
         hb = 2 * math.pi * disk.Rb / cm.n_bore
