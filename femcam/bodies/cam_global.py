@@ -21,12 +21,14 @@ refined model (:mod:`femcam.bodies.cam_model`; tests/test_bodies_cam_disk.py).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import time
 from dataclasses import dataclass
 
 import numpy as np
 
+from .. import _validate
 from ..fe.elasticity import assemble_body
 from .cam_geometry import CamDisk
 from .cam_mesh import mesh_cam_disk
@@ -34,11 +36,29 @@ from .cam_model import CamMeshOptions, check_bore_spacing, floating_supports, sh
 from .contact import arc_load_matrix, arc_weights, radial_measure
 from .model import _condense, _hoop_rows
 
-#: default mesh of the global model: largest element 0.1 x web, growth 0.15 from the bore. With
-#: the refined model's 0.5 x web and growth 0.3 the coarse global mesh gave the bore hoop stress
-#: 1.6 % low (20 mm circle, 6 mm bore, rigid shaft: 10.71 vs 10.89 MPa); it converges to the
-#: refined model's value (0.05 x web: 10.88, 0.02 x web: 10.90 MPa); 0.1 / 0.15: 10.85 (-0.3 %)
-GLOBAL_MESH = CamMeshOptions(h_max_over_web=0.1, growth=0.15)
+#: default mesh of the global model: largest element 0.1 x web (at least 0.07 r_min), growth 0.1
+#: from the bore. Measured (bore hoop stress under a 2 kN contact, 6 mm bore): with the refined
+#: model's 0.5 x web and growth 0.3 the global model was 1.6 % low on a 20 mm circle with a rigid
+#: shaft (10.71 vs 10.89 MPa) and 1.8 % low on an oval cam with a steel shaft (16.85 vs 17.16);
+#: growth 0.15: 16.97; growth 0.1: 17.05 MPa against the refined model's 17.07 MPa on its own
+#: finer mesh (0.05 x web, growth 0.1): the growth slope, not the largest element, set the error
+GLOBAL_MESH = CamMeshOptions(h_max_over_web=0.1, growth=0.1)
+
+
+#: finest bore the global model accepts (a thinner web is refused: see global_mesh_for)
+N_BORE_MAX = 1024
+
+
+def global_mesh_for(disk: CamDisk) -> CamMeshOptions:
+    """:data:`GLOBAL_MESH` with ``n_bore`` raised so that the bore spacing is <= a quarter of the
+    web (>= 4 P2 layers through it, as the ring's wall); a web that would need more than
+    :data:`N_BORE_MAX` bore vertices is refused with the numbers."""
+    need = 4 * math.ceil(2 * math.pi * disk.Rb / (0.25 * disk.web) / 4)
+    if need > N_BORE_MAX:
+        raise _validate.fail("Rb", disk.Rb, "m", f"the web r_min - Rb = {disk.web * 1e3:.3g} mm is too thin "
+                             f"for the disk model ({need} bore vertices needed, at most {N_BORE_MAX}); "
+                             "such a hub is a thin ring: model it as one")
+    return dataclasses.replace(GLOBAL_MESH, n_bore=max(GLOBAL_MESH.n_bore, need))
 
 
 @dataclass(frozen=True, eq=False)
@@ -70,11 +90,13 @@ class CamGlobalModel:
     @classmethod
     def build(cls, *, disk: CamDisk, length: float, cam_mesh: CamMeshOptions | None = None,
               plane: str = "strain", element: str = "P2") -> CamGlobalModel:
-        cm = cam_mesh or GLOBAL_MESH
+        cm = cam_mesh or global_mesh_for(disk)
         check_bore_spacing(disk, cm)
         t0 = time.perf_counter()
         hb = 2 * math.pi * disk.Rb / cm.n_bore
-        h_max = min(cm.h_max_over_web * disk.web, 0.5 * disk.Rb)
+        # far from the bore the size is set by the cam, not the web: a 1 mm web with 0.1 mm
+        # elements everywhere took 325 s (load ~4); the bore band keeps the web fine
+        h_max = min(max(cm.h_max_over_web * disk.web, 0.07 * disk.r_min), 0.5 * disk.Rb)
         geo, bore, theta = mesh_cam_disk(outline=disk.outline, centre=(0.0, 0.0), bore=disk.Rb,
                                          n_bore=cm.n_bore, h_max=h_max, h_bore=min(hb, h_max),
                                          growth=cm.growth)

@@ -16,6 +16,9 @@ key                 meaning (SI)                                                
 ``shaft_arc``       angular extent of the loaded bore (rad; NaN bonded)          ``shaft_arc_deg``
 ``web``             thinnest web ``r_min - Rb`` (m, the same on every row)       ``cam_web_mm``
 ==================  ===========================================================  =======================
+
+``flags`` (text, not in :data:`CAM_CSV_COLUMNS`): a row whose bore hoop stress exceeds the cam's
+``yield_strength_MPa`` (``[materials.cam]``) says so with both numbers and the web.
 """
 
 from __future__ import annotations
@@ -26,6 +29,7 @@ import numpy as np
 
 from .. import _validate
 from ..errors import InputError
+from ..materials import effective_modulus
 from .cam_geometry import CamDisk, outline_from_scene
 from .cam_global import CamGlobalModel
 from .cam_model import CamMeshOptions
@@ -101,20 +105,59 @@ def cam_disk_rows(scene, theta, Fc, *, model: CamGlobalModel | None = None,
     Fc = np.asarray(Fc, dtype=float)
     if theta.shape != Fc.shape:
         raise InputError(f"theta, Fc: shapes {theta.shape}, {Fc.shape} must match")
-    model = model or CamGlobalModel.build(disk=disk_from_scene(scene), length=scene.length,
-                                          cam_mesh=cam_mesh, plane=scene.plane)
+    on = np.flatnonzero(np.isfinite(Fc) & (Fc > 0))
+    st = scene.analyse(theta[on]) if on.size else None
+    disk = model.disk if model is not None else disk_from_scene(scene)
+    if on.size:
+        check_web_against_contact(disk, scene, Fc[on], st.rho)
+    model = model or CamGlobalModel.build(disk=disk, length=scene.length, cam_mesh=cam_mesh,
+                                          plane=scene.plane)
     out = {k: np.full(theta.shape, np.nan) for k in CAM_CSV_COLUMNS}
     out["web"][:] = model.disk.web
-    on = np.flatnonzero(np.isfinite(Fc) & (Fc > 0))
+    out["flags"] = np.full(theta.shape, "", dtype=object)
     if on.size:
-        p = scene.analyse(theta[on]).profile
+        p = st.profile
         C = np.stack([p.x, p.y])
         nn = np.stack([p.pitch_x, p.pitch_y]) - C
         nn = nn / np.hypot(*nn)
         r = solve_global(model, C, nn, Fc[on])
         for k in ("hoop_max", "hoop_angle", "shaft_p0", "shaft_arc"):
             out[k][on] = r[k]
+        out["flags"][on] = yield_flags(model.disk, r["hoop_max"], r["hoop_angle"])
     return out
+
+
+def yield_flags(disk: CamDisk, hoop_max, hoop_angle) -> np.ndarray:
+    """Text per row: the bore hoop stress above the cam's yield strength, with the numbers."""
+    y = disk.cam_yield
+    out = np.full(np.shape(hoop_max), "", dtype=object)
+    if y is None:
+        return out
+    for i in np.flatnonzero(np.asarray(hoop_max) > y):
+        out[i] = (f"cam bore hoop stress {hoop_max[i] / 1e6:.4g} MPa at "
+                  f"{math.degrees(hoop_angle[i]):.1f} deg from the contact exceeds the cam's yield "
+                  f"strength {y / 1e6:.4g} MPa (web "
+                  f"{disk.web * 1e3:.3g} mm)")
+    return out
+
+
+#: the web must be at least this many contact half-widths (the bore outside the contact's
+#: subsurface field, which the global model does not resolve: Saint-Venant needs distance)
+WEB_OVER_A_MIN = 10.0
+
+
+def check_web_against_contact(disk: CamDisk, scene, Fc, rho) -> None:
+    """Refuse a web thinner than :data:`WEB_OVER_A_MIN` Hertz half-widths (Johnson 1985 eq. 4.45;
+    ``a`` of the largest contact over the angles) with the numbers."""
+    Rr = scene.follower.Rr
+    inv_R = 1.0 / Rr + np.where(np.isinf(rho), 0.0, 1.0 / np.where(np.isinf(rho), 1.0, rho))
+    Es = effective_modulus(scene.cam, scene.roller, scene.plane)
+    a = np.sqrt(4 * np.asarray(Fc) / scene.length / (math.pi * Es * np.maximum(inv_R, 1e-300)))
+    a_max = float(np.nanmax(np.where(inv_R > 0, a, np.nan), initial=0.0))
+    if disk.web < WEB_OVER_A_MIN * a_max:
+        raise InputError(f"cam.bore_mm = {disk.Rb * 1e3:g} mm: the web r_min - Rb = {disk.web * 1e3:.3g} mm "
+                         f"is less than {WEB_OVER_A_MIN:g} contact half-widths (a = {a_max * 1e6:.3g} um): "
+                         "the bore would sit in the contact's subsurface stress field")
 
 
 def to_csv_columns(rows: dict) -> dict:

@@ -125,7 +125,7 @@ PROVIDERS: tuple[Provider, ...] = (
     Provider("assess", lambda s: "lubricant" in (getattr(s, "tribology", None) or {}), ASSESS,
              ASSESS_TEXT, assess_chunk, ASSESS_PANELS),
     Provider("bodies", has_support, RING, (), ring_chunk, RING_PANELS),
-    Provider("cam_disk", has_cam_bore, CAM_DISK, (), cam_disk_chunk, CAM_DISK_PANELS),
+    Provider("cam_disk", has_cam_bore, CAM_DISK, ("camdisk_flags",), cam_disk_chunk, CAM_DISK_PANELS),
     Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), layers_chunk, LAYER_PANELS),
     Provider("coating_wear", coated_cam, (), (), coating_wear_chunk),
 )

@@ -224,7 +224,9 @@ def ring_chunk(task, rows) -> dict:
 def cam_disk_chunk(task, rows) -> dict:
     Fc = np.where(_contact_rows(rows), rows["Fc"], 0.0)   # cam_disk_rows: Fc <= 0 -> NaN row
     r = cam_disk_rows(task.scene, task.theta, Fc, model=cam_disk_model(task.scene))
-    return {f"camdisk_{k}": np.asarray(r[k], float) for k in CAM_CSV_COLUMNS}
+    out = {f"camdisk_{k}": np.asarray(r[k], float) for k in CAM_CSV_COLUMNS}
+    out["camdisk_flags"] = r["flags"]
+    return out
 
 
 def layers_chunk(task, rows) -> dict:
