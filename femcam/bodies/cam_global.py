@@ -32,7 +32,7 @@ from .. import _validate
 from ..fe.elasticity import assemble_body
 from .cam_geometry import CamDisk
 from .cam_mesh import mesh_cam_disk
-from .cam_model import CamMeshOptions, check_bore_spacing, floating_supports, shaft_operator, torque_vector
+from .cam_model import CamMeshOptions, bore_vertices_for, check_bore_spacing, floating_supports, shaft_operator, torque_vector
 from .contact import arc_load_matrix, arc_weights, radial_measure
 from .model import _condense, _hoop_rows
 
@@ -53,7 +53,7 @@ def global_mesh_for(disk: CamDisk) -> CamMeshOptions:
     """:data:`GLOBAL_MESH` with ``n_bore`` raised so that the bore spacing is <= a quarter of the
     web (>= 4 P2 layers through it, as the ring's wall); a web that would need more than
     :data:`N_BORE_MAX` bore vertices is refused with the numbers."""
-    need = 4 * math.ceil(2 * math.pi * disk.Rb / (0.25 * disk.web) / 4)
+    need = bore_vertices_for(disk)
     if need > N_BORE_MAX:
         raise _validate.fail("Rb", disk.Rb, "m", f"the web r_min - Rb = {disk.web * 1e3:.3g} mm is too thin "
                              f"for the disk model ({need} bore vertices needed, at most {N_BORE_MAX}); "

@@ -64,6 +64,11 @@ def h_max_for(disk: CamDisk, cm: CamMeshOptions) -> float:
     return min(cm.h_max_over_web * disk.web, 0.5 * disk.Rb)
 
 
+def bore_vertices_for(disk: CamDisk, layers: float = 4.0) -> int:
+    """Bore vertices (multiple of 4) for a bore spacing <= web / ``layers``."""
+    return 4 * math.ceil(2 * math.pi * disk.Rb / (disk.web / layers) / 4)
+
+
 def check_bore_spacing(disk: CamDisk, cm: CamMeshOptions) -> None:
     """Refuse a bore spacing above half the web (as the ring: the bore contact is then not
     resolved through the web)."""
@@ -150,7 +155,8 @@ class CamDiskModel:
         """Mesh, factorise and condense the cam disk, shaft and roller at the contact ``C`` (m,
         cam frame) with outward cam normal ``n`` and cam radius ``rho`` (m)."""
         a_ref = _validate.positive("a_ref", a_ref, "m")
-        mesh, cm = mesh or MeshOptions(), cam_mesh or CamMeshOptions()
+        mesh = mesh or MeshOptions()
+        cm = cam_mesh or CamMeshOptions(n_bore=max(64, bore_vertices_for(disk)))
         check_bore_spacing(disk, cm)
         t0 = time.perf_counter()
         with gmsh_session() as gmsh:
