@@ -99,7 +99,8 @@ def main() -> int:
     print("|---|---|---|---|---|---|---|---|---|---|---|")
     for i in range(r["web"].size):
         print(f"| {r['Rb'][i] * 1e3:g} | {r['web'][i] * 1e3:.3g} | {r['p0'][i] / 1e6:.1f} | "
-              f"{100 * r['dp0'][i]:.4f} | {r['a'][i] * 1e6:.2f} | {100 * r['da'][i]:.4f} | {r['delta'][i] * 1e6:.2f} / "
+              f"{100 * r['dp0'][i]:.4f} | {r['a'][i] * 1e6:.2f} | {100 * r['da'][i]:.4f} | "
+              f"{r['delta'][i] * 1e6:.2f} / "
               f"{r['delta_local'][i] * 1e6:.2f} | {r['hoop_refined'][i] / 1e6:.1f} / "
               f"{r['hoop_global_at_theta'][i] / 1e6:.1f} | {r['hoop_max_rev'][i] / 1e6:.1f} at "
               f"{math.degrees(r['theta_hoop_max_rev'][i]):.0f} | {r['shaft_p0'][i] / 1e6:.1f}, "

@@ -32,7 +32,14 @@ from .. import _validate
 from ..fe.elasticity import assemble_body
 from .cam_geometry import CamDisk
 from .cam_mesh import mesh_cam_disk
-from .cam_model import CamMeshOptions, bore_vertices_for, check_bore_spacing, floating_supports, shaft_operator, torque_vector
+from .cam_model import (
+    CamMeshOptions,
+    bore_vertices_for,
+    check_bore_spacing,
+    floating_supports,
+    shaft_operator,
+    torque_vector,
+)
 from .contact import arc_load_matrix, arc_weights, radial_measure
 from .model import _condense, _hoop_rows
 
