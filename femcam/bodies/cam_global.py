@@ -37,6 +37,7 @@ from .cam_model import (
     bore_vertices_for,
     check_bore_spacing,
     floating_supports,
+    hat_resultants,
     shaft_operator,
     torque_vector,
 )
@@ -73,7 +74,8 @@ class CamGlobalModel:
     """Condensed global cam disk + shaft (module docstring); build with :meth:`build`.
 
     stations (2, N_s): outline vertices (m, cam frame), psi their polar angles (rad, sorted);
-    theta, wb: bore angles (rad, cam frame) and weights (m); A: bore radial compliance (m/Pa) of
+    theta, wb: bore angles (rad, cam frame) and weights (m); bore_force (2, n_b): FE resultant of
+    each bore hat (m, as the refined model); A: bore radial compliance (m/Pa) of
     cam + shaft; Uf (n_b, 2 N_s + 1), Hf: bore radial displacement (m/N per m) and hoop stress
     (Pa per N/m) of the unit station forces (x, y interleaved) and the unit torque (last); H: hoop
     per bore pressure (Pa/Pa).
@@ -86,6 +88,7 @@ class CamGlobalModel:
     psi: np.ndarray
     theta: np.ndarray
     wb: np.ndarray
+    bore_force: np.ndarray
     A: np.ndarray
     Uf: np.ndarray
     Hf: np.ndarray
@@ -131,7 +134,8 @@ class CamGlobalModel:
                    "factorisation": sum(b.t_factor for b in bodies.values()),
                    "condensation": time.perf_counter() - t1}
         return cls(disk=disk, length=float(length), plane=plane, stations=P, psi=psi, theta=theta,
-                   wb=arc_weights(n_b, hb, True), A=Ur[:, k:] + A_sh, Uf=Ur[:, :k], Hf=Hall[:, :k],
+                   wb=arc_weights(n_b, hb, True),
+                   bore_force=hat_resultants(cam, Bb), A=Ur[:, k:] + A_sh, Uf=Ur[:, :k], Hf=Hall[:, :k],
                    H=Hall[:, k:], bodies=bodies, timings=timings,
                    n_dofs=sum(b.n_dofs for b in bodies.values()))
 

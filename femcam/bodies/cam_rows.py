@@ -79,7 +79,7 @@ def solve_global(model: CamGlobalModel, C: np.ndarray, n: np.ndarray, F: np.ndar
     h_f = L @ model.Hf.T
     th = model.theta
     G = np.stack([np.cos(th), np.sin(th)], axis=1)
-    Cm = np.stack([model.wb * np.cos(th), model.wb * np.sin(th)])
+    Cm = model.bore_force
     bil = np.full(th.size, d.fit == "bonded")
     k = W.size
     lam = np.zeros((k, th.size))

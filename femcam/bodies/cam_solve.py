@@ -76,9 +76,9 @@ def _system(model):
     G[nc:, 0] = np.cos(th)
     G[nc:, 1] = np.sin(th)
     C = np.zeros((3, n))
-    C[0, nc:] = model.wb * np.cos(th)
+    C[0, nc:] = model.bore_force[0]
     C[1, :nc] = -model.w
-    C[1, nc:] = model.wb * np.sin(th)
+    C[1, nc:] = model.bore_force[1]
     C[2, :nc] = model.w
     return G, C
 
