@@ -108,14 +108,16 @@ def main() -> int:
           "| per angle (ms) |\n|---|---|---|---|---|---|---|---|")
     tg = g.timings
     print(f"| global (cam + shaft, {g.psi.size} stations, n_bore {g.theta.size}) | {g.n_dofs} | "
-          f"{tg['mesh']:.2f} | {tg['assembly']:.2f} | {tg['factorisation']:.2f} | {tg['condensation']:.2f} | {t_build:.2f} | "
+          f"{tg['mesh']:.2f} | {tg['assembly']:.2f} | {tg['factorisation']:.2f} | {tg['condensation']:.2f} | "
+          f"{t_build:.2f} | "
           f"{1e3 * t_rows / theta.size:.2f} (360 angles: {t_rows:.2f} s) |")
     tm = m.timings
     print(f"| refined (cam + shaft + roller + local cam), one angle | {m.n_dofs} | {tm['mesh']:.2f} | "
           f"{tm['assembly']:.2f} | {tm['factorisation']:.2f} | {tm['condensation']:.2f} | {t_ref:.2f} | - |")
     k = int(np.nanargmax(rows["hoop_max"]))
     print(f"\nlargest cam bore hoop stress {rows['hoop_max'][k] / 1e6:.1f} MPa at theta = "
-          f"{math.degrees(theta[k]):.0f} deg ({math.degrees(rows['hoop_angle'][k]):.1f} deg from the contact direction); {load()}")
+          f"{math.degrees(theta[k]):.0f} deg ({math.degrees(rows['hoop_angle'][k]):.1f} deg from the contact "
+          f"direction); {load()}")
     return 0
 
 
