@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 import re
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -169,7 +170,8 @@ def test_a_web_within_ten_contact_half_widths_is_refused(tmp_path):
     from femcam.bodies.cam_rows import cam_disk_rows
     from femcam.scene import load_scene
 
-    text = open("examples/seed002_cam_on_shaft.toml").read().replace("bore_mm = 6.0", "bore_mm = 9.5")
+    ex = Path(__file__).resolve().parents[1] / "examples" / "seed002_cam_on_shaft.toml"
+    text = ex.read_text().replace("bore_mm = 6.0", "bore_mm = 9.5")
     (tmp_path / "s.toml").write_text(text)
     sc = load_scene(tmp_path / "s.toml")
     th = np.radians(np.arange(0.0, 360.0, 10.0))
@@ -192,3 +194,25 @@ def test_thin_web_that_would_yield_is_flagged_with_both_numbers():
     assert r["hoop_max"][0] > 30e6                        # measured 40 MPa
     assert re.match(r"cam bore hoop stress [\d.]+ MPa at -?[\d.]+ deg from the contact exceeds the cam's "
                     r"yield strength 30 MPa \(web 1.5 mm\)", flags[0])
+
+
+@pytest.mark.slow
+def test_sweep_writes_the_cam_disk_columns(tmp_path):
+    """Wiring: `femcam sweep` on the example writes the cam-disk columns (units in the names)
+    with a tensile bore stress and a loaded shaft at every contact angle, and the 4 mm web."""
+    import csv
+
+    from femcam.cli import main
+
+    ex = Path(__file__).resolve().parents[1] / "examples" / "seed002_cam_on_shaft.toml"
+    out = tmp_path / "sw"
+    assert main(["sweep", str(ex), "--out", str(out), "--method", "hertz", "--angles-deg", "0:360:30",
+                 "--no-plots", "--workers", "1"]) == 0
+    lines = [ln for ln in (out / "sweep.csv").read_text().splitlines() if not ln.startswith("#")]
+    rows = list(csv.DictReader(lines))
+    for r in rows:
+        assert float(r["cam_bore_hoop_max_MPa"]) > 0
+        assert float(r["shaft_p0_MPa"]) > 0
+        assert 0 < float(r["shaft_arc_deg"]) <= 185
+        assert float(r["cam_web_mm"]) == pytest.approx(4.0)
+        assert r["camdisk_flags"] in ("", "-")
