@@ -165,8 +165,34 @@ class CamDiskModel:
     def build(cls, *, disk: CamDisk, C, n, rho: float, Rr: float, roller: Material, a_ref: float,
               length: float, mesh: MeshOptions | None = None, cam_mesh: CamMeshOptions | None = None,
               plane: str = "strain", element: str = "P2", local: bool = True) -> CamDiskModel:
-        """Mesh, factorise and condense the cam disk, shaft and roller at the contact ``C`` (m,
-        cam frame) with outward cam normal ``n`` and cam radius ``rho`` (m)."""
+        """Mesh, factorise and condense the cam disk, shaft and roller at one contact.
+
+        Parameters
+        ----------
+        disk : CamDisk
+        C, n : array_like, shape (2,)
+            Contact point (m) and outward unit cam normal in the cam frame.
+        rho : float
+            Cam radius of curvature at ``C`` (m; < 0 concave, inf flat).
+        Rr : float
+            Roller radius (m).
+        roller : Material
+        a_ref : float
+            Contact half-width the fine zone is graded for (m).
+        length : float
+            Face width (m).
+        mesh, cam_mesh : MeshOptions, CamMeshOptions, optional
+            Fine zone (as :mod:`femcam.fe`) and disk/shaft mesh (default ``n_bore`` from the web).
+        plane, element : str
+        local : bool
+            Also build today's local cam body for the comparison.
+
+        Returns
+        -------
+        CamDiskModel
+            Raises :class:`~femcam.errors.InputError` for a bore too close to the contact or
+            too coarse for the web.
+        """
         a_ref = _validate.positive("a_ref", a_ref, "m")
         mesh = mesh or MeshOptions()
         cm = cam_mesh or CamMeshOptions(n_bore=max(64, bore_vertices_for(disk)))

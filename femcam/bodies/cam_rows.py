@@ -68,9 +68,25 @@ def disk_from_scene(scene, *, n_outline: int = 720, fit: str = "contact", Rb: fl
 
 
 def solve_global(model: CamGlobalModel, C: np.ndarray, n: np.ndarray, F: np.ndarray) -> dict:
-    """Bore hoop stress and shaft contact at contacts ``C`` (2, k; m, cam frame), outward cam
-    normals ``n`` (2, k) and forces ``F`` (k,; N, > 0). Returns SI arrays (keys of
-    :data:`CAM_CSV_COLUMNS` without ``web``) and ``hoop`` (k, n_b), ``bore_p`` (k, n_b)."""
+    """Bore hoop stress and shaft contact of the global model at k contacts (vectorised loads).
+
+    Parameters
+    ----------
+    model : CamGlobalModel
+    C : ndarray, shape (2, k)
+        Contact points in the cam frame (m).
+    n : ndarray, shape (2, k)
+        Outward unit cam normals there.
+    F : ndarray, shape (k,)
+        Contact forces (N, > 0) over the face width ``model.length``.
+
+    Returns
+    -------
+    dict
+        ``hoop_max`` (Pa), ``hoop_angle`` (rad, from the contact direction), ``shaft_p0`` (Pa),
+        ``shaft_arc`` (rad; NaN for a bonded fit), each (k,); ``hoop`` and ``bore_p`` (k, n_b; Pa)
+        at the bore angles ``model.theta``.
+    """
     d = model.disk
     W = np.asarray(F, float) / model.length
     f = -W * np.asarray(n, float)
@@ -100,8 +116,29 @@ def solve_global(model: CamGlobalModel, C: np.ndarray, n: np.ndarray, F: np.ndar
 
 def cam_disk_rows(scene, theta, Fc, *, model: CamGlobalModel | None = None,
                   cam_mesh: CamMeshOptions | None = None) -> dict:
-    """Per-angle cam-disk results (dict of SI arrays, keys of :data:`CAM_CSV_COLUMNS`);
-    ``theta`` (rad) and ``Fc`` (N) are the sweep's arrays; ``model`` reuses a built model."""
+    """Per-angle cam-disk results from the global model (one per scene).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A roller-follower scene with ``[cam] bore_mm``.
+    theta : array_like of float
+        Cam angles (rad).
+    Fc : array_like of float
+        Contact force at ``theta`` (N); ``<= 0`` or NaN gives a NaN row (lift-off).
+    model : CamGlobalModel, optional
+        A built model to reuse (it holds SuperLU factors and does not pickle).
+    cam_mesh : CamMeshOptions, optional
+        Mesh of the model built here (default: :func:`~femcam.bodies.cam_global.global_mesh_for`).
+
+    Returns
+    -------
+    dict
+        SI arrays shaped like ``theta`` under the keys of :data:`CAM_CSV_COLUMNS` (``hoop_max``
+        Pa, ``hoop_angle`` rad, ``shaft_p0`` Pa, ``shaft_arc`` rad, ``web`` m) and ``flags``
+        (text). Raises :class:`~femcam.errors.InputError` for a web thinner than
+        :data:`WEB_OVER_A_MIN` contact half-widths.
+    """
     theta = _validate.finite_array("theta", theta, "rad")
     Fc = np.asarray(Fc, dtype=float)
     if theta.shape != Fc.shape:

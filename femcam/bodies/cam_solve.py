@@ -102,7 +102,22 @@ def _local(model, h0, W, active):
 
 
 def solve_cam_disk(model, *, F: float, local: bool = True) -> CamDiskResult:
-    """Solve the cam disk, shaft and roller for the contact force ``F`` (N)."""
+    """Solve the cam disk, shaft and roller for one contact force.
+
+    Parameters
+    ----------
+    model : CamDiskModel
+    F : float
+        Contact force (N) over the face width ``model.length``.
+    local : bool
+        Also solve today's local cam body (``model.A_local``) for the comparison.
+
+    Returns
+    -------
+    CamDiskResult
+        Raises :class:`~femcam.errors.PhysicsError` if the contact reaches the end of the fine
+        zone and :class:`~femcam.errors.ConvergenceError` if the active set cycles.
+    """
     F = _validate.positive("F", F, "N")
     nc, d = model.nc, model.disk
     W = F / model.length
