@@ -216,3 +216,44 @@ def test_sweep_writes_the_cam_disk_columns(tmp_path):
         assert 0 < float(r["shaft_arc_deg"]) <= 185
         assert float(r["cam_web_mm"]) == pytest.approx(4.0)
         assert r["camdisk_flags"] in ("", "-")
+
+
+def lame_bonded_to_rigid_shaft(q, Ro, Ri, E=E, nu=NU):
+    """Plane-strain annulus, u_r(Ri) = 0 (bonded to a rigid shaft), sigma_r(Ro) = -q:
+    u = A r + B / r, B = -A Ri^2; returns (bore hoop stress, bore contact pressure = -sigma_r(Ri))."""
+    lam = E * nu / ((1 + nu) * (1 - 2 * nu))
+    mu = E / (2 * (1 + nu))
+    A = -q / (2 * (lam + mu) + 2 * mu * Ri**2 / Ro**2)
+    return 2 * lam * A, -2 * (lam + 2 * mu) * A
+
+
+@pytest.mark.parametrize("fit", ["bonded", pytest.param("contact", marks=pytest.mark.slow)])
+def test_shaft_fit_under_outward_traction_bonded_holds_in_tension_contact_lets_go(fit):
+    """A 20 mm circular cam on a rigid 8 mm shaft pulled outward all round (sigma_r(Ro) = +50 MPa,
+    as station forces of the global model): bonded, the bore carries tension (Lame with u_r(Ri)
+    = 0, written here); unilateral, the shaft lets go (no bore pressure) and the cam is a free
+    annulus: Lame hoop at the bore 2 q Ro^2 / (Ro^2 - Ri^2)."""
+    from femcam.bodies.contact import solve_multi_lcp
+
+    Ro, Ri, q = 0.02, 0.008, -50e6
+    disk = CamDisk(outline=circle(Ro), Rb=Ri, shaft=None, fit=fit)
+    g = CamGlobalModel.build(disk=disk, length=0.01)
+    P = g.stations
+    ds = 0.5 * (np.hypot(*(np.roll(P, -1, 1) - P)) + np.hypot(*(P - np.roll(P, 1, 1))))
+    er = P / np.hypot(*P)
+    L = np.zeros(g.Uf.shape[1])
+    L[0:-1:2] = -q * ds * er[0]
+    L[1:-1:2] = -q * ds * er[1]
+    th = g.theta
+    G = np.stack([np.cos(th), np.sin(th)], axis=1)
+    sol = solve_multi_lcp(g.A, g.Uf @ L, G, g.bore_force, -np.array([L[0:-1:2].sum(), L[1:-1:2].sum()]),
+                          active0=np.ones(th.size, bool), bilateral=np.full(th.size, fit == "bonded"))
+    hoop = g.Hf @ L + g.H @ sol.lam
+    if fit == "bonded":
+        hoop_ref, p_ref = lame_bonded_to_rigid_shaft(q, Ro, Ri)
+        assert p_ref < 0                                   # tension at the bore
+        assert np.max(np.abs(sol.lam / p_ref - 1)) < 0.01
+    else:
+        hoop_ref = -2 * q * Ro**2 / (Ro**2 - Ri**2)        # free annulus, external traction -q
+        assert np.all(sol.lam == 0.0)
+    assert np.max(np.abs(hoop / hoop_ref - 1)) < 0.01     # measured 0.12 % (bonded), see docs
