@@ -23,7 +23,7 @@ from ..fe.contact import edge_midside_dofs
 
 
 def arc_load_matrix(body, nodes: np.ndarray, centre: tuple, closed: bool,
-                    direction: float = 1.0, scale: float = 1.0) -> np.ndarray:
+                    direction: float = 1.0, scale: float = 1.0, tangential: bool = False) -> np.ndarray:
     """Dense ``B`` (n_dofs, n): nodal forces of unit radial pressure hats on a circle.
 
     ``nodes`` are vertices on a circle about ``centre`` (ordered by angle; ``closed`` joins the
@@ -31,6 +31,8 @@ def arc_load_matrix(body, nodes: np.ndarray, centre: tuple, closed: bool,
     radial unit vector at each node) is integrated against the P2 (or P1) trace: ``h/6`` at the
     own vertex, ``h/3`` at the midside nodes, ``h/3, h/6`` for P1 (as
     :func:`femcam.fe.contact.load_matrix`, with the chord length ``h`` of each edge).
+    ``tangential``: the hats act along ``direction * e_theta`` (counter-clockwise) instead (a
+    shear traction, e.g. the drive torque on the cam's bore).
     """
     n = nodes.size
     a = nodes
@@ -45,6 +47,8 @@ def arc_load_matrix(body, nodes: np.ndarray, centre: tuple, closed: bool,
 
     def er(xy):
         d = xy - np.array([[cx], [cy]])
+        if tangential:
+            d = np.array([-d[1], d[0]])
         return direction * d / np.hypot(*d)
 
     md = edge_midside_dofs(body, np.concatenate([a, b[-1:]])) if body.element == "P2" else None
@@ -97,15 +101,19 @@ class MultiLCPSolution:
     converged: bool
 
 
-def solve_multi_lcp(A, h0, G, C, d, *, active0, max_iter: int = 80, tol: float = 1e-10):
+def solve_multi_lcp(A, h0, G, C, d, *, active0, max_iter: int = 80, tol: float = 1e-10,
+                    bilateral=None):
     """Active-set solve of the problem in the module docstring (see there for the symbols).
 
-    Raises :class:`ConvergenceError` with the residual history when the active set cycles.
+    ``bilateral`` (bool mask, optional): unknowns that are always active, of either sign, with
+    ``g = 0`` (a bonded, frictionless tie). Raises :class:`ConvergenceError` with the residual
+    history when the active set cycles.
     """
     n = h0.size
     m = d.size
     c = 1.0 / np.mean(np.diag(A))
-    active = active0.copy()
+    bil = np.zeros(n, dtype=bool) if bilateral is None else np.asarray(bilateral, dtype=bool)
+    active = active0.copy() | bil
     history, seen = [], set()
     for it in range(1, max_iter + 1):
         I = np.nonzero(active)[0]
@@ -123,9 +131,11 @@ def solve_multi_lcp(A, h0, G, C, d, *, active0, max_iter: int = 80, tol: float =
         lam[I] = sol[:k]
         r = sol[k:]
         g = h0 + A @ lam + G @ r
-        res = float(np.max(np.abs(np.minimum(lam, c * g)))) / max(float(lam.max()), 1e-300)
+        uni = ~bil
+        res = (float(np.max(np.abs(np.minimum(lam[uni], c * g[uni])), initial=0.0))
+               / max(float(np.abs(lam).max()), 1e-300))
         history.append(res)
-        new = (lam - c * g) > 0.0
+        new = ((lam - c * g) > 0.0) | bil
         key = new.tobytes()
         if np.array_equal(new, active) and res <= max(tol, 1e-9):
             return MultiLCPSolution(lam, g, r, active, it, res, tuple(history), True)

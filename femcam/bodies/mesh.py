@@ -143,20 +143,21 @@ def mesh_ring(*, Ro: float, Ri: float, contact_x: np.ndarray, n_bore: int, h_bor
 
 
 def mesh_disk(*, R: float, n_surface: int, h_surface: float, h_max: float, growth: float = 0.3,
-              band: float = 3.0,
-              cy: float | None = None) -> tuple[BodyMesh, np.ndarray, np.ndarray, int]:
-    """Mesh a full disk (the pin); returns ``(BodyMesh, surface_nodes, theta, centre_node)``.
+              band: float = 3.0, cy: float | None = None,
+              cx: float = 0.0) -> tuple[BodyMesh, np.ndarray, np.ndarray, int]:
+    """Mesh a full disk (the pin, the cam's shaft); returns ``(BodyMesh, surface_nodes, theta,
+    centre_node)``.
 
-    ``n_surface`` vertices uniform in angle from ``theta = -pi/2``; centre ``(0, cy)`` (default
-    ``cy = R``); ``centre_node`` is the node nearest to it.
+    ``n_surface`` vertices uniform in angle from ``theta = -pi/2``; centre ``(cx, cy)`` (default
+    ``(0, R)``); ``centre_node`` is the node nearest to it.
     """
     cy = R if cy is None else cy
     q = n_surface // 4
     with gmsh_session() as gmsh:
         gmsh.model.add("disk")
         geo = gmsh.model.geo
-        _, _, arcs = _circle_arcs(geo, 0.0, cy, R, [-0.5 * math.pi + k * 0.5 * math.pi
-                                                 for k in range(5)], h_max)
+        _, _, arcs = _circle_arcs(geo, cx, cy, R, [-0.5 * math.pi + k * 0.5 * math.pi
+                                                for k in range(5)], h_max)
         s = geo.addPlaneSurface([geo.addCurveLoop(arcs)])
         for arc in arcs:
             geo.mesh.setTransfiniteCurve(arc, q + 1)
@@ -169,9 +170,9 @@ def mesh_disk(*, R: float, n_surface: int, h_surface: float, h_max: float, growt
         gmsh.model.mesh.generate(2)
         pts, tri, sets = _extract(gmsh, s, {"surface": (1, arcs)})
         gmsh.model.remove()
-    surf, theta = _snap_circle(pts, sets["surface"], 0.0, cy, R, n_surface)
+    surf, theta = _snap_circle(pts, sets["surface"], cx, cy, R, n_surface)
     tri = _ccw(pts, tri)
     body = BodyMesh(name="pin", points=pts.T.copy(), triangles=tri.T.copy(),
                     fixed=np.zeros(0, dtype=np.int64), contact=surf, contact_x=theta,
                     surface=surf, L=float(R), R=float(R))
-    return body, surf, theta, int(np.argmin(np.hypot(pts[:, 0], pts[:, 1] - cy)))
+    return body, surf, theta, int(np.argmin(np.hypot(pts[:, 0] - cx, pts[:, 1] - cy)))

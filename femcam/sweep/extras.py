@@ -17,6 +17,7 @@ provider       applies when                                 columns (CSV)
                                                             ``assess_flags``, ``assess_source``
 ``bodies``     ``roller_support`` is ``pin``/``needles``    ``ring_p0_MPa``, ``bore_hoop_max_MPa``,
                                                             ``pin_p0_MPa``, ``needle_Qmax_on_N``, ...
+``cam_disk``   ``[cam] bore_mm`` given                       ``cam_bore_hoop_max_MPa``, ``shaft_p0_MPa``, ...
 ``layers``     ``scene.layers`` non-empty                   ``interface_tau_max_MPa``, ``case_margin``, ...
 ``coating_``   a coated cam with ``wear_k_mm3_per_N_m`` or  (none: the wear column uses the coating's k,
 ``wear``       ``wear_K`` (:mod:`femcam.wear.coating`)      ``wear_source`` gets ``;coating``)
@@ -55,6 +56,7 @@ import numpy as np
 
 from ..assess import COLUMNS as ASSESS_COLUMNS
 from ..assess import worst_angles
+from ..bodies.cam_rows import has_cam_bore
 from ..errors import FemcamError
 from ..viz.extras import plot_extra_panels
 from ..wear.coating import coating_wear
@@ -63,6 +65,8 @@ from .providers import (
     ASSESS_PANELS,
     ASSESS_SKIP,
     ASSESS_TEXT,
+    CAM_DISK,
+    CAM_DISK_PANELS,
     HALFSPACE,
     HS_PANELS,
     LAYER_PANELS,
@@ -71,6 +75,7 @@ from .providers import (
     RING_PANELS,
     assess_chunk,
     assess_name,
+    cam_disk_chunk,
     coated_cam,
     coating_wear_chunk,
     halfspace_chunk,
@@ -120,6 +125,7 @@ PROVIDERS: tuple[Provider, ...] = (
     Provider("assess", lambda s: "lubricant" in (getattr(s, "tribology", None) or {}), ASSESS,
              ASSESS_TEXT, assess_chunk, ASSESS_PANELS),
     Provider("bodies", has_support, RING, (), ring_chunk, RING_PANELS),
+    Provider("cam_disk", has_cam_bore, CAM_DISK, ("camdisk_flags",), cam_disk_chunk, CAM_DISK_PANELS),
     Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), layers_chunk, LAYER_PANELS),
     Provider("coating_wear", coated_cam, (), (), coating_wear_chunk),
 )
@@ -237,6 +243,9 @@ def extras_provenance(scene, table) -> dict:
     if "bodies" in names:
         out["bodies"] = {"bore_hoop_max_MPa": _peak(table, "ring_hoop_max", ok) * 1e-6,
                          "needle_Qmax_N": _peak(table, "ring_needle_Q_on", ok)}
+    if "cam_disk" in names:
+        out["cam_disk"] = {"cam_bore_hoop_max_MPa": _peak(table, "camdisk_hoop_max", ok) * 1e-6,
+                           "shaft_p0_max_MPa": _peak(table, "camdisk_shaft_p0", ok) * 1e-6}
     if "layers" in names:
         out["layers"] = {"interface_utilisation_max": _peak(table, "layer_interface_utilisation", ok),
                          "case_margin_min": _peak(table, "layer_case_margin", ok, np.nanmin)}

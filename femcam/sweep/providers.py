@@ -16,6 +16,8 @@ import numpy as np
 
 from ..assess import COLUMNS as ASSESS_COLUMNS
 from ..assess import assess_rows
+from ..bodies.cam_global import CamGlobalModel
+from ..bodies.cam_rows import CAM_CSV_COLUMNS, cam_disk_rows, disk_from_scene
 from ..bodies.rows import CSV_COLUMNS as RING_COLUMNS
 from ..bodies.rows import build_for, ring_rows
 from ..errors import FemcamError
@@ -59,6 +61,13 @@ def ring_model(scene):
     return _cached("ring", scene, build)
 
 
+def cam_disk_model(scene):
+    """The scene's global cam disk on its shaft (:class:`~femcam.bodies.cam_global.CamGlobalModel`),
+    built once per process (it does not depend on the angles)."""
+    return _cached("cam_disk", scene, lambda: CamGlobalModel.build(
+        disk=disk_from_scene(scene), length=scene.length, plane=scene.plane))
+
+
 def strip_model(scene):
     """The scene's :class:`~femcam.halfspace.strip.FiniteLengthContact` (kernel FFTs), once per
     process."""
@@ -83,6 +92,7 @@ FE_SLICE = (("hs_fe_F", "fe_slice_F_N", 1.0), ("hs_fe_a", "fe_slice_a_um", 1e6),
             ("hs_fe_txz_absmax", "fe_slice_txz_absmax_MPa", 1e-6))
 HALFSPACE = tuple((f"hs_{k}", csv, f) for k, (csv, f) in HS_COLUMNS.items()) + FE_SLICE
 RING = tuple((f"ring_{k}", csv, f) for k, (csv, f) in RING_COLUMNS.items() if k != "theta")
+CAM_DISK = tuple((f"camdisk_{k}", csv, f) for k, (csv, f) in CAM_CSV_COLUMNS.items())
 LAYER_CSV = (("interface_tau_max_MPa", 1e-6), ("interface_sn_min_MPa", 1e-6),
              ("interface_sn_max_MPa", 1e-6), ("interface_utilisation", 1.0),
              ("coating_sx_max_MPa", 1e-6), ("coating_sx_utilisation", 1.0),
@@ -211,6 +221,14 @@ def ring_chunk(task, rows) -> dict:
     return {f"ring_{k}": np.asarray(r[k], float) for k in RING_COLUMNS if k != "theta"}
 
 
+def cam_disk_chunk(task, rows) -> dict:
+    Fc = np.where(_contact_rows(rows), rows["Fc"], 0.0)   # cam_disk_rows: Fc <= 0 -> NaN row
+    r = cam_disk_rows(task.scene, task.theta, Fc, model=cam_disk_model(task.scene))
+    out = {f"camdisk_{k}": np.asarray(r[k], float) for k in CAM_CSV_COLUMNS}
+    out["camdisk_flags"] = r["flags"]
+    return out
+
+
 def layers_chunk(task, rows) -> dict:
     n = task.theta.size
     out = {si: np.full(n, np.nan) for si, _, _ in LAYERS}
@@ -273,6 +291,10 @@ RING_PANELS = (("bore hoop stress (MPa)", (("ring_hoop_max", "largest tensile bo
                 ("needle load (N)", (("ring_needle_Q_on", "most loaded, needle on the load line", 1.0),
                                      ("ring_needle_Q_between", "most loaded, load between needles", 1.0)),
                  False))
+CAM_DISK_PANELS = (("cam bore hoop stress (MPa)", (("camdisk_hoop_max", "largest tensile hoop stress at the "
+                                                  "cam bore", MPA),), False),
+                   ("shaft contact pressure (MPa)", (("camdisk_shaft_p0", "shaft-bore peak pressure", MPA),),
+                    False))
 LAYER_PANELS = (("interface shear (MPa)", (("layer_interface_tau_max_MPa", "max |tau| at the interface",
                                              MPA),), False),
                  ("utilisation (-)", (("layer_interface_utilisation", "interface shear / strength", 1.0),

@@ -1,0 +1,149 @@
+r"""The cam as a disk on its shaft: outline, bore, shaft and the contact frame of one angle.
+
+Symbols (SI inside; mm only at the scene edge)
+
+==============  ==========================================================  ====  ======================
+symbol          meaning                                                     unit  source
+==============  ==========================================================  ====  ======================
+``outline``     cam surface points in the cam frame (cam centre at 0)        m     :mod:`femcam.profile`
+``Rb``          shaft bore radius of the cam                                m     ``[cam] bore_mm``
+``Rs``          shaft radius (``Rb - c``; ``c = 0``: line-to-line fit)       m     ``Rb`` (scene)
+``r_min``       smallest outline radius (the base circle for a roller cam)  m     outline
+``web``         ``r_min - Rb``: the thinnest ring of cam round the bore      m
+``C``, ``n``    contact point and outward cam normal at one cam angle       m, -  :mod:`femcam.profile`
+==============  ==========================================================  ====  ======================
+
+Contact frame of one angle (the frame of :mod:`femcam.mesh`): ``x = (P - C) . t``,
+``y = (P - C) . n`` with ``t = (n_y, -n_x)``, so the cam lies below ``y = 0`` and a point going
+counter-clockwise round the cam centre over the contact moves towards ``-x``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import _validate
+from ..errors import InputError
+from ..materials import STEEL, Material
+
+FITS = ("contact", "bonded")
+
+
+def _check_outline(outline) -> np.ndarray:
+    o = np.asarray(outline, dtype=float)
+    if o.ndim != 2 or o.shape[0] != 2 or o.shape[1] < 16 or not np.all(np.isfinite(o)):
+        raise InputError(f"outline: shape {o.shape}: must be (2, N >= 16) finite points (m)")
+    ang = np.arctan2(o[1], o[0])
+    order = np.argsort(ang)
+    return o[:, order]
+
+
+@dataclass(frozen=True, kw_only=True)
+class CamDisk:
+    """The cam as a disk with its outline and a shaft bore (SI units).
+
+    outline: (2, N) cam surface points (m, cam frame; reordered counter-clockwise); Rb: bore
+    radius; Rs: shaft radius (default ``Rb``: a line-to-line fit); fit: ``"contact"`` (unilateral
+    shaft-bore contact, the shaft carries no tension) or ``"bonded"`` (a frictionless radial tie,
+    ``Rs == Rb`` only); cam, shaft: materials (``shaft=None``: a rigid shaft); cam_yield:
+    optional tensile limit (Pa) flagged in results.
+    """
+
+    outline: np.ndarray
+    Rb: float
+    Rs: float | None = None
+    fit: str = "contact"
+    cam: Material = STEEL
+    shaft: Material | None = STEEL
+    cam_yield: float | None = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "outline", _check_outline(self.outline))
+        _validate.positive("Rb", self.Rb, "m")
+        _validate.choice("fit", self.fit, FITS)
+        Rs = self.Rb if self.Rs is None else _validate.positive("Rs", self.Rs, "m")
+        object.__setattr__(self, "Rs", float(Rs))
+        r_min = self.r_min
+        if self.Rb >= r_min:
+            raise _validate.fail("Rb", self.Rb, "m", f"the bore does not fit: the smallest outline "
+                                 f"radius is {r_min * 1e3:.4g} mm (bore {self.Rb * 1e3:.4g} mm)")
+        c = self.Rb - Rs
+        if c < 0 or c > 0.05 * self.Rb:
+            raise _validate.fail("Rs", Rs, "m", f"the clearance Rb - Rs = {c * 1e6:.4g} um must be in "
+                                 f"[0, 0.05 Rb = {0.05 * self.Rb * 1e6:.4g} um] (linearised gap)")
+        if self.fit == "bonded" and c != 0.0:
+            raise _validate.fail("Rs", Rs, "m", "a bonded fit needs Rs == Rb (no clearance)")
+        if self.cam_yield is not None:
+            _validate.positive("cam_yield", self.cam_yield, "Pa")
+
+    @property
+    def r(self) -> np.ndarray:
+        """Outline radii (m)."""
+        return np.hypot(*self.outline)
+
+    @property
+    def r_min(self) -> float:
+        return float(self.r.min())
+
+    @property
+    def web(self) -> float:
+        """``r_min - Rb`` (m)."""
+        return self.r_min - self.Rb
+
+    @property
+    def c(self) -> float:
+        return self.Rb - self.Rs
+
+
+def outline_from_scene(scene, n: int = 720) -> np.ndarray:
+    """The cam surface (2, n) in the cam frame (m) over one revolution (roller followers)."""
+    _require_roller(scene)
+    th = np.linspace(0.0, 2 * math.pi, int(n), endpoint=False)
+    p = scene.analyse(th).profile
+    return np.stack([p.x, p.y])
+
+
+def _require_roller(scene):
+    kind = getattr(scene.follower, "kind", "")
+    if kind != "roller":
+        raise InputError(f"follower type = {kind!r}: the cam disk model needs a roller follower")
+
+
+def contact_frame(scene, theta: float) -> tuple[np.ndarray, np.ndarray, float, float]:
+    """``(C, n, rho, Fc)``: contact point and outward cam normal in the cam frame, cam radius
+    of curvature (m) and contact force (N) at cam angle ``theta`` (rad)."""
+    _require_roller(scene)
+    st = scene.analyse(np.array([float(theta)]))
+    p = st.profile
+    C = np.array([p.x[0], p.y[0]])
+    d = np.array([p.pitch_x[0], p.pitch_y[0]]) - C
+    return C, d / np.hypot(*d), float(st.rho[0]), float(st.Fc[0])
+
+
+def to_contact_frame(xy: np.ndarray, C: np.ndarray, n: np.ndarray) -> np.ndarray:
+    """Points (2, N) of the cam frame in the contact frame (module docstring)."""
+    t = np.array([n[1], -n[0]])
+    d = xy - C[:, None]
+    return np.stack([t @ d, n @ d])
+
+
+def outline_without_arc(disk: CamDisk, C: np.ndarray, n: np.ndarray, rho: float,
+                        W: float) -> tuple[np.ndarray, tuple]:
+    """Outline points in the contact frame without the arc ``|x| <= W`` at the contact, from
+    its left end counter-clockwise round to its right end, and the cam centre there."""
+    o = to_contact_frame(disk.outline, C, n)
+    c = to_contact_frame(np.zeros((2, 1)), C, n)[:, 0]
+    ends = np.array([[-W, W], [0.0, 0.0]])
+    k = 0.0 if math.isinf(rho) else 1.0 / rho
+    ends[1] = -k * W**2 / (1 + math.sqrt(max(1 - (k * W) ** 2, 0.0)))
+    psi = np.arctan2(o[1] - c[1], o[0] - c[0])
+    pL, pR = (math.atan2(e[1] - c[1], e[0] - c[0]) for e in ends.T)
+    span = (pR - pL) % (2 * math.pi)
+    s = (psi - pL) % (2 * math.pi)
+    step = 2 * math.pi / o.shape[1]
+    keep = (s > 0.5 * step) & (s < span - 0.5 * step)
+    order = np.argsort(s[keep])
+    return o[:, keep][:, order], (float(c[0]), float(c[1]))

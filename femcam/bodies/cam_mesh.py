@@ -1,0 +1,102 @@
+"""gmsh mesh of the cam as a full disk with its real outline and a shaft bore.
+
+Frame (the mesh frame): for the fully refined model (:mod:`femcam.bodies.cam_model`) it is the
+contact frame of :mod:`femcam.mesh`: the cam touches the roller at the origin, ``y`` is the
+outward cam normal there and the cam lies below ``y = 0``; for the global model
+(:mod:`femcam.bodies.cam_global`) it is the cam frame (cam centre at the origin). The bore is a
+circle about the cam centre ``(cx, cy)``.
+
+* **outline**: a spline through the profile points (ordered counter-clockwise about the cam
+  centre). With a fine zone, the outline near the contact is replaced by the osculating circle
+  of radius ``rho`` over ``|x| <= W`` in three arcs; the middle one ``|x| <= xf`` is the
+  transfinite fine zone, its vertices snapped to the roller's abscissae ``contact_x`` (pairs
+  one to one, as :mod:`femcam.mesh`). ``rho`` < 0 (concave) and ``inf`` (flat) are allowed.
+* **bore**: four transfinite quarter arcs, ``n_bore`` vertices uniform in angle from
+  ``theta = -pi/2`` about the cam centre (they pair one to one with the shaft's surface).
+* **size**: ``Threshold`` fields: ``h`` within ``fine_depth`` of the fine arc, ``h_bore`` within 3
+  bore spacings of the bore, growing with slope ``growth`` to ``h_max``.
+
+Parameters and defaults: ``meshes/cam_disk.toml``; the same geometry with ``DefineConstant``
+sliders (a circular-arc cam) for the gmsh GUI: ``meshes/cam_disk.geo``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..errors import FemcamError
+from ..mesh import BodyMesh, _ccw, surface_height
+from .mesh import _circle_arcs, _extract, _size_field, _snap_circle, gmsh_session
+
+
+def _fine_arcs(geo, rho, xs, lc):
+    """Points at ``x = xs`` (decreasing) on the osculating circle and the arcs joining them."""
+    ys = -surface_height(np.asarray(xs), rho)
+    p = [geo.addPoint(float(x), float(y), 0.0, lc) for x, y in zip(xs, ys, strict=True)]
+    if math.isinf(rho):
+        return p, [geo.addLine(p[i], p[i + 1]) for i in range(len(p) - 1)]
+    c = geo.addPoint(0.0, -rho, 0.0, lc)
+    return p, [geo.addCircleArc(p[i], c, p[i + 1]) for i in range(len(p) - 1)]
+
+
+def mesh_cam_disk(*, outline: np.ndarray, centre: tuple, bore: float, n_bore: int, h_max: float,
+                  h_bore: float, growth: float = 0.3, contact_x: np.ndarray | None = None,
+                  rho: float = math.inf, W: float = 0.0, fine_depth: float = 0.0,
+                  band: float = 3.0) -> tuple[BodyMesh, np.ndarray, np.ndarray]:
+    """Mesh the cam disk; returns ``(BodyMesh, bore_nodes, bore_theta)``.
+
+    ``outline`` (2, N): outline points (m) ordered counter-clockwise about ``centre``; with a fine
+    zone (``contact_x`` given) they must leave out the arc ``|x| <= W`` at the contact and run
+    from its left end (``x = -W``) round to its right end (``x = +W``). ``BodyMesh.contact`` are
+    the fine-arc vertices sorted by x; ``fixed`` is empty (the cam floats on its shaft).
+    """
+    cx, cy = centre
+    fine = contact_x is not None
+    with gmsh_session() as gmsh:
+        gmsh.model.add("cam_disk")
+        geo = gmsh.model.geo
+        pts = [geo.addPoint(float(x), float(y), 0.0, h_max) for x, y in outline.T]
+        if fine:
+            xf = float(contact_x[-1])
+            ends, arcs = _fine_arcs(geo, rho, [W, xf, -xf, -W], h_max)
+            spline = geo.addSpline([ends[-1]] + pts + [ends[0]])
+            loop = arcs + [spline]
+            geo.mesh.setTransfiniteCurve(arcs[1], contact_x.size)
+        else:
+            loop = [geo.addSpline(pts + [pts[0]])]
+        _, _, b_arcs = _circle_arcs(geo, cx, cy, bore, [-0.5 * math.pi + k * 0.5 * math.pi
+                                                        for k in range(5)], h_max)
+        s = geo.addPlaneSurface([geo.addCurveLoop(loop), geo.addCurveLoop(b_arcs)])
+        for arc in b_arcs:
+            geo.mesh.setTransfiniteCurve(arc, n_bore // 4 + 1)
+        geo.synchronize()
+        gmsh.model.addPhysicalGroup(1, loop, name="cam_outline")
+        gmsh.model.addPhysicalGroup(1, b_arcs, name="cam_bore")
+        gmsh.model.addPhysicalGroup(2, [s], name="cam")
+        specs = [(b_arcs, h_bore, band * h_bore)]
+        sets = {"bore": (1, b_arcs), "outer": (1, loop)}
+        if fine:
+            h = float(contact_x[1] - contact_x[0])
+            specs.append(([arcs[1]], h, fine_depth))
+            sets["fine"] = (1, [arcs[1]])
+        _size_field(gmsh, specs, h_max, growth)
+        gmsh.model.mesh.generate(2)
+        p, tri, sets = _extract(gmsh, s, sets)
+        gmsh.model.remove()
+    contact = np.zeros(0, dtype=np.int64)
+    cxs = np.zeros(0)
+    if fine:
+        contact = sets["fine"][np.argsort(p[sets["fine"], 0])]
+        if contact.size != contact_x.size:
+            raise FemcamError(f"gmsh returned {contact.size} fine-zone nodes, expected {contact_x.size}")
+        p[contact, 0] = contact_x
+        p[contact, 1] = -surface_height(contact_x, rho)
+        cxs = np.asarray(contact_x, float)
+    bnodes, theta = _snap_circle(p, sets["bore"], cx, cy, bore, n_bore)
+    tri = _ccw(p, tri)
+    body = BodyMesh(name="cam", points=p.T.copy(), triangles=tri.T.copy(), fixed=np.zeros(0, dtype=np.int64),
+                    contact=contact, contact_x=cxs, surface=sets["outer"], L=float(np.hypot(cx, cy)),
+                    R=float(rho))
+    return body, bnodes, theta
