@@ -71,7 +71,7 @@ timed(femcam.scene, "load_scene", "scene")
 import femcam.sweep.pipeline
 timed(femcam.sweep.pipeline, "write_fe_vtu", "VTU", acc=True)
 timed(femcam.fe.export, "scene_arrays", "VTU fields (full_field of both bodies)", acc=True)
-timed(femcam.sweep.run, "_write_outputs", "outputs (CSV, NPZ, PVD, plots)")
+timed(femcam.sweep.run, "write_outputs", "outputs (CSV, NPZ, PVD, plots)")
 for name in ("plot_p0", "plot_maxima", "plot_svaj_loads", "plot_wear", "plot_surface_worst"):
     timed(vs, name, "plot " + name[5:])
 res = {}
