@@ -23,10 +23,10 @@ from .families import FamilyRecord, verify_families
 from .options import SweepOptions, contact_params
 from .outputs import SweepRun, scene_hash, scene_source, write_outputs
 from .parallel import AUTO_VTU_S, Progress, auto_workers, run_tasks
-from .pipeline import ChunkTask, analytic_rows, contact_mask, run_chunk
-from .realcam import auto_hertz_rows, jump_angles, real_cam_summary, scene_traction
+from .pipeline import ChunkTask, contact_mask, run_chunk
+from .realcam import auto_hertz_rows, contact_scene, jump_angles, real_cam_summary, scene_traction
 from .result import SweepResult, TableBuilder
-from .store import LOCK, ChunkStore, DirLock, array_hash
+from .store import LOCK, STREAM_ANGLES, ChunkStore, DirLock, array_hash
 from .wear import wear_setup
 
 DEFAULT_STEP_DEG = 1.0
@@ -222,11 +222,12 @@ def _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume
 
 def _analytic(run: SweepRun) -> None:
     """The analytic chain for all angles (cheap, vectorised): contact mask and slip."""
-    run.rows0, st0 = analytic_rows(run.scene, run.angles)
+    # only what the planning needs (no table of all angles: memory; the chunks fill theirs)
+    st0 = contact_scene(run.scene).analyse(run.angles)
+    run.rows0 = {k: np.asarray(getattr(st0, k), dtype=float) for k in ("Fc", "rho")}
     run.contact = contact_mask(run.rows0, st0)
     if run.opts.method != "hertz":
         run.traction = scene_traction(run.scene, run.angles)
-    run.rows0 = {k: run.rows0[k] for k in ("Fc", "rho")}  # all the planning needs (memory)
     run.wear = wear_setup(run.scene, run.angles, st0)
 
 
@@ -324,9 +325,13 @@ def _choose_workers(run: SweepRun, tasks, task_chunk, scheduler, client) -> tupl
     return auto_workers(len(tasks), n_solves, t_solve, len(records), t_build, t_other=t_vtu)
 
 
-def _compute(run: SweepRun, tasks, task_chunk, workers, scheduler, client, progress) -> dict:
-    """Run the chunks (stored as they finish), load the resumed ones, return the whole table."""
-    table = TableBuilder(run.bounds)  # filled as chunks finish: no second copy of the rows
+def _compute(run: SweepRun, tasks, task_chunk, workers, scheduler, client, progress):
+    """Run the chunks (stored as they finish), load the resumed ones, return the whole table:
+    a dict of arrays, or with an output directory and at least :data:`STREAM_ANGLES` angles a
+    :class:`~femcam.sweep.store.StoredTable` read from the chunk files (memory bounded)."""
+    stream = run.store is not None and run.angles.size >= STREAM_ANGLES
+    # filled as chunks finish: no second copy of the rows
+    table = None if stream else TableBuilder(run.bounds)
     bar = Progress(sum(b - a for c, (a, b) in enumerate(run.bounds) if c not in run.done),
                    label="solves" + (" and VTU files" if run.opts.vtk_every else ""),
                    enabled=progress)
@@ -336,11 +341,14 @@ def _compute(run: SweepRun, tasks, task_chunk, workers, scheduler, client, progr
             c = task_chunk[k]
             if run.store is not None:
                 run.store.write(c, rows)
-            table.put(c, rows)
+            if table is not None:
+                table.put(c, rows)
             del rows
             bar.update(run.bounds[c][1] - run.bounds[c][0])
     finally:
         bar.close()
+    if table is None:
+        return run.store.table()
     for c in run.done:
         table.put(c, run.store.load(c))
     return table.table()
