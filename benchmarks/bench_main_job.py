@@ -12,8 +12,8 @@ Each is run ``--runs`` times (default 5) into a fresh directory; the table gives
 time, the median CPU time (user + sys of the child and its workers: less sensitive to the
 load of a shared machine than the wall time) and the peak RSS (largest process), with the
 load average before and after. Correctness first: every run must exit 0 and its CSV must give
-the study model's FE p0 within 0.3 % of Hertz at every angle (``err_p0`` column), else the
-benchmark stops.
+the study model's FE p0 within 0.3 % of Hertz at every angle answered with the arc gap
+(``err_p0`` column, ``model = fe_arc``: 344 of 360), else the benchmark stops.
 
 Breakdown (one extra run of the default job in a driver process, ``--workers 1`` so that every
 phase runs in that process and can be timed): interpreter start, imports (femcam.cli and the
@@ -109,12 +109,16 @@ def machine() -> str:
 
 
 def check_csv(out: Path) -> float:
-    """Largest |FE p0 / Hertz p0 - 1| over the angles of a sweep CSV (asserted <= P0_TOL)."""
+    """Largest |FE p0 / Hertz p0 - 1| over the angles answered by the family models with the
+    Hertz-like arc gap (``model = fe_arc``; asserted <= P0_TOL). The exact-gap rows near the
+    cam's curvature jumps (``fe_exact``) carry a non-Hertzian pressure (docs/fe_real_cam.md),
+    so Hertz is not their reference."""
     with open(out / "sweep.csv") as f:
         rows = [r for r in csv.DictReader(line for line in f if not line.startswith("#"))]
     col = next(k for k in rows[0] if k.startswith("err_p0"))
     scale = 0.01 if col.endswith("_pct") else 1.0
-    errs = [abs(float(r[col])) * scale for r in rows if r[col] not in ("", "nan")]
+    errs = [abs(float(r[col])) * scale for r in rows
+            if r[col] not in ("", "nan") and r.get("model", "fe_arc") == "fe_arc"]
     worst = max(errs)
     assert len(errs) >= 300 and worst <= P0_TOL, f"p0 vs Hertz {worst:.3%} (> {P0_TOL:.1%}) or too few angles"
     return worst

@@ -18,10 +18,10 @@ A model built for the angle itself has a nearly constant ``c = p0 / p0_Hertz - 1
 edge sits on a node; measured -0.046 .. -0.055 % over the study model at a_over_h = 10), so
 the reuse error at an angle whose family-model error is ``e`` is close to
 ``(1 + e) / (1 + c) - 1``. The first check (the family's largest ``e``) gives ``c`` of its fresh
-model; a further candidate whose estimate plus :data:`ESTIMATE_MARGIN` stays below the largest
-checked error cannot be the family's worst and is recorded as *estimated*
-(``FamilyRecord.estimated``) without a fresh model; any other candidate is checked fresh. The
-recorded ``reuse_error`` is always the largest error checked with a fresh model.
+model; a further candidate whose estimate plus :data:`ESTIMATE_MARGIN` stays within the tolerance
+(or below the largest checked error) is recorded as *estimated* (``FamilyRecord.estimated``)
+without a fresh model; any other candidate is checked fresh. The recorded ``reuse_error`` is the
+largest of the fresh-checked and the estimated errors.
 """
 
 from __future__ import annotations
@@ -48,8 +48,8 @@ MAX_SCAN = 128
 #: (a, Rr/rho)); each fresh check costs one model build (~0.3 s at a_over_h = 10)
 N_CHECKS = 2
 #: a candidate's reuse error is estimated instead of checked fresh when its estimate plus this
-#: margin is below the largest fresh-checked error of the family: 5.5 x the measured spread of a
-#: fresh model's own p0/p0_Hertz - 1 (0.009 %, study model, a_over_h = 10)
+#: margin is within the tolerance (or below the largest checked error): 5.5 x the measured spread
+#: of a fresh model's own p0/p0_Hertz - 1 (0.009 %, study model, a_over_h = 10)
 ESTIMATE_MARGIN = 5e-4
 
 
@@ -295,8 +295,8 @@ def _verify_group(case: _Case, n_checks, rows, a, kap) -> FamilyRecord:
 
 def _check(case: _Case, rec: FamilyRecord, model, rows, a, kap, e_h, picks) -> float:
     """Fresh-model checks of the candidates ``picks`` (worst first), or estimates where the
-    estimate is safely below the worst fresh check (module docstring); the largest
-    ``|reuse_error|`` checked fresh."""
+    estimate is safely within the tolerance (module docstring); the largest ``|reuse_error|``
+    checked or estimated."""
     worst, c_fresh = 0.0, math.nan  # c_fresh: the first fresh model's p0 / p0_Hertz - 1
     tol = float(case.options.tolerance)
     for j in picks:
@@ -305,8 +305,9 @@ def _check(case: _Case, rec: FamilyRecord, model, rows, a, kap, e_h, picks) -> f
         if worst > tol:  # the family is split anyway
             break
         est = (1.0 + e_h[j]) / (1.0 + c_fresh) - 1.0
-        if math.isfinite(est) and abs(est) + ESTIMATE_MARGIN <= worst:
+        if math.isfinite(est) and abs(est) + ESTIMATE_MARGIN <= max(worst, tol):
             rec.estimated.append((*row, float(est)))
+            worst = max(worst, abs(est))
             continue
         err = _reuse_error(case.cache, model, case.cp, case.options, float(case.F[i]),
                            float(case.rho[i]), float(a[j]),
