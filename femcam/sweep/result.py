@@ -47,7 +47,10 @@ class SweepResult:
         ``n_dofs``, ``family``). ``fe_time`` is the contact solve + stress recovery of the angle
         (the solve's own timing, no model build, no file writing); ``build_time`` the model
         builds this row caused in the process that computed it (0 when the model came from the
-        cache; the per-family build times are in ``families``).
+        cache; the per-family build times are in ``families``). A sweep into an output
+        directory with at least :data:`femcam.sweep.store.STREAM_ANGLES` angles returns a
+        read-only mapping instead (:class:`femcam.sweep.store.StoredTable`: each column read
+        from ``DIR/chunks`` when asked), so its memory does not grow with the table.
     method : ``"fe"`` or ``"hertz"``.
     provenance : dict
         femcam/gmsh/scikit-fem/numpy versions, scene file and hash, command line, date, options,
