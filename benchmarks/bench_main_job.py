@@ -12,8 +12,8 @@ Each is run ``--runs`` times (default 5) into a fresh directory; the table gives
 time, the median CPU time (user + sys of the child and its workers: less sensitive to the
 load of a shared machine than the wall time) and the peak RSS (largest process), with the
 load average before and after. Correctness first: every run must exit 0 and its CSV must give
-the study model's FE p0 within 0.3 % of Hertz at every angle (``err_p0`` column), else the
-benchmark stops.
+the study model's FE p0 within 0.3 % of Hertz at every angle answered with the arc gap
+(``err_p0`` column, ``model = fe_arc``: 344 of 360), else the benchmark stops.
 
 Breakdown (one extra run of the default job in a driver process, ``--workers 1`` so that every
 phase runs in that process and can be timed): interpreter start, imports (femcam.cli and the
@@ -70,8 +70,9 @@ def timed(mod, name, key, acc=False):
 timed(femcam.scene, "load_scene", "scene")
 import femcam.sweep.pipeline
 timed(femcam.sweep.pipeline, "write_fe_vtu", "VTU", acc=True)
-timed(femcam.fe.export, "scene_arrays", "VTU fields (full_field of both bodies)", acc=True)
-timed(femcam.sweep.run, "_write_outputs", "outputs (CSV, NPZ, PVD, plots)")
+import femcam.io
+timed(femcam.io, "scene_arrays", "VTU fields (full_field of both bodies)", acc=True)  # as io calls it
+timed(femcam.sweep.run, "write_outputs", "outputs (CSV, NPZ, PVD, plots)")
 for name in ("plot_p0", "plot_maxima", "plot_svaj_loads", "plot_wear", "plot_surface_worst"):
     timed(vs, name, "plot " + name[5:])
 res = {}
@@ -93,28 +94,6 @@ print("BREAKDOWN " + json.dumps({"phases": T, "cpu": C, "sweep": res.get("timing
 """
 
 
-#: ``--proposed``: run the CLI with the sweep's fresh reuse-check models built with
-#: ``SolverOptions(stress_operators="per_solve")`` (they only need p0 of one load case), the
-#: wiring proposed for femcam/sweep/families.py (not applied there: another engineer owns it)
-PROPOSED = r"""
-import sys
-import femcam.sweep.families as fam
-from femcam.fe import ContactModel, SolverOptions
-from femcam.mesh import MeshOptions
-_build = fam.build_model
-def build_model(cp, rho_ref, a_ref, options, _threaded=False):
-    if sys._getframe(1).f_code.co_name != "_reuse_error":
-        return _build(cp, rho_ref, a_ref, options, _threaded)
-    return ContactModel.build(Rr=cp.Rr, rho_ref=rho_ref, cam=cp.cam, roller=cp.roller,
-                              length=cp.length, a_ref=a_ref,
-                              mesh=MeshOptions(a_over_h=options.a_over_h),
-                              solver=SolverOptions(stress_operators="per_solve"), plane=cp.plane)
-fam.build_model = build_model
-from femcam.cli import main
-sys.exit(main(sys.argv[1:]))
-"""
-
-
 def load() -> str:
     return " / ".join(f"{x:.2f}" for x in os.getloadavg())
 
@@ -130,26 +109,34 @@ def machine() -> str:
 
 
 def check_csv(out: Path) -> float:
-    """Largest |FE p0 / Hertz p0 - 1| over the angles of a sweep CSV (asserted <= P0_TOL)."""
+    """Largest |FE p0 / Hertz p0 - 1| over the angles answered by the family models with the
+    Hertz-like arc gap (``model = fe_arc``; asserted <= P0_TOL). The exact-gap rows near the
+    cam's curvature jumps (``fe_exact``) carry a non-Hertzian pressure (docs/fe_real_cam.md),
+    so Hertz is not their reference."""
     with open(out / "sweep.csv") as f:
         rows = [r for r in csv.DictReader(line for line in f if not line.startswith("#"))]
     col = next(k for k in rows[0] if k.startswith("err_p0"))
     scale = 0.01 if col.endswith("_pct") else 1.0
-    errs = [abs(float(r[col])) * scale for r in rows if r[col] not in ("", "nan")]
+    errs = [abs(float(r[col])) * scale for r in rows
+            if r[col] not in ("", "nan") and r.get("model", "fe_arc") == "fe_arc"]
     worst = max(errs)
     assert len(errs) >= 300 and worst <= P0_TOL, f"p0 vs Hertz {worst:.3%} (> {P0_TOL:.1%}) or too few angles"
     return worst
 
 
-def run_once(extra: list[str], proposed: bool = False) -> tuple[float, float, float, float]:
-    """(wall s, cpu s, peak RSS MB, worst p0 error) of one whole-process run."""
-    cmd = [sys.executable, "-c", PROPOSED] if proposed else [sys.executable, "-m", "femcam"]
+def env(root: Path) -> dict:
+    """The environment of a child: ``femcam`` imported from ``root``."""
+    return {**os.environ, "PYTHONPATH": str(root)}
+
+
+def run_once(extra: list[str], root: Path = ROOT) -> tuple[float, float, float, float]:
+    """(wall s, cpu s, peak RSS MB, worst p0 error) of one whole-process run of femcam in ``root``."""
     with tempfile.TemporaryDirectory(prefix="femcam_mainjob_") as d:
         out = Path(d) / "out"
         before = resource.getrusage(resource.RUSAGE_CHILDREN)
         t = time.perf_counter()
-        p = subprocess.run([*cmd, "sweep", str(SCENE), "--out", str(out), *extra],
-                           capture_output=True, text=True, cwd=ROOT)
+        p = subprocess.run([sys.executable, "-m", "femcam", "sweep", str(SCENE), "--out", str(out),
+                            *extra], capture_output=True, text=True, cwd=root, env=env(root))
         wall = time.perf_counter() - t
         after = resource.getrusage(resource.RUSAGE_CHILDREN)
         if p.returncode != 0:
@@ -159,7 +146,7 @@ def run_once(extra: list[str], proposed: bool = False) -> tuple[float, float, fl
     return wall, cpu, after.ru_maxrss / 1024.0, err
 
 
-def breakdown() -> dict:
+def breakdown(extra: list[str] = ()) -> dict:
     """One default run in the timing driver with --workers 1 (all phases in one process)."""
     with tempfile.TemporaryDirectory(prefix="femcam_mainjob_") as d:
         t = time.perf_counter()
@@ -168,7 +155,8 @@ def breakdown() -> dict:
         del py0
         t = time.perf_counter()
         p = subprocess.run([sys.executable, "-c", DRIVER, "sweep", str(SCENE), "--out", f"{d}/out",
-                            "--workers", "1"], capture_output=True, text=True, cwd=ROOT)
+                            "--workers", "1", *extra], capture_output=True, text=True, cwd=ROOT,
+                           env=env(ROOT))
         wall = time.perf_counter() - t
     if p.returncode != 0:
         raise SystemExit(f"driver failed:\n{p.stderr}")
@@ -227,26 +215,37 @@ def main() -> int:
     ap.add_argument("--runs", type=int, default=5)
     ap.add_argument("--no-breakdown", action="store_true")
     ap.add_argument("--breakdown-only", action="store_true")
-    ap.add_argument("--proposed", action="store_true",
-                    help="fresh reuse-check models per_solve (proposed sweep wiring, patched in)")
+    ap.add_argument("--compute-only", action="store_true",
+                    help="time only the compute-only command (--no-plots --vtk-every 0)")
+    ap.add_argument("--mesh-size", type=float, default=None,
+                    help="a/h of the sweep (--mesh-size; target 3: 360 angles at the p rms target)")
+    ap.add_argument("--root", type=Path, action="append", default=None,
+                    help="femcam source tree(s) to time (e.g. an unpacked earlier commit for a "
+                         "before/after table); default this tree")
     args = ap.parse_args()
-    print("# femcam main job, whole process (README command 1)"
-          + (" -- proposed: fresh check models per_solve" if args.proposed else ""))
+    roots = args.root or [ROOT]
+    mesh = [] if args.mesh_size is None else ["--mesh-size", f"{args.mesh_size:g}"]
+    print("# femcam main job, whole process (README command 1)")
     print(f"machine: {machine()}")
     print(f"load average at start: {load()} (1/5/15 min)\n")
-    print("| command | runs | wall median (s) | wall min-max (s) | CPU median (s) | peak RSS (MB) "
-          "| max |p0 err| vs Hertz | load after |")
-    print("|---|---|---|---|---|---|---|---|")
-    for extra in ([] if args.breakdown_only else ([], ["--no-plots", "--vtk-every", "0"])):
-        res = [run_once(extra, args.proposed) for _ in range(args.runs)]
-        w = [r[0] for r in res]
-        c = [r[1] for r in res]
-        print(f"| `femcam sweep examples/seed002_study_model.toml --out DIR {' '.join(extra)}`".rstrip()
-              + f" | {args.runs} | {statistics.median(w):.2f} | {min(w):.2f}-{max(w):.2f} | "
-              f"{statistics.median(c):.2f} | {max(r[2] for r in res):.0f} | "
-              f"{100 * max(r[3] for r in res):.3f} % | {load()} |", flush=True)
+    print("| femcam tree | command | runs | wall median (s) | wall min-max (s) | CPU median (s) "
+          "| peak RSS (MB) | max |p0 err| vs Hertz | load after |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    commands = [] if args.breakdown_only else ([["--no-plots", "--vtk-every", "0"]] if args.compute_only
+                                               else [[], ["--no-plots", "--vtk-every", "0"]])
+    for extra in commands:
+        for root in roots:
+            res = [run_once([*mesh, *extra], root) for _ in range(args.runs)]
+            w = [r[0] for r in res]
+            c = [r[1] for r in res]
+            name = "this tree" if root == ROOT else str(root)
+            cmd = " ".join(["femcam sweep examples/seed002_study_model.toml --out DIR", *mesh, *extra])
+            print(f"| {name} | `{cmd}` | {args.runs} | "
+                  f"{statistics.median(w):.2f} | {min(w):.2f}-{max(w):.2f} | "
+                  f"{statistics.median(c):.2f} | {max(r[2] for r in res):.0f} | "
+                  f"{100 * max(r[3] for r in res):.3f} % | {load()} |", flush=True)
     if not args.no_breakdown:
-        print_breakdown(breakdown())
+        print_breakdown(breakdown(mesh + (["--no-plots", "--vtk-every", "0"] if args.compute_only else [])))
     return 0
 
 

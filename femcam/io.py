@@ -31,6 +31,7 @@ import platform
 import shlex
 import sys
 import tempfile
+import zipfile
 from collections.abc import Callable, Sequence
 from pathlib import Path
 from xml.sax.saxutils import escape, quoteattr
@@ -213,20 +214,29 @@ def write_csv(path, table: dict, prov: dict | None = None, *, columns: Sequence[
     path = Path(path)
     names = [c[1] for c in columns] + list(text_columns)
     head = [",".join(names)] + _header_lines(prov or {})  # line 1: genfromtxt(names=True)
-    n = len(table["theta"])
 
-    def write(f, block: int = 2000):  # in blocks of rows: memory independent of n
+    def write(f):  # in blocks of rows: memory independent of n
         f.write(("\n".join(head) + "\n").encode())
-        for a in range(0, n, block):
-            b = min(a + block, n)
-            cols = [np.asarray(table[k][a:b], dtype=float) * fac for k, _, fac in columns]
-            text = [[csv_text(v) for v in np.asarray(table[k][a:b]).astype(str)]
-                    for k in text_columns]
+        for rows in _row_blocks(table):
+            cols = [np.asarray(rows[k], dtype=float) * fac for k, _, fac in columns]
+            text = [[csv_text(v) for v in np.asarray(rows[k]).astype(str)] for k in text_columns]
             f.write("".join(",".join([f"{c[i]:.10g}" for c in cols] + [t[i] for t in text]) + "\n"
-                            for i in range(b - a)).encode())
+                            for i in range(len(rows["theta"]))).encode())
 
     atomic_write_bytes(path, write)
     return path
+
+
+def _row_blocks(table, block: int = 2000):
+    """The table in blocks of rows (dicts of arrays): its own chunks if it has them (a table
+    kept on disk, :class:`femcam.sweep.store.StoredTable`), else slices of ``block`` rows."""
+    chunks = getattr(table, "chunks", None)
+    if chunks is not None:
+        yield from chunks()
+        return
+    n = len(table["theta"])
+    for a in range(0, n, block):
+        yield {k: v[a:a + block] for k, v in table.items()}
 
 
 def read_csv(path) -> tuple[dict, dict]:
@@ -295,18 +305,33 @@ def write_npz(path, table: dict, prov: dict | None = None, *, numeric: Sequence[
     Path
         ``path``.
     """
-    arrays = {k: np.asarray(table[k], dtype=float) for k in numeric if k in table}
-    for k in set(integer_columns) & set(arrays):  # counts and ids: int64, -1 where undefined (NaN)
-        arrays[k] = np.where(np.isfinite(arrays[k]), arrays[k], -1).astype(np.int64)
-    for k in text_columns:
-        arrays[k] = np.asarray(table[k]).astype(str)
-    arrays["provenance_json"] = np.array(json.dumps(prov or {}, sort_keys=True))
-    arrays["scene_toml"] = np.array(str(scene_toml))
-    arrays["scene_repr"] = np.array(str(scene_repr))
-    arrays.update({k: np.asarray(v) for k, v in (extra or {}).items()})
+    ints = set(integer_columns)
+
+    def arrays():  # one column at a time (a table kept on disk reads each column on access)
+        for k in numeric:
+            if k in table:
+                v = np.asarray(table[k], dtype=float)
+                # counts and ids: int64, -1 where undefined (NaN)
+                yield k, (np.where(np.isfinite(v), v, -1).astype(np.int64) if k in ints else v)
+        for k in text_columns:
+            yield k, np.asarray(table[k]).astype(str)
+        yield "provenance_json", np.array(json.dumps(prov or {}, sort_keys=True))
+        yield "scene_toml", np.array(str(scene_toml))
+        yield "scene_repr", np.array(str(scene_repr))
+        yield from ((k, np.asarray(v)) for k, v in (extra or {}).items())
+
     path = Path(path)
-    atomic_write_bytes(path, lambda f: np.savez_compressed(f, **arrays))
+    atomic_write_bytes(path, lambda f: _savez_stream(f, arrays()))
     return path
+
+
+def _savez_stream(f, items) -> None:
+    """``numpy.savez_compressed`` of ``(name, array)`` pairs written one by one (the same
+    ``.npz`` format: a deflated zip of ``name.npy`` members), so only one array is in memory."""
+    with zipfile.ZipFile(f, mode="w", compression=zipfile.ZIP_DEFLATED, allowZip64=True) as zf:
+        for name, arr in items:
+            with zf.open(name + ".npy", "w", force_zip64=True) as member:
+                np.lib.format.write_array(member, arr, allow_pickle=False)
 
 
 def write_pvd(path, entries) -> Path:

@@ -226,6 +226,27 @@ def test_family_reuse_error_is_verified_and_reported(scene, fe_sample):
     np.testing.assert_allclose(r["p0_fe"][i] / p0_fresh - 1, err, rtol=0, atol=MESH_NOISE)
 
 
+@pytest.mark.slow  # several seconds (fresh models); the default suite stays under 90 s
+def test_estimated_checks_hold_the_tolerance(scene):
+    """A check candidate whose reuse error is only estimated (femcam.sweep.verify) must really
+    be within the tolerance: recomputed here with a model built for that angle alone (the naive
+    path), and within the estimate's margin of the estimate."""
+    from femcam.sweep.verify import ESTIMATE_MARGIN
+
+    scene = dataclasses.replace(scene, sliding="+x")  # full sliding, as the fresh reference
+    th = np.radians(np.arange(0.0, 360.0, 3.0))
+    r = sweep(scene, angles=th)
+    est = [(f, c) for f in r.families for c in f.get("estimated", ())]
+    assert est, "the study model's families should have estimated candidates"
+    for f, (th_deg, _, _, e) in est:
+        i = int(np.argmin(np.abs(np.degrees(th) - th_deg)))
+        assert abs(np.degrees(th[i]) - th_deg) < 1e-9 and r["model"][i] == "fe_arc"
+        got = r["p0_fe"][i] / fresh_p0(scene, r["Fc"][i], r["rho"][i]) - 1
+        assert abs(got) <= r.provenance["options"]["tolerance"] + MESH_NOISE
+        assert abs(got - e) <= ESTIMATE_MARGIN
+        assert abs(e) <= f["reuse_error"]
+
+
 @pytest.mark.slow  # several seconds; the default suite stays under 90 s
 def test_liftoff_rows_do_not_crash(scene):
     # weak preload, triple speed: the follower leaves the cam near the nose

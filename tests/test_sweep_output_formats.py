@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from femcam.errors import InputError
+from femcam.scene import load_scene
 from femcam.sweep import SweepResult, sweep
 
 SCENE = Path(__file__).resolve().parents[1] / "examples" / "seed002_study_model.toml"
@@ -112,3 +113,37 @@ def test_legend_only_with_labelled_artists_and_wear_plot_of_axial_peak_rows(hert
     finally:
         matplotlib.axes.Axes.legend = real_legend
     assert any("axial peak" in s for s in seen["labels"])
+
+
+def test_long_sweep_table_stays_on_disk_and_writes_the_same_files(tmp_path, monkeypatch):
+    """With at least STREAM_ANGLES angles and an output directory the table is read from the
+    chunk files (memory bounded, benchmarks/bench_sweep_memory.py); lowered here to 1 so that a
+    small sweep takes that path. Reference: the closed-form Hertz p0 (Johnson 1985 eq. 4.45,
+    written out below) at the requested angles, and the in-memory path's files."""
+    import femcam.sweep.run as run
+    from femcam.sweep.store import StoredTable
+
+    th = np.radians(np.arange(0.0, 360.0, 7.0))
+    kw = dict(angles=th, method="hertz", chunk_size=11, vtk_every=0, plots=False, progress=False,
+              workers=1)
+    mem = sweep(SCENE, out=tmp_path / "mem", **kw)
+    monkeypatch.setattr(run, "STREAM_ANGLES", 1)
+    disk = sweep(SCENE, out=tmp_path / "disk", **kw)
+    assert isinstance(disk.table, StoredTable) and isinstance(mem.table, dict)
+    sc = load_scene(SCENE)
+    w = disk["Fc"] / sc.length
+    R = 1.0 / (1.0 / disk["rho"] + 1.0 / sc.follower.Rr)
+    E = 1.0 / ((1 - sc.cam.nu ** 2) / sc.cam.E + (1 - sc.roller.nu ** 2) / sc.roller.E)
+    if sc.plane == "stress":
+        E = 1.0 / (1.0 / sc.cam.E + 1.0 / sc.roller.E)
+    p0 = 2 * w / (np.pi * np.sqrt(4 * w * R / (np.pi * E)))
+    np.testing.assert_allclose(disk["theta"], th, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(disk["p0_hertz"], p0, rtol=1e-12)
+    body = [[line for line in (tmp_path / d / "sweep.csv").read_text().splitlines()
+             if not line.startswith("#")] for d in ("mem", "disk")]
+    assert body[0] == body[1] and len(body[1]) == th.size + 1
+    with np.load(tmp_path / "mem" / "sweep.npz") as a, np.load(tmp_path / "disk" / "sweep.npz") as b:
+        cols = [k for k in a.files if k not in ("provenance_json",)]
+        assert set(a.files) == set(b.files)
+        for k in cols:
+            np.testing.assert_array_equal(a[k], b[k], err_msg=k)

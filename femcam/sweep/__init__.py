@@ -5,13 +5,15 @@
 
 Modules: :mod:`~femcam.sweep.options` (:class:`SweepOptions`, the scene adapter),
 :mod:`~femcam.sweep.pipeline` (per-angle chain, one chunk), :mod:`~femcam.sweep.families` (model
-families, verification of the reuse error against ``tolerance``), :mod:`~femcam.sweep.cache`
+families: :mod:`~femcam.sweep.plan`, the first guess, and :mod:`~femcam.sweep.verify`, the
+reuse error checked against ``tolerance``), :mod:`~femcam.sweep.cache`
 (:class:`ModelCache`: the process's FE models),
 :mod:`~femcam.sweep.profile` (the worst angle's surface stresses for the plot),
 :mod:`~femcam.sweep.wear` (Archard wear columns), :mod:`~femcam.sweep.store` (chunked atomic
-store, resume), :mod:`~femcam.sweep.parallel` (serial / process pool / Dask),
-:mod:`~femcam.sweep.result` (:class:`SweepResult`, columns), :mod:`~femcam.sweep.run`
-(:func:`sweep`, ``workers="auto"``).
+store, resume, the on-disk table of long sweeps), :mod:`~femcam.sweep.parallel` (serial /
+process pool / Dask), :mod:`~femcam.sweep.table` (columns, :class:`TableBuilder`),
+:mod:`~femcam.sweep.result` (:class:`SweepResult`, report), :mod:`~femcam.sweep.run`
+(:func:`sweep`, ``workers="auto"``), :mod:`~femcam.sweep.outputs` (the files of ``out``).
 """
 
 import sys

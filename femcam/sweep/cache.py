@@ -164,8 +164,8 @@ class ModelCache:
         if p0 is not None:
             return p0
         try:
-            with self._lock:  # gmsh is not thread-safe
-                fresh = build_model(cp, rho, a, options)
+            with self._lock:  # gmsh is not thread-safe; one load case: no stress operators
+                fresh = build_model(cp, rho, a, options, SolverOptions(stress_operators="per_solve"))
             p0 = fresh.solve(F=F, rho=rho, mu=cp.mu, sliding=sliding, check=False, Q=Q,
                              rolling=rolling if Q is not None else 0).p0
         except (FemcamError, ValueError, ArithmeticError):
@@ -236,7 +236,8 @@ def default_cache() -> ModelCache:
     return _PROCESS_CACHE
 
 
-def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions) -> ContactModel:
+def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions,
+                solver: SolverOptions | None = None) -> ContactModel:
     """A fresh :class:`femcam.fe.ContactModel` (mesh + factorisation).
 
     Parameters
@@ -246,6 +247,9 @@ def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepO
         Reference cam radius and half-width (m).
     options : SweepOptions
         ``a_over_h``.
+    solver : SolverOptions, optional
+        Default ``SolverOptions()`` (stress operators precomputed: a family model solved at
+        many angles); ``stress_operators="per_solve"`` for a one-off model (same p0 to ~1e-12).
 
     Returns
     -------
@@ -254,4 +258,4 @@ def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepO
     return ContactModel.build(Rr=cp.Rr, rho_ref=rho_ref, cam=cp.cam, roller=cp.roller,
                               length=cp.length, a_ref=a_ref,
                               mesh=MeshOptions(a_over_h=options.a_over_h),
-                              solver=SolverOptions(), plane=cp.plane)
+                              solver=solver or SolverOptions(), plane=cp.plane)

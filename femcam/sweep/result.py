@@ -1,42 +1,8 @@
-"""The sweep's result table and :class:`SweepResult`.
+"""The result of a sweep (:class:`SweepResult`: the table, provenance, model families, timings,
+output paths) and its Markdown report.
 
-One row per cam angle. Inside the library every column is SI (rad, m, m/s, N, Pa, s); the
-CSV writer in :mod:`femcam.io` converts to the unit written in the column name through
-:data:`COLUMNS`.
-
-Per-angle ``status``:
-
-* ``"ok"``        -- contact, the requested method answered;
-* ``"liftoff"``   -- Fc <= 0: no contact. Contact half-widths, p0, stresses and wear are 0 (no
-  contact has zero width and zero pressure); depths of maxima and relative errors are NaN
-  (undefined);
-* ``"undercut"``  -- the cam is concave with ``|rho| <= Rr``: the roller does not fit the
-  concave cam (1/rho + 1/Rr <= 0; the pitch curve is undercut or the bodies interfere). No
-  contact solution exists, Hertz or FE; every result column is NaN and ``message`` says why;
-* ``"failed"``    -- the FE solve at this angle failed; ``message`` says why, the sweep went on.
-* ``"edge_contact"`` -- flat-faced follower: the contact runs past the end of the face
-  (``[follower] face_length_mm``); not modelled (never Hertz), ``message`` gives the angle range.
-
-Real-cam columns (:mod:`femcam.sweep.realcam`): ``model`` (``hertz``, ``fe_arc``, ``fe_exact``:
-which model answered), ``est_err_arc_pct``/``est_err_hertz_pct`` (estimated p0 error of the
-cheaper models), ``curvature_jump`` (1 inside a curvature jump's straddle span),
-``exact_vs_arc_p0_pct`` (p0 of the arc-gap FE vs the exact-gap FE, jump rows), ``p0_nodal_MPa``
-(largest nodal pressure: near a jump the pressure is not a Hertz ellipse), ``Q_N`` (tangential
-force on the cam along local x), ``Q_over_muFc``, ``stick_width_um``, ``slip_state``.
-
-``flags`` is a ``;``-separated list of remarks on ``ok`` rows:
-
-* ``hertz_large_a`` -- Hertz a / min(Rr, |rho|) > 0.1 (``LineContact.valid`` is False, or the FE
-  result reports ``outside_hertz``): Hertz itself is questionable, the FE answer stands;
-* ``nearly_conformal`` -- a concave cam close to the roller radius, where Hertz's parabolic gap
-  is off by more than 0.1 % at the contact edge (quartic gap term / quadratic term at x = a,
-  :func:`femcam.hertz.conformity.gap_nonparabolicity`); the FE uses the exact circular surfaces,
-  so ``err_a``/``err_p0`` there measure Hertz's error as much as the FE's;
-* ``rebuilt`` -- the model of the angle's family did not cover it (``model.covers``) and a
-  model was built for this angle alone (its reuse error is 0).
-
-Wear: ``wear_source`` says which pressure the ``wear_depth`` column used (``fe``, ``hertz`` or
-``none``), see :mod:`femcam.sweep.wear`.
+The table's columns, statuses and flags are described in :mod:`femcam.sweep.table` (its names
+are re-exported here: ``from femcam.sweep.result import COLUMNS`` keeps working).
 """
 
 from __future__ import annotations
@@ -48,177 +14,25 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
-
-#: prefix of the worst angle's surface-profile arrays in ``sweep.npz`` (for re-plotting)
-PROFILE_PREFIX = "profile__"
-
-#: (internal SI name, CSV column name, factor SI -> CSV unit). Order = CSV column order.
-COLUMNS: tuple[tuple[str, str, float], ...] = (
-    ("theta", "theta_deg", 180.0 / np.pi),
-    ("s", "s_mm", 1e3),
-    ("v", "v_m_s", 1.0),
-    ("a", "a_m_s2", 1.0),
-    ("j", "j_m_s3", 1.0),
-    ("phi", "phi_deg", 180.0 / np.pi),
-    ("rho", "rho_mm", 1e3),
-    ("Fc", "Fc_N", 1.0),
-    ("a_hertz", "a_hertz_um", 1e6),
-    ("p0_hertz", "p0_hertz_MPa", 1e-6),
-    ("a_fe", "a_fe_um", 1e6),
-    ("p0_fe", "p0_fe_MPa", 1e-6),
-    ("err_a", "err_a_pct", 100.0),
-    ("err_p0", "err_p0_pct", 100.0),
-    ("vm_max", "vm_max_MPa", 1e-6),
-    ("vm_depth", "vm_depth_um", 1e6),
-    ("tau1_max", "tau1_max_MPa", 1e-6),
-    ("tau1_depth", "tau1_depth_um", 1e6),
-    ("sx_min", "sx_min_MPa", 1e-6),
-    ("sx_max", "sx_max_MPa", 1e-6),
-    ("sz_min", "sz_min_MPa", 1e-6),
-    ("txz_absmax", "txz_absmax_MPa", 1e-6),
-    ("v_slip", "v_slip_m_s", 1.0),
-    ("V_cam", "V_cam_m_s", 1.0),
-    ("wear_depth", "wear_depth_per_rev_nm", 1e9),
-    # FE on the real cam (femcam.sweep.realcam): model choice, curvature jumps, traction
-    ("p0_nodal", "p0_nodal_MPa", 1e-6),
-    ("curvature_jump", "curvature_jump", 1.0),
-    ("exact_vs_arc_p0", "exact_vs_arc_p0_pct", 100.0),
-    ("est_err_hertz", "est_err_hertz_pct", 100.0),
-    ("est_err_arc", "est_err_arc_pct", 100.0),
-    ("Q", "Q_N", 1.0),
-    ("Q_over_muFc", "Q_over_muFc", 1.0),
-    ("stick_width", "stick_width_um", 1e6),
-    ("fe_time", "fe_time_ms", 1e3),
-    ("build_time", "build_time_ms", 1e3),
+from .table import (
+    COLUMNS,
+    EXTRA_COLUMNS,
+    INTEGER_COLUMNS,
+    NUMERIC,
+    PROFILE_PREFIX,
+    STATUSES,
+    TEXT_COLUMNS,
+    WALL_CLOCK,
+    TableBuilder,
+    concat_rows,
+    empty_rows,
+    extra_keys,
+    worst_row,
 )
 
-#: string columns (in the CSV with ``,``, ``#``, quotes and newlines replaced, see femcam.io)
-TEXT_COLUMNS = ("status", "flags", "wear_source", "message", "model", "slip_state")
-
-#: numeric diagnostics stored in the NPZ only
-EXTRA_COLUMNS = ("iterations", "residual", "n_dofs", "family")
-
-NUMERIC = tuple(c[0] for c in COLUMNS) + EXTRA_COLUMNS
-#: numeric columns that are counts or ids: int64 in the NPZ (-1 where undefined)
-INTEGER_COLUMNS = ("iterations", "n_dofs", "family")
-STATUSES = ("ok", "liftoff", "undercut", "failed", "edge_contact")
-
-#: wall-clock columns (differ from run to run; excluded from equality checks)
-WALL_CLOCK = ("fe_time", "build_time")
-
-
-def empty_rows(n: int) -> dict[str, np.ndarray]:
-    """A table of ``n`` rows: NaN numbers, empty strings.
-
-    Parameters
-    ----------
-    n : int
-        Rows.
-
-    Returns
-    -------
-    dict[str, ndarray]
-        Float arrays of shape (n,) for :data:`NUMERIC`, object arrays for :data:`TEXT_COLUMNS`.
-    """
-    rows = {name: np.full(n, np.nan) for name in NUMERIC}
-    for name in TEXT_COLUMNS:
-        rows[name] = np.full(n, "", dtype=object)
-    return rows
-
-
-def worst_row(table: dict, column: str = "p0_fe") -> int:
-    """Row index of the largest ``column`` among ``ok`` rows (falls back to Hertz p0, then 0).
-
-    Parameters
-    ----------
-    table : dict[str, ndarray]
-        A sweep table.
-    column : str
-        Column name (SI).
-
-    Returns
-    -------
-    int
-    """
-    ok = table["status"] == "ok"
-    vals = np.where(ok, table[column], np.nan)
-    if not np.any(np.isfinite(vals)):
-        vals = np.where(ok, table["p0_hertz"], np.nan)
-    if not np.any(np.isfinite(vals)):
-        return 0
-    return int(np.nanargmax(vals))
-
-
-def concat_rows(parts: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
-    """Stack chunk tables (already in angle order).
-
-    Parameters
-    ----------
-    parts : list of dict[str, ndarray]
-        Chunk tables.
-
-    Returns
-    -------
-    dict[str, ndarray]
-        One table: float columns and ``str`` text columns.
-    """
-    if not parts:
-        return {k: np.asarray(v) for k, v in empty_rows(0).items()}
-    out = {}
-    for name in NUMERIC:
-        out[name] = np.concatenate([np.asarray(p[name], dtype=float) for p in parts])
-    for name in TEXT_COLUMNS:
-        out[name] = np.concatenate([np.asarray(p[name]).astype(str) for p in parts])
-    for name in extra_keys(parts[0]):  # extra column providers (femcam.sweep.extras)
-        cols = [np.asarray(p[name]) for p in parts]
-        text = cols[0].dtype.kind in "OUS"
-        out[name] = np.concatenate([c.astype(str) if text else c.astype(float) for c in cols])
-    return out
-
-
-def extra_keys(rows: dict) -> list[str]:
-    """Columns of ``rows`` beyond :data:`NUMERIC` and :data:`TEXT_COLUMNS` (added by the extra
-    column providers, :mod:`femcam.sweep.extras`), in their order."""
-    return [k for k in rows if k not in NUMERIC and k not in TEXT_COLUMNS]
-
-
-class TableBuilder:
-    """The sweep table filled chunk by chunk as chunks finish (any order), without keeping the
-    chunks: one float array per numeric column, preallocated (memory ~ one copy of the table).
-
-    Parameters
-    ----------
-    bounds : list of (int, int)
-        Row ranges of the chunks.
-    """
-
-    def __init__(self, bounds):
-        self.bounds = list(bounds)
-        n = self.bounds[-1][1] if self.bounds else 0
-        self.n = n
-        self.numeric = {name: np.full(n, np.nan) for name in NUMERIC}
-        self.text = {name: [np.zeros(0, str)] * len(self.bounds) for name in TEXT_COLUMNS}
-
-    def put(self, c: int, rows: dict) -> None:
-        """Chunk ``c``'s rows (dict of arrays) into the table."""
-        a, b = self.bounds[c]
-        for name in NUMERIC:
-            self.numeric[name][a:b] = np.asarray(rows[name], dtype=float)
-        for name in TEXT_COLUMNS:
-            self.text[name][c] = np.asarray(rows[name]).astype(str)
-        for name in extra_keys(rows):  # extra column providers (femcam.sweep.extras)
-            v = np.asarray(rows[name])
-            if v.dtype.kind in "OUS":
-                self.text.setdefault(name, [np.zeros(0, str)] * len(self.bounds))[c] = v.astype(str)
-            else:
-                self.numeric.setdefault(name, np.full(self.n, np.nan))[a:b] = v.astype(float)
-
-    def table(self) -> dict:
-        """The whole table (float and ``str`` columns, as :func:`concat_rows`)."""
-        out = dict(self.numeric)
-        for name in self.text:
-            out[name] = np.concatenate(self.text[name]) if self.text[name] else np.zeros(0, str)
-        return out
+__all__ = ["COLUMNS", "EXTRA_COLUMNS", "INTEGER_COLUMNS", "NUMERIC", "PROFILE_PREFIX", "STATUSES",
+           "TEXT_COLUMNS", "WALL_CLOCK", "SweepResult", "TableBuilder", "concat_rows", "empty_rows",
+           "extra_keys", "families_text", "plot_data_arrays", "report_markdown", "worst_row"]
 
 
 @dataclass(frozen=True)
@@ -233,7 +47,10 @@ class SweepResult:
         ``n_dofs``, ``family``). ``fe_time`` is the contact solve + stress recovery of the angle
         (the solve's own timing, no model build, no file writing); ``build_time`` the model
         builds this row caused in the process that computed it (0 when the model came from the
-        cache; the per-family build times are in ``families``).
+        cache; the per-family build times are in ``families``). A sweep into an output
+        directory with at least :data:`femcam.sweep.store.STREAM_ANGLES` angles returns a
+        read-only mapping instead (:class:`femcam.sweep.store.StoredTable`: each column read
+        from ``DIR/chunks`` when asked), so its memory does not grow with the table.
     method : ``"fe"`` or ``"hertz"``.
     provenance : dict
         femcam/gmsh/scikit-fem/numpy versions, scene file and hash, command line, date, options,

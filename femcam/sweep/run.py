@@ -1,53 +1,33 @@
 """``sweep(scene, *, angles=..., ...) -> SweepResult``: the main job of femcam.
 
 Orchestration only: the analytic chain for all angles (vectorised, in this process), family
-planning, chunking, the executor, the on-disk store and the output files. The per-angle work is
-:func:`femcam.sweep.pipeline.run_chunk`.
+planning, chunking, the executor and the on-disk store; the output files are written by
+:mod:`femcam.sweep.outputs`. The per-angle work is :func:`femcam.sweep.pipeline.run_chunk`.
 """
 
 from __future__ import annotations
 
-import hashlib
 import time
-from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
 
 from .. import _validate
-from ..errors import FemcamError, InputError
-from ..hertz.conformity import roller_does_not_fit, shape_factors
-from ..io import (
-    atomic_write_text,
-    provenance,
-    vtu_name,
-    write_csv,
-    write_npz,
-    write_pvd,
-)
-from ..scene import Scene, load_scene
-from ..viz.animate import animate_pvd
-from ..viz.sweep import plot_sweep
+from ..errors import InputError
+from ..hertz.conformity import roller_does_not_fit
+from ..io import provenance
+from ..scene import load_scene
 from .cache import default_cache
-from .extras import extra_columns, extras_provenance, plot_extras
+from .extras import extras_provenance
 from .families import FamilyRecord, verify_families
 from .options import SweepOptions, contact_params
+from .outputs import SweepRun, scene_hash, scene_source, write_outputs
 from .parallel import AUTO_VTU_S, Progress, auto_workers, run_tasks
-from .pipeline import ChunkTask, analytic_rows, contact_mask, run_chunk
-from .profile import worst_surface_profile
-from .realcam import auto_hertz_rows, jump_angles, real_cam_summary, scene_traction
-from .result import (
-    COLUMNS,
-    INTEGER_COLUMNS,
-    NUMERIC,
-    TEXT_COLUMNS,
-    SweepResult,
-    TableBuilder,
-    plot_data_arrays,
-    report_markdown,
-)
-from .store import LOCK, ChunkStore, DirLock, array_hash
-from .wear import WearSetup, wear_setup
+from .pipeline import ChunkTask, contact_mask, run_chunk
+from .realcam import auto_hertz_rows, contact_scene, jump_angles, real_cam_summary, scene_traction
+from .result import SweepResult, TableBuilder
+from .store import LOCK, STREAM_ANGLES, ChunkStore, DirLock, array_hash
+from .wear import wear_setup
 
 DEFAULT_STEP_DEG = 1.0
 #: ``.vtu`` every k angles with ``out`` (API and CLI default)
@@ -72,56 +52,6 @@ def parse_angles_deg(spec: str) -> np.ndarray:
     [0.0, 30.0, 60.0]
     """
     return _validate.angles_deg("--angles-deg", spec)
-
-
-def _scene_hash(scene, scene_path) -> str:
-    if scene_path is not None and Path(scene_path).is_file():
-        h = hashlib.sha256(Path(scene_path).read_bytes())
-        h.update(repr(scene).encode())  # also catches in-code changes such as --law
-        return h.hexdigest()
-    return hashlib.sha256(repr(scene).encode()).hexdigest()
-
-
-def _scene_source(scene, scene_path):
-    """(path of the scene file or None, its text or "")."""
-    for p in (scene_path, scene.source_path):
-        if p and Path(p).is_file():
-            try:
-                return Path(p), Path(p).read_text(encoding="utf-8")
-            except (OSError, UnicodeDecodeError):
-                return Path(p), ""
-    return None, ""
-
-
-@dataclass
-class _Run:
-    """The state of one sweep call, filled phase by phase."""
-
-    scene: Scene
-    scene_path: object
-    angles: np.ndarray
-    opts: SweepOptions
-    workers: int | str
-    out: Path | None
-    resume: bool
-    bounds: list
-    delay_s: float = 0.0
-    shash: str = ""
-    contact: np.ndarray | None = None
-    rows0: dict | None = None
-    wear: WearSetup | None = None
-    store: ChunkStore | None = None
-    done: frozenset = frozenset()
-    vtk_mask: np.ndarray | None = None
-    family: np.ndarray | None = None
-    records: list | None = None
-    verified_here: bool = False
-    overwrite: bool = False
-    animate: bool = False
-    lock: DirLock | None = None
-    jump: np.ndarray | None = None
-    traction: object = None
-    hertz: np.ndarray | None = None
 
 
 def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
@@ -216,7 +146,7 @@ class SweepInterrupted(KeyboardInterrupt):
     """Ctrl-C during a sweep; the message says what was saved and how to resume."""
 
 
-def _interrupt_message(run: _Run) -> str:
+def _interrupt_message(run: SweepRun) -> str:
     if run.store is None or run.out is None:
         return "interrupted; nothing was saved" + ("" if run.out is None else
                                                    f" in {run.out} (rerun the same command)")
@@ -225,7 +155,7 @@ def _interrupt_message(run: _Run) -> str:
             "rerun the same command with --resume to compute the rest")
 
 
-def _sweep(run: _Run, scheduler, client, progress, plots, command, t_start) -> SweepResult:
+def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) -> SweepResult:
     _analytic(run)
     t_analytic = time.perf_counter() - t_start
     _open_store(run)
@@ -239,7 +169,7 @@ def _sweep(run: _Run, scheduler, client, progress, plots, command, t_start) -> S
     t0 = time.perf_counter()
     table = _compute(run, tasks, task_chunk, workers, scheduler, client, progress)
     t_compute = time.perf_counter() - t0
-    src_path, src_text = _scene_source(run.scene, run.scene_path)
+    src_path, src_text = scene_source(run.scene, run.scene_path)
     options = {**run.opts.to_dict(), "workers": workers,
                "scheduler": str(scheduler) if scheduler else None,
                "n_angles": int(run.angles.size), "n_families": len(run.records)}
@@ -258,13 +188,13 @@ def _sweep(run: _Run, scheduler, client, progress, plots, command, t_start) -> S
                          n_chunks_resumed=len(run.done))
     if run.out is not None:
         with talk.phase(f"writing {run.out}" + (" (tables, plots)" if plots else "")):
-            result = _write_outputs(result, run, plots, src_path, src_text)
+            result = write_outputs(result, run, plots, src_path, src_text)
     result.timings["total"] = time.perf_counter() - t_start
     return result
 
 
 def _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume, workers,
-             vtk_every, scene_path, chunk_delay_s) -> _Run:
+             vtk_every, scene_path, chunk_delay_s) -> SweepRun:
     """Check the inputs; load the scene file."""
     if isinstance(scene, (str, Path)):
         scene_path = scene
@@ -285,26 +215,27 @@ def _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume
     angles, jump = jump_angles(scene, angles)  # curvature jumps resolved (femcam.sweep.realcam)
     n = angles.size
     bounds = [(i, min(i + opts.chunk_size, n)) for i in range(0, n, opts.chunk_size)]
-    return _Run(scene=scene, scene_path=scene_path, angles=angles, opts=opts, workers=workers,
+    return SweepRun(scene=scene, scene_path=scene_path, angles=angles, opts=opts, workers=workers,
                 out=Path(out) if out is not None else None, resume=bool(resume), bounds=bounds,
                 delay_s=delay, jump=jump)
 
 
-def _analytic(run: _Run) -> None:
+def _analytic(run: SweepRun) -> None:
     """The analytic chain for all angles (cheap, vectorised): contact mask and slip."""
-    run.rows0, st0 = analytic_rows(run.scene, run.angles)
+    # only what the planning needs (no table of all angles: memory; the chunks fill theirs)
+    st0 = contact_scene(run.scene).analyse(run.angles)
+    run.rows0 = {k: np.asarray(getattr(st0, k), dtype=float) for k in ("Fc", "rho")}
     run.contact = contact_mask(run.rows0, st0)
     if run.opts.method != "hertz":
         run.traction = scene_traction(run.scene, run.angles)
-    run.rows0 = {k: run.rows0[k] for k in ("Fc", "rho")}  # all the planning needs (memory)
     run.wear = wear_setup(run.scene, run.angles, st0)
 
 
-def _open_store(run: _Run) -> None:
+def _open_store(run: SweepRun) -> None:
     """The scene hash; the on-disk chunk store (with ``out``): finished chunks on resume, stale
     files removed."""
     n = run.angles.size
-    run.shash = _scene_hash(run.scene, run.scene_path)
+    run.shash = scene_hash(run.scene, run.scene_path)
     run.vtk_mask = np.zeros(n, bool)
     if run.out is None:
         return
@@ -326,7 +257,7 @@ def _open_store(run: _Run) -> None:
         run.vtk_mask[:: run.opts.vtk_every] = True
 
 
-def _plan(run: _Run) -> None:
+def _plan(run: SweepRun) -> None:
     """Model families verified against the tolerance (FE only); a resume reuses the stored plan."""
     n = run.angles.size
     run.family, run.records = np.full(n, -1), []
@@ -338,9 +269,7 @@ def _plan(run: _Run) -> None:
     plan = run.store.load_plan() if (run.store is not None and run.resume) else None
     if plan is not None and len(plan.get("family", ())) == n:
         run.family = np.asarray(plan["family"], dtype=int)
-        run.records = [FamilyRecord(**{**r, "a_ratio": tuple(r["a_ratio"]), "kappa": tuple(r["kappa"]),
-                                       "checks": [tuple(c) for c in r["checks"]]})
-                       for r in plan["records"]]
+        run.records = [FamilyRecord.from_dict(r) for r in plan["records"]]
         return
     if cp.kind == "flat_faced":  # binned real-cam models (femcam.sweep.realrows), no families
         return
@@ -354,7 +283,7 @@ def _plan(run: _Run) -> None:
                              "records": [r.to_dict() for r in run.records]})
 
 
-def _tasks(run: _Run) -> tuple[list[ChunkTask], list[int]]:
+def _tasks(run: SweepRun) -> tuple[list[ChunkTask], list[int]]:
     """One task per chunk still to compute, and its chunk number."""
     refs = {r.id: (r.rho_ref, r.a_ref) for r in run.records}
     vtk_dir = str(run.out / "vtk") if (run.out is not None and run.opts.vtk_every) else None
@@ -373,7 +302,7 @@ def _tasks(run: _Run) -> tuple[list[ChunkTask], list[int]]:
     return tasks, task_chunk
 
 
-def _choose_workers(run: _Run, tasks, task_chunk, scheduler, client) -> tuple[int, str | None]:
+def _choose_workers(run: SweepRun, tasks, task_chunk, scheduler, client) -> tuple[int, str | None]:
     """``workers="auto"``: the expected work of the chunks decides (:func:`auto_workers`)."""
     if run.workers != "auto":
         return run.workers, None
@@ -396,9 +325,13 @@ def _choose_workers(run: _Run, tasks, task_chunk, scheduler, client) -> tuple[in
     return auto_workers(len(tasks), n_solves, t_solve, len(records), t_build, t_other=t_vtu)
 
 
-def _compute(run: _Run, tasks, task_chunk, workers, scheduler, client, progress) -> dict:
-    """Run the chunks (stored as they finish), load the resumed ones, return the whole table."""
-    table = TableBuilder(run.bounds)  # filled as chunks finish: no second copy of the rows
+def _compute(run: SweepRun, tasks, task_chunk, workers, scheduler, client, progress):
+    """Run the chunks (stored as they finish), load the resumed ones, return the whole table:
+    a dict of arrays, or with an output directory and at least :data:`STREAM_ANGLES` angles a
+    :class:`~femcam.sweep.store.StoredTable` read from the chunk files (memory bounded)."""
+    stream = run.store is not None and run.angles.size >= STREAM_ANGLES
+    # filled as chunks finish: no second copy of the rows
+    table = None if stream else TableBuilder(run.bounds)
     bar = Progress(sum(b - a for c, (a, b) in enumerate(run.bounds) if c not in run.done),
                    label="solves" + (" and VTU files" if run.opts.vtk_every else ""),
                    enabled=progress)
@@ -408,81 +341,14 @@ def _compute(run: _Run, tasks, task_chunk, workers, scheduler, client, progress)
             c = task_chunk[k]
             if run.store is not None:
                 run.store.write(c, rows)
-            table.put(c, rows)
+            if table is not None:
+                table.put(c, rows)
             del rows
             bar.update(run.bounds[c][1] - run.bounds[c][0])
     finally:
         bar.close()
+    if table is None:
+        return run.store.table()
     for c in run.done:
         table.put(c, run.store.load(c))
     return table.table()
-
-
-def _write_outputs(result: SweepResult, run: _Run, plots: bool, src_path=None,
-                   src_text: str = "") -> SweepResult:
-    """``scene.toml``, ``sweep.csv``, ``sweep.npz``, ``sweep.pvd`` and the plots in ``run.out``."""
-    out = run.out
-    paths = {}
-    prov = dict(result.provenance)
-    if src_path is not None and src_text:
-        copy = out / "scene.toml"
-        if not (copy.exists() and copy.resolve() == Path(src_path).resolve()):
-            atomic_write_text(copy, src_text)
-        paths["scene"] = str(copy)
-        prov["scene_copy"] = (f"{copy.name} (copy of {src_path}; the sweep used the parsed scene "
-                              "recorded as scene_repr in sweep.npz, which differs from the file "
-                              "only if it was changed in code, e.g. --law)")
-    result = replace(result, provenance=prov)
-    if plots:
-        result = _with_plot_data(result, run)
-    xcols, xtext = extra_columns(run.scene)  # extra column providers (femcam.sweep.extras)
-    paths.update(csv=str(write_csv(out / "sweep.csv", result.table, prov, columns=COLUMNS + xcols,
-                                   text_columns=TEXT_COLUMNS + xtext)),
-                 npz=str(write_npz(out / "sweep.npz", result.table, prov,
-                                   numeric=NUMERIC + tuple(c[0] for c in xcols),
-                                   text_columns=TEXT_COLUMNS + xtext, integer_columns=INTEGER_COLUMNS,
-                                   scene_toml=src_text,
-                                   scene_repr=repr(run.scene), extra=plot_data_arrays(result))))
-    theta = result.table["theta"]
-    entries = [(float(np.degrees(theta[i])), out / "vtk" / vtu_name(theta[i]))
-               for i in np.flatnonzero(run.vtk_mask)]
-    _check_vtus(result, run)
-    entries = [(t, p) for t, p in entries if p.exists()]
-    if entries:
-        paths["pvd"] = str(write_pvd(out / "sweep.pvd", entries))
-    result = replace(result, paths=paths)
-    if plots:
-        try:
-            paths.update(plot_sweep(result, out))
-            paths.update(plot_extras(run.scene, result.table, out))
-        except ImportError as exc:  # pragma: no cover - matplotlib missing
-            raise InputError(f"plots = True: {exc}") from None
-    if run.animate and "pvd" in paths:
-        paths["animation"] = animate_pvd(paths["pvd"], out / "animation.gif")
-    atomic_write_text(out / "report.md", report_markdown(result))
-    paths["report"] = str(out / "report.md")
-    return result
-
-
-def _check_vtus(result: SweepResult, run: _Run) -> None:
-    """Every ``ok`` angle of the VTK series has its ``.vtu`` in ``DIR/vtk``, or the sweep fails
-    loudly (never a silent exit 0 with files missing, e.g. written on another machine)."""
-    want = np.flatnonzero(run.vtk_mask & (result.table["status"] == "ok"))
-    missing = [vtu_name(result.table["theta"][i]) for i in want
-               if not (run.out / "vtk" / vtu_name(result.table["theta"][i])).exists()]
-    if missing:
-        raise FemcamError(f"{len(missing)} of {want.size} .vtu files are missing from "
-                          f"{run.out / 'vtk'} (first: {missing[0]}); the table is saved in "
-                          f"{run.out / 'chunks'}")
-
-
-def _with_plot_data(result: SweepResult, run: _Run) -> SweepResult:
-    """The Hertz shape factors and the worst angle's surface profile, for the plots."""
-    cp = contact_params(run.scene)
-    profile = None
-    if np.any(result.ok):
-        fe = "hertz" if (result.method == "hertz" or cp.kind == "flat_faced") else "fe"
-        profile = worst_surface_profile(result.table, fe, cp, result.families, run.opts,
-                                        default_cache(), scene=run.scene)
-    return replace(result, surface_profile=profile,
-                   hertz_factors=shape_factors(cp.mu, cp.cam.nu, cp.plane))

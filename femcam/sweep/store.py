@@ -19,6 +19,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+from collections.abc import Mapping
 from pathlib import Path
 
 import numpy as np
@@ -37,6 +38,9 @@ PLAN = "plan.json"
 FORMAT_VERSION = 4  # 2: wear and build-time columns, plan.json; 3: scene hash in each chunk;
 #                     4: extra provider columns (femcam.sweep.extras)
 LOCK = ".femcam.lock"
+#: a sweep into an output directory with at least this many angles keeps its table on disk
+#: (:class:`StoredTable`) instead of in memory
+STREAM_ANGLES = 20_000
 #: name of the scene hash stored in each chunk file (not a column)
 CHUNK_SCENE_KEY = "_scene_sha256"
 
@@ -173,10 +177,56 @@ class ChunkStore:
         atomic_write_bytes(p, lambda f: np.savez(f, **arrays))
         return p
 
+    def table(self) -> StoredTable:
+        """The whole table, read from the chunk files on access (:class:`StoredTable`)."""
+        return StoredTable(self)
+
     def load(self, i: int) -> dict:
         """The table of chunk ``i`` (dict of arrays)."""
         with np.load(self.path(i), allow_pickle=False) as z:
             return {name: z[name] for name in z.files if name != CHUNK_SCENE_KEY}
+
+
+class StoredTable(Mapping):
+    """A sweep table read from its chunk files (:class:`ChunkStore`), not held in memory.
+
+    ``table[name]`` reads that column from every chunk file (one column in memory, not kept:
+    each access reads again); :meth:`chunks` yields the chunks' rows one at a time (the CSV
+    writer streams them). A sweep into an output directory with at least
+    :data:`STREAM_ANGLES` angles returns its table this way, so its memory does not grow with
+    the table (0.3-0.5 kB per angle in memory otherwise).
+
+    Parameters
+    ----------
+    store : ChunkStore
+        A store whose chunks are all written.
+    """
+
+    def __init__(self, store: ChunkStore):
+        self._paths = [store.path(i) for i in range(len(store.bounds))]
+        with np.load(self._paths[0], allow_pickle=False) as z:
+            self._keys = [k for k in z.files if k != CHUNK_SCENE_KEY]
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        if name not in self._keys:
+            raise KeyError(name)
+        parts = []
+        for p in self._paths:
+            with np.load(p, allow_pickle=False) as z:
+                parts.append(z[name])
+        return np.concatenate(parts)
+
+    def __iter__(self):
+        return iter(self._keys)
+
+    def __len__(self) -> int:
+        return len(self._keys)
+
+    def chunks(self):
+        """The rows of each chunk in order (dict of arrays), one chunk in memory at a time."""
+        for p in self._paths:
+            with np.load(p, allow_pickle=False) as z:
+                yield {name: z[name] for name in self._keys}
 
 
 class DirLock:

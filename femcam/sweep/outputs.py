@@ -1,0 +1,160 @@
+"""The state of one sweep call and the files it writes: ``scene.toml``, ``sweep.csv``,
+``sweep.npz``, ``sweep.pvd``, the plots, ``report.md`` (:func:`write_outputs`, called by
+:func:`femcam.sweep.sweep` with an output directory).
+"""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import FemcamError, InputError
+from ..hertz.conformity import shape_factors
+from ..io import atomic_write_text, vtu_name, write_csv, write_npz, write_pvd
+from ..scene import Scene
+from ..viz.animate import animate_pvd
+from ..viz.sweep import plot_sweep
+from .cache import default_cache
+from .extras import extra_columns, plot_extras
+from .options import SweepOptions, contact_params
+from .profile import worst_surface_profile
+from .result import (
+    COLUMNS,
+    INTEGER_COLUMNS,
+    NUMERIC,
+    TEXT_COLUMNS,
+    SweepResult,
+    plot_data_arrays,
+    report_markdown,
+)
+from .store import ChunkStore, DirLock
+from .wear import WearSetup
+
+__all__ = ["SweepRun", "check_vtus", "scene_hash", "scene_source", "with_plot_data", "write_outputs"]
+
+
+def scene_hash(scene, scene_path) -> str:
+    """SHA-256 of the scene file and the parsed scene (the resume key)."""
+    if scene_path is not None and Path(scene_path).is_file():
+        h = hashlib.sha256(Path(scene_path).read_bytes())
+        h.update(repr(scene).encode())  # also catches in-code changes such as --law
+        return h.hexdigest()
+    return hashlib.sha256(repr(scene).encode()).hexdigest()
+
+
+def scene_source(scene, scene_path):
+    """(path of the scene file or None, its text or "")."""
+    for p in (scene_path, scene.source_path):
+        if p and Path(p).is_file():
+            try:
+                return Path(p), Path(p).read_text(encoding="utf-8")
+            except (OSError, UnicodeDecodeError):
+                return Path(p), ""
+    return None, ""
+
+
+
+@dataclass
+class SweepRun:
+    """The state of one :func:`femcam.sweep.sweep` call, filled phase by phase
+    (:mod:`femcam.sweep.run`), read by the output writers."""
+
+    scene: Scene
+    scene_path: object
+    angles: np.ndarray
+    opts: SweepOptions
+    workers: int | str
+    out: Path | None
+    resume: bool
+    bounds: list
+    delay_s: float = 0.0
+    shash: str = ""
+    contact: np.ndarray | None = None
+    rows0: dict | None = None
+    wear: WearSetup | None = None
+    store: ChunkStore | None = None
+    done: frozenset = frozenset()
+    vtk_mask: np.ndarray | None = None
+    family: np.ndarray | None = None
+    records: list | None = None
+    verified_here: bool = False
+    overwrite: bool = False
+    animate: bool = False
+    lock: DirLock | None = None
+    jump: np.ndarray | None = None
+    traction: object = None
+    hertz: np.ndarray | None = None
+
+
+
+def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None,
+                   src_text: str = "") -> SweepResult:
+    """``scene.toml``, ``sweep.csv``, ``sweep.npz``, ``sweep.pvd`` and the plots in ``run.out``."""
+    out = run.out
+    paths = {}
+    prov = dict(result.provenance)
+    if src_path is not None and src_text:
+        copy = out / "scene.toml"
+        if not (copy.exists() and copy.resolve() == Path(src_path).resolve()):
+            atomic_write_text(copy, src_text)
+        paths["scene"] = str(copy)
+        prov["scene_copy"] = (f"{copy.name} (copy of {src_path}; the sweep used the parsed scene "
+                              "recorded as scene_repr in sweep.npz, which differs from the file "
+                              "only if it was changed in code, e.g. --law)")
+    result = replace(result, provenance=prov)
+    if plots:
+        result = with_plot_data(result, run)
+    xcols, xtext = extra_columns(run.scene)  # extra column providers (femcam.sweep.extras)
+    paths.update(csv=str(write_csv(out / "sweep.csv", result.table, prov, columns=COLUMNS + xcols,
+                                   text_columns=TEXT_COLUMNS + xtext)),
+                 npz=str(write_npz(out / "sweep.npz", result.table, prov,
+                                   numeric=NUMERIC + tuple(c[0] for c in xcols),
+                                   text_columns=TEXT_COLUMNS + xtext, integer_columns=INTEGER_COLUMNS,
+                                   scene_toml=src_text,
+                                   scene_repr=repr(run.scene), extra=plot_data_arrays(result))))
+    theta = result.table["theta"]
+    entries = [(float(np.degrees(theta[i])), out / "vtk" / vtu_name(theta[i]))
+               for i in np.flatnonzero(run.vtk_mask)]
+    check_vtus(result, run)
+    entries = [(t, p) for t, p in entries if p.exists()]
+    if entries:
+        paths["pvd"] = str(write_pvd(out / "sweep.pvd", entries))
+    result = replace(result, paths=paths)
+    if plots:
+        try:
+            paths.update(plot_sweep(result, out))
+            paths.update(plot_extras(run.scene, result.table, out))
+        except ImportError as exc:  # pragma: no cover - matplotlib missing
+            raise InputError(f"plots = True: {exc}") from None
+    if run.animate and "pvd" in paths:
+        paths["animation"] = animate_pvd(paths["pvd"], out / "animation.gif")
+    atomic_write_text(out / "report.md", report_markdown(result))
+    paths["report"] = str(out / "report.md")
+    return result
+
+
+def check_vtus(result: SweepResult, run: SweepRun) -> None:
+    """Every ``ok`` angle of the VTK series has its ``.vtu`` in ``DIR/vtk``, or the sweep fails
+    loudly (never a silent exit 0 with files missing, e.g. written on another machine)."""
+    want = np.flatnonzero(run.vtk_mask & (result.table["status"] == "ok"))
+    missing = [vtu_name(result.table["theta"][i]) for i in want
+               if not (run.out / "vtk" / vtu_name(result.table["theta"][i])).exists()]
+    if missing:
+        raise FemcamError(f"{len(missing)} of {want.size} .vtu files are missing from "
+                          f"{run.out / 'vtk'} (first: {missing[0]}); the table is saved in "
+                          f"{run.out / 'chunks'}")
+
+
+def with_plot_data(result: SweepResult, run: SweepRun) -> SweepResult:
+    """The Hertz shape factors and the worst angle's surface profile, for the plots."""
+    cp = contact_params(run.scene)
+    profile = None
+    if np.any(result.ok):
+        fe = "hertz" if (result.method == "hertz" or cp.kind == "flat_faced") else "fe"
+        profile = worst_surface_profile(result.table, fe, cp, result.families, run.opts,
+                                        default_cache(), scene=run.scene)
+    return replace(result, surface_profile=profile,
+                   hertz_factors=shape_factors(cp.mu, cp.cam.nu, cp.plane))

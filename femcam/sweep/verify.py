@@ -1,0 +1,386 @@
+r"""Model families, verification: the reuse error of every family checked against the tolerance.
+
+The **reuse error** of an angle is the relative difference of its FE peak pressure solved with
+its family's model and solved with a model built fresh for that angle (mesh graded to the
+angle's own Hertz half-width ``a`` and cam radius ``rho``: the naive path)::
+
+    reuse_error = p0(family model) / p0(fresh model) - 1
+
+:func:`verify_families` builds each family's model, solves it at (up to :data:`MAX_SCAN` of)
+its load cases, and checks the angles where the reuse error is largest
+(:func:`check_angles`) with fresh models (built with ``stress_operators="per_solve"``: only
+their p0 is needed). A family whose ``max |reuse_error| > tolerance`` is split in two and
+checked again, down to single load cases (whose family model *is* the fresh model).
+
+One fresh model per family, not two, where Hertz applies
+-----------------------------------------------------------
+A model built for the angle itself has a nearly constant ``c = p0 / p0_Hertz - 1`` (its contact
+edge sits on a node; measured -0.046 .. -0.055 % over the study model at a_over_h = 10), so
+the reuse error at an angle whose family-model error is ``e`` is close to
+``(1 + e) / (1 + c) - 1``. The first check (the family's largest ``e``) gives ``c`` of its fresh
+model; a further candidate whose estimate plus :data:`ESTIMATE_MARGIN` stays within the tolerance
+(or below the largest checked error) is recorded as *estimated* (``FamilyRecord.estimated``)
+without a fresh model; any other candidate is checked fresh. The recorded ``reuse_error`` is the
+largest of the fresh-checked and the estimated errors.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import FemcamError
+from .cache import ModelCache, default_cache
+from .options import ContactParams, SweepOptions
+from .plan import curvature_ratio, family_reference, hertz_half_width, initial_groups
+from .realcam import traction_args
+
+__all__ = ["ESTIMATE_MARGIN", "MAX_SCAN", "N_CHECKS", "FamilyRecord", "check_angles",
+           "verify_families"]
+#: largest number of distinct load cases per family solved with the family model during the
+#: verification to find its worst angles (more are sampled evenly in a)
+MAX_SCAN = 128
+#: default number of check candidates per family: the largest and smallest ``p0/p0_Hertz - 1``
+#: of the family model (or, without Hertz, the worst edge offset and the extreme corner in
+#: (a, Rr/rho)); each fresh check costs one model build (~0.3 s at a_over_h = 10)
+N_CHECKS = 2
+#: a candidate's reuse error is estimated instead of checked fresh when its estimate plus this
+#: margin is within the tolerance (or below the largest checked error): 5.5 x the measured spread
+#: of a fresh model's own p0/p0_Hertz - 1 (0.009 %, study model, a_over_h = 10)
+ESTIMATE_MARGIN = 5e-4
+
+
+@dataclass
+class FamilyRecord:
+    """One verified family (JSON-able through :meth:`to_dict`).
+
+    ``checks``: ``[(theta_deg, a/a_ref, Rr/rho, reuse_error), ...]`` at the angles checked with
+    fresh models; ``estimated``: the same for candidates whose reuse error was only estimated
+    (module docstring: well below the checked worst);
+    ``reuse_error``: the largest ``|reuse_error|`` of the checks (0 for a family of one load
+    case: its model is the fresh model); ``build_time``: s to build the family model (this
+    process, during the verification); ``check_time``: s for the fresh check models and solves;
+    ``solve_time``: s per solve with the family model (median, the solve's own timing);
+    ``p0_vs_hertz``: range of the family model's ``p0 / p0_Hertz - 1`` over the ``n_scanned``
+    load cases solved with it (where Hertz applies); ``n_rebuilt``: angles the model does not
+    cover (solved with models of their own).
+    """
+
+    id: int
+    rho_ref: float
+    a_ref: float
+    n_angles: int
+    a_ratio: tuple[float, float]
+    kappa: tuple[float, float]
+    checks: list = field(default_factory=list)
+    reuse_error: float = 0.0
+    build_time: float = 0.0
+    check_time: float = 0.0
+    solve_time: float = float("nan")
+    p0_vs_hertz: tuple = (float("nan"), float("nan"))
+    n_scanned: int = 0
+    n_rebuilt: int = 0
+    estimated: list = field(default_factory=list)
+
+    def to_dict(self) -> dict:
+        """The record as JSON-able lists and numbers (``plan.json``, provenance)."""
+        return {"id": self.id, "rho_ref": self.rho_ref, "a_ref": self.a_ref,
+                "n_angles": self.n_angles, "a_ratio": list(self.a_ratio),
+                "kappa": list(self.kappa), "checks": [list(c) for c in self.checks],
+                "reuse_error": self.reuse_error, "build_time": self.build_time,
+                "check_time": self.check_time, "solve_time": self.solve_time,
+                "p0_vs_hertz": list(self.p0_vs_hertz), "n_scanned": self.n_scanned,
+                "n_rebuilt": self.n_rebuilt, "estimated": [list(c) for c in self.estimated]}
+
+    @classmethod
+    def from_dict(cls, d: dict) -> FamilyRecord:
+        """The record of :meth:`to_dict` (``plan.json`` of a resumed sweep; files written
+        before ``estimated`` existed load with none)."""
+        return cls(**{**d, "a_ratio": tuple(d["a_ratio"]), "kappa": tuple(d["kappa"]),
+                      "p0_vs_hertz": tuple(d.get("p0_vs_hertz", (math.nan, math.nan))),
+                      "checks": [tuple(c) for c in d["checks"]],
+                      "estimated": [tuple(c) for c in d.get("estimated", ())]})
+
+
+def _edge_offset(x_nodes: np.ndarray, a: np.ndarray) -> np.ndarray:
+    """Distance of the contact edge ``x = a`` from the nearest mesh node, in units of the local
+    node spacing (0 on a node, 0.5 mid-element)."""
+    x = np.asarray(x_nodes, float)
+    x = x[x > 0]
+    if x.size < 2:
+        return np.zeros_like(a)
+    j = np.clip(np.searchsorted(x, a), 1, x.size - 1)
+    lo, hi = x[j - 1], x[j]
+    d = np.minimum(np.abs(a - lo), np.abs(hi - a)) / (hi - lo)
+    return np.where((a > x[-1]) | (a < x[0]), 0.5, d)
+
+
+def check_angles(a, kappa, a_ref, k_ref, x_nodes, n_checks: int = N_CHECKS,
+                 e_hertz=None) -> list[int]:
+    """Indices (into ``a``/``kappa``) of the angles to check with a fresh model, worst first.
+
+    With ``e_hertz`` (the family model's ``p0 / p0_Hertz - 1`` at every angle, cheap: one small
+    solve each): its largest and its smallest value. A model built for the angle itself has a
+    nearly constant ``p0 / p0_Hertz - 1`` (its edge sits on a node; measured -0.046 .. -0.055 %
+    over the study model at a_over_h = 10), so the reuse error is largest at these two angles,
+    whatever the cause (edge between nodes, mesh coarser or finer than ``a/h``, body shape).
+    Then, or without ``e_hertz`` (Hertz does not apply): the largest edge offset from a mesh node
+    and the family's extreme corner in the normalised (``ln(a/a_ref)``, ``kappa - k_ref``) plane,
+    then the extremes of ``a`` and ``kappa``. Load cases equal to one already chosen are skipped.
+
+    Parameters
+    ----------
+    a, kappa : ndarray, shape (m,)
+        Hertz half-width (m) and ``Rr/rho`` of the family's covered angles.
+    a_ref, k_ref : float
+        The family model's reference half-width (m) and ``Rr/rho_ref``.
+    x_nodes : ndarray
+        Contact-surface node abscissae of the family mesh (m).
+    n_checks : int
+        How many angles to return at most.
+    e_hertz : ndarray, shape (m,), optional
+        ``p0 / p0_Hertz - 1`` of the family model (NaN where not solved).
+
+    Returns
+    -------
+    list of int
+    """
+    if a.size == 0:
+        return []
+    la = np.log(a / a_ref)
+    dk = kappa - k_ref
+    sa, sk = float(np.max(np.abs(la))), float(np.max(np.abs(dk)))
+    dn = np.hypot(la / sa if sa > 0 else 0.0 * la, dk / sk if sk > 0 else 0.0 * dk)
+    cands = []
+    if e_hertz is not None:
+        e = np.asarray(e_hertz, float)
+        if np.any(np.isfinite(e)):
+            cands += [int(np.nanargmax(e)), int(np.nanargmin(e))]
+    cands += [int(np.argmax(_edge_offset(x_nodes, a) + 1e-6 * np.abs(la))),
+              int(np.argmax(dn)),
+              int(np.argmax(np.abs(la))), int(np.argmax(np.abs(dk))),
+              int(np.argmin(la)), int(np.argmax(la)),
+              int(np.argmin(kappa)), int(np.argmax(kappa))]
+    out, seen = [], set()
+    for i in cands:
+        key = (float(a[i]), float(kappa[i]))
+        if key in seen:
+            continue
+        seen.add(key)
+        out.append(i)
+        if len(out) >= n_checks:
+            break
+    return out
+
+
+def _same_case(rho, a, rho_ref, a_ref) -> bool:
+    same_rho = (rho == rho_ref) or (math.isfinite(rho) and math.isfinite(rho_ref)
+                                    and abs(rho / rho_ref - 1.0) <= 1e-12)
+    return same_rho and abs(a / a_ref - 1.0) <= 1e-12
+
+
+def verify_families(F, rho, theta, cp: ContactParams, options: SweepOptions,
+                    contact: np.ndarray, n_checks: int = N_CHECKS, *,
+                    cache: ModelCache | None = None, traction=None):
+    """Plan the families and verify the reuse error against ``options.tolerance``.
+
+    Runs in the calling process (deterministically: the result depends only on the angles and
+    options). Family models built here stay in ``cache`` (default: this process's
+    :func:`default_cache`; forked workers inherit it).
+
+    Parameters
+    ----------
+    F, rho, theta : ndarray, shape (n,)
+        Contact force (N), cam radius of curvature (m) and cam angle (rad) of every angle.
+    cp : ContactParams
+        The scene's contact parameters.
+    options : SweepOptions
+        ``tolerance`` and ``a_over_h``.
+    contact : ndarray of bool, shape (n,)
+        Angles with contact (and a roller that fits).
+    n_checks : int
+        Fresh-model checks per family.
+    cache : ModelCache, optional
+        Where the family models are kept.
+    traction : femcam.sweep.realcam.Traction, optional
+        Per-angle traction of the load cases (default: full sliding in ``cp.sliding``); the
+        chunks solve the same load cases, so they reuse the scanned results.
+
+    Returns
+    -------
+    family, refs
+        As :func:`plan_families`, for the verified families.
+    records : list of FamilyRecord
+        One per family, ids in order.
+    """
+    cache = default_cache() if cache is None else cache
+    F = np.asarray(F, float)
+    rho = np.asarray(rho, float)
+    theta = np.asarray(theta, float)
+    fam = np.full(F.shape, -1, dtype=int)
+    idx = np.flatnonzero(contact)
+    if idx.size == 0:
+        return fam, {}, []
+    a_all = hertz_half_width(F[idx], rho[idx], cp)
+    k_all = curvature_ratio(rho[idx], cp.Rr)
+    queue = initial_groups(a_all, k_all, float(options.tolerance))
+    done: list[tuple[np.ndarray, FamilyRecord]] = []
+    while queue:
+        g = queue.pop(0)
+        rec = _verify_group(_Case(cache, cp, options, F, rho, theta, traction), n_checks, idx[g],
+                            a_all[g], k_all[g])
+        if rec.reuse_error <= float(options.tolerance):
+            done.append((g, rec))
+            continue
+        cache.forget(cp, rec.rho_ref, rec.a_ref, options)  # replaced by the two halves
+        queue[:0] = _split(g, a_all[g], k_all[g])
+    # deterministic ids: by reference half-width, then curvature
+    done.sort(key=lambda t: (t[1].a_ref, t[1].kappa[0], t[1].kappa[1]))
+    refs, records = {}, []
+    for n, (g, rec) in enumerate(done):
+        rec.id = n
+        refs[n] = (rec.rho_ref, rec.a_ref)
+        fam[idx[g]] = n
+        records.append(rec)
+    return fam, refs, records
+
+
+@dataclass(frozen=True)
+class _Case:
+    """What every family of one verification shares."""
+
+    cache: ModelCache
+    cp: ContactParams
+    options: SweepOptions
+    F: np.ndarray
+    rho: np.ndarray
+    theta: np.ndarray
+    traction: object
+
+
+def _verify_group(case: _Case, n_checks, rows, a, kap) -> FamilyRecord:
+    """Build one group's model, scan its load cases, check the worst with fresh models."""
+    cache, cp, F, rho = case.cache, case.cp, case.F, case.rho
+    rho_ref, a_ref = family_reference(a, kap, rho[rows], cp.Rr)
+    rec = FamilyRecord(id=-1, rho_ref=rho_ref, a_ref=a_ref, n_angles=int(rows.size),
+                       a_ratio=(float(a.min() / a_ref), float(a.max() / a_ref)),
+                       kappa=(float(kap.min()), float(kap.max())))
+    t0 = time.perf_counter()
+    built_before = cache.stats["built"]
+    model = cache.model_for(cp, rho_ref, a_ref, case.options)
+    rec.build_time = time.perf_counter() - t0 if cache.stats["built"] > built_before else 0.0
+    covered = np.array([model.covers(F[i], rho[i]) for i in rows])
+    rec.n_rebuilt = int(np.count_nonzero(~covered))  # solved with models of their own
+    cov = np.flatnonzero(covered)
+    e_h, failed = _scan_family(cache, model, cp, rec, rows[cov], a[cov], kap[cov], F, rho,
+                               case.traction)
+    t1 = time.perf_counter()
+    if failed:
+        worst = math.inf
+    else:
+        k_ref = cp.Rr / rho_ref if math.isfinite(rho_ref) else 0.0
+        picks = check_angles(a[cov], kap[cov], a_ref, k_ref, model.x, n_checks, e_hertz=e_h)
+        worst = _check(case, rec, model, rows[cov], a[cov], kap[cov], e_h, picks)
+    if np.any(np.isfinite(e_h)):
+        rec.p0_vs_hertz = (float(np.nanmin(e_h)), float(np.nanmax(e_h)))
+    rec.check_time = time.perf_counter() - t1
+    distinct = {(float(x), float(y)) for x, y in zip(a, kap, strict=True)}
+    # one load case: the family model is its fresh model
+    rec.reuse_error = 0.0 if len(distinct) == 1 else worst
+    return rec
+
+
+def _check(case: _Case, rec: FamilyRecord, model, rows, a, kap, e_h, picks) -> float:
+    """Fresh-model checks of the candidates ``picks`` (worst first), or estimates where the
+    estimate is safely within the tolerance (module docstring); the largest ``|reuse_error|``
+    checked or estimated."""
+    worst, c_fresh = 0.0, math.nan  # c_fresh: the first fresh model's p0 / p0_Hertz - 1
+    tol = float(case.options.tolerance)
+    for j in picks:
+        i = int(rows[j])
+        row = (float(np.degrees(case.theta[i])), float(a[j] / rec.a_ref), float(kap[j]))
+        if worst > tol:  # the family is split anyway
+            break
+        est = (1.0 + e_h[j]) / (1.0 + c_fresh) - 1.0
+        if math.isfinite(est) and abs(est) + ESTIMATE_MARGIN <= max(worst, tol):
+            rec.estimated.append((*row, float(est)))
+            worst = max(worst, abs(est))
+            continue
+        err = _reuse_error(case.cache, model, case.cp, case.options, float(case.F[i]),
+                           float(case.rho[i]), float(a[j]),
+                           _same_case(float(case.rho[i]), float(a[j]), rec.rho_ref, rec.a_ref),
+                           traction_args(case.traction, i, case.cp.sliding))
+        rec.checks.append((*row, err))
+        if math.isnan(err):
+            continue
+        worst = max(worst, abs(err))
+        if math.isnan(c_fresh) and math.isfinite(err) and math.isfinite(e_h[j]):
+            c_fresh = (1.0 + e_h[j]) / (1.0 + err) - 1.0
+    return worst
+
+
+def _scan_family(cache, model, cp, rec, rows, a, kap, F, rho, traction=None) -> tuple[np.ndarray, bool]:
+    """Solve the family model at (up to MAX_SCAN of) its covered load cases: ``p0 / p0_Hertz - 1``
+    per case (NaN where not scanned) and whether a solve failed. The results stay in ``cache``,
+    so the chunks computed in this process or in forked workers reuse them."""
+    e_h = np.full(rows.size, np.nan)
+    t_solves = []
+    failed = False
+    for j in _scan_subset(a, kap, F[rows], rho[rows]):
+        i = int(rows[j])
+        try:
+            sl, Q, roll = traction_args(traction, i, cp.sliding)
+            r = cache.solve(model, float(F[i]), float(rho[i]), cp.mu, sl, Q=Q, rolling=roll)
+        except (FemcamError, ValueError, ArithmeticError):
+            failed = True
+            break
+        t_solves.append(r.timings.get("contact", np.nan) + r.timings.get("recovery", 0.0))
+        rec.n_scanned += 1
+        if np.isfinite(r.hertz_p0) and r.hertz_p0 > 0:
+            e_h[j] = r.p0 / r.hertz_p0 - 1.0
+    rec.solve_time = float(np.nanmedian(t_solves)) if t_solves else float("nan")
+    return e_h, failed
+
+
+def _scan_subset(a, kappa, F, rho, max_scan: int | None = None) -> np.ndarray:
+    """Indices of the distinct load cases to solve with the family model (all of them, or
+    ``max_scan`` spread evenly over the sorted half-widths plus the curvature extremes)."""
+    max_scan = MAX_SCAN if max_scan is None else max_scan
+    _, first = np.unique(np.column_stack([F, rho]), axis=0, return_index=True)
+    first = np.sort(first)
+    if first.size <= max_scan:
+        return first
+    order = first[np.argsort(a[first], kind="stable")]
+    pick = order[np.unique(np.round(np.linspace(0, order.size - 1, max_scan - 2)).astype(int))]
+    extra = [first[int(np.argmin(kappa[first]))], first[int(np.argmax(kappa[first]))]]
+    return np.unique(np.concatenate([pick, extra]))
+
+
+def _split(g, a, kap) -> list[np.ndarray]:
+    """Two halves of a group: in ln a at its geometric centre, or in kappa if a is constant."""
+    la = np.log(a)
+    if la.max() - la.min() > 1e-12:
+        cut = 0.5 * (la.min() + la.max())
+        lo = la <= cut
+    else:
+        cut = 0.5 * (kap.min() + kap.max())
+        lo = kap <= cut
+    return [g[lo], g[~lo]]
+
+
+def _reuse_error(cache, model, cp, options, F, rho, a, same: bool, load=(None, None, 0)) -> float:
+    """``p0(family model)/p0(fresh model) - 1`` at one load case (``load``: sliding, Q, rolling);
+    ``inf`` if the family model cannot solve it (the family must be split), NaN if the fresh
+    model cannot."""
+    sl, Q, roll = load
+    try:
+        r = cache.solve(model, F, rho, cp.mu, cp.sliding if sl is None else sl, Q=Q, rolling=roll)
+    except (FemcamError, ValueError, ArithmeticError):
+        return math.inf
+    if same:
+        return 0.0
+    p0_fresh = cache.fresh_p0(cp, rho, a, options, F, load)
+    return float(r.p0 / p0_fresh - 1.0) if math.isfinite(p0_fresh) else math.nan
