@@ -40,11 +40,9 @@ PENDING: set[str] = {
 
     "femcam/cli",
 
-    "femcam/wear",
+    "femcam/wear/map",
 
-    "femcam/assess",
 
-    "femcam/tribology",
 
     "femcam/kinematics",
 
