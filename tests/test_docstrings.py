@@ -46,11 +46,9 @@ PENDING: set[str] = {
 
     "femcam/cli",
 
-    "femcam/wear",
+    "femcam/wear/map",
 
-    "femcam/assess",
 
-    "femcam/tribology",
 
     "femcam/kinematics",
 

@@ -200,6 +200,33 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
     formula's validity are computed and flagged. Raises :class:`~femcam.errors.SceneError` if a
     lubricated assessment lacks lubricant data, and :class:`~femcam.errors.InputError` for a sharp
     knife-edge.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The cam-follower scene (kinematics, profile, loads, materials, ``tribology`` data).
+    theta : float or array_like, shape (n,)
+        Cam angles [rad].
+    table : mapping or SweepResult, optional
+        Sweep table with per-angle ``a_fe`` [m], ``p0_fe`` [Pa] and optionally ``tau1_max``,
+        ``txz_absmax`` [Pa]; None: Hertz only.
+    lubricated : bool
+        Assess the EHL film (needs ``[lubricant]``, ``[surface]``, ``oil_temperature_C``).
+    inputs : AssessInputs, optional
+        Pre-checked inputs; default :func:`assessment_inputs` of ``scene``.
+
+    Returns
+    -------
+    dict of str -> ndarray, shape (n,)
+        The SI columns of :data:`COLUMNS` (float; NaN where not assessed) and the text columns
+        ``regime``, ``flags``, ``source`` (object arrays).
+
+    Raises
+    ------
+    SceneError
+        A lubricated assessment without its lubricant, roughness or oil temperature data.
+    InputError
+        A sharp knife-edge follower (no tip radius).
     """
     inp = inputs or assessment_inputs(scene, lubricated=lubricated)
     table = getattr(table, "table", table)                   # a SweepResult or its table mapping
@@ -239,7 +266,21 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
 @dataclass(frozen=True)
 class Assessment:
     """An assessment: the per-angle ``rows`` (:func:`assess_rows`), the ``inputs`` used, the
-    ``worst`` angle per criterion and the ``notes`` (what was skipped and why)."""
+    ``worst`` angle per criterion and the ``notes`` (what was skipped and why).
+
+    Parameters
+    ----------
+    scene_name : str
+        Name of the assessed scene.
+    rows : dict of str -> ndarray, shape (n,)
+        Per-angle columns of :func:`assess_rows` (SI names and units of :data:`COLUMNS`).
+    inputs : AssessInputs
+        The checked inputs used.
+    worst : dict of str -> tuple
+        Criterion -> ``(value in the column's SI unit, theta [rad], index)``, see :func:`worst_angles`.
+    notes : tuple of str
+        Criteria skipped and the keys that would enable them.
+    """
 
     scene_name: str
     rows: dict
@@ -249,7 +290,19 @@ class Assessment:
 
 
 def worst_angles(rows: dict) -> dict:
-    """criterion -> ``(value, theta in rad, index)`` of the worst contact angle (NaN columns skipped)."""
+    """criterion -> ``(value, theta in rad, index)`` of the worst contact angle (NaN columns skipped).
+
+    Parameters
+    ----------
+    rows : dict of str -> ndarray, shape (n,)
+        Columns of :func:`assess_rows`; angles with ``Fc <= 0`` are ignored.
+
+    Returns
+    -------
+    dict of str -> tuple of (float, float, int)
+        Criterion of :data:`WORST` -> ``(value in the column's SI unit, theta [rad], index)``;
+        criteria with no finite value are left out.
+    """
     on = rows["Fc"] > 0
     res = {}
     for crit, (col, how) in WORST.items():
@@ -262,7 +315,29 @@ def worst_angles(rows: dict) -> dict:
 
 
 def assess(scene, theta=None, *, table=None, lubricated: bool = True) -> Assessment:
-    """Assess ``scene`` at ``theta`` (rad; default 360 angles over one revolution)."""
+    """Assess ``scene`` at ``theta`` (rad; default 360 angles over one revolution).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene to assess.
+    theta : array_like, shape (n,), optional
+        Cam angles [rad]; default 360 angles over one revolution.
+    table : mapping or SweepResult, optional
+        Sweep table whose FE values replace Hertz's (see :func:`assess_rows`).
+    lubricated : bool
+        Assess the EHL film (needs the lubricant data).
+
+    Returns
+    -------
+    Assessment
+        Per-angle rows, inputs, worst angle per criterion and notes.
+
+    Raises
+    ------
+    SceneError
+        A lubricated assessment without its lubricant, roughness or oil temperature data.
+    """
     if theta is None:
         theta = np.linspace(0.0, 2.0 * math.pi, 360, endpoint=False)
     inp = assessment_inputs(scene, lubricated=lubricated)
@@ -272,7 +347,18 @@ def assess(scene, theta=None, *, table=None, lubricated: bool = True) -> Assessm
 
 
 def csv_columns(rows: dict) -> dict:
-    """The rows with CSV names and units (``theta_deg``, ``h_min_um``, ...), text columns last."""
+    """The rows with CSV names and units (``theta_deg``, ``h_min_um``, ...), text columns last.
+
+    Parameters
+    ----------
+    rows : dict of str -> ndarray, shape (n,)
+        Columns of :func:`assess_rows` (SI).
+
+    Returns
+    -------
+    dict of str -> ndarray, shape (n,)
+        Float columns renamed and scaled to their CSV unit (:data:`COLUMNS`), then the text columns.
+    """
     out = {csv: np.asarray(rows[si], float) * f for si, csv, f in COLUMNS}
     out.update({t: rows[t] for t in (*TEXT, "source") if t in rows})
     return out
@@ -284,19 +370,21 @@ def wear_factor(scene, theta, table=None, tip_radius=None):
     Parameters
     ----------
     scene : femcam.scene.Scene
+        The scene (its ``[wear]`` coefficient and ``[lubricant]``).
     theta : ndarray, shape (n,)
-        Cam angles (rad).
+        Cam angles [rad].
     table : dict, optional
-        A sweep table (FE ``a_fe``/``p0_fe`` used where finite), as for :func:`assess_rows`.
+        A sweep table (FE ``a_fe`` [m] / ``p0_fe`` [Pa] used where finite), as for
+        :func:`assess_rows`.
     tip_radius : float, optional
-        Knife-edge tip radius (m).
+        Knife-edge tip radius [m].
 
     Returns
     -------
     k_factor : ndarray, shape (n,), or None
-        ``k(lambda) / k`` (dimensionless); None for a scene without [lubricant] (dry k).
+        ``k(lambda) / k`` [-]; None for a scene without [lubricant] or with ``k = 0`` (dry k).
     regime : ndarray of str, shape (n,), or None
-        ``boundary`` / ``mixed`` / ``full_film`` per angle.
+        ``boundary`` / ``mixed`` / ``full`` per angle (``no contact`` where ``Fc = 0``).
     """
     k = wear_coefficient_info(scene)[0]
     if "lubricant" not in scene.tribology or not k > 0:

@@ -32,7 +32,22 @@ CRITERIA = {"flash temperature": ("thermal_conductivity_W_per_m_K", "density_kg_
 
 @dataclass(frozen=True)
 class AssessInputs:
-    """Checked assessment inputs (SI; temperatures in degC)."""
+    """Checked assessment inputs (SI; temperatures in degC).
+
+    Parameters
+    ----------
+    lubricant : Lubricant or None
+        The oil; None for a dry assessment.
+    sigma : float or None
+        Composite RMS roughness of the two surfaces [m]; None when dry.
+    T_oil : float or None
+        Oil (inlet, bulk) temperature [degC]; None when dry.
+    cam, roller : dict of str -> float
+        Material extras per body, by SI name: ``Y``, ``sigma_Hlim``, ``tau_e`` [Pa], ``K``
+        [W/(m K)], ``rho`` [kg/m^3], ``c`` [J/(kg K)], ``N_ref``, ``m`` [-], ``T_scuff`` [degC].
+    skipped : dict of str -> list of str
+        Criterion -> the scene keys that are missing for it.
+    """
 
     lubricant: Lubricant | None
     sigma: float | None
@@ -42,6 +57,18 @@ class AssessInputs:
     skipped: dict = field(default_factory=dict)
 
     def has(self, criterion: str) -> bool:
+        """Whether ``criterion`` (a key of :data:`CRITERIA`) has its data.
+
+        Parameters
+        ----------
+        criterion : str
+            Criterion name, e.g. ``"flash temperature"``.
+
+        Returns
+        -------
+        bool
+            False if the criterion is in :attr:`skipped`.
+        """
         return criterion not in self.skipped
 
 
@@ -133,7 +160,25 @@ def _roughness(surf: dict, problems: list) -> float | None:
 
 
 def assessment_inputs(scene, *, lubricated: bool = True) -> AssessInputs:
-    """Collect the assessment inputs of ``scene`` (see the module docstring)."""
+    """Collect the assessment inputs of ``scene`` (see the module docstring).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        Scene whose ``tribology`` holds the checked SI assessment keys.
+    lubricated : bool
+        Require and read the lubricant, roughness and oil temperature.
+
+    Returns
+    -------
+    AssessInputs
+        The checked inputs (SI; temperatures in degC).
+
+    Raises
+    ------
+    SceneError
+        One error listing every missing or contradictory key of a lubricated assessment.
+    """
     tri = dict(getattr(scene, "tribology", None) or {})
     problems: list[str] = []
     lub = sigma = T_oil = None

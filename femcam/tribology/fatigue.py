@@ -72,6 +72,18 @@ def first_yield_limit(mu: float = 0.0) -> float:
 
     .. math:: \left(\frac{p_0}{k}\right)_{y} = \frac{1}{\max \tau_1/p_0}
 
+    Parameters
+    ----------
+    mu : float
+        Sliding friction coefficient, ``>= 0`` [-].
+
+    Returns
+    -------
+    float
+        Load factor ``p0/k`` at first yield [-].
+
+    Examples
+    --------
     >>> round(first_yield_limit(0.0), 2)
     3.33
     """
@@ -111,6 +123,18 @@ def enclosing_radius(P) -> float:
     """Radius of the smallest circle enclosing the 2-D points ``P`` (n x 2): Welzl's algorithm
     (Welzl 1991, iterative form, expected linear time) on the convex hull.
 
+    Parameters
+    ----------
+    P : array_like, shape (n, 2)
+        Points in a plane (any length or stress unit; here ``((sx - sz)/2, txz) / p0``).
+
+    Returns
+    -------
+    float
+        Radius of the smallest enclosing circle [unit of ``P``].
+
+    Examples
+    --------
     >>> enclosing_radius(np.array([[1.0, 0.0], [-1.0, 0.0], [0.0, 0.5], [0.0, -1.0]]))
     1.0
     """
@@ -168,6 +192,25 @@ def shakedown_limit(mu: float = 0.0, hardening: str = "perfectly_plastic") -> fl
     enclosing the in-plane stress path ``((sx - sz)/2, txz)`` over one pass (with the unloaded
     state) has radius ``k`` at some depth (Johnson 1985 §9.2; Johnson 1989).
 
+    Parameters
+    ----------
+    mu : float
+        Sliding friction coefficient, ``>= 0`` [-].
+    hardening : {"perfectly_plastic", "kinematic"}
+        Material model of the shakedown theorem.
+
+    Returns
+    -------
+    float
+        Shakedown limit ``p0/k`` [-].
+
+    Raises
+    ------
+    InputError
+        ``mu < 0`` or an unknown ``hardening``.
+
+    Examples
+    --------
     >>> round(shakedown_limit(0.0), 2), round(shakedown_limit(0.0, "kinematic"), 2)
     (4.0, 4.0)
     """
@@ -189,6 +232,19 @@ def orthogonal_shear_range(mu: float = 0.0) -> tuple[float, float]:
 
     .. math:: \Delta\tau = \max_z\left[\max_x\tau_{xz} - \min_x\tau_{xz}\right]
 
+    Parameters
+    ----------
+    mu : float
+        Sliding friction coefficient, ``>= 0`` [-].
+
+    Returns
+    -------
+    tuple of float
+        ``(dtau/p0, z/a)``: orthogonal shear range over one pass and its depth, both normalised
+        by the Hertz peak pressure and half-width [-].
+
+    Examples
+    --------
     >>> [round(v, 3) for v in orthogonal_shear_range(0.0)]
     [0.5, 0.5]
     """
@@ -200,6 +256,24 @@ def sn_cycles(p0, strength, *, N_ref=SN_CYCLES_ISO6336, m=SN_EXPONENT_ISO6336):
 
     .. math:: N = N_{ref}\left(\frac{\sigma_{Hlim}}{p_0}\right)^m
 
+    Parameters
+    ----------
+    p0 : float or ndarray
+        Hertz peak pressure, ``>= 0`` [Pa].
+    strength : float
+        Contact fatigue strength ``sigma_Hlim`` at ``N_ref`` cycles [Pa].
+    N_ref : float
+        Reference cycles of the S-N law [-] (default ISO 6336-2, ``5e7``).
+    m : float
+        Exponent of the S-N law [-] (default ISO 6336-2, ``13.2``).
+
+    Returns
+    -------
+    ndarray, shape of ``p0``
+        Cycles to pitting [-]; ``inf`` where ``p0 = 0``.
+
+    Examples
+    --------
     >>> f"{float(sn_cycles(1.6e9, 1.0e9)):.3g}"      # Z_NT = 1.6 at 1e5 cycles
     '1e+05'
     """

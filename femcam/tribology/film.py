@@ -67,6 +67,28 @@ def dimensionless_groups(U, w, R, E_star, eta0, alpha):
 
     .. math:: U_d = \frac{\eta_0 U}{E' R},\quad G = \alpha E',\quad W = \frac{w}{E' R}
 
+    Parameters
+    ----------
+    U : float or ndarray
+        Mean entrainment speed [m/s].
+    w : float or ndarray
+        Load per unit length [N/m].
+    R : float or ndarray
+        Effective radius [m].
+    E_star : float or ndarray
+        Contact modulus ``E*`` (Hamrock's ``E' = 2 E*``) [Pa].
+    eta0 : float or ndarray
+        Inlet dynamic viscosity [Pa s].
+    alpha : float or ndarray
+        Barus pressure-viscosity coefficient [1/Pa].
+
+    Returns
+    -------
+    tuple of 3 ndarray, broadcast shape of the inputs
+        ``(Ud, G, W)``: speed, material and load parameters [-].
+
+    Examples
+    --------
     >>> [float(f"{x:.4g}") for x in dimensionless_groups(1.0, 1e5, 0.01, 115.4e9, 0.01, 2e-8)]
     [4.333e-12, 4616.0, 4.333e-05]
     """
@@ -90,6 +112,22 @@ def pan_hamrock_min(Ud, G, W):
 
     .. math:: H_{min} = 1.714\,W^{-0.128}U_d^{0.694}G^{0.568}
 
+    Parameters
+    ----------
+    Ud : float or ndarray
+        Speed parameter ``eta0 U / (E' R)`` [-].
+    G : float or ndarray
+        Material parameter ``alpha E'`` [-].
+    W : float or ndarray
+        Load parameter ``w / (E' R)`` [-].
+
+    Returns
+    -------
+    ndarray, broadcast shape of the inputs
+        Minimum film ``h_min / R`` [-].
+
+    Examples
+    --------
     >>> f"{float(pan_hamrock_min(1e-11, 5000.0, 1e-4)):.4g}"
     '1.633e-05'
     """
@@ -101,6 +139,22 @@ def pan_hamrock_central(Ud, G, W):
 
     .. math:: H_c = 2.922\,W^{-0.166}U_d^{0.692}G^{0.470}
 
+    Parameters
+    ----------
+    Ud : float or ndarray
+        Speed parameter ``eta0 U / (E' R)`` [-].
+    G : float or ndarray
+        Material parameter ``alpha E'`` [-].
+    W : float or ndarray
+        Load parameter ``w / (E' R)`` [-].
+
+    Returns
+    -------
+    ndarray, broadcast shape of the inputs
+        Central film ``h_c / R`` [-].
+
+    Examples
+    --------
     >>> f"{float(pan_hamrock_central(1e-11, 5000.0, 1e-4)):.4g}"
     '1.804e-05'
     """
@@ -112,6 +166,22 @@ def dowson_higginson_min(Ud, G, W):
 
     .. math:: H_{min} = 2.65\,U_d^{0.70}G^{0.54}W^{-0.13}
 
+    Parameters
+    ----------
+    Ud : float or ndarray
+        Speed parameter ``eta0 U / (E' R)`` [-].
+    G : float or ndarray
+        Material parameter ``alpha E'`` [-].
+    W : float or ndarray
+        Load parameter ``w / (E' R)`` [-].
+
+    Returns
+    -------
+    ndarray, broadcast shape of the inputs
+        Minimum film ``h_min / R`` [-].
+
+    Examples
+    --------
     >>> f"{float(dowson_higginson_min(1e-11, 5000.0, 1e-4)):.4g}"
     '1.741e-05'
     """
@@ -123,6 +193,18 @@ def composite_roughness(Rq1, Rq2):
 
     .. math:: \sigma = \sqrt{R_{q1}^2 + R_{q2}^2}
 
+    Parameters
+    ----------
+    Rq1, Rq2 : float
+        RMS roughness of the two surfaces, ``>= 0`` [m].
+
+    Returns
+    -------
+    float
+        Composite RMS roughness ``sigma`` [m].
+
+    Examples
+    --------
     >>> round(float(composite_roughness(0.3e-6, 0.4e-6)) * 1e6, 12)
     0.5
     """
@@ -133,6 +215,18 @@ def lubrication_regime(lam):
     """Lubrication regime per lambda: 0 boundary (``lam < 1``), 1 mixed (``1 <= lam < 3``),
     2 full film (``lam >= 3``) (Hamrock, Schmid & Jacobson 2004 ch. 8).
 
+    Parameters
+    ----------
+    lam : float or array_like
+        Film parameter ``h_min / sigma`` [-].
+
+    Returns
+    -------
+    ndarray of int, shape of ``lam``
+        Regime code 0, 1 or 2 (names in :data:`REGIME_NAMES`).
+
+    Examples
+    --------
     >>> lubrication_regime([0.5, 1.0, 2.9, 3.0]).tolist()
     [0, 1, 1, 2]
     """

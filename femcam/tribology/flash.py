@@ -58,6 +58,22 @@ def effusivity(K, rho, c):
 
     .. math:: \beta = \sqrt{K\rho c}
 
+    Parameters
+    ----------
+    K : float
+        Thermal conductivity [W/(m K)].
+    rho : float
+        Density [kg/m^3].
+    c : float
+        Specific heat [J/(kg K)].
+
+    Returns
+    -------
+    float
+        Thermal effusivity ``beta`` [W s^0.5/(m^2 K)].
+
+    Examples
+    --------
     >>> round(float(effusivity(46.0, 7850.0, 470.0)))
     13028
     """
@@ -70,6 +86,22 @@ def peclet(u, a, kappa):
 
     .. math:: Pe = \frac{|u|\,a}{2\kappa}
 
+    Parameters
+    ----------
+    u : float or ndarray
+        Speed of the surface relative to the contact [m/s].
+    a : float or ndarray
+        Hertz contact half-width [m].
+    kappa : float
+        Thermal diffusivity ``K/(rho c)`` [m^2/s].
+
+    Returns
+    -------
+    ndarray, broadcast shape of ``u`` and ``a``
+        Peclet number [-].
+
+    Examples
+    --------
     >>> round(float(peclet(2.0, 1e-4, 1.25e-5)), 6)
     8.0
     """
@@ -85,6 +117,28 @@ def flash_temperature(mu, w, a, u1, u2, beta1, beta2, *, C=C_BLOK):
     ``u1 = u2`` (pure rolling), ``w = 0`` or ``mu = 0`` give 0. Where both speeds vanish but the
     surfaces slide (impossible: ``u1 - u2`` is then 0 too) the result would be 0/0 and is 0.
 
+    Parameters
+    ----------
+    mu : float
+        Friction coefficient, ``>= 0`` [-].
+    w : float or ndarray
+        Load per unit length [N/m].
+    a : float or ndarray
+        Hertz contact half-width [m].
+    u1, u2 : float or ndarray
+        Speeds of the two surfaces relative to the contact [m/s].
+    beta1, beta2 : float
+        Thermal effusivities of the two bodies [W s^0.5/(m^2 K)].
+    C : float
+        Flash constant [-]: :data:`C_BLOK` (default) or :data:`K_AGMA925`.
+
+    Returns
+    -------
+    ndarray, broadcast shape of the inputs
+        Maximum flash temperature rise ``dT_f`` [K].
+
+    Examples
+    --------
     >>> round(float(flash_temperature(0.1, 1e5, 1e-4, 3.0, 1.0, 13020.0, 13020.0)), 2)   # K
     44.19
     """
@@ -106,6 +160,22 @@ def scuffing_safety(T_scuff, T_bulk, dT_flash):
 
     Below 1 the contact temperature ``T_bulk + dT_f`` exceeds the scuffing temperature.
 
+    Parameters
+    ----------
+    T_scuff : float
+        Scuffing temperature [degC].
+    T_bulk : float or ndarray
+        Bulk temperature [degC].
+    dT_flash : float or ndarray
+        Flash temperature rise [K].
+
+    Returns
+    -------
+    ndarray, broadcast shape of ``T_bulk`` and ``dT_flash``
+        Scuffing safety factor [-]; ``inf`` where ``dT_flash = 0``.
+
+    Examples
+    --------
     >>> float(scuffing_safety(150.0, 90.0, 30.0))
     2.0
     """

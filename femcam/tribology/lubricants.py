@@ -52,6 +52,32 @@ class Lubricant:
     """A lubricant: either ``nu40``/``nu100`` (m^2/s, Walther/ASTM D341) or ``eta_ref`` (Pa s) at
     ``T_ref_C`` with ``beta_T`` (1/K, exponential law); ``alpha`` (1/Pa); ``rho`` (kg/m^3).
 
+    Parameters
+    ----------
+    name : str
+        Label of the oil.
+    alpha : float
+        Barus pressure-viscosity coefficient, ``> 0`` [1/Pa].
+    rho : float
+        Density, ``> 0`` [kg/m^3].
+    nu40, nu100 : float or None
+        Kinematic viscosities at 40 and 100 degC, ``nu100 < nu40`` [m^2/s] (Walther law).
+    eta_ref : float or None
+        Dynamic viscosity at ``T_ref_C`` [Pa s] (exponential law).
+    T_ref_C : float or None
+        Reference temperature of ``eta_ref`` [degC].
+    beta_T : float or None
+        Temperature coefficient of the exponential law, ``>= 0`` [1/K].
+    source : str
+        Where the values come from.
+
+    Raises
+    ------
+    InputError
+        Neither or both of the two viscosity descriptions, or a value out of range.
+
+    Examples
+    --------
     >>> oil = lubricant("ISO VG 46 mineral")
     >>> round(float(oil.viscosity(40.0)) * 1e3, 2)      # mPa s = 46 mm^2/s * 0.861 g/ml
     39.61
@@ -90,6 +116,16 @@ class Lubricant:
 
         .. math:: \log_{10}\log_{10}(\nu + 0.7) = A - B\log_{10}T \quad\text{or}\quad
                   \eta = \eta_{ref}\,e^{-\beta_T (T - T_{ref})}
+
+        Parameters
+        ----------
+        T_C : float or array_like
+            Oil temperature [degC].
+
+        Returns
+        -------
+        ndarray, shape of ``T_C``
+            Dynamic viscosity [Pa s].
         """
         T_C = np.asarray(T_C, float)
         if self.nu40 is None:
@@ -104,7 +140,23 @@ class Lubricant:
 
 
 def lubricant(name: str) -> Lubricant:
-    """The named oil of :data:`OILS` (InputError with the valid names otherwise)."""
+    """The named oil of :data:`OILS` (InputError with the valid names otherwise).
+
+    Parameters
+    ----------
+    name : str
+        A key of :data:`OILS`, e.g. ``"ISO VG 46 mineral"``.
+
+    Returns
+    -------
+    Lubricant
+        The oil with SI values (``nu40``, ``nu100`` in m^2/s).
+
+    Raises
+    ------
+    InputError
+        Unknown ``name``.
+    """
     if name not in OILS:
         raise InputError(f"lubricant name = {name!r}: unknown; valid names: {', '.join(map(repr, OILS))}")
     nu40, nu100, rho, alpha, note = OILS[name]

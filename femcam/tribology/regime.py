@@ -46,6 +46,20 @@ def greenwood_tripp(n, lam):
 
     .. math:: F_n(\lambda) = \frac{\Gamma(n+1)\,e^{-\lambda^2/4}\,D_{-n-1}(\lambda)}{\sqrt{2\pi}}
 
+    Parameters
+    ----------
+    n : float
+        Order of the integral, ``>= 0`` [-] (5/2 for the asperity pressure).
+    lam : float or array_like
+        Film parameter ``h / sigma`` [-].
+
+    Returns
+    -------
+    ndarray, shape of ``lam``
+        ``F_n(lam)`` [-].
+
+    Examples
+    --------
     >>> round(float(greenwood_tripp(2.5, 0.0)), 6)     # 2^(3/4) Gamma(7/4) / sqrt(2 pi)
     0.616634
     """
@@ -61,6 +75,20 @@ def wear_coefficient(k0, lam):
 
     .. math:: k(\lambda) = k_0\,F_{5/2}(\lambda)/F_{5/2}(0)
 
+    Parameters
+    ----------
+    k0 : float
+        Boundary (``lam = 0``) dimensional wear coefficient, ``>= 0`` [m^3/(N m)].
+    lam : float or array_like
+        Film parameter ``h / sigma`` [-]; negative values are taken as 0.
+
+    Returns
+    -------
+    ndarray, shape of ``lam``
+        Wear coefficient at ``lam`` [m^3/(N m)] (the unit of ``k0``).
+
+    Examples
+    --------
     >>> [round(float(x), 4) for x in wear_coefficient(1.0, [0.0, 1.0])]
     [1.0, 0.1306]
     """

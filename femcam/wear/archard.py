@@ -45,6 +45,20 @@ def dimensional_coefficient(K, H):
 
     References: Archard, J. Appl. Phys. 24 (1953) 981; seed 000, Archard model section.
 
+    Parameters
+    ----------
+    K : float
+        Dimensionless wear coefficient, ``>= 0`` [-].
+    H : float
+        Hardness of the worn surface, ``> 0`` [Pa].
+
+    Returns
+    -------
+    float
+        Dimensional wear coefficient ``k`` [m^3/(N m)].
+
+    Examples
+    --------
     >>> dimensional_coefficient(1e-8, 2000e6)    # seed 000: K = 1e-8, H = 2000 N/mm^2
     5e-18
     """
@@ -58,6 +72,20 @@ def dimensionless_coefficient(k, H):
 
     .. math:: K = k H
 
+    Parameters
+    ----------
+    k : float
+        Dimensional wear coefficient, ``>= 0`` [m^3/(N m)].
+    H : float
+        Hardness of the worn surface, ``> 0`` [Pa].
+
+    Returns
+    -------
+    float
+        Dimensionless wear coefficient ``K`` [-].
+
+    Examples
+    --------
     >>> dimensionless_coefficient(5e-18, 2e9)
     1e-08
     """
@@ -76,6 +104,27 @@ def archard_volume(k, L, S):
 
     References: Archard (1953); seed 000, ``W = K L S / H``.
 
+    Parameters
+    ----------
+    k : float
+        Dimensional wear coefficient, ``>= 0`` [m^3/(N m)].
+    L : float or array_like
+        Normal load, ``>= 0`` [N].
+    S : float or array_like
+        Sliding distance, ``>= 0`` [m].
+
+    Returns
+    -------
+    float or ndarray, broadcast shape of ``L`` and ``S``
+        Worn volume [m^3] (a float for scalar input).
+
+    Raises
+    ------
+    InputError
+        A negative or non-finite ``k``, ``L`` or ``S``.
+
+    Examples
+    --------
     >>> archard_volume(5e-18, 500.0, 0.010)   # seed 000 inputs, S = h = 10 mm
     2.5e-17
     """

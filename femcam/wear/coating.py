@@ -77,6 +77,20 @@ class CoatingWear:
         ``d_substrate`` (m) with the substrate's ``k`` (the uncoated wear map), see the module
         formula.
 
+        Parameters
+        ----------
+        d_substrate : float or array_like, shape (n,)
+            Depth per revolution with the substrate's ``k`` [m/revolution].
+        cycles : float
+            Cam revolutions ``N`` [-].
+
+        Returns
+        -------
+        ndarray, shape of ``d_substrate``
+            Worn depth after ``cycles`` revolutions [m].
+
+        Examples
+        --------
         >>> cw = CoatingWear(body="cam", thickness=2e-6, k_coating=1e-17, k_substrate=1e-16)
         >>> [round(float(h) * 1e6, 6) for h in cw.depth_after([1e-12, 1e-11], 5e6)]
         [0.5, 32.0]
@@ -88,6 +102,18 @@ class CoatingWear:
         """``N_t = t / max d_c`` (revolutions; inf if nothing wears). ``d_substrate`` (m per
         revolution) as in :meth:`depth_after`.
 
+        Parameters
+        ----------
+        d_substrate : float or array_like, shape (n,)
+            Depth per revolution with the substrate's ``k`` [m/revolution].
+
+        Returns
+        -------
+        float
+            Revolutions ``N_t`` to wear through the coating [-]; ``inf`` if nothing wears.
+
+        Examples
+        --------
         >>> CoatingWear(body="cam", thickness=2e-6, k_coating=1e-17, k_substrate=1e-16
         ...             ).revolutions_through([1e-12, 1e-11])
         2000000.0
@@ -103,6 +129,24 @@ def layered_depth(d_coating, d_substrate, thickness: float, cycles: float) -> np
 
     .. math:: h = \min(N d_c, t) + \max(N - t/d_c, 0)\, d_s
 
+    Parameters
+    ----------
+    d_coating : float or array_like, shape (n,)
+        Depth per revolution in the coating [m/revolution].
+    d_substrate : float or array_like, shape (n,)
+        Depth per revolution in the substrate [m/revolution].
+    thickness : float
+        Coating thickness ``t`` [m].
+    cycles : float
+        Cam revolutions ``N`` [-].
+
+    Returns
+    -------
+    ndarray, broadcast shape of ``d_coating`` and ``d_substrate``
+        Worn depth [m].
+
+    Examples
+    --------
     >>> layered_depth([1e-12, 1e-11], [1e-11, 1e-10], 2e-6, 1e6).round(12).tolist()
     [1e-06, 8.2e-05]
     """
@@ -116,7 +160,18 @@ def layered_depth(d_coating, d_substrate, thickness: float, cycles: float) -> np
 def coating_wear(scene) -> CoatingWear | None:
     """The :class:`CoatingWear` of the scene's coated body, or None (no coating, or a coating
     without ``wear_k_mm3_per_N_m`` / ``wear_K``). The substrate's ``k`` is the scene's ``[wear]``
-    coefficient (:func:`femcam.wear.options.wear_coefficient_info`)."""
+    coefficient (:func:`femcam.wear.options.wear_coefficient_info`).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        Scene whose ``layers`` may hold a coating with wear data.
+
+    Returns
+    -------
+    CoatingWear or None
+        The first coated body's wear data (SI), or None.
+    """
     for body, tabs in (getattr(scene, "layers", None) or {}).items():
         c = tabs.get("coating") if isinstance(tabs, dict) else None
         if not c or not ("wear_k_mm3_per_N_m" in c or "wear_K" in c):

@@ -91,6 +91,26 @@ def worn_curvature(kappa, dkappa_ds, h, h1, h2):
     .. math:: \kappa_w = \frac{(1-\kappa h)[\kappa(1-\kappa h) + h''] + h'(\kappa' h + 2\kappa h')}
                               {[(1-\kappa h)^2 + h'^2]^{3/2}}
 
+    Parameters
+    ----------
+    kappa : float or ndarray
+        Unworn curvature ``1/rho``, > 0 convex [1/m].
+    dkappa_ds : float or ndarray
+        Its derivative along the unworn arc length [1/m^2].
+    h : float or ndarray
+        Wear depth, inward along the normal [m].
+    h1 : float or ndarray
+        ``dh/ds`` [-].
+    h2 : float or ndarray
+        ``d^2h/ds^2`` [1/m].
+
+    Returns
+    -------
+    ndarray, broadcast shape of the inputs
+        Signed curvature of the worn surface [1/m].
+
+    Examples
+    --------
     >>> round(float(worn_curvature(1 / 0.02, 0.0, 1e-3, 0.0, 0.0)), 9)   # circle: 1/(rho - h)
     52.631578947
     """
@@ -125,6 +145,37 @@ class EvolutionCase:
     radius of curvature ``rho`` (m, signed, ``inf`` flat); ``slip`` on the same angles;
     ``dynamics`` a :class:`~femcam.loads.FollowerDynamics`; roller radius ``Rr`` (m); face width
     ``length`` (m); ``cam``/``roller`` materials; wear coefficient ``k`` (m^3/(N m)).
+
+    Parameters
+    ----------
+    theta : ndarray, shape (n,)
+        Cam angles, uniform over one revolution, endpoint excluded [rad].
+    s : ndarray, shape (n,)
+        Follower lift [m].
+    s1 : ndarray, shape (n,)
+        ``ds/dtheta`` [m/rad].
+    s2 : ndarray, shape (n,)
+        ``d^2s/dtheta^2`` [m/rad^2].
+    phi : ndarray, shape (n,)
+        Pressure angle [rad].
+    rho : ndarray, shape (n,)
+        Signed radius of curvature of the cam surface (``inf`` flat) [m].
+    slip : SlipResult
+        Contact speeds on the same angles [m/s].
+    dynamics : femcam.loads.FollowerDynamics
+        Follower train (mass, spring, damping, preload) of the contact force.
+    omega : float
+        Cam speed [rad/s].
+    Rr : float
+        Roller radius [m].
+    length : float
+        Face width [m].
+    cam, roller : femcam.materials.Material
+        Materials of the two bodies.
+    k : float
+        Archard wear coefficient [m^3/(N m)].
+    name : str
+        Scene name.
     """
 
     theta: np.ndarray
@@ -150,6 +201,25 @@ def evolution_case(scene, theta, *, k: float | None = None) -> EvolutionCase:
     Slip from the scene's ``[wear]`` table (as ``femcam wear map``); ``k`` (m^3/(N m)) defaults
     to the scene's wear coefficient (:func:`~femcam.wear.options.wear_coefficient_info`).
     Other followers raise :class:`~femcam.errors.InputError`.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A roller-follower scene.
+    theta : array_like, shape (n,)
+        Cam angles, uniform over one revolution, endpoint excluded [rad].
+    k : float, optional
+        Archard wear coefficient [m^3/(N m)]; default the scene's.
+
+    Returns
+    -------
+    EvolutionCase
+        The unworn state (SI).
+
+    Raises
+    ------
+    InputError
+        A follower other than a roller, or ``k < 0``.
     """
     kind = type(scene.follower).__name__
     if kind != "RollerFollower":
@@ -182,6 +252,47 @@ class EvolutionResult:
     ``p0_blocks`` (Pa), ``rho_blocks`` (worn cam radius at the contact, m). ``volume_cam`` =
     ``l int h dx`` (m^3); ``volume_archard`` = ``sum_b dN k sum_j F v_slip dt`` over the blocks
     with the evolving force (m^3). ``a_over_R_max``: largest Hertz ``a/min(|rho_w|, Rr)``.
+
+    Parameters
+    ----------
+    cycles : float
+        Total cam revolutions [-].
+    block : float
+        Revolutions per block [-].
+    blocks : int
+        Number of blocks.
+    theta : ndarray, shape (n,)
+        Cam angles [rad].
+    x_cam : ndarray, shape (m,)
+        Arc-length grid on the unworn cam [m].
+    depth_cam : ndarray, shape (m,)
+        Evolved cam depth after ``cycles`` [m].
+    depth_linear : ndarray, shape (m,)
+        Non-evolving map's depth after ``cycles`` [m].
+    x_follower : ndarray, shape (m_f,)
+        Grid on the roller surface [m].
+    depth_follower : ndarray, shape (m_f,)
+        Evolved roller depth after ``cycles``, drift included [m].
+    depth_follower_linear : ndarray, shape (m_f,)
+        Non-evolving map's roller depth after ``cycles`` [m].
+    xi_cam : ndarray, shape (n,)
+        Arc position of the contact on the cam per angle [m].
+    Fc_blocks : ndarray, shape (blocks, n)
+        Contact force per block and angle [N].
+    a_blocks : ndarray, shape (blocks, n)
+        Hertz half-width [m].
+    p0_blocks : ndarray, shape (blocks, n)
+        Hertz peak pressure [Pa].
+    rho_blocks : ndarray, shape (blocks, n)
+        Worn cam radius of curvature at the contact [m].
+    volume_cam : float
+        Worn cam volume ``l int h dx`` [m^3].
+    volume_archard : float
+        Archard volume with the evolving force, summed over the blocks [m^3].
+    a_over_R_max : float
+        Largest ``a / min(|rho_w|, Rr)`` [-].
+    maps : list of WearMap
+        The wear map of each block (one revolution each).
     """
 
     cycles: float
@@ -206,10 +317,12 @@ class EvolutionResult:
 
     @property
     def max_depth(self) -> float:
+        """Largest evolved cam depth (m)."""
         return float(np.max(self.depth_cam))
 
     @property
     def max_depth_linear(self) -> float:
+        """Largest cam depth of the non-evolving map after ``cycles`` (m)."""
         return float(np.max(self.depth_linear))
 
     @property
@@ -244,6 +357,29 @@ def evolve(case: EvolutionCase, cycles: float, block: float, *, n_grid: int | No
     Raises :class:`~femcam.errors.InputError` for ``cycles <= 0``, ``block <= 0``,
     ``block > cycles`` or ``cycles/block`` not a whole number, and
     :class:`~femcam.hertz.HertzValidityError` if the worn cam becomes conformal (``1/R <= 0``).
+
+    Parameters
+    ----------
+    case : EvolutionCase
+        The unworn state.
+    cycles : float
+        Total cam revolutions, ``> 0`` [-].
+    block : float
+        Revolutions per block, dividing ``cycles`` into a whole number [-].
+    n_grid : int, optional
+        Cam and roller grid points.
+
+    Returns
+    -------
+    EvolutionResult
+        Depths [m], per-block contact data and volumes [m^3].
+
+    Raises
+    ------
+    InputError
+        Bad ``cycles``, ``block`` or ``n_grid``, or a contact that does not move over the cam.
+    HertzValidityError
+        The worn cam becomes conformal.
     """
     cycles, block, M = _check_blocks(cycles, block)
     if n_grid is not None:
@@ -334,6 +470,25 @@ class ConvergenceTable:
     ``diff_next`` = max ``|h_i - h_{i+1}|`` (m, NaN on the last row); ``order`` =
     ``log2(diff_next[i-1]/diff_next[i])`` for halvings (NaN where undefined): 1 for explicit
     Euler. ``linear_max_depth``: the non-evolving map's maximum (m).
+
+    Parameters
+    ----------
+    cycles : float
+        Total cam revolutions [-].
+    blocks : list of int
+        Block counts, one per row.
+    results : list of EvolutionResult
+        The evolution of each row.
+    max_depth : ndarray, shape (rows,)
+        Largest cam depth [m].
+    diff_finest : ndarray, shape (rows,)
+        Max ``|h_i - h_finest|`` over the cam [m].
+    diff_next : ndarray, shape (rows,)
+        Max ``|h_i - h_{i+1}|`` [m]; NaN on the last row.
+    order : ndarray, shape (rows,)
+        Observed order of convergence [-]; NaN where undefined.
+    linear_max_depth : float
+        Non-evolving map's largest depth [m].
     """
 
     cycles: float
@@ -347,10 +502,19 @@ class ConvergenceTable:
 
     @property
     def finest(self) -> EvolutionResult:
+        """The evolution with the most blocks (last row)."""
         return self.results[-1]
 
     def rows(self):
-        """``(header, rows)`` for CSV (SI to µm/nm as named in the header)."""
+        """``(header, rows)`` for CSV (SI to µm/nm as named in the header).
+
+        Returns
+        -------
+        header : list of str
+            Column names with their units.
+        rows : list of list
+            One row per block count (depths in um and nm as in the header).
+        """
         head = ["blocks", "block_revolutions", "max_depth_um", "diff_to_finest_max_nm", "diff_to_next_max_nm",
                 "observed_order", "change_vs_linear_max_depth"]
         out = []
@@ -362,7 +526,18 @@ class ConvergenceTable:
 
 
 def block_counts(max_blocks: int) -> list:
-    """1, 2, 4, ... (powers of two <= ``max_blocks``), then ``max_blocks`` if it is not one."""
+    """1, 2, 4, ... (powers of two <= ``max_blocks``), then ``max_blocks`` if it is not one.
+
+    Parameters
+    ----------
+    max_blocks : int
+        Largest block count, ``>= 1``.
+
+    Returns
+    -------
+    list of int
+        The block counts.
+    """
     max_blocks = _validate.integer("blocks", max_blocks, 1, "(number of blocks)")
     out, nb = [], 1
     while nb <= max_blocks:
@@ -376,7 +551,24 @@ def block_counts(max_blocks: int) -> list:
 def convergence_table(case: EvolutionCase, cycles: float, max_blocks: int, *,
                       n_grid: int | None = None) -> ConvergenceTable:
     """Evolve with 1, 2, 4, ... blocks up to ``max_blocks`` (see :func:`block_counts`) and tabulate
-    the convergence in the block size (max-norm differences over the cam depth)."""
+    the convergence in the block size (max-norm differences over the cam depth).
+
+    Parameters
+    ----------
+    case : EvolutionCase
+        The unworn state.
+    cycles : float
+        Total cam revolutions, ``> 0`` [-].
+    max_blocks : int
+        Largest block count.
+    n_grid : int, optional
+        Cam and roller grid points; default the first evolution's.
+
+    Returns
+    -------
+    ConvergenceTable
+        Depths and differences [m] and observed orders.
+    """
     cycles = _validate.positive("cycles", cycles, "revolutions")
     counts = block_counts(max_blocks)
     first = evolve(case, cycles, cycles, n_grid=n_grid)       # counts[0] == 1: the linear map

@@ -49,6 +49,22 @@ def wear_options(scene) -> dict:
     Raises :class:`~femcam.errors.SceneError` (an ``InputError``) naming every unknown key or
     bad value with the expected unit, e.g. ``wear.k = 1e-17: unknown key; did you mean
     'k_mm3_per_N_m' in mm^3/(N m)? (units go in the key name)``.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene (its ``wear`` table, cam hardness [Pa], source path).
+
+    Returns
+    -------
+    dict of str -> float or str
+        The checked ``[wear]`` keys with SI values (``k_mm3_per_N_m`` in m^3/(N m), ``J_kg_m2``
+        in kg m^2, ``T_drag_N_m`` in N m, ``tip_radius_mm`` in m, ``cycles`` in revolutions).
+
+    Raises
+    ------
+    SceneError
+        Every unknown key or bad value.
     """
     ck = _Checker(scene.source_path or scene.name)
     out = wear_table(ck, dict(scene.wear or {}), scene.cam.hardness)
@@ -58,7 +74,25 @@ def wear_options(scene) -> dict:
 
 def wear_coefficient_info(scene) -> tuple[float, str]:
     """``(k, where)``: the dimensional wear coefficient (m^3/(N m)) the scene asks for, and a
-    sentence saying where it came from (scene key or default)."""
+    sentence saying where it came from (scene key or default).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene (its ``wear`` table, cam hardness [Pa], source path).
+
+    Returns
+    -------
+    k : float
+        Dimensional wear coefficient [m^3/(N m)].
+    where : str
+        Where ``k`` came from.
+
+    Raises
+    ------
+    SceneError
+        A bad ``[wear]`` table.
+    """
     opts = wear_options(scene)
     hardness = scene.cam.hardness
     if "k_mm3_per_N_m" in opts:
@@ -79,7 +113,21 @@ def wear_coefficient_info(scene) -> tuple[float, str]:
 
 def slip_kwargs(scene, opts: dict | None = None) -> dict:
     """Keyword arguments of :func:`~femcam.wear.slip.follower_slip` from the scene (``omega``,
-    ``mu``) and its checked ``[wear]`` table ``opts`` (default: :func:`wear_options`)."""
+    ``mu``) and its checked ``[wear]`` table ``opts`` (default: :func:`wear_options`).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene (``omega`` [rad/s], ``mu`` [-]).
+    opts : dict, optional
+        Checked SI ``[wear]`` table; default :func:`wear_options` of ``scene``.
+
+    Returns
+    -------
+    dict
+        ``omega`` [rad/s], ``roller_model``, ``srr`` [-], ``mu`` [-] (0.1 when the scene has none
+        or 0), ``J`` [kg m^2] or None, ``T_drag`` [N m].
+    """
     if opts is None:
         opts = wear_options(scene)
     return dict(omega=scene.omega, roller_model=opts.get("roller_model", "srr"), srr=opts.get("srr", 0.02),
@@ -87,13 +135,36 @@ def slip_kwargs(scene, opts: dict | None = None) -> dict:
 
 
 def describe_k(k: float, where: str) -> str:
-    """``k = 5e-18 m^3/(N m) = 5e-09 mm^3/(N m) (where)``."""
+    """``k = 5e-18 m^3/(N m) = 5e-09 mm^3/(N m) (where)``.
+
+    Parameters
+    ----------
+    k : float
+        Dimensional wear coefficient [m^3/(N m)].
+    where : str
+        Where ``k`` came from.
+
+    Returns
+    -------
+    str
+        ``k`` in m^3/(N m) and mm^3/(N m) with its origin.
+    """
     return f"k = {k:.4g} m^3/(N m) = {k * 1e9:.4g} mm^3/(N m) ({where})"
 
 
 def follower_tip_radius(scene) -> float | None:
     """Knife-edge tip radius (m) of a scene: ``[follower] tip_radius_mm`` (``Scene.tip_radius``),
     or the deprecated alias ``[wear] tip_radius_mm`` (a ``FutureWarning``); None if neither.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene (its ``wear`` table, cam hardness [Pa], source path).
+
+    Returns
+    -------
+    float or None
+        Tip radius [m], or None.
 
     Raises
     ------

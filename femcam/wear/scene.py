@@ -134,6 +134,20 @@ def with_coating(scene, wm: WearMap) -> WearMap:
     The roller's pattern drifts from revolution to revolution; its per-revolution rate at a point
     is taken as the drift-averaged ``depth_follower_total / cycles`` (exact for a phase-locked
     roller and for a drift that has spread the wear evenly).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene (its coating, from ``scene.layers``).
+    wm : femcam.wear.map.WearMap
+        The uncoated wear map (depths [m], ``cycles`` in revolutions).
+
+    Returns
+    -------
+    femcam.wear.map.WearMap
+        ``wm`` with ``coating`` (``thickness_m`` [m], ``k_coating``, ``k_substrate``
+        [m^3/(N m)], ``revolutions_through`` [-]) and ``depth_cam_cycles`` or
+        ``depth_follower_cycles`` [m] set.
     """
     cw = coating_wear(scene)
     if cw is None:

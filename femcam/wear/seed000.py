@@ -129,6 +129,23 @@ def bezier_v2_integral(control_points) -> float:
     Exact rational arithmetic when the ordinates are rational (Farin, *Curves and Surfaces
     for CAGD*, product and integral of Bernstein polynomials).
 
+    Parameters
+    ----------
+    control_points : sequence of float, length n + 1 >= 2
+        Normalised Bezier ordinates ``c_0..c_n`` (unit lift) [-].
+
+    Returns
+    -------
+    fractions.Fraction
+        ``int_0^1 v^2 du`` [-] (exact rational; ``float()`` it for a number).
+
+    Raises
+    ------
+    InputError
+        Fewer than 2 ordinates.
+
+    Examples
+    --------
     >>> float(bezier_v2_integral([0, 0, 0, 1, 1, 1]))   # = 3-4-5 polynomial, 10/7
     1.4285714285714286
     """
@@ -151,6 +168,18 @@ def polynomial_v2_integral(coefficients) -> float:
 
     .. math:: \int_0^1 v^2\,du = \sum_{i,j\ge1} \frac{i c_i\, j c_j}{i + j - 1}
 
+    Parameters
+    ----------
+    coefficients : sequence of float
+        Coefficients ``c_0, c_1, ...`` of the normalised lift ``s(u) = sum c_k u^k`` [-].
+
+    Returns
+    -------
+    fractions.Fraction
+        ``int_0^1 v^2 du`` [-] (exact rational).
+
+    Examples
+    --------
     >>> round(float(polynomial_v2_integral([0, 0, 0, 10, -15, 6])), 12)   # 10/7
     1.428571428571
     """
@@ -185,7 +214,18 @@ def _control_points(law):
 
 
 def v2_integral_closed(law) -> float:
-    """Closed form of ``int_0^1 v(u)^2 du`` for a law (name or ``MotionLaw``); NaN if unknown."""
+    """Closed form of ``int_0^1 v(u)^2 du`` for a law (name or ``MotionLaw``); NaN if unknown.
+
+    Parameters
+    ----------
+    law : str or MotionLaw
+        A law name of :func:`femcam.kinematics.law` or a normalised motion law.
+
+    Returns
+    -------
+    float
+        ``int_0^1 v(u)^2 du`` [-]; NaN if no closed form is known.
+    """
     law = _resolve(law)
     name = getattr(law, "name", "")
     if name in _CLOSED_I:
@@ -204,6 +244,16 @@ def v2_integral_quad(law) -> float:
 
     The law's ``breakpoints`` (and 1/8, 3/8, 1/2, 5/8, 7/8) are passed so that piecewise laws
     (modified sine/trapezoid) are integrated piece by piece.
+
+    Parameters
+    ----------
+    law : str or MotionLaw
+        A law name of :func:`femcam.kinematics.law` or a normalised motion law.
+
+    Returns
+    -------
+    float
+        ``int_0^1 v(u)^2 du`` [-].
     """
     law = _resolve(law)
 
@@ -224,6 +274,24 @@ def rms_velocity(law, h, beta, omega, *, method: str = "closed") -> float:
 
     ``method`` is ``"closed"`` (hand-derived integral; falls back to quadrature for laws
     without one) or ``"quad"``. References: seed 000, RMS velocity equation.
+
+    Parameters
+    ----------
+    law : str or MotionLaw
+        A law name of :func:`femcam.kinematics.law` or a normalised motion law.
+    h : float
+        Lift of the rise [m].
+    beta : float
+        Cam angle of the rise [rad].
+    omega : float
+        Cam speed [rad/s].
+    method : {"closed", "quad"}
+        How ``int v^2 du`` is evaluated.
+
+    Returns
+    -------
+    float
+        RMS follower velocity over the rise [m/s].
     """
     h = _validate.positive("h", h, "m")
     beta = _validate.positive("beta", beta, "rad")
@@ -241,6 +309,16 @@ def junction_continuity(law) -> str:
     Returns one of ``"velocity jump: infinite acceleration and jerk"``, ``"acceleration jump:
     infinite jerk"``, ``"finite jerk jump"``, ``"jerk continuous"``, judged from the law's end
     values ``v, a, j`` at u = 0 and 1 (tolerance 1e-9).
+
+    Parameters
+    ----------
+    law : str or MotionLaw
+        A law name of :func:`femcam.kinematics.law` or a normalised motion law.
+
+    Returns
+    -------
+    str
+        The verdict (one of the four strings above).
     """
     law = _resolve(law)
     ends = np.array([0.0, 1.0])
@@ -265,7 +343,23 @@ _INFINITE_JERK = ("velocity jump: infinite acceleration and jerk", "acceleration
 @dataclass(frozen=True, kw_only=True)
 class Seed000Inputs:
     """Seed 000's inputs in SI: K = 1e-8, L = 500 N, H = 2000 N/mm^2, h = 10 mm, beta = 180 deg,
-    omega = 1 rad/s."""
+    omega = 1 rad/s.
+
+    Parameters
+    ----------
+    K : float
+        Dimensionless Archard coefficient [-].
+    L : float
+        Normal load [N].
+    H : float
+        Hardness [Pa].
+    h : float
+        Lift of the rise [m].
+    beta : float
+        Cam angle of the rise [rad].
+    omega : float
+        Cam speed [rad/s].
+    """
 
     K: float = 1e-8
     L: float = 500.0
@@ -292,6 +386,33 @@ class Seed000Row:
     is ``inf`` when the junction has a velocity or an acceleration jump (uniform velocity, SHM:
     the jerk there is a Dirac spike, or worse), else equal to ``interior_peak_jerk`` (a finite
     jerk jump at the junction is bounded by the interior peak). ``junction`` says which case.
+
+    Parameters
+    ----------
+    law : str
+        Law name.
+    I_closed : float
+        Closed-form ``int_0^1 v^2 du`` [-] (NaN if none).
+    I_quad : float
+        Same integral by quadrature [-].
+    v_rms : float
+        RMS follower velocity over the rise [m/s].
+    ratio : float
+        ``v_rms / v_rms,SHM`` [-].
+    S : float
+        Seed 000's effective sliding distance ``h ratio`` [m].
+    W : float
+        Archard wear volume ``K L S / H`` [m^3].
+    Cj : float
+        Peak ``|d^3s/du^3|`` of the normalised law [-].
+    interior_peak_jerk : float
+        Largest ``|jerk|`` inside the rise [m/s^3].
+    peak_jerk : float
+        Largest ``|jerk|`` of the rise between two dwells (``inf`` for a step in v or a) [m/s^3].
+    junction : str
+        Verdict of :func:`junction_continuity`.
+    quad_rel_diff : float
+        ``|I_quad - I_closed| / I_closed`` [-] (NaN without a closed form).
     """
 
     law: str
@@ -310,13 +431,40 @@ class Seed000Row:
 
 @dataclass(frozen=True)
 class Seed000Table:
-    """Seed 000's Table 3 and wear list recomputed; ``rows`` in the order asked for."""
+    """Seed 000's Table 3 and wear list recomputed; ``rows`` in the order asked for.
+
+    Parameters
+    ----------
+    inputs : Seed000Inputs
+        The inputs (SI).
+    rows : tuple of Seed000Row
+        One row per law.
+    paper : dict
+        Seed 000's printed values (:data:`PAPER_TABLE3`, in mm, mm/s, mm^3).
+    """
 
     inputs: Seed000Inputs
     rows: tuple
     paper: dict = field(default_factory=lambda: dict(PAPER_TABLE3))
 
     def row(self, law: str) -> Seed000Row:
+        """The row of one law.
+
+        Parameters
+        ----------
+        law : str
+            Law name.
+
+        Returns
+        -------
+        Seed000Row
+            The row of ``law``.
+
+        Raises
+        ------
+        InputError
+            ``law`` not in the table.
+        """
         for r in self.rows:
             if r.law == law:
                 return r
@@ -329,6 +477,18 @@ def seed000_table(laws=PAPER_LAWS, inputs: Seed000Inputs | None = None) -> Seed0
     v_rms uses the closed-form integral (quadrature where none exists); the quadrature value
     and the relative difference are kept as a diagnostic. SHM is always the reference of the
     ratio, as in the paper.
+
+    Parameters
+    ----------
+    laws : sequence of str or MotionLaw
+        The laws, one row each (default the three laws of the paper).
+    inputs : Seed000Inputs, optional
+        The inputs; default seed 000's.
+
+    Returns
+    -------
+    Seed000Table
+        The rows (SI).
     """
     inp = inputs or Seed000Inputs()
     scale = inp.h * inp.omega / inp.beta
@@ -363,7 +523,18 @@ def _pct(new, old):
 
 def format_table3(table: Seed000Table) -> str:
     """Text in the layout of seed 000's Table 3 and wear list (mm, mm/s, mm^3), then the jerk
-    table and a paper-vs-femcam comparison for the laws the paper printed."""
+    table and a paper-vs-femcam comparison for the laws the paper printed.
+
+    Parameters
+    ----------
+    table : Seed000Table
+        The recomputed table.
+
+    Returns
+    -------
+    str
+        Multi-line text.
+    """
     inp = table.inputs
     out = [f"Seed 000 recomputed: K = {inp.K:g}, L = {inp.L:g} N, H = {inp.H / 1e6:g} N/mm^2, "
            f"h = {inp.h * 1e3:g} mm, beta = {math.degrees(inp.beta):g} deg, omega = {inp.omega:g} rad/s",
@@ -405,7 +576,20 @@ def table_rows_for_csv(table: Seed000Table):
     """(header, rows) with units in the column names, for ``csv.writer``.
 
     ``peak_jerk_with_dwells_mm_s3`` is written ``inf`` where a junction step makes it infinite
-    (``float("inf")`` reads it back)."""
+    (``float("inf")`` reads it back).
+
+    Parameters
+    ----------
+    table : Seed000Table
+        The recomputed table.
+
+    Returns
+    -------
+    header : list of str
+        Column names with units (mm, mm/s, mm^3, mm/s^3).
+    rows : list of list
+        One row of formatted values per law.
+    """
     header = ["law", "int_v2_du", "int_v2_du_quad", "v_rms_mm_s", "ratio_to_shm", "S_mm", "W_mm3",
               "Cj", "interior_peak_jerk_mm_s3", "peak_jerk_with_dwells_mm_s3", "junction_with_dwell",
               "paper_v_rms_mm_s", "paper_S_mm", "paper_W_mm3"]

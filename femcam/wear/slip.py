@@ -73,6 +73,37 @@ class SlipResult:
 
     ``Omega``/``Omega_req``/``slipping`` are set for the roller inertia model (None otherwise);
     ``iterations`` counts revolutions integrated, ``converged`` whether Omega became periodic.
+
+    Parameters
+    ----------
+    theta : ndarray, shape (n,)
+        Cam angles [rad].
+    v_slip : ndarray, shape (n,)
+        Sliding speed, magnitude of the relative velocity at the contact [m/s].
+    V_cam : ndarray, shape (n,)
+        Speed of the contact point over the cam surface [m/s].
+    V_follower : ndarray, shape (n,)
+        Speed of the contact point over the follower surface (signed) [m/s].
+    omega : float
+        Cam speed [rad/s].
+    model : str
+        Description of the slip model.
+    Omega : ndarray, shape (n,), or None
+        Roller (or tip) angular speed [rad/s].
+    Omega_req : ndarray, shape (n,), or None
+        Roller angular speed for rolling without slip [rad/s].
+    slipping : ndarray of bool, shape (n,), or None
+        Where the inertia-limited roller slides.
+    iterations : int
+        Revolutions integrated (inertia model).
+    converged : bool
+        Whether ``Omega`` became periodic.
+    message : str
+        Convergence summary.
+    follower_period : float or None
+        Perimeter of the roller surface ``2 pi Rr`` [m]; None for an open coordinate.
+    follower_origin : float
+        Position of the contact on the follower surface at ``theta[0]`` [m].
     """
 
     theta: np.ndarray
@@ -121,6 +152,28 @@ def _offset_distance(R, e, name):
 def knife_edge(theta, s, s1, *, Rb, omega, e=0.0) -> SlipResult:
     r"""Knife-edge follower: full sliding, :math:`v_{slip} = \omega\sqrt{(d+s)^2 + (s_1-e)^2}`.
 
+    Parameters
+    ----------
+    theta : array_like, shape (n,)
+        Cam angles [rad].
+    s : array_like, shape (n,)
+        Follower lift [m].
+    s1 : array_like, shape (n,)
+        ``ds/dtheta`` [m/rad].
+    Rb : float
+        Base-circle radius [m].
+    omega : float
+        Cam speed, ``> 0`` [rad/s].
+    e : float
+        Follower offset, ``|e| <`` the (pitch) base radius [m].
+
+    Returns
+    -------
+    SlipResult
+        Speeds per angle, shape (n,) [m/s].
+
+    Examples
+    --------
     >>> r = knife_edge([0.0], [0.0], [0.0], Rb=0.02, omega=10.0)   # base circle: omega Rb
     >>> float(r.v_slip[0])
     0.2
@@ -139,6 +192,33 @@ def flat_faced(theta, s, s1, s2, *, Rb, omega) -> SlipResult:
     ``V_cam = omega (Rb + s + s2)`` (must stay > 0, else the cam is cusped),
     ``V_follower = omega s2`` (signed: the contact runs back and forth along the face).
 
+    Parameters
+    ----------
+    theta : array_like, shape (n,)
+        Cam angles [rad].
+    s : array_like, shape (n,)
+        Follower lift [m].
+    s1 : array_like, shape (n,)
+        ``ds/dtheta`` [m/rad].
+    s2 : array_like, shape (n,)
+        ``d^2s/dtheta^2`` [m/rad^2].
+    Rb : float
+        Base-circle radius [m].
+    omega : float
+        Cam speed, ``> 0`` [rad/s].
+
+    Returns
+    -------
+    SlipResult
+        Speeds per angle, shape (n,) [m/s].
+
+    Raises
+    ------
+    UndercutError
+        ``Rb + s + s2 <= 0`` (cusped cam).
+
+    Examples
+    --------
     >>> round(float(flat_faced([0.0], [0.001], [0.0], [0.0], Rb=0.02, omega=10.0).v_slip[0]), 12)
     0.21
     """
@@ -164,6 +244,28 @@ def pitch_speed(s, s1, s2, *, Rb, Rr, e=0.0):
 
     (curvature of a plane parametric curve, Norton 2009 eq. 7.14 with offset). The cam
     surface's radius of curvature is ``rho = rho_p - Rr``.
+
+    Parameters
+    ----------
+    s : array_like, shape (n,)
+        Follower lift [m].
+    s1 : array_like, shape (n,)
+        ``ds/dtheta`` [m/rad].
+    s2 : array_like, shape (n,)
+        ``d^2s/dtheta^2`` [m/rad^2].
+    Rb : float
+        Base-circle radius [m].
+    Rr : float
+        Roller radius [m].
+    e : float
+        Follower offset, ``|e| < Rb + Rr`` [m].
+
+    Returns
+    -------
+    dsp_dtheta : ndarray, shape (n,)
+        Pitch-curve arc rate [m/rad].
+    rho_p : ndarray, shape (n,)
+        Pitch-curve radius of curvature (``inf`` where straight) [m].
     """
     R = _validate.positive("Rb", Rb, "m") + _validate.positive("Rr", Rr, "m")
     e, dp = _offset_distance(R, e, "Rb + Rr")
@@ -199,6 +301,37 @@ def roller_srr(theta, s, s1, s2, *, Rb, Rr, omega, srr, e=0.0) -> SlipResult:
               V_{follower} = V_{cam}\frac{2 - SRR}{2 + SRR}
 
     ``srr = 0`` is pure rolling (zero wear).
+
+    Parameters
+    ----------
+    theta : array_like, shape (n,)
+        Cam angles [rad].
+    s : array_like, shape (n,)
+        Follower lift [m].
+    s1 : array_like, shape (n,)
+        ``ds/dtheta`` [m/rad].
+    s2 : array_like, shape (n,)
+        ``d^2s/dtheta^2`` [m/rad^2].
+    Rb : float
+        Base-circle radius [m].
+    Rr : float
+        Roller radius [m].
+    omega : float
+        Cam speed, ``> 0`` [rad/s].
+    srr : float
+        Slide-to-roll ratio, ``-2 < srr < 2`` [-].
+    e : float
+        Follower offset, ``|e| <`` the (pitch) base radius [m].
+
+    Returns
+    -------
+    SlipResult
+        Speeds per angle, shape (n,) [m/s].
+
+    Raises
+    ------
+    UndercutError
+        Cam radius of curvature ``<= 0`` somewhere.
     """
     srr = _validate.in_range("srr", srr, -2.0, 2.0, "", lo_open=True, hi_open=True)
     theta, s, omega, Rr, V_p, V_cam, Omega_req = _roller_kinematics(theta, s, s1, s2, Rb, Rr, e, omega)
@@ -219,6 +352,49 @@ def roller_inertia(theta, s, s1, s2, Fc, *, Rb, Rr, omega, mu, J, T_drag=0.0, e=
     revolution on a uniform grid (periodic, endpoint excluded); the integration is repeated over
     revolutions until ``Omega`` is periodic to ``tol`` (relative), at most ``max_revolutions``.
     The march over angles is a short sequential loop (the state carries from step to step).
+
+    Parameters
+    ----------
+    theta : array_like, shape (n,)
+        Cam angles [rad].
+    s : array_like, shape (n,)
+        Follower lift [m].
+    s1 : array_like, shape (n,)
+        ``ds/dtheta`` [m/rad].
+    s2 : array_like, shape (n,)
+        ``d^2s/dtheta^2`` [m/rad^2].
+    Fc : array_like, shape (n,)
+        Contact force [N].
+    Rb : float
+        Base-circle radius [m].
+    Rr : float
+        Roller radius [m].
+    omega : float
+        Cam speed, ``> 0`` [rad/s].
+    mu : float
+        Friction coefficient, ``>= 0`` [-].
+    J : float
+        Roller polar moment of inertia, ``> 0`` [kg m^2].
+    T_drag : float
+        Roller bearing drag torque, ``>= 0`` [N m].
+    e : float
+        Follower offset, ``|e| <`` the (pitch) base radius [m].
+    max_revolutions : int
+        Largest number of revolutions integrated.
+    tol : float
+        Periodicity tolerance on ``Omega``, relative to ``max |Omega_req|`` [-].
+
+    Returns
+    -------
+    SlipResult
+        Speeds per angle, shape (n,) [m/s].
+
+    Raises
+    ------
+    ConvergenceError
+        ``Omega`` not periodic after ``max_revolutions``.
+    InputError
+        ``theta`` not one uniform revolution of at least 4 angles, or a bad parameter.
     """
     mu = _validate.nonnegative("mu", mu, "")
     J = _validate.positive("J", J, "kg m^2")
@@ -286,6 +462,32 @@ def radiused_tip(theta, s, s1, s2, *, Rb, r_tip, omega, e=0.0) -> SlipResult:
     (``phi`` the pressure angle of the pitch curve): the contact runs back and forth over the
     tip as the pressure angle swings. ``r_tip -> 0`` gives :func:`knife_edge`.
 
+    Parameters
+    ----------
+    theta : array_like, shape (n,)
+        Cam angles [rad].
+    s : array_like, shape (n,)
+        Follower lift [m].
+    s1 : array_like, shape (n,)
+        ``ds/dtheta`` [m/rad].
+    s2 : array_like, shape (n,)
+        ``d^2s/dtheta^2`` [m/rad^2].
+    Rb : float
+        Base-circle radius [m].
+    r_tip : float
+        Tip radius, ``> 0`` [m].
+    omega : float
+        Cam speed, ``> 0`` [rad/s].
+    e : float
+        Follower offset, ``|e| <`` the (pitch) base radius [m].
+
+    Returns
+    -------
+    SlipResult
+        Speeds per angle, shape (n,) [m/s].
+
+    Examples
+    --------
     >>> r = radiused_tip([0.0], [0.0], [0.0], [0.0], Rb=0.02, r_tip=0.001, omega=10.0)
     >>> round(float(r.v_slip[0]), 12)          # base circle: omega (Rb + r) - omega r = omega Rb
     0.2
@@ -314,6 +516,46 @@ def follower_slip(follower, theta, s, s1, s2, *, omega, Fc=None, roller_model: s
     Knife-edge: ``tip_radius`` (m, optional) selects :func:`radiused_tip` instead of the sharp
     tip of :func:`knife_edge`. Flat-faced: ``follower_origin`` is the contact's distance from
     the follower axis at ``theta[0]`` (``s1 - e``).
+
+    Parameters
+    ----------
+    follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
+        The follower (:mod:`femcam.profile`; ``Rb``, ``Rr``, ``e`` in m).
+    theta : array_like, shape (n,)
+        Cam angles [rad].
+    s : array_like, shape (n,)
+        Follower lift [m].
+    s1 : array_like, shape (n,)
+        ``ds/dtheta`` [m/rad].
+    s2 : array_like, shape (n,)
+        ``d^2s/dtheta^2`` [m/rad^2].
+    omega : float
+        Cam speed, ``> 0`` [rad/s].
+    Fc : array_like, shape (n,), optional
+        Contact force [N] (inertia model only).
+    roller_model : {"srr", "inertia"}
+        Roller slip model.
+    srr : float
+        Slide-to-roll ratio [-] (``"srr"`` model).
+    mu : float
+        Friction coefficient [-] (``"inertia"`` model).
+    J : float, optional
+        Roller polar moment of inertia [kg m^2] (``"inertia"`` model).
+    T_drag : float
+        Roller bearing drag torque [N m] (``"inertia"`` model).
+    tip_radius : float, optional
+        Knife-edge tip radius [m].
+
+    Returns
+    -------
+    SlipResult
+        Speeds per angle, shape (n,) [m/s].
+
+    Raises
+    ------
+    InputError
+        An unknown follower or roller model, a ``tip_radius`` on another follower, or ``Fc``
+        missing for the inertia model.
     """
     kind = type(follower).__name__
     e = float(getattr(follower, "e", 0.0))
