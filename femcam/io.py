@@ -96,8 +96,15 @@ def atomic_write_bytes(path, write: Callable) -> None:
 
 
 def atomic_write_text(path, text: str) -> None:
-    """Write ``text`` (UTF-8, str) to ``path`` (str or Path) atomically
-    (:func:`atomic_write_bytes`)."""
+    """Write ``text`` to ``path`` atomically (:func:`atomic_write_bytes`).
+
+    Parameters
+    ----------
+    path : str or Path
+        Destination file.
+    text : str
+        Content, written as UTF-8.
+    """
     atomic_write_bytes(Path(path), lambda f: f.write(text.encode("utf-8")))
 
 
@@ -182,6 +189,16 @@ CSV_EMPTY = "-"
 def csv_text(value) -> str:
     """A text field as written to the CSV: no ``,``, ``#``, quotes or line breaks; an empty
     field is :data:`CSV_EMPTY`.
+
+    Parameters
+    ----------
+    value : object
+        The field value (converted with ``str``).
+
+    Returns
+    -------
+    str
+        The CSV-safe text.
 
     >>> csv_text('a, "b" #1'), csv_text("")
     ("a; 'b' No.1", '-')
@@ -434,7 +451,17 @@ def _insert_field_data(path: Path, field_data: dict) -> None:
 # VTU of one solved angle (sweep): FE result or analytic Hertz field, plus wear
 # ---------------------------------------------------------------------------------------------
 def vtu_name(theta: float) -> str:
-    """File name of the ``.vtu`` of cam angle ``theta`` (rad): ``angle_<deg>deg.vtu``.
+    """File name of the ``.vtu`` of one cam angle: ``angle_<deg>deg.vtu``.
+
+    Parameters
+    ----------
+    theta : float
+        Cam angle [rad].
+
+    Returns
+    -------
+    str
+        The file name, the angle in degrees with 3 decimals (``angle_0090.000deg.vtu``).
 
     >>> vtu_name(np.pi / 2)
     'angle_0090.000deg.vtu'

@@ -135,6 +135,15 @@ def plot_extras(scene, table, out) -> dict[str, str]:
     """One PNG per applicable provider with panels, ``out/plots/extras_<name>.png`` (rows that
     are not ``ok`` are left out).
 
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept (which providers apply).
+    table : Mapping[str, ndarray]
+        The sweep table (SI columns, ``theta`` [rad], ``status``).
+    out : str or Path
+        Output directory.
+
     Returns
     -------
     dict[str, str]
@@ -159,13 +168,37 @@ def plot_extras(scene, table, out) -> dict[str, str]:
 
 
 def providers_for(scene) -> tuple[Provider, ...]:
-    """The providers that apply to ``scene``, in run order."""
+    """The providers that apply to ``scene``, in run order.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept.
+
+    Returns
+    -------
+    tuple of Provider
+        The applicable providers of :data:`PROVIDERS`.
+    """
     return tuple(p for p in PROVIDERS if p.applies(scene))
 
 
 def extra_columns(scene) -> tuple[tuple[Column, ...], tuple[str, ...]]:
     """``(numeric columns, text columns)`` the providers of ``scene`` add to the sweep table
-    (both empty when none applies; ``extras_error`` is the last text column otherwise)."""
+    (both empty when none applies; ``extras_error`` is the last text column otherwise).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept.
+
+    Returns
+    -------
+    columns : tuple of (str, str, float)
+        ``(SI name, CSV name, factor SI -> CSV unit)`` of the numeric columns.
+    text : tuple of str
+        Text column names.
+    """
     ps = providers_for(scene)
     if not ps:
         return (), ()
@@ -217,6 +250,18 @@ def extras_provenance(scene, table) -> dict:
     ``{criterion: {"value", "theta_deg"}}``);
     ``halfspace``: largest axial peak (MPa) and the FE load basis; ``bodies``: largest bore hoop
     stress (MPa) and needle load (N); ``layers``: largest interface utilisation, smallest case margin.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept.
+    table : Mapping[str, ndarray]
+        The sweep table (SI columns).
+
+    Returns
+    -------
+    dict
+        The summary above (units in the key names).
     """
     ps = providers_for(scene)
     out = {"providers": [p.name for p in ps]}

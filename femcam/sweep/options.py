@@ -66,7 +66,14 @@ class SweepOptions:
             object.__setattr__(self, key, int(x) if key in STUDY_WHOLE else x)
 
     def to_dict(self) -> dict:
-        """The options as a JSON-able dict (manifest key and provenance)."""
+        """The options as a JSON-able dict (manifest key and provenance).
+
+        Returns
+        -------
+        dict
+            ``{"method", "a_over_h", "tolerance", "chunk_size", "vtk_every"}`` -> value (the
+            fields' units).
+        """
         return {"method": self.method, "a_over_h": self.a_over_h, "tolerance": self.tolerance,
                 "chunk_size": self.chunk_size, "vtk_every": self.vtk_every}
 

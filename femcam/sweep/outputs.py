@@ -37,7 +37,20 @@ __all__ = ["SweepRun", "check_vtus", "scene_hash", "scene_source", "with_plot_da
 
 
 def scene_hash(scene, scene_path) -> str:
-    """SHA-256 of the scene file and the parsed scene (the resume key)."""
+    """SHA-256 of the scene file and the parsed scene (the resume key).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The parsed scene (its ``repr`` is hashed).
+    scene_path : str or Path or None
+        The scene file (its bytes are hashed too, if it exists).
+
+    Returns
+    -------
+    str
+        Hex digest.
+    """
     if scene_path is not None and Path(scene_path).is_file():
         h = hashlib.sha256(Path(scene_path).read_bytes())
         h.update(repr(scene).encode())  # also catches in-code changes such as --law
@@ -46,7 +59,22 @@ def scene_hash(scene, scene_path) -> str:
 
 
 def scene_source(scene, scene_path):
-    """(path of the scene file or None, its text or "")."""
+    """The scene file and its text, for the copy in the output directory.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene (``scene.source_path`` is the fallback).
+    scene_path : str or Path or None
+        The scene file given to the sweep.
+
+    Returns
+    -------
+    path : Path or None
+        The scene file (None: the scene was built in code).
+    text : str
+        Its text ("" when there is none or it is unreadable).
+    """
     for p in (scene_path, scene.source_path):
         if p and Path(p).is_file():
             try:
@@ -60,7 +88,61 @@ def scene_source(scene, scene_path):
 @dataclass
 class SweepRun:
     """The state of one :func:`femcam.sweep.sweep` call, filled phase by phase
-    (:mod:`femcam.sweep.run`), read by the output writers."""
+    (:mod:`femcam.sweep.run`), read by the output writers.
+
+    Attributes
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept.
+    scene_path : str or Path or None
+        Its file, if any.
+    angles : ndarray, shape (n,)
+        Cam angles [rad] (curvature jumps resolved).
+    opts : SweepOptions
+        Numerical options.
+    workers : int or str
+        Worker processes, or ``"auto"``.
+    out : Path or None
+        Output directory (None: nothing written).
+    resume : bool
+        Continue the sweep stored in ``out``.
+    bounds : list of (int, int)
+        Chunk row ranges ``(start, stop)``.
+    delay_s : float
+        Pause after each chunk [s] (for testing interruptions).
+    shash : str
+        Scene hash (:func:`scene_hash`).
+    contact : ndarray of bool, shape (n,), optional
+        Angles with contact.
+    rows0 : dict[str, ndarray], optional
+        ``Fc`` [N] and ``rho`` [m] of every angle, shape (n,).
+    wear : WearSetup, optional
+        Archard k and slip of every angle.
+    store : ChunkStore, optional
+        On-disk chunk store (with ``out``).
+    done : frozenset of int
+        Chunks already finished (resume).
+    vtk_mask : ndarray of bool, shape (n,), optional
+        Angles that get a ``.vtu``.
+    family : ndarray of int, shape (n,), optional
+        Model family id per angle (-1: none).
+    records : list of FamilyRecord, optional
+        The verified families.
+    verified_here : bool
+        The families were verified in this process (their solves are cached).
+    overwrite : bool
+        Replace the results in a non-empty ``out``.
+    animate : bool
+        Write ``animation.gif`` from the VTK series.
+    lock : DirLock, optional
+        The lock held on ``out``.
+    jump : ndarray of bool, shape (n,), optional
+        Rows inside a curvature jump's straddle span.
+    traction : femcam.sweep.realcam.Traction, optional
+        Tangential load and directions per angle (FE methods).
+    hertz : ndarray of bool, shape (n,), optional
+        Rows answered by Hertz under method ``auto``.
+    """
 
     scene: Scene
     scene_path: object
@@ -92,7 +174,26 @@ class SweepRun:
 
 def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None,
                    src_text: str = "") -> SweepResult:
-    """``scene.toml``, ``sweep.csv``, ``sweep.npz``, ``sweep.pvd`` and the plots in ``run.out``."""
+    """``scene.toml``, ``sweep.csv``, ``sweep.npz``, ``sweep.pvd`` and the plots in ``run.out``.
+
+    Parameters
+    ----------
+    result : SweepResult
+        The computed sweep.
+    run : SweepRun
+        Its state (``run.out`` must be set).
+    plots : bool
+        Also compute the plot data and write the plots.
+    src_path : Path, optional
+        The scene file (:func:`scene_source`), copied as ``scene.toml``.
+    src_text : str
+        Its text ("": no copy).
+
+    Returns
+    -------
+    SweepResult
+        ``result`` with the provenance, paths (and plot data) of the files written.
+    """
     out = run.out
     paths = {}
     prov = dict(result.provenance)
@@ -138,7 +239,20 @@ def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None
 
 def check_vtus(result: SweepResult, run: SweepRun) -> None:
     """Every ``ok`` angle of the VTK series has its ``.vtu`` in ``DIR/vtk``, or the sweep fails
-    loudly (never a silent exit 0 with files missing, e.g. written on another machine)."""
+    loudly (never a silent exit 0 with files missing, e.g. written on another machine).
+
+    Parameters
+    ----------
+    result : SweepResult
+        The computed sweep.
+    run : SweepRun
+        Its state (``out``, ``vtk_mask``).
+
+    Raises
+    ------
+    FemcamError
+        Some ``.vtu`` files are missing.
+    """
     want = np.flatnonzero(run.vtk_mask & (result.table["status"] == "ok"))
     missing = [vtu_name(result.table["theta"][i]) for i in want
                if not (run.out / "vtk" / vtu_name(result.table["theta"][i])).exists()]
@@ -149,7 +263,20 @@ def check_vtus(result: SweepResult, run: SweepRun) -> None:
 
 
 def with_plot_data(result: SweepResult, run: SweepRun) -> SweepResult:
-    """The Hertz shape factors and the worst angle's surface profile, for the plots."""
+    """The Hertz shape factors and the worst angle's surface profile, for the plots.
+
+    Parameters
+    ----------
+    result : SweepResult
+        The computed sweep.
+    run : SweepRun
+        Its state (scene, options).
+
+    Returns
+    -------
+    SweepResult
+        ``result`` with ``surface_profile`` (None without an ``ok`` angle) and ``hertz_factors``.
+    """
     cp = contact_params(run.scene)
     profile = None
     if np.any(result.ok):

@@ -250,6 +250,19 @@ class Progress:
 
     :meth:`phase` shows the elapsed time of a phase without a count (model families, output
     files, plots) once it has lasted ``delay_s`` (1 s): short phases stay silent.
+
+    Parameters
+    ----------
+    total : int
+        Number of angles of the whole bar (0: no bar).
+    label : str
+        Text before the bar.
+    enabled : bool, optional
+        Show the bar and the phases; default: only when ``stream`` is a TTY.
+    stream : file-like, optional
+        Where to write (default ``sys.stderr``).
+    delay_s : float
+        How long a phase lasts before it is shown [s].
     """
 
     def __init__(self, total: int, label: str = "sweep", enabled: bool | None = None,
@@ -264,7 +277,13 @@ class Progress:
         self.t0 = time.perf_counter()
 
     def update(self, n: int) -> None:
-        """``n`` more angles are done: redraw the bar."""
+        """``n`` more angles are done: redraw the bar.
+
+        Parameters
+        ----------
+        n : int
+            Angles finished since the last update.
+        """
         self.done += n
         if not self.enabled:
             return
@@ -286,7 +305,20 @@ class Progress:
     @contextlib.contextmanager
     def phase(self, label: str, period_s: float = 0.25):
         """Context manager: ``label ... 3.2 s`` redrawn every ``period_s`` once the phase has
-        lasted ``delay_s``, then ``label: 4.1 s`` on its own line (nothing for a short phase)."""
+        lasted ``delay_s``, then ``label: 4.1 s`` on its own line (nothing for a short phase).
+
+        Parameters
+        ----------
+        label : str
+            Name of the phase.
+        period_s : float
+            Redraw period [s].
+
+        Yields
+        ------
+        None
+            The body of the ``with`` block runs while the timer is shown.
+        """
         if not self.on:
             yield
             return

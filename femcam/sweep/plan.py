@@ -101,7 +101,22 @@ def _clusters(v: np.ndarray, span, ratio: bool) -> np.ndarray:
 
 
 def initial_groups(a, kappa, tolerance) -> list[np.ndarray]:
-    """Initial groups (index arrays into ``a``/``kappa``): clusters in a, then in kappa."""
+    """Initial groups: clusters in a, then in kappa (:func:`family_spans`).
+
+    Parameters
+    ----------
+    a : ndarray, shape (m,)
+        Hertz half-widths of the contact angles [m].
+    kappa : ndarray, shape (m,)
+        Curvature ratios ``Rr/rho`` [-].
+    tolerance : float
+        Reuse tolerance on p0 [-] (sets the spans).
+
+    Returns
+    -------
+    list of ndarray of int
+        Index arrays into ``a``/``kappa``, one per group.
+    """
     a_span, k_span = family_spans(tolerance)
     la = _clusters(a, a_span, ratio=True)
     out = []
@@ -115,7 +130,26 @@ def initial_groups(a, kappa, tolerance) -> list[np.ndarray]:
 
 def family_reference(a, kappa, rho, Rr) -> tuple[float, float]:
     """``(rho_ref, a_ref)`` of a group: geometric centre of its a range, centre of its kappa
-    range; a group of one load case gets exactly that load case's rho and a."""
+    range; a group of one load case gets exactly that load case's rho and a.
+
+    Parameters
+    ----------
+    a : ndarray, shape (m,)
+        Hertz half-widths of the group's load cases [m].
+    kappa : ndarray, shape (m,)
+        Their curvature ratios ``Rr/rho`` [-].
+    rho : ndarray, shape (m,)
+        Their cam radii of curvature [m].
+    Rr : float
+        Roller radius [m].
+
+    Returns
+    -------
+    rho_ref : float
+        Reference cam radius of curvature [m] (``inf`` for a flat cam).
+    a_ref : float
+        Reference half-width [m].
+    """
     a_ref = float(np.sqrt(a.min() * a.max()))
     if kappa.min() == kappa.max():
         return float(rho[0]), a_ref

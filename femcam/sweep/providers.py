@@ -53,7 +53,18 @@ def _cached(kind: str, scene, build: Callable):
 def ring_model(scene):
     """The scene's ring model (:func:`femcam.bodies.rows.build_for`), graded for the largest
     contact force over one revolution (720 angles), built once per process: the rows then do
-    not depend on how the sweep is chunked."""
+    not depend on how the sweep is chunked.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept.
+
+    Returns
+    -------
+    femcam.bodies.RingModel
+        The ring (pin or needle bearing) model.
+    """
     def build():
         st = scene.analyse(_GRID)
         Fc = np.where(np.asarray(st.Fc) > 0, st.Fc, np.nan)
@@ -63,14 +74,36 @@ def ring_model(scene):
 
 def cam_disk_model(scene):
     """The scene's global cam disk on its shaft (:class:`~femcam.bodies.cam_global.CamGlobalModel`),
-    built once per process (it does not depend on the angles)."""
+    built once per process (it does not depend on the angles).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept.
+
+    Returns
+    -------
+    femcam.bodies.cam_global.CamGlobalModel
+        The cam disk model.
+    """
     return _cached("cam_disk", scene, lambda: CamGlobalModel.build(
         disk=disk_from_scene(scene), length=scene.length, plane=scene.plane))
 
 
 def strip_model(scene):
     """The scene's :class:`~femcam.halfspace.strip.FiniteLengthContact` (kernel FFTs), once per
-    process."""
+    process.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept.
+
+    Returns
+    -------
+    femcam.halfspace.strip.FiniteLengthContact
+        The finite-length contact of the scene's roller.
+    """
     return _cached("strip", scene, lambda: strip_for_scene(scene))
 
 
@@ -78,6 +111,18 @@ def strip_model(scene):
 # providers
 # ---------------------------------------------------------------------------------------------
 def assess_name(name: str) -> str:
+    """The sweep table's name of an assessment column.
+
+    Parameters
+    ----------
+    name : str
+        SI name in :data:`femcam.assess.COLUMNS`.
+
+    Returns
+    -------
+    str
+        ``"assess_<name>"``.
+    """
     return f"assess_{name}"
 
 
@@ -103,6 +148,18 @@ LAYERS = tuple((f"layer_{csv}", csv, f) for csv, f in LAYER_CSV)
 def axial_contact(rows) -> tuple[np.ndarray, np.ndarray]:
     """``(a, p0)`` (m, Pa) of the most loaded slice of a finite-length contact: ``p0 =
     p_axial_peak`` and ``a = 2 w_max / (pi p_axial_peak)``, so ``pi a p0 / 2 = w_max``.
+
+    Parameters
+    ----------
+    rows : dict[str, ndarray]
+        ``hs_p_axial_peak`` [Pa] and ``hs_w_max`` [N/m], shape (n,).
+
+    Returns
+    -------
+    a : ndarray, shape (n,)
+        Half-width [m] (NaN where the peak is not finite and positive).
+    p0 : ndarray, shape (n,)
+        Peak pressure [Pa] (NaN there too).
 
     >>> a, p0 = axial_contact({"hs_p_axial_peak": np.array([1e9]), "hs_w_max": np.array([1e5])})
     >>> round(float(a[0]) * 1e6, 3), float(p0[0])
@@ -168,6 +225,23 @@ def halfspace_rows(scene, theta) -> dict:
 
 
 def halfspace_chunk(task, rows) -> dict:
+    """The finite-length columns of one chunk, the 2D FE at the most loaded slice (method fe)
+    and, with wear, the wear column at the axial peak (module docstring of
+    :mod:`femcam.sweep.extras`).
+
+    Parameters
+    ----------
+    task : femcam.sweep.pipeline.ChunkTask
+        The chunk (scene, ``theta`` [rad], options, slip, ``wear_k``).
+    rows : dict[str, ndarray]
+        The chunk's table with the contact and wear columns filled (SI).
+
+    Returns
+    -------
+    dict[str, ndarray]
+        ``hs_*`` columns (SI), ``hs_flags``, ``fe_load_basis``; with wear also
+        ``wear_depth`` [m per revolution] and ``wear_source``.
+    """
     out = halfspace_rows(task.scene, task.theta)
     _fe_slice(task, rows, out)
     if task.slip is not None and math.isfinite(task.wear_k):
@@ -182,7 +256,21 @@ def halfspace_chunk(task, rows) -> dict:
 
 def assess_chunk(task, rows) -> dict:
     """The assessment of the chunk's angles except undercut ones (no contact solution: NaN and
-    empty text there), with the sweep's FE (or the most loaded slice's) contact as its table."""
+    empty text there), with the sweep's FE (or the most loaded slice's) contact as its table.
+
+    Parameters
+    ----------
+    task : femcam.sweep.pipeline.ChunkTask
+        The chunk (scene, ``theta`` [rad], options, slip, ``wear_k``).
+    rows : dict[str, ndarray]
+        The chunk's table with the contact and wear columns filled (SI).
+
+    Returns
+    -------
+    dict[str, ndarray]
+        ``assess_*`` columns (SI, :data:`femcam.assess.COLUMNS`) and the text
+        columns ``assess_regime``, ``assess_flags``, ``assess_source``.
+    """
     table = {"a_fe": rows["a_fe"], "p0_fe": rows["p0_fe"], "tau1_max": rows["tau1_max"],
              "txz_absmax": rows["txz_absmax"]}
     axial = "hs_p_axial_peak" in rows
@@ -216,12 +304,41 @@ def _contact_rows(rows) -> np.ndarray:
 
 
 def ring_chunk(task, rows) -> dict:
+    """The ring (pin or needle bearing) columns of one chunk; NaN where there is no contact.
+
+    Parameters
+    ----------
+    task : femcam.sweep.pipeline.ChunkTask
+        The chunk (scene, ``theta`` [rad], options, slip, ``wear_k``).
+    rows : dict[str, ndarray]
+        The chunk's table with the contact and wear columns filled (SI).
+
+    Returns
+    -------
+    dict[str, ndarray]
+        ``ring_*`` columns (SI; :data:`femcam.bodies.rows.CSV_COLUMNS`).
+    """
     Fc = np.where(_contact_rows(rows), rows["Fc"], 0.0)   # ring_rows: Fc <= 0 -> NaN row
     r = ring_rows(task.scene, task.theta, Fc, rows["rho"], model=ring_model(task.scene))
     return {f"ring_{k}": np.asarray(r[k], float) for k in RING_COLUMNS if k != "theta"}
 
 
 def cam_disk_chunk(task, rows) -> dict:
+    """The cam disk on its shaft (bore hoop stress, shaft contact) of one chunk; NaN where
+    there is no contact.
+
+    Parameters
+    ----------
+    task : femcam.sweep.pipeline.ChunkTask
+        The chunk (scene, ``theta`` [rad], options, slip, ``wear_k``).
+    rows : dict[str, ndarray]
+        The chunk's table with the contact and wear columns filled (SI).
+
+    Returns
+    -------
+    dict[str, ndarray]
+        ``camdisk_*`` columns (SI) and ``camdisk_flags``.
+    """
     Fc = np.where(_contact_rows(rows), rows["Fc"], 0.0)   # cam_disk_rows: Fc <= 0 -> NaN row
     r = cam_disk_rows(task.scene, task.theta, Fc, model=cam_disk_model(task.scene))
     out = {f"camdisk_{k}": np.asarray(r[k], float) for k in CAM_CSV_COLUMNS}
@@ -230,6 +347,22 @@ def cam_disk_chunk(task, rows) -> dict:
 
 
 def layers_chunk(task, rows) -> dict:
+    """The coating interface and case-hardening columns of one chunk (the scene's layers);
+    NaN where there is no contact.
+
+    Parameters
+    ----------
+    task : femcam.sweep.pipeline.ChunkTask
+        The chunk (scene, ``theta`` [rad], options, slip, ``wear_k``).
+    rows : dict[str, ndarray]
+        The chunk's table with the contact and wear columns filled (SI).
+
+    Returns
+    -------
+    dict[str, ndarray]
+        ``layer_*`` columns, SI values (:data:`LAYERS`; the ``_MPa``/``_mm`` in the
+        names is the CSV unit, the table holds Pa/m).
+    """
     n = task.theta.size
     out = {si: np.full(n, np.nan) for si, _, _ in LAYERS}
     idx = np.flatnonzero(_contact_rows(rows))
@@ -245,7 +378,18 @@ def has_finite_length(scene) -> bool:
     """True when the scene asks for the finite-length contact: a crown, edge radius or
     misalignment key, or a roller or cam width that differs from the 2D contact length. (The
     scene fills ``finite_length`` with both widths for every roller scene with a face width, so
-    non-empty alone does not mean asked for.)"""
+    non-empty alone does not mean asked for.)
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept.
+
+    Returns
+    -------
+    bool
+        The ``halfspace`` provider applies.
+    """
     fl = getattr(scene, "finite_length", None) or {}
     if not fl:
         return False
@@ -254,13 +398,40 @@ def has_finite_length(scene) -> bool:
 
 
 def coated_cam(scene) -> bool:
+    """True when the cam is coated and the scene gives a coating wear coefficient
+    (:func:`femcam.wear.coating.coating_wear`).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept.
+
+    Returns
+    -------
+    bool
+        The ``coating_wear`` provider applies.
+    """
     cw = coating_wear(scene)
     return cw is not None and cw.body == "cam"
 
 
 def coating_wear_chunk(task, rows) -> dict:
     """A coated cam with a coating wear coefficient: the wear column (cam depth per revolution
-    at the contact) with the coating's k, ``wear_source`` gets ``;coating``."""
+    at the contact) with the coating's k, ``wear_source`` gets ``;coating``.
+
+    Parameters
+    ----------
+    task : femcam.sweep.pipeline.ChunkTask
+        The chunk (scene, ``theta`` [rad], options, slip, ``wear_k``).
+    rows : dict[str, ndarray]
+        The chunk's table with the contact and wear columns filled (SI).
+
+    Returns
+    -------
+    dict[str, ndarray]
+        ``wear_depth`` [m per revolution] scaled by the coating/substrate k ratio
+        where positive, and ``wear_source``.
+    """
     cw = coating_wear(task.scene)
     depth = np.asarray(rows["wear_depth"], float)
     src = np.asarray(rows["wear_source"]).astype(str)
@@ -270,6 +441,19 @@ def coating_wear_chunk(task, rows) -> dict:
 
 
 def has_support(scene) -> bool:
+    """True when the roller runs on a pin or needles (``[follower] roller_support`` is not
+    ``solid``; ``scene.bodies["support"]``).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept.
+
+    Returns
+    -------
+    bool
+        The ``bodies`` provider applies.
+    """
     return (getattr(scene, "bodies", None) or {}).get("support", "solid") != "solid"
 
 

@@ -67,7 +67,23 @@ REAL_CAM_STATUSES = ("edge_contact", "refused")
 def contact_scene(scene):
     """The scene whose kinematics and contact the sweep solves: a knife-edge scene becomes the
     cam cut for its radiused tip (``[follower] tip_radius_mm``, refused naming the key when
-    missing); other scenes are returned as they are."""
+    missing); other scenes are returned as they are.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept.
+
+    Returns
+    -------
+    femcam.scene.Scene
+        ``scene``, or its tip-cam scene for a knife-edge follower.
+
+    Raises
+    ------
+    InputError
+        A knife-edge follower without ``[follower] tip_radius_mm``.
+    """
     if not isinstance(scene.follower, KnifeEdgeFollower):
         return scene
     tip = follower_tip_radius(scene)
@@ -130,21 +146,53 @@ def jump_angles(scene, angles) -> tuple[np.ndarray, np.ndarray]:
 
 @dataclass(frozen=True)
 class Traction:
-    """Per-angle traction of the sweep rows: ``Q`` (N, on the cam along local x; NaN: full
-    sliding) and ``direction`` (rolling direction where ``Q`` is given, else the sliding
-    sign); ``source`` says where it came from."""
+    """Per-angle traction of the sweep rows.
+
+    Parameters
+    ----------
+    Q : ndarray of float, shape (n,)
+        Tangential force on the cam along local x [N]; NaN: full sliding.
+    direction : ndarray of int, shape (n,)
+        Rolling direction (+1/-1) where ``Q`` is given, else the sliding sign.
+    source : str
+        Where the traction came from (recorded in the provenance).
+    """
 
     Q: np.ndarray
     direction: np.ndarray
     source: str
 
     def at(self, i: int) -> tuple[float | None, int]:
-        """``(Q or None, direction)`` of row ``i``."""
+        """The traction of one row.
+
+        Parameters
+        ----------
+        i : int
+            Row index.
+
+        Returns
+        -------
+        Q : float or None
+            Tangential force [N]; None: full sliding.
+        direction : int
+            Rolling direction or sliding sign (+1/-1).
+        """
         q = float(self.Q[i])
         return (None if math.isnan(q) else q), int(self.direction[i])
 
     def chunk(self, a: int, b: int) -> Traction:
-        """Rows ``a:b``."""
+        """Rows ``a:b`` (a chunk).
+
+        Parameters
+        ----------
+        a, b : int
+            Row range.
+
+        Returns
+        -------
+        Traction
+            The rows' traction, same ``source``.
+        """
         return Traction(Q=self.Q[a:b], direction=self.direction[a:b], source=self.source)
 
 
@@ -155,7 +203,19 @@ def _roller_J(scene, J):
 
 
 def scene_traction(scene, theta) -> Traction:
-    """Traction of every sweep angle ``theta`` (rad) from the mechanism (module docstring).
+    """Traction of every sweep angle from the mechanism (module docstring).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene (follower, ``mu``, ``[contact] sliding``, ``[wear]`` roller inertia and drag).
+    theta : ndarray, shape (n,)
+        Cam angles [rad].
+
+    Returns
+    -------
+    Traction
+        ``Q`` [N] and direction per angle.
 
     Raises
     ------
@@ -187,9 +247,27 @@ def scene_traction(scene, theta) -> Traction:
 
 
 def arc_error_estimate(scene, theta, a, R: float) -> tuple[np.ndarray, np.ndarray]:
-    """Estimated relative p0 error (%) of the osculating-arc FE and of Hertz at cam angles
-    ``theta`` (rad) with half-widths ``a`` (m) and follower radius ``R`` (m) (module docstring).
-    Vectorised: two profile evaluations ``1e-5`` rad on each side of every angle."""
+    """Estimated relative p0 error of the osculating-arc FE and of Hertz (module docstring).
+    Vectorised: two profile evaluations ``1e-5`` rad on each side of every angle.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene (cam program, follower).
+    theta : ndarray, shape (n,)
+        Cam angles [rad].
+    a : ndarray, shape (n,)
+        Hertz half-widths [m].
+    R : float
+        Follower radius at the contact [m] (``inf``: flat face).
+
+    Returns
+    -------
+    e_arc : ndarray, shape (n,)
+        Estimated p0 error of the arc-gap FE [%].
+    e_hertz : ndarray, shape (n,)
+        Estimated p0 error of Hertz [%].
+    """
     theta = np.asarray(theta, float)
     a = np.asarray(a, float)
     d = 1e-5
@@ -212,8 +290,23 @@ def arc_error_estimate(scene, theta, a, R: float) -> tuple[np.ndarray, np.ndarra
 
 
 def hertz_within_tolerance(e_hertz_pct, jump, tolerance: float) -> np.ndarray:
-    """Method ``auto``: rows Hertz answers: estimate ``e_hertz_pct`` (%) within ``tolerance``
-    (relative) and not in a curvature jump's span (``jump``, bool or None)."""
+    """Method ``auto``: the rows Hertz answers (estimate within the tolerance, not in a
+    curvature jump's span).
+
+    Parameters
+    ----------
+    e_hertz_pct : ndarray, shape (n,)
+        Estimated p0 error of Hertz [%] (:func:`arc_error_estimate`).
+    jump : ndarray of bool, shape (n,), or None
+        Rows inside a curvature jump's straddle span.
+    tolerance : float
+        Sweep tolerance [-] (relative, not %).
+
+    Returns
+    -------
+    ndarray of bool, shape (n,)
+        Rows Hertz answers.
+    """
     ok = np.asarray(e_hertz_pct, float) <= 100.0 * tolerance
     return ok & ~np.asarray(jump, bool) if jump is not None else ok
 
@@ -221,7 +314,32 @@ def hertz_within_tolerance(e_hertz_pct, jump, tolerance: float) -> np.ndarray:
 def auto_hertz_rows(scene, cp, options, theta, F, rho, contact, jump) -> np.ndarray:
     """Method ``auto``: the rows (bool, shape (n,)) Hertz answers, decided once in the parent
     process from the Hertz half-width (Johnson 1985 eq. 4.43) so that the family plan and the
-    chunks agree; all False for other methods."""
+    chunks agree; all False for other methods.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene.
+    cp : ContactParams
+        Its contact parameters (``Rr``, ``length``, ``E_star``).
+    options : SweepOptions
+        ``method`` and ``tolerance``.
+    theta : ndarray, shape (n,)
+        Cam angles [rad].
+    F : ndarray, shape (n,)
+        Contact forces [N].
+    rho : ndarray, shape (n,)
+        Cam radii of curvature [m].
+    contact : ndarray of bool, shape (n,)
+        Angles with contact.
+    jump : ndarray of bool, shape (n,), or None
+        Rows inside a curvature jump's straddle span.
+
+    Returns
+    -------
+    ndarray of bool, shape (n,)
+        Rows Hertz answers.
+    """
     n = np.asarray(theta).size
     if options.method != "auto":
         return np.zeros(n, bool)
@@ -242,7 +360,26 @@ def auto_hertz_rows(scene, cp, options, theta, F, rho, contact, jump) -> np.ndar
 
 def traction_args(traction: Traction | None, i: int, sliding: int) -> tuple[int, float | None, int]:
     """``(sliding, Q, rolling)`` of :meth:`femcam.fe.ContactModel.solve` for row ``i``: full
-    sliding in ``sliding`` without a traction table."""
+    sliding in ``sliding`` without a traction table.
+
+    Parameters
+    ----------
+    traction : Traction or None
+        The sweep's traction (None: method hertz or no table).
+    i : int
+        Row index into ``traction``.
+    sliding : int
+        Default sliding direction (+1/-1).
+
+    Returns
+    -------
+    sliding : int
+        Sliding direction (+1/-1; 1 when ``Q`` is given).
+    Q : float or None
+        Tangential force on the cam [N]; None: full sliding.
+    rolling : int
+        Rolling direction (+1/-1; 0 under full sliding).
+    """
     if traction is None:
         return sliding, None, 0
     Q, d = traction.at(i)
@@ -250,7 +387,18 @@ def traction_args(traction: Traction | None, i: int, sliding: int) -> tuple[int,
 
 
 def follower_radius(scene) -> float:
-    """Radius (m) of the follower surface at the contact: Rr, the knife-edge tip radius, inf."""
+    """Radius of the follower surface at the contact.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene.
+
+    Returns
+    -------
+    float
+        ``Rr``, the knife-edge tip radius, or ``inf`` (flat face) [m].
+    """
     f = scene.follower
     if isinstance(f, FlatFacedFollower):
         return math.inf
@@ -260,7 +408,20 @@ def follower_radius(scene) -> float:
 
 def real_cam_summary(table, traction: Traction | None) -> dict:
     """Provenance counts: rows per answering model, curvature-jump rows, edge contacts, and the
-    traction's source."""
+    traction's source.
+
+    Parameters
+    ----------
+    table : Mapping[str, ndarray]
+        The sweep table (``model``, ``curvature_jump``, ``status`` columns).
+    traction : Traction or None
+        The sweep's traction.
+
+    Returns
+    -------
+    dict
+        ``{"models": {model: count}, "n_curvature_jump", "n_edge_contact", "traction"}``.
+    """
     models = {m: int(np.count_nonzero(table["model"] == m)) for m in MODELS}
     return {"models": models, "n_curvature_jump": int(np.nansum(table["curvature_jump"] == 1)),
             "n_edge_contact": int(np.count_nonzero(table["status"] == "edge_contact")),

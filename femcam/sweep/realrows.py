@@ -33,6 +33,15 @@ def fe_fill(rows, i, r: ContactResult):
 
     Maxima are over both bodies (``StressMax.value``, depth ``z`` below that body's surface);
     surface extremes are on the cam surface of the FE model's stress window.
+
+    Parameters
+    ----------
+    rows : dict[str, ndarray]
+        The chunk's table (SI columns, modified in place).
+    i : int
+        Row index.
+    r : femcam.fe.ContactResult
+        The solved load case (a, depths in m; p0, stresses in Pa; Q in N).
     """
     rows["a_fe"][i] = r.a
     rows["p0_fe"][i] = r.p0
@@ -55,7 +64,21 @@ def fe_fill(rows, i, r: ContactResult):
 
 
 def hertz_stress(rows, idx, cp, p0, a) -> None:
-    """Stress maxima of rows ``idx`` from the Hertz shape factors (p0, a in Pa, m)."""
+    """Stress maxima of rows ``idx`` from the Hertz shape factors.
+
+    Parameters
+    ----------
+    rows : dict[str, ndarray]
+        The chunk's table (SI columns, modified in place).
+    idx : array_like of int, shape (m,)
+        Row indices.
+    cp : ContactParams
+        Contact parameters (``mu``, cam material, plane).
+    p0 : float or ndarray, shape (m,)
+        Peak Hertz pressure [Pa].
+    a : float or ndarray, shape (m,)
+        Hertz half-width [m].
+    """
     k = shape_factors(cp.mu, cp.cam.nu, cp.plane)
     p0, a = np.asarray(p0, float), np.asarray(a, float)
     rows["vm_max"][idx] = k["von_mises"][0] * p0
@@ -67,7 +90,17 @@ def hertz_stress(rows, idx, cp, p0, a) -> None:
 
 
 def fill_choice(rows, i, res) -> None:
-    """The model-choice columns of row ``i`` from a :class:`femcam.fe.choice.AngleResult`."""
+    """The model-choice columns of row ``i``.
+
+    Parameters
+    ----------
+    rows : dict[str, ndarray]
+        The chunk's table (SI columns, modified in place).
+    i : int
+        Row index.
+    res : femcam.fe.choice.AngleResult
+        The per-angle answer (errors in %, stored as fractions; Q in N; stick width in m).
+    """
     rows["model"][i] = res.model
     rows["est_err_arc"][i] = res.est_err_arc_pct / 100.0
     rows["est_err_hertz"][i] = res.est_err_hertz_pct / 100.0
@@ -80,7 +113,22 @@ def fill_choice(rows, i, res) -> None:
 
 def family_real_cam(scene, cp, model) -> RealCam:
     """A :class:`femcam.fe.choice.RealCam` around a family model (roller or knife-edge: the
-    family's ``Rr`` is the roller or the tip radius)."""
+    family's ``Rr`` is the roller or the tip radius).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene (cam program, follower).
+    cp : ContactParams
+        Contact parameters (``Rr`` [m], ``E_star`` [Pa]).
+    model : femcam.fe.ContactModel
+        The family model.
+
+    Returns
+    -------
+    femcam.fe.choice.RealCam
+        The real cam on that model.
+    """
     tip = cp.Rr if isinstance(scene.follower, KnifeEdgeFollower) else None
     return RealCam(program=scene.program, follower=scene.follower, model=model, tip_radius=tip,
                    face_length=None, swapped=False, E_star=cp.E_star)
@@ -90,8 +138,33 @@ def exact_solve(scene, cp, model, theta, F, *, Q, jump: bool, tol_pct: float):
     """The exact-gap answer of one roller or knife-edge row on its family model, or None when
     the exact-gap estimate of :func:`femcam.fe.choice.solve_angle` finds the arc gap within
     ``tol_pct`` after all (the caller then solves the arc gap). Curvature-jump rows solve both
-    gaps (``exact_vs_arc_p0_pct``). ``Q``: the roller's tangential force (N) or None for full
-    sliding (knife-edge: direction from the sliding velocity)."""
+    gaps (``exact_vs_arc_p0_pct``).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene (cam program, follower).
+    cp : ContactParams
+        Contact parameters.
+    model : femcam.fe.ContactModel
+        The row's family model.
+    theta : float
+        Cam angle [rad].
+    F : float
+        Contact force [N].
+    Q : float or None
+        The roller's tangential force on the cam [N], or None for full sliding (knife-edge:
+        direction from the sliding velocity).
+    jump : bool
+        The row lies in a curvature jump's straddle span (both gaps are solved).
+    tol_pct : float
+        Sweep tolerance [%].
+
+    Returns
+    -------
+    femcam.fe.choice.AngleResult or None
+        The exact-gap answer, or None when the arc gap is within the tolerance.
+    """
     if isinstance(scene.follower, RollerFollower) and Q is None:  # [contact] sliding override
         Q = cp.sliding * cp.mu * F
     res = solve_angle(family_real_cam(scene, cp, model), theta, F, mu=cp.mu, Q=Q,
@@ -102,7 +175,19 @@ def exact_solve(scene, cp, model, theta, F, *, Q, jump: bool, tol_pct: float):
 def hertz_answer(rows, idx, cp, traction) -> None:
     """Rows ``idx`` answered by Hertz (method ``auto``, estimate within the tolerance): stress
     maxima from the shape factors, traction from the closed forms (Carter / Cattaneo stick
-    width ``2 a sqrt(1 - |Q|/(mu F))``, Johnson 1985 §7.1, §8.2; full sliding: ``Q = s mu F``)."""
+    width ``2 a sqrt(1 - |Q|/(mu F))``, Johnson 1985 §7.1, §8.2; full sliding: ``Q = s mu F``).
+
+    Parameters
+    ----------
+    rows : dict[str, ndarray]
+        The chunk's table (SI columns, modified in place).
+    idx : array_like of int
+        Rows Hertz answers.
+    cp : ContactParams
+        Contact parameters (``mu``, ``sliding``, shape factors).
+    traction : femcam.sweep.realcam.Traction or None
+        Per-angle traction of the chunk (None: full sliding in ``cp.sliding``).
+    """
     idx = np.asarray(idx, int)
     if idx.size == 0:
         return
@@ -126,7 +211,24 @@ def hertz_answer(rows, idx, cp, traction) -> None:
 
 def flat_edge_rows(scene, cp, rows, good) -> np.ndarray:
     """Flat-faced rows of ``good`` whose contact runs past the face end: status
-    ``edge_contact`` with the angle ranges of this chunk (never Hertz); returns the others."""
+    ``edge_contact`` with the angle ranges of this chunk (never Hertz).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene (cam program, flat-faced follower with offset ``e`` [m]).
+    cp : ContactParams
+        Contact parameters (``face_length`` [m], None: unlimited).
+    rows : dict[str, ndarray]
+        The chunk's table (SI columns, modified in place).
+    good : array_like of int
+        Contact rows to check.
+
+    Returns
+    -------
+    ndarray of int
+        The rows of ``good`` whose contact stays on the face.
+    """
     good = np.asarray(good, int)
     if cp.face_length is None or good.size == 0:
         return good
@@ -162,8 +264,28 @@ def _flat_model(cache, scene, cp, options, a: float, rho: float) -> RealCam:
 
 
 def flat_rows(task, cp, rows, flags, good, cache) -> dict:
-    """Flat-faced rows ``good``: :func:`femcam.fe.choice.solve_angle` per angle; returns
-    ``{row: ContactResult}`` of the FE-answered rows that get a VTU."""
+    """Flat-faced rows ``good``: :func:`femcam.fe.choice.solve_angle` per angle.
+
+    Parameters
+    ----------
+    task : ChunkTask
+        The chunk (scene, options, ``jump``, ``vtk_mask``).
+    cp : ContactParams
+        Contact parameters.
+    rows : dict[str, ndarray]
+        The chunk's table (SI columns, modified in place).
+    flags : list of list of str
+        Per-row flags (not used here).
+    good : array_like of int
+        Rows the FE answers.
+    cache : ModelCache
+        Where the binned models are kept.
+
+    Returns
+    -------
+    dict[int, femcam.fe.ContactResult]
+        The FE-answered rows that get a VTU.
+    """
     vtk = {}
     tol_pct = 100.0 * task.options.tolerance
     jump = task.jump if task.jump is not None else np.zeros(rows["theta"].size, bool)

@@ -226,7 +226,18 @@ class SweepResult:
 def plot_data_arrays(result: SweepResult) -> dict:
     """The plots' data of ``result`` as ``sweep.npz`` arrays (read back by
     :meth:`SweepResult.load`): the surface profile under :data:`PROFILE_PREFIX` and the Hertz
-    factors as JSON. Empty when the sweep computed no plot data."""
+    factors as JSON. Empty when the sweep computed no plot data.
+
+    Parameters
+    ----------
+    result : SweepResult
+        A computed or loaded sweep.
+
+    Returns
+    -------
+    dict[str, ndarray]
+        ``sweep.npz`` key -> array (profile arrays as stored in ``result.surface_profile``).
+    """
     out = {}
     for k, v in (result.surface_profile or {}).items():
         out[PROFILE_PREFIX + k] = np.asarray(v)
@@ -241,7 +252,20 @@ def _fmt(x: float, scale: float = 1.0, digits: int = 1, spec: str = "f") -> str:
 
 def families_text(n_families: int, reuse_error_max: float) -> str:
     """``"1 model family, reuse error <= 0.012 % at the checked angles"``; without verified
-    families (e.g. flat-faced binned models) says so instead of a NaN error."""
+    families (e.g. flat-faced binned models) says so instead of a NaN error.
+
+    Parameters
+    ----------
+    n_families : int
+        Number of verified model families.
+    reuse_error_max : float
+        Largest reuse error of the families [-] (a fraction; printed in %).
+
+    Returns
+    -------
+    str
+        One line of text.
+    """
     n = int(n_families)
     if n == 0 or not np.isfinite(reuse_error_max):
         return "no verified model families, no reuse error to check"

@@ -65,8 +65,14 @@ def array_hash(arr) -> str:
 class ChunkStore:
     """Chunks of a sweep in ``root`` (a directory), keyed by a manifest.
 
-    ``key`` is a JSON-able dict (scene hash, angle hash, method, options) that identifies the
-    sweep; ``bounds`` are the chunk boundaries ``[(start, stop), ...]`` in row indices.
+    Parameters
+    ----------
+    root : str or Path
+        Directory of the chunk files (``DIR/chunks``).
+    key : dict
+        JSON-able record (scene hash, angle hash, method, options) that identifies the sweep.
+    bounds : list of (int, int)
+        Chunk boundaries ``[(start, stop), ...]`` in row indices.
     """
 
     def __init__(self, root, key: dict, bounds: list[tuple[int, int]]):
@@ -137,11 +143,23 @@ class ChunkStore:
     # -- the verified family plan ----------------------------------------------------
     def save_plan(self, plan: dict) -> None:
         """Store the verified family plan (JSON): a resume reuses it instead of re-verifying,
-        so the resumed chunks use exactly the same models. ``plan``: JSON-able dict."""
+        so the resumed chunks use exactly the same models.
+
+        Parameters
+        ----------
+        plan : dict
+            JSON-able plan (families and their records).
+        """
         atomic_write_text(self.root / PLAN, json.dumps(plan, sort_keys=True))
 
     def load_plan(self) -> dict | None:
-        """The stored family plan, or None (none stored, or unreadable)."""
+        """The stored family plan.
+
+        Returns
+        -------
+        dict or None
+            The plan as saved by :meth:`save_plan`; None when none is stored or it is unreadable.
+        """
         try:
             return json.loads((self.root / PLAN).read_text())
         except (OSError, ValueError):
@@ -149,7 +167,18 @@ class ChunkStore:
 
     # -- chunks -------------------------------------------------------------------------
     def path(self, i: int) -> Path:
-        """File of chunk ``i``."""
+        """File of chunk ``i``.
+
+        Parameters
+        ----------
+        i : int
+            Chunk id.
+
+        Returns
+        -------
+        Path
+            ``root/chunk_<i:05d>.npz``.
+        """
         return self.root / f"chunk_{i:05d}.npz"
 
     def _readable(self, i: int) -> bool:
@@ -164,7 +193,20 @@ class ChunkStore:
         return rows["theta"].shape == (stop - start,)
 
     def write(self, i: int, rows: dict) -> Path:
-        """Write chunk ``i`` (rows: its table) atomically; returns the file written."""
+        """Write chunk ``i`` atomically.
+
+        Parameters
+        ----------
+        i : int
+            Chunk id.
+        rows : dict[str, ndarray]
+            The chunk's table (SI numeric columns, text columns, extra provider columns).
+
+        Returns
+        -------
+        Path
+            The file written.
+        """
         arrays = {name: np.asarray(rows[name], dtype=float) for name in NUMERIC}
         for name in TEXT_COLUMNS:
             arrays[name] = np.asarray(rows[name]).astype(str)
@@ -178,11 +220,28 @@ class ChunkStore:
         return p
 
     def table(self) -> StoredTable:
-        """The whole table, read from the chunk files on access (:class:`StoredTable`)."""
+        """The whole table, read from the chunk files on access.
+
+        Returns
+        -------
+        StoredTable
+            A read-only mapping column name -> array (SI).
+        """
         return StoredTable(self)
 
     def load(self, i: int) -> dict:
-        """The table of chunk ``i`` (dict of arrays)."""
+        """The table of chunk ``i``.
+
+        Parameters
+        ----------
+        i : int
+            Chunk id.
+
+        Returns
+        -------
+        dict[str, ndarray]
+            Column name -> the chunk's array (SI numeric, text as ``str``).
+        """
         with np.load(self.path(i), allow_pickle=False) as z:
             return {name: z[name] for name in z.files if name != CHUNK_SCENE_KEY}
 
@@ -223,7 +282,13 @@ class StoredTable(Mapping):
         return len(self._keys)
 
     def chunks(self):
-        """The rows of each chunk in order (dict of arrays), one chunk in memory at a time."""
+        """The rows of each chunk in order, one chunk in memory at a time.
+
+        Yields
+        ------
+        dict[str, ndarray]
+            One chunk's columns (SI numeric, text as ``str``).
+        """
         for p in self._paths:
             with np.load(p, allow_pickle=False) as z:
                 yield {name: z[name] for name in self._keys}
@@ -236,6 +301,11 @@ class DirLock:
     The kernel releases the lock when the holder's file descriptor closes: on :meth:`release`,
     on exit, and on a kill (SIGKILL included), so a killed sweep never leaves a stale lock.
     Without ``fcntl`` (Windows) the lock is a no-op.
+
+    Parameters
+    ----------
+    directory : str or Path
+        The output directory (must exist).
     """
 
     def __init__(self, directory):
@@ -243,7 +313,23 @@ class DirLock:
         self._fd = None
 
     def acquire(self, flag: str = "out") -> DirLock:
-        """Take the lock or raise :class:`InputError` (``flag``: the option named in it)."""
+        """Take the lock or raise :class:`InputError`.
+
+        Parameters
+        ----------
+        flag : str
+            The option named in the error message (e.g. ``"out"``).
+
+        Returns
+        -------
+        DirLock
+            ``self``, holding the lock.
+
+        Raises
+        ------
+        InputError
+            Another process holds the lock (its pid is named).
+        """
         if fcntl is None:  # pragma: no cover - Windows
             return self
         fd = os.open(self.path, os.O_RDWR | os.O_CREAT, 0o644)

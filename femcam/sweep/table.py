@@ -177,7 +177,18 @@ def concat_rows(parts: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
 
 def extra_keys(rows: dict) -> list[str]:
     """Columns of ``rows`` beyond :data:`NUMERIC` and :data:`TEXT_COLUMNS` (added by the extra
-    column providers, :mod:`femcam.sweep.extras`), in their order."""
+    column providers, :mod:`femcam.sweep.extras`), in their order.
+
+    Parameters
+    ----------
+    rows : dict[str, ndarray]
+        One chunk's rows (column name -> array).
+
+    Returns
+    -------
+    list of str
+        The extra column names.
+    """
     return [k for k in rows if k not in NUMERIC and k not in TEXT_COLUMNS]
 
 
@@ -199,7 +210,15 @@ class TableBuilder:
         self.text = {name: [np.zeros(0, str)] * len(self.bounds) for name in TEXT_COLUMNS}
 
     def put(self, c: int, rows: dict) -> None:
-        """Chunk ``c``'s rows (dict of arrays) into the table."""
+        """Chunk ``c``'s rows into the table.
+
+        Parameters
+        ----------
+        c : int
+            Chunk index into ``bounds``.
+        rows : dict[str, ndarray]
+            The chunk's columns (SI numeric arrays and text arrays), each of the chunk's length.
+        """
         a, b = self.bounds[c]
         for name in NUMERIC:
             self.numeric[name][a:b] = np.asarray(rows[name], dtype=float)
@@ -213,7 +232,13 @@ class TableBuilder:
                 self.numeric.setdefault(name, np.full(self.n, np.nan))[a:b] = v.astype(float)
 
     def table(self) -> dict:
-        """The whole table (float and ``str`` columns, as :func:`concat_rows`)."""
+        """The whole table (as :func:`concat_rows`).
+
+        Returns
+        -------
+        dict[str, ndarray]
+            Float columns (SI; NaN in rows of chunks not yet put) and ``str`` text columns.
+        """
         out = dict(self.numeric)
         for name in self.text:
             out[name] = np.concatenate(self.text[name]) if self.text[name] else np.zeros(0, str)

@@ -57,16 +57,42 @@ ESTIMATE_MARGIN = 5e-4
 class FamilyRecord:
     """One verified family (JSON-able through :meth:`to_dict`).
 
-    ``checks``: ``[(theta_deg, a/a_ref, Rr/rho, reuse_error), ...]`` at the angles checked with
-    fresh models; ``estimated``: the same for candidates whose reuse error was only estimated
-    (module docstring: well below the checked worst);
-    ``reuse_error``: the largest ``|reuse_error|`` of the checks (0 for a family of one load
-    case: its model is the fresh model); ``build_time``: s to build the family model (this
-    process, during the verification); ``check_time``: s for the fresh check models and solves;
-    ``solve_time``: s per solve with the family model (median, the solve's own timing);
-    ``p0_vs_hertz``: range of the family model's ``p0 / p0_Hertz - 1`` over the ``n_scanned``
-    load cases solved with it (where Hertz applies); ``n_rebuilt``: angles the model does not
-    cover (solved with models of their own).
+    Attributes
+    ----------
+    id : int
+        Family id (-1 until numbered by :func:`verify_families`).
+    rho_ref : float
+        Cam radius of curvature the family model is built for [m] (``inf``: flat cam).
+    a_ref : float
+        Hertz half-width the family model's mesh is graded to [m].
+    n_angles : int
+        Angles in the family.
+    a_ratio : tuple of (float, float)
+        ``(min, max)`` of ``a / a_ref`` over the family [-].
+    kappa : tuple of (float, float)
+        ``(min, max)`` of ``Rr / rho`` over the family [-].
+    checks : list of tuple
+        ``[(theta_deg, a/a_ref, Rr/rho, reuse_error), ...]`` at the angles checked with fresh
+        models (angle in degrees, the rest dimensionless).
+    reuse_error : float
+        The largest ``|reuse_error|`` of the checks and the estimates [-] (0 for a family of
+        one load case: its model is the fresh model; ``inf`` when a scan solve failed).
+    build_time : float
+        Time to build the family model [s] (this process, during the verification; 0 if cached).
+    check_time : float
+        Time of the fresh check models and solves [s].
+    solve_time : float
+        Time per solve with the family model [s] (median, the solve's own timing).
+    p0_vs_hertz : tuple of (float, float)
+        Range of the family model's ``p0 / p0_Hertz - 1`` over the scanned load cases [-]
+        (where Hertz applies; NaN otherwise).
+    n_scanned : int
+        Load cases solved with the family model during the verification.
+    n_rebuilt : int
+        Angles the model does not cover (solved with models of their own).
+    estimated : list of tuple
+        As ``checks``, for candidates whose reuse error was only estimated (module docstring:
+        well below the checked worst).
     """
 
     id: int
@@ -86,7 +112,13 @@ class FamilyRecord:
     estimated: list = field(default_factory=list)
 
     def to_dict(self) -> dict:
-        """The record as JSON-able lists and numbers (``plan.json``, provenance)."""
+        """The record as JSON-able lists and numbers (``plan.json``, provenance).
+
+        Returns
+        -------
+        dict
+            Field name -> value (tuples as lists; the fields' units).
+        """
         return {"id": self.id, "rho_ref": self.rho_ref, "a_ref": self.a_ref,
                 "n_angles": self.n_angles, "a_ratio": list(self.a_ratio),
                 "kappa": list(self.kappa), "checks": [list(c) for c in self.checks],
@@ -98,7 +130,18 @@ class FamilyRecord:
     @classmethod
     def from_dict(cls, d: dict) -> FamilyRecord:
         """The record of :meth:`to_dict` (``plan.json`` of a resumed sweep; files written
-        before ``estimated`` existed load with none)."""
+        before ``estimated`` existed load with none).
+
+        Parameters
+        ----------
+        d : dict
+            A dict written by :meth:`to_dict`.
+
+        Returns
+        -------
+        FamilyRecord
+            The record.
+        """
         return cls(**{**d, "a_ratio": tuple(d["a_ratio"]), "kappa": tuple(d["kappa"]),
                       "p0_vs_hertz": tuple(d.get("p0_vs_hertz", (math.nan, math.nan))),
                       "checks": [tuple(c) for c in d["checks"]],

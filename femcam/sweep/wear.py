@@ -57,7 +57,14 @@ class WearSetup:
     error: str = ""
 
     def to_dict(self) -> dict:
-        """JSON-able record for the provenance (``k_m3_per_N_m``, ``slip_model``, ...)."""
+        """JSON-able record for the provenance.
+
+        Returns
+        -------
+        dict
+            ``k_m3_per_N_m`` (Archard k [m^3/(N m)]), ``slip_model``, ``depth`` (how the depth
+            column is defined) and ``error`` (only when wear is not computed).
+        """
         out = {"k_m3_per_N_m": self.k, "slip_model": self.model,
                "depth": "per revolution at the contact point: k (pi a p0 / 2) v_slip / V_cam"}
         if self.error:
@@ -144,11 +151,19 @@ def wear_setup(scene, theta, st) -> WearSetup:
     are NaN, the reason is recorded in the provenance and warned about: wear never stops a
     contact sweep. Programming errors (AttributeError, TypeError, ...) propagate.
 
-    Parameters: as :func:`slip_for_angles`.
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene (its ``[wear]`` table and follower).
+    theta : ndarray, shape (n,)
+        Cam angles [rad].
+    st : femcam.scene.SceneState
+        ``scene.analyse(theta)``.
 
     Returns
     -------
     WearSetup
+        ``k`` [m^3/(N m)] and the slip at the ``n`` angles, or NaN/None and the reason.
     """
     try:
         k = float(wear_coefficient_info(scene)[0])
