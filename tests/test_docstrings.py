@@ -24,9 +24,7 @@ PENDING: set[str] = {
 
 
 
-    "femcam/fe",
 
-    "femcam/layers",
 
     "femcam/bodies",
 
