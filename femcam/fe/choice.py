@@ -196,7 +196,7 @@ class AngleResult:
     stick_width : float
         Width of the stick zone [m].
     slip_state : str
-        ``"none"``, ``"partial slip"`` or ``"sliding"``.
+        One of :data:`femcam.fe.traction.SLIP_STATES`.
     result : ContactResult or None
         The answering FE result; None for Hertz.
     """
