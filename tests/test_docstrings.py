@@ -30,9 +30,7 @@ PENDING: set[str] = {
 
 
 
-    "femcam/fe",
 
-    "femcam/layers",
 
     "femcam/bodies",
 

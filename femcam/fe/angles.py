@@ -42,10 +42,25 @@ _SIDE = 1e-9
 
 @dataclass(frozen=True)
 class CurvatureJump:
-    """A junction where the cam surface curvature jumps: angle ``theta`` (rad), the ``s''`` step
-    ``jump_s2`` (m/rad^2), the cam radius of curvature on each side (m, signed) and the speeds
-    ``speed_left, speed_right`` (m/rad) of the contact point along the cam surface on each side
-    (they differ: the speed is ``|dP/dtheta| = rho |dpsi/dtheta|`` with the local rho)."""
+    """A junction where the cam surface curvature jumps (a step in ``s''``).
+
+    The contact-point speeds differ on the two sides: ``|dP/dtheta| = rho |dpsi/dtheta|`` with
+    the local rho.
+
+    Parameters
+    ----------
+    theta : float
+        Cam angle of the junction [rad].
+    jump_s2 : float
+        Step of ``s''`` across the junction [m/rad^2].
+    rho_left, rho_right : float
+        Cam surface radius of curvature just before / after the junction [m], signed
+        (negative = concave).
+    speed_left, speed_right : float
+        Speed ``|dP/dtheta|`` of the contact point along the cam surface before / after [m/rad].
+    left, right : str
+        Names of the cam-program segments before / after the junction.
+    """
 
     theta: float
     jump_s2: float
@@ -57,8 +72,18 @@ class CurvatureJump:
     right: str
 
     def span(self, a: float) -> tuple[float, float]:
-        """Cam-angle spans (rad) before and after ``theta`` over which a contact of half-width
-        ``a`` (m) straddles the jump: ``(a / speed_left, a / speed_right)``."""
+        """Cam-angle spans before and after ``theta`` over which a contact straddles the jump.
+
+        Parameters
+        ----------
+        a : float
+            Contact half-width [m], > 0.
+
+        Returns
+        -------
+        tuple of float
+            ``(a / speed_left, a / speed_right)`` [rad].
+        """
         a = _validate.positive("a", a, "m")
         return a / self.speed_left, a / self.speed_right
 
@@ -67,7 +92,19 @@ def curvature_jumps(program, follower, *, tip_radius: float | None = None) -> li
     """Every junction of ``program`` with a step in ``s''`` (from
     :meth:`femcam.kinematics.CamProgram.junctions`), with the cam radius on both sides.
 
-    Knife-edge followers need ``tip_radius`` (m): the cam cut for the radiused tip.
+    Parameters
+    ----------
+    program : femcam.kinematics.CamProgram
+        The cam program (lift vs cam angle).
+    follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
+        The follower geometry (:mod:`femcam.profile`).
+    tip_radius : float, optional
+        Knife-edge followers only (required there): tip radius of the cam cut [m].
+
+    Returns
+    -------
+    list of CurvatureJump
+        One per junction with a step in ``s''`` or ``s'``, in the program's order.
     """
     gen, _ = contact_geometry(program, follower, tip_radius)
     out = []
@@ -89,8 +126,27 @@ def refine_angles(theta, jumps, a, *, n_refine: int = 8, extra_deg=(0.05, 0.1)):
     ``n_refine`` angles evenly spaced over each side of its straddle span (``a`` the contact
     half-width there, m, scalar or one per jump) and the offsets ``extra_deg`` (deg).
 
-    Returns ``(theta_sorted, curvature_jump)`` where ``curvature_jump`` flags the angles inside a
-    straddle span (the rows a sweep marks ``curvature_jump``). Angles are compared mod 2 pi.
+    Angles are compared mod 2 pi.
+
+    Parameters
+    ----------
+    theta : array_like of float
+        Requested cam angles [rad].
+    jumps : sequence of CurvatureJump
+        The junctions (:func:`curvature_jumps`).
+    a : float or array_like, shape (len(jumps),)
+        Contact half-width at each junction [m], > 0.
+    n_refine : int, optional
+        Angles added on each side of each straddle span.
+    extra_deg : sequence of float, optional
+        Extra offsets from each junction, added on both sides [deg].
+
+    Returns
+    -------
+    theta_sorted : ndarray of float, shape (m,)
+        Sorted unique angles in ``[0, 2 pi)`` [rad].
+    curvature_jump : ndarray of bool, shape (m,)
+        True for the angles inside a straddle span (the rows a sweep marks ``curvature_jump``).
 
     >>> from femcam.fe.angles import CurvatureJump
     >>> j = CurvatureJump(1.0, 0.1, 0.02, -0.07, 0.02, 0.02, "dwell", "rise")

@@ -100,6 +100,22 @@ def contact_last_order(K: sp.csr_matrix, free: np.ndarray, last: np.ndarray,
     returns the same ``perm_c`` as ``splu`` at a fraction of the cost). Ordering the reduced
     graph, not the whole one with the ``last`` DOFs moved afterwards, is what keeps the fill of
     the constrained order low (docs/performance.md).
+
+    Parameters
+    ----------
+    K : scipy.sparse.csr_matrix, shape (n_dofs, n_dofs)
+        Global stiffness [N/m per unit thickness]; only its sparsity pattern is used.
+    free : ndarray of int, shape (n_free,)
+        Global indices of the unconstrained DOFs (the factorised ones).
+    last : ndarray of int
+        Global indices of the DOFs to order last (the contact-surface DOFs).
+    ordering : str
+        SuperLU ``permc_spec`` (e.g. ``"MMD_AT_PLUS_A"``).
+
+    Returns
+    -------
+    ndarray of int, shape (n_free,)
+        Positions in ``free``, in factor order, the ``last`` DOFs (those in ``free``) at the end.
     """
     n_nodes = K.shape[0] // 2
     pos = np.full(K.shape[0], -1)

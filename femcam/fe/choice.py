@@ -51,8 +51,25 @@ MODELS = ("hertz", "fe_arc", "fe_exact")
 @dataclass(frozen=True, eq=False)
 class RealCam:
     """A built FE model for one follower on one cam program (see :func:`build_real_cam`).
-    ``swapped``: flat-faced follower, the FE "cam" body is the follower and the FE "roller" the
-    cam (:data:`femcam.fe.followers.FLAT_FACE_BODIES`)."""
+
+    Parameters
+    ----------
+    program : femcam.kinematics.CamProgram
+        The cam program.
+    follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
+        The follower (:mod:`femcam.profile`).
+    model : ContactModel
+        The built two-body FE model.
+    tip_radius : float or None
+        Knife-edge tip radius [m]; None for the other followers.
+    face_length : float or None
+        Flat-face length [m]; None = no edge-contact check.
+    swapped : bool
+        Flat-faced follower: the FE "cam" body is the follower and the FE "roller" the cam
+        (:data:`femcam.fe.followers.FLAT_FACE_BODIES`).
+    E_star : float
+        Contact modulus ``E*`` [Pa].
+    """
 
     program: object
     follower: object
@@ -67,8 +84,39 @@ def build_real_cam(*, program, follower, cam, roller, length: float, F_ref: floa
                    plane: str = "strain", tip_radius: float | None = None,
                    face_length: float | None = None, mesh: MeshOptions | None = None,
                    solver: SolverOptions | None = None) -> RealCam:
-    """Build the FE model of a follower family: ``F_ref`` (N) and ``rho_ref`` (m, the cam radius)
-    set the reference half-width ``a_ref`` (Hertz). Knife-edge needs ``tip_radius`` (m)."""
+    """Build the FE model of a follower family; ``F_ref`` and ``rho_ref`` set the reference
+    half-width ``a_ref`` (Hertz) that sizes the mesh.
+
+    Parameters
+    ----------
+    program : femcam.kinematics.CamProgram
+        The cam program.
+    follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
+        The follower (:mod:`femcam.profile`).
+    cam, roller : femcam.materials.Material
+        Materials of the cam and of the follower.
+    length : float
+        Contact face width [m].
+    F_ref : float
+        Reference contact force [N], > 0.
+    rho_ref : float
+        Reference cam radius of curvature [m] (signed, ``inf`` = flat).
+    plane : {"strain", "stress"}, optional
+        Plane-elasticity assumption.
+    tip_radius : float, optional
+        Knife-edge tip radius [m] (required for a knife-edge follower).
+    face_length : float, optional
+        Flat-face length [m]; None = no edge-contact check.
+    mesh : femcam.mesh.MeshOptions, optional
+        Mesh options (default ``MeshOptions()``).
+    solver : SolverOptions, optional
+        Solver options (default ``SolverOptions()``).
+
+    Returns
+    -------
+    RealCam
+        The built model, to pass to :func:`solve_angle`.
+    """
     _, R = contact_geometry(program, follower, tip_radius)
     F_ref = _validate.positive("F_ref", F_ref, "N")
     rho_ref = _validate.number("rho_ref", rho_ref, "m")
@@ -87,9 +135,29 @@ def build_real_cam(*, program, follower, cam, roller, length: float, F_ref: floa
 
 
 def mechanism_Q(Omega, theta, omega: float, *, J: float, T_drag: float, Rr: float) -> np.ndarray:
-    """Tangential force on the cam along local x (N) from the roller spin ``Omega`` (rad/s,
-    counter-clockwise, one periodic revolution on the uniform grid ``theta``):
-    ``Q = -(J omega dOmega/dtheta + T_drag sign Omega) / Rr``."""
+    """Tangential force on the cam along local x from the roller spin:
+    ``Q = -(J omega dOmega/dtheta + T_drag sign Omega) / Rr``.
+
+    Parameters
+    ----------
+    Omega : array_like of float, shape (n,)
+        Roller spin [rad/s], counter-clockwise positive, over one periodic revolution.
+    theta : array_like of float, shape (n,)
+        The uniform cam-angle grid of ``Omega`` [rad] (periodic central differences).
+    omega : float
+        Cam speed [rad/s].
+    J : float
+        Roller polar moment of inertia about its axle [kg m^2], > 0.
+    T_drag : float
+        Roller bearing drag torque [N m], >= 0.
+    Rr : float
+        Roller radius [m], > 0.
+
+    Returns
+    -------
+    ndarray of float, shape (n,)
+        ``Q`` on the cam along local x [N].
+    """
     Om = _validate.finite_array("Omega", Omega, "rad/s")
     th = _validate.finite_array("theta", theta, "rad")
     dth = float(np.mean(np.diff(th)))
@@ -101,9 +169,37 @@ def mechanism_Q(Omega, theta, omega: float, *, J: float, T_drag: float, Rr: floa
 
 @dataclass(frozen=True, eq=False)
 class AngleResult:
-    """Per-angle answer: the model that answered (:data:`MODELS`) and why, p0 of each model
-    computed (Pa, nan if not), error estimates (%), traction (Q in N on the cam along local x,
-    stick width in m) and the answering FE result (None for Hertz)."""
+    """Per-angle answer: the model that answered and why, p0 of each model, error estimates,
+    traction and the answering FE result.
+
+    Parameters
+    ----------
+    theta : float
+        Cam angle [rad].
+    model : str
+        The model that answered, one of :data:`MODELS`.
+    reason : str
+        Why that model answered.
+    curvature_jump : bool
+        The angle is inside the straddle span of a curvature jump.
+    p0 : float
+        Peak pressure of the answering model [Pa] (largest nodal pressure for the FE).
+    p0_hertz, p0_arc, p0_exact : float
+        Peak pressure of Hertz, FE with the arc gap, FE with the exact gap [Pa]; nan if not
+        computed.
+    est_err_hertz_pct, est_err_arc_pct : float
+        Estimated p0 errors of Hertz and of the arc-gap FE [%].
+    Q : float
+        Tangential force on the cam along local x [N].
+    Q_over_muFc : float
+        ``Q / (mu Fc)`` [-]; nan when ``mu = 0``.
+    stick_width : float
+        Width of the stick zone [m].
+    slip_state : str
+        One of :data:`femcam.fe.traction.SLIP_STATES`.
+    result : ContactResult or None
+        The answering FE result; None for Hertz.
+    """
 
     theta: float
     model: str
@@ -127,7 +223,13 @@ class AngleResult:
         return 100.0 * (self.p0_arc / self.p0_exact - 1.0)
 
     def row(self) -> dict:
-        """CSV columns (units in the names)."""
+        """CSV columns (units in the names).
+
+        Returns
+        -------
+        dict
+            Column name -> value: ``theta_deg``, ``p0_MPa``, ``Q_N``, ``stick_width_um``, ...
+        """
         return {"theta_deg": math.degrees(self.theta), "model": self.model,
                 "curvature_jump": self.curvature_jump, "p0_MPa": self.p0 / 1e6,
                 "p0_hertz_MPa": self.p0_hertz / 1e6, "exact_vs_arc_p0_pct": self.exact_vs_arc_p0_pct,
@@ -162,8 +264,36 @@ def solve_angle(rc: RealCam, theta: float, F: float, *, mu: float, Q: float | No
     Roller: ``Q`` (N, on the cam along local x; :func:`mechanism_Q`) is solved as partial slip;
     knife-edge and flat-faced slide fully in the direction of the sliding velocity. The
     cheapest model within ``tol_pct`` answers (module docstring); ``force_exact`` or
-    ``curvature_jump`` also solves both FE gaps. Refuses (PhysicsError with the angle) a cusp or
-    undercut in the contact zone and a flat-face edge contact.
+    ``curvature_jump`` also solves both FE gaps.
+
+    Parameters
+    ----------
+    rc : RealCam
+        The built model (:func:`build_real_cam`).
+    theta : float
+        Cam angle [rad].
+    F : float
+        Contact force [N], > 0.
+    mu : float
+        Coefficient of friction [-].
+    Q : float, optional
+        Roller only: tangential force on the cam along local x [N] (None = 0).
+    curvature_jump : bool, optional
+        The angle straddles a curvature jump: solve both FE gaps, p0 the largest nodal pressure.
+    tol_pct : float, optional
+        Accepted estimated p0 error of the cheapest model [%].
+    force_exact : bool, optional
+        Solve both FE gaps whatever the estimates.
+
+    Returns
+    -------
+    AngleResult
+        The per-angle answer.
+
+    Raises
+    ------
+    PhysicsError
+        A cusp or undercut in the contact zone, or a flat-face edge contact (naming the angle).
     """
     m = rc.model
     F = _validate.positive("F", F, "N")

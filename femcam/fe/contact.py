@@ -40,7 +40,20 @@ from ..errors import ConvergenceError
 
 
 def edge_midside_dofs(body, contact: np.ndarray) -> np.ndarray | None:
-    """Vector DOF pairs (2, n_edges) of the midside nodes of consecutive contact vertices."""
+    """Vector DOF pairs of the midside nodes of consecutive contact vertices.
+
+    Parameters
+    ----------
+    body : femcam.fe.elasticity.Body
+        The assembled body.
+    contact : ndarray of int, shape (n_c,)
+        Mesh vertex indices of the contact nodes, in order along the surface.
+
+    Returns
+    -------
+    ndarray of int, shape (2, n_c - 1), or None
+        ``(u_x, u_y)`` DOFs of the midside node of each contact edge; None for P1 elements.
+    """
     if body.element != "P2":
         return None
     facets = body.mesh.facets  # (2, nf), sorted so facets[0] < facets[1]
@@ -58,9 +71,27 @@ def edge_midside_dofs(body, contact: np.ndarray) -> np.ndarray | None:
 
 
 def load_operator(body, contact: np.ndarray, x: np.ndarray, component: int) -> sp.csc_matrix:
-    """Sparse ``B`` (n_dofs, n_c): nodal forces in direction ``component`` (0 x, 1 y) of unit hats
-    (a hat loads its vertex and the midside nodes of its two edges: at a/h = 40 the dense
-    ``(n_dofs, n_c)`` array was 107 MB per body and direction)."""
+    """Sparse ``B``: consistent nodal forces of unit pressure hats (a hat loads its vertex and
+    the midside nodes of its two edges: at a/h = 40 the dense ``(n_dofs, n_c)`` array was 107 MB
+    per body and direction).
+
+    Parameters
+    ----------
+    body : femcam.fe.elasticity.Body
+        The assembled body.
+    contact : ndarray of int, shape (n_c,)
+        Mesh vertex indices of the contact nodes, in order along the surface.
+    x : ndarray of float, shape (n_c,)
+        Abscissae of the contact nodes [m] (edge lengths are projected on x).
+    component : int
+        Load direction: 0 = x, 1 = y.
+
+    Returns
+    -------
+    scipy.sparse.csc_matrix, shape (n_dofs, n_c)
+        ``B[i, k] = int N_i L_k ds`` [m]: nodal force per unit thickness [N/m] per unit nodal
+        pressure [Pa].
+    """
     nc = contact.size
     # edge lengths projected on x: small-slope theory, as in Hertz (docs/fe.md, "Limits of the
     # model"). The arc slope is x/R, so the true edge is longer by ~ (x/R)^2 / 2: 3e-4 h at the
@@ -83,12 +114,40 @@ def load_operator(body, contact: np.ndarray, x: np.ndarray, component: int) -> s
 
 
 def load_matrix(body, contact: np.ndarray, x: np.ndarray, component: int) -> np.ndarray:
-    """Dense ``B`` (n_dofs, n_c) of :func:`load_operator`."""
+    """Dense ``B`` of :func:`load_operator`.
+
+    Parameters
+    ----------
+    body : femcam.fe.elasticity.Body
+        The assembled body.
+    contact : ndarray of int, shape (n_c,)
+        Mesh vertex indices of the contact nodes.
+    x : ndarray of float, shape (n_c,)
+        Abscissae of the contact nodes [m].
+    component : int
+        Load direction: 0 = x, 1 = y.
+
+    Returns
+    -------
+    ndarray of float, shape (n_dofs, n_c)
+        ``B`` [m] (nodal force per unit thickness [N/m] per unit nodal pressure [Pa]).
+    """
     return load_operator(body, contact, x, component).toarray()
 
 
 def trapezoid_weights(x: np.ndarray) -> np.ndarray:
-    """``w_k = int L_k dx`` for P1 hats on the nodes ``x`` (m)."""
+    """Trapezoid weights ``w_k = int L_k dx`` of P1 hats.
+
+    Parameters
+    ----------
+    x : ndarray of float, shape (n,)
+        Increasing node abscissae [m].
+
+    Returns
+    -------
+    ndarray of float, shape (n,)
+        ``w_k`` [m]; ``w @ p`` is the load per unit face width [N/m] for ``p`` in Pa.
+    """
     hs = np.diff(x)
     w = np.zeros(x.size)
     w[:-1] += hs / 2

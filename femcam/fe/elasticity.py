@@ -41,11 +41,40 @@ CHUNK = 20
 
 @dataclass(frozen=True, eq=False)
 class Body:
-    """One assembled, supported and factorised elastic body.
+    """One assembled, supported and factorised elastic body (built by :func:`assemble_body`).
 
-    mesh: skfem MeshTri; basis: vector basis; K: full stiffness (csr); free: free DOF indices;
-    lu: SuperLU factor of K[free][:, free]; lam, mu_L: Lamé parameters (Pa); t_assembly,
-    t_factor: seconds.
+    Parameters
+    ----------
+    name : str
+        Body name (``geometry.name``).
+    geometry : femcam.mesh.BodyMesh
+        The meshed body.
+    material : femcam.materials.Material
+        Its material (a :class:`femcam.layers.CoatedMaterial` for a coated body).
+    plane : {"strain", "stress"}
+        Plane-elasticity assumption.
+    element : {"P1", "P2"}
+        Triangle element.
+    mesh : skfem.MeshTri
+        The scikit-fem mesh [m].
+    basis : skfem.Basis
+        The vector basis (DOFs interleaved ``(u_x, u_y)`` per node).
+    K : scipy.sparse.csr_matrix, shape (n_dofs, n_dofs)
+        Full stiffness [N/m per unit thickness].
+    free : ndarray of int, shape (n_free,)
+        Free (unsupported) DOF indices.
+    lu : scipy.sparse.linalg.SuperLU
+        Factor of ``K[free][:, free]`` (in the order ``perm`` if set).
+    lam, mu_L : float
+        Lamé parameters [Pa] (plane-stress ``lambda*`` when ``plane="stress"``).
+    t_assembly, t_factor : float
+        Wall time of the assembly and of the factorisation [s].
+    lam_e, mu_e : ndarray of float, shape (n_el,), or None
+        Element-wise Lamé parameters [Pa] of a layered body; None when homogeneous.
+    perm : ndarray of int, shape (n_free,), or None
+        Factor order of the free DOFs (``lu`` factorises ``K_ff[perm][:, perm]``), or None.
+    last : ndarray of int, or None
+        Global DOF indices ordered last in the factor (the contact surface), or None.
     """
 
     name: str
@@ -72,6 +101,7 @@ class Body:
 
     @property
     def n_dofs(self) -> int:
+        """Number of global DOFs (two per node)."""
         return int(self.basis.N)
 
     def _lu_solve(self, rhs_free: np.ndarray) -> np.ndarray:
@@ -82,8 +112,19 @@ class Body:
         return out
 
     def schur_solve(self, G: np.ndarray) -> np.ndarray:
-        """``(K^-1)[last][:, last] @ G`` (dense G with ``len(last)`` rows) from the trailing
-        blocks of the factor (see :meth:`schur_inverse`)."""
+        """``(K^-1)[last][:, last] @ G`` from the trailing blocks of the factor (see
+        :meth:`schur_inverse`); needs a body assembled with ``contact_last=True``.
+
+        Parameters
+        ----------
+        G : ndarray of float, shape (len(last), k)
+            Nodal forces on the ``last`` DOFs [N per unit thickness].
+
+        Returns
+        -------
+        ndarray of float, shape (len(last), k)
+            Displacements of the ``last`` DOFs [m].
+        """
         m = self.free.size
         k = self.last.size
         if not np.array_equal(self.lu.perm_r[m - k:], np.arange(m - k, m)):
@@ -103,6 +144,11 @@ class Body:
         per contact unknown. If SuperLU pivoted rows (never seen with
         ``diag_pivot_thresh = 0`` on this SPD matrix) the trailing block is not ``S``: the
         columns are then solved for (:meth:`_schur_by_solves`).
+
+        Returns
+        -------
+        ndarray of float, shape (len(last), len(last))
+            Contact compliance ``(K^-1)[last][:, last]`` [m/N per unit thickness].
         """
         return self.schur_solve(np.eye(self.last.size))
 
@@ -113,7 +159,18 @@ class Body:
         return self.solve_apply(E, E.T)
 
     def solve(self, f: np.ndarray) -> np.ndarray:
-        """Displacements for nodal forces ``f`` (N; shape (N,) or (N, k)); zero on supports."""
+        """Displacements for nodal forces ``f``; zero on the supports.
+
+        Parameters
+        ----------
+        f : ndarray of float, shape (n_dofs,) or (n_dofs, k)
+            Nodal forces [N per unit thickness].
+
+        Returns
+        -------
+        ndarray of float, same shape as ``f``
+            Nodal displacements [m].
+        """
         f = np.asarray(f, dtype=float)
         u = np.zeros_like(f)
         # one BLAS thread: SuperLU's triangular solves call BLAS on small blocks, and OpenBLAS
@@ -141,6 +198,18 @@ class Body:
         :data:`CHUNK` right-hand sides are solved and projected in turn, so the memory is that of
         the result (at a/h = 40 the full ``K^-1 F`` of one body was 2 x 107 MB, plus the dense
         ``F``). Same factor and block size as :meth:`solve`.
+
+        Parameters
+        ----------
+        F : sparse matrix or ndarray, shape (n_dofs, k)
+            Nodal forces [N per unit thickness].
+        P : sparse matrix or ndarray, shape (m, n_dofs)
+            Output operator applied to the displacements [m] (e.g. :func:`stress_operator`).
+
+        Returns
+        -------
+        ndarray of float, shape (m, k)
+            ``P @ K^-1 F``, in the units of ``P`` times m.
         """
         idx = self.free if self.perm is None else self.free[self.perm]  # in factor order
         Ff = sp.csr_matrix(F)[idx].tocsc()
@@ -164,7 +233,24 @@ def _element(element: str):
 
 
 def contact_surface_dofs(mesh, basis, element: str, contact: np.ndarray) -> np.ndarray:
-    """Vector DOFs (x and y) of the contact vertices and of the midside nodes between them."""
+    """Vector DOFs (x and y) of the contact vertices and of the midside nodes between them.
+
+    Parameters
+    ----------
+    mesh : skfem.MeshTri
+        The body mesh.
+    basis : skfem.Basis
+        Its vector basis.
+    element : {"P1", "P2"}
+        Triangle element of ``basis``.
+    contact : array_like of int, shape (n_c,)
+        Mesh vertex indices of the contact nodes, in order along the surface.
+
+    Returns
+    -------
+    ndarray of int
+        Sorted unique global DOF indices.
+    """
 
     md = edge_midside_dofs(SimpleNamespace(element=element, mesh=mesh, basis=basis),
                            np.asarray(contact))
@@ -186,6 +272,33 @@ def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strai
     factor (:func:`femcam.fe.assembly.contact_last_order`), so that :meth:`Body.schur_inverse`
     gives the contact compliance (a little more fill than ``ordering`` alone: 13.0 M vs 10.4 M
     nonzeros in L + U for the cam at a/h = 40).
+
+    Parameters
+    ----------
+    geometry : femcam.mesh.BodyMesh
+        The meshed body [m] (its ``fixed`` nodes are clamped unless ``supports`` is given).
+    material : femcam.materials.Material
+        Its material (a :class:`femcam.layers.CoatedMaterial` gives the coating band its own).
+    plane : {"strain", "stress"}, optional
+        Plane-elasticity assumption.
+    element : {"P1", "P2"}, optional
+        Triangle element.
+    ordering : str, optional
+        SuperLU column ordering, one of :data:`ORDERINGS`.
+    supports : tuple of (int, int), optional
+        ``((node, component), ...)`` point supports replacing the clamped curve.
+    contact_last : bool, optional
+        Order the contact-surface DOFs last in the factor.
+
+    Returns
+    -------
+    Body
+        The assembled, supported and factorised body.
+
+    Raises
+    ------
+    FemcamError
+        The stiffness of the free block is singular (support missing).
     """
     from skfem import Basis, MeshTri  # skfem: kept out of ``import femcam`` (tests/test_imports.py)
 
@@ -240,8 +353,26 @@ def _coating_lame(geometry: BodyMesh, material: Material, plane, lam, mu_L):
 
 
 def probe_matrix(body: Body, xy: np.ndarray) -> sp.csr_matrix:
-    """Sparse ``P`` with ``P @ f`` = the scalar nodal field ``f`` of ``body`` interpolated at the
-    points ``xy`` (2, n) (m, body frame); ``ValueError`` when a point lies outside the mesh."""
+    """Sparse ``P`` with ``P @ f`` = the scalar nodal field ``f`` of ``body`` interpolated at
+    points.
+
+    Parameters
+    ----------
+    body : Body
+        The assembled body.
+    xy : ndarray of float, shape (2, n)
+        Points in the body frame [m].
+
+    Returns
+    -------
+    scipy.sparse.csr_matrix, shape (n, n_dofs // 2)
+        Interpolation weights [-] on the scalar nodes.
+
+    Raises
+    ------
+    ValueError
+        A point lies outside the mesh (raised by scikit-fem).
+    """
     from skfem import Basis  # skfem: kept out of ``import femcam`` (tests/test_imports.py)
 
     return Basis(body.mesh, body.basis.elem.elem).probes(xy)
@@ -253,6 +384,19 @@ def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matri
     ``nodes`` selects scalar nodes (indices into the scalar DOF numbering of ``body.basis``,
     vertices first then edge midpoints for P2); default all. Built from the reference-element
     shape-function gradients at the element nodes, then averaged over neighbouring elements.
+
+    Parameters
+    ----------
+    body : Body
+        The assembled body.
+    nodes : ndarray of int, shape (n,), optional
+        Scalar node indices; default all ``n_dofs // 2`` nodes.
+
+    Returns
+    -------
+    scipy.sparse.csr_matrix, shape (3 n, n_dofs)
+        Stress per unit nodal displacement [Pa/m]; rows ``sxx`` of every node, then ``syy``,
+        then ``sxy``.
     """
     b = body.basis
     mesh = body.mesh
@@ -315,5 +459,16 @@ def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matri
 
 
 def scalar_node_coordinates(body: Body) -> np.ndarray:
-    """(2, nscal) coordinates of the scalar nodes (vertices, then edge midpoints for P2)."""
+    """Coordinates of the scalar nodes (vertices, then edge midpoints for P2).
+
+    Parameters
+    ----------
+    body : Body
+        The assembled body.
+
+    Returns
+    -------
+    ndarray of float, shape (2, n_dofs // 2)
+        ``(x, y)`` of each scalar node in the body frame [m].
+    """
     return body.basis.doflocs[:, ::2]

@@ -35,6 +35,18 @@ def stress_tensor(sx, sz, sy, txz, sign: float):
     ``sx, sz, txz`` are in the body's Johnson frame (``z`` depth), ``sy`` out of plane; the FE
     frame has ``y`` from the cam into the roller, so ``XY = sign * txz`` with ``sign = -1`` for
     the cam (below, ``y = -z``) and ``+1`` for the roller (:func:`femcam.fe.recovery.johnson_frame`).
+
+    Parameters
+    ----------
+    sx, sz, sy, txz : array_like of float, shape (n,)
+        Stresses in the body's Johnson frame [Pa] (``sy`` out of plane).
+    sign : float
+        ``-1`` for the cam, ``+1`` for the roller.
+
+    Returns
+    -------
+    ndarray of float, shape (n, 6)
+        ``XX, YY, ZZ, XY, YZ, XZ`` in the FE frame [Pa].
     """
     zero = np.zeros_like(np.asarray(sx, float))
     return np.column_stack([sx, sz, sy, sign * np.asarray(txz, float), zero, zero])
@@ -42,13 +54,46 @@ def stress_tensor(sx, sz, sy, txz, sign: float):
 
 def vtk_point_data(data: dict) -> dict:
     """Point data as written to .vtu: the stress tensor as one array ``stress_Pa`` (replacing
-    ``sx, sz, txz, sy``) and every name with its unit (:data:`VTK_NAMES`)."""
+    ``sx, sz, txz, sy``) and every name with its unit (:data:`VTK_NAMES`).
+
+    Parameters
+    ----------
+    data : dict of str to ndarray
+        Point data of :func:`scene_arrays` (SI units, unit-free names).
+
+    Returns
+    -------
+    dict of str to ndarray
+        The same arrays under their VTU names, without ``sx, sz, txz, sy``.
+    """
     return {VTK_NAMES.get(k, k): v for k, v in data.items() if k not in ("sx", "sz", "txz", "sy")}
 
 
 def scene_arrays(result, model=None):
-    """(points (n, 3), cells (nel, k), cell_type, point_data, body_id) for both bodies
-    (``model``: the solving model, needed for an unpickled ``result``)."""
+    """Mesh and point data of both bodies, ready for meshio.
+
+    Parameters
+    ----------
+    result : ContactResult
+        A solved contact.
+    model : ContactModel, optional
+        The solving model, needed for an unpickled ``result``.
+
+    Returns
+    -------
+    points : ndarray of float, shape (n, 3)
+        Node coordinates in the FE contact frame [m] (``z = 0``), cam nodes first.
+    cells : ndarray of int, shape (n_el, k)
+        Node indices per triangle (``k = 6`` for P2, 3 for P1).
+    cell_type : str
+        ``"triangle6"`` or ``"triangle"``.
+    point_data : dict of str to ndarray
+        Per node: ``sx, sz, txz, sy, tau1, von_mises`` [Pa], ``stress`` (n, 6) [Pa],
+        ``displacement`` (n, 3) [m], ``depth`` [m], ``contact_pressure`` and
+        ``contact_traction`` [Pa].
+    body_id : ndarray of int, shape (n_el,)
+        0 for cam cells, 1 for roller cells.
+    """
 
     model = result.model_or(model)
     keys = (*FIELDS, "displacement", "depth", "contact_pressure", "contact_traction", "stress")
@@ -87,7 +132,22 @@ def scene_arrays(result, model=None):
 
 
 def write_vtu(result, path, model=None) -> Path:
-    """Write ``result`` (a :class:`~femcam.fe.ContactResult`) to ``path`` (.vtu); returns the path."""
+    """Write ``result`` to a .vtu file (both bodies, arrays named by :data:`VTK_NAMES`).
+
+    Parameters
+    ----------
+    result : ContactResult
+        A solved contact.
+    path : str or pathlib.Path
+        Output file; its suffix is replaced by ``.vtu`` if different. Parent folders are made.
+    model : ContactModel, optional
+        The solving model, needed for an unpickled ``result``.
+
+    Returns
+    -------
+    pathlib.Path
+        The path written.
+    """
     import meshio  # lazy: meshio loads its many format plugins; only .vtu export needs it
 
     path = Path(path)

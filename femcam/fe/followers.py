@@ -40,9 +40,21 @@ FLAT_FACE_BODIES = {"cam": "follower", "roller": "cam"}
 
 
 def fe_radius(follower, *, tip_radius: float | None = None) -> float:
-    """Radius (m) of the FE "roller" body's surface for the follower: ``Rr`` (roller),
-    ``tip_radius`` (knife-edge, required), ``nan`` for flat-faced (the cam's own rho is used,
-    see the module docstring)."""
+    """Radius of the FE "roller" body's surface for the follower.
+
+    Parameters
+    ----------
+    follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
+        The follower (:mod:`femcam.profile`).
+    tip_radius : float, optional
+        Knife-edge tip radius [m] (required for a knife-edge follower).
+
+    Returns
+    -------
+    float
+        ``Rr`` (roller) or ``tip_radius`` (knife-edge) [m]; ``nan`` for flat-faced (the cam's own
+        rho is used, see the module docstring).
+    """
     _, R = contact_geometry(None, follower, tip_radius)
     return math.nan if math.isinf(R) else R
 
@@ -50,7 +62,24 @@ def fe_radius(follower, *, tip_radius: float | None = None) -> float:
 def sliding_sign(program, follower, theta, *, tip_radius: float | None = None) -> np.ndarray:
     """Sign (+1/-1) of the friction traction on the cam along local x for a sliding follower
     (knife-edge with tip radius, flat-faced) at cam angles ``theta`` (rad); see the module
-    docstring. The cam speed only scales the velocities, so it does not enter."""
+    docstring. The cam speed only scales the velocities, so it does not enter.
+
+    Parameters
+    ----------
+    program : femcam.kinematics.CamProgram
+        The cam program.
+    follower : KnifeEdgeFollower or FlatFacedFollower
+        The sliding follower (:mod:`femcam.profile`).
+    theta : array_like of float, shape (n,)
+        Cam angles [rad].
+    tip_radius : float, optional
+        Knife-edge tip radius [m] (required for a knife-edge follower).
+
+    Returns
+    -------
+    ndarray of int, shape (n,)
+        +1 or -1 per angle.
+    """
     th = _validate.finite_array("theta", theta, "rad")
     gen, _ = contact_geometry(program, follower, tip_radius)
     d = program.derivatives(th)
@@ -65,7 +94,24 @@ def sliding_sign(program, follower, theta, *, tip_radius: float | None = None) -
 def rolling_direction(program, follower, theta, *, tip_radius: float | None = None) -> np.ndarray:
     """Direction (+1/-1) in which the cam's surface material flows through the contact along
     local x at ``theta`` (rad): opposite to the travel of the contact point over the cam (the
-    leading edge, where material enters, is at ``x = -rolling a``)."""
+    leading edge, where material enters, is at ``x = -rolling a``).
+
+    Parameters
+    ----------
+    program : femcam.kinematics.CamProgram
+        The cam program.
+    follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
+        The follower (:mod:`femcam.profile`).
+    theta : array_like of float, shape (n,)
+        Cam angles [rad].
+    tip_radius : float, optional
+        Knife-edge tip radius [m] (required for a knife-edge follower).
+
+    Returns
+    -------
+    ndarray of int, shape (n,)
+        +1 or -1 per angle.
+    """
     th = _validate.finite_array("theta", theta, "rad")
     gen, _ = contact_geometry(program, follower, tip_radius)
     dth = 1e-6
@@ -84,7 +130,31 @@ def rolling_direction(program, follower, theta, *, tip_radius: float | None = No
 def face_edge_intervals(program, follower, face_length: float, theta, a) -> list:
     """Cam-angle intervals (rad) where a contact of half-width ``a`` (m, scalar or per angle)
     reaches past the end of a flat face of length ``face_length`` (m) centred on the follower
-    axis: ``|s' - e| + a > face_length / 2``. These are edge contacts."""
+    axis: ``|s' - e| + a > face_length / 2``. These are edge contacts.
+
+    Parameters
+    ----------
+    program : femcam.kinematics.CamProgram
+        The cam program.
+    follower : FlatFacedFollower
+        The flat-faced follower.
+    face_length : float
+        Face length [m], > 0.
+    theta : array_like of float, shape (n,)
+        Cam angles [rad].
+    a : float or array_like, shape (n,)
+        Contact half-width [m].
+
+    Returns
+    -------
+    list of tuple of float
+        ``(theta_start, theta_end)`` intervals of edge contact [rad]; empty if none.
+
+    Raises
+    ------
+    InputError
+        ``follower`` is not flat-faced, or ``face_length`` is not positive.
+    """
     if not isinstance(follower, FlatFacedFollower):
         raise _validate.fail("follower", type(follower).__name__, "", "must be a flat-faced follower")
     L = _validate.positive("face_length", face_length, "m")
@@ -94,8 +164,27 @@ def face_edge_intervals(program, follower, face_length: float, theta, a) -> list
 
 
 def check_face(program, follower, face_length: float | None, theta, a) -> None:
-    """Refuse (PhysicsError naming the angle range in degrees) an edge contact of a flat face;
-    no check without ``face_length`` or for other followers."""
+    """Refuse an edge contact of a flat face; no check without ``face_length`` or for other
+    followers.
+
+    Parameters
+    ----------
+    program : femcam.kinematics.CamProgram
+        The cam program.
+    follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
+        The follower (:mod:`femcam.profile`).
+    face_length : float or None
+        Flat-face length [m]; None = no check.
+    theta : array_like of float, shape (n,)
+        Cam angles [rad].
+    a : float or array_like, shape (n,)
+        Contact half-width [m].
+
+    Raises
+    ------
+    PhysicsError
+        The contact runs past the face end, naming the angle range in degrees.
+    """
     if face_length is None or not isinstance(follower, FlatFacedFollower):
         return
     iv = face_edge_intervals(program, follower, face_length, theta, a)
@@ -107,7 +196,23 @@ def check_face(program, follower, face_length: float | None, theta, a) -> None:
 
 
 def follower_kind(follower) -> str:
-    """'rolling' for a roller, 'sliding' for knife-edge and flat-faced followers."""
+    """Kind of relative motion at the contact.
+
+    Parameters
+    ----------
+    follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
+        The follower (:mod:`femcam.profile`).
+
+    Returns
+    -------
+    str
+        ``"rolling"`` for a roller, ``"sliding"`` for knife-edge and flat-faced followers.
+
+    Raises
+    ------
+    InputError
+        Any other object.
+    """
     if isinstance(follower, RollerFollower):
         return "rolling"
     if isinstance(follower, KnifeEdgeFollower | FlatFacedFollower):

@@ -61,9 +61,21 @@ N_SAMPLES = 4001
 
 @dataclass(frozen=True, eq=False)
 class LocalSurface:
-    """The cam surface near the contact at ``theta`` (rad) in the local frame: ``x, y`` (m,
-    sorted by x), follower radius ``R`` (m, inf for a flat face), ``rho`` the osculating radius
-    (m) at the contact and ``phi`` the pressure angle (rad)."""
+    """The cam surface near the contact at ``theta``, in the local frame.
+
+    Parameters
+    ----------
+    theta : float
+        Cam angle [rad].
+    x, y : ndarray of float, shape (n,)
+        Cam surface points in the local frame [m], sorted by ``x`` (``y <= 0`` for a convex cam).
+    R : float
+        Follower radius [m]; ``inf`` for a flat face.
+    rho : float
+        Osculating radius of the cam surface at the contact [m], signed (negative = concave).
+    phi : float
+        Pressure angle [rad].
+    """
 
     theta: float
     x: np.ndarray
@@ -80,6 +92,27 @@ def contact_geometry(program, follower, tip_radius: float | None = None):
     pitch curve of base radius ``Rb + tip_radius`` (the cam cut for the radiused tip, as in
     :func:`femcam.wear.slip.radiused_tip`); refused without ``tip_radius``. Flat-faced: itself,
     ``R = inf``.
+
+    Parameters
+    ----------
+    program : femcam.kinematics.CamProgram or None
+        The cam program (not used; kept for a uniform call).
+    follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
+        The follower (:mod:`femcam.profile`).
+    tip_radius : float, optional
+        Knife-edge tip radius [m] (required for a knife-edge follower).
+
+    Returns
+    -------
+    generator : RollerFollower or FlatFacedFollower
+        The follower that cuts the cam surface.
+    R : float
+        Its radius [m]; ``inf`` for a flat face.
+
+    Raises
+    ------
+    InputError
+        A knife-edge follower without ``tip_radius``, or not a follower.
     """
     if isinstance(follower, RollerFollower):
         return follower, follower.Rr
@@ -105,8 +138,29 @@ def local_surface(program, follower, theta: float, half_width: float, *,
                   tip_radius: float | None = None) -> LocalSurface:
     """Cam surface points covering ``|x| <= half_width`` (m) around the contact at ``theta`` (rad).
 
-    Raises :class:`PhysicsError` naming the angle when the surface inside the window is undercut
-    or folds back (a cusp: x not monotonic along the surface).
+    Parameters
+    ----------
+    program : femcam.kinematics.CamProgram
+        The cam program.
+    follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
+        The follower (:mod:`femcam.profile`).
+    theta : float
+        Cam angle [rad].
+    half_width : float
+        Half-width of the window to cover [m], > 0.
+    tip_radius : float, optional
+        Knife-edge tip radius [m] (required for a knife-edge follower).
+
+    Returns
+    -------
+    LocalSurface
+        :data:`N_SAMPLES` surface points around the contact, in the local frame.
+
+    Raises
+    ------
+    PhysicsError
+        Naming the angle, when the surface inside the window is undercut or folds back (a cusp:
+        x not monotonic along the surface), or the cam does not cover the window.
     """
     theta = _validate.number("theta", theta, "rad")
     half_width = _validate.positive("half_width", half_width, "m")
@@ -142,9 +196,23 @@ def local_surface(program, follower, theta: float, half_width: float, *,
 
 
 def gap_from_surface(surf: LocalSurface, x, kind: str = "normal") -> np.ndarray:
-    r"""Initial gap (m) at abscissae ``x`` (m) of the local frame; see the module docstring.
+    r"""Initial gap at abscissae ``x`` of the local frame; see the module docstring.
 
     .. math:: g_{normal} = \sqrt{x^2 + (R - y_c)^2} - R, \qquad g_{vertical} = d_R(x) - y_c(x)
+
+    Parameters
+    ----------
+    surf : LocalSurface
+        The cam surface near the contact (:func:`local_surface`).
+    x : array_like of float, shape (n,)
+        Abscissae [m].
+    kind : {"normal", "vertical"}, optional
+        Gap definition (:data:`GAP_KINDS`); a flat face (``R = inf``) gives ``-y_c`` for both.
+
+    Returns
+    -------
+    ndarray of float, shape (n,)
+        Initial gap ``g(x)`` [m].
 
     >>> s = LocalSurface(theta=0.0, x=np.array([-1.0, 1.0]), y=np.array([0.0, 0.0]), R=1.0,
     ...                  rho=math.inf, phi=0.0)
@@ -167,9 +235,30 @@ def exact_gap(program, follower, theta: float, x, *, kind: str = "normal",
               tip_radius: float | None = None) -> np.ndarray:
     """Exact initial gap (m) at the FE contact abscissae ``x`` (m) at cam angle ``theta`` (rad).
 
-    ``program`` a :class:`femcam.kinematics.CamProgram`, ``follower`` any follower of
-    :mod:`femcam.profile` (knife-edge needs ``tip_radius``, m). Returns ``g(x)`` with
-    ``g(0) = 0``; raises :class:`PhysicsError` with the angle for a cusp/undercut in the zone.
+    Parameters
+    ----------
+    program : femcam.kinematics.CamProgram
+        The cam program.
+    follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
+        The follower (:mod:`femcam.profile`).
+    theta : float
+        Cam angle [rad].
+    x : array_like of float, shape (n,)
+        FE contact abscissae [m].
+    kind : {"normal", "vertical"}, optional
+        Gap definition (:data:`GAP_KINDS`).
+    tip_radius : float, optional
+        Knife-edge tip radius [m] (required for a knife-edge follower).
+
+    Returns
+    -------
+    ndarray of float, shape (n,)
+        Initial gap ``g(x)`` [m], ``g(0) = 0``.
+
+    Raises
+    ------
+    PhysicsError
+        Naming the angle, for a cusp or undercut in the contact zone.
     """
     x = _validate.finite_array("x", x, "m")
     hw = float(np.max(np.abs(x))) if x.size else 0.0
@@ -178,14 +267,44 @@ def exact_gap(program, follower, theta: float, x, *, kind: str = "normal",
 
 
 def arc_gap(x, R: float, rho: float) -> np.ndarray:
-    """Today's osculating-arc gap ``d_R(x) + d_rho(x)`` (m), for comparison."""
+    """Osculating-arc gap ``d_R(x) + d_rho(x)`` (the FE model's default), for comparison.
+
+    Parameters
+    ----------
+    x : array_like of float, shape (n,)
+        Abscissae [m].
+    R : float
+        Follower radius [m] (``inf`` = flat).
+    rho : float
+        Cam radius of curvature [m], signed (negative = concave, ``inf`` = flat).
+
+    Returns
+    -------
+    ndarray of float, shape (n,)
+        Initial gap [m].
+    """
     return surface_height(x, R) + surface_height(x, rho)
 
 
 def small_slope_difference(surf: LocalSurface, a: float) -> tuple[float, float]:
     """(max |g_normal - g_vertical| / g_vertical over 0 < |x| <= a, (a / R_min)^2) with
     ``R_min = min(R, |rho|)``: how far the small-slope gap is from the exact one, against the
-    order ``(a/R)^2`` it should scale with (Johnson 1985 §4.1)."""
+    order ``(a/R)^2`` it should scale with (Johnson 1985 §4.1).
+
+    Parameters
+    ----------
+    surf : LocalSurface
+        The cam surface near the contact (:func:`local_surface`).
+    a : float
+        Contact half-width [m], > 0.
+
+    Returns
+    -------
+    rel : float
+        ``max |g_normal - g_vertical| / g_vertical`` over ``0 < |x| <= a`` [-].
+    order : float
+        ``(a / R_min)^2`` [-].
+    """
     a = _validate.positive("a", a, "m")
     x = np.linspace(-a, a, 201)
     x = x[np.abs(x) > 1e-3 * a]

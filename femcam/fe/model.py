@@ -63,21 +63,34 @@ STRESS_OPERATORS = ("precompute", "per_solve")
 class SolverOptions:
     """Contact solver and model-reuse options.
 
-    ordering: SuperLU column ordering (``MMD_AT_PLUS_A`` default, see elasticity.py).
-    max_iter, tol: active-set iteration limit and complementarity tolerance.
-    a_range: model covers load cases with Hertz a / a_ref in this interval.
-    kappa_tol: ... and with |1/rho - 1/rho_ref| * L_cam <= kappa_tol (cam shape reuse).
-    eval_depth: stresses are precomputed at nodes down to eval_depth * a_ref below the surface
-        (and over the fine zone in x).
-    fit_threshold: nodes with p > fit_threshold * max(p) enter the half-width fit.
-    stress_operators: ``"precompute"``: the build condenses the stresses of the window onto the
-        contact unknowns (2 n_c solves per body; each solve then costs a few ms): for models
-        solved at many load cases (sweep families). ``"per_solve"``: the contact DOFs are
-        factorised last and the contact compliance is the Schur complement in the trailing
-        factor blocks (no solve per contact unknown); each solve back-solves both bodies once
-        for the stresses: for one-off models (a single scene, fresh verification models); the
-        two bodies of such a model are built in two threads.
-        Same numbers to ~1e-12; times in docs/performance.md (benchmarks/bench_fe.py --modes).
+    Parameters
+    ----------
+    ordering : str
+        SuperLU column ordering, one of :data:`femcam.fe.elasticity.ORDERINGS`
+        (``MMD_AT_PLUS_A`` default, see elasticity.py).
+    max_iter : int
+        Active-set iteration limit, 1..10000.
+    tol : float
+        Complementarity tolerance (relative residual) [-], > 0.
+    a_range : tuple of float
+        ``(lo, hi)``: the model covers load cases with Hertz ``a / a_ref`` in this interval [-].
+    kappa_tol : float
+        ... and with ``|1/rho - 1/rho_ref| * L_cam <= kappa_tol`` (cam shape reuse; ``L_cam``
+        the cam body size) [-].
+    eval_depth : float
+        Stresses are precomputed at nodes down to ``eval_depth * a_ref`` below the surface (and
+        over the fine zone in x) [-, multiple of a_ref], 0..20.
+    fit_threshold : float
+        Nodes with ``p > fit_threshold * max(p)`` enter the half-width fit [-], 0..0.9.
+    stress_operators : {"precompute", "per_solve"}
+        ``"precompute"``: the build condenses the stresses of the window onto the contact
+        unknowns (2 n_c solves per body; each solve then costs a few ms): for models solved at
+        many load cases (sweep families). ``"per_solve"``: the contact DOFs are factorised last
+        and the contact compliance is the Schur complement in the trailing factor blocks (no
+        solve per contact unknown); each solve back-solves both bodies once for the stresses:
+        for one-off models (a single scene, fresh verification models); the two bodies of such
+        a model are built in two threads. Same numbers to ~1e-12; times in
+        docs/performance.md (benchmarks/bench_fe.py --modes).
     """
 
     ordering: str = "MMD_AT_PLUS_A"
@@ -144,7 +157,50 @@ def _body_part(name, geo, mat, *, x, plane, element, solver, a_ref) -> SimpleNam
 
 @dataclass(frozen=True, eq=False)
 class ContactModel:
-    """Factorised two-body model; see the module docstring. Build with :meth:`build`."""
+    """Factorised two-body model; see the module docstring. Build with :meth:`build`.
+
+    Parameters
+    ----------
+    Rr : float
+        Roller (FE "roller" body) radius [m].
+    rho_ref : float
+        Cam radius of curvature the cam body is meshed with [m] (signed, ``inf`` = flat).
+    a_ref : float
+        Reference half-width that grades the mesh and sizes the fine zone [m].
+    length : float
+        Face width [m].
+    cam, roller : femcam.materials.Material
+        Materials of the two bodies.
+    plane : {"strain", "stress"}
+        Plane-elasticity assumption.
+    element : {"P1", "P2"}
+        Triangle element.
+    mesh : femcam.mesh.ContactMesh
+        The meshes of both bodies.
+    bodies : dict of str to Body
+        ``"cam"``, ``"roller"``: the assembled, factorised bodies.
+    x : ndarray of float, shape (n_c,)
+        Abscissae of the contact vertices [m].
+    w : ndarray of float, shape (n_c,)
+        Trapezoid weights of the pressure hats [m].
+    An : ndarray of float, shape (n_c, n_c)
+        Normal separation per unit nodal pressure (both bodies) [m/Pa].
+    At : ndarray of float, shape (n_c, n_c)
+        Normal separation per unit nodal tangential traction [m/Pa].
+    Bn, Bt : dict of str to scipy.sparse.csc_matrix, shape (n_dofs_body, n_c)
+        Per body: consistent nodal forces of unit pressure / traction hats, with the body's
+        signs [m].
+    evals : dict of str to femcam.fe.recovery.EvalSet
+        Per body: the stress window.
+    options : SolverOptions
+        Solver options the model was built with.
+    timings : dict of str to float
+        Build phases (mesh, assembly, factorisation, condensation, bodies_wall) [s].
+    n_dofs : int
+        Total DOFs of both bodies.
+    Ctt, Ctn : ndarray of float, shape (n_c, n_c), or None
+        Tangential compliances: ``u_cam,x - u_roller,x`` per unit tangential / normal hat [m/Pa].
+    """
 
     Rr: float
     rho_ref: float
@@ -177,7 +233,40 @@ class ContactModel:
     def build(cls, *, Rr: float, rho_ref: float, cam: Material, roller: Material, length: float,
               a_ref: float, mesh: MeshOptions | None = None, solver: SolverOptions | None = None,
               plane: str = "strain", element: str = "P2") -> ContactModel:
-        """Mesh, assemble, factorise and condense (see module docstring)."""
+        """Mesh, assemble, factorise and condense (see module docstring).
+
+        Parameters
+        ----------
+        Rr : float
+            Roller radius [m], > 0.
+        rho_ref : float
+            Cam radius of curvature to mesh [m], signed (negative = concave, ``inf`` = flat),
+            nonzero.
+        cam, roller : femcam.materials.Material
+            Materials of the two bodies.
+        length : float
+            Face width [m], > 0.
+        a_ref : float
+            Reference half-width [m], > 0 (grades the mesh and sizes the fine zone).
+        mesh : femcam.mesh.MeshOptions, optional
+            Mesh options.
+        solver : SolverOptions, optional
+            Solver options (default ``SolverOptions()``).
+        plane : {"strain", "stress"}, optional
+            Plane-elasticity assumption.
+        element : {"P1", "P2"}, optional
+            Triangle element.
+
+        Returns
+        -------
+        ContactModel
+            The built model.
+
+        Raises
+        ------
+        InputError
+            A bad argument (named, with its value and unit).
+        """
         rho_ref = _radius("rho_ref", rho_ref)
         for name, v, kind, what in (("cam", cam, Material, "Material"),
                                     ("roller", roller, Material, "Material"),
@@ -232,11 +321,39 @@ class ContactModel:
 
     # ------------------------------------------------------------------ validity
     def hertz(self, F: float, rho: float):
-        """Hertz (a, p0) of the load case, (nan, nan) if Hertz does not apply."""
+        """Hertz half-width and peak pressure of the load case (Johnson 1985 eq. 4.45).
+
+        Parameters
+        ----------
+        F : float
+            Contact force over ``length`` [N].
+        rho : float
+            Cam radius of curvature [m], signed (``inf`` = flat).
+
+        Returns
+        -------
+        a : float
+            Half-width [m]; nan if Hertz does not apply (a concave cam that does not fit).
+        p0 : float
+            Peak pressure [Pa]; nan likewise.
+        """
         return _hertz(F, self.length, rho, self.Rr, self.cam, self.roller, self.plane)
 
     def coverage(self, F: float, rho: float) -> str:
-        """Empty string if the model covers (F, rho), else the reason."""
+        """Why the model does not cover a load case (see :class:`SolverOptions`).
+
+        Parameters
+        ----------
+        F : float
+            Contact force over ``length`` [N].
+        rho : float
+            Cam radius of curvature [m], signed (``inf`` = flat).
+
+        Returns
+        -------
+        str
+            Empty if the model covers ``(F, rho)``, else the reason.
+        """
         k = 0.0 if math.isinf(rho) else 1.0 / rho
         k_ref = 0.0 if math.isinf(self.rho_ref) else 1.0 / self.rho_ref
         dk = abs(k - k_ref) * self.mesh.cam.L
@@ -253,7 +370,20 @@ class ContactModel:
         return ""
 
     def covers(self, F: float, rho: float) -> bool:
-        """True if (F, rho) is inside the range this model was built and validated for."""
+        """Whether a load case is inside the range this model was built and validated for.
+
+        Parameters
+        ----------
+        F : float
+            Contact force over ``length`` [N].
+        rho : float
+            Cam radius of curvature [m], signed (``inf`` = flat).
+
+        Returns
+        -------
+        bool
+            True when :meth:`coverage` finds no reason against.
+        """
         return not self.coverage(F, rho)
 
     # ------------------------------------------------------------------ solve
@@ -402,7 +532,23 @@ class ContactModel:
 
     # ------------------------------------------------------------------ full fields
     def full_field(self, r: ContactResult, body: str = "cam"):
-        """Displacement (2, n_scalar) and stresses at all scalar nodes of ``body``."""
+        """Displacement and stresses at all scalar nodes of ``body`` (one back-solve).
+
+        Parameters
+        ----------
+        r : ContactResult
+            A result solved by this model.
+        body : {"cam", "roller"}, optional
+            The body.
+
+        Returns
+        -------
+        u : ndarray of float, shape (2, n)
+            Nodal displacements ``(u_x, u_y)`` in the FE frame [m].
+        fields : dict of str to ndarray
+            ``sx, sz, txz, sy, tau1, von_mises`` (n,) in the body's Johnson frame [Pa], ``xy``
+            (2, n) node coordinates in the FE frame [m] and ``z`` (n,) depth [m].
+        """
         _validate.choice("body", body, ("cam", "roller"))
         b: Body = self.bodies[body]
         q = r.q if r.q is not None else (r.sliding * r.mu) * r.p  # partial slip: the solved q
@@ -422,7 +568,29 @@ class ContactModel:
             "xy": xy, "z": depth(b, xy)}
 
     def stress_at(self, r: ContactResult, x, z, body: str = "cam"):
-        """Stresses interpolated (P2 nodal field) at points (x, z) of ``body``; Pa."""
+        """Stresses interpolated (nodal field) at points of ``body``.
+
+        Parameters
+        ----------
+        r : ContactResult
+            A result solved by this model.
+        x : array_like of float
+            Abscissae [m].
+        z : array_like of float
+            Depths below the body's surface [m]; broadcast against ``x``.
+        body : {"cam", "roller"}, optional
+            The body.
+
+        Returns
+        -------
+        tuple of ndarray
+            ``(sx, sz, txz, sy, tau1, von_mises)`` [Pa], each of the broadcast shape.
+
+        Raises
+        ------
+        InputError
+            A point outside the body.
+        """
         x = _validate.finite_array("x", x, "m")
         z = _validate.finite_array("z", z, "m")
         x, z = np.broadcast_arrays(x, z)
@@ -445,7 +613,40 @@ def solve_contact(F: float, rho: float, Rr: float, cam: Material, roller: Materi
                   plane: str = "strain", element: str = "P2") -> ContactResult:
     """Build a model graded for this load case and solve it (cold). ``a_ref`` defaults to Hertz a
     (or, when Hertz does not apply or F = 0, 1 % of Rr). A one-off model: ``solver`` defaults
-    to ``SolverOptions(stress_operators="per_solve")`` (same numbers, no per-unknown solves)."""
+    to ``SolverOptions(stress_operators="per_solve")`` (same numbers, no per-unknown solves).
+
+    Parameters
+    ----------
+    F : float
+        Contact force over ``length`` [N], >= 0.
+    rho : float
+        Cam radius of curvature [m], signed (negative = concave, ``inf`` = flat).
+    Rr : float
+        Roller radius [m], > 0.
+    cam, roller : femcam.materials.Material
+        Materials of the two bodies.
+    length : float
+        Face width [m], > 0.
+    mu : float, optional
+        Coulomb friction coefficient [-] (full sliding).
+    sliding : {+1, -1}, optional
+        Direction of the friction traction on the cam along x.
+    a_ref : float, optional
+        Reference half-width [m] that grades the mesh.
+    mesh : femcam.mesh.MeshOptions, optional
+        Mesh options.
+    solver : SolverOptions, optional
+        Solver options.
+    plane : {"strain", "stress"}, optional
+        Plane-elasticity assumption.
+    element : {"P1", "P2"}, optional
+        Triangle element.
+
+    Returns
+    -------
+    ContactResult
+        The solved load case (see :meth:`ContactModel.solve`).
+    """
     if a_ref is None:
         aH, _ = _hertz(_validate.nonnegative("F", F, "N"), _validate.positive("length", length, "m"),
                        float(rho),

@@ -29,12 +29,28 @@ from .elasticity import Body, scalar_node_coordinates, stress_operator
 class EvalSet:
     """Stress recovery on the scalar nodes of one body near the contact.
 
-    Sn, St: (3, n_eval, n_c) arrays mapping unit nodal pressure / unit friction traction
-    (already with this body's sign: pressure into the body, friction in the model's sliding
-    sense) to (sx, sz, txz) in Pa (``SolverOptions.stress_operators = "precompute"``), or None
-    (``"per_solve"``: :meth:`stresses` back-solves the body for each load case with ``S``,
-    ``Bn``, ``Bt`` and ``solver``). ``surface`` indexes the eval nodes on the contact surface
-    (sorted by x).
+    Parameters
+    ----------
+    body : str
+        Body name, ``"cam"`` or ``"roller"``.
+    nodes : ndarray of int, shape (n_eval,)
+        Scalar node indices of the window.
+    x, z : ndarray of float, shape (n_eval,)
+        Abscissa and depth (``z >= 0``) of each window node [m].
+    Sn, St : ndarray of float, shape (3, n_eval, n_c), or None
+        ``(sx, sz, txz)`` [Pa] per unit nodal pressure / unit friction traction [Pa], i.e. [-]
+        (already with this body's sign: pressure into the body, friction in the model's sliding
+        sense), for ``SolverOptions.stress_operators = "precompute"``; None for ``"per_solve"``
+        (:meth:`stresses` then back-solves the body for each load case with ``S``, ``Bn``,
+        ``Bt`` and ``solver``).
+    surface : ndarray of int
+        Indices into ``nodes`` of the nodes on the contact surface, sorted by x.
+    S : scipy.sparse.csr_matrix, shape (3 n_eval, n_dofs), optional
+        ``"per_solve"``: displacements [m] -> ``(sx, sz, txz)`` [Pa] in the Johnson frame.
+    Bn, Bt : scipy.sparse.csc_matrix, shape (n_dofs, n_c), optional
+        ``"per_solve"``: consistent nodal forces of unit pressure / traction hats [m].
+    solver : Body, optional
+        ``"per_solve"``: the factorised body.
     """
 
     body: str
@@ -50,9 +66,21 @@ class EvalSet:
     solver: Body | None = field(default=None, repr=False)
 
     def stresses(self, p: np.ndarray, q: np.ndarray | None = None) -> np.ndarray:
-        """(sx, sz, txz) (3, n_eval) in Pa for nodal pressures ``p`` (Pa) and tangential tractions
-        ``q`` (Pa, in the model's sliding sense; ``mu p`` in full sliding, the solved partial-slip
-        traction otherwise; None: frictionless)."""
+        """Stresses at the window nodes for one load case.
+
+        Parameters
+        ----------
+        p : ndarray of float, shape (n_c,)
+            Nodal contact pressures [Pa].
+        q : ndarray of float, shape (n_c,), optional
+            Tangential tractions [Pa] in the model's sliding sense (``mu p`` in full sliding, the
+            solved partial-slip traction otherwise); None = frictionless.
+
+        Returns
+        -------
+        ndarray of float, shape (3, n_eval)
+            ``(sx, sz, txz)`` in the body's Johnson frame [Pa].
+        """
         friction = q is not None and np.any(q)
         if self.Sn is not None:
             # einsum, not `@`: OpenBLAS's threaded gemv busy-waits on a loaded 2-core machine
@@ -68,20 +96,57 @@ class EvalSet:
 
 
 def johnson_frame(body: Body, sxx, syy, sxy):
-    """(sx, sz, txz) of a body in its own Johnson frame from FE-frame stresses."""
+    """Stresses of a body in its own Johnson frame from FE-frame stresses.
+
+    Parameters
+    ----------
+    body : Body
+        The body (its ``name`` sets the sign of ``txz``).
+    sxx, syy, sxy : float or ndarray
+        FE-frame stresses [Pa].
+
+    Returns
+    -------
+    tuple of (float or ndarray)
+        ``(sx, sz, txz)`` [Pa]: ``txz = -sxy`` on the cam, ``+sxy`` on the roller.
+    """
     sign = -1.0 if body.name == "cam" else 1.0
     return sxx, syy, sign * sxy
 
 
 def depth(body: Body, xy: np.ndarray) -> np.ndarray:
-    """Depth z >= 0 below the body's contact surface of FE-frame points (2, n)."""
+    """Depth below the body's contact surface of FE-frame points.
+
+    Parameters
+    ----------
+    body : Body
+        The body.
+    xy : ndarray of float, shape (2, n)
+        Points in the FE frame [m].
+
+    Returns
+    -------
+    ndarray of float, shape (n,)
+        Depth ``z`` [m], >= 0 inside the body.
+    """
     ys = surface_height(xy[0], body.geometry.R)
     return (-ys - xy[1]) if body.name == "cam" else (xy[1] - ys)
 
 
 def surface_nodes(body: Body) -> np.ndarray:
     """Scalar nodes on the fine-zone contact curve: its vertices and, for P2, the midside nodes
-    of its edges (these sit on the chords, a sagitta h^2 / (8 |R|) below the arc)."""
+    of its edges (these sit on the chords, a sagitta h^2 / (8 |R|) below the arc).
+
+    Parameters
+    ----------
+    body : Body
+        The body.
+
+    Returns
+    -------
+    ndarray of int
+        Scalar node indices: the vertices in order along the curve, then the midside nodes.
+    """
     v = np.asarray(body.geometry.contact)  # vertices come first in the scalar numbering
     md = edge_midside_dofs(body, v)
     return v if md is None else np.concatenate([v, md[0] // 2])
@@ -95,6 +160,26 @@ def eval_operator(body: Body, half_width: float, max_depth: float):
     abscissae and depths; ``surface`` indexes the ones on the contact curve, sorted by x; ``S``
     the sparse operator (3 n_eval, n_dofs) from displacements to (sx, sz, txz) in the body's
     Johnson frame (the sign of ``txz`` folded in, see :func:`johnson_frame`).
+
+    Parameters
+    ----------
+    body : Body
+        The body.
+    half_width : float
+        Half-width of the window in x [m].
+    max_depth : float
+        Depth of the window [m].
+
+    Returns
+    -------
+    nodes : ndarray of int, shape (n_eval,)
+        Scalar node indices.
+    x, z : ndarray of float, shape (n_eval,)
+        Abscissae and depths (clipped to >= 0) [m].
+    surface : ndarray of int
+        Indices into ``nodes`` of the contact-curve nodes, sorted by x.
+    S : scipy.sparse.csr_matrix, shape (3 n_eval, n_dofs)
+        Displacements [m] -> ``(sx, sz, txz)`` [Pa] (stacked by component) [Pa/m].
     """
     xy = scalar_node_coordinates(body)
     z = depth(body, xy)
@@ -125,6 +210,28 @@ def build_eval_set(body: Body, Bn, Bt, S_y, half_width: float, max_depth: float,
     ``K^-1 B``. ``precompute=False``: only ``Y``, from n_c solves: ``K`` is symmetric, so
     ``Y^T = B^T K^-1 S_y^T`` (unit loads at the contact vertices, Maxwell-Betti reciprocity);
     the stresses are then back-solved per load case (:meth:`EvalSet.stresses`).
+
+    Parameters
+    ----------
+    body : Body
+        The factorised body.
+    Bn, Bt : scipy.sparse.csc_matrix, shape (n_dofs, n_c)
+        Consistent nodal forces of unit pressure / traction hats, with this body's signs [m].
+    S_y : scipy.sparse.csr_matrix, shape (m, n_dofs)
+        0/1 selection of the contact-vertex DOFs to condense onto.
+    half_width : float
+        Half-width of the stress window in x [m].
+    max_depth : float
+        Depth of the stress window [m].
+    precompute : bool, optional
+        Precompute the stress operators (see above).
+
+    Returns
+    -------
+    ev : EvalSet
+        The stress window of the body.
+    Yn, Yt : ndarray of float, shape (m, n_c)
+        Selected displacements per unit nodal pressure / traction [m/Pa].
     """
     sel, x, z, surf, S = eval_operator(body, half_width, max_depth)
     ne = sel.size
@@ -150,7 +257,20 @@ def build_eval_set(body: Body, Bn, Bt, S_y, half_width: float, max_depth: float,
 
 
 def derived(sx, sz, txz, sy):
-    """(tau1, von_mises) from the stress components (Pa)."""
+    """Maximum in-plane shear and von Mises stress (module docstring).
+
+    Parameters
+    ----------
+    sx, sz, txz, sy : float or ndarray
+        Stress components in the Johnson frame [Pa] (``sy`` out of plane).
+
+    Returns
+    -------
+    tau1 : float or ndarray
+        Maximum in-plane shear stress [Pa].
+    von_mises : float or ndarray
+        Von Mises equivalent stress [Pa].
+    """
     tau1 = np.sqrt((0.5 * (sx - sz)) ** 2 + txz**2)
     vm = np.sqrt(0.5 * ((sx - sz) ** 2 + (sz - sy) ** 2 + (sy - sx) ** 2) + 3.0 * txz**2)
     return tau1, vm
@@ -164,6 +284,24 @@ def fit_half_width(x: np.ndarray, p: np.ndarray, threshold: float = 0.2):
     over the nodes with ``p > threshold * max(p)``; returns ``(a, x0, p0_fit)`` with
     ``p0_fit = sqrt(c) a``. Robust against the discrete edge of the loaded zone (the last loaded
     node would be a grid quantity, not the half-width).
+
+    Parameters
+    ----------
+    x : ndarray of float, shape (n,)
+        Node abscissae [m].
+    p : ndarray of float, shape (n,)
+        Nodal pressures [Pa].
+    threshold : float, optional
+        Fraction of ``max(p)`` above which nodes enter the fit [-].
+
+    Returns
+    -------
+    a : float
+        Fitted half-width [m]; 0 when no cap can be fitted (fewer than 3 nodes or no maximum).
+    x0 : float
+        Fitted centre [m] (the node of ``max(p)`` when no cap is fitted).
+    p0_fit : float
+        Fitted peak pressure [Pa] (``max(p)`` when no cap is fitted).
     """
     pm = float(np.max(p)) if p.size else 0.0
     if pm <= 0.0:

@@ -26,7 +26,17 @@ if TYPE_CHECKING:
 
 @dataclass(frozen=True)
 class StressMax:
-    """A stress maximum: value (Pa), location (x, z) in m in the body's frame, body name."""
+    """A stress maximum and where it is.
+
+    Parameters
+    ----------
+    value : float
+        The stress [Pa].
+    x, z : float
+        Its location in the body's Johnson frame [m] (``z >= 0`` depth).
+    body : str
+        ``"cam"`` or ``"roller"``.
+    """
 
     value: float
     x: float
@@ -64,9 +74,20 @@ def _cam_surface(name: str) -> property:
 
 @dataclass(frozen=True, eq=False)
 class SurfaceStress:
-    """Stresses (Pa) on the contact surface (z = 0) of one body in its Johnson frame, sorted by x
-    (m), at the vertex and P2 midside nodes of the fine-zone contact curve
-    ``|x| <= fine_half_width * a_ref``; ``sy`` the out-of-plane stress."""
+    """Stresses on the contact surface (z = 0) of one body in its Johnson frame, sorted by x, at
+    the vertex and P2 midside nodes of the fine-zone contact curve ``|x| <= fine_half_width * a_ref``.
+
+    Parameters
+    ----------
+    x : ndarray of float, shape (n,)
+        Abscissae [m], increasing.
+    sx, sz, txz : ndarray of float, shape (n,)
+        In-plane stresses [Pa].
+    sy : ndarray of float, shape (n,)
+        Out-of-plane stress [Pa].
+    body : str
+        ``"cam"`` or ``"roller"``.
+    """
 
     x: np.ndarray
     sx: np.ndarray
@@ -204,7 +225,23 @@ class ContactResult:
         return {**self.__dict__, "model": None}
 
     def model_or(self, model=None) -> ContactModel:
-        """``model``, else the model that solved this result (None after unpickling: pass it)."""
+        """``model``, else the model that solved this result (None after unpickling: pass it).
+
+        Parameters
+        ----------
+        model : ContactModel, optional
+            The model that solved this result.
+
+        Returns
+        -------
+        ContactModel
+            ``model`` if given, else ``self.model``.
+
+        Raises
+        ------
+        InputError
+            Neither is available (an unpickled result without ``model``).
+        """
         m = model if model is not None else self.model
         if m is None:
             raise _validate.fail("model", None, "", "this ContactResult was unpickled without its "
@@ -212,20 +249,90 @@ class ContactResult:
         return m
 
     def field_at_nodes(self, body: str = "cam", model=None):
-        """Full-field (u (2, n), stress dict) at the scalar nodes of ``body`` (one back-solve)."""
+        """Full field at the scalar nodes of ``body`` (one back-solve); see
+        :meth:`ContactModel.full_field`.
+
+        Parameters
+        ----------
+        body : {"cam", "roller"}, optional
+            The body.
+        model : ContactModel, optional
+            The solving model, needed for an unpickled result.
+
+        Returns
+        -------
+        u : ndarray of float, shape (2, n)
+            Nodal displacements ``(u_x, u_y)`` in the FE frame [m].
+        fields : dict of str to ndarray
+            ``sx, sz, txz, sy, tau1, von_mises`` [Pa], ``xy`` (2, n) [m] and depth ``z`` [m].
+        """
         return self.model_or(model).full_field(self, body)
 
     def stress_at(self, x, z, body: str = "cam", model=None):
-        """(sx, sz, txz, sy, tau1, von_mises) at arbitrary points (x, z >= 0 depth), Pa."""
+        """Stresses at arbitrary points of a body, interpolated from the nodal field.
+
+        Parameters
+        ----------
+        x : array_like of float
+            Abscissae [m].
+        z : array_like of float
+            Depths below the surface [m], >= 0; broadcast against ``x``.
+        body : {"cam", "roller"}, optional
+            The body.
+        model : ContactModel, optional
+            The solving model, needed for an unpickled result.
+
+        Returns
+        -------
+        tuple of ndarray
+            ``(sx, sz, txz, sy, tau1, von_mises)`` [Pa], each of the broadcast shape.
+        """
         return self.model_or(model).stress_at(self, x, z, body)
 
     def to_vtu(self, path, model=None):
-        """Write both bodies to one .vtu (see :mod:`femcam.fe.export`); returns the path."""
+        """Write both bodies to one .vtu (see :func:`femcam.fe.export.write_vtu`).
+
+        Parameters
+        ----------
+        path : str or pathlib.Path
+            Output file (suffix forced to ``.vtu``).
+        model : ContactModel, optional
+            The solving model, needed for an unpickled result.
+
+        Returns
+        -------
+        pathlib.Path
+            The path written.
+        """
         return write_vtu(self, path, model=model)
 
 
 def traction_fields(trac, Q, q, w, x, length, mu) -> dict:
-    """ContactResult traction fields from a TractionSolution (or the friction-free/sliding q)."""
+    """ContactResult traction fields from a TractionSolution (or the friction-free/sliding q).
+
+    Parameters
+    ----------
+    trac : TractionSolution or None
+        The partial-slip solution; None for frictionless or full sliding without ``Q``.
+    Q : float or None
+        Requested tangential force on the cam [N] (not used; kept for the call signature).
+    q : ndarray of float, shape (n_c,)
+        Tangential traction on the cam in +x [Pa] (used when ``trac`` is None).
+    w : ndarray of float, shape (n_c,)
+        Trapezoid weights [m].
+    x : ndarray of float, shape (n_c,)
+        Contact vertex abscissae [m].
+    length : float
+        Face width [m].
+    mu : float
+        Friction coefficient [-] (not used).
+
+    Returns
+    -------
+    dict
+        ``Q`` [N], ``slip_state`` (str), ``stick`` (bool, shape (n_c,)), ``stick_width`` [m],
+        ``creep`` [-] and ``shift`` [m] (nan when not applicable).
+    """
     if trac is None:
         state = "sliding" if np.any(q) else "none"
         return {"Q": float(w @ q) * length, "slip_state": state, "stick": np.zeros(x.size, bool),
@@ -235,9 +342,24 @@ def traction_fields(trac, Q, q, w, x, length, mu) -> dict:
 
 
 def window_extrema(name: str, ev, sx, sz, txz, sy) -> tuple[dict, SurfaceStress]:
-    """``({key: StressMax}, SurfaceStress)`` of body ``name`` from the stresses (Pa) ``sx, sz,
-    txz, sy`` at the points of its stress window ``ev`` (a :class:`femcam.fe.recovery.EvalSet`:
-    ``ev.x, ev.z`` in m, ``ev.surface`` the surface points); the keys are :data:`MAXIMA_KEYS`."""
+    """Stress extrema over the stress window of one body, and its surface stresses.
+
+    Parameters
+    ----------
+    name : str
+        Body name, ``"cam"`` or ``"roller"``.
+    ev : femcam.fe.recovery.EvalSet
+        Its stress window (``ev.x, ev.z`` [m], ``ev.surface`` the surface points).
+    sx, sz, txz, sy : ndarray of float, shape (n_eval,)
+        Stresses at the window points, Johnson frame [Pa].
+
+    Returns
+    -------
+    maxima : dict of str to StressMax
+        One per key of :data:`MAXIMA_KEYS` [Pa, m].
+    surface : SurfaceStress
+        The stresses at the surface points, sorted by x.
+    """
     tau1, vm = derived(sx, sz, txz, sy)
     fields = {"von_mises": vm, "tau1": tau1, "txz_abs": np.abs(txz), "sx": sx, "sz": sz, "sy": sy}
     m = {}

@@ -60,10 +60,29 @@ SLIP_STATES = ("none", "stick", "partial slip", "sliding")
 
 @dataclass(frozen=True, eq=False)
 class TractionSolution:
-    """Tangential solution: ``q`` (Pa, on the cam in +x) at the vertices, ``stick`` mask,
-    ``slip_state`` (one of :data:`SLIP_STATES`), ``stick_width`` (m, the extent of the stick
-    nodes plus one node spacing), ``shift`` (delta, m; Cattaneo) or ``creep`` (xi, -; Carter),
-    ``iterations``, ``converged`` and ``message`` (why not, when not)."""
+    """Tangential (partial-slip) solution at the contact vertices.
+
+    Parameters
+    ----------
+    q : ndarray of float, shape (n_c,)
+        Tangential traction on the cam in +x [Pa].
+    stick : ndarray of bool, shape (n_c,)
+        Stick nodes.
+    slip_state : str
+        One of :data:`SLIP_STATES`.
+    stick_width : float
+        Extent of the stick nodes plus one node spacing [m].
+    shift : float
+        Cattaneo rigid shift delta [m] (nan when rolling or sliding; 0 when ``Q = 0``).
+    creep : float
+        Carter creepage xi [-] (nan without rolling or when sliding; 0 when ``Q = 0``).
+    iterations : int
+        Active-set iterations.
+    converged : bool
+        True when the stick/slip sets settled.
+    message : str, optional
+        Why it did not converge (empty when it did).
+    """
 
     q: np.ndarray
     stick: np.ndarray
@@ -88,7 +107,22 @@ def upwind_derivative(M: np.ndarray, x: np.ndarray, rolling: int) -> np.ndarray:
     """du/dx of the rows of ``M`` (n or (n, k)) by one-sided differences with the upstream
     neighbour (the material arrives from ``-rolling x``), so that a stick node's condition links
     it to where its material was. Row differences, not a matrix product: a threaded BLAS gemm
-    on these small blocks busy-waits on a shared machine (25-50 ms measured, 0.1 ms this way)."""
+    on these small blocks busy-waits on a shared machine (25-50 ms measured, 0.1 ms this way).
+
+    Parameters
+    ----------
+    M : ndarray of float, shape (n,) or (n, k)
+        Values at the nodes ``x`` (e.g. displacements [m] or compliances [m/Pa]).
+    x : ndarray of float, shape (n,)
+        Increasing node abscissae [m].
+    rolling : {+1, -1}
+        Direction of the material flow along x.
+
+    Returns
+    -------
+    ndarray of float, same shape as ``M``
+        ``dM/dx`` per node, in the units of ``M`` per m.
+    """
     h = np.diff(x)
     d = (M[1:] - M[:-1]) / (h[:, None] if M.ndim == 2 else h)
     # upstream difference at each node; the end node without an upstream neighbour takes its

@@ -49,6 +49,16 @@ def shear_strength_from_hardness(H):
 
     (Tabor 1951 for ``H ~ 3 sigma_y``; von Mises ``k = sigma_y/sqrt 3``, Johnson 1985 §6.2).
 
+    Parameters
+    ----------
+    H : float or array_like
+        Hardness [Pa] (1 HV = :data:`HV` Pa).
+
+    Returns
+    -------
+    float or ndarray
+        Shear yield strength ``k`` [Pa], shape of ``H``.
+
     >>> round(float(shear_strength_from_hardness(600 * 9.80665e6)) / 1e6, 1)
     1132.4
     """
@@ -57,8 +67,25 @@ def shear_strength_from_hardness(H):
 
 @dataclass(frozen=True, kw_only=True)
 class Case:
-    """A hardened case: ``depth`` (m, effective case depth), surface and core hardness (Pa) OR
-    surface and core yield strength (Pa), and the ``law`` (``CASE_LAWS``)."""
+    """A hardened case: give surface and core hardness OR surface and core yield strength.
+
+    Parameters
+    ----------
+    depth : float
+        Effective case depth ``d_c`` [m], > 0.
+    surface_hardness, core_hardness : float, optional
+        Hardness at the surface and in the core [Pa] (1 HV = :data:`HV` Pa).
+    surface_yield, core_yield : float, optional
+        Uniaxial yield strength at the surface and in the core [Pa].
+    law : {"exponential", "linear"}, optional
+        Hardness-depth law (:data:`CASE_LAWS`, module docstring).
+
+    Raises
+    ------
+    InputError
+        Both or neither pair given, a missing or non-positive value, or a surface-core step not
+        above the 50 HV criterion.
+    """
 
     depth: float
     surface_hardness: float | None = None
@@ -91,7 +118,18 @@ class Case:
         return getattr(self, names[0]), getattr(self, names[1])
 
     def yield_strength(self, z):
-        """Uniaxial yield strength at depth ``z`` (m, >= 0): Pa (``H/3`` from hardness)."""
+        """Uniaxial yield strength at depth ``z`` (``H/3`` from hardness).
+
+        Parameters
+        ----------
+        z : float or array_like
+            Depth below the surface [m], >= 0.
+
+        Returns
+        -------
+        float or ndarray
+            ``sigma_y(z)`` [Pa], shape of ``z``.
+        """
         z = np.asarray(z, dtype=float)
         if np.any(z < 0):
             raise _validate.fail("z", float(z.min()), "m", "must be >= 0 (depth)")
@@ -106,11 +144,35 @@ class Case:
         return v / 3.0 if hard else v
 
     def shear_strength(self, z):
-        """Shear yield strength ``k(z) = sigma_y(z)/sqrt 3`` (Pa)."""
+        """Shear yield strength ``k(z) = sigma_y(z)/sqrt 3`` (von Mises).
+
+        Parameters
+        ----------
+        z : float or array_like
+            Depth below the surface [m], >= 0.
+
+        Returns
+        -------
+        float or ndarray
+            ``k(z)`` [Pa], shape of ``z``.
+        """
         return self.yield_strength(z) / math.sqrt(3.0)
 
     def check_body(self, size: float, name: str = "cam") -> None:
-        """Refuse a case deeper than half the body (``size``, m)."""
+        """Refuse a case deeper than half the body.
+
+        Parameters
+        ----------
+        size : float
+            Body size [m].
+        name : str, optional
+            Body name for the message.
+
+        Raises
+        ------
+        InputError
+            ``depth >= size / 2`` (a through-hardened body is not a case).
+        """
         if self.depth >= 0.5 * size:
             raise _validate.fail("case.depth", self.depth * 1e3, "mm",
                                  f"must be < {0.5 * size * 1e3:.4g} mm, half the {name} body size "
@@ -119,8 +181,21 @@ class Case:
 
 @dataclass(frozen=True)
 class CaseMargin:
-    """Utilisation ``U = tau / k`` over depth: z (m), U, and its maximum, the depth of the
-    maximum (m) and the margin ``1 / U_max``."""
+    """Utilisation ``U = tau / k`` over depth, and the case-core margin.
+
+    Parameters
+    ----------
+    z : ndarray of float, shape (n,)
+        Depths [m].
+    utilisation : ndarray of float, shape (n,)
+        ``U(z) = |tau(z)| / k(z)`` [-].
+    u_max : float
+        ``max U`` [-].
+    z_at_max : float
+        Depth of ``u_max`` [m].
+    margin : float
+        ``1 / u_max`` [-] (``inf`` when ``u_max = 0``).
+    """
 
     z: np.ndarray
     utilisation: np.ndarray
@@ -136,6 +211,20 @@ def case_margin(case: Case, z, tau) -> CaseMargin:
 
     ``z`` depths (m), ``tau`` local maximum shear stress there (Pa, e.g. Hertz ``tau_1`` below
     the contact, peak ``0.30 p_0`` at ``0.78 a``, Johnson 1985 §4.2).
+
+    Parameters
+    ----------
+    case : Case
+        The hardened case.
+    z : array_like of float, shape (n,)
+        Depths [m], >= 0.
+    tau : array_like of float, shape (n,)
+        Local maximum shear stress at those depths [Pa].
+
+    Returns
+    -------
+    CaseMargin
+        Utilisation over depth, its maximum and the margin.
     """
     z = _validate.finite_array("z", z, "m")
     tau = _validate.finite_array("tau", tau, "Pa")

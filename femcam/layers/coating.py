@@ -30,8 +30,20 @@ from ..mesh import MeshOptions
 
 @dataclass(frozen=True, kw_only=True)
 class Coating:
-    """A coating: thickness (m), material (E, nu), interface shear strength and hardness (Pa,
-    optional: a check that needs a missing strength is refused)."""
+    """A coating bonded to one body's surface.
+
+    Parameters
+    ----------
+    thickness : float
+        Coating thickness ``t`` [m], 0 < t <= 1e-3.
+    material : femcam.materials.Material
+        Coating elastic constants (E [Pa], nu [-]).
+    interface_shear_strength : float, optional
+        Interface shear strength (adhesion) ``tau_i`` [Pa], > 0; a check that needs it is refused
+        without it.
+    hardness : float, optional
+        Coating hardness ``H_c`` [Pa], > 0; likewise.
+    """
 
     thickness: float
     material: Material
@@ -50,7 +62,23 @@ class Coating:
                 object.__setattr__(self, k, _validate.positive(k, v, "Pa"))
 
     def require(self, name: str) -> float:
-        """The strength ``name`` or an InputError saying which check needs it."""
+        """A strength that a check needs.
+
+        Parameters
+        ----------
+        name : {"interface_shear_strength", "hardness"}
+            The field.
+
+        Returns
+        -------
+        float
+            Its value [Pa].
+
+        Raises
+        ------
+        InputError
+            It was not given (naming the scene key).
+        """
         v = getattr(self, name)
         if v is None:
             key = "interface_shear_strength_MPa" if name.startswith("interface") else "hardness_MPa"
@@ -65,6 +93,19 @@ class CoatedMaterial(Material):
 
     Everything that reads ``E, nu`` (Hertz, E*) sees the substrate; the FE assembly gives the
     coating band the coating's constants.
+
+    Parameters
+    ----------
+    E : float
+        Substrate Young's modulus [Pa].
+    nu : float
+        Substrate Poisson's ratio [-].
+    name : str, optional
+        Name.
+    hardness : float, optional
+        Substrate hardness [Pa].
+    coating : femcam.materials.Material, optional
+        Elastic constants of the coating band.
     """
 
     coating: Material | None = None
@@ -74,9 +115,39 @@ def build_coated_model(*, Rr: float, rho_ref: float, cam: Material, roller: Mate
                        length: float, a_ref: float, coating: Coating, body: str = "roller",
                        mesh: MeshOptions | None = None, solver: SolverOptions | None = None,
                        plane: str = "strain", element: str = "P2") -> ContactModel:
-    """A :class:`~femcam.fe.ContactModel` with ``coating`` on ``body`` ("cam" or "roller");
-    arguments as ``ContactModel.build`` (SI). The model's ``coating`` info is kept in
-    ``model.mesh.options`` (``coat_body``, ``coat_thickness``)."""
+    """A :class:`~femcam.fe.ContactModel` with ``coating`` on ``body``. The coating info is kept
+    in ``model.mesh.options`` (``coat_body``, ``coat_thickness``).
+
+    Parameters
+    ----------
+    Rr : float
+        Roller radius [m].
+    rho_ref : float
+        Cam radius of curvature to mesh [m], signed (``inf`` = flat).
+    cam, roller : femcam.materials.Material
+        Materials of the two bodies (the substrate for the coated one).
+    length : float
+        Face width [m].
+    a_ref : float
+        Reference half-width [m].
+    coating : Coating
+        The coating.
+    body : {"cam", "roller"}, optional
+        The coated body.
+    mesh : femcam.mesh.MeshOptions, optional
+        Mesh options (``coat_body`` and ``coat_thickness`` are overridden).
+    solver : femcam.fe.SolverOptions, optional
+        Solver options.
+    plane : {"strain", "stress"}, optional
+        Plane-elasticity assumption.
+    element : {"P1", "P2"}, optional
+        Triangle element.
+
+    Returns
+    -------
+    femcam.fe.ContactModel
+        The built model, with the coating band meshed on ``body``.
+    """
     _validate.choice("body", body, ("cam", "roller"))
     if not isinstance(coating, Coating):
         raise _validate.fail("coating", coating, "", "must be a femcam.layers.Coating")

@@ -19,10 +19,26 @@ from .interface import layer_rows
 
 
 def scene_layers(scene) -> dict:
-    """``{"coating": (body, Coating) | None, "case": (body, Case) | None}`` of ``scene``.
+    """Coating and case of ``scene`` from its ``[materials.<body>.coating|case]`` tables.
 
     One coated body per model (the FE mesh has one coating band); a case must be shallower than
-    half the body size (cam: base radius; roller: roller radius)."""
+    half the body size (cam: base radius; roller: roller radius).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A loaded scene (``scene.layers`` holds SI values under the unit-named keys).
+
+    Returns
+    -------
+    dict
+        ``{"coating": (body, Coating) or None, "case": (body, Case) or None}``.
+
+    Raises
+    ------
+    InputError
+        More than one coated body, or a case too deep for its body.
+    """
     out = {"coating": None, "case": None}
     coated = [b for b, t in scene.layers.items() if "coating" in t]
     if len(coated) > 1:
@@ -65,7 +81,28 @@ def scene_layer_rows(scene, theta, *, a_over_h: float = 10.0) -> dict:
     """Layer checks of ``scene`` at cam angles ``theta`` (rad): ``theta_deg``, ``F_N``,
     ``rho_mm``, ``models`` (models built) and the :func:`~femcam.layers.layer_rows` columns.
     A model is rebuilt (rho_ref, a_ref of the angle) whenever the current one does not cover
-    the angle (``ContactModel.covers``); lift-off angles are NaN rows. Roller followers only."""
+    the angle (``ContactModel.covers``); lift-off angles are NaN rows. Roller followers only.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A loaded scene with a coating and/or a case table and a roller follower.
+    theta : array_like of float, shape (n,)
+        Cam angles [rad].
+    a_over_h : float, optional
+        Mesh grading: contact half-width over element size [-].
+
+    Returns
+    -------
+    dict
+        Arrays of shape (n,): ``theta_deg`` [deg], ``F_N`` [N], ``rho_mm`` [mm] and the
+        :func:`~femcam.layers.layer_rows` columns; ``models`` (int) the number of models built.
+
+    Raises
+    ------
+    InputError
+        Not a roller follower, or no coating or case table.
+    """
     if not hasattr(scene.follower, "Rr"):
         raise InputError("scene_layer_rows: the FE contact model needs a roller follower")
     lay = scene_layers(scene)

@@ -34,8 +34,23 @@ from .coating import Coating
 
 @dataclass(frozen=True)
 class InterfaceStress:
-    """Interface tractions of one load case: x (m, sorted), sigma_n, tau (Pa); maxima:
-    tau_abs_max (Pa) at x_tau_max (m), sigma_n_min (most compressive), sigma_n_max (Pa)."""
+    """Interface tractions of one load case along the coating-substrate interface.
+
+    Parameters
+    ----------
+    x : ndarray of float, shape (n,)
+        Abscissae of the interface nodes [m], sorted.
+    sigma_n : ndarray of float, shape (n,)
+        Interface normal stress [Pa] (tension > 0).
+    tau : ndarray of float, shape (n,)
+        Interface shear stress [Pa].
+    tau_abs_max : float
+        ``max |tau|`` [Pa].
+    x_tau_max : float
+        Abscissa of ``tau_abs_max`` [m].
+    sigma_n_min, sigma_n_max : float
+        Most compressive and most tensile ``sigma_n`` [Pa].
+    """
 
     x: np.ndarray
     sigma_n: np.ndarray
@@ -56,7 +71,25 @@ def _coated(model, body: str):
 
 def interface_stress(result, body: str = "roller") -> InterfaceStress:
     """Normal and shear stress along the coating-substrate interface of ``body`` within the
-    contact fine zone (``result`` a ContactResult of a coated model)."""
+    contact fine zone.
+
+    Parameters
+    ----------
+    result : femcam.fe.ContactResult
+        A result of a coated model (:func:`femcam.layers.build_coated_model`), with its model.
+    body : {"cam", "roller"}, optional
+        The coated body.
+
+    Returns
+    -------
+    InterfaceStress
+        The interface tractions and their extrema.
+
+    Raises
+    ------
+    InputError
+        ``body`` has no coating band.
+    """
     _validate.choice("body", body, ("cam", "roller"))
     model = result.model
     g = _coated(model, body)
@@ -96,12 +129,42 @@ def layer_rows(model, F, rho, mu, *, coating: Coating | None = None, coat_body: 
                case: Case | None = None, case_body: str = "cam", sliding: int = 1) -> dict:
     """Per-angle layer checks (one FE solve per angle on the prepared ``model``).
 
-    F (N), rho (m), mu: arrays over angles (broadcast). Returns a dict of arrays (CSV-ready
-    names): ``interface_tau_max_MPa``, ``interface_sn_min_MPa``, ``interface_sn_max_MPa``,
-    ``interface_utilisation`` (= tau_max / interface shear strength), ``coating_sx_max_MPa``
-    (coating surface tension) and ``coating_sx_utilisation`` (sx_max / coating hardness / 3, the
-    yield estimate of the coating), ``case_utilisation_max``, ``case_z_at_max_mm``,
-    ``case_margin``. Requested checks need their strengths (InputError otherwise).
+    Requested checks need their strengths (InputError otherwise).
+
+    Parameters
+    ----------
+    model : femcam.fe.ContactModel
+        The prepared model (coated by :func:`femcam.layers.build_coated_model` for a coating).
+    F : array_like of float, shape (n,)
+        Contact force per angle [N].
+    rho : array_like of float
+        Cam radius of curvature per angle [m], signed; broadcast against ``F``.
+    mu : array_like of float
+        Friction coefficient per angle [-]; broadcast against ``F``.
+    coating : Coating, optional
+        The coating to check (needs ``interface_shear_strength`` and ``hardness``).
+    coat_body : {"cam", "roller"}, optional
+        The coated body.
+    case : Case, optional
+        The hardened case to check.
+    case_body : {"cam", "roller"}, optional
+        The case-hardened body.
+    sliding : {+1, -1}, optional
+        Direction of the friction traction on the cam along x.
+
+    Returns
+    -------
+    dict of str to ndarray, shape (n,)
+        CSV-ready columns (nan for checks not requested): ``interface_tau_max_MPa``,
+        ``interface_sn_min_MPa``, ``interface_sn_max_MPa`` [MPa], ``interface_utilisation``
+        (``tau_max / tau_i``) [-], ``coating_sx_max_MPa`` (coating surface tension) [MPa],
+        ``coating_sx_utilisation`` (``max(sx_max, 0) / (H_c / 3)``, the yield estimate of the
+        coating) [-], ``case_utilisation_max`` [-], ``case_z_at_max_mm`` [mm], ``case_margin`` [-].
+
+    Raises
+    ------
+    InputError
+        Neither ``coating`` nor ``case``, or a missing strength.
     """
     F, rho, mu = np.broadcast_arrays(np.atleast_1d(_validate.finite_array("F", F, "N")),
                                      _validate.finite_array("rho", rho, "m"),
