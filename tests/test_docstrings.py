@@ -46,13 +46,9 @@ PENDING: set[str] = {
 
     "femcam/tribology",
 
-    "femcam/kinematics",
 
-    "femcam/dynamics",
 
-    "femcam/hertz",
 
-    "femcam/profile",
 }
 
 
