@@ -48,13 +48,9 @@ PENDING: set[str] = {
 
 
 
-    "femcam/kinematics",
 
-    "femcam/dynamics",
 
-    "femcam/hertz",
 
-    "femcam/profile",
 }
 
 

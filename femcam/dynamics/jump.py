@@ -45,7 +45,29 @@ RPM = 30.0 / math.pi  # rad/s -> rpm
 class JumpResult:
     """Jump speed ``rpm_jump`` (rpm; nan if none in the range), the rigid eq. 11 lift-off
     speed ``rpm_rigid`` (rpm; nan if none), the scan (``rpm_scan``, ``Fc_min_scan`` in N),
-    Brent ``iterations`` and the bracket width ``xtol_rpm``."""
+    Brent ``iterations`` and the bracket width ``xtol_rpm``.
+
+    Attributes
+    ----------
+    rpm_jump : float
+        Jump speed [rpm]: first zero of the least trial force on the scan, refined by Brent
+        (``rpm_lo`` if the contact is already lost there); NaN if none in the range.
+    rpm_rigid : float
+        Lift-off speed of the rigid eq. 11 force [rpm]; NaN if none in the range.
+    rpm_scan : ndarray, shape (n_scan,)
+        Scanned speeds [rpm], uniform from ``rpm_lo`` to ``rpm_hi``.
+    Fc_min_scan : ndarray, shape (n_scan,)
+        Least trial contact force over a cycle at each scanned speed [N] (negative once the
+        contact is lost).
+    iterations : int
+        Brent iterations on the jump speed (0 if no root or contact lost at ``rpm_lo``).
+    xtol_rpm : float
+        Absolute tolerance of the Brent search [rpm].
+    steps_per_rev : int
+        Time steps per revolution used for every speed.
+    message : str
+        Where the contact is lost, or that it is not lost in the range.
+    """
 
     rpm_jump: float
     rpm_rigid: float
@@ -75,6 +97,32 @@ def jump_speed(train: TrainModel, program: CamProgram, rpm_lo: float, rpm_hi: fl
 
     One fixed number of steps per revolution (resolving the train at ``rpm_lo``) is used for
     the whole search so that the minimum force is a continuous function of the speed.
+
+    Parameters
+    ----------
+    train : TrainModel
+        Elastic follower train and its return spring.
+    program : CamProgram
+        Cam program (lift [m] against cam angle [rad]).
+    rpm_lo, rpm_hi : float
+        Speed range [rpm], ``0 < rpm_lo < rpm_hi``.
+    n_scan : int, optional
+        Number of scanned speeds before the Brent refinement (at least 2 used). Default 40.
+    steps_per_rev : int or None, optional
+        Time steps per revolution (``>= 16``); None (default) picks enough for ``rpm_lo``.
+    xtol_rpm : float, optional
+        Absolute tolerance of the jump speed [rpm]. Default 1e-3.
+
+    Returns
+    -------
+    JumpResult
+        Jump speed and rigid lift-off speed [rpm] with the scan and diagnostics.
+
+    Raises
+    ------
+    InputError
+        Invalid speeds or counts, a train whose lowest natural frequency is at or below the cam
+        frequency at ``rpm_hi``, or a time step that cannot resolve the train.
     """
     lo = _validate.positive("rpm_lo", rpm_lo, "rpm")
     hi = _validate.positive("rpm_hi", rpm_hi, "rpm")
@@ -111,7 +159,35 @@ def jump_speed(train: TrainModel, program: CamProgram, rpm_lo: float, rpm_hi: fl
 class RpmSweep:
     """Per speed (rpm): peak and least axial contact force (N) of the periodic response and
     of the rigid eq. 11, lift-off, convergence, cycles, residual, largest displacement error
-    (m) and dwell vibration (m); ``message`` per speed (why a speed has no answer)."""
+    (m) and dwell vibration (m); ``message`` per speed (why a speed has no answer).
+
+    Every array has shape ``(n,)``, one entry per speed; a speed refused with an
+    :class:`~femcam.errors.InputError` has NaN values, ``converged = False`` and the error text
+    in ``messages``.
+
+    Attributes
+    ----------
+    rpm : ndarray, shape (n,)
+        Cam speeds [rpm].
+    Fc_max, Fc_min : ndarray, shape (n,)
+        Peak and least axial contact force of the periodic response [N].
+    Fc_rigid_max, Fc_rigid_min : ndarray, shape (n,)
+        Peak and least axial force of the rigid eq. 11 [N].
+    liftoff : ndarray of bool, shape (n,)
+        Contact lost somewhere in the cycle.
+    converged : ndarray of bool, shape (n,)
+        Periodic steady state found.
+    cycles : ndarray of int, shape (n,)
+        Cycles integrated.
+    residual : ndarray, shape (n,)
+        Scaled state change over the last cycle [-].
+    max_error : ndarray, shape (n,)
+        Largest displacement error ``|x - s|`` of the last mass [m].
+    dwell_vibration : ndarray, shape (n,)
+        Largest half peak-to-peak error of the last mass within a dwell [m].
+    messages : list of str
+        One per speed: how the answer was obtained, or why there is none.
+    """
 
     rpm: np.ndarray
     Fc_max: np.ndarray
@@ -145,7 +221,33 @@ def _one(args):
 def rpm_sweep(train: TrainModel, program: CamProgram, rpm, *, steps_per_rev=None,
               max_cycles: int = 400, workers: int = 1) -> RpmSweep:
     """Periodic response at each speed of ``rpm`` (rpm); ``workers`` > 1 runs the speeds in
-    that many processes (the results are small and pickle)."""
+    that many processes (the results are small and pickle).
+
+    Parameters
+    ----------
+    train : TrainModel
+        Elastic follower train and its return spring.
+    program : CamProgram
+        Cam program (lift [m] against cam angle [rad]).
+    rpm : float or array_like, shape (n,)
+        Cam speeds [rpm], each ``> 0``.
+    steps_per_rev : int or None, optional
+        Time steps per revolution (``>= 16``); None (default) picks enough per speed.
+    max_cycles : int, optional
+        Most cycles integrated per speed when the contact is lost. Default 400.
+    workers : int, optional
+        Number of processes, ``>= 1``. Default 1 (in-process).
+
+    Returns
+    -------
+    RpmSweep
+        Forces [N], errors [m] and diagnostics per speed.
+
+    Raises
+    ------
+    InputError
+        Non-finite or non-positive speeds, or ``workers < 1``.
+    """
     rpm = np.atleast_1d(_validate.finite_array("rpm", rpm, "rpm"))
     if np.any(rpm <= 0):
         raise _validate.fail("rpm", float(rpm[rpm <= 0][0]), "rpm", "every speed must be > 0")

@@ -75,6 +75,35 @@ class TrainModel:
     ``follower.m``; giving ``m2`` (kg), ``k2`` (N/m) and ``c2`` or ``zeta2`` makes it two_dof,
     the return spring then acting on ``m2``.
 
+    Parameters
+    ----------
+    follower : FollowerDynamics
+        Follower mass ``m1 = follower.m`` [kg] (``> 0``), return spring ``k_s = follower.k``
+        [N/m], preload ``Fpl`` [N] and ground damping ``c_s = follower.c`` [N s/m].
+    k_t : float
+        Train stiffness between cam and ``m1`` [N/m], ``> 0``.
+    c_t : float or None, optional
+        Train damping [N s/m], ``>= 0``; give exactly one of ``c_t`` and ``zeta_t``. Stored
+        as the resolved damping [N s/m].
+    zeta_t : float or None, optional
+        Train damping ratio [-], ``c_t = zeta_t 2 sqrt(k_t m1)``.
+    m2 : float or None, optional
+        Second (valve) mass [kg], ``> 0``; None (default) for a one_dof train.
+    k2 : float or None, optional
+        Stiffness between ``m1`` and ``m2`` [N/m], ``> 0`` (two_dof only).
+    c2 : float or None, optional
+        Damping between ``m1`` and ``m2`` [N s/m] (two_dof only; exactly one of ``c2``, ``zeta2``).
+    zeta2 : float or None, optional
+        Damping ratio between ``m1`` and ``m2`` [-], ``c2 = zeta2 2 sqrt(k2 m2)``.
+
+    Raises
+    ------
+    InputError
+        Not a FollowerDynamics, a non-positive mass or stiffness, both or neither of a damping
+        and its ratio, or two_dof parameters without ``m2``.
+
+    Examples
+    --------
     >>> tm = TrainModel(follower=FollowerDynamics(m=0.2, k=800.0, Fpl=1500.0, c=0.0),
     ...                 k_t=2.0e6, zeta_t=0.0)
     >>> round(float(tm.natural_frequencies[0]), 3)    # sqrt((k_t + k_s)/m) rad/s
@@ -108,10 +137,12 @@ class TrainModel:
 
     @property
     def model(self) -> str:
+        """``"one_dof"`` or ``"two_dof"`` (with ``m2``)."""
         return "one_dof" if self.m2 is None else "two_dof"
 
     @property
     def ndof(self) -> int:
+        """Number of masses ``n``: 1 or 2."""
         return 1 if self.m2 is None else 2
 
     @property
@@ -120,7 +151,24 @@ class TrainModel:
         return self.follower.m + (self.m2 or 0.0)
 
     def mck(self, contact: bool = True):
-        """Mass, damping and stiffness matrices (relative coordinates) and the g-input vector."""
+        """Mass, damping and stiffness matrices (relative coordinates) and the g-input vector.
+
+        Parameters
+        ----------
+        contact : bool, optional
+            True (default) with the train coupling ``k_t, c_t``; False for free flight.
+
+        Returns
+        -------
+        M : ndarray, shape (n, n)
+            Mass matrix [kg].
+        C : ndarray, shape (n, n)
+            Damping matrix [N s/m].
+        K : ndarray, shape (n, n)
+            Stiffness matrix [N/m].
+        g : ndarray, shape (n,)
+            Unit vector [-] selecting the mass the return-spring force acts on (the last).
+        """
         f = self.follower
         kt, ct = (self.k_t, self.c_t) if contact else (0.0, 0.0)
         if self.m2 is None:
@@ -140,7 +188,21 @@ class TrainModel:
 
     def state_space(self, contact: bool = True):
         """``A`` (2n x 2n) and ``B`` (2n x 2) of ``z' = A z + B u``, ``z = (e, e')``,
-        ``u = (a, k_s s + c_s v + Fpl)``."""
+        ``u = (a, k_s s + c_s v + Fpl)``.
+
+        Parameters
+        ----------
+        contact : bool, optional
+            True (default) with the train coupling ``k_t, c_t``; False for free flight.
+
+        Returns
+        -------
+        A : ndarray, shape (2n, 2n)
+            State matrix ``[[0, I], [-M^-1 K, -M^-1 C]]`` (blocks [-], [-], [1/s^2], [1/s])
+            for ``z = (e [m], e' [m/s])``.
+        B : ndarray, shape (2n, 2)
+            Input matrix for ``u = (a [m/s^2], g [N])``: ``-1`` [-] and ``-M^-1 g`` [1/kg].
+        """
         M, C, K, g = self.mck(contact)
         n = M.shape[0]
         Mi = np.linalg.inv(M)
@@ -151,7 +213,18 @@ class TrainModel:
         return A, B
 
     def trial_force(self, Z) -> np.ndarray:
-        """Trial contact force ``-k_t e_1 - c_t e_1'`` (N) of states ``Z`` (..., 2n)."""
+        """Trial contact force ``-k_t e_1 - c_t e_1'`` (N) of states ``Z`` (..., 2n).
+
+        Parameters
+        ----------
+        Z : array_like, shape (..., 2n)
+            States ``(e [m], e' [m/s])`` on the last axis.
+
+        Returns
+        -------
+        ndarray, shape (...)
+            Trial contact force [N]; negative means the train end leaves the cam.
+        """
         Z = np.asarray(Z)
         return -self.k_t * Z[..., 0] - self.c_t * Z[..., self.ndof]
 
@@ -168,7 +241,17 @@ def _e12(z):
 
 
 class Mode:
-    """Exact first-order-hold propagation of ``z' = A z + B u`` (one contact mode)."""
+    """Exact first-order-hold propagation of ``z' = A z + B u`` (one contact mode).
+
+    Parameters
+    ----------
+    A : ndarray, shape (2n, 2n)
+        State matrix from :meth:`TrainModel.state_space`.
+    B : ndarray, shape (2n, 2)
+        Input matrix from :meth:`TrainModel.state_space`.
+    h : float
+        Grid time step [s].
+    """
 
     def __init__(self, A, B, h):
         self.A, self.B, self.h = A, B, h
@@ -195,7 +278,22 @@ class Mode:
         return E[:n, :n], E[:n, n:n + m], E[:n, n + m:]
 
     def step(self, z0, dt, u0, u1):
-        """One exact step of length ``dt`` (any, > 0) for the input linear from u0 to u1."""
+        """One exact step of length ``dt`` (any, > 0) for the input linear from u0 to u1.
+
+        Parameters
+        ----------
+        z0 : ndarray, shape (2n,)
+            Start state ``(e [m], e' [m/s])``.
+        dt : float
+            Step length [s], ``> 0``.
+        u0, u1 : ndarray, shape (2,)
+            Inputs ``(a [m/s^2], g [N])`` at the start and the end of the step.
+
+        Returns
+        -------
+        ndarray, shape (2n,)
+            State after ``dt``, float.
+        """
         if self.modal:
             E1, E2 = _e12(self.lam * dt)
             q0, q1 = self.Bm @ u0, self.Bm @ u1
@@ -205,13 +303,39 @@ class Mode:
         return Phi @ z0 + P1 @ u0 + P2 @ (u1 - u0)
 
     def forcing(self, U):
-        """Modal step forcing ``r_k`` of the inputs ``U`` (K+1, 2) -> (K, 2n) complex."""
+        """Modal step forcing ``r_k`` of the inputs ``U`` (K+1, 2) -> (K, 2n) complex.
+
+        Parameters
+        ----------
+        U : ndarray, shape (K+1, 2)
+            Inputs ``(a [m/s^2], g [N])`` at the grid points (step ``h``).
+
+        Returns
+        -------
+        ndarray, shape (K, 2n), complex
+            Forced response of each step in modal coordinates (state units, m and m/s).
+        """
         Q = U @ self.Bm.T
         return self.c0 * Q[:-1] + self.c1 * Q[1:]
 
     def run(self, z0, U, R=None):
         """States at the grid points of ``U`` (K+1 inputs, step h) starting from ``z0``
-        (``R``: its :meth:`forcing`, if already computed)."""
+        (``R``: its :meth:`forcing`, if already computed).
+
+        Parameters
+        ----------
+        z0 : ndarray, shape (2n,)
+            Start state ``(e [m], e' [m/s])``.
+        U : ndarray, shape (K+1, 2)
+            Inputs ``(a [m/s^2], g [N])`` at the grid points.
+        R : ndarray, shape (K, 2n), complex, optional
+            :meth:`forcing` of ``U``, if already computed (modal modes only).
+
+        Returns
+        -------
+        ndarray, shape (K+1, 2n)
+            States at the grid points, the first being ``z0``.
+        """
         K = U.shape[0] - 1
         out = np.empty((K + 1, z0.size))
         out[0] = z0
@@ -247,14 +371,43 @@ class Mode:
         return cache[K]
 
     def power(self, N):
-        """State transition over N steps, Phi^N."""
+        """State transition over N steps, Phi^N.
+
+        Parameters
+        ----------
+        N : int
+            Number of steps of length ``h``.
+
+        Returns
+        -------
+        ndarray, shape (2n, 2n)
+            Transition matrix over ``N h`` [SI].
+        """
         if self.modal:
             return ((self.V * self.mu**N) @ self.W).real
         return np.linalg.matrix_power(self.Phi, N)  # defective only
 
 
 def check_resolution(train: TrainModel, omega: float, N: int) -> str | None:
-    """None if N steps per revolution resolve every ringing mode, else the reason (numbers)."""
+    """None if N steps per revolution resolve every ringing mode, else the reason (numbers).
+
+    A mode rings if it is oscillatory and decays by less than ``RING_FACTOR`` in one step; it
+    is resolved with at least ``STEPS_PER_PERIOD`` steps per damped period.
+
+    Parameters
+    ----------
+    train : TrainModel
+        The follower train (contact and free-flight modes are both checked).
+    omega : float
+        Cam speed [rad/s], ``> 0``.
+    N : int
+        Time steps per revolution.
+
+    Returns
+    -------
+    str or None
+        None if resolved, else the reason ending in ``steps_per_rev >= <count>)``.
+    """
     h = 2.0 * math.pi / (omega * N)
     for contact in (True, False):
         lam = np.linalg.eigvals(train.state_space(contact)[0])
@@ -276,6 +429,28 @@ def march(train: TrainModel, modes, U, z0, contact0: bool):
 
     Returns ``(Z, contact, n_events)``; an event is located by linear interpolation of the
     trial force between grid points; each mode keeps at least one grid point (no chatter).
+
+    Parameters
+    ----------
+    train : TrainModel
+        The follower train.
+    modes : dict of bool to Mode
+        ``{True: contact mode, False: free-flight mode}`` on one step ``h``.
+    U : ndarray, shape (N+1, 2)
+        Inputs ``(a [m/s^2], g [N])`` at the grid points.
+    z0 : ndarray, shape (2n,)
+        Start state ``(e [m], e' [m/s])``.
+    contact0 : bool
+        Whether the train is in contact at the start.
+
+    Returns
+    -------
+    Z : ndarray, shape (N+1, 2n)
+        States at the grid points.
+    contact : ndarray of bool, shape (N+1,)
+        Contact flag at each grid point.
+    n_events : int
+        Lift-offs plus re-impacts in the pass.
     """
     N = U.shape[0] - 1
     h = modes[True].h

@@ -57,6 +57,47 @@ class DynamicsResult:
     Diagnostics: ``cycles`` integrated, ``residual`` (scaled state change over the last
     cycle), ``converged``, ``n_events`` (lift-offs + re-impacts in the last cycle),
     ``message``.
+
+    Attributes
+    ----------
+    model : {"one_dof", "two_dof"}
+        Train model.
+    omega : float
+        Cam speed [rad/s].
+    theta : ndarray, shape (N+1,)
+        Cam angles [rad], uniform on ``[0, 2 pi]``.
+    s : ndarray, shape (N+1,)
+        Rigid lift [m].
+    v : ndarray, shape (N+1,)
+        Rigid follower velocity [m/s].
+    a : ndarray, shape (N+1,)
+        Rigid follower acceleration [m/s^2].
+    e : ndarray, shape (N+1, ndof)
+        Displacement error ``x - s`` of each mass [m].
+    ed : ndarray, shape (N+1, ndof)
+        Velocity error of each mass [m/s].
+    Fc_axial : ndarray, shape (N+1,)
+        Axial contact force [N], ``>= 0`` (0 in free flight).
+    contact : ndarray of bool, shape (N+1,)
+        In contact at each angle.
+    Fc_rigid_axial : ndarray, shape (N+1,)
+        Axial force of the rigid eq. 11 with the total train mass [N] (may be negative).
+    natural_frequencies : ndarray, shape (ndof,)
+        Undamped natural frequencies in contact [rad/s], ascending.
+    steps_per_rev : int
+        Time steps per revolution ``N``.
+    cycles : int
+        Cycles integrated (1 for the linear periodic solution).
+    residual : float
+        Scaled state change over the last cycle [-].
+    converged : bool
+        A stable periodic steady state was found.
+    n_events : int
+        Lift-offs plus re-impacts in the last cycle.
+    message : str
+        How the answer was obtained, or why it did not converge.
+    params : dict
+        ``k_s`` [N/m], ``c_s`` [N s/m], ``Fpl`` [N], ``k_t`` [N/m], ``c_t`` [N s/m].
     """
 
     model: str
@@ -81,6 +122,7 @@ class DynamicsResult:
 
     @property
     def rpm(self) -> float:
+        """Cam speed (rpm)."""
         return self.omega * 30.0 / math.pi
 
     @property
@@ -90,18 +132,22 @@ class DynamicsResult:
 
     @property
     def liftoff(self) -> np.ndarray:
+        """True where the train is off the cam (free flight), shape (N+1,)."""
         return ~self.contact
 
     @property
     def any_liftoff(self) -> bool:
+        """True if the contact is lost anywhere in the cycle."""
         return bool(np.any(~self.contact))
 
     @property
     def Fc_max(self) -> float:
+        """Peak axial contact force (N)."""
         return float(np.max(self.Fc_axial))
 
     @property
     def Fc_min(self) -> float:
+        """Least axial contact force (N); 0 with lift-off."""
         return float(np.min(self.Fc_axial))
 
     @property
@@ -128,13 +174,38 @@ class DynamicsResult:
         return best
 
     def at(self, theta):
-        """Axial contact force (N) interpolated to cam angles ``theta`` (rad, mod 2 pi)."""
+        """Axial contact force (N) interpolated to cam angles ``theta`` (rad, mod 2 pi).
+
+        Parameters
+        ----------
+        theta : float or array_like
+            Cam angles [rad], any shape, taken modulo 2 pi.
+
+        Returns
+        -------
+        ndarray
+            Axial contact force [N] (linear interpolation), the shape of ``theta``.
+        """
         th = np.mod(np.asarray(theta, float), 2.0 * math.pi)
         return np.interp(th, self.theta, self.Fc_axial)
 
     def load_result(self, theta, phi) -> LoadResult:
         """A :class:`~femcam.loads.LoadResult` at ``theta`` (rad) with pressure angles ``phi``
-        (rad): ``Fc = Fc_axial / cos phi``, ``liftoff`` where ``Fc <= 0`` (free flight)."""
+        (rad): ``Fc = Fc_axial / cos phi``, ``liftoff`` where ``Fc <= 0`` (free flight).
+
+        Parameters
+        ----------
+        theta : array_like, shape (m,)
+            Cam angles [rad], taken modulo 2 pi for the interpolation.
+        phi : float or array_like, shape (m,)
+            Pressure angles [rad] at ``theta``.
+
+        Returns
+        -------
+        LoadResult
+            Normal force ``Fc`` and the axial, spring, damping and inertia forces [N] of the
+            last mass at ``theta``, with the lift-off flags and intervals.
+        """
         theta = np.asarray(theta, float)
         th = np.mod(theta, 2.0 * math.pi)
         F_ax = np.interp(th, self.theta, self.Fc_axial)
@@ -152,7 +223,28 @@ class DynamicsResult:
 
 def choose_steps(train: TrainModel, omega: float, steps_per_rev=None) -> int:
     """Steps per revolution: the given number if it resolves the train (else InputError with
-    the numbers), or the least of ``DEFAULT_STEPS`` and the resolving count."""
+    the numbers), or ``DEFAULT_STEPS`` raised to the resolving count when that is larger.
+
+    Parameters
+    ----------
+    train : TrainModel
+        The follower train.
+    omega : float
+        Cam speed [rad/s], ``> 0``.
+    steps_per_rev : int or None, optional
+        Requested steps per revolution (a whole number ``>= 16``); None (default) chooses.
+
+    Returns
+    -------
+    int
+        Time steps per revolution.
+
+    Raises
+    ------
+    InputError
+        The requested count is not a whole number ``>= 16`` or does not resolve the train, or
+        more than ``MAX_STEPS`` would be needed.
+    """
     if steps_per_rev is not None:
         N = int(_validate.positive("steps_per_rev", steps_per_rev, ""))
         if N != steps_per_rev or N < 16:
@@ -199,7 +291,29 @@ def _setup(train, program, omega, N):
 
 
 def linear_periodic(train, modes, U, omega):
-    """States of the always-in-contact periodic solution on the grid of ``U`` (exact)."""
+    """States of the always-in-contact periodic solution on the grid of ``U`` (exact).
+
+    Parameters
+    ----------
+    train : TrainModel
+        The follower train.
+    modes : dict of bool to Mode
+        ``{True: contact mode, False: free-flight mode}``; only the contact mode is used.
+    U : ndarray, shape (N+1, 2)
+        Inputs ``(a [m/s^2], g [N])`` over one revolution.
+    omega : float
+        Cam speed [rad/s] (for the error message).
+
+    Returns
+    -------
+    ndarray, shape (N+1, 2n)
+        Periodic states ``(e [m], e' [m/s])``.
+
+    Raises
+    ------
+    InputError
+        An undamped train in exact resonance with a cam harmonic.
+    """
     N, n2 = U.shape[0] - 1, 2 * train.ndof
     rest = modes[True].run(np.zeros(n2), U)[-1]
     IM = np.eye(n2) - modes[True].power(N)
@@ -273,6 +387,34 @@ def periodic_response(train: TrainModel, program: CamProgram, omega: float, *,
     a train that cannot follow the cam (lowest natural frequency <= cam frequency), or an
     undamped train in exact resonance with a cam harmonic.
 
+    Parameters
+    ----------
+    train : TrainModel
+        The follower train.
+    program : CamProgram
+        Cam program (lift [m] against cam angle [rad]).
+    omega : float
+        Constant cam speed [rad/s], ``> 0``.
+    steps_per_rev : int or None, optional
+        Time steps per revolution (``>= 16``); None (default) chooses (:func:`choose_steps`).
+    tol : float, optional
+        Periodicity tolerance [-] on the state change over a cycle, scaled by the lift and the
+        peak rigid velocity. Default 1e-9.
+    max_cycles : int, optional
+        Most cycles integrated when the contact is lost. Default 400.
+
+    Returns
+    -------
+    DynamicsResult
+        Periodic response on ``N + 1`` angles with forces [N], errors [m, m/s] and diagnostics.
+
+    Raises
+    ------
+    InputError
+        Wrong argument types or values, or the physical refusals above.
+
+    Examples
+    --------
     >>> from femcam.kinematics import CamProgram, dwell, fall, rise
     >>> from femcam.loads import FollowerDynamics
     >>> q = math.pi / 2
@@ -318,7 +460,34 @@ def periodic_response(train: TrainModel, program: CamProgram, omega: float, *,
 def simulate(train: TrainModel, program: CamProgram, omega: float, *, z0=None,
              steps_per_rev=None, cycles: int = 1):
     """Transient response from state ``z0`` (default: rest, ``e = e' = 0``) over ``cycles``
-    revolutions. Returns ``(theta, Z, contact, Fc_axial)`` with ``Z = (e, e')`` per angle."""
+    revolutions. Returns ``(theta, Z, contact, Fc_axial)`` with ``Z = (e, e')`` per angle.
+
+    Parameters
+    ----------
+    train : TrainModel
+        The follower train.
+    program : CamProgram
+        Cam program (lift [m] against cam angle [rad]).
+    omega : float
+        Constant cam speed [rad/s], ``> 0``.
+    z0 : array_like, shape (2n,), optional
+        Start state ``(e [m], e' [m/s])``; default rest.
+    steps_per_rev : int or None, optional
+        Time steps per revolution (``>= 16``); None (default) chooses.
+    cycles : int, optional
+        Number of revolutions, ``>= 1``. Default 1.
+
+    Returns
+    -------
+    theta : ndarray, shape (M+1,)
+        Cam angles [rad] from 0 to ``2 pi cycles``, ``M = N cycles``.
+    Z : ndarray, shape (M+1, 2n)
+        States ``(e [m], e' [m/s])``.
+    contact : ndarray of bool, shape (M+1,)
+        Contact flags.
+    Fc_axial : ndarray, shape (M+1,)
+        Axial contact force [N], 0 in free flight.
+    """
     omega = _validate.positive("omega", omega, "rad/s")
     N = choose_steps(train, omega, steps_per_rev)
     ncyc = int(_validate.positive("cycles", cycles, ""))

@@ -54,7 +54,10 @@ def roller_does_not_fit(rho, Rr) -> np.ndarray:
     Returns
     -------
     ndarray of bool, shape of ``rho``
+        True where the roller does not fit (``1/rho + 1/Rr <= 0``).
 
+    Examples
+    --------
     >>> roller_does_not_fit([-0.009, -0.011, 0.02, np.inf], 0.01).tolist()
     [True, False, False, False]
     """
@@ -109,6 +112,8 @@ def gap_nonparabolicity(a, rho, Rr) -> np.ndarray:
     ndarray
         ``eps`` (dimensionless).
 
+    Examples
+    --------
     >>> round(float(gap_nonparabolicity(1e-4, np.inf, 0.01)), 12)   # flat cam: a^2 / (4 Rr^2)
     2.5e-05
     """
@@ -146,6 +151,8 @@ def sizing_half_width(F, length: float, rho, Rr: float, E_star: float) -> np.nda
     ndarray
         ``a`` (m), shape of ``F`` and ``rho`` broadcast.
 
+    Examples
+    --------
     >>> round(float(sizing_half_width(1e3, 0.01, np.inf, 0.01, 1e11)) * 1e6, 3)   # um
     112.838
     """
@@ -165,9 +172,9 @@ def shape_factors(mu: float, nu: float, plane: str) -> dict:
     Parameters
     ----------
     mu : float
-        Friction coefficient.
+        Friction coefficient (dimensionless, >= 0).
     nu : float
-        Poisson's ratio of the cam.
+        Poisson's ratio of the cam (dimensionless).
     plane : str
         ``"strain"`` or ``"stress"``.
 

@@ -58,6 +58,18 @@ def effective_radius(R1, R2):
     A concave surface has a negative radius, a flat one an infinite radius (Johnson 1985 eq. 4.44;
     the denominator of seed 002 eq. 10).
 
+    Parameters
+    ----------
+    R1, R2 : float or array_like
+        Radii of curvature [m], broadcast against each other; ``< 0`` concave, ``inf`` flat.
+
+    Returns
+    -------
+    ndarray
+        Effective radius ``R`` [m], float, the broadcast shape (``inf`` if ``1/R = 0``).
+
+    Examples
+    --------
     >>> float(effective_radius(0.01, 0.01))
     0.005
     >>> round(float(effective_radius(-0.03, 0.01)), 12)
@@ -77,6 +89,22 @@ def half_width(w, R, E_star):
 
     (Johnson 1985 eq. 4.45; seed 002 eq. 10 with ``w = Fc/l``).
 
+    Parameters
+    ----------
+    w : float or array_like
+        Load per unit length [N/m], ``>= 0``.
+    R : float or array_like
+        Effective radius [m], ``> 0``.
+    E_star : float or array_like
+        Contact modulus ``E*`` [Pa].
+
+    Returns
+    -------
+    ndarray
+        Half-width ``a`` [m], float, the broadcast shape of ``w, R, E_star``.
+
+    Examples
+    --------
     >>> round(float(half_width(1.5e5, 0.005, 115.3846e9)) * 1e6, 2)   # um
     90.97
     """
@@ -90,6 +118,20 @@ def peak_pressure(w, a):
 
     (Johnson 1985 eq. 4.45; seed 002 eq. 9).
 
+    Parameters
+    ----------
+    w : float or array_like
+        Load per unit length [N/m], ``>= 0``.
+    a : float or array_like
+        Contact half-width [m], ``>= 0``; broadcasts against ``w``.
+
+    Returns
+    -------
+    ndarray
+        Peak pressure ``p0`` [Pa], float, the broadcast shape (0 where ``a = 0``).
+
+    Examples
+    --------
     >>> round(float(peak_pressure(1.5e5, 90.97e-6)) / 1e6, 1)   # MPa
     1049.7
     """
@@ -140,27 +182,54 @@ class LineContact:
 
     Parameters
     ----------
-    F : normal contact force (N), ``>= 0``.  ``F = 0`` gives ``a = p0 = 0`` and zero stresses.
+    F : float or array_like
+        Normal contact force [N], ``>= 0``.  ``F = 0`` gives ``a = p0 = 0`` and zero stresses.
         A negative force is an :class:`~femcam.errors.InputError`: lift-off is decided upstream
         (:mod:`femcam.loads` flags it), this module only takes a contact-force magnitude.
-    length : face width ``l`` (m).
-    R1, R2 : radii of curvature (m). ``R1 < 0``: concave cam; ``inf``: flat.
-    cam, roller : :class:`~femcam.materials.Material` of body 1 and body 2.
-    mu : friction coefficient (full sliding, ``q = mu p``), ``>= 0``.
-    plane : ``"strain"`` (long cylinders, default) or ``"stress"`` (thin discs), see ``E_star``.
-    direction : ``+1`` (default) traction on the analysed body in +x, ``-1`` in -x.
+    length : float
+        Face width ``l`` [m], ``> 0``.
+    R1, R2 : float or array_like
+        Radii of curvature [m] of cam and roller, nonzero; ``R1 < 0``: concave cam; ``inf``: flat.
+    cam, roller : Material
+        :class:`~femcam.materials.Material` of body 1 and body 2.
+    mu : float, optional
+        Friction coefficient [-] (full sliding, ``q = mu p``), ``>= 0``. Default 0.
+    plane : {"strain", "stress"}, optional
+        ``"strain"`` (long cylinders, default) or ``"stress"`` (thin discs), see ``E_star``.
+    direction : {1, -1}, optional
+        ``+1`` (default) traction on the analysed body in +x, ``-1`` in -x.
 
     Attributes
     ----------
-    R, E_star, w, a, p0, fmax : see the module symbol table.
-    a_over_R : ``a / R``.
-    a_over_rmin : ``a / min(R, |R1|, |R2|)`` -- the ratio the half-space idealisation needs small.
-    valid : ``a_over_rmin <= VALIDITY_RATIO`` (a :class:`HertzValidityWarning` is issued otherwise).
+    R : float or ndarray
+        Effective radius [m], the broadcast shape of ``F, R1, R2``.
+    E_star : float
+        Contact modulus ``E*`` [Pa].
+    w : float or ndarray
+        Load per unit length ``F / length`` [N/m].
+    a : float or ndarray
+        Contact half-width [m].
+    p0 : float or ndarray
+        Peak pressure [Pa].
+    fmax : float or ndarray
+        Peak tangential traction ``mu p0`` [Pa].
+    a_over_R : float or ndarray
+        ``a / R`` [-].
+    a_over_rmin : float or ndarray
+        ``a / min(R, |R1|, |R2|)`` [-] -- the ratio the half-space idealisation needs small.
+    valid : bool or ndarray of bool
+        ``a_over_rmin <= VALIDITY_RATIO`` (a :class:`HertzValidityWarning` is issued otherwise).
 
     Raises
     ------
-    HertzValidityError : ``1/R <= 0`` (conformal, flat-on-flat, or concave cam with ``|R1| <= R2``).
+    HertzValidityError
+        ``1/R <= 0`` (conformal, flat-on-flat, or concave cam with ``|R1| <= R2``).
+    InputError
+        A negative or non-finite ``F``, a zero or NaN radius, shapes that do not broadcast, or
+        an out-of-range ``length``, ``mu``, ``plane``, ``direction`` or material.
 
+    Examples
+    --------
     >>> from femcam.materials import STEEL
     >>> hc = LineContact(F=1500.0, length=0.01, R1=0.01, R2=0.01, cam=STEEL, roller=STEEL)
     >>> round(float(hc.a) * 1e6, 2), round(float(hc.p0) / 1e6, 1)   # um, MPa
@@ -256,13 +325,35 @@ class LineContact:
         return np.shape(self.a)
 
     def pressure(self, x):
-        """Hertz pressure ``p(x) >= 0`` (Pa); ``x`` (m) broadcasts against :attr:`shape`."""
+        """Hertz pressure ``p(x) >= 0`` (Pa); ``x`` (m) broadcasts against :attr:`shape`.
+
+        Parameters
+        ----------
+        x : float or array_like
+            Position along the surface [m].
+
+        Returns
+        -------
+        float or ndarray
+            Pressure [Pa], the broadcast shape of ``x`` and the load cases.
+        """
         x = _validate.finite_array("x", x, "m")
         _broadcast("x and the load cases", x, self.a)
         return _scalar(hertz_pressure(x, self.a, self.p0))
 
     def surface_stress(self, x):
-        """``(sx, sz, txz)`` (Pa) on ``z = 0`` for all ``x`` (m); seed 002 eqs. 5-7."""
+        """``(sx, sz, txz)`` (Pa) on ``z = 0`` for all ``x`` (m); seed 002 eqs. 5-7.
+
+        Parameters
+        ----------
+        x : float or array_like
+            Position along the surface [m]; broadcasts against :attr:`shape`.
+
+        Returns
+        -------
+        sx, sz, txz : float or ndarray
+            Surface stresses [Pa] (tension positive), the broadcast shape.
+        """
         x = _validate.finite_array("x", x, "m")
         _broadcast("x and the load cases", x, self.a)
         return tuple(_scalar(s) for s in surface_stress(x, self.a, self.p0, self.direction * self.mu))
@@ -273,6 +364,20 @@ class LineContact:
         ``body`` ("cam" or "roller") picks the Poisson ratio used for the out-of-plane stress
         ``sy = nu (sx + sz)`` in plane strain (``sy = 0`` in plane stress); the in-plane
         half-space field is the same in both bodies.
+
+        Parameters
+        ----------
+        x : float or array_like
+            Position along the surface [m].
+        z : float or array_like
+            Depth into the body [m], ``>= 0``; ``x``, ``z`` and :attr:`shape` broadcast.
+        body : {"cam", "roller"}, optional
+            Body whose Poisson ratio sets ``sy``. Default ``"cam"``.
+
+        Returns
+        -------
+        StressField
+            ``sx, sz, txz, sy`` [Pa], each of the broadcast shape.
         """
         _validate.choice("body", body, ("cam", "roller"))
         x = _validate.finite_array("x", x, "m")
@@ -289,15 +394,38 @@ class LineContact:
                              z=_scalar(m.z * np.asarray(self.a)), unit=m)
 
     def max_shear(self):
-        """Maximum in-plane principal shear ``tau1`` (Pa) and its location (m)."""
+        """Maximum in-plane principal shear ``tau1`` (Pa) and its location (m).
+
+        Returns
+        -------
+        ScaledMaximum
+            ``value`` [Pa] and ``x``, ``z`` [m], one per load case.
+        """
         return self._scaled(max_shear(self.mu))
 
     def max_von_mises(self, body: str = "cam"):
-        """Maximum von Mises stress (Pa) in ``body`` and its location (m)."""
+        """Maximum von Mises stress (Pa) in ``body`` and its location (m).
+
+        Parameters
+        ----------
+        body : {"cam", "roller"}, optional
+            Body whose Poisson ratio sets ``sy``. Default ``"cam"``.
+
+        Returns
+        -------
+        ScaledMaximum
+            ``value`` [Pa] and ``x``, ``z`` [m], one per load case.
+        """
         _validate.choice("body", body, ("cam", "roller"))
         nu = (self.cam if body == "cam" else self.roller).nu
         return self._scaled(max_von_mises(self.mu, nu, self.plane))
 
     def max_orthogonal_shear(self):
-        """Maximum ``|tau_xz|`` (Pa) and its location (m)."""
+        """Maximum ``|tau_xz|`` (Pa) and its location (m).
+
+        Returns
+        -------
+        ScaledMaximum
+            ``value`` [Pa] and ``x``, ``z`` [m], one per load case.
+        """
         return self._scaled(max_orthogonal_shear(self.mu))

@@ -40,7 +40,29 @@ _Z_BOUNDS = (0.0, 2.0)
 
 @dataclass(frozen=True)
 class StressMaximum:
-    """Maximum of a stress measure: ``value`` in units of ``p0``, location in units of ``a``."""
+    """Maximum of a stress measure: ``value`` in units of ``p0``, location in units of ``a``.
+
+    Attributes
+    ----------
+    quantity : str
+        Stress measure: ``"tau1"``, ``"von_mises"`` or ``"txz"`` (``|tau_xz|``).
+    value : float
+        Maximum divided by ``p0`` [-].
+    x, z : float
+        Location ``x / a`` and depth ``z / a >= 0`` [-].
+    mu : float
+        Friction coefficient [-] the maximum was computed for.
+    nu : float or None
+        Poisson ratio [-] (von Mises only; ``None`` for ``tau1`` and ``txz``).
+    grid_value : float
+        Best value on the search grid divided by ``p0`` [-] (``value >= grid_value``).
+    nfev : int
+        Number of field evaluations of the Nelder-Mead refinement.
+    converged : bool
+        Every refinement reported success.
+    message : str
+        Surface or subsurface maximum, and the ``tau1`` plateau note.
+    """
 
     quantity: str
     value: float          # max / p0
@@ -56,7 +78,17 @@ class StressMaximum:
 
 @dataclass(frozen=True)
 class ScaledMaximum:
-    """A :class:`StressMaximum` scaled to a load case: ``value`` (Pa), ``x``, ``z`` (m)."""
+    """A :class:`StressMaximum` scaled to a load case: ``value`` (Pa), ``x``, ``z`` (m).
+
+    Attributes
+    ----------
+    value : float or ndarray
+        Maximum [Pa], one per load case (shape of :attr:`LineContact.shape`).
+    x, z : float or ndarray
+        Location along the surface and depth into the body [m], same shape as ``value``.
+    unit : StressMaximum
+        The dimensionless maximum with its search diagnostics.
+    """
 
     value: object
     x: object
@@ -127,6 +159,23 @@ def max_shear(mu: float = 0.0) -> StressMaximum:
 
     Frictionless: 0.300 at (0, 0.786) (Johnson 1985 §4.2.3).
 
+    Parameters
+    ----------
+    mu : float, optional
+        Friction coefficient [-], ``>= 0``. Default 0.
+
+    Returns
+    -------
+    StressMaximum
+        ``value = tau1_max / p0`` [-] at ``(x/a, z/a)`` [-], with search diagnostics.
+
+    Raises
+    ------
+    InputError
+        ``mu`` is negative or not finite.
+
+    Examples
+    --------
     >>> m = max_shear()
     >>> round(m.value, 3), round(m.z, 3)
     (0.3, 0.786)
@@ -140,6 +189,27 @@ def max_von_mises(mu: float = 0.0, nu: float = 0.3, plane: str = "strain") -> St
     .. math:: \sigma_{vM} = \sqrt{\tfrac12[(\sigma_1-\sigma_2)^2 + (\sigma_2-\sigma_3)^2
               + (\sigma_3-\sigma_1)^2]},\quad \sigma_y = \nu(\sigma_x+\sigma_z)\ \text{(plane strain)}
 
+    Parameters
+    ----------
+    mu : float, optional
+        Friction coefficient [-], ``>= 0``. Default 0.
+    nu : float, optional
+        Poisson ratio [-] of the body, ``-1 < nu < 0.5``. Default 0.3.
+    plane : {"strain", "stress"}, optional
+        ``sy = nu (sx + sz)`` in plane strain (default), ``sy = 0`` in plane stress.
+
+    Returns
+    -------
+    StressMaximum
+        ``value = sigma_vM_max / p0`` [-] at ``(x/a, z/a)`` [-], with search diagnostics.
+
+    Raises
+    ------
+    InputError
+        ``mu``, ``nu`` or ``plane`` out of range.
+
+    Examples
+    --------
     >>> round(max_von_mises(0.0, 0.3).value, 4)   # textbook ~0.557
     0.5575
     """
@@ -154,6 +224,23 @@ def max_orthogonal_shear(mu: float = 0.0) -> StressMaximum:
     Frictionless: exactly 1/4 at :math:`(\pm\sqrt3/2,\ 1/2)` (Johnson 1985 §4.2.3); the
     reported ``x`` is the one the search lands on (the field is antisymmetric in ``x``).
 
+    Parameters
+    ----------
+    mu : float, optional
+        Friction coefficient [-], ``>= 0``. Default 0.
+
+    Returns
+    -------
+    StressMaximum
+        ``value = |tau_xz|_max / p0`` [-] at ``(x/a, z/a)`` [-], with search diagnostics.
+
+    Raises
+    ------
+    InputError
+        ``mu`` is negative or not finite.
+
+    Examples
+    --------
     >>> round(max_orthogonal_shear().value, 6)
     0.25
     """

@@ -59,6 +59,21 @@ def mn(X, Z):
 
     (Johnson 1985, eq. 7.20 definitions; ``sgn n = sgn X``).
 
+    Parameters
+    ----------
+    X : float or array_like
+        Position along the surface in units of the half-width, ``x / a`` [-].
+    Z : float or array_like
+        Depth in units of the half-width, ``z / a >= 0`` [-]; broadcasts against ``X``.
+
+    Returns
+    -------
+    m, n, D : ndarray
+        ``m >= 0`` and ``n`` (sign of ``X``) in units of ``a`` [-], and ``D = m^2 + n^2`` in
+        units of ``a^2`` [-]; float, the broadcast shape of ``X, Z``.
+
+    Examples
+    --------
     >>> [float(v) for v in mn(0.0, 1.0)]
     [1.4142135623730951, 0.0, 2.0]
     """
@@ -79,6 +94,23 @@ def unit_stresses(X, Z, mu=0.0):
 
     Johnson 1985 eqs. 7.20 + 7.21 (see the module docstring).
 
+    Parameters
+    ----------
+    X : float or array_like
+        Position along the surface ``x / a`` [-].
+    Z : float or array_like
+        Depth ``z / a >= 0`` [-]; broadcasts against ``X``.
+    mu : float, optional
+        Signed friction coefficient [-], ``q0 = mu p0`` acting on the body in +x if ``mu > 0``.
+        Default 0.
+
+    Returns
+    -------
+    sx, sz, txz : ndarray
+        In-plane stresses divided by ``p0`` [-] (tension positive), the broadcast shape.
+
+    Examples
+    --------
     >>> [round(float(s), 6) + 0.0 for s in unit_stresses(0.0, 0.786)]   # axis, frictionless
     [-0.185643, -0.786209, 0.0]
     """
@@ -105,6 +137,16 @@ class StressField:
     ``tau1`` is the principal shear in the x-z plane, ``tresca`` the largest principal-stress
     difference of all three principal stresses (``= 2 x`` maximum shear), ``von_mises`` the
     equivalent stress from all three.
+
+    Parameters
+    ----------
+    sx, sz : ndarray
+        In-plane normal stresses [Pa], along the surface and into the depth.
+    txz : ndarray
+        In-plane shear stress [Pa].
+    sy : ndarray
+        Out-of-plane normal stress [Pa] (``nu (sx + sz)`` in plane strain, 0 in plane stress).
+        All four share one (broadcast) shape.
     """
 
     sx: np.ndarray
@@ -118,7 +160,13 @@ class StressField:
         return np.hypot(0.5 * (self.sx - self.sz), self.txz)
 
     def principal(self):
-        """The three principal stresses sorted ``s1 >= s2 >= s3`` (Pa), stacked on axis 0."""
+        """The three principal stresses sorted ``s1 >= s2 >= s3`` (Pa), stacked on axis 0.
+
+        Returns
+        -------
+        ndarray, shape (3, ...)
+            ``[s1, s2, s3]`` [Pa], float; the trailing shape is that of the components.
+        """
         mid = 0.5 * (self.sx + self.sz)
         t = self.tau1
         return -np.sort(-np.stack(np.broadcast_arrays(mid + t, mid - t, self.sy)), axis=0)
@@ -146,6 +194,36 @@ def stress_field(x, z, a, p0, mu=0.0, *, nu=0.3, plane="strain") -> StressField:
 
     .. math:: \sigma_{ij}(x, z) = p_0\, \hat\sigma_{ij}(x/a,\ z/a;\ \mu)
 
+    Parameters
+    ----------
+    x : float or array_like
+        Position along the surface [m].
+    z : float or array_like
+        Depth into the body [m], ``>= 0``.
+    a : float or array_like
+        Contact half-width [m], ``>= 0`` (``a = 0`` gives exact zeros).
+    p0 : float or array_like
+        Peak pressure [Pa].
+    mu : float, optional
+        Signed friction coefficient [-], traction ``mu p`` on the body in +x if ``mu > 0``.
+        Default 0.
+    nu : float, optional
+        Poisson ratio [-] for ``sy``, ``-1 < nu < 0.5``. Default 0.3.
+    plane : {"strain", "stress"}, optional
+        Plane strain (default) or plane stress.
+
+    Returns
+    -------
+    StressField
+        ``sx, sz, txz, sy`` [Pa], each of the broadcast shape of ``x, z, a, p0``.
+
+    Raises
+    ------
+    InputError
+        ``x`` or ``z`` not finite, ``z < 0``, ``nu`` or ``plane`` out of range.
+
+    Examples
+    --------
     >>> f = stress_field(0.0, 0.0, 1e-4, 1e9)
     >>> float(f.sx), float(f.sz), float(f.sy)
     (-1000000000.0, -1000000000.0, -600000000.0)

@@ -37,6 +37,27 @@ def hertz_pressure(x, a, p0):
 
     (Johnson 1985 eq. 4.46).  ``a = 0`` (zero load) gives exactly 0.
 
+    Parameters
+    ----------
+    x : float or array_like
+        Position along the surface [m]; broadcasts against ``a`` and ``p0``.
+    a : float or array_like
+        Contact half-width [m], ``>= 0``.
+    p0 : float or array_like
+        Peak pressure [Pa].
+
+    Returns
+    -------
+    ndarray
+        Pressure ``p(x) >= 0`` [Pa], float, the broadcast shape of ``x, a, p0``.
+
+    Raises
+    ------
+    InputError
+        ``x`` is not finite.
+
+    Examples
+    --------
     >>> float(hertz_pressure(0.5, 1.0, 2.0)) == 2.0 * 0.75 ** 0.5
     True
     """
@@ -56,6 +77,30 @@ def surface_stress(x, a, p0, mu=0.0):
     with ``p = p0 sqrt(1 - x^2/a^2)`` inside the contact and 0 outside (seed 002 eqs. 5-7;
     Johnson 1985 eqs. 7.20-7.21 at ``z = 0``).  Valid for all ``x``; no warnings at ``|x| = a``.
 
+    Parameters
+    ----------
+    x : float or array_like
+        Position along the surface [m]; broadcasts against ``a``, ``p0`` and ``mu``.
+    a : float or array_like
+        Contact half-width [m], ``>= 0``.
+    p0 : float or array_like
+        Peak pressure [Pa].
+    mu : float or array_like, optional
+        Signed friction coefficient [-]: ``mu > 0`` puts the traction ``q = mu p`` on the body
+        in +x. Default 0.
+
+    Returns
+    -------
+    sx, sz, txz : ndarray
+        Surface stresses [Pa] (tension positive), float, each of the broadcast shape.
+
+    Raises
+    ------
+    InputError
+        ``x`` is not finite.
+
+    Examples
+    --------
     >>> sx, sz, txz = surface_stress([-1.0, 0.0, 2.0], 1.0, 1.0, mu=0.1)
     >>> [round(float(s), 6) for s in sx]
     [0.2, -1.0, -0.05359]

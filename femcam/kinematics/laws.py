@@ -79,6 +79,22 @@ def bernstein(n: int, i: int, u) -> np.ndarray:
 
     Reference: seed 002 eq. 1, with the printed exponent ``n - 1`` corrected to ``n - i``.
 
+    Parameters
+    ----------
+    n : int
+        Degree, ``>= 0``.
+    i : int
+        Index of the basis polynomial, ``0 <= i <= n``.
+    u : float or array_like
+        Normalised parameter [-], usually in [0, 1].
+
+    Returns
+    -------
+    ndarray
+        :math:`B_i^n(u)` [-], float, the shape of ``u``.
+
+    Examples
+    --------
     >>> round(float(sum(bernstein(5, i, 0.3) for i in range(6))), 12)  # partition of unity
     1.0
     """
@@ -87,7 +103,18 @@ def bernstein(n: int, i: int, u) -> np.ndarray:
 
 
 class LawEnds:
-    """Values of v, a, j (d^k s/du^k) at u = 0 and u = 1, for junction analysis."""
+    """Values of v, a, j (d^k s/du^k) at u = 0 and u = 1, for junction analysis.
+
+    All values are normalised (derivatives of the unit lift with respect to ``u``), stored as
+    ``float``.
+
+    Parameters
+    ----------
+    v0, a0, j0 : float
+        ``ds/du``, ``d^2 s/du^2``, ``d^3 s/du^3`` at ``u = 0`` [-].
+    v1, a1, j1 : float
+        The same at ``u = 1`` [-].
+    """
 
     __slots__ = ("v0", "a0", "j0", "v1", "a1", "j1")
 
@@ -122,23 +149,105 @@ class MotionLaw:
         return np.clip(arr, 0.0, 1.0)
 
     def s(self, u) -> np.ndarray:
-        """Normalised lift s(u)."""
+        """Normalised lift s(u).
+
+        Parameters
+        ----------
+        u : float or array_like
+            Normalised cam angle [-] in [0, 1] (round-off overshoot up to 1e-12 is clipped).
+
+        Returns
+        -------
+        ndarray
+            Lift ``s`` in units of the segment lift ``h`` [-], float, the shape of ``u``.
+
+        Raises
+        ------
+        InputError
+            ``u`` not finite or outside [0, 1].
+        """
         return self._deriv(self._u(u), 0)
 
     def v(self, u) -> np.ndarray:
-        """ds/du."""
+        """ds/du.
+
+        Parameters
+        ----------
+        u : float or array_like
+            Normalised cam angle [-] in [0, 1] (round-off overshoot up to 1e-12 is clipped).
+
+        Returns
+        -------
+        ndarray
+            ``ds/du`` [-], float, the shape of ``u``.
+
+        Raises
+        ------
+        InputError
+            ``u`` not finite or outside [0, 1].
+        """
         return self._deriv(self._u(u), 1)
 
     def a(self, u) -> np.ndarray:
-        """d^2 s/du^2."""
+        """d^2 s/du^2.
+
+        Parameters
+        ----------
+        u : float or array_like
+            Normalised cam angle [-] in [0, 1] (round-off overshoot up to 1e-12 is clipped).
+
+        Returns
+        -------
+        ndarray
+            ``d^2 s/du^2`` [-], float, the shape of ``u``.
+
+        Raises
+        ------
+        InputError
+            ``u`` not finite or outside [0, 1].
+        """
         return self._deriv(self._u(u), 2)
 
     def j(self, u) -> np.ndarray:
-        """d^3 s/du^3."""
+        """d^3 s/du^3.
+
+        Parameters
+        ----------
+        u : float or array_like
+            Normalised cam angle [-] in [0, 1] (round-off overshoot up to 1e-12 is clipped).
+
+        Returns
+        -------
+        ndarray
+            ``d^3 s/du^3`` [-], float, the shape of ``u``.
+
+        Raises
+        ------
+        InputError
+            ``u`` not finite or outside [0, 1].
+        """
         return self._deriv(self._u(u), 3)
 
     def derivative(self, u, k: int) -> np.ndarray:
-        """d^k s/du^k for k in 0..3."""
+        """d^k s/du^k for k in 0..3.
+
+        Parameters
+        ----------
+        u : float or array_like
+            Normalised cam angle [-] in [0, 1].
+        k : int
+            Order of the derivative, 0, 1, 2 or 3.
+
+        Returns
+        -------
+        ndarray
+            ``d^k s/du^k`` [-], float, the shape of ``u``.
+
+        Raises
+        ------
+        InputError
+            ``k`` not in 0..3, or ``u`` not finite or outside [0, 1].
+        """
         if k not in (0, 1, 2, 3):
             raise _validate.fail("k", k, "", "must be 0, 1, 2 or 3")
         return self._deriv(self._u(u), k)
@@ -394,6 +503,27 @@ def law(name: str, **params) -> MotionLaw:
     ``law("polynomial", coefficients=[0, 0, 0, 10, -15, 6])`` take parameters; the other
     names in :data:`LAW_NAMES` take none. A :class:`MotionLaw` passed as ``name`` is returned.
 
+    Parameters
+    ----------
+    name : str or MotionLaw
+        One of :data:`LAW_NAMES`, or a ready :class:`MotionLaw` (returned unchanged).
+    **params
+        ``control_points`` (Bezier ordinates [-], first 0, last 1) for ``"bezier"``, or
+        ``coefficients`` (ascending powers of ``u`` [-], ``c_0 = 0``, sum 1) for
+        ``"polynomial"``; nothing for the other names.
+
+    Returns
+    -------
+    MotionLaw
+        The normalised law ``s(u)`` with exact derivatives and peak coefficients.
+
+    Raises
+    ------
+    InputError
+        Unknown name, missing or unexpected parameters, or invalid control points/coefficients.
+
+    Examples
+    --------
     >>> round(law("cycloidal").Cv, 6)
     2.0
     """

@@ -56,7 +56,25 @@ _KINDS = ("rise", "dwell", "fall")
 
 @dataclass(frozen=True, kw_only=True)
 class Segment:
-    """One segment of a cam program (build with :func:`rise`, :func:`dwell`, :func:`fall`)."""
+    """One segment of a cam program (build with :func:`rise`, :func:`dwell`, :func:`fall`).
+
+    Parameters
+    ----------
+    kind : {"rise", "dwell", "fall"}
+        Segment type.
+    beta : float
+        Segment angle [rad], ``> 0``.
+    h : float, optional
+        Segment lift [m], ``> 0`` for a rise or fall; forced to 0 for a dwell.
+    law : str or MotionLaw or None, optional
+        Normalised motion law (a name or a :class:`~femcam.kinematics.laws.MotionLaw`; stored
+        as a MotionLaw, ``"cycloidal"`` if None); forced to None for a dwell.
+
+    Raises
+    ------
+    InputError
+        Unknown ``kind``, non-positive ``beta`` or ``h``, or an invalid law.
+    """
 
     kind: str
     beta: float
@@ -85,7 +103,19 @@ class Segment:
         return self.kind if self.law is None else f"{self.kind}({self.law.name})"
 
     def end_derivatives(self, end: int) -> np.ndarray:
-        """(s1, s2, s3) in m/rad^k at the segment start (end=0) or end (end=1)."""
+        """(s1, s2, s3) in m/rad^k at the segment start (end=0) or end (end=1).
+
+        Parameters
+        ----------
+        end : {0, 1}
+            0 for the segment start, 1 for its end (any other value is taken as the end).
+
+        Returns
+        -------
+        ndarray, shape (3,)
+            ``ds/dtheta`` [m/rad], ``d2s/dtheta2`` [m/rad^2], ``d3s/dtheta3`` [m/rad^3];
+            zeros for a dwell.
+        """
         if self.law is None:
             return np.zeros(3)
         e = self.law.ends
@@ -93,7 +123,13 @@ class Segment:
         return np.array([self.sign * self.h / self.beta ** (k + 1) * vaj[k] for k in range(3)])
 
     def scale(self) -> np.ndarray:
-        """Characteristic size of (s1, s2, s3) in m/rad^k, for round-off tolerances."""
+        """Characteristic size of (s1, s2, s3) in m/rad^k, for round-off tolerances.
+
+        Returns
+        -------
+        ndarray, shape (3,)
+            ``h/beta^k max(C_k, 1)`` for k = 1, 2, 3 [m/rad^k]; zeros for a dwell.
+        """
         if self.law is None:
             return np.zeros(3)
         return np.array([self.h / self.beta**k * max(C, 1.0)
@@ -101,23 +137,78 @@ class Segment:
 
 
 def rise(beta: float, h: float, law: str | MotionLaw = "cycloidal") -> Segment:
-    """A rise of ``h`` m over ``beta`` rad following ``law`` (a name or a MotionLaw)."""
+    """A rise of ``h`` m over ``beta`` rad following ``law`` (a name or a MotionLaw).
+
+    Parameters
+    ----------
+    beta : float
+        Segment angle [rad], ``> 0``.
+    h : float
+        Segment lift [m], ``> 0``.
+    law : str or MotionLaw, optional
+        Normalised motion law: a name from :data:`~femcam.kinematics.laws.LAW_NAMES` or a
+        :class:`~femcam.kinematics.laws.MotionLaw`. Default ``"cycloidal"``.
+
+    Returns
+    -------
+    Segment
+        The validated rise segment.
+    """
     return Segment(kind="rise", beta=beta, h=h, law=law)
 
 
 def fall(beta: float, h: float, law: str | MotionLaw = "cycloidal") -> Segment:
-    """A fall of ``h`` m over ``beta`` rad: the rise law mirrored, ``s = h_0 - h L(u)``."""
+    """A fall of ``h`` m over ``beta`` rad: the rise law mirrored, ``s = h_0 - h L(u)``.
+
+    Parameters
+    ----------
+    beta : float
+        Segment angle [rad], ``> 0``.
+    h : float
+        Segment lift [m], ``> 0``.
+    law : str or MotionLaw, optional
+        Normalised motion law: a name from :data:`~femcam.kinematics.laws.LAW_NAMES` or a
+        :class:`~femcam.kinematics.laws.MotionLaw`. Default ``"cycloidal"``.
+
+    Returns
+    -------
+    Segment
+        The validated fall segment.
+    """
     return Segment(kind="fall", beta=beta, h=h, law=law)
 
 
 def dwell(beta: float) -> Segment:
-    """A dwell (constant lift) over ``beta`` rad."""
+    """A dwell (constant lift) over ``beta`` rad.
+
+    Parameters
+    ----------
+    beta : float
+        Segment angle [rad], ``> 0``.
+
+    Returns
+    -------
+    Segment
+        The validated dwell segment (``h = 0``, ``law = None``).
+    """
     return Segment(kind="dwell", beta=beta)
 
 
 @dataclass(frozen=True)
 class Derivatives:
-    """Lift and its cam-angle derivatives: s (m), s1 (m/rad), s2 (m/rad^2), s3 (m/rad^3)."""
+    """Lift and its cam-angle derivatives: s (m), s1 (m/rad), s2 (m/rad^2), s3 (m/rad^3).
+
+    Items can also be read by name, ``d["s1"]``.
+
+    Attributes
+    ----------
+    theta : ndarray
+        Cam angles [rad] as given (not reduced mod 2 pi), float, any shape.
+    s : ndarray
+        Lift [m], the shape of ``theta``.
+    s1, s2, s3 : ndarray
+        ``d^k s/dtheta^k`` [m/rad^k], k = 1, 2, 3, the shape of ``theta``.
+    """
 
     theta: np.ndarray
     s: np.ndarray
@@ -131,7 +222,25 @@ class Derivatives:
 
 @dataclass(frozen=True)
 class SVAJ:
-    """Follower lift s (m), velocity v (m/s), acceleration a (m/s^2), jerk j (m/s^3) vs theta (rad)."""
+    """Follower lift s (m), velocity v (m/s), acceleration a (m/s^2), jerk j (m/s^3) vs theta (rad).
+
+    Items can also be read by name, ``r["v"]``.
+
+    Attributes
+    ----------
+    theta : ndarray
+        Cam angles [rad] as given, float, any shape.
+    s : ndarray
+        Lift [m], the shape of ``theta``.
+    v : ndarray
+        Velocity [m/s].
+    a : ndarray
+        Acceleration [m/s^2].
+    j : ndarray
+        Jerk [m/s^3].
+    omega : float
+        Constant cam speed [rad/s] (NaN if unknown).
+    """
 
     theta: np.ndarray
     s: np.ndarray
@@ -153,6 +262,27 @@ class Junction:
     With the cam speed ``omega`` (rad/s; from ``CamProgram.junctions(omega)``) the physical
     jumps are ``jump_v = omega jump_s1`` (m/s), ``jump_a = omega^2 jump_s2`` (m/s^2) and
     ``jump_j = omega^3 jump_s3`` (m/s^3); without it they are ``None``.
+
+    Attributes
+    ----------
+    theta : float
+        Junction angle [rad], in [0, 2 pi).
+    left, right : str
+        Names of the segments ending and starting there, e.g. ``"rise(shm)"``.
+    jump_s1 : float
+        Jump of ``ds/dtheta`` [m/rad] (velocity step / omega).
+    jump_s2 : float
+        Jump of ``d2s/dtheta2`` [m/rad^2] (acceleration step / omega^2).
+    jump_s3 : float
+        Jump of ``d3s/dtheta3`` [m/rad^3] (jerk step / omega^3).
+    infinite_acceleration : bool
+        Velocity step: the acceleration (and jerk) is a delta function.
+    infinite_jerk : bool
+        Acceleration or velocity step: the jerk is infinite.
+    index : int
+        Junction ``k`` joins segment ``k`` and segment ``(k + 1) mod n``.
+    omega : float or None
+        Cam speed [rad/s]; None if only the per-radian jumps are known.
     """
 
     theta: float  # rad, in [0, 2 pi)
@@ -184,10 +314,12 @@ class Junction:
 
     @property
     def infinite_a(self) -> bool:
+        """Alias of :attr:`infinite_acceleration`."""
         return self.infinite_acceleration
 
     @property
     def infinite_j(self) -> bool:
+        """Alias of :attr:`infinite_jerk`."""
         return self.infinite_jerk
 
     @property
@@ -202,7 +334,13 @@ class Junction:
     def describe(self) -> str:
         """One line for humans, e.g. ``theta = 90 deg: rise(shm) -> dwell: ... infinite jerk``.
 
-        With ``omega`` the jumps are in m/s, m/s^2, m/s^3; without it, per radian."""
+        With ``omega`` the jumps are in m/s, m/s^2, m/s^3; without it, per radian.
+
+        Returns
+        -------
+        str
+            One line: angle [deg], segment names, jumps and the junction kind.
+        """
         msg = {
             "infinite acceleration": "INFINITE ACCELERATION (velocity step; jerk infinite too)",
             "infinite jerk": "INFINITE JERK (acceleration step)",
@@ -224,7 +362,18 @@ class Junction:
 def junction_report(junctions) -> str:
     """Text report of a junction list (for the CLI). Jumps are in m/s, m/s^2, m/s^3 when the
     junctions carry the cam speed (``CamProgram.junctions(omega)``), else per radian (the
-    velocity/acceleration/jerk jumps are then omega, omega^2, omega^3 times these)."""
+    velocity/acceleration/jerk jumps are then omega, omega^2, omega^3 times these).
+
+    Parameters
+    ----------
+    junctions : iterable of Junction
+        Junctions as returned by :meth:`CamProgram.junctions`.
+
+    Returns
+    -------
+    str
+        A header line, one line per junction, and a count of the singular ones.
+    """
     junctions = list(junctions)
     omegas = {jn.omega for jn in junctions}
     if junctions and None not in omegas and len(omegas) == 1:
@@ -244,6 +393,21 @@ def junction_report(junctions) -> str:
 class CamProgram:
     """A sequence of segments spanning exactly one revolution and returning to the start lift.
 
+    Parameters
+    ----------
+    segments : sequence of Segment
+        Segments in cam-angle order from ``theta = 0``; their ``beta`` must sum to 2 pi rad
+        (relative tolerance 1e-9), the rises and falls [m] must cancel, and the lift must stay
+        ``>= 0``.
+
+    Raises
+    ------
+    InputError
+        Empty or non-segment input, angles not closing to 2 pi, net lift not zero, or a lift
+        below the start lift.
+
+    Examples
+    --------
     >>> from math import pi
     >>> p = CamProgram([rise(pi/2, 0.01, "poly345"), dwell(pi/2), fall(pi/2, 0.01), dwell(pi/2)])
     >>> p.h_max
@@ -313,6 +477,21 @@ class CamProgram:
         """s and d^k s/d theta^k (k = 1..3) at cam angles ``theta`` (rad, any shape, mod 2 pi).
 
         At a junction the value of the segment that *starts* there is returned.
+
+        Parameters
+        ----------
+        theta : float or array_like
+            Cam angles [rad], any shape, taken modulo 2 pi.
+
+        Returns
+        -------
+        Derivatives
+            ``s`` [m] and ``s1, s2, s3`` [m/rad^k], each of the shape of ``theta``.
+
+        Raises
+        ------
+        InputError
+            ``theta`` not finite.
         """
         th = _validate.finite_array("theta", theta, "rad")
         t = np.mod(th, TWO_PI)
@@ -337,6 +516,23 @@ class CamProgram:
         """s (m), v (m/s), a (m/s^2), j (m/s^3) at constant cam speed ``omega`` (rad/s).
 
         .. math:: v = \\omega s', \\quad a = \\omega^2 s'', \\quad j = \\omega^3 s'''
+
+        Parameters
+        ----------
+        theta : float or array_like
+            Cam angles [rad], any shape, taken modulo 2 pi.
+        omega : float
+            Constant cam speed [rad/s], ``> 0``.
+
+        Returns
+        -------
+        SVAJ
+            ``s`` [m], ``v`` [m/s], ``a`` [m/s^2], ``j`` [m/s^3], each of the shape of ``theta``.
+
+        Raises
+        ------
+        InputError
+            ``theta`` not finite or ``omega <= 0``.
         """
         w = _validate.positive("omega", omega, "rad/s")
         d = self.derivatives(theta)
@@ -349,6 +545,16 @@ class CamProgram:
         Each carries the per-radian jumps ``jump_s1, jump_s2, jump_s3``; with the cam speed
         ``omega`` (rad/s) also the SI jumps ``jump_v = omega jump_s1`` (m/s),
         ``jump_a = omega^2 jump_s2`` (m/s^2) and ``jump_j = omega^3 jump_s3`` (m/s^3).
+
+        Parameters
+        ----------
+        omega : float or None, optional
+            Cam speed [rad/s], ``> 0``; None (default) for the per-radian jumps only.
+
+        Returns
+        -------
+        list of Junction
+            One per segment, junction ``k`` at the end of segment ``k``.
         """
         w = None if omega is None else _validate.positive("omega", omega, "rad/s")
         segs = self.segments
@@ -372,7 +578,18 @@ class CamProgram:
 
     def table(self, omega: float | None = None) -> str:
         """Readable report: the segments, then the junctions (in SI at ``omega`` rad/s if given,
-        else per radian)."""
+        else per radian).
+
+        Parameters
+        ----------
+        omega : float or None, optional
+            Cam speed [rad/s], ``> 0``; None (default) reports the jumps per radian.
+
+        Returns
+        -------
+        str
+            Segments (angles in deg, lift in mm) followed by :func:`junction_report`.
+        """
         lines = ["Cam program (theta in deg, lift in mm):"]
         for k, (sg, th0, h0) in enumerate(zip(self.segments, self._starts, self._h0, strict=True)):
             end = h0 + sg.sign * sg.h

@@ -32,6 +32,28 @@ class BaseRadiusResult:
     ``Rb`` is reported as 0; ``message`` then says why and what else should set it.
     ``phi_max`` and ``rho_min`` are the values reached at ``Rb`` (in the limit ``Rb -> 0`` for
     ``"none"``); ``theta_critical`` is the angle of the binding requirement.
+
+    Attributes
+    ----------
+    Rb : float
+        Smallest base-circle radius [m] (0 when ``binding == "none"``).
+    kind : {"roller", "knife_edge", "flat_faced"}
+        Follower type.
+    binding : {"pressure_angle", "undercut", "curvature", "none"}
+        The requirement that sets ``Rb``.
+    phi_max : float
+        Largest ``|phi|`` [rad] reached at ``Rb`` (0 for a flat face).
+    rho_min : float
+        Smallest convex cam radius of curvature [m] reached at ``Rb`` (flat face:
+        ``Rb + min(s + s'')``).
+    theta_critical : float
+        Cam angle [rad] of the binding requirement, in [0, 2 pi).
+    n_theta : int
+        Number of samples over one revolution.
+    iterations : int
+        Bracketing steps plus ``brentq`` iterations of the undercut search (0 if not needed).
+    message : str
+        What set ``Rb``, or why nothing bounds it.
     """
 
     Rb: float
@@ -106,6 +128,36 @@ def min_base_radius(kind: str, program, *, phi_max: float = math.radians(30.0), 
     8.27). The minimum of ``s + s''`` is polished with a bounded Brent search and the returned
     ``Rb`` is that infimum times ``1 + RB_MARGIN`` (1e-9), so :func:`cam_profile` accepts it on
     any grid.
+
+    Parameters
+    ----------
+    kind : {"roller", "knife_edge", "flat_faced"}
+        Follower type.
+    program : CamProgram
+        Anything with ``derivatives(theta)`` giving ``s`` [m], ``s1`` [m/rad], ``s2`` [m/rad^2].
+    phi_max : float, optional
+        Pressure-angle limit [rad], in (0, pi/2). Default 30 deg (0.5236 rad). Unused for a
+        flat face.
+    Rr : float, optional
+        Roller radius [m]: ``> 0`` for a roller, 0 (default) otherwise.
+    e : float, optional
+        Follower offset [m]. Default 0.
+    rho_min : float, optional
+        Smallest allowed convex cam radius of curvature [m], ``>= 0``. Default 0.
+    n_theta : int, optional
+        Number of samples over one revolution, ``>= 16``. Default 7200.
+
+    Returns
+    -------
+    BaseRadiusResult
+        ``Rb`` [m] with the binding requirement, the values reached there and diagnostics.
+
+    Raises
+    ------
+    InputError
+        Invalid ``kind``, ``phi_max``, ``Rr``, ``e``, ``rho_min`` or ``n_theta``.
+    UndercutError
+        No base radius below 1 km avoids undercutting.
     """
     phi_lim, Rr, e, rho_min, n = _checked(kind, phi_max, Rr, e, rho_min, n_theta)
     theta = np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)

@@ -71,6 +71,22 @@ def _set_checked(follower, **checks) -> None:
 class RollerFollower:
     """Translating roller follower: base radius ``Rb``, roller radius ``Rr``, offset ``e`` (m).
 
+    Parameters
+    ----------
+    Rb : float
+        Base-circle radius of the cam [m], ``> 0``.
+    Rr : float
+        Roller radius [m], ``> 0``.
+    e : float, optional
+        Follower offset [m], positive to +x, ``|e| < Rb + Rr``. Default 0.
+
+    Raises
+    ------
+    InputError
+        ``Rb`` or ``Rr`` not positive, ``e`` not finite or ``|e| >= Rb + Rr``.
+
+    Examples
+    --------
     >>> RollerFollower(Rb=0.01, Rr=0.01).Rp
     0.02
     """
@@ -93,7 +109,20 @@ class RollerFollower:
 
 @dataclass(frozen=True, kw_only=True)
 class KnifeEdgeFollower:
-    """Translating knife-edge follower: base radius ``Rb`` and offset ``e`` (m)."""
+    """Translating knife-edge follower: base radius ``Rb`` and offset ``e`` (m).
+
+    Parameters
+    ----------
+    Rb : float
+        Base-circle radius of the cam [m], ``> 0``.
+    e : float, optional
+        Follower offset [m], positive to +x, ``|e| < Rb``. Default 0.
+
+    Raises
+    ------
+    InputError
+        ``Rb`` not positive, ``e`` not finite or ``|e| >= Rb``.
+    """
 
     Rb: float
     e: float = 0.0
@@ -106,10 +135,12 @@ class KnifeEdgeFollower:
 
     @property
     def Rr(self) -> float:
+        """Roller radius (m): 0 for a knife edge."""
         return 0.0
 
     @property
     def Rp(self) -> float:
+        """Prime-circle radius (m): ``Rb`` for a knife edge."""
         return self.Rb
 
 
@@ -119,6 +150,18 @@ class FlatFacedFollower:
 
     The axis offset ``e`` does not change the cam shape; it only moves the contact point
     along the face (the contact sits ``s1 - e`` from the axis).
+
+    Parameters
+    ----------
+    Rb : float
+        Base-circle radius of the cam [m], ``> 0``.
+    e : float, optional
+        Offset of the follower axis [m], positive to +x, any finite value. Default 0.
+
+    Raises
+    ------
+    InputError
+        ``Rb`` not positive or ``e`` not finite.
     """
 
     Rb: float
@@ -130,6 +173,7 @@ class FlatFacedFollower:
 
     @property
     def Rr(self) -> float:
+        """Roller radius (m): 0 for a flat face."""
         return 0.0
 
 
@@ -137,7 +181,29 @@ Follower = RollerFollower | KnifeEdgeFollower | FlatFacedFollower
 
 
 def make_follower(kind: str, *, Rb: float, Rr: float = 0.0, e: float = 0.0) -> Follower:
-    """Build a follower from its kind name (``"roller"``, ``"knife_edge"``, ``"flat_faced"``)."""
+    """Build a follower from its kind name (``"roller"``, ``"knife_edge"``, ``"flat_faced"``).
+
+    Parameters
+    ----------
+    kind : {"roller", "knife_edge", "flat_faced"}
+        Follower type.
+    Rb : float
+        Base-circle radius of the cam [m], ``> 0``.
+    Rr : float, optional
+        Roller radius [m]: ``> 0`` for a roller, must be 0 (default) otherwise.
+    e : float, optional
+        Follower offset [m]. Default 0.
+
+    Returns
+    -------
+    RollerFollower or KnifeEdgeFollower or FlatFacedFollower
+        The validated follower.
+
+    Raises
+    ------
+    InputError
+        Unknown ``kind``, ``Rr != 0`` for a non-roller, or an invalid radius or offset.
+    """
     _validate.choice("follower kind", kind, FOLLOWER_KINDS)
     if kind == "roller":
         return RollerFollower(Rb=Rb, Rr=Rr, e=e)
@@ -164,6 +230,37 @@ class CamProfile:
     generated envelope then folds over itself and has cusps). ``face_offset`` is the contact
     position along a flat face measured from the follower axis (``s1 - e``; zero otherwise) and
     ``face_width_min`` the width of a face centred on the axis that keeps the contact on it.
+
+    Attributes
+    ----------
+    follower : RollerFollower or KnifeEdgeFollower or FlatFacedFollower
+        The follower the profile was generated for.
+    theta : ndarray
+        Cam angles [rad], float; every array below has this (broadcast) shape.
+    s : ndarray
+        Follower lift [m].
+    phi : ndarray
+        Signed pressure angle [rad] (0 for a flat face).
+    rho : ndarray
+        Cam-surface radius of curvature [m]: ``> 0`` convex, ``< 0`` concave, ``inf`` flat.
+    rho_pitch : ndarray
+        Pitch-curve radius of curvature [m] (equal to ``rho`` for knife-edge and flat-faced).
+    x, y : ndarray
+        Cam-surface contact point in the cam frame [m].
+    pitch_x, pitch_y : ndarray
+        Pitch-curve point in the cam frame [m].
+    contact_x, contact_y : ndarray
+        Contact point in the fixed frame [m].
+    undercut : ndarray of bool
+        True where the generated surface is not realisable.
+    face_offset : ndarray
+        Contact position along a flat face from the follower axis, ``s1 - e`` [m]; zeros
+        for other followers.
+    face_width_min : float
+        Width of a face centred on the axis that keeps the contact on it [m]; 0 for other
+        followers.
+    undercut_intervals : list of tuple of float
+        ``(theta_start, theta_end)`` [rad] of each run of undercut samples, in grid order.
     """
 
     follower: Follower
@@ -185,6 +282,7 @@ class CamProfile:
 
     @property
     def cusp(self) -> bool:
+        """True when any sample is undercut (the envelope folds over itself)."""
         return bool(np.any(self.undercut))
 
     @property
@@ -210,6 +308,24 @@ def pressure_angle(s, s1, Rp, e=0.0):
     ``Rp = Ro``. Derivation: the pitch-curve tangent, written in the fixed frame at angle
     theta, is ``(d + s, s1 - e)``; the contact normal is perpendicular to it.
 
+    Parameters
+    ----------
+    s : float or array_like
+        Follower lift [m].
+    s1 : float or array_like
+        ``ds/dtheta`` [m/rad]; broadcasts against ``s``.
+    Rp : float
+        Prime-circle radius [m] (``Rb + Rr`` for a roller, ``Rb`` for a knife edge).
+    e : float, optional
+        Follower offset [m], ``|e| < Rp``. Default 0.
+
+    Returns
+    -------
+    ndarray
+        Signed pressure angle ``phi`` [rad], float, the broadcast shape of ``s, s1``.
+
+    Examples
+    --------
     >>> round(math.degrees(float(pressure_angle(0.0, 0.02, 0.02))), 6)
     45.0
     """
@@ -227,6 +343,26 @@ def pitch_curvature(s, s1, s2, Rp, e=0.0):
     Norton ch. 8). For ``e = 0`` it is the polar formula ``(r^2 + 2r'^2 - r r'')/(r^2 + r'^2)^{3/2}``
     with ``r = Rp + s``.
 
+    Parameters
+    ----------
+    s : float or array_like
+        Follower lift [m].
+    s1 : float or array_like
+        ``ds/dtheta`` [m/rad].
+    s2 : float or array_like
+        ``d2s/dtheta2`` [m/rad^2]; ``s, s1, s2`` broadcast.
+    Rp : float
+        Prime-circle radius [m].
+    e : float, optional
+        Follower offset [m], ``|e| < Rp``. Default 0.
+
+    Returns
+    -------
+    ndarray
+        Signed pitch-curve curvature ``kappa_p`` [1/m] (``> 0`` convex), the broadcast shape.
+
+    Examples
+    --------
     >>> round(float(pitch_curvature(0.0, 0.0, 0.0, 0.02)), 6)   # base circle: 1/Rp
     50.0
     """
@@ -244,6 +380,22 @@ def flat_face_radius(s, s2, Rb):
 
     Norton eq. 8.25 (envelope of the face lines ``n(theta) . P = Rb + s``).
 
+    Parameters
+    ----------
+    s : float or array_like
+        Follower lift [m].
+    s2 : float or array_like
+        ``d2s/dtheta2`` [m/rad^2]; broadcasts against ``s``.
+    Rb : float or array_like
+        Base-circle radius [m].
+
+    Returns
+    -------
+    ndarray
+        Cam radius of curvature ``rho`` [m] (``<= 0`` means undercut), the broadcast shape.
+
+    Examples
+    --------
     >>> float(flat_face_radius(0.001, -0.002, 0.01))
     0.009
     """
@@ -257,7 +409,21 @@ def _rot(theta, x, y):
 
 
 def bool_intervals(theta, mask):
-    """Contiguous runs of True in ``mask`` as ``[(theta_start, theta_end), ...]`` (grid order)."""
+    """Contiguous runs of True in ``mask`` as ``[(theta_start, theta_end), ...]`` (grid order).
+
+    Parameters
+    ----------
+    theta : array_like
+        Cam angles [rad], flattened in grid order.
+    mask : array_like of bool
+        Flag per angle, the same number of elements as ``theta``.
+
+    Returns
+    -------
+    list of tuple of float
+        ``(theta_start, theta_end)`` [rad] of each run: the first and last flagged sample
+        (inclusive); empty if no flag is set.
+    """
     theta = np.ravel(theta)
     m = np.ravel(np.asarray(mask, bool))
     if not m.any():
@@ -286,6 +452,34 @@ def cam_profile(f: Follower, theta, s, s1, s2, *, allow_undercut: bool = False) 
     computed as ``kappa/(1 - Rr kappa)`` so that an inflection of the pitch curve gives
     ``rho = inf`` without a division warning. Knife edge: ``rho = rho_pitch``. Flat-faced:
     ``phi = 0``, ``rho = Rb + s + s2``, contact at ``x = s1`` in the fixed frame.
+
+    Parameters
+    ----------
+    f : RollerFollower or KnifeEdgeFollower or FlatFacedFollower
+        The follower.
+    theta : float or array_like
+        Cam angles [rad].
+    s : float or array_like
+        Follower lift [m].
+    s1 : float or array_like
+        ``ds/dtheta`` [m/rad].
+    s2 : float or array_like
+        ``d2s/dtheta2`` [m/rad^2]; ``theta, s, s1, s2`` broadcast together.
+    allow_undercut : bool, optional
+        Return an undercut profile with its flags instead of raising. Default False.
+
+    Returns
+    -------
+    CamProfile
+        Surface, pitch curve, contact point, ``phi`` and ``rho``, all of the broadcast shape.
+
+    Raises
+    ------
+    UndercutError
+        The profile is undercut and ``allow_undercut`` is False.
+    InputError
+        Not a follower, non-finite or non-broadcasting inputs, or a pitch point through the
+        cam centre (``s <= -sqrt(Rp^2 - e^2)``).
     """
     if not isinstance(f, RollerFollower | KnifeEdgeFollower | FlatFacedFollower):
         raise InputError(f"follower = {f!r}: must be a RollerFollower, KnifeEdgeFollower or "
