@@ -28,17 +28,11 @@ PENDING: set[str] = {
 
     "femcam/layers",
 
-    "femcam/bodies",
 
-    "femcam/materials.py",
 
-    "femcam/loads.py",
 
-    "femcam/errors.py",
 
-    "femcam/scene",
 
-    "femcam/cli",
 
     "femcam/wear",
 
