@@ -328,6 +328,7 @@ class CamDiskModel:
         Parameters
         ----------
         disk : CamDisk
+            The cam disk.
         C, n : array_like, shape (2,)
             Contact point (m) and outward unit cam normal in the cam frame.
         rho : float
@@ -335,6 +336,7 @@ class CamDiskModel:
         Rr : float
             Roller radius (m).
         roller : Material
+            Roller material.
         a_ref : float
             Contact half-width the fine zone is graded for (m).
         length : float
@@ -342,14 +344,19 @@ class CamDiskModel:
         mesh, cam_mesh : MeshOptions, CamMeshOptions, optional
             Fine zone (as :mod:`femcam.fe`) and disk/shaft mesh (default ``n_bore`` from the web).
         plane, element : str
+            ``"strain"``/``"stress"`` and ``"P2"``/``"P1"``.
         local : bool
             Also build today's local cam body for the comparison.
 
         Returns
         -------
         CamDiskModel
-            Raises :class:`~femcam.errors.InputError` for a bore too close to the contact or
-            too coarse for the web.
+            The condensed model.
+
+        Raises
+        ------
+        InputError
+            A bore too close to the contact or too coarse for the web.
         """
         a_ref = _validate.positive("a_ref", a_ref, "m")
         mesh = mesh or MeshOptions()

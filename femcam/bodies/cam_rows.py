@@ -106,10 +106,11 @@ def solve_global(model: CamGlobalModel, C: np.ndarray, n: np.ndarray, F: np.ndar
     Parameters
     ----------
     model : CamGlobalModel
+        The condensed global model.
     C : ndarray, shape (2, k)
         Contact points in the cam frame (m).
     n : ndarray, shape (2, k)
-        Outward unit cam normals there.
+        Outward unit cam normals there [-].
     F : ndarray, shape (k,)
         Contact forces (N, > 0) over the face width ``model.length``.
 
@@ -119,6 +120,11 @@ def solve_global(model: CamGlobalModel, C: np.ndarray, n: np.ndarray, F: np.ndar
         ``hoop_max`` (Pa), ``hoop_angle`` (rad, from the contact direction), ``shaft_p0`` (Pa),
         ``shaft_arc`` (rad; NaN for a bonded fit), each (k,); ``hoop`` and ``bore_p`` (k, n_b; Pa)
         at the bore angles ``model.theta``.
+
+    Raises
+    ------
+    ConvergenceError
+        The shaft-bore active set cycles at some angle.
     """
     d = model.disk
     W = np.asarray(F, float) / model.length
@@ -169,7 +175,12 @@ def cam_disk_rows(scene, theta, Fc, *, model: CamGlobalModel | None = None,
     dict
         SI arrays shaped like ``theta`` under the keys of :data:`CAM_CSV_COLUMNS` (``hoop_max``
         Pa, ``hoop_angle`` rad, ``shaft_p0`` Pa, ``shaft_arc`` rad, ``web`` m) and ``flags``
-        (text). Raises :class:`~femcam.errors.InputError` for a web thinner than
+        (text).
+
+    Raises
+    ------
+    InputError
+        Shapes that differ, no ``[cam] bore_mm``, or a web thinner than
         :data:`WEB_OVER_A_MIN` contact half-widths.
     """
     theta = _validate.finite_array("theta", theta, "rad")

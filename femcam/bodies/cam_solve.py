@@ -152,6 +152,7 @@ def solve_cam_disk(model, *, F: float, local: bool = True) -> CamDiskResult:
     Parameters
     ----------
     model : CamDiskModel
+        The condensed model.
     F : float
         Contact force (N) over the face width ``model.length``.
     local : bool
@@ -160,8 +161,16 @@ def solve_cam_disk(model, *, F: float, local: bool = True) -> CamDiskResult:
     Returns
     -------
     CamDiskResult
-        Raises :class:`~femcam.errors.PhysicsError` if the contact reaches the end of the fine
-        zone and :class:`~femcam.errors.ConvergenceError` if the active set cycles.
+        Contact, bore and shaft results with diagnostics.
+
+    Raises
+    ------
+    InputError
+        ``F`` not a positive number.
+    PhysicsError
+        The contact reaches the end of the fine zone.
+    ConvergenceError
+        The active set cycles.
     """
     F = _validate.positive("F", F, "N")
     nc, d = model.nc, model.disk
