@@ -44,7 +44,16 @@ class LiftOffError(PhysicsError):
 
 
 class ConvergenceError(FemcamError):
-    """An iterative solve failed; ``history`` holds the residual history."""
+    """An iterative solve failed; ``history`` holds the residual history.
+
+    Parameters
+    ----------
+    message : str
+        What failed and why (shown to the user).
+    history : iterable of float, optional
+        Residuals of the iterations (units of the solver's residual), kept as the list
+        ``history`` (empty when None).
+    """
 
     def __init__(self, message: str, history=None):
         super().__init__(message)

@@ -50,6 +50,25 @@ class FollowerDynamics:
     set ``c`` and :class:`~femcam.errors.InputError` asks for ``c`` instead (``zeta = 0`` is
     accepted and gives ``c = 0``).
 
+    Parameters
+    ----------
+    m : float
+        Effective mass of the follower train [kg], >= 0.
+    k : float
+        Spring rate [N/m], >= 0.
+    Fpl : float
+        Spring preload at s = 0 [N], >= 0.
+    c : float or None, optional
+        Viscous damping coefficient [N s/m], >= 0; set from ``zeta`` when None.
+    zeta : float or None, optional
+        Damping ratio c / c_c [-], >= 0; set from ``c`` when None (inf for ``c > 0`` with
+        ``c_c = 0``).
+
+    Raises
+    ------
+    InputError
+        A negative value, both or neither of ``c`` and ``zeta``, or ``zeta > 0`` with ``c_c = 0``.
+
     >>> round(FollowerDynamics(m=0.2, k=800.0, Fpl=1500.0, zeta=0.06).c, 6)
     1.517893
     """
@@ -102,6 +121,27 @@ class LoadResult:
     normal contact force (N); ``liftoff`` flags ``Fc <= 0`` (the spring cannot keep the
     follower on the cam); ``liftoff_angles`` are the flagged theta (rad) and
     ``liftoff_intervals`` their contiguous runs ``[(start, end), ...]`` (rad, grid order).
+
+    Parameters
+    ----------
+    theta : ndarray, shape (n,)
+        Cam angles [rad] (the broadcast shape of the inputs; shape (n,) for a cam-angle grid).
+    Fc : ndarray, shape (n,)
+        Normal contact force [N].
+    F_axial : ndarray, shape (n,)
+        Force along the follower axis, ``m a + c v + k s + Fpl`` [N].
+    F_inertia : ndarray, shape (n,)
+        Inertia term ``m a`` [N].
+    F_damping : ndarray, shape (n,)
+        Damping term ``c v`` [N].
+    F_spring : ndarray, shape (n,)
+        Spring term ``k s + Fpl`` [N].
+    liftoff : ndarray of bool, shape (n,)
+        True where ``Fc <= 0``.
+    liftoff_angles : ndarray, shape (m,)
+        The flagged ``theta`` [rad].
+    liftoff_intervals : list of (float, float)
+        Contiguous lift-off runs ``(start, end)`` [rad], in grid order.
     """
 
     theta: np.ndarray
@@ -116,14 +156,17 @@ class LoadResult:
 
     @property
     def any_liftoff(self) -> bool:
+        """True if the follower lifts off at any angle (``Fc <= 0`` somewhere)."""
         return bool(np.any(self.liftoff))
 
     @property
     def Fc_max(self) -> float:
+        """Largest contact force over the cycle [N] (0 for an empty result)."""
         return float(np.max(self.Fc)) if self.Fc.size else 0.0
 
     @property
     def Fc_min(self) -> float:
+        """Smallest contact force over the cycle [N] (0 for an empty result)."""
         return float(np.min(self.Fc)) if self.Fc.size else 0.0
 
 
@@ -141,6 +184,35 @@ def contact_force(dyn: FollowerDynamics, theta, s, v, a, phi, *,
     (``on_liftoff="flag"``, the default) or, with ``on_liftoff="raise"``, raises
     :class:`~femcam.errors.LiftOffError` listing the lift-off intervals in degrees and the
     smallest ``Fc``.
+
+    Parameters
+    ----------
+    dyn : FollowerDynamics
+        Mass, spring, preload and damping of the follower train.
+    theta : float or ndarray
+        Cam angle [rad].
+    s : float or ndarray
+        Follower lift [m].
+    v : float or ndarray
+        Follower velocity [m/s].
+    a : float or ndarray
+        Follower acceleration [m/s^2].
+    phi : float or ndarray
+        Pressure angle [rad], |phi| < pi/2.
+    on_liftoff : {"flag", "raise"}, optional
+        Flag lift-off in the result (default) or raise :class:`~femcam.errors.LiftOffError`.
+
+    Returns
+    -------
+    LoadResult
+        Contact force and its terms [N], float arrays of the broadcast shape of the inputs.
+
+    Raises
+    ------
+    InputError
+        Non-finite input, |phi| >= 90 deg, or shapes that do not broadcast.
+    LiftOffError
+        ``Fc <= 0`` somewhere with ``on_liftoff="raise"``.
 
     >>> r = contact_force(FollowerDynamics(m=0.2, k=800.0, Fpl=1500.0, c=0.0),
     ...                   0.0, 0.01, 0.0, 100.0, 0.0)

@@ -35,6 +35,22 @@ E_PHYSICAL = (1e5, 2e12)
 class Material:
     """An isotropic linear-elastic material (SI units).
 
+    Parameters
+    ----------
+    E : float
+        Young's modulus [Pa], in [E_MIN, E_MAX] = [1e5, 1e18].
+    nu : float
+        Poisson's ratio [-], in (-1, 0.5).
+    name : str, optional
+        Label used in messages and reports.
+    hardness : float or None, optional
+        Hardness H [Pa] (> 0) for Archard wear; None when not given.
+
+    Raises
+    ------
+    InputError
+        A value out of range, naming the field, value and unit.
+
     >>> Material(E=210e9, nu=0.3, name="steel").E
     210000000000.0
     """
@@ -53,7 +69,18 @@ class Material:
             object.__setattr__(self, "hardness", _validate.positive("hardness", self.hardness, "Pa"))
 
     def modulus(self, plane: str = "strain") -> float:
-        """E' = E/(1-nu^2) in plane strain, E in plane stress (Pa)."""
+        """E' = E/(1-nu^2) in plane strain, E in plane stress (Pa).
+
+        Parameters
+        ----------
+        plane : {"strain", "stress"}, optional
+            Plane strain (long cylinders, default) or plane stress (thin discs).
+
+        Returns
+        -------
+        float
+            Plane modulus E' [Pa].
+        """
         _validate.choice("plane", plane, PLANES)
         return self.E / (1.0 - self.nu**2) if plane == "strain" else self.E
 
@@ -69,6 +96,18 @@ def effective_modulus(m1: Material, m2: Material, plane: str = "strain") -> floa
     (plane strain; Johnson, *Contact Mechanics*, 1985, eq. 4.22 with 4.43; seed 002 eq. 10).
     In plane stress the (1 - nu^2) factors are dropped.
 
+    Parameters
+    ----------
+    m1, m2 : Material
+        Materials of body 1 and body 2.
+    plane : {"strain", "stress"}, optional
+        Plane strain (default) or plane stress.
+
+    Returns
+    -------
+    float
+        Contact modulus E* [Pa].
+
     >>> round(effective_modulus(STEEL, STEEL) / 1e9, 2)
     115.38
     """
@@ -82,6 +121,21 @@ def lame_parameters(E, nu, plane: str = "strain"):
     stress uses the reduced :math:`\lambda^* = 2\lambda\mu/(\lambda + 2\mu) = E\nu/(1-\nu^2)`.
     ``E`` (Pa) must be > 0 and ``nu`` in (-1, 0.5) (scalars or arrays); otherwise
     :class:`~femcam.errors.InputError` (``nu = 0.5`` would give an infinite lambda).
+
+    Parameters
+    ----------
+    E : float or ndarray
+        Young's modulus [Pa], > 0.
+    nu : float or ndarray
+        Poisson's ratio [-], in (-1, 0.5); broadcasts with ``E``.
+    plane : {"strain", "stress"}, optional
+        Plane strain (default) or plane stress (reduced lambda*).
+
+    Returns
+    -------
+    lam, mu : float or ndarray
+        Lamé's first parameter lambda (lambda* in plane stress) and the shear modulus mu [Pa],
+        of the broadcast shape of ``E`` and ``nu`` (numpy floats for scalar input).
 
     >>> [round(float(x) / 1e9, 6) for x in lame_parameters(200e9, 0.25)]
     [80.0, 80.0]

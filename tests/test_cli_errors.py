@@ -271,3 +271,23 @@ def test_subcommands_share_scene_out_and_law_flags():
         law = next(a for a in parsers[prog]._actions if "--law" in a.option_strings)
         assert "cycloidal" in law.help and "poly345" in law.help, prog
         assert "bezier," not in law.help and "polynomial" not in law.help, prog
+
+
+@pytest.mark.parametrize("flag, value, expected", [
+    # ranges typed from docs/sweep.md's settings table (a_over_h 2..400, tolerance 1e-4..0.5) and
+    # from the meaning of the counts (at least 1 angle a chunk; 0 = no VTK)
+    ("--mesh-size", "1", "--mesh-size = 1 (elements per contact half-width, a/h): must be in [2, 400]; "
+                         "10 (default)"),
+    ("--mesh-size", "inf", "--mesh-size = inf (elements per contact half-width, a/h): must be finite"),
+    ("--tolerance", "1e-05", "--tolerance = 1e-05 (relative p0 reuse error): must be >= 0.0001: "),
+    ("--tolerance", "0.9", "--tolerance = 0.9 (relative p0 reuse error): must be in [0.0001, 0.5]"),
+    ("--chunk-size", "0", "--chunk-size = 0 angles: must be a whole number >= 1"),
+    ("--vtk-every", "-1", "--vtk-every = -1 angles: must be a whole number >= 0; 0 = no VTK"),
+])
+def test_sweep_flag_ranges_name_the_flag(flag, value, expected, tmp_path, capsys):
+    """The sweep flags are checked by the scene schema's one range check, in the flag's words
+    (a scene key it mentions, a_over_h, appears as --mesh-size)."""
+    assert main(["sweep", SCENE, "--out", str(tmp_path / "o"), flag, value]) == 1
+    err = _one_line(capsys, "sweep")
+    assert expected in err
+    assert "a_over_h" not in err

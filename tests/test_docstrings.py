@@ -32,17 +32,11 @@ PENDING: set[str] = {
 
 
 
-    "femcam/bodies",
 
-    "femcam/materials.py",
 
-    "femcam/loads.py",
 
-    "femcam/errors.py",
 
-    "femcam/scene",
 
-    "femcam/cli",
 
     "femcam/wear/map",
 

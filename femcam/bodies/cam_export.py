@@ -18,7 +18,24 @@ BODY_IDS = {"cam": 0, "shaft": 3}
 
 
 def cam_body_fields(model, result, name: str) -> dict:
-    """Nodal fields of ``"cam"`` or ``"shaft"`` for a :class:`~femcam.bodies.cam_solve.CamDiskResult`."""
+    """Nodal fields of ``"cam"`` or ``"shaft"`` for a :class:`~femcam.bodies.cam_solve.CamDiskResult`.
+
+    Parameters
+    ----------
+    model : CamDiskModel
+        The solved fully refined model (:class:`~femcam.bodies.cam_model.CamDiskModel`).
+    result : CamDiskResult
+        Its solution for one load case.
+    name : {"cam", "shaft"}
+        The body (``"shaft"`` only with an elastic shaft).
+
+    Returns
+    -------
+    dict
+        ``xy`` (2, n) node coordinates in the contact frame [m]; ``u`` (2, n) displacement [m];
+        ``sxx``, ``syy``, ``sxy``, ``hoop`` (about the cam centre), ``von_mises`` (n,) [Pa];
+        ``cells`` (n_cells, 6) int node indices of the ``triangle6`` cells.
+    """
     b = model.bodies[name]
     lam = np.concatenate([result.p, result.bore_p])
     f = model.loads[name] @ (lam if name == "cam" else result.bore_p)
@@ -36,7 +53,24 @@ def cam_body_fields(model, result, name: str) -> dict:
 
 
 def write_cam_vtu(model, result, path, bodies=("cam", "shaft")) -> Path:
-    """Write the cam disk (and the shaft, if elastic) to ``path`` (.vtu); returns the path."""
+    """Write the cam disk (and the shaft, if elastic) to a ``.vtu`` file.
+
+    Parameters
+    ----------
+    model : CamDiskModel
+        The solved fully refined model.
+    result : CamDiskResult
+        Its solution for one load case.
+    path : str or os.PathLike
+        The ``.vtu`` file; its folder is created.
+    bodies : tuple of str, optional
+        The bodies to write, of ``"cam"`` and ``"shaft"`` (a missing one is skipped).
+
+    Returns
+    -------
+    pathlib.Path
+        The written file.
+    """
     import meshio  # optional heavy dependency of the export only
 
     pts, cells, ids = [], [], []

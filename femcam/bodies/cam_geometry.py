@@ -45,11 +45,30 @@ def _check_outline(outline) -> np.ndarray:
 class CamDisk:
     """The cam as a disk with its outline and a shaft bore (SI units).
 
-    outline: (2, N) cam surface points (m, cam frame; reordered counter-clockwise); Rb: bore
-    radius; Rs: shaft radius (default ``Rb``: a line-to-line fit); fit: ``"contact"`` (unilateral
-    shaft-bore contact, the shaft carries no tension) or ``"bonded"`` (a frictionless radial tie,
-    ``Rs == Rb`` only); cam, shaft: materials (``shaft=None``: a rigid shaft); cam_yield:
-    optional tensile limit (Pa) flagged in results.
+    Parameters
+    ----------
+    outline : ndarray, shape (2, N)
+        Cam surface points [m] in the cam frame (cam centre at 0), N >= 16; reordered
+        counter-clockwise by polar angle.
+    Rb : float
+        Bore radius [m], below the smallest outline radius.
+    Rs : float or None, optional
+        Shaft radius [m]; default ``Rb`` (a line-to-line fit); the clearance ``Rb - Rs`` must
+        be in [0, 0.05 Rb].
+    fit : {"contact", "bonded"}, optional
+        ``"contact"``: unilateral shaft-bore contact (the shaft carries no tension);
+        ``"bonded"``: a frictionless radial tie (``Rs == Rb`` only).
+    cam : Material, optional
+        Cam material (default steel).
+    shaft : Material or None, optional
+        Shaft material (default steel); None for a rigid shaft.
+    cam_yield : float or None, optional
+        Tensile limit of the cam [Pa] flagged in results; None for no flag.
+
+    Raises
+    ------
+    InputError
+        A bad outline, a bore that does not fit, a clearance out of range or a bad ``fit``.
     """
 
     outline: np.ndarray
@@ -86,6 +105,7 @@ class CamDisk:
 
     @property
     def r_min(self) -> float:
+        """Smallest outline radius [m] (the base circle for a roller cam)."""
         return float(self.r.min())
 
     @property
@@ -95,11 +115,30 @@ class CamDisk:
 
     @property
     def c(self) -> float:
+        """Radial clearance ``Rb - Rs`` [m]."""
         return self.Rb - self.Rs
 
 
 def outline_from_scene(scene, n: int = 720) -> np.ndarray:
-    """The cam surface (2, n) in the cam frame (m) over one revolution (roller followers)."""
+    """The cam surface in the cam frame over one revolution (roller followers).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A scene with a roller follower.
+    n : int, optional
+        Number of equally spaced cam angles over [0, 2 pi).
+
+    Returns
+    -------
+    ndarray, shape (2, n)
+        Cam surface points ``(x, y)`` [m], cam centre at 0.
+
+    Raises
+    ------
+    InputError
+        The follower is not a roller.
+    """
     _require_roller(scene)
     th = np.linspace(0.0, 2 * math.pi, int(n), endpoint=False)
     p = scene.analyse(th).profile
@@ -113,8 +152,26 @@ def _require_roller(scene):
 
 
 def contact_frame(scene, theta: float) -> tuple[np.ndarray, np.ndarray, float, float]:
-    """``(C, n, rho, Fc)``: contact point and outward cam normal in the cam frame, cam radius
-    of curvature (m) and contact force (N) at cam angle ``theta`` (rad)."""
+    """Contact point, normal, curvature radius and force at one cam angle.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A scene with a roller follower.
+    theta : float
+        Cam angle [rad].
+
+    Returns
+    -------
+    C : ndarray, shape (2,)
+        Contact point in the cam frame [m].
+    n : ndarray, shape (2,)
+        Outward unit cam normal at ``C`` [-].
+    rho : float
+        Cam radius of curvature at ``C`` [m].
+    Fc : float
+        Contact force [N].
+    """
     _require_roller(scene)
     st = scene.analyse(np.array([float(theta)]))
     p = st.profile
@@ -124,7 +181,22 @@ def contact_frame(scene, theta: float) -> tuple[np.ndarray, np.ndarray, float, f
 
 
 def to_contact_frame(xy: np.ndarray, C: np.ndarray, n: np.ndarray) -> np.ndarray:
-    """Points (2, N) of the cam frame in the contact frame (module docstring)."""
+    """Points of the cam frame in the contact frame (module docstring).
+
+    Parameters
+    ----------
+    xy : ndarray, shape (2, N)
+        Points in the cam frame [m].
+    C : ndarray, shape (2,)
+        Contact point in the cam frame [m].
+    n : ndarray, shape (2,)
+        Outward unit cam normal at ``C`` [-].
+
+    Returns
+    -------
+    ndarray, shape (2, N)
+        The points ``(x, y)`` in the contact frame [m].
+    """
     t = np.array([n[1], -n[0]])
     d = xy - C[:, None]
     return np.stack([t @ d, n @ d])
@@ -132,8 +204,29 @@ def to_contact_frame(xy: np.ndarray, C: np.ndarray, n: np.ndarray) -> np.ndarray
 
 def outline_without_arc(disk: CamDisk, C: np.ndarray, n: np.ndarray, rho: float,
                         W: float) -> tuple[np.ndarray, tuple]:
-    """Outline points in the contact frame without the arc ``|x| <= W`` at the contact, from
-    its left end counter-clockwise round to its right end, and the cam centre there."""
+    """Outline points in the contact frame without the arc ``|x| <= W`` at the contact.
+
+    Parameters
+    ----------
+    disk : CamDisk
+        The cam disk (its outline).
+    C : ndarray, shape (2,)
+        Contact point in the cam frame [m].
+    n : ndarray, shape (2,)
+        Outward unit cam normal at ``C`` [-].
+    rho : float
+        Cam radius of curvature at ``C`` [m] (inf: flat).
+    W : float
+        Half-length of the removed arc along the contact tangent [m].
+
+    Returns
+    -------
+    points : ndarray, shape (2, M)
+        The remaining outline points in the contact frame [m], from the arc's left end
+        counter-clockwise round to its right end.
+    centre : (float, float)
+        The cam centre in the contact frame [m].
+    """
     o = to_contact_frame(disk.outline, C, n)
     c = to_contact_frame(np.zeros((2, 1)), C, n)[:, 0]
     ends = np.array([[-W, W], [0.0, 0.0]])

@@ -59,8 +59,23 @@ N_BORE_MAX = 1024
 
 def global_mesh_for(disk: CamDisk) -> CamMeshOptions:
     """:data:`GLOBAL_MESH` with ``n_bore`` raised so that the bore spacing is <= a quarter of the
-    web (>= 4 P2 layers through it, as the ring's wall); a web that would need more than
-    :data:`N_BORE_MAX` bore vertices is refused with the numbers."""
+    web (>= 4 P2 layers through it, as the ring's wall).
+
+    Parameters
+    ----------
+    disk : CamDisk
+        The cam disk (its bore radius and web).
+
+    Returns
+    -------
+    CamMeshOptions
+        The global model's mesh options for this disk.
+
+    Raises
+    ------
+    InputError
+        A web that would need more than :data:`N_BORE_MAX` bore vertices (named by ``Rb``).
+    """
     need = bore_vertices_for(disk)
     if need > N_BORE_MAX:
         raise _validate.fail("Rb", disk.Rb, "m", f"the web r_min - Rb = {disk.web * 1e3:.3g} mm is too thin "
@@ -73,12 +88,39 @@ def global_mesh_for(disk: CamDisk) -> CamMeshOptions:
 class CamGlobalModel:
     """Condensed global cam disk + shaft (module docstring); build with :meth:`build`.
 
-    stations (2, N_s): outline vertices (m, cam frame), psi their polar angles (rad, sorted);
-    theta, wb: bore angles (rad, cam frame) and weights (m); bore_force (2, n_b): FE resultant of
-    each bore hat (m, as the refined model); A: bore radial compliance (m/Pa) of
-    cam + shaft; Uf (n_b, 2 N_s + 1), Hf: bore radial displacement (m/N per m) and hoop stress
-    (Pa per N/m) of the unit station forces (x, y interleaved) and the unit torque (last); H: hoop
-    per bore pressure (Pa/Pa).
+    Attributes
+    ----------
+    disk : CamDisk
+        The cam disk.
+    length : float
+        Face width [m].
+    plane : {"strain", "stress"}
+        Plane condition.
+    stations : ndarray, shape (2, N_s)
+        Outline vertices in the cam frame [m], sorted by polar angle.
+    psi : ndarray, shape (N_s,)
+        Their polar angles [rad], sorted.
+    theta : ndarray, shape (n_b,)
+        Bore vertex angles in the cam frame [rad].
+    wb : ndarray, shape (n_b,)
+        Bore hat weights (arc length) [m].
+    bore_force : ndarray, shape (2, n_b)
+        x, y resultant of each unit bore pressure hat as the FE applies it [N/m per Pa = m].
+    A : ndarray, shape (n_b, n_b)
+        Bore radial compliance of cam + shaft [m/Pa].
+    Uf : ndarray, shape (n_b, 2 N_s + 1)
+        Bore radial displacement per unit station force (x, y interleaved) [m per N/m] and per
+        unit torque (last column) [m per N m/m].
+    Hf : ndarray, shape (n_b, 2 N_s + 1)
+        Bore hoop stress per the same unit loads [Pa per N/m; Pa per N m/m].
+    H : ndarray, shape (n_b, n_b)
+        Bore hoop stress per bore pressure [Pa/Pa].
+    bodies : dict of str to femcam.fe.elasticity.Body
+        ``"cam"`` and, with an elastic shaft, ``"shaft"``.
+    timings : dict of str to float
+        ``mesh``, ``assembly``, ``factorisation``, ``condensation`` wall times [s].
+    n_dofs : int
+        Total degrees of freedom of the bodies.
     """
 
     disk: CamDisk
@@ -100,6 +142,32 @@ class CamGlobalModel:
     @classmethod
     def build(cls, *, disk: CamDisk, length: float, cam_mesh: CamMeshOptions | None = None,
               plane: str = "strain", element: str = "P2") -> CamGlobalModel:
+        """Mesh, factorise and condense the whole cam disk (cam frame) and its shaft once.
+
+        Parameters
+        ----------
+        disk : CamDisk
+            The cam disk.
+        length : float
+            Face width [m].
+        cam_mesh : CamMeshOptions or None, optional
+            Disk and shaft mesh; default :func:`global_mesh_for` ``(disk)``.
+        plane : {"strain", "stress"}, optional
+            Plane condition.
+        element : {"P2", "P1"}, optional
+            Finite element.
+
+        Returns
+        -------
+        CamGlobalModel
+            The condensed model.
+
+        Raises
+        ------
+        InputError
+            A bore too coarse for the web (:func:`~femcam.bodies.cam_model.check_bore_spacing`)
+            or a web too thin for the model.
+        """
         cm = cam_mesh or global_mesh_for(disk)
         check_bore_spacing(disk, cm)
         t0 = time.perf_counter()
@@ -140,9 +208,22 @@ class CamGlobalModel:
                    n_dofs=sum(b.n_dofs for b in bodies.values()))
 
     def load_weights(self, C: np.ndarray, f: np.ndarray) -> np.ndarray:
-        """(n_angles, 2 N_s + 1) load coefficients of the contact forces ``f`` (2, n; N/m, on
-        the cam) at the contacts ``C`` (2, n; m): split between the bracketing stations, plus
-        the balancing torque ``-(P x f)`` of the loads as applied (vectorised)."""
+        """Station load coefficients of the contact forces, split between the bracketing stations,
+        plus the balancing torque ``-(P x f)`` of the loads as applied (vectorised).
+
+        Parameters
+        ----------
+        C : ndarray, shape (2, n)
+            Contact points in the cam frame [m], one per cam angle.
+        f : ndarray, shape (2, n)
+            Contact forces on the cam per unit face width [N/m].
+
+        Returns
+        -------
+        ndarray, shape (n, 2 N_s + 1)
+            Station forces (x, y interleaved) [N/m] and the balancing torque (last column)
+            [N m/m], the load vector of :attr:`Uf` and :attr:`Hf`.
+        """
         n_s = self.psi.size
         ang = np.arctan2(C[1], C[0])
         j1 = np.searchsorted(self.psi, ang) % n_s

@@ -45,12 +45,51 @@ def mesh_cam_disk(*, outline: np.ndarray, centre: tuple, bore: float, n_bore: in
                   h_bore: float, growth: float = 0.3, contact_x: np.ndarray | None = None,
                   rho: float = math.inf, W: float = 0.0, fine_depth: float = 0.0,
                   band: float = 3.0) -> tuple[BodyMesh, np.ndarray, np.ndarray]:
-    """Mesh the cam disk; returns ``(BodyMesh, bore_nodes, bore_theta)``.
+    """Mesh the cam disk with its bore (module docstring).
 
-    ``outline`` (2, N): outline points (m) ordered counter-clockwise about ``centre``; with a fine
-    zone (``contact_x`` given) they must leave out the arc ``|x| <= W`` at the contact and run
-    from its left end (``x = -W``) round to its right end (``x = +W``). ``BodyMesh.contact`` are
-    the fine-arc vertices sorted by x; ``fixed`` is empty (the cam floats on its shaft).
+    Parameters
+    ----------
+    outline : ndarray, shape (2, N)
+        Outline points [m] ordered counter-clockwise about ``centre``; with a fine zone
+        (``contact_x`` given) they leave out the arc ``|x| <= W`` at the contact and run from its
+        left end (``x = -W``) round to its right end (``x = +W``).
+    centre : (float, float)
+        Cam centre in the mesh frame [m].
+    bore : float
+        Bore radius [m].
+    n_bore : int
+        Bore vertices (a multiple of 4).
+    h_max : float
+        Largest element size [m].
+    h_bore : float
+        Element size at the bore [m].
+    growth : float, optional
+        Size growth slope away from the bore and fine arc [-].
+    contact_x : ndarray, shape (n_fine + 1,), optional
+        Roller contact abscissae [m] the fine-zone vertices snap to; None for no fine zone.
+    rho : float, optional
+        Cam radius of curvature at the contact [m] (< 0 concave, inf flat).
+    W : float, optional
+        Half-span of the osculating-circle arc at the contact [m].
+    fine_depth : float, optional
+        Depth below the fine arc meshed at the fine size [m].
+    band : float, optional
+        Width of the band at the bore meshed at ``h_bore``, in multiples of ``h_bore`` [-].
+
+    Returns
+    -------
+    mesh : BodyMesh
+        The cam mesh; ``contact`` are the fine-arc vertices sorted by x (empty without a fine
+        zone); ``fixed`` is empty (the cam floats on its shaft).
+    bore_nodes : ndarray of int, shape (n_bore,)
+        Bore vertex nodes, ordered counter-clockwise from ``theta = -pi/2``.
+    bore_theta : ndarray, shape (n_bore,)
+        Their polar angles about ``centre`` [rad], uniform from ``-pi/2``.
+
+    Raises
+    ------
+    FemcamError
+        gmsh returned a fine zone with the wrong number of nodes.
     """
     cx, cy = centre
     fine = contact_x is not None

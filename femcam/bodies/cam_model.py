@@ -42,9 +42,26 @@ from .model import _condense, _hoop_rows
 
 @dataclass(frozen=True, kw_only=True)
 class CamMeshOptions:
-    """Mesh of the cam disk and shaft: ``n_bore`` bore vertices (multiple of 4), largest element
-    ``h_max_over_web`` x web (and at most ``Rb / 2``), growth slope, the fine arc's half-span
-    ``W = arc_over_xf`` x the fine zone's half-width."""
+    """Mesh of the cam disk and shaft.
+
+    Parameters
+    ----------
+    n_bore : int, optional
+        Bore vertices, a multiple of 4, >= 16.
+    h_max_over_web : float, optional
+        Largest element size / web ``r_min - Rb`` [-] (the size is at most ``Rb / 2``), in
+        [0.02, 2].
+    growth : float, optional
+        Element size growth slope [-], in [0.05, 1].
+    arc_over_xf : float, optional
+        Half-span ``W`` of the osculating-circle arc / the fine zone's half-width [-], in
+        [1.5, 40].
+
+    Raises
+    ------
+    InputError
+        A value out of range, naming the field.
+    """
 
     n_bore: int = 64
     h_max_over_web: float = 0.5
@@ -60,18 +77,57 @@ class CamMeshOptions:
 
 
 def h_max_for(disk: CamDisk, cm: CamMeshOptions) -> float:
-    """Largest element size (m): ``h_max_over_web`` x web, at most ``Rb / 2``."""
+    """Largest element size: ``h_max_over_web`` x web, at most ``Rb / 2``.
+
+    Parameters
+    ----------
+    disk : CamDisk
+        The cam disk (web and bore radius).
+    cm : CamMeshOptions
+        The mesh options.
+
+    Returns
+    -------
+    float
+        Largest element size [m].
+    """
     return min(cm.h_max_over_web * disk.web, 0.5 * disk.Rb)
 
 
 def bore_vertices_for(disk: CamDisk, layers: float = 4.0) -> int:
-    """Bore vertices (multiple of 4) for a bore spacing <= web / ``layers``."""
+    """Bore vertices (multiple of 4) for a bore spacing <= web / ``layers``.
+
+    Parameters
+    ----------
+    disk : CamDisk
+        The cam disk (bore radius and web).
+    layers : float, optional
+        Bore spacings through the web [-].
+
+    Returns
+    -------
+    int
+        Number of bore vertices, a multiple of 4.
+    """
     return 4 * math.ceil(2 * math.pi * disk.Rb / (disk.web / layers) / 4)
 
 
 def check_bore_spacing(disk: CamDisk, cm: CamMeshOptions) -> None:
     """Refuse a bore spacing above half the web (as the ring: the bore contact is then not
-    resolved through the web)."""
+    resolved through the web).
+
+    Parameters
+    ----------
+    disk : CamDisk
+        The cam disk (bore radius and web).
+    cm : CamMeshOptions
+        The mesh options (``n_bore``).
+
+    Raises
+    ------
+    InputError
+        ``2 pi Rb / n_bore`` exceeds half the web; the message gives the ``n_bore`` needed.
+    """
     hb = 2 * math.pi * disk.Rb / cm.n_bore
     if hb > 0.5 * disk.web:
         need = 4 * math.ceil(2 * math.pi * disk.Rb / (0.5 * disk.web) / 4)
@@ -87,8 +143,32 @@ SHAFT_H_OVER_RS = 0.05
 
 
 def shaft_operator(disk: CamDisk, n_b: int, centre, growth: float, plane: str, element: str):
-    """(shaft Body or None, load matrix, radial compliance (n_b, n_b)) of the shaft clamped on
-    its core ``r <= 0.2 Rs`` (a rigid shaft: zeros)."""
+    """The shaft clamped on its core ``r <= 0.2 Rs``, condensed on its bore contact.
+
+    Parameters
+    ----------
+    disk : CamDisk
+        The cam disk (shaft radius and material; ``shaft=None``: rigid).
+    n_b : int
+        Bore vertices (paired one to one with the shaft surface).
+    centre : (float, float)
+        Shaft centre in the mesh frame [m].
+    growth : float
+        Element size growth slope [-].
+    plane : {"strain", "stress"}
+        Plane condition.
+    element : {"P2", "P1"}
+        Finite element.
+
+    Returns
+    -------
+    body : femcam.fe.elasticity.Body or None
+        The assembled shaft (None for a rigid shaft).
+    B : ndarray, shape (n_dofs, n_b) or None
+        Nodal forces of the unit bore pressure hats on the shaft [N/m per Pa].
+    A : ndarray, shape (n_b, n_b)
+        Radial compliance of the shaft surface [m/Pa] (zeros for a rigid shaft).
+    """
     if disk.shaft is None:
         return None, None, np.zeros((n_b, n_b))
     geo, surf, _, _ = mesh_disk(R=disk.Rs, n_surface=n_b, h_surface=2 * math.pi * disk.Rs / n_b,
@@ -103,9 +183,24 @@ def shaft_operator(disk: CamDisk, n_b: int, centre, growth: float, plane: str, e
 
 
 def torque_vector(body, bore, centre) -> np.ndarray:
-    """Nodal forces of a uniform counter-clockwise shear on the bore with unit moment (N m),
+    """Nodal forces of a uniform counter-clockwise shear on the bore with unit moment,
     normalised by the moment the FE nodal forces actually have about ``centre`` (the
-    chord-integrated hats carry 0.12 % less than ``2 pi Rb^2`` on 64 bore vertices)."""
+    chord-integrated hats carry 0.12 % less than ``2 pi Rb^2`` on 64 bore vertices).
+
+    Parameters
+    ----------
+    body : femcam.fe.elasticity.Body
+        The cam body.
+    bore : ndarray of int, shape (n_b,)
+        Bore vertex nodes, ordered by angle.
+    centre : (float, float)
+        Cam centre [m].
+
+    Returns
+    -------
+    ndarray, shape (n_dofs,)
+        Nodal forces [N/m per N m/m] (DOFs interleaved x, y).
+    """
     f = arc_load_matrix(body, bore, centre, closed=True, tangential=True).sum(axis=1)
     xy = body.basis.doflocs
     moment = float(((xy[0, 0::2] - centre[0]) * f[1::2] - (xy[1, 0::2] - centre[1]) * f[0::2]).sum())
@@ -113,14 +208,39 @@ def torque_vector(body, bore, centre) -> np.ndarray:
 
 
 def hat_resultants(body, B) -> np.ndarray:
-    """(2, k): x and y sums of the nodal forces of the columns of ``B`` (per unit hat value).
+    """x and y sums of the nodal forces of the columns of ``B`` (per unit hat value).
+
     On a bore of 64 vertices the chord-integrated radial hats give 0.12 % less than
-    ``wb e_r``; the force balance uses these sums (measured: the support then carries nothing)."""
+    ``wb e_r``; the force balance uses these sums (measured: the support then carries nothing).
+
+    Parameters
+    ----------
+    body : femcam.fe.elasticity.Body
+        The body ``B`` acts on (unused: the DOFs are interleaved x, y as in scikit-fem).
+    B : ndarray, shape (n_dofs, k)
+        Nodal forces of unit pressure hats [N/m per Pa].
+
+    Returns
+    -------
+    ndarray, shape (2, k)
+        x and y resultants per unit hat value [N/m per Pa = m].
+    """
     return np.stack([B[0::2].sum(axis=0), B[1::2].sum(axis=0)])   # DOFs interleaved x, y (skfem)
 
 
 def floating_supports(bore) -> tuple:
-    """Statically determinate support of a floating body: bore theta = 0 (x, y), pi (y)."""
+    """Statically determinate support of a floating body: bore theta = 0 (x, y), pi (y).
+
+    Parameters
+    ----------
+    bore : ndarray of int, shape (n_b,)
+        Bore vertex nodes ordered from ``theta = -pi/2`` (``n_b`` a multiple of 4).
+
+    Returns
+    -------
+    tuple of (int, int)
+        ``(node, component)`` pairs (component 0: x, 1: y) of the three clamped DOFs.
+    """
     n = bore.size
     return ((int(bore[n // 4]), 0), (int(bore[n // 4]), 1), (int(bore[3 * n // 4]), 1))
 
@@ -129,12 +249,49 @@ def floating_supports(bore) -> tuple:
 class CamDiskModel:
     """Condensed cam disk + shaft + roller at one angle (module docstring); :meth:`build`.
 
-    x, w: contact abscissae and weights (m); theta, wb: bore vertex angles in the contact frame
-    (rad) and weights (m); bore_force (2, n_b): x, y resultant of each bore pressure hat as the FE
-    applies it (m; used in the force balance, so that the floating support carries nothing);
-    centre: cam centre in the contact frame (m); A: compliance of ``[p, lambda_bore]`` (m/Pa);
-    H: bore hoop stress per unknown (Pa/Pa); A_local: compliance of
-    today's local cam + roller bodies at the same vertices; bodies, loads (VTU), timings, n_dofs.
+    Attributes
+    ----------
+    disk : CamDisk
+        The cam disk.
+    roller : Material
+        Roller material.
+    Rr : float
+        Roller radius [m].
+    rho : float
+        Cam radius of curvature at the contact [m] (< 0 concave, inf flat).
+    length : float
+        Face width [m].
+    plane : {"strain", "stress"}
+        Plane condition.
+    x : ndarray, shape (nc,)
+        Contact vertex abscissae [m].
+    w : ndarray, shape (nc,)
+        Their trapezoid weights [m].
+    theta : ndarray, shape (n_b,)
+        Bore vertex angles in the contact frame [rad].
+    wb : ndarray, shape (n_b,)
+        Bore hat weights (arc length) [m].
+    bore_force : ndarray, shape (2, n_b)
+        x, y resultant of each unit bore pressure hat as the FE applies it [N/m per Pa = m]
+        (used in the force balance, so that the floating support carries nothing).
+    centre : (float, float)
+        Cam centre in the contact frame [m].
+    A : ndarray, shape (nc + n_b, nc + n_b)
+        Compliance of the unknowns ``[p, lambda_bore]`` [m/Pa].
+    H : ndarray, shape (n_b, nc + n_b)
+        Bore hoop stress per unknown [Pa/Pa].
+    A_local : ndarray, shape (nc, nc)
+        Compliance of today's local cam + roller bodies at the same vertices [m/Pa] (NaN
+        when built with ``local=False``).
+    bodies : dict of str to femcam.fe.elasticity.Body
+        ``"cam"``, ``"roller"``, and ``"shaft"`` (elastic shaft), ``"local_cam"`` (``local``).
+    loads : dict of str to ndarray
+        Load matrices of ``"cam"`` (n_dofs, nc + n_b) and ``"shaft"`` (n_dofs, n_b) [N/m per Pa]
+        (for the VTU export).
+    timings : dict of str to float
+        ``mesh``, ``assembly``, ``factorisation``, ``condensation`` wall times [s].
+    n_dofs : int
+        Degrees of freedom of the bodies (without ``local_cam``).
     """
 
     disk: CamDisk
@@ -159,6 +316,7 @@ class CamDiskModel:
 
     @property
     def nc(self) -> int:
+        """Number of contact vertices."""
         return self.x.size
 
     @classmethod
@@ -170,6 +328,7 @@ class CamDiskModel:
         Parameters
         ----------
         disk : CamDisk
+            The cam disk.
         C, n : array_like, shape (2,)
             Contact point (m) and outward unit cam normal in the cam frame.
         rho : float
@@ -177,6 +336,7 @@ class CamDiskModel:
         Rr : float
             Roller radius (m).
         roller : Material
+            Roller material.
         a_ref : float
             Contact half-width the fine zone is graded for (m).
         length : float
@@ -184,14 +344,19 @@ class CamDiskModel:
         mesh, cam_mesh : MeshOptions, CamMeshOptions, optional
             Fine zone (as :mod:`femcam.fe`) and disk/shaft mesh (default ``n_bore`` from the web).
         plane, element : str
+            ``"strain"``/``"stress"`` and ``"P2"``/``"P1"``.
         local : bool
             Also build today's local cam body for the comparison.
 
         Returns
         -------
         CamDiskModel
-            Raises :class:`~femcam.errors.InputError` for a bore too close to the contact or
-            too coarse for the web.
+            The condensed model.
+
+        Raises
+        ------
+        InputError
+            A bore too close to the contact or too coarse for the web.
         """
         a_ref = _validate.positive("a_ref", a_ref, "m")
         mesh = mesh or MeshOptions()

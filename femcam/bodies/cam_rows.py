@@ -45,7 +45,18 @@ CAM_CSV_COLUMNS = {
 
 
 def has_cam_bore(scene) -> bool:
-    """True when the scene gives ``[cam] bore_mm`` (the cam disk on its shaft)."""
+    """True when the scene gives ``[cam] bore_mm`` (the cam disk on its shaft).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene.
+
+    Returns
+    -------
+    bool
+        Whether the scene's bodies hold a cam bore.
+    """
     return "cam_bore" in (getattr(scene, "bodies", None) or {})
 
 
@@ -57,8 +68,30 @@ def _cam_yield(scene):
 
 
 def disk_from_scene(scene, *, n_outline: int = 720, fit: str = "contact", Rb: float | None = None) -> CamDisk:
-    """The scene's :class:`CamDisk`: outline from its profile, ``[cam] bore_mm`` (or ``Rb``, m),
-    shaft material ``[materials.shaft]`` (default: the cam's), a line-to-line fit (``Rs = Rb``)."""
+    """The scene's :class:`CamDisk`: outline from its profile, ``[cam] bore_mm`` (or ``Rb``),
+    shaft material ``[materials.shaft]`` (default: the cam's), a line-to-line fit (``Rs = Rb``).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A roller-follower scene.
+    n_outline : int, optional
+        Outline points over one revolution.
+    fit : {"contact", "bonded"}, optional
+        Shaft-bore fit.
+    Rb : float or None, optional
+        Bore radius [m]; None: the scene's ``[cam] bore_mm``.
+
+    Returns
+    -------
+    CamDisk
+        The cam disk (cam yield strength from ``[materials.cam] yield_strength_MPa``, if given).
+
+    Raises
+    ------
+    InputError
+        No ``Rb`` and no ``[cam] bore_mm``, or a disk that does not fit.
+    """
     g = getattr(scene, "bodies", None) or {}
     if Rb is None and "cam_bore" not in g:
         raise InputError("scene has no [cam] bore_mm: the cam is today's local body (no disk model)")
@@ -73,10 +106,11 @@ def solve_global(model: CamGlobalModel, C: np.ndarray, n: np.ndarray, F: np.ndar
     Parameters
     ----------
     model : CamGlobalModel
+        The condensed global model.
     C : ndarray, shape (2, k)
         Contact points in the cam frame (m).
     n : ndarray, shape (2, k)
-        Outward unit cam normals there.
+        Outward unit cam normals there [-].
     F : ndarray, shape (k,)
         Contact forces (N, > 0) over the face width ``model.length``.
 
@@ -86,6 +120,11 @@ def solve_global(model: CamGlobalModel, C: np.ndarray, n: np.ndarray, F: np.ndar
         ``hoop_max`` (Pa), ``hoop_angle`` (rad, from the contact direction), ``shaft_p0`` (Pa),
         ``shaft_arc`` (rad; NaN for a bonded fit), each (k,); ``hoop`` and ``bore_p`` (k, n_b; Pa)
         at the bore angles ``model.theta``.
+
+    Raises
+    ------
+    ConvergenceError
+        The shaft-bore active set cycles at some angle.
     """
     d = model.disk
     W = np.asarray(F, float) / model.length
@@ -136,7 +175,12 @@ def cam_disk_rows(scene, theta, Fc, *, model: CamGlobalModel | None = None,
     dict
         SI arrays shaped like ``theta`` under the keys of :data:`CAM_CSV_COLUMNS` (``hoop_max``
         Pa, ``hoop_angle`` rad, ``shaft_p0`` Pa, ``shaft_arc`` rad, ``web`` m) and ``flags``
-        (text). Raises :class:`~femcam.errors.InputError` for a web thinner than
+        (text).
+
+    Raises
+    ------
+    InputError
+        Shapes that differ, no ``[cam] bore_mm``, or a web thinner than
         :data:`WEB_OVER_A_MIN` contact half-widths.
     """
     theta = _validate.finite_array("theta", theta, "rad")
@@ -166,7 +210,22 @@ def cam_disk_rows(scene, theta, Fc, *, model: CamGlobalModel | None = None,
 
 
 def yield_flags(disk: CamDisk, hoop_max, hoop_angle) -> np.ndarray:
-    """Text per row: the bore hoop stress above the cam's yield strength, with the numbers."""
+    """Text per row: the bore hoop stress above the cam's yield strength, with the numbers.
+
+    Parameters
+    ----------
+    disk : CamDisk
+        The cam disk (its ``cam_yield`` [Pa] and web).
+    hoop_max : ndarray, shape (k,)
+        Largest bore hoop stress per row [Pa].
+    hoop_angle : ndarray, shape (k,)
+        Its angle from the contact direction [rad].
+
+    Returns
+    -------
+    ndarray of object (str), shape (k,)
+        The flag text, "" where the stress is within the yield strength (or none is given).
+    """
     y = disk.cam_yield
     out = np.full(np.shape(hoop_max), "", dtype=object)
     if y is None:
@@ -186,7 +245,24 @@ WEB_OVER_A_MIN = 10.0
 
 def check_web_against_contact(disk: CamDisk, scene, Fc, rho) -> None:
     """Refuse a web thinner than :data:`WEB_OVER_A_MIN` Hertz half-widths (Johnson 1985 eq. 4.45;
-    ``a`` of the largest contact over the angles) with the numbers."""
+    ``a`` of the largest contact over the angles) with the numbers.
+
+    Parameters
+    ----------
+    disk : CamDisk
+        The cam disk (its web).
+    scene : femcam.scene.Scene
+        The scene (roller radius, materials, face width, plane).
+    Fc : ndarray, shape (k,)
+        Contact forces [N], > 0.
+    rho : ndarray, shape (k,)
+        Cam radii of curvature at those angles [m] (< 0 concave, inf flat).
+
+    Raises
+    ------
+    InputError
+        ``r_min - Rb < WEB_OVER_A_MIN * a_max`` (named by ``cam.bore_mm``).
+    """
     Rr = scene.follower.Rr
     inv_R = 1.0 / Rr + np.where(np.isinf(rho), 0.0, 1.0 / np.where(np.isinf(rho), 1.0, rho))
     Es = effective_modulus(scene.cam, scene.roller, scene.plane)
@@ -199,6 +275,17 @@ def check_web_against_contact(disk: CamDisk, scene, Fc, rho) -> None:
 
 
 def to_csv_columns(rows: dict) -> dict:
-    """``{csv name with unit: array}`` from :func:`cam_disk_rows` output."""
+    """The CSV columns (unit in the name) of :func:`cam_disk_rows` output.
+
+    Parameters
+    ----------
+    rows : dict
+        :func:`cam_disk_rows` output (SI arrays; keys outside :data:`CAM_CSV_COLUMNS` are skipped).
+
+    Returns
+    -------
+    dict of str to ndarray
+        ``{csv name: array}`` in the column's unit (MPa, deg, mm).
+    """
     return {CAM_CSV_COLUMNS[k][0]: np.asarray(v) * CAM_CSV_COLUMNS[k][1] for k, v in rows.items()
             if k in CAM_CSV_COLUMNS}

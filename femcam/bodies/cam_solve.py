@@ -23,14 +23,44 @@ from .contact import solve_multi_lcp
 class CamDiskResult:
     """Solution of one load case (see :func:`solve_cam_disk`).
 
-    a, x0, p0: cam-roller half-width, centre and fitted peak on the cam disk (m, m, Pa); x, p:
-    contact vertices and pressures; a_local, p0_local, delta_local: the same on today's local
-    cam body (NaN if the model was built without it); delta: roller approach towards the
-    shaft core (m); t: cam translation (m, contact frame); theta: bore angles from the contact
-    direction (rad); hoop: bore hoop stress (Pa); hoop_max, hoop_theta: the largest tensile one
-    and its angle; bore_p: shaft-bore pressure (Pa; negative = tension, bonded fit only);
-    shaft_p0: its peak; shaft_arc: angular extent of the loaded bore nodes (rad; NaN bonded);
-    flags: warnings (yield); diagnostics.
+    Attributes
+    ----------
+    F : float
+        Contact force over the face width [N].
+    a, x0, p0 : float
+        Cam-roller half-width [m], centre [m] and fitted peak pressure [Pa] on the cam disk.
+    x : ndarray, shape (nc,)
+        Contact vertex abscissae [m].
+    p : ndarray, shape (nc,)
+        Contact pressure at ``x`` [Pa].
+    a_local, p0_local : float
+        Half-width [m] and peak pressure [Pa] on today's local cam body (NaN if not solved).
+    delta_local : float
+        Roller approach on the local bodies [m] (NaN if not solved).
+    delta : float
+        Roller approach towards the shaft core [m].
+    t : ndarray, shape (2,)
+        Cam translation in the contact frame [m].
+    theta : ndarray, shape (n_b,)
+        Bore angles from the contact direction, counter-clockwise [rad].
+    hoop : ndarray, shape (n_b,)
+        Bore hoop stress [Pa].
+    hoop_max, hoop_theta : float
+        The largest (tensile) bore hoop stress [Pa] and its angle [rad].
+    bore_p : ndarray, shape (n_b,)
+        Shaft-bore pressure [Pa] (negative = tension, bonded fit only).
+    shaft_p0 : float
+        Its peak [Pa].
+    shaft_arc : float
+        Angular extent of the loaded bore nodes [rad] (NaN for a bonded fit).
+    flags : tuple of str
+        Warnings (cam yield at the bore).
+    iterations : int
+        Active-set iterations.
+    residual : float
+        Relative complementarity residual of the last iteration [-].
+    converged : bool
+        Whether the active-set solve converged.
     """
 
     F: float
@@ -63,6 +93,7 @@ class CamDiskResult:
 
     @property
     def da(self) -> float:
+        """a on the disk / a on the local body - 1."""
         return self.a / self.a_local - 1.0
 
 
@@ -84,7 +115,21 @@ def _system(model):
 
 
 def shaft_arc(theta, p) -> float:
-    """Angular extent (rad) of the loaded nodes ``p > 0`` about their mean direction."""
+    """Angular extent of the loaded nodes ``p > 0`` about their mean direction.
+
+    Parameters
+    ----------
+    theta : ndarray, shape (n,)
+        Node angles [rad].
+    p : ndarray, shape (n,)
+        Node pressures [Pa] (only their sign is used).
+
+    Returns
+    -------
+    float
+        Angle from the first to the last loaded node about their mean direction [rad]; 0 if
+        none is loaded.
+    """
     on = p > 0
     if not np.any(on):
         return 0.0
@@ -107,6 +152,7 @@ def solve_cam_disk(model, *, F: float, local: bool = True) -> CamDiskResult:
     Parameters
     ----------
     model : CamDiskModel
+        The condensed model.
     F : float
         Contact force (N) over the face width ``model.length``.
     local : bool
@@ -115,8 +161,16 @@ def solve_cam_disk(model, *, F: float, local: bool = True) -> CamDiskResult:
     Returns
     -------
     CamDiskResult
-        Raises :class:`~femcam.errors.PhysicsError` if the contact reaches the end of the fine
-        zone and :class:`~femcam.errors.ConvergenceError` if the active set cycles.
+        Contact, bore and shaft results with diagnostics.
+
+    Raises
+    ------
+    InputError
+        ``F`` not a positive number.
+    PhysicsError
+        The contact reaches the end of the fine zone.
+    ConvergenceError
+        The active set cycles.
     """
     F = _validate.positive("F", F, "N")
     nc, d = model.nc, model.disk

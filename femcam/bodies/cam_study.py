@@ -27,13 +27,46 @@ KEYS = ("Rb", "web", "p0", "a", "p0_local", "a_local", "dp0", "da", "delta", "de
 
 
 def peak_angle(scene, n: int = 720) -> float:
-    """Cam angle (rad) of the largest contact force over one revolution (n angles)."""
+    """Cam angle of the largest contact force over one revolution.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene.
+    n : int, optional
+        Equally spaced cam angles over [0, 2 pi).
+
+    Returns
+    -------
+    float
+        The cam angle [rad].
+    """
     th = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
     return float(th[int(np.nanargmax(scene.analyse(th).Fc))])
 
 
 def refined_at(scene, disk, theta: float, **kw):
-    """(model, result) of the fully refined model of ``disk`` at cam angle ``theta`` (rad)."""
+    """The fully refined model of ``disk`` at one cam angle, solved for the scene's force there.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A roller-follower scene.
+    disk : CamDisk
+        The cam disk.
+    theta : float
+        Cam angle [rad].
+    **kw
+        Passed to :meth:`~femcam.bodies.cam_model.CamDiskModel.build` (``mesh``, ``cam_mesh``,
+        ``element``, ``local``).
+
+    Returns
+    -------
+    model : CamDiskModel
+        The built model (``a_ref``: the Hertz half-width at ``theta``).
+    result : CamDiskResult
+        Its solution.
+    """
     C, n, rho, F = contact_frame(scene, theta)
     inv_R = 1 / scene.follower.Rr + (0.0 if math.isinf(rho) else 1 / rho)
     a_ref = math.sqrt(4 * F / scene.length / (inv_R * math.pi * effective_modulus(scene.cam, scene.roller,
@@ -49,8 +82,26 @@ def _contact_at(scene, theta):
 
 
 def web_study(scene, bores, *, theta: float | None = None, n_rev: int = 360) -> dict:
-    """SI arrays over ``bores`` (m): see :data:`KEYS` (refined model at ``theta``; ``*_rev``: the
-    global model over ``n_rev`` angles; times in s)."""
+    """The refined model at one angle and the global model over a revolution, per bore radius.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A roller-follower scene.
+    bores : sequence of float
+        Bore radii ``Rb`` [m].
+    theta : float or None, optional
+        Cam angle of the refined model [rad]; None: :func:`peak_angle`.
+    n_rev : int, optional
+        Equally spaced cam angles of the global model over one revolution.
+
+    Returns
+    -------
+    dict
+        Float arrays over ``bores`` under :data:`KEYS`, SI: lengths [m], stresses and pressures
+        [Pa], angles [rad], ``dp0``/``da`` relative [-], times ``t_*`` [s], ``n_dofs_*``
+        counts; ``*_rev``: the global model over ``n_rev`` angles; plus ``theta`` [rad].
+    """
     theta = peak_angle(scene) if theta is None else float(theta)
     th = np.linspace(0.0, 2 * math.pi, n_rev, endpoint=False)
     st = scene.analyse(th)

@@ -33,6 +33,28 @@ def arc_load_matrix(body, nodes: np.ndarray, centre: tuple, closed: bool,
     :func:`femcam.fe.contact.load_matrix`, with the chord length ``h`` of each edge).
     ``tangential``: the hats act along ``direction * e_theta`` (counter-clockwise) instead (a
     shear traction, e.g. the drive torque on the cam's bore).
+
+    Parameters
+    ----------
+    body : femcam.fe.elasticity.Body
+        The assembled body (P1 or P2).
+    nodes : ndarray of int, shape (n,)
+        Vertex nodes on the circle, ordered by angle.
+    centre : (float, float)
+        Circle centre [m].
+    closed : bool
+        Join the last node to the first (a full circle).
+    direction : float, optional
+        +1 outward radial (or counter-clockwise), -1 inward.
+    scale : float, optional
+        Factor on every force [-] (e.g. ``Rb / Rs`` to carry a bore pressure onto the shaft).
+    tangential : bool, optional
+        Shear along ``e_theta`` instead of pressure along ``e_r``.
+
+    Returns
+    -------
+    ndarray, shape (n_dofs, n)
+        Nodal forces of each unit hat [N/m per Pa] (DOFs interleaved x, y).
     """
     n = nodes.size
     a = nodes
@@ -72,7 +94,26 @@ def arc_load_matrix(body, nodes: np.ndarray, centre: tuple, closed: bool,
 
 
 def radial_measure(body, nodes: np.ndarray, centre: tuple, direction: float = 1.0):
-    """(dof_x, dof_y, ex, ey): ``u . (direction e_r)`` at ``nodes`` is ``ex u[dof_x] + ey u[dof_y]``."""
+    """The radial displacement ``u . (direction e_r)`` at ``nodes`` as ``ex u[dof_x] + ey u[dof_y]``.
+
+    Parameters
+    ----------
+    body : femcam.fe.elasticity.Body
+        The assembled body.
+    nodes : ndarray of int, shape (n,)
+        Vertex nodes.
+    centre : (float, float)
+        Centre of the radial direction [m].
+    direction : float, optional
+        +1 outward, -1 inward.
+
+    Returns
+    -------
+    dof_x, dof_y : ndarray of int, shape (n,)
+        The x and y DOFs of ``nodes``.
+    ex, ey : ndarray, shape (n,)
+        Components of ``direction e_r`` [-].
+    """
     p = body.mesh.p[:, nodes]
     d = p - np.array([[centre[0]], [centre[1]]])
     e = direction * d / np.hypot(*d)
@@ -80,7 +121,22 @@ def radial_measure(body, nodes: np.ndarray, centre: tuple, direction: float = 1.
 
 
 def arc_weights(n: int, spacing: float, closed: bool) -> np.ndarray:
-    """``w_k = int L_k ds`` of P1 hats with uniform ``spacing`` (m)."""
+    """``w_k = int L_k ds`` of P1 hats with uniform ``spacing``.
+
+    Parameters
+    ----------
+    n : int
+        Number of hats.
+    spacing : float
+        Node spacing (arc length) [m].
+    closed : bool
+        A closed curve (else the end hats are halved).
+
+    Returns
+    -------
+    ndarray, shape (n,)
+        Hat weights [m].
+    """
     w = np.full(n, spacing)
     if not closed:
         w[[0, -1]] *= 0.5
@@ -89,7 +145,27 @@ def arc_weights(n: int, spacing: float, closed: bool) -> np.ndarray:
 
 @dataclass(frozen=True)
 class MultiLCPSolution:
-    """Solution of :func:`solve_multi_lcp`: pressures ``lam``, gaps ``g``, rigid unknowns ``r``."""
+    """Solution of :func:`solve_multi_lcp` (symbols of the module docstring).
+
+    Attributes
+    ----------
+    lam : ndarray, shape (n,)
+        Contact unknowns: nodal pressures [Pa] (or needle loads [N/m]).
+    g : ndarray, shape (n,)
+        Gaps [m].
+    r : ndarray, shape (m,)
+        Rigid unknowns (translations, approaches) [m].
+    active : ndarray of bool, shape (n,)
+        The final active set.
+    iterations : int
+        Active-set iterations.
+    residual : float
+        Relative complementarity residual ``max|min(lam, c g)| / max|lam|`` [-].
+    history : tuple of float
+        Residual of every iteration [-].
+    converged : bool
+        Always True (a solve that does not settle raises).
+    """
 
     lam: np.ndarray
     g: np.ndarray
@@ -106,8 +182,38 @@ def solve_multi_lcp(A, h0, G, C, d, *, active0, max_iter: int = 80, tol: float =
     """Active-set solve of the problem in the module docstring (see there for the symbols).
 
     ``bilateral`` (bool mask, optional): unknowns that are always active, of either sign, with
-    ``g = 0`` (a bonded, frictionless tie). Raises :class:`ConvergenceError` with the residual
-    history when the active set cycles.
+    ``g = 0`` (a bonded, frictionless tie).
+
+    Parameters
+    ----------
+    A : ndarray, shape (n, n)
+        Condensed compliance [m/Pa].
+    h0 : ndarray, shape (n,)
+        Initial gaps [m].
+    G : ndarray, shape (n, m)
+        Rigid-motion columns [-].
+    C : ndarray, shape (m, n)
+        Equilibrium rows (weights) [m].
+    d : ndarray, shape (m,)
+        Equilibrium right-hand sides (loads per unit width) [N/m].
+    active0 : ndarray of bool, shape (n,)
+        Initial active set.
+    max_iter : int, optional
+        Most active-set iterations.
+    tol : float, optional
+        Residual that ends the iterations once the active set repeats [-].
+    bilateral : ndarray of bool, shape (n,), optional
+        Unknowns that are always active, of either sign, with ``g = 0``.
+
+    Returns
+    -------
+    MultiLCPSolution
+        Pressures, gaps, rigid unknowns and diagnostics.
+
+    Raises
+    ------
+    ConvergenceError
+        The active set cycles; carries the residual history.
     """
     n = h0.size
     m = d.size

@@ -19,7 +19,24 @@ BODY_IDS = {"cam": 0, "ring": 1, "pin": 2}
 
 
 def body_fields(model, result, name: str) -> dict:
-    """Nodal fields of body ``name`` (see module docstring) for a :class:`RingResult`."""
+    """Nodal fields of body ``name`` (see module docstring) for a :class:`RingResult`.
+
+    Parameters
+    ----------
+    model : RingModel
+        The solved ring model (:class:`~femcam.bodies.model.RingModel`).
+    result : RingResult
+        Its solution for one load case.
+    name : {"ring", "pin", "cam"}
+        The body (``"pin"`` only with an elastic pin).
+
+    Returns
+    -------
+    dict
+        ``xy`` (2, n) node coordinates in the roller frame [m]; ``u`` (2, n) displacement [m];
+        ``sxx``, ``syy``, ``sxy``, ``hoop`` (about the roller centre), ``von_mises`` (n,) [Pa];
+        ``cells`` (n_cells, 6) int node indices of the ``triangle6`` cells.
+    """
     b = model.bodies[name]
     basic = np.concatenate([result.p, result.bore_p])
     if name == "cam":
@@ -42,7 +59,28 @@ def body_fields(model, result, name: str) -> dict:
 
 
 def ring_arrays(model, result, bodies=("ring", "pin", "cam")):
-    """(points (n, 3), cells (nel, 6), point_data, body ids) of the chosen bodies."""
+    """The chosen bodies as one point cloud with ``triangle6`` cells (for the VTU export).
+
+    Parameters
+    ----------
+    model : RingModel
+        The solved ring model.
+    result : RingResult
+        Its solution for one load case.
+    bodies : tuple of str, optional
+        The bodies, of ``"ring"``, ``"pin"``, ``"cam"`` (a missing one is skipped).
+
+    Returns
+    -------
+    points : ndarray, shape (n, 3)
+        Node coordinates in the roller frame [m] (z = 0).
+    cells : ndarray of int, shape (nel, 6)
+        ``triangle6`` node indices.
+    point_data : dict of str to ndarray
+        ``displacement`` (n, 3) [m]; ``sxx``, ``syy``, ``sxy``, ``hoop``, ``von_mises`` (n,) [Pa].
+    body_ids : ndarray of int, shape (nel,)
+        Body of each cell (:data:`BODY_IDS`: 0 cam, 1 ring, 2 pin).
+    """
     pts, cells, ids = [], [], []
     data = {k: [] for k in ("displacement", "sxx", "syy", "sxy", "hoop", "von_mises")}
     off = 0
@@ -63,7 +101,24 @@ def ring_arrays(model, result, bodies=("ring", "pin", "cam")):
 
 
 def write_ring_vtu(model, result, path, bodies=("ring", "pin", "cam")) -> Path:
-    """Write the bodies of a solved ring model to ``path`` (.vtu); returns the path."""
+    """Write the bodies of a solved ring model to a ``.vtu`` file.
+
+    Parameters
+    ----------
+    model : RingModel
+        The solved ring model.
+    result : RingResult
+        Its solution for one load case.
+    path : str or os.PathLike
+        The ``.vtu`` file; its folder is created.
+    bodies : tuple of str, optional
+        The bodies, of ``"ring"``, ``"pin"``, ``"cam"`` (a missing one is skipped).
+
+    Returns
+    -------
+    pathlib.Path
+        The written file.
+    """
     import meshio  # optional heavy dependency of the export only
 
     pts, cells, data, ids = ring_arrays(model, result, bodies)

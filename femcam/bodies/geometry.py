@@ -49,6 +49,18 @@ def needle_approach(Q, length: float):
 
     .. math:: \delta_n = 2\cdot 3.84\cdot10^{-5}\,(Q l)^{0.9}\, l_{mm}^{-0.8}\ \mathrm{mm}
 
+    Parameters
+    ----------
+    Q : float or ndarray
+        Needle load per unit length [N/m] (negative values count as 0).
+    length : float
+        Needle length (face width) [m].
+
+    Returns
+    -------
+    float or ndarray
+        Approach ``delta_n`` [m], shaped like ``Q``.
+
     >>> round(float(needle_approach(150e3, 0.01)) * 1e6, 2)   # 1500 N on a 10 mm needle: um
     8.79
     """
@@ -65,9 +77,35 @@ bearing_problems = roller_support_problems
 class RollerBearing:
     """The roller as a ring on a pin or on needles (SI units).
 
-    Ro, Ri: ring outer and bore radii; support: "pin" or "needles"; Rp: pin radius; c: radial
-    clearance (see module table); Z, r_n: needle count and radius; ring, pin, needle: materials
-    (``pin=None``: a rigid pin); ring_yield: optional tensile limit (Pa) flagged in results.
+    Parameters
+    ----------
+    Ro : float
+        Ring outer radius (the roller radius) [m].
+    Ri : float
+        Ring bore radius [m].
+    support : {"pin", "needles"}, optional
+        What carries the ring.
+    Rp : float, optional
+        Pin (or inner raceway) radius [m].
+    c : float, optional
+        Radial clearance [m] (module table), at most 0.05 ``Ri``.
+    Z : int, optional
+        Needle count (needles only).
+    r_n : float, optional
+        Needle radius [m] (needles only).
+    ring : Material, optional
+        Ring material (default steel).
+    pin : Material or None, optional
+        Pin material (default steel); None for a rigid pin.
+    needle : Material, optional
+        Needle material (default steel).
+    ring_yield : float or None, optional
+        Tensile limit of the ring [Pa] flagged in results; None for no flag.
+
+    Raises
+    ------
+    InputError
+        Every geometry problem at once (:func:`bearing_problems`), or a clearance above 0.05 Ri.
     """
 
     Ro: float
@@ -101,6 +139,17 @@ class RollerBearing:
         return self.Ro - self.Ri
 
     def needle_angles(self, cage: float) -> np.ndarray:
-        """Needle polar angles (rad) with needle 0 at ``-pi/2 + cage`` (``cage = 0``: a needle on
-        the load line; ``cage = pi / Z``: the load line between two needles)."""
+        """Needle polar angles with needle 0 at ``-pi/2 + cage``.
+
+        Parameters
+        ----------
+        cage : float
+            Cage angle [rad]: 0 puts a needle on the load line, ``pi / Z`` the load line between
+            two needles.
+
+        Returns
+        -------
+        ndarray, shape (Z,)
+            Needle polar angles about the ring centre [rad].
+        """
         return -0.5 * math.pi + cage + 2 * math.pi * np.arange(self.Z) / self.Z

@@ -29,7 +29,13 @@ from ..mesh import gmsh_session as _gmsh_session
 
 
 def gmsh_session():
-    """An initialised gmsh for the bodies (:func:`femcam.mesh.gmsh_session`)."""
+    """An initialised gmsh for the bodies (:func:`femcam.mesh.gmsh_session`).
+
+    Returns
+    -------
+    contextlib.AbstractContextManager
+        A context manager yielding the ``gmsh`` module (errors name "the bodies").
+    """
     return _gmsh_session("the bodies")
 
 
@@ -97,10 +103,43 @@ def _snap_circle(pts, nodes, cx, cy, R, n, theta0=-0.5 * math.pi):
 def mesh_ring(*, Ro: float, Ri: float, contact_x: np.ndarray, n_bore: int, h_bore: float,
               h_max: float, fine_depth: float, growth: float = 0.3,
               band: float = 3.0) -> tuple[BodyMesh, np.ndarray, np.ndarray]:
-    """Mesh the ring; returns ``(BodyMesh, bore_nodes, bore_theta)`` (see module docstring).
+    """Mesh the ring (see module docstring).
 
-    ``BodyMesh.contact`` are the fine-arc vertices sorted by x (``contact_x``), ``fixed`` is empty
-    (the ring floats: it is held by its contacts).
+    Parameters
+    ----------
+    Ro : float
+        Ring outer radius [m].
+    Ri : float
+        Ring bore radius [m].
+    contact_x : ndarray, shape (n_fine + 1,)
+        Cam contact abscissae [m], uniform; the fine-arc vertices snap to them.
+    n_bore : int
+        Bore vertices (a multiple of 4).
+    h_bore : float
+        Element size at the bore [m].
+    h_max : float
+        Largest element size [m].
+    fine_depth : float
+        Depth below the fine arc meshed at the fine size [m].
+    growth : float, optional
+        Size growth slope [-].
+    band : float, optional
+        Width of the band at the bore meshed at ``h_bore``, in multiples of ``h_bore`` [-].
+
+    Returns
+    -------
+    mesh : BodyMesh
+        The ring; ``contact`` are the fine-arc vertices sorted by x (``contact_x``), ``fixed``
+        is empty (the ring floats: it is held by its contacts).
+    bore_nodes : ndarray of int, shape (n_bore,)
+        Bore vertex nodes, counter-clockwise from ``theta = -pi/2``.
+    bore_theta : ndarray, shape (n_bore,)
+        Their polar angles about the ring centre ``(0, Ro)`` [rad].
+
+    Raises
+    ------
+    FemcamError
+        gmsh returned the wrong number of fine-zone or bore nodes.
     """
     xf = float(contact_x[-1])
     n_fine = contact_x.size - 1
@@ -145,11 +184,42 @@ def mesh_ring(*, Ro: float, Ri: float, contact_x: np.ndarray, n_bore: int, h_bor
 def mesh_disk(*, R: float, n_surface: int, h_surface: float, h_max: float, growth: float = 0.3,
               band: float = 3.0, cy: float | None = None,
               cx: float = 0.0) -> tuple[BodyMesh, np.ndarray, np.ndarray, int]:
-    """Mesh a full disk (the pin, the cam's shaft); returns ``(BodyMesh, surface_nodes, theta,
-    centre_node)``.
+    """Mesh a full disk (the pin, the cam's shaft).
 
-    ``n_surface`` vertices uniform in angle from ``theta = -pi/2``; centre ``(cx, cy)`` (default
-    ``(0, R)``); ``centre_node`` is the node nearest to it.
+    Parameters
+    ----------
+    R : float
+        Disk radius [m].
+    n_surface : int
+        Surface vertices (a multiple of 4), uniform in angle from ``theta = -pi/2``.
+    h_surface : float
+        Element size at the surface [m].
+    h_max : float
+        Largest element size [m].
+    growth : float, optional
+        Size growth slope [-].
+    band : float, optional
+        Width of the surface band meshed at ``h_surface``, in multiples of it [-].
+    cy : float or None, optional
+        Centre y [m]; None: ``R``.
+    cx : float, optional
+        Centre x [m].
+
+    Returns
+    -------
+    mesh : BodyMesh
+        The disk (``contact`` = ``surface`` = the surface nodes, ``contact_x`` their angles).
+    surface_nodes : ndarray of int, shape (n_surface,)
+        Surface vertex nodes, counter-clockwise from ``theta = -pi/2``.
+    theta : ndarray, shape (n_surface,)
+        Their polar angles about the centre [rad].
+    centre_node : int
+        The node nearest to the centre.
+
+    Raises
+    ------
+    FemcamError
+        gmsh returned the wrong number of surface nodes.
     """
     cy = R if cy is None else cy
     q = n_surface // 4

@@ -43,8 +43,22 @@ from .mesh import gmsh_session, mesh_disk, mesh_ring
 
 @dataclass(frozen=True, kw_only=True)
 class RingMeshOptions:
-    """Mesh of the ring and pin: ``n_bore`` bore vertices (multiple of 4), largest element
-    ``h_max_over_wall`` x wall, pin surface size = bore spacing, growth slope ``growth``."""
+    """Mesh of the ring and pin (pin surface size = bore spacing).
+
+    Parameters
+    ----------
+    n_bore : int, optional
+        Bore vertices, a multiple of 4, >= 16.
+    h_max_over_wall : float, optional
+        Largest element size / ring wall ``Ro - Ri`` [-], in [0.02, 1].
+    growth : float, optional
+        Element size growth slope [-], in [0.05, 1].
+
+    Raises
+    ------
+    InputError
+        A value out of range, naming the field.
+    """
 
     n_bore: int = 128
     h_max_over_wall: float = 0.25
@@ -98,10 +112,43 @@ def _condense(body, B, meas_dofs, extra=None):
 class RingModel:
     """Condensed cam-ring-pin model (see the module docstring). Build with :meth:`build`.
 
-    x, w: cam-contact abscissae and weights (m); theta, wb: bore vertex angles (rad) and weights
-    (m); A: compliance of the basic unknowns ``[p, lambda_bore]`` (m/Pa), ring + cam + pin;
-    A_pin: the pin's part on the bore block; H: bore hoop stress per basic unknown (Pa/Pa);
-    timings (s), n_dofs.
+    Attributes
+    ----------
+    bearing : RollerBearing
+        The ring and its pin or needles.
+    cam : Material
+        Cam material.
+    rho_ref : float
+        Cam radius of curvature the cam body is meshed for [m] (< 0 concave, inf flat).
+    a_ref : float
+        Contact half-width the fine zone is graded for [m].
+    length : float
+        Face width [m].
+    plane : {"strain", "stress"}
+        Plane condition.
+    x : ndarray, shape (nc,)
+        Cam-contact abscissae [m].
+    w : ndarray, shape (nc,)
+        Their trapezoid weights [m].
+    theta : ndarray, shape (n_b,)
+        Bore vertex angles about the ring centre [rad].
+    wb : ndarray, shape (n_b,)
+        Bore hat weights (arc length) [m].
+    A : ndarray, shape (nc + n_b, nc + n_b)
+        Compliance of the basic unknowns ``[p, lambda_bore]``, ring + cam + pin [m/Pa].
+    A_pin : ndarray, shape (n_b, n_b)
+        The pin's part of the bore block [m/Pa] (zeros for a rigid pin).
+    H : ndarray, shape (n_b, nc + n_b)
+        Bore hoop stress per basic unknown [Pa/Pa].
+    bodies : dict of str to femcam.fe.elasticity.Body
+        ``"cam"``, ``"ring"`` and, with an elastic pin, ``"pin"``.
+    loads : dict of str to ndarray
+        Load matrices [N/m per Pa]: ``"ring"`` (n_dofs, nc + n_b), ``"cam"`` (n_dofs, nc),
+        ``"pin"`` (n_dofs, n_b) (for the VTU export).
+    timings : dict of str to float
+        ``mesh``, ``assembly``, ``factorisation``, ``condensation`` wall times [s].
+    n_dofs : int
+        Total degrees of freedom of the bodies.
     """
 
     bearing: RollerBearing
@@ -124,13 +171,46 @@ class RingModel:
 
     @property
     def nc(self) -> int:
+        """Number of cam-contact vertices."""
         return self.x.size
 
     @classmethod
     def build(cls, *, bearing: RollerBearing, cam: Material, rho_ref: float, a_ref: float,
               length: float, mesh: MeshOptions | None = None, ring_mesh: RingMeshOptions | None = None,
               plane: str = "strain", element: str = "P2") -> RingModel:
-        """Mesh, assemble, factorise and condense the three bodies."""
+        """Mesh, assemble, factorise and condense the three bodies.
+
+        Parameters
+        ----------
+        bearing : RollerBearing
+            The ring and its pin or needles.
+        cam : Material
+            Cam material.
+        rho_ref : float
+            Cam radius of curvature the cam body is meshed for [m] (< 0 concave, inf flat).
+        a_ref : float
+            Contact half-width the fine zone is graded for [m], > 0.
+        length : float
+            Face width [m], > 0.
+        mesh : MeshOptions or None, optional
+            Cam-contact fine zone (as :mod:`femcam.fe`).
+        ring_mesh : RingMeshOptions or None, optional
+            Ring and pin mesh.
+        plane : {"strain", "stress"}, optional
+            Plane condition.
+        element : {"P2", "P1"}, optional
+            Finite element.
+
+        Returns
+        -------
+        RingModel
+            The condensed model.
+
+        Raises
+        ------
+        InputError
+            A non-positive ``a_ref`` or ``length``, or a bore spacing above half the ring wall.
+        """
         a_ref = _validate.positive("a_ref", a_ref, "m")
         length = _validate.positive("length", length, "m")
         mesh = mesh or MeshOptions()
@@ -207,8 +287,19 @@ class RingModel:
                    n_dofs=sum(x.n_dofs for x in bodies.values()))
 
     def needle_spread(self, phi: np.ndarray) -> np.ndarray:
-        """(n_bore, Z) bore pressure per unit needle force: a triangle of half-width two bore
-        spacings centred on each needle angle, normalised so that ``wb @ S = 1``."""
+        """Bore pressure per unit needle force: a triangle of half-width two bore spacings
+        centred on each needle angle, normalised so that ``wb @ S = 1``.
+
+        Parameters
+        ----------
+        phi : ndarray, shape (Z,)
+            Needle angles about the ring centre [rad].
+
+        Returns
+        -------
+        ndarray, shape (n_bore, Z)
+            Bore pressure per needle load [Pa per N/m = 1/m].
+        """
         dth = 2 * math.pi / self.theta.size
         d = np.angle(np.exp(1j * (self.theta[:, None] - phi[None, :])))
         S = np.maximum(0.0, 1.0 - np.abs(d) / (2 * dth))

@@ -60,7 +60,24 @@ CSV_COLUMNS = {
 
 
 def bearing_from_scene(scene) -> RollerBearing:
-    """The :class:`RollerBearing` of a scene with ``roller_support = "pin"|"needles"``."""
+    """The :class:`RollerBearing` of a scene with ``roller_support = "pin"|"needles"``.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene (its ``bodies`` table, in SI, and the roller material).
+
+    Returns
+    -------
+    RollerBearing
+        Ring on the roller's material; pin and needles on ``[materials.pin]`` (default: the
+        roller's).
+
+    Raises
+    ------
+    InputError
+        A solid roller (no ring model), or a bad geometry.
+    """
     g = getattr(scene, "bodies", {}) or {}
     if g.get("support", "solid") == "solid":
         raise InputError("scene roller_support = 'solid': the solid roller has no ring model "
@@ -73,7 +90,26 @@ def bearing_from_scene(scene) -> RollerBearing:
 
 def build_for(scene, Fc, rho, *, mesh: MeshOptions | None = None,
               ring_mesh: RingMeshOptions | None = None) -> RingModel:
-    """A model graded for the largest ``Fc`` (N) and the cam radius ``rho`` (m) there."""
+    """A ring model graded for the largest contact force and the cam radius there.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A scene with a pin or needle roller support.
+    Fc : ndarray, shape (n,)
+        Contact forces over the face width [N] (NaN skipped by the maximum).
+    rho : ndarray, shape (n,)
+        Cam radii of curvature at the same angles [m].
+    mesh : MeshOptions or None, optional
+        Cam-contact fine zone (as :mod:`femcam.fe`).
+    ring_mesh : RingMeshOptions or None, optional
+        Ring and pin mesh.
+
+    Returns
+    -------
+    RingModel
+        The model, its fine zone graded for the Hertz half-width of the largest ``Fc``.
+    """
     b = bearing_from_scene(scene)
     k = int(np.nanargmax(Fc))
     F, r = float(Fc[k]), float(rho[k])
@@ -101,10 +137,36 @@ def _one(model, F, r, needles, Z):
 
 def ring_rows(scene, theta, Fc, rho, *, model: RingModel | None = None,
               mesh: MeshOptions | None = None, ring_mesh: RingMeshOptions | None = None) -> dict:
-    """Per-angle ring/pin/needle results (dict of SI arrays, keys of :data:`CSV_COLUMNS`).
+    """Per-angle ring/pin/needle results from one model.
 
-    theta (rad), Fc (N, contact force over the face width), rho (m, cam radius of curvature; <0
-    concave) are the sweep's arrays at the same angles; ``model`` reuses a built model.
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A scene with a pin or needle roller support.
+    theta : array_like of float, shape (n,)
+        Cam angles [rad].
+    Fc : array_like of float, shape (n,)
+        Contact force over the face width [N]; ``<= 0`` (lift-off) gives a NaN row.
+    rho : array_like of float, shape (n,)
+        Cam radius of curvature [m] (< 0 concave, inf flat).
+    model : RingModel or None, optional
+        A built model to reuse; None builds one (:func:`build_for`).
+    mesh : MeshOptions or None, optional
+        Fine zone of the model built here.
+    ring_mesh : RingMeshOptions or None, optional
+        Ring and pin mesh of the model built here.
+
+    Returns
+    -------
+    dict of str to ndarray
+        SI arrays of shape (n,) under the keys of :data:`CSV_COLUMNS` (module table), plus
+        ``needle_loads_on``/``needle_loads_between`` (n, Z) [N] for needles or
+        ``bore_pressure`` (n, n_bore) [Pa] for a pin.
+
+    Raises
+    ------
+    InputError
+        Shapes that differ, non-finite ``theta``, or a solid roller.
     """
     theta = _validate.finite_array("theta", theta, "rad")
     Fc = np.asarray(Fc, dtype=float)
@@ -132,6 +194,17 @@ def ring_rows(scene, theta, Fc, rho, *, model: RingModel | None = None,
 
 
 def to_csv_columns(rows: dict) -> dict:
-    """``{csv name with unit: array}`` from :func:`ring_rows` output."""
+    """The CSV columns (unit in the name) of :func:`ring_rows` output.
+
+    Parameters
+    ----------
+    rows : dict
+        :func:`ring_rows` output (SI arrays; keys outside :data:`CSV_COLUMNS` are skipped).
+
+    Returns
+    -------
+    dict of str to ndarray
+        ``{csv name: array}`` in the column's unit (deg, MPa, um, %, N).
+    """
     return {CSV_COLUMNS[k][0]: np.asarray(v) * CSV_COLUMNS[k][1] for k, v in rows.items()
             if k in CSV_COLUMNS}

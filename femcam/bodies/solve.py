@@ -25,14 +25,52 @@ from .geometry import needle_approach
 class RingResult:
     """Solution of one load case (see :func:`solve_ring`).
 
-    a, x0, p0: cam-contact half-width, centre and fitted peak (m, m, Pa); x, p: cam-contact
-    vertices and pressures; hertz_a, hertz_p0: the solid roller's Hertz values (Johnson 1985
-    eq. 4.45); hoop: bore hoop stress at ``theta`` (Pa); hoop_max, hoop_theta: the largest
-    (tensile) bore hoop stress and its polar angle (rad); bore_p: bore contact pressure at
-    ``theta`` (pin support, Pa); pin_a, pin_p0: half-width (arc length, m) and peak of the pin
-    contact (Hertz-ellipse fit) and pin_arc: angular extent of the loaded bore nodes (rad);
-    needle_phi, needle_Q: needle angles (rad) and loads (N, whole face width); t: ring
-    translation (m); delta: cam approach (m); flags: warnings (yield); diagnostics.
+    Attributes
+    ----------
+    F : float
+        Cam contact force over the face width [N].
+    rho : float
+        Cam radius of curvature [m].
+    cage : float
+        Cage angle [rad] (needles).
+    a, x0, p0 : float
+        Cam-contact half-width [m], centre [m] and fitted peak pressure [Pa].
+    x : ndarray, shape (nc,)
+        Cam-contact vertex abscissae [m].
+    p : ndarray, shape (nc,)
+        Cam-contact pressure at ``x`` [Pa].
+    hertz_a, hertz_p0 : float
+        The solid roller's Hertz half-width [m] and peak pressure [Pa] (Johnson 1985 eq. 4.45;
+        NaN for a conformal contact).
+    theta : ndarray, shape (n_b,)
+        Bore vertex angles about the ring centre [rad].
+    hoop : ndarray, shape (n_b,)
+        Bore hoop stress at ``theta`` [Pa].
+    hoop_max, hoop_theta : float
+        The largest (tensile) bore hoop stress [Pa] and its polar angle [rad].
+    bore_p : ndarray, shape (n_b,)
+        Bore contact pressure at ``theta`` [Pa] (the needle spread for needles).
+    pin_a, pin_p0 : float
+        Pin-contact half-width (arc length) [m] and peak [Pa] (Hertz-ellipse fit; NaN for
+        needles).
+    pin_arc : float
+        Angular extent of the loaded bore nodes [rad] (NaN for needles).
+    needle_phi : ndarray, shape (Z,)
+        Needle angles [rad] (empty for a pin).
+    needle_Q : ndarray, shape (Z,)
+        Needle loads over the whole face width [N] (empty for a pin).
+    t : ndarray, shape (2,)
+        Ring translation [m].
+    delta : float
+        Cam approach [m].
+    flags : tuple of str
+        Warnings (ring yield at the bore).
+    iterations : int
+        Active-set iterations, summed over the secant iterations.
+    residual : float
+        Relative complementarity residual of the last solve [-].
+    converged : bool
+        Whether the last active-set solve converged.
     """
 
     F: float
@@ -64,6 +102,7 @@ class RingResult:
 
     @property
     def needle_Q_max(self) -> float:
+        """Largest needle load over the face width [N] (NaN for a pin)."""
         return float(self.needle_Q.max()) if self.needle_Q.size else math.nan
 
 
@@ -85,7 +124,8 @@ def _rigid(model, phi, weights):
 
 
 def _operators(model, cage):
-    """(A, P, M, phi, weights): compliance of the unknowns, pressure map, bore angles."""
+    """(A, P, phi, weights): compliance of the unknowns, pressure map, bore/needle angles and
+    their force weights."""
     nc, b = model.nc, model.bearing
     if b.support == "pin":
         n = model.A.shape[0]
@@ -115,8 +155,38 @@ def _hertz(model, F, rho):
 
 def solve_ring(model, *, F: float, rho: float, cage: float = 0.0, max_secant: int = 40,
                tol: float = 1e-9) -> RingResult:
-    """Solve the cam-ring-support contacts for cam force ``F`` (N), cam radius ``rho`` (m) and
-    cage angle ``cage`` (rad, needles only; 0: a needle on the load line)."""
+    """Solve the cam-ring-support contacts for one load case.
+
+    Parameters
+    ----------
+    model : RingModel
+        The condensed model.
+    F : float
+        Cam contact force over the face width [N], > 0.
+    rho : float
+        Cam radius of curvature [m]: nonzero, inf for flat, and not concave tighter than the
+        ring (``-Ro <= rho < 0`` is refused).
+    cage : float, optional
+        Cage angle [rad] (needles only; 0: a needle on the load line).
+    max_secant : int, optional
+        Most secant iterations on the nonlinear needle approach.
+    tol : float, optional
+        Relative change of the needle loads that ends the secant iterations [-].
+
+    Returns
+    -------
+    RingResult
+        The contact pressures, bore hoop stress, support loads and diagnostics.
+
+    Raises
+    ------
+    InputError
+        A bad ``F`` or ``rho``.
+    PhysicsError
+        The cam contact reaches the end of the fine zone, or the pin contact wraps the pin.
+    ConvergenceError
+        The needle loads or the active set do not settle.
+    """
     F = _validate.positive("F", F, "N")
     rho = float(rho)
     if math.isnan(rho) or rho == 0.0 or (math.isfinite(rho) and -model.bearing.Ro <= rho < 0):

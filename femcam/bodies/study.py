@@ -21,7 +21,31 @@ from .solve import solve_ring
 
 
 def bearing_for_wall(Ro, wall, support, *, c, r_n=1e-3, ring: Material, pin: Material) -> RollerBearing:
-    """The ring on a pin (``Rp = Ri - c``) or on a full complement of needles of radius r_n."""
+    """The ring on a pin (``Rp = Ri - c``) or on a full complement of needles of radius r_n.
+
+    Parameters
+    ----------
+    Ro : float
+        Ring outer radius [m].
+    wall : float
+        Ring wall ``Ro - Ri`` [m].
+    support : {"pin", "needles"}
+        What carries the ring.
+    c : float
+        Radial clearance [m].
+    r_n : float, optional
+        Needle radius [m].
+    ring : Material
+        Ring material.
+    pin : Material
+        Pin (and needle) material.
+
+    Returns
+    -------
+    RollerBearing
+        The bearing; needles: ``Z = floor(pi / asin(r_n / (Ri - r_n)))``,
+        ``Rp = Ri - 2 r_n - c``.
+    """
     Ri = Ro - wall
     if support == "pin":
         return RollerBearing(Ro=Ro, Ri=Ri, support="pin", Rp=Ri - c, c=c, ring=ring, pin=pin)
@@ -33,8 +57,40 @@ def bearing_for_wall(Ro, wall, support, *, c, r_n=1e-3, ring: Material, pin: Mat
 def wall_study(*, Ro, walls, support, F, rho, length, cam: Material, ring: Material, pin: Material,
                c=10e-6, r_n=1e-3, mesh: MeshOptions | None = None,
                ring_mesh: RingMeshOptions | None = None) -> dict:
-    """SI arrays over ``walls`` (m): p0, a, their Hertz (solid) values, hoop_max (the larger of the
-    two extreme cage positions for needles), needle_Q_max (N), n_dofs, t_build (s)."""
+    """One load case on a ring model per wall thickness (same roller radius).
+
+    Parameters
+    ----------
+    Ro : float
+        Ring outer radius (the roller radius) [m].
+    walls : sequence of float
+        Ring walls ``Ro - Ri`` [m].
+    support : {"pin", "needles"}
+        What carries the ring.
+    F : float
+        Cam contact force over the face width [N].
+    rho : float
+        Cam radius of curvature [m].
+    length : float
+        Face width [m].
+    cam, ring, pin : Material
+        Cam, ring and pin (and needle) materials.
+    c : float, optional
+        Radial clearance [m].
+    r_n : float, optional
+        Needle radius [m].
+    mesh : MeshOptions or None, optional
+        Cam-contact fine zone.
+    ring_mesh : RingMeshOptions or None, optional
+        Ring and pin mesh.
+
+    Returns
+    -------
+    dict of str to ndarray
+        Float arrays over ``walls``: ``wall`` [m], ``p0`` [Pa], ``a`` [m], their Hertz (solid)
+        values ``p0_solid`` [Pa], ``a_solid`` [m], ``hoop_max`` [Pa] (the larger of the two
+        extreme cage positions for needles), ``needle_Q_max`` [N], ``n_dofs``, ``t_build`` [s].
+    """
 
     out = {k: [] for k in ("wall", "p0", "a", "p0_solid", "a_solid", "hoop_max", "needle_Q_max",
                            "n_dofs", "t_build")}

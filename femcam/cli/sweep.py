@@ -18,7 +18,7 @@ import shlex
 import sys
 
 from .. import _validate
-from ..scene import load_scene
+from ..scene import load_scene, study_problem
 from ..sweep import parse_angles_deg, sweep
 from ..sweep.options import TOLERANCE_FLOOR
 from ..sweep.result import families_text
@@ -163,22 +163,29 @@ def useful_workers(requested, n_angles: int, chunk_size: int) -> tuple:
                  f"{chunks} chunks of {chunk_size} angles)")
 
 
+#: flag dest -> (unit shown in the message, CLI hint appended to the condition); the ranges
+#: themselves are femcam.scene.schema.study_problem (one copy; each flag's scene key is in SETTINGS)
+_FLAG_CHECKS = {
+    "mesh_size": ("(elements per contact half-width, a/h)",
+                  "10 (default) keeps p0 within 0.3 % of Hertz"),
+    "tolerance": ("(relative p0 reuse error)", ""),
+    "chunk_size": ("angles", ""),
+    "vtk_every": ("angles", "0 = no VTK"),
+}
+
+
 def _check_args(args) -> None:
-    """Validate the options with the flags' own names (before the API sees them)."""
-    h = _validate.number("--mesh-size", args.mesh_size, "(elements per contact half-width, a/h)")
-    if not 2.0 <= h <= 400.0:
-        raise _validate.fail("--mesh-size", args.mesh_size, "(elements per contact half-width, a/h)",
-                     "must be in [2, 400]; 10 (default) keeps p0 within 0.3 % of Hertz")
-    tol = _validate.number("--tolerance", args.tolerance, "(relative p0 reuse error)")
-    if not TOLERANCE_FLOOR <= tol <= 0.5:
-        raise _validate.fail("--tolerance", args.tolerance, "(relative p0 reuse error)",
-                     f"must be in [{TOLERANCE_FLOOR:g}, 0.5]; below {TOLERANCE_FLOOR:g} nearly every "
-                     "angle needs its own model (the reuse error is of the order of the FE "
-                     "discretisation error): refine --mesh-size instead")
-    if args.chunk_size < 1:
-        raise _validate.fail("--chunk-size", args.chunk_size, "angles", "must be an integer >= 1")
-    if args.vtk_every < 0:
-        raise _validate.fail("--vtk-every", args.vtk_every, "angles", "must be an integer >= 0 (0 = no VTK)")
+    """Validate the options with the flags' own names (before the API sees them).
+
+    The condition is :func:`femcam.scene.schema.study_problem`'s, with the scene key
+    ``a_over_h`` it may mention written as its flag ``--mesh-size``.
+    """
+    for dest, (unit, hint) in _FLAG_CHECKS.items():
+        flag, value = "--" + dest.replace("_", "-"), getattr(args, dest)
+        problem = study_problem(SETTINGS[dest][1], _validate.number(flag, value, unit))
+        if problem:
+            problem = problem.replace("a_over_h", "--mesh-size")
+            raise _validate.fail(flag, value, unit, f"{problem}; {hint}" if hint else problem)
     args.workers = _validate.workers("--workers", args.workers)
 
 

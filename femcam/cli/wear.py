@@ -41,7 +41,13 @@ from ._common import NAMED_LAWS, add_scene_out, check_law, out_dir, plain
 
 
 def register(subparsers) -> None:
-    """Add the ``wear`` sub-parser to ``subparsers`` (argparse); sets its ``func``."""
+    """Add the ``wear`` sub-parser (``seed000`` and ``map``) and set its ``func``.
+
+    Parameters
+    ----------
+    subparsers : argparse._SubParsersAction
+        Where ``femcam``'s parser (:func:`femcam.cli.build_parser`) collects its subcommands.
+    """
     p = subparsers.add_parser("wear", help="Archard wear: seed 000's table, or a wear map of a scene",
                               description=plain(__doc__))
     sub = p.add_subparsers(dest="wear_command", metavar="WHAT")
