@@ -13,6 +13,8 @@ from .. import _validate
 _KEYS = {
     "hertz": (("a_hertz", "a"), ("p0_hertz", "p0")),
     "fe": (("a_fe", "a"), ("p0_fe", "p0")),
+    # finite-length roller, the most loaded slice (femcam.wear.axial): pi a p0 / 2 = w_max
+    "axial_peak": (("a_axial", "a"), ("p0_axial", "p0")),
 }
 
 #: what to do where the contact force is positive but the pressure is missing (NaN or <= 0)

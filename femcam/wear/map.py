@@ -218,10 +218,12 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
 
     ``source``: SweepResult-like object or mapping with ``theta`` (rad, uniform over one
     revolution, endpoint excluded), ``a``/``p0`` (m, Pa; ``a_hertz``/``p0_hertz`` or
-    ``a_fe``/``p0_fe``) and ``Fc`` (N). ``slip``: a :class:`~femcam.wear.slip.SlipResult` on the
-    same angles. ``k`` in m^3/(N m), ``length`` (face width) in m. ``missing``: what to do at
-    angles with ``Fc > 0`` and no pressure, see :func:`contact_columns` (default: raise; skip
-    with a warning the ``failed`` rows of a sweep result). ``k_factor`` (optional, per angle):
+    ``a_fe``/``p0_fe``; ``pressure="axial_peak"``: ``a_axial``/``p0_axial`` of the most loaded
+    slice of a finite-length roller, :mod:`femcam.wear.axial`) and ``Fc`` (N). ``slip``: a
+    :class:`~femcam.wear.slip.SlipResult` on the same angles. ``k`` in m^3/(N m), ``length``
+    (face width) in m. ``missing``: what to do at angles with ``Fc > 0`` and no pressure, see
+    :func:`contact_columns` (default: raise; skip with a warning the ``failed`` rows of a sweep
+    result). ``k_factor`` (optional, per angle):
     multiplies ``k`` angle by angle (the wear coefficient of the lubrication regime, ``k(lambda)/k``
     of :func:`femcam.tribology.wear_coefficient`); ``regime`` (optional, per angle) is stored.
     """
@@ -293,6 +295,8 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
     w = hertz_load_per_length(a, p0)
     on = (Fc > 0) & (w > 0)
     load_err = float(np.max(np.abs(w[on] * length / Fc[on] - 1.0))) if np.any(on) else 0.0
+    if pressure == "axial_peak":  # w = w_max by construction: its ratio to Fc / l is physics, not error
+        load_err = 0.0
     return WearMap(
         theta=theta, xi_cam=xi_c[:-1], depth_pass=depth_per_pass(k, w, v_wear, slip.V_cam),
         depth_at_theta=np.interp(xi_c[:-1], x_cam, depth_cam, period=perimeter),
