@@ -185,9 +185,7 @@ def _fe_scene(scene, tip):
     its tip radius; any other follower as it is."""
     if isinstance(scene.follower, KnifeEdgeFollower):
         return dataclasses.replace(scene, tip_radius=scene_tip_radius(scene, tip))
-    scene_tip_radius(scene, tip)
-    tip_scene(scene, tip)   # refuses a tip radius on another follower, naming it
-    return scene
+    return tip_scene(scene, tip)   # itself; refuses a tip radius on another follower, naming it
 
 
 def _write_angle_csv(path, head, theta, cycles, wm, st, slip) -> None:
