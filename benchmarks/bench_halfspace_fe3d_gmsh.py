@@ -116,8 +116,8 @@ def build_mesh(extend: float, write: Path | None = None, scale: float = 1.0):
     return xyz.reshape(-1, 3).T[:, used] * mm, ren[t]
 
 
-def fe_compliance(p, t):
-    """Stiffness, constraints and the condensed compliance (m/N) of the strip's nodes."""
+def fe_model(p, t):
+    """Stiffness (csc), fixed DOFs, strip nodes and their ``u_z`` DOFs, DOF count, mesh."""
     from skfem import Basis, ElementTetP1, ElementVector, MeshTet, asm  # lazy: FE benchmark only
     from skfem.models.elasticity import lame_parameters, linear_elasticity
 
@@ -126,27 +126,57 @@ def fe_compliance(p, t):
     K = asm(linear_elasticity(*lame_parameters(E_STAR * (1 - NU**2), NU)), ib).tocsc()
     zb = p[2].min()
     dofs = ib.get_dofs
-    fix = np.concatenate([dofs(lambda x: np.isclose(x[2], zb)).all(),
-                          dofs(lambda x: np.isclose(x[0], 0.0)).nodal["u^1"],
-                          dofs(lambda x: np.isclose(x[1], 0.0)).nodal["u^2"]])
-    free = np.setdiff1d(np.arange(ib.N), fix)
+    fix = np.unique(np.concatenate([dofs(lambda x: np.isclose(x[2], zb)).all(),
+                                    dofs(lambda x: np.isclose(x[0], 0.0)).nodal["u^1"],
+                                    dofs(lambda x: np.isclose(x[1], 0.0)).nodal["u^2"]]))
     xs = PARAMS["geometry"]["strip_over_b"] * B
     top = np.nonzero(np.isclose(p[2], 0.0, atol=1e-12) & (p[0] <= xs * (1 + 1e-9))
                      & (p[1] <= L / 2 * (1 + 1e-9)))[0]
-    uz = ib.nodal_dofs[2, top]
-    t0 = time.perf_counter()
+    return K, fix, top, ib.nodal_dofs[2, top], ib.N, mesh
+
+
+def condensed(K, fix, uz):
+    """Compliance (m/N) of the strip's ``u_z`` DOFs: one factorisation, back-solves in blocks."""
+    free = np.setdiff1d(np.arange(K.shape[0]), fix)
     lu = spla.splu(K[free][:, free])
-    t_fact = time.perf_counter() - t0
-    pos = np.full(ib.N, -1)
+    pos = np.full(K.shape[0], -1)
     pos[free] = np.arange(free.size)
-    C = np.empty((top.size, top.size))
-    for s in range(0, top.size, 256):                   # unit downward force at each strip node
-        cols = np.arange(s, min(s + 256, top.size))
+    C = np.empty((uz.size, uz.size))
+    for s in range(0, uz.size, 256):                    # unit downward force at each strip node
+        cols = np.arange(s, min(s + 256, uz.size))
         rhs = np.zeros((free.size, cols.size))
         rhs[pos[uz[cols]], np.arange(cols.size)] = -1.0
         C[:, cols] = -lu.solve(rhs)[pos[uz]]
-    nnz = lu.L.nnz + lu.U.nnz
-    return top, 0.5 * (C + C.T), ib.N, t_fact, nnz, _strip_triangles(mesh, top)
+    return 0.5 * (C + C.T)
+
+
+def dirichlet_active_set(K, fix, uz, h, W, max_iter=50):
+    """Load-controlled frictionless contact by an active set on the full FE model: the active
+    strip nodes get ``u_z = h - alpha`` (Dirichlet), ``alpha`` from the load balance (linearity:
+    ``u = u_h + alpha u_1``); tensile nodes leave, penetrating nodes join; one factorisation per
+    iteration. Returns the nodal contact forces (N, >= 0), ``alpha`` and the iteration count."""
+    n = K.shape[0]
+    act = h <= np.quantile(h, 0.3)
+    for it in range(1, max_iter + 1):
+        D = uz[act]
+        free = np.setdiff1d(np.arange(n), np.concatenate([fix, D]))
+        lu = spla.splu(K[free][:, free])
+        UD = np.stack([h[act], -np.ones(D.size)], axis=1)              # u_D = h + alpha (-1)
+        Uf = lu.solve(-(K[free][:, D] @ UD))
+        r = K[D][:, free] @ Uf + K[D][:, D] @ UD                        # reactions on the block
+        f0, f1 = -r[:, 0], -r[:, 1]                                     # contact force = -reaction
+        alpha = (W - f0.sum()) / f1.sum()
+        f = np.zeros(h.size)
+        f[act] = f0 + alpha * f1
+        u = np.zeros((n, 2))
+        u[free], u[D] = Uf, UD
+        uzs = u[uz, 0] + alpha * u[uz, 1]
+        pen = (~act) & (uzs > h - alpha + 1e-9 * abs(alpha))
+        ten = act & (f < -1e-12 * W)
+        if not (pen.any() or ten.any()):
+            return f, alpha, it, True
+        act = (act & ~ten) | pen
+    return f, alpha, max_iter, False
 
 
 def _strip_triangles(mesh, top):
@@ -182,25 +212,32 @@ def half_space(crown):
     return hs, itp, prof
 
 
-def run(case: str, write: Path | None = None, scale: float = 1.0) -> dict:
+def run(case: str, write: Path | None = None, scale: float = 1.0, method: str = "dirichlet") -> dict:
     crown, ext = CASES[case]
     t0 = time.perf_counter()
     p, t = build_mesh(ext, write, scale)
     t_mesh = time.perf_counter() - t0
-    top, C, ndof, t_fact, nnz, tri = fe_compliance(p, t)
+    K, fix, top, uz, ndof, mesh = fe_model(p, t)
+    tri = _strip_triangles(mesh, top)
     hs, itp, prof = half_space(crown)
     kw = dict(design_load=F, b=B, E_star=E_STAR) if crown == "logarithmic" else {}
     c = prof.drop(p[1, top], **kw)
     h = p[0, top] ** 2 / (2 * R) + c - c.min()
-    sol = solve_lcp(C, h, np.ones(top.size), F / 4, active0=h <= np.quantile(h, 0.3), max_iter=200)
+    t1 = time.perf_counter()
+    if method == "condense":
+        sol = solve_lcp(condensed(K, fix, uz), h, np.ones(top.size), F / 4,
+                        active0=h <= np.quantile(h, 0.3), max_iter=200)
+        f_fe, conv, lcp_it = sol.p, sol.converged, sol.iterations
+    else:
+        f_fe, _alpha, lcp_it, conv = dirichlet_active_set(K, fix, uz, h, F / 4)
+    t_fact = time.perf_counter() - t1
     t_fe = time.perf_counter() - t0
-    f_fe = sol.p
     f_hs = consistent_forces(p, tri, top, itp)
     y, x = p[1, top], p[0, top]
     mid, end = y < 1e-3, y > L / 2 - 0.25e-3
     w0 = F / L
     r = dict(case=case, ndof=ndof, ncand=top.size, ntet=t.shape[1], t_mesh=t_mesh, t_fact=t_fact, t_fe=t_fe,
-             nnz=nnz, converged=sol.converged, lcp_it=sol.iterations,
+             converged=conv, lcp_it=lcp_it,
              w_mid_fe=4 * f_fe[mid].sum() / 2e-3 / w0, w_mid_hs=4 * f_hs[mid].sum() / 2e-3 / w0,
              w_end_fe=2 * f_fe[end].sum() / 0.25e-3 / w0, w_end_hs=2 * f_hs[end].sum() / 0.25e-3 / w0,
              balance_hs=4 * f_hs.sum() / F - 1, edge=float(f_fe[x > 0.95 * x.max()].sum() / f_fe.sum()),
@@ -214,18 +251,20 @@ def main(argv=None):
     ap.add_argument("--cases", default=",".join(CASES))
     ap.add_argument("--write-msh", type=Path, default=None)
     ap.add_argument("--h-scale", type=float, default=1.0, help="multiply the strip and end sizes")
+    ap.add_argument("--method", choices=("dirichlet", "condense"), default="dirichlet",
+                    help="active set on the full model (default) or on the condensed strip compliance")
     args = ap.parse_args(argv)
     print(f"3D FE (gmsh P1 tets, quarter block) vs half-space (64 x 256): F = {F} N, R = {R * 1e3} mm, "
           f"L = {L * 1e3} mm, b = {B * 1e6:.1f} um; machine {platform.machine()}, {os.cpu_count()} cores "
           f"shared with other jobs; load avg {' '.join(f'{v:.2f}' for v in os.getloadavg())}")
     print("w in units of F/L from the same strip nodes (FE nodal forces; half-space pressure -> consistent "
           "nodal forces): mid |y| < 1 mm, end: last 0.25 mm")
-    hdr = (f"{'case':<10} {'DOFs':>7} {'tets':>7} {'cand':>5} {'mesh s':>6} {'LU s':>6} {'total s':>7} "
+    hdr = (f"{'case':<10} {'DOFs':>7} {'tets':>7} {'cand':>5} {'mesh s':>6} {'cont s':>6} {'total s':>7} "
            f"{'w_mid FE':>8} {'HS':>6} {'err':>7} {'w_end FE':>8} {'HS':>6} {'err':>7}  load avg")
     print(hdr)
     out = {}
     for case in args.cases.split(","):
-        r = run(case.strip(), args.write_msh, args.h_scale)
+        r = run(case.strip(), args.write_msh, args.h_scale, args.method)
         e_mid, e_end = r["w_mid_fe"] / r["w_mid_hs"] - 1, r["w_end_fe"] / r["w_end_hs"] - 1
         print(f"{case:<10} {r['ndof']:>7d} {r['ntet']:>7d} {r['ncand']:>5d} {r['t_mesh']:6.1f} "
               f"{r['t_fact']:6.1f} {r['t_fe']:7.1f} {r['w_mid_fe']:8.3f} {r['w_mid_hs']:6.3f} {e_mid:+7.2%} "
