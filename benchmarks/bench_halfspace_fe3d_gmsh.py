@@ -16,10 +16,14 @@ against the half-space is the free-end error of the half-space model.
 Mesh: ``meshes/halfspace_block3d.toml`` (parameters) / ``.geo`` (the same geometry for the gmsh
 GUI): a quarter block (symmetry ``x = 0`` and ``y = 0``, bottom fixed) whose top face is split at
 the contact strip ``0 <= x <= 2b, 0 <= y <= L/2``; linear tetrahedra graded from ``0.30 b`` on the
-strip (``0.22 b`` over its last 0.3 mm, the roller end) by a cascade of gmsh Box fields. Contact:
-the strip's nodes are condensed to a compliance matrix (one SuperLU factorisation of the
-stiffness, back-solves in blocks) and the load-controlled frictionless contact is solved on it by
-femcam's primal-dual active set (:func:`femcam.fe.contact.solve_lcp`).
+strip (``0.22 b`` over its last 0.3 mm, the roller end) by a cascade of gmsh Box fields. Contact
+(default ``--method dirichlet``): an active set on the full FE model, the active strip nodes
+held at ``u_z = h - alpha`` (Dirichlet), ``alpha`` from the load balance by linearity, tensile
+nodes released and penetrating nodes added, one SuperLU factorisation per iteration (5-7).
+``--method condense`` condenses the strip's nodes to a compliance matrix (one factorisation,
+1757 back-solves) and solves femcam's primal-dual active set
+(:func:`femcam.fe.contact.solve_lcp`) on it: the same nodal forces, 5-15 x slower (the
+multi-right-hand-side back-solves dominate).
 
 Comparison like with like: the half-space pressure (64 x 256 cells) is turned into consistent
 nodal forces on the same strip triangles (edge-midpoint rule, exact for quadratics), and the FE
