@@ -19,8 +19,9 @@ Mesh: a quarter block (symmetry ``x = 0`` and ``y = 0``, bottom fixed), trilinea
 (``ElementVector(ElementHex1)``) on a tensor grid graded towards the contact (``x``, ``z``) and the
 roller end (``y``). Contact: the top-face nodes of the contact zone are condensed to a compliance
 matrix (one factorisation, one back-solve per node) and the frictionless, load-controlled
-contact is solved on it by an active-set method. Deviation from the brief: a graded tensor hex
-mesh instead of a gmsh tetrahedral mesh (same refinement, no mesh generator in the loop).
+contact is solved on it by an active-set method. The reference of docs/halfspace.md is the gmsh
+tetrahedral version (``bench_halfspace_fe3d_gmsh.py``); this hand-graded hex mesh is kept as an
+independent discretisation that cross-checks its free-end error (slower: 141-325 s per case).
 
 Run:  python benchmarks/bench_halfspace_fe3d.py   (4 cases, 141-325 s each at load average 7-8 on the
       shared 2 cores; about 2 GB of memory seen during a factorisation)

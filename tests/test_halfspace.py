@@ -315,3 +315,33 @@ def test_finite_length_rows_refuses_knife_edge():
     sc = load_scene(EXAMPLES / "seed003_knife_edge.toml")
     with pytest.raises(InputError, match="roller follower"):
         finite_length_rows(sc, [0.0])
+
+
+# ---------------------------------------------------------------------------------------------
+# the most loaded slice: a window of the contact width, not one cell at a singular end
+# ---------------------------------------------------------------------------------------------
+def test_most_loaded_slice_converges_with_the_grid():
+    """A straight roller's end is a flat-punch edge in y (Johnson 1985 §5.2): the end cell's load
+    grows like dy^(-1/2) and never converges, which made the most loaded slice depend on ny (the
+    crowned example's 2.4 x F/L). Averaged over the contact width 2b it converges (first order in
+    dy, as the window mean of an integrable d^(-1/2) edge). Reference: Richardson extrapolation of
+    ny = 256 and 512 done here; the window mean itself is recomputed here from the cell loads by
+    brute force over 4001 window starts."""
+    res = {}
+    for ny in (128, 256, 512):
+        fl = FiniteLengthContact(RollerProfile(width=L), cam_width=L, E_star=E_STAR, nx=16, ny=ny, tol=1e-7)
+        res[ny] = fl.solve(F, R_REL)
+    b = hertz_line(F / L, R_REL)[0]
+    r = res[128]
+    edges = np.linspace(-L / 2, L / 2, 129)
+    cum = np.concatenate([[0.0], np.cumsum(r.w) * (L / 128)])
+    s = np.linspace(-L / 2, L / 2 - 2 * b, 4001)
+    brute = (np.interp(s + 2 * b, edges, cum) - np.interp(s, edges, cum)) / (2 * b)
+    assert r.window == pytest.approx(2 * b, rel=1e-12)
+    assert r.w_max == pytest.approx(brute.max(), rel=2e-3)            # 4001 starts: within 2e-3
+    assert abs(abs(r.y_wmax) - (L / 2 - b)) < L / 128                  # the window at the end
+    w_ext = 2 * res[512].w_max - res[256].w_max                        # Richardson, first order
+    assert abs(res[512].w_max / res[256].w_max - 1) < 0.02             # successive change 1.1 %
+    assert abs(r.w_max / w_ext - 1) < 0.05                             # default grid: within 5 %
+    cells = [res[n].w.max() for n in (128, 256, 512)]
+    assert cells[1] / cells[0] > 1.2 and cells[2] / cells[1] > 1.2    # the end cell does not converge

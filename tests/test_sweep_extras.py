@@ -107,12 +107,11 @@ def test_assess_uses_fe_contact_of_the_sweep(tmp_path):
 def test_halfspace_columns_and_axial_peak_wear(tmp_path):
     scene = load_scene(EX + "seed002_crowned.toml")
     r, cols = _sweep_csv(scene, TH8, tmp_path)
-    # the provider solves each angle alone (cold start: chunking-independent rows)
-    one = [finite_length_rows(scene, [t]) for t in TH8]
-    direct = {k: np.array([r[k][0] for r in one]) for k in HS_COLUMNS}
+    # one chunk (8 angles < chunk_size 30): warm-started from angle to angle, as the direct call
+    direct = finite_length_rows(scene, TH8)
     for k, (csv, f) in HS_COLUMNS.items():
         _close(cols[csv], direct[k], f)
-    assert list(cols["hs_flags"]) == [";".join(r["flags"][0]) for r in one]
+    assert list(cols["hs_flags"]) == [";".join(f) for f in direct["flags"]]
     # Archard per pass at the most loaded slice: h = k w_max v_slip / V_cam (independent form)
     k = wear_coefficient_info(scene)[0]
     ok = cols["status"] == "ok"
@@ -350,7 +349,7 @@ def test_extra_columns_parallel_equal_serial():
     scene = dataclasses.replace(load_scene(EX + "seed002_assess.toml"),
                                 finite_length=load_scene(EX + "seed002_crowned.toml").finite_length)
     th = TH8
-    r1 = sweep(scene, angles=th, method="hertz", workers=1, chunk_size=8)
+    r1 = sweep(scene, angles=th, method="hertz", workers=1, chunk_size=2)
     r2 = sweep(scene, angles=th, method="hertz", workers=2, chunk_size=2)
     cols, text = extras.extra_columns(scene)
     for si, _, _ in cols:   # the same arithmetic in another process: equal to rounding

@@ -9,7 +9,9 @@
   (follower surface grid), ``DIR/wear_summary.csv`` and PNG plots. With ``--evolve-blocks K``
   (roller followers) the profile is also evolved in blocks (:mod:`femcam.wear.evolution`) with
   1, 2, 4, ... K blocks: ``DIR/wear_<law>_evolution.csv`` (convergence table) and
-  ``DIR/wear_<law>_evolution.png`` (evolved vs linear depth).
+  ``DIR/wear_<law>_evolution.png`` (evolved vs linear depth). A finite-length roller (crown,
+  edge radius, tilt or roller/cam widths, :mod:`femcam.halfspace`) wears at its most loaded
+  slice (:mod:`femcam.wear.axial`): ``pressure = axial_peak`` in the summary.
 
 Scene ``[wear]`` keys (checked; see :mod:`femcam.wear.options`): ``K`` (dimensionless; with the
 cam's ``hardness_MPa``) or ``k_mm3_per_N_m``; ``roller_model = "srr"|"inertia"``, ``srr``,
@@ -19,6 +21,7 @@ cam's ``hardness_MPa``) or ``k_mm3_per_N_m``; ``roller_model = "srr"|"inertia"``
 from __future__ import annotations
 
 import csv
+import dataclasses
 import math
 import shlex
 import sys
@@ -29,10 +32,12 @@ import numpy as np
 from ..assess import wear_factor
 from ..errors import InputError
 from ..kinematics import LAW_NAMES
-from ..profile import FlatFacedFollower, RollerFollower
+from ..profile import FlatFacedFollower, KnifeEdgeFollower, RollerFollower
 from ..scene import load_scene
 from ..sweep import sweep
+from ..sweep.providers import has_finite_length
 from ..viz.wear import plot_evolution, plot_wear_comparison, plot_wear_map, plot_wear_polar
+from ..wear.axial import scene_wear_axial
 from ..wear.evolution import convergence_table, evolution_case
 from ..wear.options import describe_k, wear_coefficient_info, wear_options
 from ..wear.scene import scene_tip_radius, scene_wear, tip_scene
@@ -153,17 +158,22 @@ def _map(args) -> int:
         sc = scene.with_law(name) if name else scene
         label = name or "scene"
         fe = None
-        if args.source == "fe":  # the FE pressure: a sweep of the (tip) scene at these angles
-            fe = sweep(tip_scene(sc, scene_tip_radius(sc, tip)), angles=theta, method="fe",
+        if args.source == "fe":  # the FE pressure: a sweep of the scene (a knife edge as itself)
+            fe = sweep(_fe_scene(sc, tip), angles=theta, method="fe",
                        progress=None, **sc.fe)  # the scene's [fe] settings; progress on a terminal
         k_factor, regime = wear_factor(sc, theta, fe.table if fe is not None else None, tip)
-        wm, st, slip = scene_wear(sc, theta, cycles=cycles, tip_radius=tip, fe=fe,
-                                  k_factor=k_factor, regime=regime)
+        if has_finite_length(sc):  # crowned / tilted / narrower roller: the most loaded slice
+            wm, st, slip = scene_wear_axial(sc, theta, cycles=cycles, fe=fe, k_factor=k_factor,
+                                            regime=regime)
+        else:
+            wm, st, slip = scene_wear(sc, theta, cycles=cycles, tip_radius=tip, fe=fe,
+                                      k_factor=k_factor, regime=regime)
         results[label] = (wm, st, slip)
         _write_angle_csv(out / f"wear_{label}.csv", head, theta, cycles, wm, st, slip)
         _write_surface_csv(out / f"wear_{label}_surface.csv", head, cycles, wm)
         _write_follower_csv(out / f"wear_{label}_follower.csv", head, cycles, wm, slip, sc)
-    _write_summary(out / "wear_summary.csv", head, cycles, k, k_where, results, args.source)
+    source = "axial_peak" if has_finite_length(scene) else args.source
+    _write_summary(out / "wear_summary.csv", head, cycles, k, k_where, results, source)
     if not args.no_plots:
         _plots(scene, results, out)
     if args.evolve_blocks is not None:
@@ -172,6 +182,15 @@ def _map(args) -> int:
             _evolution(sc, name or "scene", theta, cycles, args, out, head)
     print(f"wrote {out}/")
     return 0
+
+
+def _fe_scene(scene, tip):
+    """The scene the FE sweep of ``--source fe`` solves: a knife edge stays a knife edge (the
+    sweep cuts the cam for its radiused tip and lets the tip slide) with ``--tip-radius-mm`` as
+    its tip radius; any other follower as it is."""
+    if isinstance(scene.follower, KnifeEdgeFollower):
+        return dataclasses.replace(scene, tip_radius=scene_tip_radius(scene, tip))
+    return tip_scene(scene, tip)   # itself; refuses a tip radius on another follower, naming it
 
 
 def _write_angle_csv(path, head, theta, cycles, wm, st, slip) -> None:

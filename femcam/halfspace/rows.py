@@ -30,7 +30,7 @@ COLUMNS = {
     "p_axial_peak": ("p_axial_peak_MPa", 1e-6),     # peak of p(x, y) over the strip
     "y_peak": ("y_axial_peak_mm", 1e3),             # axial position of that peak (0 = mid-plane)
     "L_eff": ("L_eff_mm", 1e3),                     # loaded length (slices with w > 0)
-    "w_max": ("w_max_N_per_mm", 1e-3),              # most loaded slice's load per unit length
+    "w_max": ("w_max_N_per_mm", 1e-3),              # most loaded slice (mean over 2b axially), N/mm
     "y_wmax": ("y_w_max_mm", 1e3),                  # axial position of that slice
     "y_centre": ("y_load_centre_mm", 1e3),          # load centre int w y dy / F
     "edge_factor": ("edge_factor", 1.0),            # p_axial_peak / 2D Hertz p0 at w = F / L

@@ -22,6 +22,14 @@ modelled as if the material continued (the free-end error, see ``docs/halfspace.
 The half-extent ``X`` is taken from a geometric ladder ``X_k = X_0 1.25^k`` so that a sweep
 reuses a handful of kernels (the kernel FFT of :class:`~femcam.halfspace.solver.HalfSpace` is
 cached per rung); if pressure reaches the ``x`` border the strip is re-solved on the next rung.
+
+The most loaded slice (``w_max``, ``y_wmax``) is the largest load per unit length averaged over
+an axial window of the contact width ``2b`` (``b`` at ``F / L``, at least one cell), not the
+largest single cell: the end of a roller with sharp corners is a flat-punch edge in ``y``
+(Johnson 1985 §5.2), where ``w ~ d^(-1/2)`` and the end cell's load grows without bound as the
+cells shrink, while the window average converges. A plane-strain slice narrower than the contact
+width has no meaning for the 2D FE that answers at that slice, and the Archard depth per pass is
+proportional to it. ``w`` keeps the per-cell values; ``p_max`` stays the peak cell pressure.
 """
 
 from __future__ import annotations
@@ -44,10 +52,12 @@ _LADDER = 1.25
 class StripResult:
     """One angle's finite-length contact (SI; pickles). ``p`` (Pa) on ``x`` x ``y`` (m);
     ``w`` the slice load per unit length (N/m) along ``y``, ``p_line`` the peak pressure of each
-    slice (Pa). ``flags`` lists what the caller must know: ``"short_contact"`` (fewer than
-    ``MIN_CELLS`` loaded cells along the length: refine ``ny``), ``"end_lift"`` (an end of the
-    contact length carries no load: the tilt or crown lifted it off), ``"x_clipped"`` (pressure
-    at the ``x`` border even on the last rung), ``"not_converged"``."""
+    slice (Pa). ``w_max`` (N/m) is the largest mean of ``w`` over an axial window of ``window``
+    (m, the contact width ``2b``), centred at ``y_wmax`` (m). ``flags`` lists what the caller
+    must know: ``"short_contact"`` (fewer than ``MIN_CELLS`` loaded cells along the length:
+    refine ``ny``), ``"end_lift"`` (an end of the contact length carries no load: the tilt or
+    crown lifted it off), ``"x_clipped"`` (pressure at the ``x`` border even on the last rung),
+    ``"not_converged"``."""
 
     x: np.ndarray = field(repr=False)
     y: np.ndarray = field(repr=False)
@@ -65,6 +75,36 @@ class StripResult:
     residual: float
     converged: bool
     flags: tuple = ()
+    window: float = 0.0
+
+
+def window_max(w, dy: float, width: float) -> tuple[float, float]:
+    r"""Largest mean of the cell loads ``w`` (N/m, uniform on cells of ``dy``, m, from
+    ``y = -ny dy / 2``) over an axial window of ``width`` (m), and the window's centre (m).
+
+    .. math:: \bar w(s) = \frac{W(s + \ell) - W(s)}{\ell},\qquad W(y) = \int_{-L/2}^{y} w\,dy
+
+    ``W`` is piecewise linear, so the maximum over the start ``s`` lies where ``s`` or ``s + l``
+    is a cell edge; both sets are evaluated (fractional cells count by their share).
+
+    >>> window_max(np.array([1.0, 1.0, 4.0, 1.0]), 1.0, 2.0)      # cells 2-3 (first of two)
+    (2.5, 0.0)
+    >>> window_max(np.array([1.0, 1.0, 4.0, 1.0]), 1.0, 0.5)      # half of the cell of 4
+    (4.0, 0.25)
+    """
+    w = np.asarray(w, float)
+    n = w.size
+    L = n * dy
+    width = min(max(float(width), 0.0), L)
+    edges = np.arange(n + 1) * dy - 0.5 * L
+    if width <= 0.0:
+        j = int(np.argmax(w))
+        return float(w[j]), float(edges[j] + 0.5 * dy)
+    cum = np.concatenate([[0.0], np.cumsum(w) * dy])
+    s = np.unique(np.clip(np.concatenate([edges, edges - width]), -0.5 * L, 0.5 * L - width))
+    mean = (np.interp(s + width, edges, cum) - np.interp(s, edges, cum)) / width
+    k = int(np.argmax(mean))
+    return float(mean[k]), float(s[k] + 0.5 * width)
 
 
 class FiniteLengthContact:
@@ -140,15 +180,16 @@ class FiniteLengthContact:
             if not clipped:
                 break
             k += 1
-        return self._result(x, hs.dx, sol, clipped)
+        return self._result(x, hs.dx, sol, clipped, b)
 
-    def _result(self, x, dx, sol, clipped) -> StripResult:
+    def _result(self, x, dx, sol, clipped, b: float) -> StripResult:
         p, y = sol.p, self.y
         w = p.sum(axis=0) * dx
         p_line = p.max(axis=0)
         i, j = np.unravel_index(int(np.argmax(p)), p.shape)
         loaded = w > 0
-        jw = int(np.argmax(w))
+        width = min(2.0 * b, self.L)
+        w_max, y_wmax = window_max(w, self.dy, width)
         flags = []
         if loaded.sum() < MIN_CELLS:
             flags.append("short_contact")
@@ -160,7 +201,7 @@ class FiniteLengthContact:
             flags.append("not_converged")
         W = float(w.sum() * self.dy)
         return StripResult(x=x, y=y, p=p, w=w, p_line=p_line, p_max=float(p[i, j]), y_peak=float(y[j]),
-                           L_eff=float(loaded.sum() * self.dy), w_max=float(w[jw]), y_wmax=float(y[jw]),
+                           L_eff=float(loaded.sum() * self.dy), w_max=w_max, y_wmax=y_wmax,
                            y_centre=float((w * y).sum() * self.dy / W), alpha=sol.alpha,
                            iterations=sol.iterations, residual=sol.residual, converged=sol.converged,
-                           flags=tuple(flags))
+                           flags=tuple(flags), window=width)

@@ -66,216 +66,20 @@ different k per body by scaling).
 
 from __future__ import annotations
 
-import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
 from .. import _validate
+from .inputs import MISSING, WearInputWarning, _loaded_have, contact_columns
 from .slip import SlipResult
+from .surface import _ellipse_primitive, depth_per_pass, drift_sum, hertz_load_per_length, surface_depth
+
+__all__ = ["MISSING", "WearInputWarning", "WearMap", "_ellipse_primitive", "contact_columns",
+           "depth_per_pass", "drift_sum", "hertz_load_per_length", "surface_depth", "wear_depth_per_angle",
+           "wear_map"]
 
 
-# --------------------------------------------------------------------------- formulas
-def hertz_load_per_length(a, p0):
-    r"""``w = int p dx = pi a p0 / 2`` (N/m) for the Hertz elliptical pressure (Johnson eq. 4.44).
-
-    >>> round(float(hertz_load_per_length(1e-4, 1e9)), 3)
-    157079.633
-    """
-    return 0.5 * np.pi * np.asarray(a, dtype=float) * np.asarray(p0, dtype=float)
-
-
-def depth_per_pass(k, w, v_slip, V_transport):
-    r"""Wear depth left by one pass of the contact over a surface point (m).
-
-    .. math:: \Delta h = k\,w\,v_{slip}/V
-
-    ``V_transport = 0`` (the contact sits still on that surface, e.g. a knife-edge tip) gives
-    ``inf`` where ``k w v_slip > 0``.
-
-    >>> float(depth_per_pass(1e-17, 1e5, 0.2, 1.0))     # k w (slip per rolled length)
-    2e-13
-    """
-    k = _validate.nonnegative("k", k, "m^3/(N m)")
-    w = np.clip(np.nan_to_num(np.asarray(w, dtype=float), nan=0.0), 0.0, None)
-    v = np.abs(np.asarray(v_slip, dtype=float))
-    Vt = np.abs(np.asarray(V_transport, dtype=float))
-    num = k * w * v
-    with np.errstate(divide="ignore", invalid="ignore"):
-        out = np.where(Vt > 0, num / np.where(Vt > 0, Vt, 1.0), np.where(num > 0, np.inf, 0.0))
-    return out
-
-
-def _ellipse_primitive(y, a, p0):
-    """P(y) = int_{-a}^{y} p0 sqrt(1 - t^2/a^2) dt - w/2 (odd; constant -+ w/2 outside)."""
-    eta = np.clip(y / a, -1.0, 1.0)
-    return 0.5 * p0 * a * (eta * np.sqrt(1.0 - eta * eta) + np.arcsin(eta))
-
-
-def surface_depth(x, xi, a, p0, v_slip, dt, *, k, period=None, chunk: int = 256):
-    r"""Archard depth ``h(x) = k int p(x - xi(t)) v_slip dt`` on grid ``x`` (m).
-
-    ``xi`` (n+1 contact positions, m) bound n steps of duration ``dt`` (s); ``a``, ``p0``,
-    ``v_slip`` (n values) hold in each step. ``period`` makes the coordinate periodic (cam
-    perimeter, roller circumference). Steps with ``a <= 0``, NaN or ``p0 <= 0`` carry no load.
-    Vectorised over the grid; steps are processed in chunks of ``chunk``.
-    """
-    k = _validate.nonnegative("k", k, "m^3/(N m)")
-    x = np.asarray(x, dtype=float)
-    xi = np.asarray(xi, dtype=float)
-    a = np.nan_to_num(np.asarray(a, dtype=float), nan=0.0)
-    p0 = np.nan_to_num(np.asarray(p0, dtype=float), nan=0.0)
-    v = np.abs(np.asarray(v_slip, dtype=float))
-    dt = np.asarray(dt, dtype=float)
-    live = (a > 0) & (p0 > 0) & (v > 0) & (dt > 0)
-    idx = np.flatnonzero(live)
-    h = np.zeros_like(x)
-    if idx.size == 0 or k == 0.0:
-        return h
-    x0 = xi[idx]
-    dxi = xi[idx + 1] - xi[idx]
-    a_, p_, g = a[idx], p0[idx], k * v[idx] * dt[idx]           # g = k v_slip dt (m^3/N)
-    # moving steps: exact time integral; near-still steps (|dxi| < 1e-6 a): p(x - xi) dt
-    moving = np.abs(dxi) > 1e-6 * a_
-    safe = np.where(moving, dxi, 1.0)
-    for s0 in range(0, idx.size, chunk):
-        sl = slice(s0, s0 + chunk)
-        y = x[:, None] - x0[None, sl]
-        if period is not None:
-            y = (y + 0.5 * period) % period - 0.5 * period
-        A, P0 = a_[None, sl], p_[None, sl]
-        exact = (_ellipse_primitive(y, A, P0) - _ellipse_primitive(y - dxi[None, sl], A, P0)) / safe[None, sl]
-        eta = np.clip(y / A, -1.0, 1.0)
-        still = P0 * np.sqrt(1.0 - eta * eta)
-        h += np.where(moving[None, sl], exact, still) @ g[sl]
-    return h
-
-
-# --------------------------------------------------------------------------- inputs
-_KEYS = {
-    "hertz": (("a_hertz", "a"), ("p0_hertz", "p0")),
-    "fe": (("a_fe", "a"), ("p0_fe", "p0")),
-}
-
-#: what to do where the contact force is positive but the pressure is missing (NaN or <= 0)
-MISSING = ("raise", "skip", "zero")
-
-
-class WearInputWarning(UserWarning):
-    """Angles of a sweep result were skipped by the wear map (their FE solve failed)."""
-
-
-def _get(src, names):
-    for n in names:
-        try:
-            val = src[n]
-        except (KeyError, IndexError, TypeError, ValueError):
-            val = getattr(src, n, None)
-        if val is not None:
-            return np.asarray(val, dtype=float)
-    return None
-
-
-def _get_text(src, name):
-    try:
-        val = src[name]
-    except (KeyError, IndexError, TypeError, ValueError):
-        val = getattr(src, name, None)
-    return None if val is None else np.asarray(val).astype(str)
-
-
-def _loaded_have(a, p0, Fc):
-    """``(loaded, have)``: contact force ``Fc > 0``; a usable pressure (``a``, ``p0`` finite, > 0)."""
-    loaded = np.isfinite(Fc) & (Fc > 0)
-    have = np.isfinite(a) & np.isfinite(p0) & (a > 0) & (p0 > 0)
-    return loaded, have
-
-
-def _degrees(theta, idx, limit: int = 12) -> str:
-    d = [f"{np.degrees(theta[i]):g}" for i in idx[:limit]]
-    more = f" ... ({len(idx)} angles)" if len(idx) > limit else ""
-    return "[" + ", ".join(d) + "]" + more
-
-
-def _missing_pressure(source, theta, lost, missing, pressure, ka, kp, skipped) -> None:
-    """Angles ``lost`` have ``Fc > 0`` but no pressure: raise, or skip them with a warning
-    (see :func:`contact_columns`)."""
-    status = _get_text(source, "status")
-    failed = np.zeros(theta.size, bool) if status is None else (status == "failed")
-    if missing is None:
-        skip, stop = lost[failed[lost]], lost[~failed[lost]]
-    else:
-        skip, stop = (lost, lost[:0]) if missing == "skip" else (lost[:0], lost)
-    what = f"{ka[0]}/{kp[0]}"
-    if stop.size:
-        hint = ""
-        if status is not None and np.all(status[stop] == "ok"):
-            hint = (f"; the sweep has no {what} there (was it run with method='hertz'? then use "
-                    "pressure='hertz')" if pressure == "fe" else
-                    "; Hertz theory does not apply there (sweep flag hertz_invalid): use pressure='fe'")
-        raise _validate.fail("theta", _degrees(theta, stop), "deg",
-                      f"contact force Fc > 0 but the contact pressure {what} is missing (NaN or "
-                      f"<= 0) at {stop.size} angle(s){hint}; wear there is unknown, not zero "
-                      "(missing='skip' skips such angles with a warning)")
-    if skip.size:
-        msgs = _get_text(source, "message")
-        why = ""
-        if msgs is not None:
-            uniq = sorted({m for m in msgs[skip] if m})
-            why = "; sweep message(s): " + " | ".join(uniq[:3]) if uniq else ""
-        warnings.warn(f"wear map: skipped {skip.size} angle(s) theta = {_degrees(theta, skip)} deg "
-                      f"where Fc > 0 but {what} is missing (failed solve): they carry no load, "
-                      f"so the wear near them is underestimated{why}", WearInputWarning, stacklevel=4)
-        if skipped is not None:
-            skipped.extend(int(i) for i in skip)
-
-
-def contact_columns(source, *, pressure: str = "hertz", missing: str | None = None,
-                    skipped: list | None = None):
-    """``(theta, a, p0, Fc)`` arrays (SI) from a SweepResult-like object or a mapping.
-
-    ``pressure="fe"`` reads ``a_fe``/``p0_fe``, ``"hertz"`` reads ``a_hertz``/``p0_hertz``; both
-    fall back to plain ``a``/``p0``. Angles without contact (``Fc <= 0``) carry no load.
-
-    An angle with ``Fc > 0`` but no pressure (``a`` or ``p0`` NaN or <= 0: a failed FE solve, a
-    Hertz-invalid angle) is *not* silently taken as no contact. ``missing``:
-
-    * ``"raise"`` -- :class:`~femcam.errors.InputError` naming the angles (deg);
-    * ``"skip"`` -- a :class:`WearInputWarning` naming the angles, which then carry no load
-      (the wear there is underestimated); their indices are appended to ``skipped``;
-    * ``"zero"`` -- silently no load (the behaviour :func:`wear_depth_per_angle` keeps);
-    * ``None`` (default) -- ``"skip"`` for the rows of a sweep result whose ``status`` is
-      ``"failed"`` (the sweep's ``message`` is quoted), ``"raise"`` for everything else.
-
-    Without an ``Fc`` column, contact is read from the width alone (NaN or 0 = no contact).
-    """
-    _validate.choice("pressure", pressure, tuple(_KEYS))
-    if missing is not None:
-        _validate.choice("missing", missing, MISSING)
-    (ka, kp) = _KEYS[pressure]
-    theta = _get(source, ("theta",))
-    a, p0, Fc = _get(source, ka), _get(source, kp), _get(source, ("Fc",))
-    for name, arr in (("theta", theta), ("a", a), ("p0", p0)):
-        if arr is None:
-            raise _validate.fail("source", type(source).__name__, "", f"has no column '{name}' "
-                         f"(looked for {ka if name == 'a' else kp if name == 'p0' else name})")
-    if Fc is None:
-        Fc = np.where(np.isfinite(a) & (a > 0), 1.0, 0.0)
-    theta = _validate.finite_array("theta", theta, "rad")
-    bad = np.isfinite(a) & (a < 0)
-    if np.any(bad):
-        raise _validate.fail("a", float(a[bad][0]), "m", "must be >= 0 (contact half-width)")
-    loaded, have = _loaded_have(a, p0, Fc)
-    lost = np.flatnonzero(loaded & ~have)
-    if lost.size and missing != "zero":
-        _missing_pressure(source, theta, lost, missing, pressure, ka, kp, skipped)
-    noc = ~(loaded & have)
-    a = np.where(noc, 0.0, a)
-    p0 = np.where(noc, 0.0, np.clip(p0, 0.0, None))
-    return theta, a, p0, np.where(noc, 0.0, Fc)
-
-
-# --------------------------------------------------------------------------- map
 @dataclass(frozen=True)
 class WearMap:
     """Wear of cam and follower over one revolution and after ``cycles`` revolutions (SI).
@@ -402,50 +206,6 @@ class WearMap:
                                           strict=True)}})}
 
 
-def drift_sum(h, period: float, drift: float, cycles: float) -> np.ndarray:
-    r"""Depth after ``cycles`` revolutions when each revolution shifts the pattern by ``drift``.
-
-    ``h`` is the one-revolution depth on a uniform periodic grid ``x_j = j period / M``; the
-    contact starts revolution n at ``n D`` (D = ``drift``), so
-
-    .. math:: h_N(x) = \sum_{n=0}^{N-1} h(x - nD),\qquad
-              \hat h_N(m) = \hat h(m)\,\frac{1 - z_m^N}{1 - z_m},\ z_m = e^{-2\pi i m D/P}
-
-    (Fourier coefficients ``hat h(m)`` by FFT; ``z_m = 1`` gives ``N``). The grid function is
-    interpreted as its trigonometric interpolant, so a shift by a non-grid ``D`` is exact for it.
-    A non-integer ``cycles = N + f`` adds ``f`` times the pattern shifted by ``N D`` (a partial
-    revolution as a share of the whole one, like ``cycles x depth`` does). The mean is
-    ``cycles x mean(h)`` for any ``D``; for large N and ``D/P`` not close to a ratio of small
-    integers the pattern smears towards that mean.
-
-    >>> import numpy as np
-    >>> h = np.array([1.0, 0.0, 0.0, 0.0])
-    >>> drift_sum(h, 4.0, 1.0, 4).round(12).tolist()       # shift by one cell per revolution
-    [1.0, 1.0, 1.0, 1.0]
-    >>> drift_sum(h, 4.0, 4.0, 3).round(12).tolist()       # D = period: phase-locked, 3 h
-    [3.0, 0.0, 0.0, 0.0]
-    """
-    h = np.asarray(h, dtype=float)
-    period = _validate.positive("period", period, "m")
-    drift = _validate.number("drift", drift, "m")
-    cycles = _validate.nonnegative("cycles", cycles, "revolutions")
-    M = h.size
-    n_full = int(np.floor(cycles))
-    frac = cycles - n_full
-    H = np.fft.rfft(h)
-    m = np.arange(H.size)
-    # phases as fractions of a turn, reduced before multiplying by 2 pi (keeps N m D/P accurate)
-    f1 = np.mod(m * (drift / period), 1.0)
-    z = np.exp(-2j * np.pi * f1)
-    zN = np.exp(-2j * np.pi * np.mod(m * ((drift / period) * n_full % 1.0), 1.0))
-    one = np.abs(1.0 - z) < 1e-12
-    geo = np.where(one, float(n_full), (1.0 - zN) / np.where(one, 1.0, 1.0 - z))
-    total = geo + frac * zN
-    if M % 2 == 0:  # Nyquist term of a real signal: keep it real (cos of the shift)
-        total[-1] = total[-1].real
-    return np.fft.irfft(H * total, n=M)
-
-
 def _cumulative(theta_closed, f_closed):
     """Cumulative trapezoid of f over theta (same length, starting at 0)."""
     return np.concatenate(([0.0], np.cumsum(0.5 * (f_closed[1:] + f_closed[:-1]) * np.diff(theta_closed))))
@@ -458,10 +218,12 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
 
     ``source``: SweepResult-like object or mapping with ``theta`` (rad, uniform over one
     revolution, endpoint excluded), ``a``/``p0`` (m, Pa; ``a_hertz``/``p0_hertz`` or
-    ``a_fe``/``p0_fe``) and ``Fc`` (N). ``slip``: a :class:`~femcam.wear.slip.SlipResult` on the
-    same angles. ``k`` in m^3/(N m), ``length`` (face width) in m. ``missing``: what to do at
-    angles with ``Fc > 0`` and no pressure, see :func:`contact_columns` (default: raise; skip
-    with a warning the ``failed`` rows of a sweep result). ``k_factor`` (optional, per angle):
+    ``a_fe``/``p0_fe``; ``pressure="axial_peak"``: ``a_axial``/``p0_axial`` of the most loaded
+    slice of a finite-length roller, :mod:`femcam.wear.axial`) and ``Fc`` (N). ``slip``: a
+    :class:`~femcam.wear.slip.SlipResult` on the same angles. ``k`` in m^3/(N m), ``length``
+    (face width) in m. ``missing``: what to do at angles with ``Fc > 0`` and no pressure, see
+    :func:`contact_columns` (default: raise; skip with a warning the ``failed`` rows of a sweep
+    result). ``k_factor`` (optional, per angle):
     multiplies ``k`` angle by angle (the wear coefficient of the lubrication regime, ``k(lambda)/k``
     of :func:`femcam.tribology.wear_coefficient`); ``regime`` (optional, per angle) is stored.
     """
@@ -533,6 +295,8 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
     w = hertz_load_per_length(a, p0)
     on = (Fc > 0) & (w > 0)
     load_err = float(np.max(np.abs(w[on] * length / Fc[on] - 1.0))) if np.any(on) else 0.0
+    if pressure == "axial_peak":  # w = w_max by construction: its ratio to Fc / l is physics, not error
+        load_err = 0.0
     return WearMap(
         theta=theta, xi_cam=xi_c[:-1], depth_pass=depth_per_pass(k, w, v_wear, slip.V_cam),
         depth_at_theta=np.interp(xi_c[:-1], x_cam, depth_cam, period=perimeter),

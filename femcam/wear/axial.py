@@ -1,0 +1,104 @@
+r"""Wear map of a finite-length roller (crown, edge radius, tilt, unequal widths): the axial peak.
+
+The 2D wear map spreads the contact force evenly over the face width, ``w = Fc / l``. A crowned,
+tilted or narrower roller does not: the half-space strip (:mod:`femcam.halfspace`) gives the
+load per unit length along the roller, and the deepest wear is where it is largest. Archard's
+depth per pass depends on the pressure only through ``w = int p dx`` (:mod:`femcam.wear.map`),
+so the map is laid down by the most loaded slice, as the sweep's wear column does:
+
+=========  ===========================================================  =====
+symbol     meaning                                                      unit
+=========  ===========================================================  =====
+w_max      most loaded slice's load per unit length (mean over ``2b``)   N/m
+p_peak     axial peak pressure ``max p(x, y)``                           Pa
+a          half-width with ``pi a p_peak / 2 = w_max``                   m
+=========  ===========================================================  =====
+
+.. math:: p_0 = p_{peak},\qquad a = \frac{2 w_{max}}{\pi p_{peak}}
+          \quad\Rightarrow\quad \Delta h = k\,w_{max}\,v_{slip}/V
+
+(``p0`` and ``a`` only shape the map over about ``a``; the depth per pass is exact in ``w_max``).
+With an FE sweep (``--source fe``) the sweep's own half-space columns are used (the same solver,
+chunk-wise warm-started), so both sources lay down the same ``w_max``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..halfspace.rows import finite_length_rows
+from .map import WearMap, wear_map
+from .options import slip_kwargs, wear_coefficient_info
+from .scene import with_coating
+from .slip import SlipResult, follower_slip
+
+
+def axial_pressure(p_peak, w_max) -> tuple[np.ndarray, np.ndarray]:
+    r"""``(a, p0)`` (m, Pa) of the most loaded slice: ``p0 = p_peak``, ``a = 2 w_max / (pi p_peak)``.
+
+    NaN (no contact) where either is not finite or ``p_peak <= 0``.
+
+    >>> a, p0 = axial_pressure(np.array([1e9]), np.array([1e5]))
+    >>> round(float(a[0]) * 1e6, 3), float(p0[0])
+    (63.662, 1000000000.0)
+    """
+    p = np.asarray(p_peak, float)
+    w = np.asarray(w_max, float)
+    ok = np.isfinite(p) & np.isfinite(w) & (p > 0)
+    a = np.where(ok, 2.0 * w / (math.pi * np.where(ok, p, 1.0)), np.nan)
+    return a, np.where(ok, p, np.nan)
+
+
+def axial_table(scene, theta, fe=None) -> dict:
+    """Per-angle table for :func:`femcam.wear.map.wear_map` with ``pressure="axial_peak"``.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A roller scene with finite-length keys.
+    theta : ndarray, shape (n,)
+        Cam angles (rad).
+    fe : femcam.sweep.SweepResult, optional
+        A sweep of ``scene`` at ``theta``: its ``hs_p_axial_peak``/``hs_w_max`` columns are used.
+        Default: :func:`femcam.halfspace.rows.finite_length_rows` at ``theta``.
+
+    Returns
+    -------
+    dict
+        ``theta`` (rad), ``a_axial`` (m), ``p0_axial`` (Pa), ``Fc`` (N), ``w_max`` (N/m).
+    """
+    theta = np.asarray(theta, float)
+    if fe is not None:
+        tab = fe.table
+        p, w, Fc = (np.asarray(tab[k], float) for k in ("hs_p_axial_peak", "hs_w_max", "Fc"))
+    else:
+        r = finite_length_rows(scene, theta)
+        p, w, Fc = r["p_axial_peak"], r["w_max"], r["Fc"]
+    a, p0 = axial_pressure(p, w)
+    return {"theta": theta, "a_axial": a, "p0_axial": p0, "Fc": np.clip(Fc, 0.0, None), "w_max": w}
+
+
+def scene_wear_axial(scene, theta, *, cycles: float = 1e6, fe=None, k_factor=None,
+                     regime=None) -> tuple[WearMap, object, SlipResult]:
+    """Archard wear map of a finite-length roller scene from its most loaded slice.
+
+    The same steps as :func:`femcam.wear.scene.scene_wear` (kinematics, slip, k, coating) with
+    the pressure of :func:`axial_table`.
+
+    Returns
+    -------
+    wear_map : femcam.wear.map.WearMap
+        ``pressure = "axial_peak"``; its ``load_error`` is 0 (``pi a p0 / 2 = w_max`` exactly).
+    state : femcam.scene.SceneState
+    slip : femcam.wear.slip.SlipResult
+    """
+    st = scene.analyse(theta)
+    Fc = np.clip(st.Fc, 0.0, None)
+    table = axial_table(scene, theta, fe)
+    slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **slip_kwargs(scene))
+    k, _where = wear_coefficient_info(scene)
+    wm = wear_map(table, slip, k=k, length=scene.length, cycles=cycles, pressure="axial_peak",
+                  k_factor=k_factor, regime=regime)
+    return with_coating(scene, wm), st, slip
