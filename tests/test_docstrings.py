@@ -40,6 +40,12 @@ PENDING: set[str] = {
 
     "femcam/wear/map",
 
+    "femcam/wear/surface",
+
+    "femcam/wear/inputs",
+
+    "femcam/wear/axial",
+
 
 
 
