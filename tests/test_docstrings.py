@@ -20,11 +20,6 @@ import re
 ROOT = pathlib.Path(__file__).resolve().parents[1] / "femcam"
 
 PENDING: set[str] = {
-    "femcam/halfspace",
-
-    "femcam/sweep",
-
-    "femcam/io.py",
 
 
 
@@ -38,13 +33,11 @@ PENDING: set[str] = {
 
 
 
-    "femcam/wear/map",
 
-    "femcam/wear/surface",
 
-    "femcam/wear/inputs",
 
-    "femcam/wear/axial",
+
+
 
 
 

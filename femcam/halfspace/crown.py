@@ -46,6 +46,20 @@ def circular_drop(y, Rc):
 
     .. math:: c(y) = R_c - \sqrt{R_c^2 - y^2}
 
+    Parameters
+    ----------
+    y : float or array_like
+        Axial coordinate from the roller's mid-plane [m].
+    Rc : float
+        Crown radius [m]; ``|y| > Rc`` is clipped to the drop ``Rc``.
+
+    Returns
+    -------
+    ndarray
+        Drop ``c(y)`` [m], float, the shape of ``y``.
+
+    Examples
+    --------
     >>> round(float(circular_drop(0.005, 1.0)) * 1e6, 4)   # um, ~ y^2 / 2 Rc = 12.5 um
     12.5001
     """
@@ -59,6 +73,26 @@ def log_drop(y, l, Q, b, E_star):
 
     .. math:: c(y) = \frac{Q}{\pi l E^*}\ln\frac{1}{1 - (1 - 2b/l)(2y/l)^2}
 
+    Parameters
+    ----------
+    y : float or array_like
+        Axial coordinate from the roller's mid-plane [m]; ``|y| > l/2`` is clipped to the end.
+    l : float
+        Roller width [m].
+    Q : float
+        Design load of the profile [N].
+    b : float
+        Hertz half-width at the line load ``Q / l`` [m].
+    E_star : float
+        Contact modulus [Pa].
+
+    Returns
+    -------
+    ndarray
+        Drop ``c(y)`` [m], float, the shape of ``y``.
+
+    Examples
+    --------
     At the end the drop is ``Q ln(l / 2b) / (pi l E*)``:
 
     >>> c = log_drop(0.005, 0.01, 1000.0, 5e-5, 1.15e11)
@@ -75,6 +109,22 @@ def edge_drop(y, l, re):
 
     .. math:: c_e = r_e - \sqrt{r_e^2 - s^2},\quad s = \max(|y| - (l/2 - r_e), 0)
 
+    Parameters
+    ----------
+    y : float or array_like
+        Axial coordinate from the roller's mid-plane [m].
+    l : float
+        Roller width [m].
+    re : float
+        Edge radius [m]; ``0`` for none (zero drop).
+
+    Returns
+    -------
+    ndarray
+        Extra drop ``c_e(y)`` [m], float, the shape of ``y``; at most ``re``.
+
+    Examples
+    --------
     >>> float(edge_drop(0.005, 0.01, 0.001)) * 1e3   # mm: the full radius at the end
     1.0
     """
@@ -91,6 +141,25 @@ class RollerProfile:
     ``crown_radius`` or ``crown_drop``) or ``"logarithmic"`` (designed for ``design_load`` at the
     strip's ``E_star`` and radius; ``crown_drop``, if given, rescales it to that end drop).
 
+    Parameters
+    ----------
+    width : float
+        Roller width ``l`` [m], > 0.
+    crown : {"none", "circular", "logarithmic"}
+        Crown shape.
+    crown_radius : float or None
+        Circular crown radius ``Rc`` [m], > ``width / 2``; only for ``crown="circular"``.
+    crown_drop : float or None
+        Crown drop at the roller end ``y = +-l/2`` [m], > 0; for the circular crown it sets
+        ``Rc``, for the logarithmic one it rescales the designed profile to this end drop.
+    edge_radius : float
+        Edge (corner) radius ``re`` [m], ``0 <= re <= width / 2``; 0 for none.
+    misalignment : float
+        Tilt ``gamma`` of the roller axis towards the cam [rad], in [-0.1, 0.1]; ``gamma > 0``
+        lifts the ``+y`` end.
+
+    Examples
+    --------
     >>> RollerProfile(width=0.01, crown="circular", crown_drop=10e-6).Rc   # m
     1.250005
     """
@@ -138,8 +207,28 @@ class RollerProfile:
     def drop(self, y, *, design_load=None, b=None, E_star=None) -> np.ndarray:
         """Drop (m) of the crown plus edge radius plus tilt ``y tan(gamma)`` at ``y`` (m).
 
-        ``design_load`` (N), ``b`` (m, Hertz half-width at ``design_load / width``) and
-        ``E_star`` (Pa) are needed by the logarithmic crown only.
+        Parameters
+        ----------
+        y : float or array_like
+            Axial coordinate from the roller's mid-plane [m].
+        design_load : float, optional
+            Design load ``Q`` of the logarithmic crown [N]; logarithmic crown only.
+        b : float, optional
+            Hertz half-width at the line load ``design_load / width`` [m]; logarithmic crown
+            only (capped at ``width / 4``).
+        E_star : float, optional
+            Contact modulus [Pa]; logarithmic crown only.
+
+        Returns
+        -------
+        ndarray
+            Drop ``c(y)`` [m], float, the shape of ``y``; negative where the tilt brings the
+            surface closer.
+
+        Raises
+        ------
+        InputError
+            For the logarithmic crown if ``design_load``, ``b`` or ``E_star`` is missing.
         """
         y = np.asarray(y, float)
         c = edge_drop(y, self.width, self.edge_radius) + y * math.tan(self.misalignment)

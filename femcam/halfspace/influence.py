@@ -57,8 +57,24 @@ def cell_influence(x, y, dx, dy, E_star):
     .. math:: K(x, y) = \frac{1}{\pi E^*}\sum_{\pm\pm} \pm G(x \pm \tfrac{dx}{2}, y \pm \tfrac{dy}{2})
 
     At the centre of a square cell ``K = 4 dx asinh(1) / (pi E*)`` (``2 dx ln(1 + sqrt 2)``
-    over ``pi E*``, Johnson eq. 3.25 with ``a = b = dx/2``):
+    over ``pi E*``, Johnson eq. 3.25 with ``a = b = dx/2``).
 
+    Parameters
+    ----------
+    x, y : float or array_like
+        Point relative to the cell centre, rolling and axial [m] (broadcast together).
+    dx, dy : float
+        Cell sides [m], > 0.
+    E_star : float
+        Contact modulus [Pa], > 0.
+
+    Returns
+    -------
+    ndarray
+        Influence coefficient ``K`` [m/Pa], float, the broadcast shape of ``x`` and ``y``.
+
+    Examples
+    --------
     >>> K = cell_influence(0.0, 0.0, 1.0, 1.0, 1.0)
     >>> round(float(K * np.pi / (4.0 * np.arcsinh(1.0))), 12)
     1.0
@@ -80,6 +96,22 @@ def dcfft_kernel(nx: int, ny: int, dx: float, dy: float, E_star: float) -> np.nd
     (see the module docstring); its real FFT is what :class:`~femcam.halfspace.solver.HalfSpace`
     caches.
 
+    Parameters
+    ----------
+    nx, ny : int
+        Cells of the grid in the rolling and axial directions [-], ``>= 1``.
+    dx, dy : float
+        Cell sides [m], > 0.
+    E_star : float
+        Contact modulus [Pa], > 0.
+
+    Returns
+    -------
+    ndarray, shape (2 nx, 2 ny), float
+        Influence coefficients [m/Pa] in wrap-around order; row ``nx`` and column ``ny`` are 0.
+
+    Examples
+    --------
     >>> K = dcfft_kernel(4, 2, 1.0, 1.0, 1.0)
     >>> K.shape, bool(K[4, 0] == 0.0), bool(np.isclose(K[1, 0], K[-1, 0]))
     ((8, 4), True, True)

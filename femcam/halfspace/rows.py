@@ -42,7 +42,28 @@ COLUMNS = {
 
 def strip_for_scene(scene, *, nx: int = 64, ny: int = 128, tol: float = 1e-5) -> FiniteLengthContact:
     """The :class:`~femcam.halfspace.strip.FiniteLengthContact` of a roller scene's
-    ``finite_length`` keys (defaults: roller width = cam face width = ``follower.face_width_mm``)."""
+    ``finite_length`` keys (defaults: roller width = cam face width = ``follower.face_width_mm``).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A scene with a roller follower; its ``finite_length`` dict (SI) sets the roller profile.
+    nx, ny : int
+        Cells across the contact (rolling direction) and along the axis [-].
+    tol : float
+        Relative pressure-change tolerance of the conjugate gradients [-].
+
+    Returns
+    -------
+    FiniteLengthContact
+        The strip; a logarithmic crown is designed for the largest contact force [N] of the
+        revolution (720 angles) at its relative radius [m].
+
+    Raises
+    ------
+    InputError
+        If the follower is not a roller (``Rr`` not > 0).
+    """
     Rr = getattr(scene.follower, "Rr", 0.0)
     if not Rr > 0.0:
         raise InputError(f"follower = {type(scene.follower).__name__}: the finite-length half-space "
@@ -66,6 +87,20 @@ def strip_for_scene(scene, *, nx: int = 64, ny: int = 128, tol: float = 1e-5) ->
 def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float = 1e-5,
                        strip: FiniteLengthContact | None = None) -> dict:
     """Finite-length contact at cam angles ``theta`` (rad) of a roller ``scene``.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A scene with a roller follower.
+    theta : float or array_like, shape (n_theta,)
+        Cam angles [rad].
+    nx, ny : int
+        Cells across the contact and along the axis [-]; ignored when ``strip`` is given.
+    tol : float
+        Relative pressure-change tolerance of the conjugate gradients [-]; ignored when
+        ``strip`` is given.
+    strip : FiniteLengthContact, optional
+        A strip built beforehand (e.g. by :func:`strip_for_scene`) to reuse its kernel FFTs.
 
     Returns
     -------
@@ -115,6 +150,18 @@ def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float 
 def to_csv_columns(rows: dict) -> dict:
     """The :data:`COLUMNS` of ``rows`` under their CSV names, converted to the CSV units.
 
+    Parameters
+    ----------
+    rows : dict of array_like
+        SI columns, e.g. from :func:`finite_length_rows`; keys not in :data:`COLUMNS` are dropped.
+
+    Returns
+    -------
+    dict of ndarray
+        CSV column name (with unit, e.g. ``p_axial_peak_MPa``) -> values in that unit.
+
+    Examples
+    --------
     >>> to_csv_columns({"L_eff": np.array([0.01])})
     {'L_eff_mm': array([10.])}
     """

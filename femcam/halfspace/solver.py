@@ -44,6 +44,27 @@ class ContactSolution:
     ``dx dy sum|p_k - p_(k-1)| / W`` fell below ``tol`` within ``max_iter``; ``residual`` is that
     last change, ``gap_residual`` the largest ``|g|`` on loaded cells over ``alpha`` (the
     complementarity error) and ``history`` the change per iteration.
+
+    Attributes
+    ----------
+    p : ndarray, shape (nx, ny), float
+        Cell pressure [Pa], ``>= 0``.
+    alpha : float
+        Rigid-body approach of the two bodies [m].
+    u : ndarray, shape (nx, ny), float
+        Combined elastic normal displacement ``K * p`` [m].
+    iterations : int
+        Conjugate-gradient iterations done [-].
+    residual : float
+        Last relative pressure change ``dx dy sum|p_k - p_(k-1)| / W`` [-].
+    gap_residual : float
+        Largest ``|h0 + u - alpha|`` on loaded cells divided by ``|alpha|`` [-].
+    converged : bool
+        ``residual < tol`` within ``max_iter``.
+    history : ndarray, shape (iterations,), float
+        Relative pressure change per iteration [-].
+    message : str
+        One line saying whether and how it converged.
     """
 
     p: np.ndarray
@@ -61,6 +82,22 @@ class HalfSpace:
     """DC-FFT influence of one grid: ``nx`` x ``ny`` cells of ``dx`` x ``dy`` (m), modulus
     ``E_star`` (Pa). Build once, solve many times.
 
+    Parameters
+    ----------
+    nx, ny : int
+        Cells in the rolling (``x``) and axial (``y``) directions [-], ``>= 1``.
+    dx, dy : float
+        Cell sides [m], > 0.
+    E_star : float
+        Contact modulus ``1/E* = sum (1 - nu_i^2)/E_i`` [Pa], > 0.
+
+    Attributes
+    ----------
+    kernel : ndarray, shape (2 nx, 2 ny), float
+        DC-FFT influence array in wrap-around order [m/Pa] (:func:`dcfft_kernel`).
+
+    Examples
+    --------
     >>> hs = HalfSpace(nx=8, ny=8, dx=1e-5, dy=1e-5, E_star=1e11)
     >>> p = np.zeros((8, 8)); p[3, 3] = 1e9
     >>> bool(np.isclose(hs.displacement(p)[3, 3], 1e9 * hs.kernel[0, 0]))
@@ -77,7 +114,18 @@ class HalfSpace:
         self._pad = np.zeros((2 * self.nx, 2 * self.ny))
 
     def displacement(self, p) -> np.ndarray:
-        """Combined normal displacement ``u = K * p`` (m) on the ``nx`` x ``ny`` grid (DC-FFT)."""
+        """Combined normal displacement ``u = K * p`` (m) on the ``nx`` x ``ny`` grid (DC-FFT).
+
+        Parameters
+        ----------
+        p : array_like, shape (nx, ny)
+            Cell pressure [Pa].
+
+        Returns
+        -------
+        ndarray, shape (nx, ny), float
+            Combined normal displacement of both bodies [m] (a view into a new array).
+        """
         # (a pruned transform that skips the zero rows measured no faster: strided column FFTs)
         self._pad[: self.nx, : self.ny] = p
         full = sfft.irfft2(sfft.rfft2(self._pad) * self._Kf, s=self._pad.shape)
@@ -104,6 +152,7 @@ class HalfSpace:
         Returns
         -------
         ContactSolution
+            Pressure [Pa], approach [m], displacement [m] and convergence diagnostics.
         """
         h0 = _validate.finite_array("h0", h0, "m")
         if h0.shape != (self.nx, self.ny):

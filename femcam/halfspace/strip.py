@@ -57,7 +57,45 @@ class StripResult:
     must know: ``"short_contact"`` (fewer than ``MIN_CELLS`` loaded cells along the length:
     refine ``ny``), ``"end_lift"`` (an end of the contact length carries no load: the tilt or
     crown lifted it off), ``"x_clipped"`` (pressure at the ``x`` border even on the last rung),
-    ``"not_converged"``."""
+    ``"not_converged"``.
+
+    Attributes
+    ----------
+    x : ndarray, shape (nx,), float
+        Cell centres in the rolling direction [m].
+    y : ndarray, shape (ny,), float
+        Cell centres along the axis [m], 0 at the mid-plane.
+    p : ndarray, shape (nx, ny), float
+        Cell pressure [Pa].
+    w : ndarray, shape (ny,), float
+        Slice load per unit length ``int p dx`` [N/m].
+    p_line : ndarray, shape (ny,), float
+        Peak pressure of each axial slice [Pa].
+    p_max : float
+        Peak cell pressure [Pa].
+    y_peak : float
+        Axial position of ``p_max`` [m].
+    L_eff : float
+        Loaded length (cells with ``w > 0`` times ``dy``) [m].
+    w_max : float
+        Largest mean of ``w`` over an axial window of ``window`` [N/m].
+    y_wmax : float
+        Centre of that window [m].
+    y_centre : float
+        Load centre ``int w y dy / int w dy`` [m].
+    alpha : float
+        Rigid-body approach [m].
+    iterations : int
+        Conjugate-gradient iterations [-].
+    residual : float
+        Last relative pressure change [-].
+    converged : bool
+        The conjugate gradients met ``tol``.
+    flags : tuple of str
+        Warnings, see above; empty when all is well.
+    window : float
+        Axial averaging window of ``w_max``, ``min(2b, L)`` [m].
+    """
 
     x: np.ndarray = field(repr=False)
     y: np.ndarray = field(repr=False)
@@ -87,6 +125,24 @@ def window_max(w, dy: float, width: float) -> tuple[float, float]:
     ``W`` is piecewise linear, so the maximum over the start ``s`` lies where ``s`` or ``s + l``
     is a cell edge; both sets are evaluated (fractional cells count by their share).
 
+    Parameters
+    ----------
+    w : array_like, shape (ny,)
+        Load per unit length of each cell [N/m].
+    dy : float
+        Cell length along the axis [m].
+    width : float
+        Window length [m], clipped to ``[0, ny dy]``; 0 returns the largest single cell.
+
+    Returns
+    -------
+    w_mean : float
+        Largest window mean of ``w`` [N/m].
+    y_centre : float
+        Centre of that window [m], 0 at the mid-plane.
+
+    Examples
+    --------
     >>> window_max(np.array([1.0, 1.0, 4.0, 1.0]), 1.0, 2.0)      # cells 2-3 (first of two)
     (2.5, 0.0)
     >>> window_max(np.array([1.0, 1.0, 4.0, 1.0]), 1.0, 0.5)      # half of the cell of 4
@@ -127,6 +183,8 @@ class FiniteLengthContact:
     tol : float
         CG tolerance on the relative pressure change; 1e-5 moves the peak pressure of a sweep by
         < 1e-4 relative against 1e-7 (measured on seed 002, see ``docs/halfspace.md``).
+    max_iter : int
+        CG iteration cap per solve; not converging is flagged ``"not_converged"``, not raised.
     """
 
     def __init__(self, profile: RollerProfile, *, cam_width: float, E_star: float,
@@ -166,7 +224,22 @@ class FiniteLengthContact:
         return 1e-6
 
     def solve(self, F: float, R: float, *, p_start=None) -> StripResult:
-        """Contact at normal force ``F`` (N, > 0) and relative radius ``R`` (m, > 0)."""
+        """Contact at normal force ``F`` (N, > 0) and relative radius ``R`` (m, > 0).
+
+        Parameters
+        ----------
+        F : float
+            Normal contact force [N], > 0.
+        R : float
+            Relative radius in the rolling direction [m], > 0.
+        p_start : ndarray, shape (nx, ny), optional
+            Starting pressure [Pa] (warm start, e.g. the previous angle's ``StripResult.p``).
+
+        Returns
+        -------
+        StripResult
+            Pressure field [Pa], slice loads [N/m], peaks and flags of this angle.
+        """
         F = _validate.positive("F", F, "N")
         R = _validate.positive("R", R, "m")
         b = math.sqrt(4.0 * F / self.L * R / (math.pi * self.E_star))

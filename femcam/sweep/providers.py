@@ -218,7 +218,22 @@ def halfspace_rows(scene, theta) -> dict:
     pressure (:func:`femcam.halfspace.rows.finite_length_rows`, kernel FFTs cached per process).
     The chunk boundaries are fixed by the angle list and ``chunk_size`` (not by the worker count
     or by resuming), so the rows do not depend on how many processes run the chunks; a different
-    ``chunk_size`` moves them within the solver tolerance (1e-5 relative pressure change)."""
+    ``chunk_size`` moves them within the solver tolerance (1e-5 relative pressure change).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A scene with a roller follower.
+    theta : array_like, shape (n,)
+        The chunk's cam angles [rad], in sweep order.
+
+    Returns
+    -------
+    dict[str, ndarray]
+        ``hs_<key>`` for each key of :data:`femcam.halfspace.rows.COLUMNS`, shape (n,), float, SI
+        (Pa, m, N/m; counts and 0/1 flags as float), and ``hs_flags`` (object, the strip flags
+        of each angle joined by ``;``).
+    """
     r = finite_length_rows(scene, np.asarray(theta, float), strip=strip_model(scene))
     out = {f"hs_{k}": np.asarray(r[k], float) for k in HS_COLUMNS}
     out["hs_flags"] = np.array([";".join(f) for f in r["flags"]], dtype=object)

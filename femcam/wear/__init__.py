@@ -7,6 +7,12 @@
   tip radius, flat-faced, roller with a slide-to-roll ratio or the inertia-limited slip model).
 * :mod:`.map` -- Archard depth ``h(x) = k int p v_slip dt`` on the cam and follower surfaces;
   the roller's drift from one revolution to the next (:func:`drift_sum`).
+* :mod:`.surface` -- the closed forms of the map: load per unit length, depth per pass, the
+  exact depth of a moving Hertz contact on a grid, the drift sum.
+* :mod:`.inputs` -- the per-angle contact columns of the map (``theta, a, p0, Fc``) from a sweep
+  result or a mapping, with the missing-pressure policy (raise, skip with a warning, zero).
+* :mod:`.axial` -- the wear map of a finite-length roller laid down by its most loaded slice
+  (half-space strip of :mod:`femcam.halfspace`).
 * :mod:`.evolution` -- the profile worn in blocks of cycles (wear -> worn curvature and lift ->
   force and Hertz pressure -> wear), explicit Euler, and its convergence in the block size.
 * :mod:`.options` -- a scene's ``[wear]`` table checked (units in key names) and the wear

@@ -40,6 +40,22 @@ def axial_pressure(p_peak, w_max) -> tuple[np.ndarray, np.ndarray]:
 
     NaN (no contact) where either is not finite or ``p_peak <= 0``.
 
+    Parameters
+    ----------
+    p_peak : array_like
+        Axial peak pressure ``max p(x, y)`` [Pa].
+    w_max : array_like
+        Most loaded slice's load per unit length [N/m].
+
+    Returns
+    -------
+    a : ndarray
+        Half-width ``2 w_max / (pi p_peak)`` [m], float, the broadcast shape of the inputs.
+    p0 : ndarray
+        Peak pressure ``p_peak`` [Pa], same shape.
+
+    Examples
+    --------
     >>> a, p0 = axial_pressure(np.array([1e9]), np.array([1e5]))
     >>> round(float(a[0]) * 1e6, 3), float(p0[0])
     (63.662, 1000000000.0)
@@ -87,12 +103,29 @@ def scene_wear_axial(scene, theta, *, cycles: float = 1e6, fe=None, k_factor=Non
     The same steps as :func:`femcam.wear.scene.scene_wear` (kinematics, slip, k, coating) with
     the pressure of :func:`axial_table`.
 
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A roller scene with finite-length keys.
+    theta : ndarray, shape (n,)
+        Cam angles [rad], uniform over one revolution, endpoint excluded.
+    cycles : float
+        Number of cam revolutions [-].
+    fe : femcam.sweep.SweepResult, optional
+        A sweep of ``scene`` at ``theta`` whose half-space columns are used (see
+        :func:`axial_table`); default: solve the strip here.
+    k_factor, regime : ndarray, shape (n,), optional
+        The wear coefficient's factor k(lambda)/k [-] and the lubrication regime per angle;
+        default: the dry k.
+
     Returns
     -------
     wear_map : femcam.wear.map.WearMap
         ``pressure = "axial_peak"``; its ``load_error`` is 0 (``pi a p0 / 2 = w_max`` exactly).
     state : femcam.scene.SceneState
+        ``scene.analyse(theta)``.
     slip : femcam.wear.slip.SlipResult
+        Sliding and transport speeds [m/s] at ``theta``.
     """
     st = scene.analyse(theta)
     Fc = np.clip(st.Fc, 0.0, None)

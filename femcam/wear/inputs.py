@@ -108,6 +108,37 @@ def contact_columns(source, *, pressure: str = "hertz", missing: str | None = No
       ``"failed"`` (the sweep's ``message`` is quoted), ``"raise"`` for everything else.
 
     Without an ``Fc`` column, contact is read from the width alone (NaN or 0 = no contact).
+
+    Parameters
+    ----------
+    source : SweepResult-like or mapping
+        Columns ``theta`` [rad], ``a`` [m], ``p0`` [Pa] (under the names of ``pressure``) and,
+        optionally, ``Fc`` [N], ``status`` and ``message``; shape (n,) each.
+    pressure : {"hertz", "fe", "axial_peak"}
+        Which columns hold ``a``/``p0``: ``a_hertz``/``p0_hertz``, ``a_fe``/``p0_fe`` or
+        ``a_axial``/``p0_axial`` (the last of :mod:`femcam.wear.axial`).
+    missing : {"raise", "skip", "zero"}, optional
+        Missing-pressure policy, see above; None picks per row.
+    skipped : list, optional
+        Receives the indices of the skipped angles.
+
+    Returns
+    -------
+    theta : ndarray, shape (n,), float
+        Cam angles [rad].
+    a : ndarray, shape (n,), float
+        Contact half-width [m]; 0 where no contact (or skipped).
+    p0 : ndarray, shape (n,), float
+        Peak pressure [Pa]; 0 where no contact (or skipped).
+    Fc : ndarray, shape (n,), float
+        Contact force [N]; 0 where no contact (or skipped). Without an ``Fc`` column: 1 where
+        there is contact, 0 elsewhere (not a force).
+
+    Raises
+    ------
+    InputError
+        A column missing, a negative ``a``, a bad ``pressure``/``missing``, or a missing
+        pressure that the policy refuses.
     """
     _validate.choice("pressure", pressure, tuple(_KEYS))
     if missing is not None:

@@ -106,6 +106,60 @@ class WearMap:
     over the contact angles: 0 for Hertz, the fit error of an FE ``a``/``p0``. ``skipped``:
     indices of angles skipped for a missing pressure. ``*_total`` properties multiply by
     ``cycles``.
+
+    Attributes
+    ----------
+    theta : ndarray, shape (n,), float
+        Cam angles [rad], uniform over one revolution.
+    xi_cam : ndarray, shape (n,), float
+        Arc position of the contact centre on the cam [m], 0 at ``theta[0]``.
+    depth_pass : ndarray, shape (n,), float
+        Closed-form depth per pass ``k w v_slip / V_cam`` at each angle [m per revolution].
+    depth_at_theta : ndarray, shape (n,), float
+        Map depth at ``xi_cam`` [m per revolution].
+    x_cam : ndarray, shape (n_grid,), float
+        Cam grid, arc position from the contact point at ``theta[0]`` [m], over one perimeter.
+    depth_cam : ndarray, shape (n_grid,), float
+        Cam wear depth on ``x_cam`` [m per revolution].
+    x_follower : ndarray, shape (n_grid,), float
+        Follower grid [m] (roller: arc; flat face: distance from the axis; tip: ``r_tip phi``).
+    depth_follower : ndarray, shape (n_grid,), float
+        Follower wear depth on ``x_follower`` [m per revolution], no drift.
+    perimeter : float
+        Cam perimeter swept by the contact in one revolution [m].
+    volume_cam, volume_follower : float
+        Worn volumes ``l int h dx`` per revolution [m^3].
+    volume_archard : float
+        Archard volume ``k sum F v_slip dt`` per revolution [m^3].
+    conservation_error : float
+        ``|volume_cam - volume_archard| / volume_archard`` [-].
+    k : float
+        Dimensional wear coefficient [m^3/(N m)].
+    length : float
+        Face width (contact length) [m].
+    cycles : float
+        Number of cam revolutions [-].
+    model : str
+        Slip model (``SlipResult.model``).
+    depth_follower_cycles : ndarray, shape (n_grid,), float, or None
+        Follower depth after ``cycles`` revolutions with the roller drift [m].
+    follower_period : float or None
+        Roller circumference ``2 pi Rr`` [m]; None for a non-periodic follower coordinate.
+    follower_drift : float
+        Advance of the roller contact per cam revolution, modulo ``follower_period`` [m].
+    load_error : float
+        Largest ``|l pi a p0 / 2 - Fc| / Fc`` over the contact angles [-].
+    skipped : tuple of int
+        Indices of angles skipped for a missing pressure.
+    k_factor : ndarray, shape (n,), float, or None
+        Per-angle multiplier of ``k`` [-] (lubricated scenes); None: dry k.
+    regime : ndarray, shape (n,), str, or None
+        Lubrication regime per angle; None: dry.
+    depth_cam_cycles : ndarray, shape (n_grid,), float, or None
+        Depth of a coated cam after ``cycles`` revolutions [m]; None: uncoated.
+    coating : dict or None
+        Coating record (body, ``thickness_m``, ``k_coating``, ``k_substrate``,
+        ``revolutions_through``, source); None: uncoated.
     """
 
     theta: np.ndarray
@@ -142,12 +196,14 @@ class WearMap:
 
     @property
     def depth_cam_total(self) -> np.ndarray:
+        """Cam depth on ``x_cam`` after ``cycles`` revolutions (m), coating included."""
         if self.depth_cam_cycles is not None:
             return self.depth_cam_cycles
         return self.cycles * self.depth_cam
 
     @property
     def i_max(self) -> int:
+        """Index of the angle whose contact point has the deepest one-revolution map depth."""
         return int(np.argmax(self.depth_at_theta))
 
     @property
@@ -189,6 +245,17 @@ class WearMap:
         return float(self.cycles * np.max(self.depth_follower)) if self.depth_follower.size else 0.0
 
     def summary(self) -> dict:
+        """The headline figures after ``cycles`` revolutions, units in the key names.
+
+        Returns
+        -------
+        dict
+            ``max_depth_m``, ``theta_max_rad``, ``x_max_m``, the follower depths and position
+            (m), ``follower_drift_m``, ``volume_cam_m3`` and ``volume_follower_m3`` (times
+            ``cycles``), ``conservation_error`` and ``load_error`` [-], ``skipped_angles_rad``,
+            ``cycles``, ``model``; plus ``coating`` (coated) and ``regime_angles`` (angle count
+            per lubrication regime) when set.
+        """
         return {"max_depth_m": self.max_depth, "theta_max_rad": self.theta_max, "x_max_m": self.x_max,
                 "max_depth_follower_m": self.max_depth_follower,
                 "x_max_follower_m": self.x_max_follower,
@@ -216,16 +283,47 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
              regime=None) -> WearMap:
     """Archard wear map of one revolution from per-angle contact data and a slip model.
 
-    ``source``: SweepResult-like object or mapping with ``theta`` (rad, uniform over one
-    revolution, endpoint excluded), ``a``/``p0`` (m, Pa; ``a_hertz``/``p0_hertz`` or
-    ``a_fe``/``p0_fe``; ``pressure="axial_peak"``: ``a_axial``/``p0_axial`` of the most loaded
-    slice of a finite-length roller, :mod:`femcam.wear.axial`) and ``Fc`` (N). ``slip``: a
-    :class:`~femcam.wear.slip.SlipResult` on the same angles. ``k`` in m^3/(N m), ``length``
-    (face width) in m. ``missing``: what to do at angles with ``Fc > 0`` and no pressure, see
-    :func:`contact_columns` (default: raise; skip with a warning the ``failed`` rows of a sweep
-    result). ``k_factor`` (optional, per angle):
-    multiplies ``k`` angle by angle (the wear coefficient of the lubrication regime, ``k(lambda)/k``
-    of :func:`femcam.tribology.wear_coefficient`); ``regime`` (optional, per angle) is stored.
+    Parameters
+    ----------
+    source : SweepResult-like or mapping
+        Columns ``theta`` [rad] (uniform over one revolution, endpoint excluded), ``a`` [m] and
+        ``p0`` [Pa] (``a_hertz``/``p0_hertz``, ``a_fe``/``p0_fe`` or, for ``"axial_peak"``,
+        ``a_axial``/``p0_axial`` of the most loaded slice, :mod:`femcam.wear.axial`) and ``Fc``
+        [N], shape (n,) each.
+    slip : SlipResult
+        Sliding and transport speeds on the same angles (:mod:`femcam.wear.slip`).
+    k : float
+        Dimensional wear coefficient [m^3/(N m)], >= 0.
+    length : float
+        Face width (contact length) [m], > 0.
+    cycles : float
+        Number of cam revolutions [-], >= 0.
+    pressure : {"hertz", "fe", "axial_peak"}
+        Which ``a``/``p0`` columns to read.
+    n_grid : int, optional
+        Grid points on each surface; default ``perimeter / (a_min / 3)`` clipped to
+        [2000, 40000].
+    missing : {"raise", "skip", "zero"}, optional
+        What to do at angles with ``Fc > 0`` and no pressure, see :func:`contact_columns`
+        (default: skip with a warning the ``failed`` rows of a sweep result, raise otherwise).
+    k_factor : array_like, shape (n,), optional
+        Per-angle multiplier of ``k`` [-] (``k(lambda)/k`` of the lubrication regime,
+        :func:`femcam.tribology.wear_coefficient`); default 1.
+    regime : array_like of str, shape (n,), optional
+        Lubrication regime per angle; stored only.
+
+    Returns
+    -------
+    WearMap
+        Cam and follower depths [m per revolution and after ``cycles``], volumes [m^3] and
+        checks.
+
+    Raises
+    ------
+    InputError
+        On a bad ``k``, ``length``, ``cycles``, ``pressure`` or ``missing``, angles that are not
+        one uniform revolution (at least 4), ``slip.theta`` unlike ``theta``, or a missing
+        pressure under ``missing="raise"``.
     """
     k = _validate.nonnegative("k", k, "m^3/(N m)")
     length = _validate.positive("length", length, "m")
@@ -314,9 +412,29 @@ def wear_depth_per_angle(theta, a, p0, Fc, slip: SlipResult, k, *, missing: str 
     ``k w v_slip / V_cam`` with ``w = pi a p0 / 2``; zero where there is no contact (``Fc <= 0``
     or NaN width). Same length as ``theta``; for the sweep's CSV/VTK wear column.
 
-    ``missing`` (keyword, optional) says what an angle with ``Fc > 0`` but NaN ``a``/``p0`` (a
-    failed solve) gets: ``"zero"`` (default, unchanged behaviour), ``"nan"`` (NaN in that row:
-    unknown, not zero), or ``"raise"`` (:class:`~femcam.errors.InputError` naming the angles).
+    Parameters
+    ----------
+    theta : array_like, shape (n,)
+        Cam angles [rad].
+    a : array_like, shape (n,)
+        Contact half-width [m]; NaN or 0 for no contact.
+    p0 : array_like, shape (n,)
+        Peak contact pressure [Pa].
+    Fc : array_like, shape (n,)
+        Contact force [N].
+    slip : SlipResult
+        Sliding and transport speeds on the same angles.
+    k : float
+        Dimensional wear coefficient [m^3/(N m)], >= 0.
+    missing : {"zero", "nan", "raise"}
+        What an angle with ``Fc > 0`` but NaN ``a``/``p0`` (a failed solve) gets: ``"zero"``
+        (default, unchanged behaviour), ``"nan"`` (NaN in that row: unknown, not zero), or
+        ``"raise"`` (:class:`~femcam.errors.InputError` naming the angles).
+
+    Returns
+    -------
+    ndarray, shape (n,), float
+        Cam wear depth per pass [m per revolution]; ``inf`` where ``V_cam = 0`` with slip.
     """
     _validate.choice("missing", missing, ("zero", "nan", "raise"))
     a_in, p_in, F_in = (np.asarray(x, dtype=float) for x in (a, p0, Fc))

@@ -16,6 +16,20 @@ from .. import _validate
 def hertz_load_per_length(a, p0):
     r"""``w = int p dx = pi a p0 / 2`` (N/m) for the Hertz elliptical pressure (Johnson eq. 4.44).
 
+    Parameters
+    ----------
+    a : float or array_like
+        Contact half-width [m].
+    p0 : float or array_like
+        Peak contact pressure [Pa].
+
+    Returns
+    -------
+    ndarray
+        Load per unit length ``w`` [N/m], float, the broadcast shape of ``a`` and ``p0``.
+
+    Examples
+    --------
     >>> round(float(hertz_load_per_length(1e-4, 1e9)), 3)
     157079.633
     """
@@ -30,6 +44,24 @@ def depth_per_pass(k, w, v_slip, V_transport):
     ``V_transport = 0`` (the contact sits still on that surface, e.g. a knife-edge tip) gives
     ``inf`` where ``k w v_slip > 0``.
 
+    Parameters
+    ----------
+    k : float
+        Dimensional wear coefficient [m^3/(N m)], >= 0.
+    w : float or array_like
+        Load per unit length [N/m]; NaN and negative values count as 0.
+    v_slip : float or array_like
+        Sliding speed [m/s] (its magnitude is used).
+    V_transport : float or array_like
+        Speed of the contact over the surface [m/s] (its magnitude is used).
+
+    Returns
+    -------
+    ndarray
+        Depth per pass [m], float, the broadcast shape of the inputs.
+
+    Examples
+    --------
     >>> float(depth_per_pass(1e-17, 1e5, 0.2, 1.0))     # k w (slip per rolled length)
     2e-13
     """
@@ -56,6 +88,32 @@ def surface_depth(x, xi, a, p0, v_slip, dt, *, k, period=None, chunk: int = 256)
     ``v_slip`` (n values) hold in each step. ``period`` makes the coordinate periodic (cam
     perimeter, roller circumference). Steps with ``a <= 0``, NaN or ``p0 <= 0`` carry no load.
     Vectorised over the grid; steps are processed in chunks of ``chunk``.
+
+    Parameters
+    ----------
+    x : array_like, shape (m,)
+        Surface grid [m].
+    xi : array_like, shape (n + 1,)
+        Contact-centre positions at the step ends [m].
+    a : array_like, shape (n,)
+        Contact half-width in each step [m].
+    p0 : array_like, shape (n,)
+        Peak pressure in each step [Pa].
+    v_slip : array_like, shape (n,)
+        Sliding speed in each step [m/s] (its magnitude is used).
+    dt : array_like, shape (n,)
+        Step durations [s].
+    k : float
+        Dimensional wear coefficient [m^3/(N m)], >= 0.
+    period : float, optional
+        Period of the coordinate [m]; None for an open coordinate.
+    chunk : int
+        Steps per vectorised block (memory ``m x chunk`` floats).
+
+    Returns
+    -------
+    ndarray, shape (m,), float
+        Wear depth on ``x`` [m].
     """
     k = _validate.nonnegative("k", k, "m^3/(N m)")
     x = np.asarray(x, dtype=float)
@@ -104,6 +162,24 @@ def drift_sum(h, period: float, drift: float, cycles: float) -> np.ndarray:
     ``cycles x mean(h)`` for any ``D``; for large N and ``D/P`` not close to a ratio of small
     integers the pattern smears towards that mean.
 
+    Parameters
+    ----------
+    h : array_like, shape (M,)
+        One-revolution depth on the uniform periodic grid [m].
+    period : float
+        Period ``P`` of the coordinate (roller circumference) [m], > 0.
+    drift : float
+        Shift ``D`` of the pattern per revolution [m].
+    cycles : float
+        Number of revolutions ``N`` [-], >= 0 (non-integer allowed).
+
+    Returns
+    -------
+    ndarray, shape (M,), float
+        Depth after ``cycles`` revolutions [m].
+
+    Examples
+    --------
     >>> import numpy as np
     >>> h = np.array([1.0, 0.0, 0.0, 0.0])
     >>> drift_sum(h, 4.0, 1.0, 4).round(12).tolist()       # shift by one cell per revolution
