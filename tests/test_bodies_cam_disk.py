@@ -23,7 +23,13 @@ import pytest
 from femcam.bodies.cam_geometry import CamDisk
 from femcam.bodies.cam_global import CamGlobalModel
 from femcam.bodies.cam_mesh import mesh_cam_disk
-from femcam.bodies.cam_model import CamDiskModel, CamMeshOptions, check_bore_spacing, floating_supports
+from femcam.bodies.cam_model import (
+    CamDiskModel,
+    CamMeshOptions,
+    check_bore_spacing,
+    floating_supports,
+    hat_resultants,
+)
 from femcam.bodies.cam_rows import solve_global
 from femcam.bodies.cam_solve import solve_cam_disk
 from femcam.bodies.contact import arc_load_matrix
@@ -281,3 +287,11 @@ def test_global_model_over_a_thin_web_hard_case():
     assert rg["hoop_max"][0] == pytest.approx(r.hoop_max, rel=0.03)
     assert rg["shaft_p0"][0] == pytest.approx(r.shaft_p0, rel=0.03)
     assert abs(r.dp0) < 5e-4 and abs(r.da) < 5e-4
+
+
+def test_hat_resultants_sum_the_interleaved_dofs():
+    """hat_resultants(B) takes only B (no unused body): x and y sums of the nodal forces,
+    DOFs interleaved x0, y0, x1, y1, ... (scikit-fem). Reference summed by hand."""
+    B = np.arange(1.0, 13.0).reshape(6, 2)  # rows x0 y0 x1 y1 x2 y2, two hats
+    np.testing.assert_array_equal(hat_resultants(B), [[1 + 5 + 9, 2 + 6 + 10], [3 + 7 + 11, 4 + 8 + 12]])
+

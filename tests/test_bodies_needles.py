@@ -24,6 +24,7 @@ import numpy as np
 import pytest
 
 from femcam.bodies import RingMeshOptions, RingModel, RollerBearing, needle_approach, solve_ring
+from femcam.errors import ConvergenceError
 from femcam.materials import STEEL, Material
 from femcam.mesh import MeshOptions
 
@@ -58,3 +59,16 @@ def test_needle_law_is_palmgren():
     """delta = 2 x 3.84e-5 (Q l)^0.9 / l^0.8 mm (Q l in N, l in mm): 1500 N on l = 10 mm."""
     ref_mm = 2 * 3.84e-5 * 1500**0.9 / 10**0.8
     np.testing.assert_allclose(needle_approach(150e3, 0.01), ref_mm * 1e-3, rtol=1e-12)
+
+
+def test_needle_secant_failure_carries_the_full_history(rigid_model):
+    """tol = 0 never settles: the ConvergenceError holds one relative change per secant
+    iteration (max_secant = 3 of them, not only the last), the last one quoted in the message,
+    and the secant iteration contracts (the first change is the largest)."""
+    with pytest.raises(ConvergenceError) as exc:
+        solve_ring(rigid_model, F=1500.0, rho=0.02, max_secant=3, tol=0.0)
+    h = exc.value.history
+    assert len(h) == 3 and all(math.isfinite(x) and x >= 0.0 for x in h)
+    assert f"last relative change {h[-1]:.3g}" in str(exc.value)
+    assert h[0] > h[-1]
+

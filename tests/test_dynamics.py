@@ -306,6 +306,44 @@ def test_undamped_bouncing_is_flagged_not_hidden():
     assert not r.converged and ("unstable" in r.message or "not periodic" in r.message)
 
 
+def test_counts_are_whole_numbers_never_truncated():
+    """workers = 0.5 passed the > 0 check and became 0 (a raw ProcessPoolExecutor ValueError);
+    n_scan = 2.5 and cycles = 1.5 were silently truncated."""
+    tm, prog = _train(m=0.2, k_s=800.0, Fpl=100.0, k_t=1e6, zeta_t=0.3), _program()
+    with pytest.raises(InputError, match=r"workers = 0\.5: must be a whole number >= 1"):
+        rpm_sweep(tm, prog, [60.0], workers=0.5)
+    with pytest.raises(InputError, match=r"n_scan = 2\.5: must be a whole number >= 1"):
+        jump_speed(tm, prog, 60.0, 120.0, n_scan=2.5)
+    with pytest.raises(InputError, match=r"cycles = 1\.5: must be a whole number >= 1"):
+        simulate(tm, prog, RPM60, cycles=1.5)
+
+
+def test_simulate_checks_its_inputs_like_periodic_response():
+    tm, prog = _train(m=0.2, k_s=800.0, Fpl=100.0, k_t=1e6, zeta_t=0.3), _program()
+    with pytest.raises(InputError, match="train = 'x': must be a TrainModel"):
+        simulate("x", prog, RPM60)
+    with pytest.raises(InputError, match="program = 3: must be a CamProgram"):
+        simulate(tm, 3, RPM60)
+    with pytest.raises(InputError, match=r"z0 = .*must have shape \(2,\).*got shape \(3,\)"):
+        simulate(tm, prog, RPM60, z0=[0.0, 0.0, 0.0])
+    with pytest.raises(InputError, match="z0 = .*must be finite"):
+        simulate(tm, prog, RPM60, z0=[float("nan"), 0.0])
+    # a valid z0 at rest is the default start: the same response (reference: z0 = None)
+    a, b = simulate(tm, prog, RPM60, z0=[0.0, 0.0])[1], simulate(tm, prog, RPM60)[1]
+    assert np.array_equal(a, b)
+
+
+def test_cli_dynamics_workers_capped_at_cores_and_speeds():
+    import os
+
+    from femcam.cli.dynamics import _useful_workers
+
+    cap = min(os.cpu_count() or 1, 3)  # 3 speeds
+    assert _useful_workers(64, 3) == (cap, f"--workers 64 capped at {cap} (the useful number: "
+                                           f"{os.cpu_count() or 1} CPU cores, 3 speeds)")
+    assert _useful_workers(1, 3) == (1, "")
+
+
 def test_train_input_errors():
     f = FollowerDynamics(m=0.2, k=800.0, Fpl=100.0, c=0.0)
     with pytest.raises(InputError, match="k_t = -1 N/m: must be > 0"):

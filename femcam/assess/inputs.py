@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ..errors import InputError, SceneError
+from ..scene.schema import SI_NAMES
 from ..tribology.film import RQ_PER_RA
 from ..tribology.lubricants import OILS, Lubricant, lubricant
 
@@ -21,6 +22,8 @@ MATERIAL_KEYS = {"yield_strength_MPa": "Y", "thermal_conductivity_W_per_m_K": "K
                  "contact_fatigue_strength_MPa": "sigma_Hlim", "contact_fatigue_cycles": "N_ref",
                  "contact_fatigue_exponent": "m", "shear_fatigue_limit_MPa": "tau_e",
                  "scuffing_temperature_C": "T_scuff"}
+#: the same by the SI name the scene hands on (femcam.scene.schema.SI_NAMES)
+_BY_SI_NAME = {SI_NAMES.get(k, k): sym for k, sym in MATERIAL_KEYS.items()}
 #: criterion -> material keys it needs (in both bodies)
 CRITERIA = {"flash temperature": ("thermal_conductivity_W_per_m_K", "density_kg_per_m3",
                                   "specific_heat_J_per_kg_K"),
@@ -80,8 +83,7 @@ def _viscosity_law(lub: dict, base: dict, problems: list) -> dict:
     """Keyword arguments of the viscosity law of :class:`Lubricant` ({} and a problem if none)."""
     expo = [k for k in ("viscosity_Pa_s", "temperature_C", "viscosity_temperature_coefficient_per_K")
             if k in lub]
-    walther = [k for k in ("kinematic_viscosity_40C_mm2_per_s", "kinematic_viscosity_100C_mm2_per_s")
-               if k in lub]
+    walther = [k for k in ("kinematic_viscosity_40C", "kinematic_viscosity_100C") if k in lub]  # m^2/s
     visc = {}
     if expo and walther:
         problems.append("lubricant: give either viscosity_Pa_s + temperature_C + "
@@ -99,8 +101,7 @@ def _viscosity_law(lub: dict, base: dict, problems: list) -> dict:
             problems.append("lubricant: the ASTM D341 law needs both kinematic_viscosity_40C_mm2_per_s and "
                             "kinematic_viscosity_100C_mm2_per_s (mm^2/s)")
         else:
-            visc = dict(nu40=lub["kinematic_viscosity_40C_mm2_per_s"],
-                        nu100=lub["kinematic_viscosity_100C_mm2_per_s"])
+            visc = dict(nu40=lub["kinematic_viscosity_40C"], nu100=lub["kinematic_viscosity_100C"])
     elif "nu40" in base:
         visc = dict(nu40=base["nu40"], nu100=base["nu100"])
     else:
@@ -119,9 +120,9 @@ def _lubricant(lub: dict, problems: list) -> Lubricant | None:
         problems.append(f"lubricant.name = {lub['name']!r}: not a table oil ({', '.join(map(repr, OILS))}); "
                         "or give its data (viscosity keys, pressure_viscosity_per_GPa, density_kg_per_m3)")
         return None
-    if "pressure_viscosity_per_GPa" in lub and "alpha_per_Pa" in lub:
+    if "pressure_viscosity" in lub and "alpha_per_Pa" in lub:  # both 1/Pa
         problems.append("lubricant: give pressure_viscosity_per_GPa (1/GPa) or alpha_per_Pa (1/Pa), not both")
-    alpha = lub.get("pressure_viscosity_per_GPa", lub.get("alpha_per_Pa", base.get("alpha")))
+    alpha = lub.get("pressure_viscosity", lub.get("alpha_per_Pa", base.get("alpha")))
     rho = lub.get("density_kg_per_m3", base.get("rho"))
     visc = _viscosity_law(lub, base, problems)
     if alpha is None:
@@ -141,15 +142,15 @@ def _lubricant(lub: dict, problems: list) -> Lubricant | None:
 def _roughness(surf: dict, problems: list) -> float | None:
     rq = []
     for body in ("cam", "roller"):
-        ra, q = f"{body}_Ra_um", f"{body}_Rq_um"
+        ra, q = f"{body}_Ra", f"{body}_Rq"  # m (scene keys *_Ra_um, *_Rq_um)
         if ra in surf and q in surf:
-            problems.append(f"surface: give {ra} or {q} (um), not both")
+            problems.append(f"surface: give {ra}_um or {q}_um (um), not both")
         elif q in surf:
             rq.append(surf[q])
         elif ra in surf:
             rq.append(RQ_PER_RA * surf[ra])          # Gaussian heights: Rq = sqrt(pi/2) Ra
         else:
-            problems.append(f"surface.{ra}: missing (um; or {q})")
+            problems.append(f"surface.{ra}_um: missing (um; or {q}_um)")
     if len(rq) < 2:
         return None
     sigma = float((rq[0] ** 2 + rq[1] ** 2) ** 0.5)
@@ -207,7 +208,7 @@ def assessment_inputs(scene, *, lubricated: bool = True) -> AssessInputs:
         raise SceneError(f"scene {where}: {n} problem{'s' if n > 1 else ''} for the assessment\n  "
                          + "\n  ".join(problems))
     mats = tri.get("materials", {})
-    props = {b: {MATERIAL_KEYS[k]: v for k, v in mats.get(b, {}).items()} for b in ("cam", "roller")}
+    props = {b: {_BY_SI_NAME[k]: v for k, v in mats.get(b, {}).items()} for b in ("cam", "roller")}
     skipped = {}
     for crit, keys in CRITERIA.items():
         miss = [f"[materials.{b}] {k}" for k in keys for b in ("cam", "roller")

@@ -203,7 +203,7 @@ class CamGlobalModel:
                    "condensation": time.perf_counter() - t1}
         return cls(disk=disk, length=float(length), plane=plane, stations=P, psi=psi, theta=theta,
                    wb=arc_weights(n_b, hb, True),
-                   bore_force=hat_resultants(cam, Bb), A=Ur[:, k:] + A_sh, Uf=Ur[:, :k], Hf=Hall[:, :k],
+                   bore_force=hat_resultants(Bb), A=Ur[:, k:] + A_sh, Uf=Ur[:, :k], Hf=Hall[:, :k],
                    H=Hall[:, k:], bodies=bodies, timings=timings,
                    n_dofs=sum(b.n_dofs for b in bodies.values()))
 

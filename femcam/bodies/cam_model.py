@@ -207,7 +207,7 @@ def torque_vector(body, bore, centre) -> np.ndarray:
     return f / moment
 
 
-def hat_resultants(body, B) -> np.ndarray:
+def hat_resultants(B) -> np.ndarray:
     """x and y sums of the nodal forces of the columns of ``B`` (per unit hat value).
 
     On a bore of 64 vertices the chord-integrated radial hats give 0.12 % less than
@@ -215,10 +215,8 @@ def hat_resultants(body, B) -> np.ndarray:
 
     Parameters
     ----------
-    body : femcam.fe.elasticity.Body
-        The body ``B`` acts on (unused: the DOFs are interleaved x, y as in scikit-fem).
     B : ndarray, shape (n_dofs, k)
-        Nodal forces of unit pressure hats [N/m per Pa].
+        Nodal forces of unit pressure hats [N/m per Pa], DOFs interleaved x, y (scikit-fem).
 
     Returns
     -------
@@ -415,7 +413,7 @@ class CamDiskModel:
                    "factorisation": sum(b.t_factor for b in bodies.values()),
                    "condensation": time.perf_counter() - t1}
         return cls(disk=disk, roller=roller, Rr=float(Rr), rho=float(rho), length=float(length), plane=plane,
-                   x=x, w=w, theta=theta, wb=arc_weights(n_b, hb, True), bore_force=hat_resultants(cam, Bb),
+                   x=x, w=w, theta=theta, wb=arc_weights(n_b, hb, True), bore_force=hat_resultants(Bb),
                    centre=centre, A=A, H=H,
                    A_local=A_local, bodies=bodies, loads=loads, timings=timings,
                    n_dofs=sum(b.n_dofs for k, b in bodies.items() if k != "local_cam"))

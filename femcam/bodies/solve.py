@@ -185,7 +185,9 @@ def solve_ring(model, *, F: float, rho: float, cage: float = 0.0, max_secant: in
     PhysicsError
         The cam contact reaches the end of the fine zone, or the pin contact wraps the pin.
     ConvergenceError
-        The needle loads or the active set do not settle.
+        The needle loads or the active set do not settle; carries the residual history (the
+        relative change of the needle loads at each secant iteration, or the active-set
+        residuals).
     """
     F = _validate.positive("F", F, "N")
     rho = float(rho)
@@ -204,7 +206,7 @@ def solve_ring(model, *, F: float, rho: float, cage: float = 0.0, max_secant: in
                              np.sin(phi) < -0.8])
     needles = b.support == "needles"
     Qn = np.full(phi.size, W / max(phi.size, 1) * 4)
-    it_total = 0
+    it_total, history = 0, []  # relative change of the needle loads per secant iteration
     for _ in range(max_secant if needles else 1):
         A = A0.copy()
         if needles:
@@ -215,12 +217,13 @@ def solve_ring(model, *, F: float, rho: float, cage: float = 0.0, max_secant: in
         active = sol.active
         Q_new = sol.lam[nc:]
         change = float(np.max(np.abs(Q_new - Qn))) / max(float(Q_new.max()), 1e-300)
+        history.append(change)
         Qn = Q_new
         if not needles or change < tol:
             break
     else:
         raise ConvergenceError(f"needle loads did not settle in {max_secant} secant iterations "
-                               f"(last relative change {change:.3g})", (change,))
+                               f"(last relative change {change:.3g})", tuple(history))
     lam = sol.lam
     p = lam[:nc]
     if active[0] or active[nc - 1]:

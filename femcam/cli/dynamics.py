@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import csv
 import math
+import os
 import shlex
 import sys
 from pathlib import Path
@@ -39,9 +40,34 @@ def register(subparsers) -> None:
     p.add_argument("--rpm-sweep", metavar="START:STOP:STEP", default=None,
                    help="also sweep the cam speed (rpm, stop inclusive) and find the jump speed")
     p.add_argument("--workers", type=int, default=1, metavar="N",
-                   help="processes for the rpm sweep (default 1)")
+                   help="processes for the rpm sweep (default 1; capped at the CPU cores and "
+                        "the number of speeds)")
     add_no_plots(p)
     p.set_defaults(func=run)
+
+
+def _useful_workers(requested: int, n_speeds: int) -> tuple:
+    """Cap ``--workers`` at the CPU cores and the number of speeds (more processes only wait),
+    as ``femcam sweep`` does (:func:`femcam.cli.sweep.useful_workers`).
+
+    Parameters
+    ----------
+    requested : int
+        ``--workers`` after validation, ``>= 1``.
+    n_speeds : int
+        Number of speeds of the rpm sweep.
+
+    Returns
+    -------
+    (int, str)
+        ``(workers, note)``; ``note`` says why it was capped ("" when not).
+    """
+    cores = os.cpu_count() or 1
+    cap = max(1, min(cores, n_speeds))
+    if requested <= cap:
+        return requested, ""
+    return cap, (f"--workers {requested} capped at {cap} (the useful number: {cores} CPU cores, "
+                 f"{n_speeds} speeds)")
 
 
 def _rpm_range(text: str):
@@ -126,6 +152,9 @@ def run(args) -> int:
 
         print(f"  png: {plot_force({scene.train.model: r}, out / 'dynamics_force.png')}")
     if rpm is not None:
+        workers, note = _useful_workers(workers, rpm.size)
+        if note:
+            print(f"  {note}")
         sw = rpm_sweep(scene.train, scene.program, rpm, steps_per_rev=scene.steps_per_rev,
                        workers=workers)
         j = jump_speed(scene.train, scene.program, rpm[0], rpm[-1],

@@ -36,7 +36,7 @@ from .. import _validate
 from ..errors import InputError
 from ..kinematics import CamProgram
 from .model import TrainModel
-from .periodic import _check_follows, _setup, choose_steps, linear_periodic, periodic_response
+from .periodic import _check_follows, _setup, _whole, choose_steps, linear_periodic, periodic_response
 
 RPM = 30.0 / math.pi  # rad/s -> rpm
 
@@ -107,7 +107,8 @@ def jump_speed(train: TrainModel, program: CamProgram, rpm_lo: float, rpm_hi: fl
     rpm_lo, rpm_hi : float
         Speed range [rpm], ``0 < rpm_lo < rpm_hi``.
     n_scan : int, optional
-        Number of scanned speeds before the Brent refinement (at least 2 used). Default 40.
+        Number of scanned speeds before the Brent refinement, a whole number >= 1 (at least 2
+        used). Default 40.
     steps_per_rev : int or None, optional
         Time steps per revolution (``>= 16``); None (default) picks enough for ``rpm_lo``.
     xtol_rpm : float, optional
@@ -128,7 +129,7 @@ def jump_speed(train: TrainModel, program: CamProgram, rpm_lo: float, rpm_hi: fl
     hi = _validate.positive("rpm_hi", rpm_hi, "rpm")
     if hi <= lo:
         raise _validate.fail("rpm_hi", rpm_hi, "rpm", f"must be > rpm_lo = {lo:g} rpm")
-    n_scan = int(_validate.positive("n_scan", n_scan, ""))
+    n_scan = _whole("n_scan", n_scan, 1)
     _check_follows(train, hi / RPM)
     N = choose_steps(train, lo / RPM, steps_per_rev)
 
@@ -246,12 +247,14 @@ def rpm_sweep(train: TrainModel, program: CamProgram, rpm, *, steps_per_rev=None
     Raises
     ------
     InputError
-        Non-finite or non-positive speeds, or ``workers < 1``.
+        Non-finite or non-positive speeds, or ``workers`` or ``max_cycles`` not a whole
+        number >= 1.
     """
     rpm = np.atleast_1d(_validate.finite_array("rpm", rpm, "rpm"))
     if np.any(rpm <= 0):
         raise _validate.fail("rpm", float(rpm[rpm <= 0][0]), "rpm", "every speed must be > 0")
-    workers = int(_validate.positive("workers", workers, ""))
+    workers = _whole("workers", workers, 1)
+    max_cycles = _whole("max_cycles", max_cycles, 1)
     jobs = [(train, program, float(r), steps_per_rev, max_cycles) for r in rpm]
     if workers == 1:
         rows = [_one(j) for j in jobs]

@@ -378,6 +378,47 @@ def _iterate_cycles(train, modes, U, z0, scale, tol, max_cycles):
     return Z, C, cycles, events, residual, converged, msg
 
 
+def _whole(name: str, value, lo: int) -> int:
+    """A count given as a whole number ``>= lo`` (an int, or a float without fraction).
+
+    Parameters
+    ----------
+    name : str
+        Parameter name for the message.
+    value : int or float
+        The count.
+    lo : int
+        Smallest accepted value.
+
+    Returns
+    -------
+    int
+        The count.
+
+    Raises
+    ------
+    InputError
+        Not a finite number, a fraction (``2.5``: never truncated) or below ``lo``.
+
+    Examples
+    --------
+    >>> _whole("cycles", 3.0, 1)
+    3
+    """
+    x = _validate.number(name, value, "")
+    if x != int(x) or x < lo:
+        raise _validate.fail(name, value, "", f"must be a whole number >= {lo}")
+    return int(x)
+
+
+def _check_types(train, program) -> None:
+    """InputError unless ``train`` is a TrainModel and ``program`` a CamProgram."""
+    if not isinstance(train, TrainModel):
+        raise InputError(f"train = {train!r}: must be a TrainModel")
+    if not isinstance(program, CamProgram):
+        raise InputError(f"program = {program!r}: must be a CamProgram")
+
+
 def periodic_response(train: TrainModel, program: CamProgram, omega: float, *,
                       steps_per_rev=None, tol: float = 1e-9, max_cycles: int = 400,
                       ) -> DynamicsResult:
@@ -425,13 +466,10 @@ def periodic_response(train: TrainModel, program: CamProgram, omega: float, *,
     >>> r.converged, r.cycles, r.any_liftoff, r.steps_per_rev
     (True, 1, False, 3600)
     """
-    if not isinstance(train, TrainModel):
-        raise InputError(f"train = {train!r}: must be a TrainModel")
-    if not isinstance(program, CamProgram):
-        raise InputError(f"program = {program!r}: must be a CamProgram")
+    _check_types(train, program)
     omega = _validate.positive("omega", omega, "rad/s")
     tol = _validate.positive("tol", tol, "")
-    max_cycles = int(_validate.positive("max_cycles", max_cycles, ""))
+    max_cycles = _whole("max_cycles", max_cycles, 1)
     f = train.follower
     _check_follows(train, omega)
     N = choose_steps(train, omega, steps_per_rev)
@@ -487,14 +525,25 @@ def simulate(train: TrainModel, program: CamProgram, omega: float, *, z0=None,
         Contact flags.
     Fc_axial : ndarray, shape (M+1,)
         Axial contact force [N], 0 in free flight.
+
+    Raises
+    ------
+    InputError
+        Wrong argument types, a ``z0`` of the wrong shape, a ``cycles`` that is not a whole
+        number >= 1, or the refusals of :func:`choose_steps`.
     """
+    _check_types(train, program)
     omega = _validate.positive("omega", omega, "rad/s")
     N = choose_steps(train, omega, steps_per_rev)
-    ncyc = int(_validate.positive("cycles", cycles, ""))
+    ncyc = _whole("cycles", cycles, 1)
+    n2 = 2 * train.ndof
+    z = np.zeros(n2) if z0 is None else _validate.finite_array("z0", z0, "(m, m/s)")
+    if z.shape != (n2,):
+        raise _validate.fail("z0", z0, "(m, m/s)", f"must have shape ({n2},): the {train.ndof} "
+                             f"errors e [m] then their rates e' [m/s]; got shape {z.shape}")
     _, _, _, _, _, U1, modes = _setup(train, program, omega, N)
     theta = np.linspace(0.0, 2.0 * math.pi * ncyc, N * ncyc + 1)
     U = np.vstack([U1[:-1]] * ncyc + [U1[-1:]])
-    z = np.zeros(2 * train.ndof) if z0 is None else np.asarray(z0, float)
     Z, C, _ = march(train, modes, U, z, bool(train.trial_force(z) > 0.0))
     F = np.where(C, np.maximum(train.trial_force(Z), 0.0), 0.0)
     return theta, Z, C, F

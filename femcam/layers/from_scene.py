@@ -27,7 +27,7 @@ def scene_layers(scene) -> dict:
     Parameters
     ----------
     scene : femcam.scene.Scene
-        A loaded scene (``scene.layers`` holds SI values under the unit-named keys).
+        A loaded scene (``scene.layers`` holds SI values under SI names).
 
     Returns
     -------
@@ -47,15 +47,15 @@ def scene_layers(scene) -> dict:
         if "coating" in tabs:
             c = tabs["coating"]
             out["coating"] = (body, Coating(
-                thickness=c["thickness_um"], material=Material(E=c["E_GPa"], nu=c["nu"],
-                                                               name=c.get("name", "coating")),
-                interface_shear_strength=c.get("interface_shear_strength_MPa"),
-                hardness=c.get("hardness_MPa")))
+                thickness=c["thickness"], material=Material(E=c["E"], nu=c["nu"],
+                                                            name=c.get("name", "coating")),
+                interface_shear_strength=c.get("interface_shear_strength"),
+                hardness=c.get("hardness")))
         if "case" in tabs:
             c = tabs["case"]
-            case = Case(depth=c["depth_mm"], surface_hardness=c.get("surface_hardness_HV"),
-                        core_hardness=c.get("core_hardness_HV"), surface_yield=c.get("surface_yield_MPa"),
-                        core_yield=c.get("core_yield_MPa"), law=c.get("hardness_law", "exponential"))
+            case = Case(depth=c["depth"], surface_hardness=c.get("surface_hardness"),
+                        core_hardness=c.get("core_hardness"), surface_yield=c.get("surface_yield"),
+                        core_yield=c.get("core_yield"), law=c.get("hardness_law", "exponential"))
             size = scene.follower.Rb if body == "cam" else getattr(scene.follower, "Rr", math.inf)
             case.check_body(size, body)
             out["case"] = (body, case)

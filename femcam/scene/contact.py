@@ -8,7 +8,7 @@ values are SI.
 from __future__ import annotations
 
 from .checker import _Checker, _fmt
-from .schema import _CASE, _COATING, _CONTACT, _LUBRICANT, _SURFACE
+from .schema import _CASE, _COATING, _CONTACT, _LUBRICANT, _SURFACE, si_named
 
 
 def _contact(ck: _Checker, raw: dict) -> dict:
@@ -18,11 +18,12 @@ def _contact(ck: _Checker, raw: dict) -> dict:
 
 def _tribology(ck: _Checker, raw: dict, mats: dict) -> dict:
     """Checked SI values of the assessment keys (femcam.assess): [lubricant], [surface],
-    [operating] oil_temperature_C and the material extras."""
+    [operating] oil_temperature_C and the material extras; keys named by
+    :data:`~femcam.scene.schema.SI_NAMES` (``cam_Ra`` in m, ``pressure_viscosity`` in 1/Pa)."""
     tribo = {"materials": mats.pop("extra")} if "extra" in mats else {}
     for t, spec in (("lubricant", _LUBRICANT), ("surface", _SURFACE)):
         if t in raw:
-            tribo[t] = ck.table(raw[t], t, spec)
+            tribo[t] = si_named(ck.table(raw[t], t, spec))
     op = raw.get("operating", {})
     if isinstance(op, dict) and isinstance(op.get("oil_temperature_C"), int | float):
         tribo["oil_temperature_C"] = float(op["oil_temperature_C"])  # checked by _operating
@@ -31,7 +32,8 @@ def _tribology(ck: _Checker, raw: dict, mats: dict) -> dict:
 
 
 def _layers(ck: _Checker, raw: dict) -> dict:
-    """``{body: {"coating": {...}, "case": {...}}}`` (SI, checked) from [materials.<body>.*]."""
+    """``{body: {"coating": {...}, "case": {...}}}`` (SI, checked) from [materials.<body>.*],
+    keys named by :data:`~femcam.scene.schema.SI_NAMES` (``thickness``, ``depth`` in m, ...)."""
     out = {}
     mraw = raw.get("materials", {}) if isinstance(raw.get("materials", {}), dict) else {}
     for alias, tabs in mraw.items():
@@ -51,4 +53,4 @@ def _layers(ck: _Checker, raw: dict) -> dict:
         if case and (len(given) != 1 or not all(k in case for k in given[0])):
             ck.add(f"materials.{alias}.case", "give surface_hardness_HV and core_hardness_HV, or "
                    "surface_yield_MPa and core_yield_MPa (one complete pair)")
-    return out
+    return {b: {t: si_named(v) for t, v in tabs.items()} for b, tabs in out.items()}

@@ -8,11 +8,11 @@ from __future__ import annotations
 
 from ..materials import E_PHYSICAL, Material
 from .checker import _Checker, _fmt
-from .schema import _BODY_MATERIALS, _MATERIAL, _MATERIAL_EXTRA
+from .schema import _BODY_MATERIALS, _MATERIAL, _MATERIAL_EXTRA, si_named
 
 
 def _materials(ck: _Checker, raw: dict) -> dict:
-    """``{"cam": Material, "roller": Material, "extra": {body: {key: SI value}}}`` from
+    """``{"cam": Material, "roller": Material, "extra": {body: {SI name: SI value}}}`` from
     [materials.*] (roller alias follower; ``extra``: the assessment keys, when given)."""
     mats = {}
     mraw = raw.get("materials", {})
@@ -51,7 +51,7 @@ def _material(ck: _Checker, alias: str, m: dict, given: dict) -> Material | None
 def _body_material(ck: _Checker, mats: dict, k: str, alias: str, given) -> None:
     """Check [materials.<alias>] and put body ``k``'s Material (and assessment extras) in ``mats``."""
     m = ck.table(given, f"materials.{alias}", _MATERIAL, extra=("coating", "case"))
-    extra = {x: m[x] for x in _MATERIAL_EXTRA if x in m}
+    extra = si_named({x: m[x] for x in _MATERIAL_EXTRA if x in m})
     if extra:  # assessment data (femcam.assess), kept in Scene.tribology["materials"]
         mats.setdefault("extra", {})[k] = extra
     if "E_GPa" in m and "nu" in m:

@@ -141,6 +141,45 @@ _CASE = {"depth_mm": ("mm", 1e-3, "pos", True), "hardness_law": ("", None, "str"
          "core_hardness_HV": ("HV", 9.80665e6, "pos", False),
          "surface_yield_MPa": ("MPa", 1e6, "pos", False), "core_yield_MPa": ("MPa", 1e6, "pos", False)}
 
+# ---- SI names of the values the scene hands on (Scene.layers, Scene.tribology) -----------------
+#: scene key (edge unit in the name) -> the name of its SI value in the dicts the scene hands on
+#: (units only at the edges: a key that names mm must not hold m). Keys not listed keep their
+#: name: dimensionless, already SI-named (``density_kg_per_m3``, ``alpha_per_Pa``), or degC
+#: (``temperature_C``, ``scuffing_temperature_C``: kept in degC, as named).
+SI_NAMES = {"thickness_um": "thickness", "E_GPa": "E", "interface_shear_strength_MPa":
+            "interface_shear_strength", "hardness_MPa": "hardness", "wear_k_mm3_per_N_m": "wear_k",
+            "depth_mm": "depth", "surface_hardness_HV": "surface_hardness",
+            "core_hardness_HV": "core_hardness", "surface_yield_MPa": "surface_yield",
+            "core_yield_MPa": "core_yield", "yield_strength_MPa": "yield_strength",
+            "contact_fatigue_strength_MPa": "contact_fatigue_strength",
+            "shear_fatigue_limit_MPa": "shear_fatigue_limit",
+            "kinematic_viscosity_40C_mm2_per_s": "kinematic_viscosity_40C",
+            "kinematic_viscosity_100C_mm2_per_s": "kinematic_viscosity_100C",
+            "pressure_viscosity_per_GPa": "pressure_viscosity", "cam_Ra_um": "cam_Ra",
+            "roller_Ra_um": "roller_Ra", "cam_Rq_um": "cam_Rq", "roller_Rq_um": "roller_Rq"}
+
+
+def si_named(table: dict) -> dict:
+    """A checked table (SI values) with its keys renamed by :data:`SI_NAMES`.
+
+    Parameters
+    ----------
+    table : dict
+        Scene key -> value already converted to SI by the checker.
+
+    Returns
+    -------
+    dict
+        The same values under their SI names (hardness in Pa, lengths in m, 1/Pa, m^2/s).
+
+    Examples
+    --------
+    >>> si_named({"thickness_um": 2e-6, "nu": 0.3})
+    {'thickness': 2e-06, 'nu': 0.3}
+    """
+    return {SI_NAMES.get(k, k): v for k, v in table.items()}
+
+
 # ---- study settings read by `femcam sweep` (CLI flags override them): [fe], [sweep] ----------
 #: sweep methods: ``fe`` (the FE answers every contact angle), ``hertz`` (analytic only),
 #: ``auto`` (the cheapest model within the tolerance)

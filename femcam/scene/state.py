@@ -126,12 +126,15 @@ class Scene:
         not given or invalid.
     layers : dict
         Coatings and cases per body (``{body: {"coating": {...}, "case": {...}}}``, SI, checked;
-        :func:`femcam.layers.scene_layers` builds them).
+        :func:`femcam.layers.scene_layers` builds them), under the SI names of
+        :data:`femcam.scene.schema.SI_NAMES` (``thickness``, ``depth`` in m, ``E``, ``hardness``,
+        ``surface_hardness`` in Pa, ``wear_k`` in m^3/(N m)).
     source_path : str
         The scene file ("" if built in code).
     tribology : dict
-        Checked SI values of the assessment keys: ``lubricant``, ``surface`` (m),
-        ``oil_temperature_C`` (degC), ``materials`` (per body).
+        Checked SI values of the assessment keys: ``lubricant``, ``surface`` (``cam_Ra`` ... in
+        m), ``oil_temperature_C`` (degC), ``materials`` (per body, ``yield_strength`` ... in Pa),
+        under the SI names of :data:`femcam.scene.schema.SI_NAMES`.
     raw : dict
         The parsed TOML.
     train : femcam.dynamics.TrainModel or None

@@ -142,7 +142,9 @@ LAYER_CSV = (("interface_tau_max_MPa", 1e-6), ("interface_sn_min_MPa", 1e-6),
              ("interface_sn_max_MPa", 1e-6), ("interface_utilisation", 1.0),
              ("coating_sx_max_MPa", 1e-6), ("coating_sx_utilisation", 1.0),
              ("case_utilisation_max", 1.0), ("case_z_at_max_mm", 1e3), ("case_margin", 1.0))
-LAYERS = tuple((f"layer_{csv}", csv, f) for csv, f in LAYER_CSV)
+#: internal names are SI (``layer_interface_tau_max`` in Pa, ``layer_case_z_at_max`` in m); the
+#: CSV name carries the unit
+LAYERS = tuple((f"layer_{csv.removesuffix('_MPa').removesuffix('_mm')}", csv, f) for csv, f in LAYER_CSV)
 
 
 def axial_contact(rows) -> tuple[np.ndarray, np.ndarray]:
@@ -376,8 +378,8 @@ def layers_chunk(task, rows) -> dict:
     Returns
     -------
     dict[str, ndarray]
-        ``layer_*`` columns, SI values (:data:`LAYERS`; the ``_MPa``/``_mm`` in the
-        names is the CSV unit, the table holds Pa/m).
+        ``layer_*`` columns under their SI names, SI values (:data:`LAYERS`; the CSV names
+        carry the unit).
     """
     n = task.theta.size
     out = {si: np.full(n, np.nan) for si, _, _ in LAYERS}
@@ -495,7 +497,7 @@ CAM_DISK_PANELS = (("cam bore hoop stress (MPa)", (("camdisk_hoop_max", "largest
                                                   "cam bore", MPA),), False),
                    ("shaft contact pressure (MPa)", (("camdisk_shaft_p0", "shaft-bore peak pressure", MPA),),
                     False))
-LAYER_PANELS = (("interface shear (MPa)", (("layer_interface_tau_max_MPa", "max |tau| at the interface",
+LAYER_PANELS = (("interface shear (MPa)", (("layer_interface_tau_max", "max |tau| at the interface",
                                              MPA),), False),
                  ("utilisation (-)", (("layer_interface_utilisation", "interface shear / strength", 1.0),
                                       ("layer_case_utilisation_max", "case: tau1 / k(z) max", 1.0)), False))

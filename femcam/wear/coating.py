@@ -174,15 +174,15 @@ def coating_wear(scene) -> CoatingWear | None:
     """
     for body, tabs in (getattr(scene, "layers", None) or {}).items():
         c = tabs.get("coating") if isinstance(tabs, dict) else None
-        if not c or not ("wear_k_mm3_per_N_m" in c or "wear_K" in c):
+        if not c or not ("wear_k" in c or "wear_K" in c):
             continue
-        if "wear_k_mm3_per_N_m" in c:
-            k, src = c["wear_k_mm3_per_N_m"], (f"[materials.{body}.coating] wear_k_mm3_per_N_m = "
-                                               f"{c['wear_k_mm3_per_N_m'] * 1e9:g}")
+        if "wear_k" in c:  # SI names (femcam.scene.schema.SI_NAMES): m^3/(N m), Pa, m
+            k, src = c["wear_k"], (f"[materials.{body}.coating] wear_k_mm3_per_N_m = "
+                                   f"{c['wear_k'] * 1e9:g}")
         else:
-            k = c["wear_K"] / c["hardness_MPa"]
+            k = c["wear_K"] / c["hardness"]
             src = (f"[materials.{body}.coating] wear_K = {c['wear_K']:g} / hardness_MPa = "
-                   f"{c['hardness_MPa'] / 1e6:g}")
-        return CoatingWear(body=body, thickness=c["thickness_um"], k_coating=k,
+                   f"{c['hardness'] / 1e6:g}")
+        return CoatingWear(body=body, thickness=c["thickness"], k_coating=k,
                            k_substrate=wear_coefficient_info(scene)[0], source=src)
     return None
