@@ -27,6 +27,7 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.sparse as sp
 
 from .. import _validate
 from ..fe.elasticity import assemble_body
@@ -78,7 +79,11 @@ class CamGlobalModel:
     each bore hat (m, as the refined model); A: bore radial compliance (m/Pa) of
     cam + shaft; Uf (n_b, 2 N_s + 1), Hf: bore radial displacement (m/N per m) and hoop stress
     (Pa per N/m) of the unit station forces (x, y interleaved) and the unit torque (last); H: hoop
-    per bore pressure (Pa/Pa).
+    per bore pressure (Pa/Pa); station_nodes, bore_nodes: their vertex indices in the cam mesh;
+    loads: ``"bore"`` (sparse, n_dofs x n_b) nodal forces of the bore pressure hats and
+    ``"torque"`` (n_dofs,) of the unit drive torque, for the full field of a load case
+    (:func:`femcam.bodies.cam_export.global_cam_fields`); cache: per-model scratch (the cam's
+    stress operator, built on first use).
     """
 
     disk: CamDisk
@@ -96,6 +101,10 @@ class CamGlobalModel:
     bodies: dict
     timings: dict
     n_dofs: int
+    station_nodes: np.ndarray
+    bore_nodes: np.ndarray
+    loads: dict
+    cache: dict = dataclasses.field(default_factory=dict)
 
     @classmethod
     def build(cls, *, disk: CamDisk, length: float, cam_mesh: CamMeshOptions | None = None,
@@ -122,7 +131,8 @@ class CamGlobalModel:
         B = np.zeros((cam.n_dofs, 2 * n_s + 1))
         B[cam.basis.nodal_dofs[0, out], 2 * np.arange(n_s)] = 1.0
         B[cam.basis.nodal_dofs[1, out], 2 * np.arange(n_s) + 1] = 1.0
-        B[:, -1] = torque_vector(cam, bore, (0.0, 0.0))
+        torque = torque_vector(cam, bore, (0.0, 0.0))
+        B[:, -1] = torque
         Bb = arc_load_matrix(cam, bore, (0.0, 0.0), closed=True)
         dx, dy, ex, ey = radial_measure(cam, bore, (0.0, 0.0))
         U, Hall = _condense(cam, np.hstack([B, Bb]), np.concatenate([dx, dy]), _hoop_rows(cam, bore, theta))
@@ -137,7 +147,8 @@ class CamGlobalModel:
                    wb=arc_weights(n_b, hb, True),
                    bore_force=hat_resultants(cam, Bb), A=Ur[:, k:] + A_sh, Uf=Ur[:, :k], Hf=Hall[:, :k],
                    H=Hall[:, k:], bodies=bodies, timings=timings,
-                   n_dofs=sum(b.n_dofs for b in bodies.values()))
+                   n_dofs=sum(b.n_dofs for b in bodies.values()), station_nodes=out, bore_nodes=bore,
+                   loads={"bore": sp.csr_matrix(Bb), "torque": torque})
 
     def load_weights(self, C: np.ndarray, f: np.ndarray) -> np.ndarray:
         """(n_angles, 2 N_s + 1) load coefficients of the contact forces ``f`` (2, n; N/m, on

@@ -43,6 +43,53 @@ def refined_at(scene, disk, theta: float, **kw):
     return m, solve_cam_disk(m, F=F)
 
 
+def check_local_body(scene, theta: float, *, tolerance: float, disk=None) -> dict:
+    """Verify, at one cam angle, that today's local cam body gives the contact's p0 and a: one
+    fully refined model of the whole disk on its shaft (:func:`refined_at`) against the local
+    body at the same contact vertices, with the same roller (frictionless both).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A scene with ``[cam] bore_mm``.
+    theta : float
+        Cam angle (rad); the sweep uses the angle of its largest contact force.
+    tolerance : float
+        The sweep's tolerance (relative): a larger ``|dp0|`` or ``|da|`` is flagged.
+    disk : CamDisk, optional
+        Default :func:`~femcam.bodies.cam_rows.disk_from_scene`.
+
+    Returns
+    -------
+    dict
+        JSON-able: ``theta_deg``, ``Fc_N``, ``p0_disk_MPa``, ``p0_local_MPa``, ``dp0`` (disk /
+        local - 1), ``a_disk_um``, ``a_local_um``, ``da``, ``x0_um`` (the disk's contact centre: the
+        drive torque twists the hub and moves it; the local body carries no torque),
+        ``tolerance``, ``exceeds`` (bool),
+        ``converged``, ``n_dofs``, ``time_s``, ``line`` (one sentence with the numbers) and
+        ``flag`` (the sentence when it exceeds the tolerance, else "").
+    """
+    t0 = time.perf_counter()
+    disk = disk_from_scene(scene) if disk is None else disk
+    m, r = refined_at(scene, disk, float(theta))
+    worst = max(abs(r.dp0), abs(r.da))
+    exceeds = bool(worst > tolerance)
+    p0s = f"p0 {r.p0 / 1e6:.2f} vs {r.p0_local / 1e6:.2f} MPa ({100 * r.dp0:+.3f} %)"
+    a_s = f"a {r.a * 1e6:.2f} vs {r.a_local * 1e6:.2f} um ({100 * r.da:+.3f} %)"
+    line = (f"cam disk check at {math.degrees(theta):.1f} deg (Fc = {r.F:.1f} N, one fully refined model "
+            f"of the disk on its shaft vs today's local cam body): {p0s}, {a_s}, contact centre moved "
+            f"{r.x0 * 1e6:+.2f} um; "
+            + (f"EXCEEDS the sweep tolerance {100 * tolerance:g} %: the sweep's p0, a (local body) "
+               f"are off by up to {100 * worst:.3f} %" if exceeds else
+               f"within the sweep tolerance {100 * tolerance:g} %"))
+    return {"theta_deg": math.degrees(theta), "Fc_N": r.F, "p0_disk_MPa": r.p0 / 1e6,
+            "p0_local_MPa": r.p0_local / 1e6, "dp0": r.dp0, "a_disk_um": r.a * 1e6,
+            "a_local_um": r.a_local * 1e6, "da": r.da, "x0_um": r.x0 * 1e6, "tolerance": float(tolerance),
+            "exceeds": exceeds,
+            "converged": bool(r.converged), "n_dofs": int(m.n_dofs), "time_s": time.perf_counter() - t0,
+            "line": line, "flag": line if exceeds else ""}
+
+
 def _contact_at(scene, theta):
     C, n, _, _ = contact_frame(scene, theta)
     return C[:, None], n[:, None]
