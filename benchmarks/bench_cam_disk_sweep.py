@@ -97,14 +97,15 @@ def main_bench() -> None:
     with tempfile.TemporaryDirectory() as d:
         res = [run(k, v, args.angles_deg, Path(d)) for k, v in FITS.items()]
     print("\n| shaft fit | sweep wall (s) | check: time (s), DOFs | check: p0 disk / local (MPa) | "
-          "check: a disk / local (um) | contact move (um) | camdisk VTUs | max bore hoop (MPa) | "
-          "max shaft p0 (MPa) | load average |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+          "check: a disk / local (um) | contact move (um) | with the move: dp0, da | camdisk VTUs | "
+          "max bore hoop (MPa) | max shaft p0 (MPa) | load average |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for r in res:
         c = r["check"]
         print(f"| {r['fit']} | {r['wall']:.2f} | {c['time_s']:.2f}, {c['n_dofs']} | "
               f"{c['p0_disk_MPa']:.2f} / {c['p0_local_MPa']:.2f} ({100 * c['dp0']:+.3f} %) | "
               f"{c['a_disk_um']:.2f} / {c['a_local_um']:.2f} ({100 * c['da']:+.3f} %) | {c['x0_um']:+.2f} | "
+              f"{100 * c['dp0_moved']:+.3f} %, {100 * c['da_moved']:+.3f} % | "
               f"{r['n_vtu']} | {r['hoop']:.1f} | {r['shaft']:.1f} | {r['load'][0]:.1f} |")
     t = vtu_time()
     print(f"\none camdisk VTU (global model, one back-substitution + meshio write): {1e3 * t:.0f} ms, "
