@@ -27,6 +27,7 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.sparse as sp
 
 from .. import _validate
 from ..fe.elasticity import assemble_body
@@ -115,6 +116,14 @@ class CamGlobalModel:
         Bore hoop stress per the same unit loads [Pa per N/m; Pa per N m/m].
     H : ndarray, shape (n_b, n_b)
         Bore hoop stress per bore pressure [Pa/Pa].
+    station_nodes, bore_nodes : ndarray of int
+        Vertex indices of the stations and of the bore in the cam mesh.
+    loads : dict
+        ``"bore"`` (sparse, n_dofs x n_b) nodal forces of the bore pressure hats [N/m per Pa]
+        and ``"torque"`` (n_dofs,) of the unit drive torque, for the full field of a load case
+        (:func:`femcam.bodies.cam_export.global_cam_fields`).
+    cache : dict
+        Per-model scratch (the cam's stress operator, built on first use).
     bodies : dict of str to femcam.fe.elasticity.Body
         ``"cam"`` and, with an elastic shaft, ``"shaft"``.
     timings : dict of str to float
@@ -138,6 +147,10 @@ class CamGlobalModel:
     bodies: dict
     timings: dict
     n_dofs: int
+    station_nodes: np.ndarray
+    bore_nodes: np.ndarray
+    loads: dict
+    cache: dict = dataclasses.field(default_factory=dict)
 
     @classmethod
     def build(cls, *, disk: CamDisk, length: float, cam_mesh: CamMeshOptions | None = None,
@@ -190,7 +203,8 @@ class CamGlobalModel:
         B = np.zeros((cam.n_dofs, 2 * n_s + 1))
         B[cam.basis.nodal_dofs[0, out], 2 * np.arange(n_s)] = 1.0
         B[cam.basis.nodal_dofs[1, out], 2 * np.arange(n_s) + 1] = 1.0
-        B[:, -1] = torque_vector(cam, bore, (0.0, 0.0))
+        torque = torque_vector(cam, bore, (0.0, 0.0))
+        B[:, -1] = torque
         Bb = arc_load_matrix(cam, bore, (0.0, 0.0), closed=True)
         dx, dy, ex, ey = radial_measure(cam, bore, (0.0, 0.0))
         U, Hall = _condense(cam, np.hstack([B, Bb]), np.concatenate([dx, dy]), _hoop_rows(cam, bore, theta))
@@ -205,7 +219,8 @@ class CamGlobalModel:
                    wb=arc_weights(n_b, hb, True),
                    bore_force=hat_resultants(Bb), A=Ur[:, k:] + A_sh, Uf=Ur[:, :k], Hf=Hall[:, :k],
                    H=Hall[:, k:], bodies=bodies, timings=timings,
-                   n_dofs=sum(b.n_dofs for b in bodies.values()))
+                   n_dofs=sum(b.n_dofs for b in bodies.values()), station_nodes=out, bore_nodes=bore,
+                   loads={"bore": sp.csr_matrix(Bb), "torque": torque})
 
     def load_weights(self, C: np.ndarray, f: np.ndarray) -> np.ndarray:
         """Station load coefficients of the contact forces, split between the bracketing stations,

@@ -67,9 +67,12 @@ def _cam_yield(scene):
     return float(y) if isinstance(y, int | float) else None
 
 
-def disk_from_scene(scene, *, n_outline: int = 720, fit: str = "contact", Rb: float | None = None) -> CamDisk:
-    """The scene's :class:`CamDisk`: outline from its profile, ``[cam] bore_mm`` (or ``Rb``),
-    shaft material ``[materials.shaft]`` (default: the cam's), a line-to-line fit (``Rs = Rb``).
+def disk_from_scene(scene, *, n_outline: int = 720, fit: str | None = None,
+                    Rb: float | None = None) -> CamDisk:
+    """The scene's :class:`CamDisk`: outline from its profile, ``[cam] bore_mm`` (or ``Rb``, m),
+    shaft material ``[materials.shaft]`` (default: the cam's), the fit ``[cam] shaft_fit`` (or
+    ``fit``; default ``"contact"``) and the shaft radius ``Rs = Rb - [cam] shaft_clearance_um``
+    (default 0: a line-to-line fit).
 
     Parameters
     ----------
@@ -77,8 +80,8 @@ def disk_from_scene(scene, *, n_outline: int = 720, fit: str = "contact", Rb: fl
         A roller-follower scene.
     n_outline : int, optional
         Outline points over one revolution.
-    fit : {"contact", "bonded"}, optional
-        Shaft-bore fit.
+    fit : {"contact", "bonded"} or None, optional
+        Shaft-bore fit; None: the scene's ``[cam] shaft_fit`` (default ``"contact"``).
     Rb : float or None, optional
         Bore radius [m]; None: the scene's ``[cam] bore_mm``.
 
@@ -96,8 +99,9 @@ def disk_from_scene(scene, *, n_outline: int = 720, fit: str = "contact", Rb: fl
     if Rb is None and "cam_bore" not in g:
         raise InputError("scene has no [cam] bore_mm: the cam is today's local body (no disk model)")
     Rb = g["cam_bore"] if Rb is None else Rb
-    return CamDisk(outline=outline_from_scene(scene, n_outline), Rb=Rb, fit=fit, cam=scene.cam,
-                   shaft=g.get("shaft", scene.cam), cam_yield=_cam_yield(scene))
+    fit = g.get("shaft_fit", "contact") if fit is None else fit
+    return CamDisk(outline=outline_from_scene(scene, n_outline), Rb=Rb, Rs=Rb - g.get("shaft_clearance", 0.0),
+                   fit=fit, cam=scene.cam, shaft=g.get("shaft", scene.cam), cam_yield=_cam_yield(scene))
 
 
 def solve_global(model: CamGlobalModel, C: np.ndarray, n: np.ndarray, F: np.ndarray) -> dict:

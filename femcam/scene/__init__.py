@@ -41,7 +41,8 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
                        "solid"|"pin"|"needles", roller_bore_mm (ring bore RADIUS), pin_radius_mm,
                        pin_clearance_um, needle_count, needle_radius_mm; [materials.pin]?
                        (pin and needles, default: the roller's); [cam]? bore_mm (shaft bore
-                       RADIUS), [materials.shaft]?
+                       RADIUS), shaft_fit? ("contact"|"bonded"), shaft_clearance_um? (shaft
+                       radius = bore - clearance), [materials.shaft]?
     [fe]?              a_over_h?, tolerance? (femcam sweep's --mesh-size, --tolerance)
     [sweep]?           method?, angles_deg? ("0:360:1"), chunk_size?, vtk_every?, plots?
     [wear]?            K | k_mm3_per_N_m, roller_model?, srr?, J_kg_m2?, T_drag_N_m?, tip_radius_mm?,

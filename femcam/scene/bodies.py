@@ -93,14 +93,82 @@ def _check_bodies(ck: _Checker, raw: dict, fo: dict, mats: dict) -> dict:
         for msg in roller_support_problems(**geo):
             ck.add("follower", msg)
         out.update(geo, Z=int(geo["Z"]))
-    # [cam] is checked once, by _finite_length (one _CAM schema); here only a valid bore is used
-    bore = raw.get("cam", {}).get("bore_mm") if isinstance(raw.get("cam"), dict) else None
-    ok = isinstance(bore, int | float) and not isinstance(bore, bool) and math.isfinite(bore) and bore > 0
-    cam = {"bore_mm": bore * 1e-3} if ok else {}
-    if "bore_mm" in cam and "base_radius_mm" in fo and cam["bore_mm"] >= fo["base_radius_mm"]:
-        ck.add("cam.bore_mm", f"= {_fmt(raw['cam']['bore_mm'])} mm: the shaft bore radius must be < "
+    # [cam] is checked once, by _finite_length (one _CAM schema); here only valid values are used
+    craw = raw.get("cam", {}) if isinstance(raw.get("cam"), dict) else {}
+    bore = _valid_number(craw.get("bore_mm"), positive=True)
+    if bore is not None and "base_radius_mm" in fo and bore * 1e-3 >= fo["base_radius_mm"]:
+        ck.add("cam.bore_mm", f"= {_fmt(craw['bore_mm'])} mm: the shaft bore radius must be < "
                f"base_radius_mm = {fo['base_radius_mm'] * 1e3:g} mm")
-    if "bore_mm" in cam:
-        out["cam_bore"] = cam["bore_mm"]
+    if bore is not None:
+        out["cam_bore"] = bore * 1e-3
+    out.update(_shaft_fit(ck, craw, bore))
     out.update({k: v for k, v in mats.items() if k in _BODY_MATERIALS})
     return out
+
+
+def _valid_number(v, *, positive: bool):
+    """``v`` as a float when it is a finite number (> 0 or >= 0), else None (the schema check
+    has already reported it)."""
+    ok = isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v)
+    return float(v) if ok and (v > 0 if positive else v >= 0) else None
+
+
+#: largest shaft clearance / bore radius (the linearised gap ``c - e cos psi`` of the shaft-bore
+#: contact needs ``c << Rb``; :class:`femcam.bodies.cam_geometry.CamDisk` refuses more)
+SHAFT_CLEARANCE_MAX = 0.05
+
+
+def shaft_fit_problems(*, bore_mm, fit, clearance_um) -> list[str]:
+    """Problems of the ``[cam]`` shaft-fit keys (scene units): a fit or clearance without a
+    bore, a clearance above :data:`SHAFT_CLEARANCE_MAX` x bore, a bonded fit with a clearance.
+
+    Parameters
+    ----------
+    bore_mm : float or None
+        ``[cam] bore_mm`` (mm), None when not given.
+    fit : str or None
+        ``"contact"`` or ``"bonded"``; None when not given (contact).
+    clearance_um : float or None
+        ``[cam] shaft_clearance_um`` (um, >= 0), None when not given (0).
+
+    Returns
+    -------
+    list of str
+        ``"cam.<key> = value unit: reason"`` lines; empty when the keys fit.
+
+    Examples
+    --------
+    >>> shaft_fit_problems(bore_mm=6.0, fit="contact", clearance_um=10.0)
+    []
+    >>> for m in shaft_fit_problems(bore_mm=6.0, fit="bonded", clearance_um=400.0):
+    ...     print(m.split(" (")[0])
+    cam.shaft_clearance_um = 400 um: must be <= 0.05 x bore_mm
+    cam.shaft_fit = 'bonded' with shaft_clearance_um = 400 um: a bonded fit has no clearance
+    """
+    given = [(k, v) for k, v in (("shaft_fit", fit), ("shaft_clearance_um", clearance_um)) if v is not None]
+    if bore_mm is None:
+        return [f"cam.{k} = {_fmt(v)}: needs cam.bore_mm (the cam on its shaft); without it the cam is "
+                "today's local body" for k, v in given]
+    out = []
+    c_max = SHAFT_CLEARANCE_MAX * bore_mm * 1e3
+    if clearance_um is not None and clearance_um > c_max:
+        out.append(f"cam.shaft_clearance_um = {clearance_um:g} um: must be <= {SHAFT_CLEARANCE_MAX:g} x "
+                   f"bore_mm ({bore_mm:g} mm) = {c_max:g} um (linearised shaft-bore gap: clearance << bore)")
+    if fit == "bonded" and clearance_um:
+        out.append(f"cam.shaft_fit = 'bonded' with shaft_clearance_um = {clearance_um:g} um: a bonded "
+                   "fit has no clearance (give 0 um, or shaft_fit = 'contact')")
+    return out
+
+
+def _shaft_fit(ck: _Checker, craw: dict, bore) -> dict:
+    """The checked ``[cam] shaft_fit``, ``shaft_clearance_um`` as ``{"shaft_fit": str,
+    "shaft_clearance": m}`` (defaults "contact", 0 with a bore; {} without one)."""
+    fit = craw.get("shaft_fit") if craw.get("shaft_fit") in ("contact", "bonded") else None
+    c = _valid_number(craw.get("shaft_clearance_um"), positive=False)
+    problems = shaft_fit_problems(bore_mm=bore, fit=fit, clearance_um=c)
+    for msg in problems:
+        key, rest = msg.split(" ", 1)
+        ck.add(key, rest)
+    if bore is None or problems:
+        return {}
+    return {"shaft_fit": fit or "contact", "shaft_clearance": (c or 0.0) * 1e-6}

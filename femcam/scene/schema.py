@@ -81,7 +81,10 @@ _SUPPORT_KEYS = {"solid": (), "pin": ("roller_bore_mm", "pin_radius_mm", "pin_cl
                  "needles": ("roller_bore_mm", "pin_radius_mm", "pin_clearance_um", "needle_count",
                              "needle_radius_mm")}
 _CAM = {"face_width_mm": ("mm", 1e-3, "pos", False),
-        "bore_mm": ("mm", 1e-3, "pos", False)}  # shaft bore radius (femcam.bodies)
+        "bore_mm": ("mm", 1e-3, "pos", False),  # shaft bore radius (femcam.bodies)
+        # the shaft-bore fit (femcam.bodies.cam_geometry.CamDisk): unilateral "contact" (default) or
+        # "bonded"; radial clearance: shaft radius = bore_mm - shaft_clearance_um
+        "shaft_fit": ("", None, "str", False), "shaft_clearance_um": ("um", 1e-6, "nonneg", False)}
 
 # ---- [dynamics] ----------------------------------------------------------------------------------
 _DYNAMICS = {"mass_kg": ("kg", 1.0, "nonneg", True), "spring_N_per_m": ("N/m", 1.0, "nonneg", True),
@@ -251,5 +254,5 @@ _CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", 
             "model": ("rigid", "one_dof", "two_dof"),
             "crown": ("none", "circular", "logarithmic"),
             "method": METHODS, "roller_model": ("srr", "inertia"),
-            "roller_support": ("solid", "pin", "needles"),
+            "roller_support": ("solid", "pin", "needles"), "shaft_fit": ("contact", "bonded"),
             "hardness_law": ("exponential", "linear")}

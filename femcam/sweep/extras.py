@@ -58,6 +58,7 @@ from ..assess import COLUMNS as ASSESS_COLUMNS
 from ..assess import worst_angles
 from ..bodies.cam_rows import has_cam_bore
 from ..errors import FemcamError
+from ..io import write_pvd
 from ..viz.extras import plot_extra_panels
 from ..wear.coating import coating_wear
 from .providers import (
@@ -75,7 +76,9 @@ from .providers import (
     RING_PANELS,
     assess_chunk,
     assess_name,
+    cam_disk_check,
     cam_disk_chunk,
+    cam_disk_vtu_name,
     coated_cam,
     coating_wear_chunk,
     halfspace_chunk,
@@ -242,14 +245,47 @@ def _peak(table, name, ok, how=np.nanmax):
     return float(how(v)) if np.any(np.isfinite(v)) else float("nan")
 
 
-def extras_provenance(scene, table) -> dict:
+def extras_files(scene, table, out, vtk_mask) -> dict[str, str]:
+    """Files of the providers beside the sweep's own in ``out``: ``camdisk.pvd``, the series of
+    the complete cam body's VTUs (``vtk/camdisk_angle_*.vtu``,
+    :func:`~femcam.sweep.providers.cam_disk_vtus`) at the VTK angles whose file exists.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+    table : dict of ndarray
+        The sweep table (``theta``, rad).
+    out : str or Path
+        The sweep's output directory.
+    vtk_mask : ndarray of bool or None
+        The rows of the VTK series.
+
+    Returns
+    -------
+    dict[str, str]
+        ``{"pvd_camdisk": path}`` or empty.
+    """
+    if vtk_mask is None or "cam_disk" not in [p.name for p in providers_for(scene)]:
+        return {}
+    theta = np.asarray(table["theta"], float)
+    entries = [(math.degrees(theta[i]), Path(out) / "vtk" / cam_disk_vtu_name(theta[i]))
+               for i in np.flatnonzero(vtk_mask)]
+    entries = [(t, p) for t, p in entries if p.exists()]
+    return {"pvd_camdisk": str(write_pvd(Path(out) / "camdisk.pvd", entries))} if entries else {}
+
+
+def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
     """Which providers ran and their summary over the swept angles (JSON-able).
 
     ``providers``: names; ``columns``: the SI names of their columns; ``errors``: the refusals;
     ``assess``: the worst angle per criterion (:func:`femcam.assess.worst_angles`:
     ``{criterion: {"value", "theta_deg"}}``);
     ``halfspace``: largest axial peak (MPa) and the FE load basis; ``bodies``: largest bore hoop
-    stress (MPa) and needle load (N); ``layers``: largest interface utilisation, smallest case margin.
+    stress (MPa) and needle load (N); ``layers``: largest interface utilisation, smallest case margin;
+    ``cam_disk``: largest cam bore hoop stress and shaft pressure (MPa) and, given the sweep's
+    ``tolerance``, ``check``: the fully refined disk vs the local body at the peak force
+    (:func:`~femcam.sweep.providers.cam_disk_check`); ``notes``: its sentence (report, CLI) and
+    ``flags``: the sentence again when the change exceeds the tolerance.
 
     Parameters
     ----------
@@ -257,6 +293,8 @@ def extras_provenance(scene, table) -> dict:
         The scene swept.
     table : Mapping[str, ndarray]
         The sweep table (SI columns).
+    tolerance : float or None, optional
+        The sweep's relative p0 tolerance [-]; None: no cam-disk check.
 
     Returns
     -------
@@ -291,6 +329,11 @@ def extras_provenance(scene, table) -> dict:
     if "cam_disk" in names:
         out["cam_disk"] = {"cam_bore_hoop_max_MPa": _peak(table, "camdisk_hoop_max", ok) * 1e-6,
                            "shaft_p0_max_MPa": _peak(table, "camdisk_shaft_p0", ok) * 1e-6}
+        check = cam_disk_check(scene, table, tolerance) if tolerance is not None else {}
+        if check:
+            out["cam_disk"]["check"] = check
+            out["notes"] = [check["line"]]
+            out["flags"] = [check["flag"]] if check["flag"] else []
     if "layers" in names:
         out["layers"] = {"interface_utilisation_max": _peak(table, "layer_interface_utilisation", ok),
                          "case_margin_min": _peak(table, "layer_case_margin", ok, np.nanmin)}

@@ -18,7 +18,7 @@ from ..scene import Scene
 from ..viz.animate import animate_pvd
 from ..viz.sweep import plot_sweep
 from .cache import default_cache
-from .extras import extra_columns, plot_extras
+from .extras import extra_columns, extras_files, plot_extras
 from .options import SweepOptions, contact_params
 from .profile import worst_surface_profile
 from .result import (
@@ -223,6 +223,7 @@ def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None
     entries = [(t, p) for t, p in entries if p.exists()]
     if entries:
         paths["pvd"] = str(write_pvd(out / "sweep.pvd", entries))
+    paths.update(extras_files(run.scene, result.table, out, run.vtk_mask))  # e.g. camdisk.pvd
     result = replace(result, paths=paths)
     if plots:
         try:

@@ -11,18 +11,23 @@ from __future__ import annotations
 import math
 import threading
 from collections.abc import Callable
+from pathlib import Path
 
 import numpy as np
 
 from ..assess import COLUMNS as ASSESS_COLUMNS
 from ..assess import assess_rows
+from ..bodies.cam_export import write_global_cam_vtu
+from ..bodies.cam_geometry import contact_frame
 from ..bodies.cam_global import CamGlobalModel
 from ..bodies.cam_rows import CAM_CSV_COLUMNS, cam_disk_rows, disk_from_scene
+from ..bodies.cam_study import check_local_body
 from ..bodies.rows import CSV_COLUMNS as RING_COLUMNS
 from ..bodies.rows import build_for, ring_rows
 from ..errors import FemcamError
 from ..halfspace.rows import COLUMNS as HS_COLUMNS
 from ..halfspace.rows import finite_length_rows, strip_for_scene
+from ..io import vtu_name
 from ..layers import scene_layer_rows
 from ..wear.coating import coating_wear
 from ..wear.map import wear_depth_per_angle
@@ -358,10 +363,86 @@ def cam_disk_chunk(task, rows) -> dict:
         ``camdisk_*`` columns (SI) and ``camdisk_flags``.
     """
     Fc = np.where(_contact_rows(rows), rows["Fc"], 0.0)   # cam_disk_rows: Fc <= 0 -> NaN row
-    r = cam_disk_rows(task.scene, task.theta, Fc, model=cam_disk_model(task.scene))
+    model = cam_disk_model(task.scene)
+    r = cam_disk_rows(task.scene, task.theta, Fc, model=model)
     out = {f"camdisk_{k}": np.asarray(r[k], float) for k in CAM_CSV_COLUMNS}
     out["camdisk_flags"] = r["flags"]
+    if task.vtk_dir is not None and task.vtk_mask is not None:
+        cam_disk_vtus(task, model, Fc)
     return out
+
+
+def cam_disk_check(scene, table, tolerance: float) -> dict:
+    """"Model only what the scene needs", verified once per sweep: the fully refined disk model
+    at the swept angle of the largest contact force (``ok`` rows) against today's local cam body
+    (:func:`femcam.bodies.cam_study.check_local_body`, ~4 s).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A scene with ``[cam] bore_mm``.
+    table : dict of ndarray
+        The sweep table (``theta`` rad, ``Fc`` N, ``status``).
+    tolerance : float
+        The sweep's tolerance (relative).
+
+    Returns
+    -------
+    dict
+        The check's dict; ``{}`` without an ``ok`` contact row; a refusal (a
+        :class:`~femcam.errors.FemcamError` of the refined model) as ``{"refused": reason, ...}``.
+    """
+    ok = np.asarray(table["status"]).astype(str) == "ok"
+    Fc = np.where(ok, np.asarray(table["Fc"], float), np.nan)
+    if not np.any(np.isfinite(Fc) & (Fc > 0)):
+        return {}
+    theta = float(np.asarray(table["theta"], float)[int(np.nanargmax(Fc))])
+    try:
+        return check_local_body(scene, theta, tolerance=tolerance, disk=disk_from_scene(scene))
+    except FemcamError as exc:
+        return {"theta_deg": math.degrees(theta), "refused": f"{type(exc).__name__}: {exc}",
+                "line": f"cam disk check at {math.degrees(theta):.1f} deg refused: {exc}", "flag": ""}
+
+
+def cam_disk_vtu_name(theta: float) -> str:
+    """``camdisk_<vtu_name>``: the complete cam body beside the sweep's VTU of the same angle.
+
+    Parameters
+    ----------
+    theta : float
+        Cam angle (rad).
+
+    Returns
+    -------
+    str
+
+    >>> cam_disk_vtu_name(0.0)
+    'camdisk_angle_0000.000deg.vtu'
+    """
+    return "camdisk_" + vtu_name(theta)
+
+
+def cam_disk_vtus(task, model, Fc) -> None:
+    """The global model's complete cam body at the chunk's VTK angles with a contact
+    (:func:`femcam.bodies.cam_export.write_global_cam_vtu`; one back-substitution each); a stale
+    file of an angle without contact is removed.
+
+    Parameters
+    ----------
+    task : femcam.sweep.pipeline.ChunkTask
+        ``scene``, ``theta``, ``vtk_dir``, ``vtk_mask`` of the chunk.
+    model : CamGlobalModel
+        The scene's global model (:func:`cam_disk_model`).
+    Fc : ndarray
+        The chunk's contact force (N; <= 0: no contact, no file).
+    """
+    for i in np.flatnonzero(task.vtk_mask):
+        path = Path(task.vtk_dir) / cam_disk_vtu_name(task.theta[i])
+        if not (np.isfinite(Fc[i]) and Fc[i] > 0):
+            path.unlink(missing_ok=True)
+            continue
+        C, n, _, _ = contact_frame(task.scene, float(task.theta[i]))
+        write_global_cam_vtu(model, C, n, float(Fc[i]), path, theta=float(task.theta[i]))
 
 
 def layers_chunk(task, rows) -> dict:

@@ -320,4 +320,5 @@ def _extras_lines(ex: dict) -> list[str]:
         lines += ["", "| criterion (assessment) | worst value | at cam angle (deg) |", "|---|---|---|"]
         lines += [f"| {c} | {w['value']:.4g} | {w['theta_deg']:.1f} |" for c, w in ex["assess"].items()]
     lines += [f"- refused: {e}" for e in ex.get("errors", ())]
+    lines += [f"- {t}" for t in ex.get("notes", ())]   # e.g. the cam disk check (femcam.sweep.extras)
     return lines

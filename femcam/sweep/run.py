@@ -181,7 +181,7 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
                       scene_hash=run.shash, command=command, options=options,
                       families=[r.to_dict() for r in run.records] if fe else None,
                       wear=run.wear.to_dict())
-    prov["extras"] = extras_provenance(run.scene, table)
+    prov["extras"] = extras_provenance(run.scene, table, tolerance=run.opts.tolerance)
     timings = {"analytic": t_analytic, "verify": t_verify, "compute": t_compute}
     result = SweepResult(table=table, method=run.opts.method, provenance=prov, paths={},
                          timings=timings, n_chunks_computed=len(tasks),
