@@ -25,7 +25,6 @@ The convolution ``K * p`` costs two real FFTs of the ``2 nx`` x ``2 ny`` array p
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -42,8 +41,10 @@ class ContactSolution:
     ``p`` is the ``nx`` x ``ny`` cell pressure (Pa), ``alpha`` the approach (m), ``u`` the
     combined displacement (m). ``converged`` is True when the relative pressure change
     ``dx dy sum|p_k - p_(k-1)| / W`` fell below ``tol`` within ``max_iter``; ``residual`` is that
-    last change, ``gap_residual`` the largest ``|g|`` on loaded cells over ``alpha`` (the
-    complementarity error) and ``history`` the change per iteration.
+    last change, ``gap_residual`` the largest ``|g|`` on loaded cells over the largest combined
+    displacement ``max u`` (the complementarity error relative to the deformation; finite for
+    any ``alpha``, including 0, and independent of the free level of ``h0``) and ``history`` the
+    change per iteration.
 
     Attributes
     ----------
@@ -58,7 +59,9 @@ class ContactSolution:
     residual : float
         Last relative pressure change ``dx dy sum|p_k - p_(k-1)| / W`` [-].
     gap_residual : float
-        Largest ``|h0 + u - alpha|`` on loaded cells divided by ``|alpha|`` [-].
+        Largest ``|h0 + u - alpha|`` on loaded cells divided by ``max u``, the largest combined
+        elastic displacement (> 0 for any load ``W > 0``; the Hertz approach for a point contact
+        whose ``h0`` is 0 at the first point of contact) [-].
     converged : bool
         ``residual < tol`` within ``max_iter``.
     history : ndarray, shape (iterations,), float
@@ -195,7 +198,8 @@ class HalfSpace:
         u = self.displacement(p)
         S = p > 0
         alpha = float((h0 + u)[S].mean())
-        gres = float(np.abs(h0 + u - alpha)[S].max() / abs(alpha)) if alpha != 0 else math.inf
+        # over max u, not alpha: alpha carries the free level of h0 and may be 0 (u > 0 for W > 0)
+        gres = float(np.abs(h0 + u - alpha)[S].max() / np.max(u))
         conv = hist[-1] < tol
         msg = (f"converged in {len(hist)} iterations" if conv else
                f"not converged: pressure change {hist[-1]:.2e} > tol {tol:g} after {len(hist)} iterations")

@@ -187,6 +187,10 @@ class FiniteLengthContact:
         CG iteration cap per solve; not converging is flagged ``"not_converged"``, not raised.
     """
 
+    #: half-length (m) of the smallest rolling-direction window of the grid ladder
+    #: ``X = _X0 _LADDER^k``, k >= 0
+    _X0 = 1e-6
+
     def __init__(self, profile: RollerProfile, *, cam_width: float, E_star: float,
                  design_load: float | None = None, design_radius: float | None = None,
                  nx: int = 64, ny: int = 128, tol: float = 1e-5, max_iter: int = 500):
@@ -218,10 +222,6 @@ class FiniteLengthContact:
             self._cache[k] = HalfSpace(nx=self.nx, ny=self.ny, dx=2.0 * X / self.nx, dy=self.dy,
                                        E_star=self.E_star)
         return self._cache[k]
-
-    @property
-    def _X0(self) -> float:
-        return 1e-6
 
     def solve(self, F: float, R: float, *, p_start=None) -> StripResult:
         """Contact at normal force ``F`` (N, > 0) and relative radius ``R`` (m, > 0).

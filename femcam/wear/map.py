@@ -104,8 +104,10 @@ class WearMap:
     independent Archard total ``volume_archard = k sum F v_slip dt``; ``conservation_error`` is
     their relative difference (cam). ``load_error`` is the largest ``|l pi a p0/2 - Fc| / Fc``
     over the contact angles: 0 for Hertz, the fit error of an FE ``a``/``p0``. ``skipped``:
-    indices of angles skipped for a missing pressure. ``*_total`` properties multiply by
-    ``cycles``.
+    indices of angles skipped for a missing pressure. ``*_total`` properties are the values
+    after ``cycles`` revolutions (coating and roller drift included); ``max_depth``, ``x_max``,
+    ``theta_max``/``i_max`` and the follower's ``max_depth_follower``/``x_max_follower`` all
+    come from these totals, so the reported position is where the reported depth is.
 
     Attributes
     ----------
@@ -184,7 +186,7 @@ class WearMap:
     follower_drift: float = 0.0
     load_error: float = 0.0
     skipped: tuple = ()
-    #: per-angle multiplier of k (lubricated scenes: k(lambda)/k, femcam.tribology.regime) and the
+    #: per-angle multiplier of k (lubricated scenes: k(lambda)/k, femcam.assess.wear_factor) and the
     #: lubrication regime of each angle ("boundary", "mixed", "full", "no contact"); None: dry k
     k_factor: np.ndarray | None = None
     regime: np.ndarray | None = None
@@ -202,9 +204,17 @@ class WearMap:
         return self.cycles * self.depth_cam
 
     @property
+    def _cam_rank(self) -> np.ndarray:
+        """Cam depth on ``x_cam`` that locates the deepest point: the coated total after ``cycles``
+        (its shape is not the one-revolution map's), else the one-revolution map (same argmax as
+        ``cycles x depth_cam``, and still defined at ``cycles = 0``)."""
+        return self.depth_cam if self.depth_cam_cycles is None else self.depth_cam_cycles
+
+    @property
     def i_max(self) -> int:
-        """Index of the angle whose contact point has the deepest one-revolution map depth."""
-        return int(np.argmax(self.depth_at_theta))
+        """Index of the angle whose contact point is deepest after ``cycles`` revolutions."""
+        at_theta = np.interp(self.xi_cam, self.x_cam, self._cam_rank, period=self.perimeter)
+        return int(np.argmax(at_theta))
 
     @property
     def max_depth(self) -> float:
@@ -213,13 +223,28 @@ class WearMap:
 
     @property
     def x_max(self) -> float:
-        """Arc position of the deepest cam wear (m from the contact point at ``theta[0]``)."""
-        return float(self.x_cam[int(np.argmax(self.depth_cam))])
+        """Arc position of the deepest cam wear after ``cycles`` (m from the contact point at
+        ``theta[0]``)."""
+        return float(self.x_cam[int(np.argmax(self._cam_rank))])
 
     @property
     def theta_max(self) -> float:
         """Cam angle (rad) at which the deepest point of the cam is in contact."""
         return float(self.theta[self.i_max])
+
+    @property
+    def volume_cam_total(self) -> float:
+        """Worn cam volume after ``cycles`` revolutions (m^3): ``l int h dx`` of
+        :attr:`depth_cam_total` (coating included), integrated as :attr:`volume_cam`."""
+        return _volume(self.x_cam, self.depth_cam_total, self.length, periodic=True)
+
+    @property
+    def volume_follower_total(self) -> float:
+        """Worn follower volume after ``cycles`` revolutions (m^3): ``l int h dx`` of
+        :attr:`depth_follower_total` (coating and drift included), integrated as
+        :attr:`volume_follower`."""
+        return _volume(self.x_follower, self.depth_follower_total, self.length,
+                       periodic=self.follower_period is not None)
 
     @property
     def depth_follower_total(self) -> np.ndarray:
@@ -251,9 +276,10 @@ class WearMap:
         -------
         dict
             ``max_depth_m``, ``theta_max_rad``, ``x_max_m``, the follower depths and position
-            (m), ``follower_drift_m``, ``volume_cam_m3`` and ``volume_follower_m3`` (times
-            ``cycles``), ``conservation_error`` and ``load_error`` [-], ``skipped_angles_rad``,
-            ``cycles``, ``model``; plus ``coating`` (coated) and ``regime_angles`` (angle count
+            (m), ``follower_drift_m``, ``volume_cam_m3`` and ``volume_follower_m3`` (after
+            ``cycles``, integrated from the depth totals, coating included),
+            ``conservation_error`` and ``load_error`` [-], ``skipped_angles_rad``, ``cycles``,
+            ``model``; plus ``coating`` (coated) and ``regime_angles`` (angle count
             per lubrication regime) when set.
         """
         return {"max_depth_m": self.max_depth, "theta_max_rad": self.theta_max, "x_max_m": self.x_max,
@@ -261,8 +287,8 @@ class WearMap:
                 "x_max_follower_m": self.x_max_follower,
                 "max_depth_follower_locked_m": self.max_depth_follower_locked,
                 "follower_drift_m": self.follower_drift,
-                "volume_cam_m3": self.cycles * self.volume_cam,
-                "volume_follower_m3": self.cycles * self.volume_follower,
+                "volume_cam_m3": self.volume_cam_total,
+                "volume_follower_m3": self.volume_follower_total,
                 "conservation_error": self.conservation_error, "load_error": self.load_error,
                 "skipped_angles_rad": [float(self.theta[i]) for i in self.skipped],
                 "cycles": self.cycles, "model": self.model,
@@ -271,6 +297,14 @@ class WearMap:
                    {"regime_angles": {str(g): int(n) for g, n in
                                       zip(*np.unique(np.asarray(self.regime).astype(str), return_counts=True),
                                           strict=True)}})}
+
+
+def _volume(x, h, length, *, periodic: bool) -> float:
+    """``l int h dx`` (m^3) of depths ``h`` (m) on the uniform grid ``x`` (m): the rectangle sum
+    on a periodic grid (endpoint excluded), the trapezoid rule otherwise."""
+    if periodic:
+        return float(length * np.sum(h) * (x[1] - x[0] if x.size > 1 else 0.0))
+    return float(length * np.trapezoid(h, x))
 
 
 def _cumulative(theta_closed, f_closed):
@@ -308,7 +342,7 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
         (default: skip with a warning the ``failed`` rows of a sweep result, raise otherwise).
     k_factor : array_like, shape (n,), optional
         Per-angle multiplier of ``k`` [-] (``k(lambda)/k`` of the lubrication regime,
-        :func:`femcam.tribology.wear_coefficient`); default 1.
+        from :func:`femcam.assess.wear_factor`); default 1.
     regime : array_like of str, shape (n,), optional
         Lubrication regime per angle; stored only.
 
@@ -385,10 +419,8 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
 
     w_m = hertz_load_per_length(a_m, p_m)
     vol_archard = float(k * np.sum(w_m * length * v_m * dt))
-    vol_cam = float(length * np.sum(depth_cam) * (x_cam[1] - x_cam[0]))
-    dxf = x_f[1] - x_f[0] if x_f.size > 1 else 0.0
-    vol_f = float(length * np.sum(depth_f) * dxf) if Pf is not None else \
-        float(length * np.trapezoid(depth_f, x_f))
+    vol_cam = _volume(x_cam, depth_cam, length, periodic=True)
+    vol_f = _volume(x_f, depth_f, length, periodic=Pf is not None)
     cons = abs(vol_cam - vol_archard) / vol_archard if vol_archard > 0 else 0.0
     w = hertz_load_per_length(a, p0)
     on = (Fc > 0) & (w > 0)
