@@ -140,3 +140,36 @@ def test_k_factor_source_is_cited_once():
     cited |= set(re.findall(r"k\(lambda\)/k, (femcam\.[\w.]+)\)", src))
     assert cited == {"femcam.assess.wear_factor"}
     assert "k(lambda) / k" in assess.wear_factor.__doc__
+
+
+def test_cli_wear_map_writes_the_coated_totals(tmp_path, capsys):
+    # the CLI's files after N revolutions use the coating too: a soft cam coating (k_c = 2 k_s,
+    # t = 1 um) worn through everywhere after 1e8 revolutions has the closed-form volume
+    # l S t (1 - 1/r) + N V_s (as above), and every depth after N in the surface CSV is
+    # t + (N - t / d_c) d_s of its own per-revolution depth d_s (the layered law, written out).
+    from femcam.cli import main
+
+    k_s = wear_coefficient_info(load_scene(SCENE))[0]
+    r = 1e-17 / k_s
+    p = tmp_path / "coated_cam.toml"
+    p.write_text(open(SCENE).read() + COAT.format(body="cam", t=1.0, k_mm3=1e-8))
+    N = 1e8
+    out = tmp_path / "out"
+    assert main(["wear", "map", str(p), "--out", str(out), "--step-deg", "2", "--cycles", f"{N:g}",
+                 "--no-plots"]) == 0
+    capsys.readouterr()
+    summ = (out / "wear_summary.csv").read_text().splitlines()
+    vals = dict(zip(summ[1].split(","), summ[2].split(","), strict=True))
+    S, V_s = None, float(vals["volume_archard_mm3"]) * 1e-9 / N
+    surf = [row.split(",") for row in (out / "wear_scene_surface.csv").read_text().splitlines()
+            if row[:1].isdigit() or row[:1] == "-"]
+    x = np.array([float(c[0]) for c in surf]) * 1e-3
+    d_s = np.array([float(c[1]) for c in surf]) * 1e-9
+    hN = np.array([float(c[2]) for c in surf]) * 1e-6
+    ref = _layered(d_s, r, 1e-6, N)
+    assert np.allclose(hN, ref, rtol=1e-5, atol=1e-12)       # CSV keeps 6 significant digits
+    S = x[-1] - x[0] + (x[1] - x[0])                          # the perimeter of the uniform grid
+    scene = load_scene(p)
+    length = scene.length
+    assert float(vals["volume_cam_mm3"]) * 1e-9 == pytest.approx(
+        length * S * 1e-6 * (1 - 1 / r) + N * V_s, rel=1e-4)

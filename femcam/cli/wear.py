@@ -200,11 +200,13 @@ def _write_angle_csv(path, head, theta, cycles, wm, st, slip) -> None:
         w = csv.writer(fh)
         w.writerow(["theta_deg", "s_mm", "Fc_N", "v_slip_m_s", "V_cam_m_s", "arc_mm",
                     "depth_pass_closed_nm", "depth_per_rev_nm", f"depth_{cycles:g}_cycles_um"])
+        # depth after ``cycles`` at the contact point of each angle (coating included)
+        total = np.interp(wm.xi_cam, wm.x_cam, wm.depth_cam_total, period=wm.perimeter)
         for i in range(theta.size):
             w.writerow([f"{math.degrees(theta[i]):.4f}", f"{st.s[i] * 1e3:.6g}", f"{st.Fc[i]:.6g}",
                         f"{slip.v_slip[i]:.6g}", f"{slip.V_cam[i]:.6g}", f"{wm.xi_cam[i] * 1e3:.6g}",
                         f"{wm.depth_pass[i] * 1e9:.6g}", f"{wm.depth_at_theta[i] * 1e9:.6g}",
-                        f"{wm.depth_at_theta[i] * cycles * 1e6:.6g}"])
+                        f"{total[i] * 1e6:.6g}"])
 
 
 def _write_surface_csv(path, head, cycles, wm) -> None:
@@ -213,8 +215,8 @@ def _write_surface_csv(path, head, cycles, wm) -> None:
         fh.write(head)
         w = csv.writer(fh)
         w.writerow(["arc_mm", "depth_per_rev_nm", f"depth_{cycles:g}_cycles_um"])
-        for x, h in zip(wm.x_cam, wm.depth_cam, strict=True):
-            w.writerow([f"{x * 1e3:.6g}", f"{h * 1e9:.6g}", f"{h * cycles * 1e6:.6g}"])
+        for x, h, hN in zip(wm.x_cam, wm.depth_cam, wm.depth_cam_total, strict=True):
+            w.writerow([f"{x * 1e3:.6g}", f"{h * 1e9:.6g}", f"{hN * 1e6:.6g}"])
 
 
 def _write_follower_csv(path, head, cycles, wm, slip, scene) -> None:
@@ -253,14 +255,14 @@ def _write_summary(path, head, cycles, k, k_where, results, source) -> None:
             skipped = " ".join(f"{math.degrees(wm.theta[i]):g}" for i in wm.skipped)
             w.writerow([label, f"{cycles:g}", f"{wm.max_depth * 1e6:.6g}",
                         f"{math.degrees(wm.theta_max):.3f}",
-                        f"{wm.x_max * 1e3:.5g}", f"{wm.volume_cam * cycles * 1e9:.6g}",
-                        f"{wm.volume_follower * cycles * 1e9:.6g}", f"{wm.volume_archard * cycles * 1e9:.6g}",
+                        f"{wm.x_max * 1e3:.5g}", f"{wm.volume_cam_total * 1e9:.6g}",
+                        f"{wm.volume_follower_total * 1e9:.6g}", f"{wm.volume_archard * cycles * 1e9:.6g}",
                         f"{wm.conservation_error:.2e}", f"{wm.max_depth_follower * 1e6:.6g}",
                         f"{wm.x_max_follower * 1e3:.5g}", f"{wm.max_depth_follower_locked * 1e6:.6g}",
                         f"{wm.follower_drift * 1e3:.6g}", f"{wm.load_error:.2e}", skipped, f"{wm.k:.6g}",
                         source, slip.model])
             print(f"{label:<20}{wm.max_depth * 1e6:>14.4g}{math.degrees(wm.theta_max):>14.2f}"
-                  f"{wm.x_max * 1e3:>9.3f}{wm.volume_cam * cycles * 1e9:>13.4g}"
+                  f"{wm.x_max * 1e3:>9.3f}{wm.volume_cam_total * 1e9:>13.4g}"
                   f"{wm.max_depth_follower * 1e6:>13.4g}{wm.x_max_follower * 1e3:>9.3f}")
             if wm.skipped:
                 print(f"  {label}: skipped {len(wm.skipped)} angle(s) with a failed FE solve: {skipped} deg")
