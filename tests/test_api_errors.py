@@ -47,3 +47,144 @@ def test_solve_refuses_bad_rho(rho, msg):
 def test_numpy_scalar_radius_is_accepted():
     from femcam.fe.model import _radius
     assert _radius("rho", np.float32(0.5)) == 0.5 and _radius("rho", -math.inf) == -math.inf
+
+
+# --------------------------------------------------------------------------- fe / layers checks
+# References: the bad values typed in the test and the message format of femcam._validate
+# ("<name> = <value> <unit>: <condition>"); before these checks each case gave a bare
+# KeyError / ValueError / AttributeError / RuntimeError or silently nan.
+def _bare_model():
+    """A ContactModel instance without a mesh: the checks run before any model data is read."""
+    model = object.__new__(ContactModel)
+    object.__setattr__(model, "bodies", {"cam": None, "roller": None})
+    return model
+
+
+def test_stress_at_refuses_an_unknown_body():
+    with pytest.raises(InputError, match=r"body = 'wheel': must be one of \['cam', 'roller'\]"):
+        _bare_model().stress_at(None, 0.0, 1e-4, body="wheel")
+
+
+@pytest.mark.parametrize("rho, msg", [("abc", "rho = 'abc' m: must be a number"),
+                                      (0.0, "rho = 0 m: must be nonzero")])
+def test_solve_contact_refuses_a_bad_rho(rho, msg):
+    from femcam.fe import solve_contact
+
+    with pytest.raises(InputError) as ei:
+        solve_contact(100.0, rho, 0.01, STEEL, STEEL, 0.01)
+    assert msg in str(ei.value)
+
+
+@pytest.mark.parametrize("method", ["hertz", "coverage", "covers"])
+@pytest.mark.parametrize("F, rho, msg", [(-1.0, 0.02, "F = -1 N: must be >= 0"),
+                                         (None, 0.02, "F = None N: must be a number"),
+                                         (100.0, "abc", "rho = 'abc' m: must be a number"),
+                                         (100.0, math.nan, "rho = nan m: must be nonzero")])
+def test_hertz_and_coverage_check_their_inputs(method, F, rho, msg):
+    with pytest.raises(InputError) as ei:
+        getattr(_bare_model(), method)(F, rho)
+    assert msg in str(ei.value)
+
+
+@pytest.fixture(scope="module")
+def small_body():
+    """A coarse P2 cam body assembled without ``contact_last``."""
+    from femcam.fe.elasticity import assemble_body
+    from femcam.mesh import MeshOptions, build_contact_mesh
+
+    cm = build_contact_mesh(Rr=0.01, rho=0.02, a_ref=1e-4, options=MeshOptions(a_over_h=5))
+    return assemble_body(cm.cam, STEEL, element="P2")
+
+
+def test_probe_matrix_refuses_points_outside_the_mesh(small_body):
+    from femcam.fe.elasticity import probe_matrix
+
+    with pytest.raises(InputError, match=r"xy = \[\[1\.0, 1\.0\]\] m: must lie inside the mesh of body cam"):
+        probe_matrix(small_body, np.array([[1.0], [1.0]]))
+    with pytest.raises(InputError, match=r"xy = 'shape \(3,\)' m: must have the shape \(2, n\)"):
+        probe_matrix(small_body, np.zeros(3))
+
+
+@pytest.mark.parametrize("method", ["schur_inverse", "schur_solve"])
+def test_schur_methods_need_contact_last(small_body, method):
+    args = () if method == "schur_inverse" else (np.zeros((4, 1)),)
+    msg = (rf"contact_last = False: Body\.{method} of body cam needs the body assembled with "
+           r"assemble_body\(\.\.\., contact_last=True\)")
+    with pytest.raises(InputError, match=msg):
+        getattr(small_body, method)(*args)
+
+
+def test_edge_midside_dofs_names_the_unjoined_vertices(small_body):
+    from femcam.errors import FemcamError
+    from femcam.fe.contact import edge_midside_dofs
+
+    c = np.asarray(small_body.geometry.contact)
+    bad = np.array([c[0], c[2]])  # every other vertex: no mesh edge joins them
+    with pytest.raises(FemcamError, match=rf"contact = 'vertices {c[0]}, {c[2]}': consecutive contact "
+                                          "vertices must be joined by a mesh edge"):
+        edge_midside_dofs(small_body, bad)
+    assert edge_midside_dofs(small_body, c[:3]).shape == (2, 2)  # the joined ones still work
+
+
+@pytest.mark.parametrize("omega, msg", [("fast", "omega = 'fast' rad/s: must be a number"),
+                                        (math.nan, "omega = nan rad/s: must be finite"),
+                                        (0.0, "omega = 0 rad/s: must be > 0")])
+def test_mechanism_Q_checks_omega(omega, msg):
+    from femcam.fe.choice import mechanism_Q
+
+    th = np.linspace(0.0, 2 * math.pi, 8, endpoint=False)
+    with pytest.raises(InputError) as ei:
+        mechanism_Q(np.ones(8), th, omega, J=1e-6, T_drag=0.0, Rr=0.01)
+    assert msg in str(ei.value)
+
+
+def test_local_surface_reports_the_half_width_in_mm():
+    """A contact zone |x| <= 0.5 m cannot fit on a cam of base radius 20 mm: the message names
+    half_width in mm (0.5 m = 500 mm), as the undercut message does."""
+    from femcam.errors import PhysicsError
+    from femcam.fe.gap import local_surface
+    from femcam.kinematics import CamProgram, dwell, fall, rise
+    from femcam.profile import RollerFollower
+
+    prog = CamProgram([dwell(math.pi), rise(math.pi / 2, 0.005, "cycloidal"),
+                       fall(math.pi / 2, 0.005, "cycloidal")])
+    with pytest.raises(PhysicsError, match=r"does not cover \|x\| <= half_width = 500 mm"):
+        local_surface(prog, RollerFollower(Rb=0.02, Rr=0.01), 0.5, 0.5)
+
+
+def test_layer_checks_of_an_unpickled_result_ask_for_the_model():
+    """A ContactResult after pickling has model None: the coating/case checks say so."""
+    from femcam.fe import ContactResult
+    from femcam.layers.interface import _case_row, interface_stress
+
+    r = object.__new__(ContactResult)
+    object.__setattr__(r, "model", None)  # what __getstate__ leaves after a pickle round trip
+    msg = r"model = None: this ContactResult was unpickled without its factorised model"
+    with pytest.raises(InputError, match=msg):
+        interface_stress(r, "roller")
+    with pytest.raises(InputError, match=msg):
+        _case_row(r, None, "cam")
+
+
+# --------------------------------------------------------------------------- signatures
+def test_exact_integrals_are_annotated_as_fractions():
+    """They return fractions.Fraction (exact rational), not float."""
+    import typing
+    from fractions import Fraction
+
+    from femcam.wear import seed000
+
+    for f in (seed000.bezier_v2_integral, seed000.polynomial_v2_integral):
+        assert typing.get_type_hints(f)["return"] is Fraction
+    assert isinstance(seed000.bezier_v2_integral([0, 0, 1, 1]), Fraction)
+    assert seed000.polynomial_v2_integral([0, 1]) == 1  # v = 1 on [0, 1]: int v^2 = 1
+
+
+def test_unused_parameters_are_gone():
+    import inspect
+
+    from femcam.fe.gap import contact_geometry
+    from femcam.fe.result import traction_fields
+
+    assert list(inspect.signature(traction_fields).parameters) == ["trac", "q", "w", "x", "length"]
+    assert list(inspect.signature(contact_geometry).parameters) == ["follower", "tip_radius"]

@@ -225,6 +225,12 @@ def test_method_auto_writes_the_hertz_vtu_of_hertz_rows(tmp_path):
     m = meshio.read(out / "vtk" / f"angle_{np.degrees(r['theta'][i]):08.3f}deg.vtu")
     p0 = hertz_p0(float(r["Fc"][i]), 0.010, 1 / (1 / float(r["rho"][i]) + 1 / 0.010))  # face 10 mm, Rr 10 mm
     assert m.point_data["contact_pressure_Pa"].max() == pytest.approx(p0, rel=1e-9)
+    # ... and the traction the row carries: surface txz = -q = -(|Q|/Fc) p (Johnson 1985 §7.1),
+    # not full sliding mu p (the mechanism's Q here is far below mu Fc)
+    ratio = abs(float(r["Q"][i])) / float(r["Fc"][i])
+    assert ratio < 0.1 * 0.1
+    surf = m.points[:, 1] == 0.0
+    assert np.abs(m.point_data["stress_Pa"][surf, 3]).max() == pytest.approx(ratio * p0, rel=1e-9, abs=1e-6)
 
 
 def test_worst_profile_is_the_rows_own_solve_with_its_traction():

@@ -586,3 +586,20 @@ def test_cli_map_fe_source(tmp_path):
     assert 0 < float(fe["load_error"]) <= 0.023 and float(hz["load_error"]) < 1e-12
     for col in ("max_depth_um", "volume_cam_mm3", "max_depth_follower_um"):
         assert float(fe[col]) == pytest.approx(float(hz[col]), rel=0.023), col
+
+
+def test_scene_friction_zero_stays_zero_or_is_refused_by_the_inertia_model(study_scene):
+    """[contact] friction = 0 reaches the slip models as mu = 0 (it was replaced by 0.1); the
+    inertia-limited roller model, which has nothing to spin the roller without friction, refuses
+    it with the reason. References: the friction values typed here."""
+    from femcam.wear.options import slip_kwargs
+
+    sc = study_scene
+    assert type(sc.follower).__name__ == "RollerFollower"
+    assert slip_kwargs(dataclasses.replace(sc, mu=0.0))["mu"] == 0.0          # srr model: mu unused
+    assert slip_kwargs(dataclasses.replace(sc, mu=0.07))["mu"] == 0.07
+    inertia = {"roller_model": "inertia", "J_kg_m2": 5e-3}
+    assert slip_kwargs(dataclasses.replace(sc, mu=0.07, wear=inertia))["mu"] == 0.07
+    with pytest.raises(InputError, match=r"contact\.friction = 0: the inertia-limited roller model "
+                                         r"\(\[wear\] roller_model = 'inertia'\) needs friction > 0"):
+        slip_kwargs(dataclasses.replace(sc, mu=0.0, wear=inertia))

@@ -106,7 +106,7 @@ def curvature_jumps(program, follower, *, tip_radius: float | None = None) -> li
     list of CurvatureJump
         One per junction with a step in ``s''`` or ``s'``, in the program's order.
     """
-    gen, _ = contact_geometry(program, follower, tip_radius)
+    gen, _ = contact_geometry(follower, tip_radius)
     out = []
     for jn in program.junctions():
         if jn.jump_s2 == 0.0 and jn.jump_s1 == 0.0:

@@ -117,7 +117,7 @@ def build_real_cam(*, program, follower, cam, roller, length: float, F_ref: floa
     RealCam
         The built model, to pass to :func:`solve_angle`.
     """
-    _, R = contact_geometry(program, follower, tip_radius)
+    _, R = contact_geometry(follower, tip_radius)
     F_ref = _validate.positive("F_ref", F_ref, "N")
     rho_ref = _validate.number("rho_ref", rho_ref, "m")
     E_star = effective_modulus(cam, roller, plane)
@@ -145,7 +145,7 @@ def mechanism_Q(Omega, theta, omega: float, *, J: float, T_drag: float, Rr: floa
     theta : array_like of float, shape (n,)
         The uniform cam-angle grid of ``Omega`` [rad] (periodic central differences).
     omega : float
-        Cam speed [rad/s].
+        Cam speed [rad/s], > 0 (as in :func:`femcam.wear.slip.roller_inertia`).
     J : float
         Roller polar moment of inertia about its axle [kg m^2], > 0.
     T_drag : float
@@ -163,6 +163,7 @@ def mechanism_Q(Omega, theta, omega: float, *, J: float, T_drag: float, Rr: floa
     dth = float(np.mean(np.diff(th)))
     dOm = (np.roll(Om, -1) - np.roll(Om, 1)) / (2 * dth)  # periodic central difference
     J = _validate.positive("J", J, "kg m^2")
+    omega = _validate.positive("omega", omega, "rad/s")
     T_f = J * omega * dOm + _validate.nonnegative("T_drag", T_drag, "N m") * np.sign(Om)
     return -T_f / _validate.positive("Rr", Rr, "m")
 

@@ -36,6 +36,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
+from .. import _validate
 from ..errors import ConvergenceError
 
 
@@ -53,6 +54,11 @@ def edge_midside_dofs(body, contact: np.ndarray) -> np.ndarray | None:
     -------
     ndarray of int, shape (2, n_c - 1), or None
         ``(u_x, u_y)`` DOFs of the midside node of each contact edge; None for P1 elements.
+
+    Raises
+    ------
+    InputError
+        Two consecutive contact vertices are not joined by a mesh edge (named).
     """
     if body.element != "P2":
         return None
@@ -66,7 +72,10 @@ def edge_midside_dofs(body, contact: np.ndarray) -> np.ndarray | None:
     pos = np.searchsorted(key_f, key, sorter=order)
     f = order[np.clip(pos, 0, key_f.size - 1)]
     if not np.array_equal(key_f[f], key):
-        raise RuntimeError("contact vertices are not joined by mesh edges")
+        k = int(np.flatnonzero(key_f[f] != key)[0])
+        raise _validate.fail("contact", f"vertices {int(contact[k])}, {int(contact[k + 1])}", "",
+                             "consecutive contact vertices must be joined by a mesh edge (the "
+                             "contact nodes are not in order along the surface)")
     return body.basis.facet_dofs[:, f]
 
 

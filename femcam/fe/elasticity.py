@@ -26,6 +26,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from scipy.linalg import solve_triangular
 
+from .. import _validate
 from .._threads import single_threaded_blas
 from ..errors import FemcamError
 from ..materials import Material, lame_parameters
@@ -124,7 +125,13 @@ class Body:
         -------
         ndarray of float, shape (len(last), k)
             Displacements of the ``last`` DOFs [m].
+
+        Raises
+        ------
+        InputError
+            The body was assembled without ``contact_last=True``.
         """
+        self._check_contact_last("schur_solve")
         m = self.free.size
         k = self.last.size
         if not np.array_equal(self.lu.perm_r[m - k:], np.arange(m - k, m)):
@@ -149,8 +156,22 @@ class Body:
         -------
         ndarray of float, shape (len(last), len(last))
             Contact compliance ``(K^-1)[last][:, last]`` [m/N per unit thickness].
+
+        Raises
+        ------
+        InputError
+            The body was assembled without ``contact_last=True``.
         """
+        self._check_contact_last("schur_inverse")
         return self.schur_solve(np.eye(self.last.size))
+
+    def _check_contact_last(self, method: str) -> None:
+        """Refuse the Schur methods on a body whose factor does not order the contact last."""
+        if self.last is None or self.perm is None:
+            raise _validate.fail("contact_last", False, "",
+                                 f"Body.{method} of body {self.name} needs the body assembled with "
+                                 "assemble_body(..., contact_last=True) (the contact DOFs ordered "
+                                 "last in the factor)")
 
     def _schur_by_solves(self) -> np.ndarray:
         """``(K^-1)[last][:, last]`` from ``len(last)`` unit-load solves (reference path)."""
@@ -370,12 +391,19 @@ def probe_matrix(body: Body, xy: np.ndarray) -> sp.csr_matrix:
 
     Raises
     ------
-    ValueError
-        A point lies outside the mesh (raised by scikit-fem).
+    InputError
+        ``xy`` is not a (2, n) array of finite numbers, or a point lies outside the mesh.
     """
     from skfem import Basis  # skfem: kept out of ``import femcam`` (tests/test_imports.py)
 
-    return Basis(body.mesh, body.basis.elem.elem).probes(xy)
+    xy = _validate.finite_array("xy", xy, "m")
+    if xy.ndim != 2 or xy.shape[0] != 2:
+        raise _validate.fail("xy", f"shape {xy.shape}", "m", "must have the shape (2, n)")
+    try:
+        return Basis(body.mesh, body.basis.elem.elem).probes(xy)
+    except ValueError:  # scikit-fem: a point not found in any element
+        raise _validate.fail("xy", xy.T.tolist(), "m",
+                             f"must lie inside the mesh of body {body.name}") from None
 
 
 def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matrix:

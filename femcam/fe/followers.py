@@ -55,7 +55,7 @@ def fe_radius(follower, *, tip_radius: float | None = None) -> float:
         ``Rr`` (roller) or ``tip_radius`` (knife-edge) [m]; ``nan`` for flat-faced (the cam's own
         rho is used, see the module docstring).
     """
-    _, R = contact_geometry(None, follower, tip_radius)
+    _, R = contact_geometry(follower, tip_radius)
     return math.nan if math.isinf(R) else R
 
 
@@ -81,7 +81,7 @@ def sliding_sign(program, follower, theta, *, tip_radius: float | None = None) -
         +1 or -1 per angle.
     """
     th = _validate.finite_array("theta", theta, "rad")
-    gen, _ = contact_geometry(program, follower, tip_radius)
+    gen, _ = contact_geometry(follower, tip_radius)
     d = program.derivatives(th)
     pr = cam_profile(gen, th, d.s, d.s1, d.s2, allow_undercut=True)
     t = np.stack([np.cos(pr.phi), np.sin(pr.phi)])
@@ -113,7 +113,7 @@ def rolling_direction(program, follower, theta, *, tip_radius: float | None = No
         +1 or -1 per angle.
     """
     th = _validate.finite_array("theta", theta, "rad")
-    gen, _ = contact_geometry(program, follower, tip_radius)
+    gen, _ = contact_geometry(follower, tip_radius)
     dth = 1e-6
     both = np.concatenate([th, th + dth])
     d = program.derivatives(both)

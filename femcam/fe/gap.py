@@ -85,7 +85,7 @@ class LocalSurface:
     phi: float
 
 
-def contact_geometry(program, follower, tip_radius: float | None = None):
+def contact_geometry(follower, tip_radius: float | None = None):
     """The follower that generates the cam surface and its radius ``R`` (m).
 
     Roller: itself, ``R = Rr``. Knife-edge: a non-rotating roller of radius ``tip_radius`` on the
@@ -95,8 +95,6 @@ def contact_geometry(program, follower, tip_radius: float | None = None):
 
     Parameters
     ----------
-    program : femcam.kinematics.CamProgram or None
-        The cam program (not used; kept for a uniform call).
     follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
         The follower (:mod:`femcam.profile`).
     tip_radius : float, optional
@@ -164,7 +162,7 @@ def local_surface(program, follower, theta: float, half_width: float, *,
     """
     theta = _validate.number("theta", theta, "rad")
     half_width = _validate.positive("half_width", half_width, "m")
-    gen, R = contact_geometry(program, follower, tip_radius)
+    gen, R = contact_geometry(follower, tip_radius)
     p0 = _surface_points(program, gen, np.array([theta - 1e-5, theta, theta + 1e-5]))
     phi = float(p0.phi[1])
     speed = math.hypot(p0.x[2] - p0.x[0], p0.y[2] - p0.y[0]) / 2e-5  # |dP/dtheta|, m/rad
@@ -183,14 +181,15 @@ def local_surface(program, follower, theta: float, half_width: float, *,
         span *= 2.0
     else:
         raise PhysicsError(f"theta = {math.degrees(theta):.4f} deg: the cam surface near the contact "
-                           f"does not cover |x| <= {half_width:.4g} m (cam too small for the contact zone)")
+                           f"does not cover |x| <= half_width = {half_width * 1e3:.4g} mm "
+                           "(cam too small for the contact zone)")
     inside = np.abs(xl) <= 1.05 * half_width
     dx = np.diff(xl)
     s = np.sign(np.median(dx))
     if np.any(pr.undercut[inside]) or np.any((s * dx <= 0.0) & inside[1:] & inside[:-1]):
         raise PhysicsError(
             f"theta = {math.degrees(theta):.4f} deg: the cam surface is undercut or has a cusp "
-            f"inside the contact zone |x| <= {half_width * 1e3:.4g} mm; no contact stress there")
+            f"inside the contact zone |x| <= half_width = {half_width * 1e3:.4g} mm; no contact stress there")
     order = np.argsort(xl)
     return LocalSurface(theta=theta, x=xl[order], y=yl[order], R=R, rho=float(p0.rho[1]), phi=phi)
 

@@ -336,7 +336,13 @@ class ContactModel:
             Half-width [m]; nan if Hertz does not apply (a concave cam that does not fit).
         p0 : float
             Peak pressure [Pa]; nan likewise.
+
+        Raises
+        ------
+        InputError
+            ``F`` not a number >= 0 or ``rho`` not a nonzero number.
         """
+        F, rho = _validate.nonnegative("F", F, "N"), _radius("rho", rho)
         return _hertz(F, self.length, rho, self.Rr, self.cam, self.roller, self.plane)
 
     def coverage(self, F: float, rho: float) -> str:
@@ -353,7 +359,13 @@ class ContactModel:
         -------
         str
             Empty if the model covers ``(F, rho)``, else the reason.
+
+        Raises
+        ------
+        InputError
+            ``F`` not a number >= 0 or ``rho`` not a nonzero number.
         """
+        F, rho = _validate.nonnegative("F", F, "N"), _radius("rho", rho)
         k = 0.0 if math.isinf(rho) else 1.0 / rho
         k_ref = 0.0 if math.isinf(self.rho_ref) else 1.0 / self.rho_ref
         dk = abs(k - k_ref) * self.mesh.cam.L
@@ -465,7 +477,7 @@ class ContactModel:
             max_by_body=maxima, surface_by_body=surfaces,
             iterations=it, residual=res, history=hist, active=active, converged=conv,
             timings=timings, n_dofs=self.n_dofs, hertz_a=aH, hertz_p0=p0H, outside_hertz=outside,
-            model=self, q=q, message=msg, **traction_fields(trac, Q, q, self.w, self.x, self.length, mu))
+            model=self, q=q, message=msg, **traction_fields(trac, q, self.w, self.x, self.length))
 
     def _contact(self, F, rho, mu, sliding, h0, Q, rolling, aH):
         """Normal LCP, and with ``Q`` the partial-slip traction (fixed point on the normal-
@@ -589,8 +601,9 @@ class ContactModel:
         Raises
         ------
         InputError
-            A point outside the body.
+            ``body`` not "cam" or "roller", or a point outside the body.
         """
+        _validate.choice("body", body, ("cam", "roller"))
         x = _validate.finite_array("x", x, "m")
         z = _validate.finite_array("z", z, "m")
         x, z = np.broadcast_arrays(x, z)
@@ -649,7 +662,7 @@ def solve_contact(F: float, rho: float, Rr: float, cam: Material, roller: Materi
     """
     if a_ref is None:
         aH, _ = _hertz(_validate.nonnegative("F", F, "N"), _validate.positive("length", length, "m"),
-                       float(rho),
+                       _radius("rho", rho),
                        _validate.positive("Rr", Rr, "m"), cam, roller, plane)
         a_ref = aH if (math.isfinite(aH) and aH > 0) else 0.01 * Rr
     solver = solver or SolverOptions(stress_operators="per_solve")

@@ -307,15 +307,13 @@ class ContactResult:
         return write_vtu(self, path, model=model)
 
 
-def traction_fields(trac, Q, q, w, x, length, mu) -> dict:
+def traction_fields(trac, q, w, x, length) -> dict:
     """ContactResult traction fields from a TractionSolution (or the friction-free/sliding q).
 
     Parameters
     ----------
     trac : TractionSolution or None
         The partial-slip solution; None for frictionless or full sliding without ``Q``.
-    Q : float or None
-        Requested tangential force on the cam [N] (not used; kept for the call signature).
     q : ndarray of float, shape (n_c,)
         Tangential traction on the cam in +x [Pa] (used when ``trac`` is None).
     w : ndarray of float, shape (n_c,)
@@ -324,8 +322,6 @@ def traction_fields(trac, Q, q, w, x, length, mu) -> dict:
         Contact vertex abscissae [m].
     length : float
         Face width [m].
-    mu : float
-        Friction coefficient [-] (not used).
 
     Returns
     -------

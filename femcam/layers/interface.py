@@ -88,10 +88,10 @@ def interface_stress(result, body: str = "roller") -> InterfaceStress:
     Raises
     ------
     InputError
-        ``body`` has no coating band.
+        ``body`` has no coating band, or ``result`` was unpickled (its model is not kept).
     """
     _validate.choice("body", body, ("cam", "roller"))
-    model = result.model
+    model = result.model_or()
     g = _coated(model, body)
     _, f = result.field_at_nodes(body)
     nodes = g.groups[f"{body}_interface"].nodes
@@ -116,7 +116,7 @@ def interface_stress(result, body: str = "roller") -> InterfaceStress:
 def _case_row(result, case: Case, body: str):
     """(U_max, z at max, margin) of ``case`` in ``body``: tau_1 / k(z) at every node of the
     stress window ``|x| <= fine zone``, ``z <= 4 max(a, depth)``."""
-    model = result.model
+    model = result.model_or()
     case.check_body(model.bodies[body].geometry.L, body)
     _, f = result.field_at_nodes(body)
     z, x = f["z"], f["xy"][0]

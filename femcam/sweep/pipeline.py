@@ -52,7 +52,16 @@ from .extras import fill_extras
 from .families import hertz_half_width
 from .options import ContactParams, SweepOptions, contact_params
 from .realcam import Traction, arc_error_estimate, contact_scene, hertz_within_tolerance, traction_args
-from .realrows import exact_solve, fe_fill, fill_choice, flat_edge_rows, flat_rows, hertz_answer, hertz_stress
+from .realrows import (
+    exact_solve,
+    fe_fill,
+    fill_choice,
+    flat_edge_rows,
+    flat_rows,
+    hertz_answer,
+    hertz_row_traction,
+    hertz_stress,
+)
 from .result import TEXT_COLUMNS, empty_rows
 from .wear import fill_wear
 
@@ -248,9 +257,9 @@ def _run_chunk(task: ChunkTask) -> dict:
         rows["p0_fe"][:] = np.nan
         rows["status"][good] = "ok"
     else:
-        fe = _choose_models(task, cp, rows, good)
+        fe = _choose_models(task, cp, rows, flags, good)
         if cp.kind == "flat_faced":
-            vtk_fe = flat_rows(task, cp, rows, flags, fe, default_cache())
+            vtk_fe = flat_rows(task, cp, rows, fe, default_cache())
         else:
             vtk_fe = _fe_rows(task, cp, rows, flags, fe, default_cache())
     fill_wear(rows, task.slip, task.wear_k, opts.method)
@@ -265,7 +274,7 @@ def _run_chunk(task: ChunkTask) -> dict:
     return rows
 
 
-def _choose_models(task: ChunkTask, cp: ContactParams, rows, good) -> np.ndarray:
+def _choose_models(task: ChunkTask, cp: ContactParams, rows, flags, good) -> np.ndarray:
     """The error estimates of rows ``good``; method ``auto``: Hertz answers the rows within the
     tolerance (not in a curvature jump's span). Returns the rows the FE answers."""
     e_arc, e_h = arc_error_estimate(task.scene, rows["theta"][good], rows["a_hertz"][good], cp.Rr)
@@ -276,7 +285,7 @@ def _choose_models(task: ChunkTask, cp: ContactParams, rows, good) -> np.ndarray
     hz = (task.hertz[good] if task.hertz is not None else
           hertz_within_tolerance(e_h, task.jump[good] if task.jump is not None else None,
                                  task.options.tolerance))
-    hertz_answer(rows, good[hz], cp, task.traction)
+    hertz_answer(rows, good[hz], cp, task.traction, flags)
     return good[~hz]
 
 
@@ -354,9 +363,10 @@ def _write_vtus(task: ChunkTask, cp: ContactParams, rows, vtk_fe: dict) -> None:
         analytic = rows["status"] == "ok"
     for i in np.flatnonzero(task.vtk_mask & analytic):
         if int(i) not in vtk_fe:
+            # method auto: the traction the row carries (|Q|/Fc), as its stress columns
+            mu, d = (cp.mu, cp.sliding) if task.options.method == "hertz" else hertz_row_traction(rows, i, cp)
             hc = LineContact(F=rows["Fc"][i], length=cp.length, R1=rows["rho"][i], R2=cp.Rr,
-                             cam=cp.cam, roller=cp.roller, mu=cp.mu, plane=cp.plane,
-                             direction=cp.sliding)
+                             cam=cp.cam, roller=cp.roller, mu=mu, plane=cp.plane, direction=d)
             write_hertz_vtu(Path(task.vtk_dir) / vtu_name(task.theta[i]), hc,
                             wear=_vtu_wear(task, rows, i))
 

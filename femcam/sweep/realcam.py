@@ -100,7 +100,7 @@ def _tip(scene):
 
 def _a_at(scene, jump, F) -> float:
     """Hertz half-width (m) at a junction: the larger of the two sides."""
-    _, R = contact_geometry(scene.program, scene.follower, _tip(scene))
+    _, R = contact_geometry(scene.follower, _tip(scene))
     E = effective_modulus(scene.cam, scene.roller, scene.plane)
     a = 0.0
     for rho in (jump.rho_left, jump.rho_right):
@@ -272,7 +272,7 @@ def arc_error_estimate(scene, theta, a, R: float) -> tuple[np.ndarray, np.ndarra
     a = np.asarray(a, float)
     d = 1e-5
     both = np.concatenate([theta - d, theta + d])
-    gen, _ = contact_geometry(scene.program, scene.follower, _tip(scene))
+    gen, _ = contact_geometry(scene.follower, _tip(scene))
     dd = scene.program.derivatives(both)
     pr = cam_profile(gen, both, dd.s, dd.s1, dd.s2, allow_undercut=True)
     n = theta.size
@@ -402,7 +402,7 @@ def follower_radius(scene) -> float:
     f = scene.follower
     if isinstance(f, FlatFacedFollower):
         return math.inf
-    _, R = contact_geometry(scene.program, f, _tip(scene))
+    _, R = contact_geometry(f, _tip(scene))
     return R
 
 

@@ -12,6 +12,7 @@ by half-width and cam radius.
 from __future__ import annotations
 
 import math
+from functools import cache
 
 import numpy as np
 
@@ -26,6 +27,10 @@ from .realcam import traction_args
 
 #: geometric bin ratio (half-width and cam radius) of the flat-faced models
 FLAT_BIN_RATIO = 1.25
+#: a Hertz row's traction ratio |Q|/Fc is taken on the grid mu k / RATIO_STEPS (k = 0 ..
+#: RATIO_STEPS; exact at 0 and at full sliding): at most RATIO_STEPS + 1 shape-factor
+#: maximisations per process instead of one per row, the ratio off by <= mu / (2 RATIO_STEPS)
+RATIO_STEPS = 100
 
 
 def fe_fill(rows, i, r: ContactResult):
@@ -63,8 +68,9 @@ def fe_fill(rows, i, r: ContactResult):
     rows["slip_state"][i] = r.slip_state
 
 
-def hertz_stress(rows, idx, cp, p0, a) -> None:
-    """Stress maxima of rows ``idx`` from the Hertz shape factors.
+def hertz_stress(rows, idx, cp, p0, a, ratio=None) -> None:
+    """Stress maxima of rows ``idx`` from the Hertz shape factors, with the tangential traction
+    ``q = (|Q|/Fc) p`` (Johnson 1985 §7.1; full sliding: ``|Q|/Fc = mu``).
 
     Parameters
     ----------
@@ -78,15 +84,60 @@ def hertz_stress(rows, idx, cp, p0, a) -> None:
         Peak Hertz pressure [Pa].
     a : float or ndarray, shape (m,)
         Hertz half-width [m].
+    ratio : float or ndarray, shape (m,), optional
+        Traction ratio ``|Q|/Fc`` of each row [-], in ``[0, mu]``; default ``mu`` (full
+        sliding). Taken on the grid of :data:`RATIO_STEPS`.
     """
-    k = shape_factors(cp.mu, cp.cam.nu, cp.plane)
-    p0, a = np.asarray(p0, float), np.asarray(a, float)
-    rows["vm_max"][idx] = k["von_mises"][0] * p0
-    rows["vm_depth"][idx] = k["von_mises"][1] * a
-    rows["tau1_max"][idx] = k["tau1"][0] * p0
-    rows["tau1_depth"][idx] = k["tau1"][1] * a
-    for name in ("sx_min", "sx_max", "sz_min", "txz_absmax"):
-        rows[name][idx] = k[name] * p0
+    idx = np.atleast_1d(np.asarray(idx, int))
+    p0 = np.broadcast_to(np.asarray(p0, float), idx.shape)
+    a = np.broadcast_to(np.asarray(a, float), idx.shape)
+    if ratio is None or cp.mu <= 0:
+        steps = np.full(idx.shape, RATIO_STEPS if cp.mu > 0 else 0)
+    else:
+        steps = np.rint(np.clip(np.asarray(ratio, float) / cp.mu, 0.0, 1.0) * RATIO_STEPS).astype(int)
+        steps = np.broadcast_to(steps, idx.shape)
+    for k_step in np.unique(steps):
+        sel = steps == k_step
+        j, p, b = idx[sel], p0[sel], a[sel]
+        k = _shape_factors(int(k_step), float(cp.mu), float(cp.cam.nu), cp.plane)
+        rows["vm_max"][j] = k["von_mises"][0] * p
+        rows["vm_depth"][j] = k["von_mises"][1] * b
+        rows["tau1_max"][j] = k["tau1"][0] * p
+        rows["tau1_depth"][j] = k["tau1"][1] * b
+        for name in ("sx_min", "sx_max", "sz_min", "txz_absmax"):
+            rows[name][j] = k[name] * p
+
+
+@cache  # at most RATIO_STEPS + 1 entries per (mu, nu, plane)
+def _shape_factors(k_step: int, mu: float, nu: float, plane: str) -> dict:
+    """:func:`femcam.hertz.conformity.shape_factors` at the traction ratio ``mu k_step / RATIO_STEPS``."""
+    return shape_factors(mu * (k_step / RATIO_STEPS), nu, plane)
+
+
+def hertz_row_traction(rows, i: int, cp) -> tuple[float, int]:
+    """The traction a Hertz-answered row carries, for its analytic field (VTU).
+
+    Parameters
+    ----------
+    rows : dict[str, ndarray]
+        The chunk's table (``Q`` [N], ``Fc`` [N]).
+    i : int
+        Row index.
+    cp : ContactParams
+        Contact parameters (``mu``, ``sliding``).
+
+    Returns
+    -------
+    ratio : float
+        ``|Q|/Fc`` [-] (``mu`` when the row has no ``Q``, 0 at ``Fc = 0``).
+    direction : int
+        Sign of ``Q`` on the cam along x (``cp.sliding`` when ``Q`` is 0 or missing).
+    """
+    Q, F = float(rows["Q"][i]), float(rows["Fc"][i])
+    if not math.isfinite(Q):
+        return cp.mu, cp.sliding
+    ratio = abs(Q) / F if F > 0 else 0.0
+    return ratio, (int(math.copysign(1, Q)) if Q else cp.sliding)
 
 
 def fill_choice(rows, i, res) -> None:
@@ -172,10 +223,13 @@ def exact_solve(scene, cp, model, theta, F, *, Q, jump: bool, tol_pct: float):
     return res if res.model == "fe_exact" else None
 
 
-def hertz_answer(rows, idx, cp, traction) -> None:
-    """Rows ``idx`` answered by Hertz (method ``auto``, estimate within the tolerance): stress
-    maxima from the shape factors, traction from the closed forms (Carter / Cattaneo stick
-    width ``2 a sqrt(1 - |Q|/(mu F))``, Johnson 1985 §7.1, §8.2; full sliding: ``Q = s mu F``).
+def hertz_answer(rows, idx, cp, traction, flags) -> None:
+    """Rows ``idx`` answered by Hertz (method ``auto``, estimate within the tolerance): traction
+    from the closed forms (Carter / Cattaneo stick width ``2 a sqrt(1 - |Q|/(mu F))``, Johnson
+    1985 §7.1, §8.2; full sliding: ``Q = s mu F``), stress maxima from the shape factors with
+    the traction the row carries, ``q = (|Q|/F) p`` (:func:`hertz_stress`). A nonzero ``Q``
+    with ``mu = 0`` cannot be carried: ``Q`` is set to 0 and the row flagged
+    ``Q_without_friction``.
 
     Parameters
     ----------
@@ -187,19 +241,25 @@ def hertz_answer(rows, idx, cp, traction) -> None:
         Contact parameters (``mu``, ``sliding``, shape factors).
     traction : femcam.sweep.realcam.Traction or None
         Per-angle traction of the chunk (None: full sliding in ``cp.sliding``).
+    flags : list of list of str
+        Per-row flags (appended to).
     """
     idx = np.asarray(idx, int)
     if idx.size == 0:
         return
-    hertz_stress(rows, idx, cp, rows["p0_hertz"][idx], rows["a_hertz"][idx])
-    for i in idx:
+    ratio = np.full(idx.size, cp.mu)
+    for n, i in enumerate(idx):
         F, a = float(rows["Fc"][i]), float(rows["a_hertz"][i])
         sl, Q, _ = traction_args(traction, int(i), cp.sliding)
         if Q is None:
             Q, f = sl * cp.mu * F, 1.0
         else:
             f = abs(Q) / (cp.mu * F) if cp.mu > 0 else (math.inf if Q else 0.0)
+            if cp.mu <= 0 and Q:
+                flags[i].append("Q_without_friction")
             Q = math.copysign(min(abs(Q), cp.mu * F), Q)
+            if f < 1:
+                ratio[n] = abs(Q) / F if F > 0 else 0.0
         rows["Q"][i] = Q
         rows["Q_over_muFc"][i] = Q / (cp.mu * F) if cp.mu > 0 else np.nan
         rows["stick_width"][i] = 2 * a * math.sqrt(1 - f) if f < 1 else 0.0
@@ -207,6 +267,7 @@ def hertz_answer(rows, idx, cp, traction) -> None:
         rows["model"][i] = "hertz"
         rows["p0_nodal"][i] = np.nan
         rows["status"][i] = "ok"
+    hertz_stress(rows, idx, cp, rows["p0_hertz"][idx], rows["a_hertz"][idx], ratio)
 
 
 def flat_edge_rows(scene, cp, rows, good) -> np.ndarray:
@@ -263,7 +324,7 @@ def _flat_model(cache, scene, cp, options, a: float, rho: float) -> RealCam:
         solver=SolverOptions()))
 
 
-def flat_rows(task, cp, rows, flags, good, cache) -> dict:
+def flat_rows(task, cp, rows, good, cache) -> dict:
     """Flat-faced rows ``good``: :func:`femcam.fe.choice.solve_angle` per angle.
 
     Parameters
@@ -274,8 +335,6 @@ def flat_rows(task, cp, rows, flags, good, cache) -> dict:
         Contact parameters.
     rows : dict[str, ndarray]
         The chunk's table (SI columns, modified in place).
-    flags : list of list of str
-        Per-row flags (not used here).
     good : array_like of int
         Rows the FE answers.
     cache : ModelCache

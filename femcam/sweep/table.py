@@ -33,6 +33,8 @@ force on the cam along local x), ``Q_over_muFc``, ``stick_width_um``, ``slip_sta
   is off by more than 0.1 % at the contact edge (quartic gap term / quadratic term at x = a,
   :func:`femcam.hertz.conformity.gap_nonparabolicity`); the FE uses the exact circular surfaces,
   so ``err_a``/``err_p0`` there measure Hertz's error as much as the FE's;
+* ``Q_without_friction`` -- a Hertz-answered row (method auto) whose mechanism asks for a
+  tangential force Q with friction 0: none can be carried, Q is set to 0;
 * ``rebuilt`` -- the model of the angle's family did not cover it (``model.covers``) and a
   model was built for this angle alone (its reuse error is 0).
 

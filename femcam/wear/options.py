@@ -125,13 +125,27 @@ def slip_kwargs(scene, opts: dict | None = None) -> dict:
     Returns
     -------
     dict
-        ``omega`` [rad/s], ``roller_model``, ``srr`` [-], ``mu`` [-] (0.1 when the scene has none
-        or 0), ``J`` [kg m^2] or None, ``T_drag`` [N m].
+        ``omega`` [rad/s], ``roller_model``, ``srr`` [-], ``mu`` [-] (the scene's friction, 0
+        included), ``J`` [kg m^2] or None, ``T_drag`` [N m].
+
+    Raises
+    ------
+    InputError
+        A roller follower with ``roller_model = "inertia"`` and friction 0: only friction spins
+        the roller, so without it its speed is not set by the scene (refused with that reason).
     """
     if opts is None:
         opts = wear_options(scene)
-    return dict(omega=scene.omega, roller_model=opts.get("roller_model", "srr"), srr=opts.get("srr", 0.02),
-                mu=scene.mu or 0.1, J=opts.get("J_kg_m2"), T_drag=opts.get("T_drag_N_m", 0.0))
+    model = opts.get("roller_model", "srr")
+    if model == "inertia" and scene.mu == 0 and type(scene.follower).__name__ == "RollerFollower":
+        # J dOmega/dt = mu Fc Rr - T_drag sign(Omega): with mu = 0 any constant spin (T_drag = 0)
+        # is a periodic answer, or the roller coasts to rest: the scene does not set the speed
+        raise InputError("contact.friction = 0: the inertia-limited roller model ([wear] roller_model "
+                         "= 'inertia') needs friction > 0 (only friction spins the roller; without it "
+                         "the roller speed is not set by the scene): give [contact] friction or use "
+                         "roller_model = 'srr'")
+    return dict(omega=scene.omega, roller_model=model, srr=opts.get("srr", 0.02),
+                mu=scene.mu, J=opts.get("J_kg_m2"), T_drag=opts.get("T_drag_N_m", 0.0))
 
 
 def describe_k(k: float, where: str) -> str:

@@ -120,7 +120,7 @@ def _modified_sine_I() -> float:
     return 2.0 * half
 
 
-def bezier_v2_integral(control_points) -> float:
+def bezier_v2_integral(control_points) -> Fraction:
     r"""int_0^1 v(u)^2 du for a Bezier (Bernstein) law with ordinates ``c_0..c_n``.
 
     .. math:: v = n\sum_{i=0}^{n-1} (c_{i+1}-c_i) B_i^{n-1}(u), \quad
@@ -163,7 +163,7 @@ def bezier_v2_integral(control_points) -> float:
     return total
 
 
-def polynomial_v2_integral(coefficients) -> float:
+def polynomial_v2_integral(coefficients) -> Fraction:
     r"""int_0^1 v(u)^2 du for ``s = sum c_k u^k``: ``v = sum k c_k u^(k-1)``, so
 
     .. math:: \int_0^1 v^2\,du = \sum_{i,j\ge1} \frac{i c_i\, j c_j}{i + j - 1}
