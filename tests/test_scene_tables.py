@@ -88,7 +88,7 @@ def test_valid_tables_are_kept(tmp_path):
     assert sc.fe == {"a_over_h": 20.0, "tolerance": 1e-3}
     assert sc.sweep == {"method": "hertz", "angles_deg": "-90:90:5", "chunk_size": 6, "vtk_every": 0,
                         "plots": False}
-    assert wear_options(sc) == pytest.approx({"k_mm3_per_N_m": 1e-18, "srr": 0.05})  # mm^3 = 1e-9 m^3
+    assert wear_options(sc) == pytest.approx({"k": 1e-18, "srr": 0.05})  # mm^3 = 1e-9 m^3, SI name
 
 
 @pytest.fixture

@@ -543,7 +543,7 @@ def test_wear_table_keys_and_k_source():
     k, where = wear_coefficient_info(dataclasses.replace(hard, wear={}))     # default K, scene H
     assert k == pytest.approx(1e-8 / 6000e6, rel=1e-15) and where.startswith("default K = 1e-08")
     opts = wear_options(dataclasses.replace(sc, wear={"tip_radius_mm": 0.5, "cycles": 10}))
-    assert opts == {"tip_radius_mm": pytest.approx(5e-4), "cycles": 10.0}
+    assert opts == {"tip_radius": pytest.approx(5e-4), "cycles": 10.0}  # SI name, m
 
 
 def test_cli_map_checks_wear_keys_and_knife_edge(tmp_path, capsys):

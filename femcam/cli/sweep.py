@@ -255,11 +255,11 @@ def _run(args) -> int:
           + (f", p0 FE {s['p0_fe_max'] / 1e6:.1f} MPa (max |err| {100 * s['err_p0_absmax']:.3f} %)"
              if res.method == "fe" else "")
           + f", von Mises {s['vm_max'] / 1e6:.1f} MPa, tau1 {s['tau1_max'] / 1e6:.1f} MPa")
-    for note in s["extras"].get("notes", ()):   # e.g. the cam disk check (femcam.sweep.extras)
+    for note in s.get("extras", {}).get("notes", ()):   # e.g. the cam disk check (femcam.sweep.extras)
         print(f"  {note}")
     for k, v in res.paths.items():
         print(f"  {k}: {v}")
-    for flag in s["extras"].get("flags", ()):
+    for flag in s.get("extras", {}).get("flags", ()):
         print(f"femcam sweep: warning: {flag}", file=sys.stderr)
     if s["n_failed"]:
         print(f"femcam sweep: warning: {s['n_failed']} angle(s) failed; see the status and "

@@ -26,12 +26,14 @@ def wear_table(ck: _Checker, raw, hardness) -> dict:
     Returns
     -------
     dict
-        The valid keys in SI (``k_mm3_per_N_m`` in m^3/(N m), ``J_kg_m2`` in kg m^2,
-        ``T_drag_N_m`` in N m, ``tip_radius_mm`` in m; ``K``, ``srr``, ``cycles`` as given).
+        The valid keys with SI values under SI names (``k`` in m^3/(N m) from
+        ``k_mm3_per_N_m``, ``tip_radius`` in m from ``tip_radius_mm``; ``J_kg_m2`` in kg m^2,
+        ``T_drag_N_m`` in N m; ``K``, ``srr``, ``cycles`` as given).
     """
     out = ck.table(raw, "wear", _WEAR)
     if not isinstance(raw, dict):
         return out
+    out = {_SI_WEAR.get(key, key): value for key, value in out.items()}
     if "srr" in out and not (-2.0 < out["srr"] < 2.0):
         ck.add("wear.srr", f"= {raw['srr']} (dimensionless): must be in (-2, 2)")
     if "K" in raw and "k_mm3_per_N_m" in raw:
@@ -41,6 +43,10 @@ def wear_table(ck: _Checker, raw, hardness) -> dict:
         ck.add("wear.K", f"= {raw['K']} (dimensionless): needs the cam hardness "
                "[materials.cam] hardness_MPa (MPa), k = K/H; or give k_mm3_per_N_m (mm^3/(N m))")
     return out
+
+
+#: [wear] keys whose checked (SI) value is handed on under an SI name
+_SI_WEAR = {"k_mm3_per_N_m": "k", "tip_radius_mm": "tip_radius"}
 
 
 def _scene_wear(ck: _Checker, raw: dict, mats: dict) -> None:

@@ -58,8 +58,8 @@ def wear_options(scene) -> dict:
     Returns
     -------
     dict of str -> float or str
-        The checked ``[wear]`` keys with SI values (``k_mm3_per_N_m`` in m^3/(N m), ``J_kg_m2``
-        in kg m^2, ``T_drag_N_m`` in N m, ``tip_radius_mm`` in m, ``cycles`` in revolutions).
+        The checked ``[wear]`` keys with SI values under SI names (``k`` in m^3/(N m), ``J_kg_m2``
+        in kg m^2, ``T_drag_N_m`` in N m, ``tip_radius`` in m, ``cycles`` in revolutions).
 
     Raises
     ------
@@ -95,8 +95,8 @@ def wear_coefficient_info(scene) -> tuple[float, str]:
     """
     opts = wear_options(scene)
     hardness = scene.cam.hardness
-    if "k_mm3_per_N_m" in opts:
-        k = opts["k_mm3_per_N_m"]
+    if "k" in opts:
+        k = opts["k"]
         return k, f"scene [wear] k_mm3_per_N_m = {k * 1e9:g} mm^3/(N m)"
     if "K" in opts:
         k = dimensional_coefficient(opts["K"], hardness)
@@ -186,7 +186,7 @@ def follower_tip_radius(scene) -> float | None:
         Both keys given with different values.
     """
     tip = getattr(scene, "tip_radius", None)
-    legacy = wear_options(scene).get("tip_radius_mm")
+    legacy = wear_options(scene).get("tip_radius")
     if legacy is None:
         return tip
     warnings.warn("scene [wear] tip_radius_mm is deprecated: give the knife-edge tip radius as "
