@@ -25,25 +25,11 @@ from pathlib import Path
 
 import numpy as np
 
-from ..fe.elasticity import scalar_node_coordinates, stress_operator
+from ..fe.elasticity import stress_operator
 from .cam_rows import solve_global
+from .export import nodal_fields, stack_bodies
 
 BODY_IDS = {"cam": 0, "shaft": 3}
-
-
-def _fields(body, f, centre, plane, S=None) -> dict:
-    """Nodal fields of ``body`` under the nodal forces ``f``; hoop about ``centre``."""
-    u = body.solve(f)
-    s = (stress_operator(body) if S is None else S) @ u
-    n = body.n_dofs // 2
-    sxx, syy, sxy = s[:n], s[n:2 * n], s[2 * n:]
-    xy = scalar_node_coordinates(body)
-    th = np.arctan2(xy[1] - centre[1], xy[0] - centre[0])
-    hoop = sxx * np.sin(th) ** 2 + syy * np.cos(th) ** 2 - 2 * sxy * np.sin(th) * np.cos(th)
-    szz = body.material.nu * (sxx + syy) if plane == "strain" else np.zeros_like(sxx)
-    vm = np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) + 3 * sxy**2)
-    return {"xy": xy, "u": np.stack([u[0::2], u[1::2]]), "sxx": sxx, "syy": syy, "sxy": sxy,
-            "hoop": hoop, "von_mises": vm, "cells": (body.basis.element_dofs[::2] // 2).T}
 
 
 def cam_body_fields(model, result, name: str) -> dict:
@@ -67,7 +53,7 @@ def cam_body_fields(model, result, name: str) -> dict:
     """
     lam = np.concatenate([result.p, result.bore_p])
     f = model.loads[name] @ (lam if name == "cam" else result.bore_p)
-    return _fields(model.bodies[name], f, model.centre, model.plane)
+    return nodal_fields(model.bodies[name], f, model.centre, model.plane)
 
 
 def write_cam_vtu(model, result, path, bodies=("cam", "shaft")) -> Path:
@@ -91,27 +77,12 @@ def write_cam_vtu(model, result, path, bodies=("cam", "shaft")) -> Path:
     """
     import meshio  # optional heavy dependency of the export only
 
-    pts, cells, ids = [], [], []
-    keys = ("sxx", "syy", "sxy", "hoop", "von_mises")
-    data = {k: [] for k in ("displacement",) + keys}
-    off = 0
-    for name in bodies:
-        if name not in model.bodies:
-            continue
-        fl = cam_body_fields(model, result, name)
-        n = fl["xy"].shape[1]
-        pts.append(np.column_stack([fl["xy"].T, np.zeros(n)]))
-        cells.append(fl["cells"] + off)
-        ids.append(np.full(fl["cells"].shape[0], BODY_IDS[name]))
-        data["displacement"].append(np.column_stack([fl["u"].T, np.zeros(n)]))
-        for k in keys:
-            data[k].append(fl[k])
-        off += n
+    fields = {name: cam_body_fields(model, result, name) for name in bodies if name in model.bodies}
+    pts, cells, data, ids = stack_bodies(fields, BODY_IDS)
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    meshio.write(path, meshio.Mesh(np.concatenate(pts), [("triangle6", np.concatenate(cells))],
-                                   point_data={k: np.concatenate(v) for k, v in data.items()},
-                                   cell_data={"body": [np.concatenate(ids)]}))
+    meshio.write(path, meshio.Mesh(pts, [("triangle6", cells)], point_data=data,
+                                   cell_data={"body": [ids]}))
     return path
 
 
@@ -143,7 +114,7 @@ def global_cam_fields(model, C, n, F: float) -> dict:
     f[cam.basis.nodal_dofs[1, model.station_nodes]] += L[1:-1:2]
     if "stress" not in model.cache:
         model.cache["stress"] = stress_operator(cam)
-    fl = _fields(cam, f, (0.0, 0.0), model.plane, model.cache["stress"])
+    fl = nodal_fields(cam, f, (0.0, 0.0), model.plane, model.cache["stress"])
     nn = fl["xy"].shape[1]
     fl["bore_hoop"] = np.full(nn, np.nan)
     fl["bore_hoop"][model.bore_nodes] = fl["hoop"][model.bore_nodes]

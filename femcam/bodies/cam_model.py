@@ -37,7 +37,7 @@ from .cam_geometry import CamDisk, outline_without_arc
 from .cam_mesh import mesh_cam_disk
 from .contact import arc_load_matrix, arc_weights, radial_measure
 from .mesh import gmsh_session, mesh_disk
-from .model import _condense, _hoop_rows
+from .model import _condense, _hoop_rows, check_bore_mesh
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -69,10 +69,8 @@ class CamMeshOptions:
     arc_over_xf: float = 4.0
 
     def __post_init__(self):
-        if int(self.n_bore) != self.n_bore or self.n_bore < 16 or self.n_bore % 4:
-            raise _validate.fail("n_bore", self.n_bore, "", "must be a multiple of 4, >= 16")
+        check_bore_mesh(self.n_bore, self.growth)
         _validate.in_range("h_max_over_web", self.h_max_over_web, 0.02, 2.0, "")
-        _validate.in_range("growth", self.growth, 0.05, 1.0, "")
         _validate.in_range("arc_over_xf", self.arc_over_xf, 1.5, 40.0, "")
 
 

@@ -18,6 +18,80 @@ from ..fe.elasticity import scalar_node_coordinates, stress_operator
 BODY_IDS = {"cam": 0, "ring": 1, "pin": 2}
 
 
+def nodal_fields(body, f, centre, plane: str, S=None) -> dict:
+    """Nodal displacement and stresses of one elastic body under the nodal forces ``f``.
+
+    Parameters
+    ----------
+    body : femcam.fe.elasticity.Body
+        The clamped, factorised body.
+    f : ndarray, shape (n_dofs,)
+        Nodal forces per unit thickness [N/m].
+    centre : tuple of float
+        The point the hoop direction is taken about, (x, y) in the body's frame [m].
+    plane : {"strain", "stress"}
+        Plane condition (sets ``szz`` in the von Mises stress).
+    S : scipy.sparse matrix or None, optional
+        The body's stress operator [Pa/m] if already built; None: built here.
+
+    Returns
+    -------
+    dict
+        ``xy`` (2, n) node coordinates [m]; ``u`` (2, n) displacement [m]; ``sxx``, ``syy``,
+        ``sxy``, ``hoop`` (about ``centre``), ``von_mises`` (n,) [Pa]; ``cells`` (n_cells, 6)
+        int node indices of the ``triangle6`` cells.
+    """
+    u = body.solve(f)
+    s = (stress_operator(body) if S is None else S) @ u
+    n = body.n_dofs // 2
+    sxx, syy, sxy = s[:n], s[n:2 * n], s[2 * n:]
+    xy = scalar_node_coordinates(body)
+    th = np.arctan2(xy[1] - centre[1], xy[0] - centre[0])
+    hoop = sxx * np.sin(th) ** 2 + syy * np.cos(th) ** 2 - 2 * sxy * np.sin(th) * np.cos(th)
+    szz = body.material.nu * (sxx + syy) if plane == "strain" else np.zeros_like(sxx)
+    vm = np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) + 3 * sxy**2)
+    return {"xy": xy, "u": np.stack([u[0::2], u[1::2]]), "sxx": sxx, "syy": syy, "sxy": sxy,
+            "hoop": hoop, "von_mises": vm, "cells": (body.basis.element_dofs[::2] // 2).T}
+
+
+def stack_bodies(fields: dict, body_ids: dict):
+    """Several bodies' nodal fields as one point cloud with ``triangle6`` cells.
+
+    Parameters
+    ----------
+    fields : dict of str to dict
+        Body name -> :func:`nodal_fields` output, in the order to write.
+    body_ids : dict of str to int
+        The integer id written per cell for each body name.
+
+    Returns
+    -------
+    points : ndarray, shape (n, 3)
+        Node coordinates [m] (z = 0).
+    cells : ndarray of int, shape (nel, 6)
+        ``triangle6`` node indices.
+    point_data : dict of str to ndarray
+        ``displacement`` (n, 3) [m]; ``sxx``, ``syy``, ``sxy``, ``hoop``, ``von_mises`` (n,) [Pa].
+    body_ids : ndarray of int, shape (nel,)
+        Body id of each cell.
+    """
+    keys = ("sxx", "syy", "sxy", "hoop", "von_mises")
+    pts, cells, ids = [], [], []
+    data = {k: [] for k in ("displacement",) + keys}
+    off = 0
+    for name, fl in fields.items():
+        n = fl["xy"].shape[1]
+        pts.append(np.column_stack([fl["xy"].T, np.zeros(n)]))
+        cells.append(fl["cells"] + off)
+        ids.append(np.full(fl["cells"].shape[0], body_ids[name]))
+        data["displacement"].append(np.column_stack([fl["u"].T, np.zeros(n)]))
+        for k in keys:
+            data[k].append(fl[k])
+        off += n
+    return (np.concatenate(pts), np.concatenate(cells), {k: np.concatenate(v) for k, v in data.items()},
+            np.concatenate(ids))
+
+
 def body_fields(model, result, name: str) -> dict:
     """Nodal fields of body ``name`` (see module docstring) for a :class:`RingResult`.
 
@@ -43,19 +117,7 @@ def body_fields(model, result, name: str) -> dict:
         f = model.loads["cam"] @ result.p
     else:
         f = model.loads[name] @ (basic if name == "ring" else result.bore_p)
-    u = b.solve(f)
-    s = stress_operator(b) @ u
-    n = b.n_dofs // 2
-    sxx, syy, sxy = s[:n], s[n:2 * n], s[2 * n:]
-    xy = scalar_node_coordinates(b)
-    th = np.arctan2(xy[1] - model.bearing.Ro, xy[0])
-    hoop = sxx * np.sin(th) ** 2 + syy * np.cos(th) ** 2 - 2 * sxy * np.sin(th) * np.cos(th)
-    nu = b.material.nu
-    szz = nu * (sxx + syy) if model.plane == "strain" else np.zeros_like(sxx)
-    vm = np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) + 3 * sxy**2)
-    return {"xy": xy, "u": np.stack([u[0::2], u[1::2]]), "sxx": sxx, "syy": syy, "sxy": sxy,
-            "hoop": hoop, "von_mises": vm,
-            "cells": (b.basis.element_dofs[::2] // 2).T}
+    return nodal_fields(b, f, (0.0, model.bearing.Ro), model.plane)
 
 
 def ring_arrays(model, result, bodies=("ring", "pin", "cam")):
@@ -81,23 +143,8 @@ def ring_arrays(model, result, bodies=("ring", "pin", "cam")):
     body_ids : ndarray of int, shape (nel,)
         Body of each cell (:data:`BODY_IDS`: 0 cam, 1 ring, 2 pin).
     """
-    pts, cells, ids = [], [], []
-    data = {k: [] for k in ("displacement", "sxx", "syy", "sxy", "hoop", "von_mises")}
-    off = 0
-    for name in bodies:
-        if name not in model.bodies:
-            continue
-        fl = body_fields(model, result, name)
-        n = fl["xy"].shape[1]
-        pts.append(np.column_stack([fl["xy"].T, np.zeros(n)]))
-        cells.append(fl["cells"] + off)
-        ids.append(np.full(fl["cells"].shape[0], BODY_IDS[name]))
-        data["displacement"].append(np.column_stack([fl["u"].T, np.zeros(n)]))
-        for k in ("sxx", "syy", "sxy", "hoop", "von_mises"):
-            data[k].append(fl[k])
-        off += n
-    return (np.concatenate(pts), np.concatenate(cells), {k: np.concatenate(v) for k, v in data.items()},
-            np.concatenate(ids))
+    fields = {name: body_fields(model, result, name) for name in bodies if name in model.bodies}
+    return stack_bodies(fields, BODY_IDS)
 
 
 def write_ring_vtu(model, result, path, bodies=("ring", "pin", "cam")) -> Path:

@@ -41,6 +41,26 @@ from .geometry import RollerBearing
 from .mesh import gmsh_session, mesh_disk, mesh_ring
 
 
+def check_bore_mesh(n_bore, growth) -> None:
+    """Check the bore-mesh settings shared by the ring and the cam-disk mesh options.
+
+    Parameters
+    ----------
+    n_bore : int
+        Vertices on the bore circle: a multiple of 4, at least 16.
+    growth : float
+        Element size growth rate away from the refined zones [-], in [0.05, 1].
+
+    Raises
+    ------
+    InputError
+        A value out of range, naming the field.
+    """
+    if int(n_bore) != n_bore or n_bore < 16 or n_bore % 4:
+        raise _validate.fail("n_bore", n_bore, "", "must be a multiple of 4, >= 16")
+    _validate.in_range("growth", growth, 0.05, 1.0, "")
+
+
 @dataclass(frozen=True, kw_only=True)
 class RingMeshOptions:
     """Mesh of the ring and pin (pin surface size = bore spacing).
@@ -65,10 +85,8 @@ class RingMeshOptions:
     growth: float = 0.3
 
     def __post_init__(self):
-        if int(self.n_bore) != self.n_bore or self.n_bore < 16 or self.n_bore % 4:
-            raise _validate.fail("n_bore", self.n_bore, "", "must be a multiple of 4, >= 16")
+        check_bore_mesh(self.n_bore, self.growth)
         _validate.in_range("h_max_over_wall", self.h_max_over_wall, 0.02, 1.0, "")
-        _validate.in_range("growth", self.growth, 0.05, 1.0, "")
 
 
 def _hoop_rows(body, nodes, theta):
