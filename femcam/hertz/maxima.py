@@ -28,7 +28,6 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
-from scipy.optimize import minimize
 
 from .. import _validate
 from ..materials import PLANES
@@ -93,6 +92,8 @@ def _maximise(quantity, mu, nu, plane, n_x=401, n_z=201):
     inner = np.unravel_index(np.argmax(F[:, 1:]), (n_x, n_z - 1))
     starts = [np.unravel_index(np.argmax(F), F.shape), (int(np.argmax(F[:, 0])), 0),
               (int(inner[0]), int(inner[1]) + 1)]
+    from scipy.optimize import minimize  # lazy: scipy.optimize, ~0.15 s to import
+
     best = None
     nfev, converged = 0, True
     for i, j in starts:

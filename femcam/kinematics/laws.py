@@ -45,7 +45,6 @@ from functools import cached_property
 from math import comb, pi
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 from .. import _validate
 from ..errors import InputError
@@ -152,6 +151,8 @@ class MotionLaw:
         best = float(f[i])
         lo, hi = u[max(i - 1, 0)], u[min(i + 1, u.size - 1)]
         if hi > lo:
+            from scipy.optimize import minimize_scalar  # lazy: scipy.optimize, ~0.15 s to import
+
             res = minimize_scalar(lambda x: -abs(float(self._deriv(np.array([x]), k)[0])),
                                   bounds=(lo, hi), method="bounded",
                                   options={"xatol": 1e-12})

@@ -56,7 +56,6 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 
 import numpy as np
-from scipy.integrate import quad
 
 from .. import _validate
 from ..kinematics import law as make_law
@@ -205,6 +204,8 @@ def v2_integral_quad(law) -> float:
     The law's ``breakpoints`` (and 1/8, 3/8, 1/2, 5/8, 7/8) are passed so that piecewise laws
     (modified sine/trapezoid) are integrated piece by piece.
     """
+    from scipy.integrate import quad  # lazy: scipy.integrate ~0.03 s at import; only this check needs it
+
     law = _resolve(law)
 
     def f(u):
