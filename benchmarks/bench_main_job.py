@@ -8,7 +8,8 @@ What is timed (each in a fresh ``python -m femcam`` subprocess, as a user runs i
    VTK series every 10 degrees, 5 PNG plots), default ``--workers auto``;
 2. the same with ``--no-plots --vtk-every 0`` (compute only).
 
-Each is run ``--runs`` times (default 5) into a fresh directory; the table gives the median wall
+Each is run ``--runs`` times (default 5; with several ``--root`` trees, alternating run by run)
+into a fresh directory; the table gives the median wall
 time, the median CPU time (user + sys of the child and its workers: less sensitive to the
 load of a shared machine than the wall time) and the peak RSS (largest process), with the
 load average before and after. Correctness first: every run must exit 0 and its CSV must give
@@ -234,8 +235,13 @@ def main() -> int:
     commands = [] if args.breakdown_only else ([["--no-plots", "--vtk-every", "0"]] if args.compute_only
                                                else [[], ["--no-plots", "--vtk-every", "0"]])
     for extra in commands:
+        # the trees alternate run by run, so that a load spike from other users hits both
+        runs = {root: [] for root in roots}
+        for _ in range(args.runs):
+            for root in roots:
+                runs[root].append(run_once([*mesh, *extra], root))
         for root in roots:
-            res = [run_once([*mesh, *extra], root) for _ in range(args.runs)]
+            res = runs[root]
             w = [r[0] for r in res]
             c = [r[1] for r in res]
             name = "this tree" if root == ROOT else str(root)

@@ -20,8 +20,9 @@ PKG = ROOT / "femcam"
 LAZY_OK = {"gmsh", "pyvista", "matplotlib", "dask",
            # meshio: ~0.4-0.6 s to import (its format plugins); only the .vtu/.msh writers need it
            "meshio",
-           # scipy submodules that ``import femcam`` does not load already (scipy.signal: ~0.5-0.7 s),
-           # imported where a rarely used path needs them
+           # scipy submodules beyond linalg/sparse, imported where a path needs them: signal
+           # (~0.5-0.7 s), optimize/special/fft/spatial/integrate (0.08-0.12 s together, not
+           # needed by README command 1; docs/architecture.md)
            "scipy",
            # skfem: ~0.03-0.09 s on top of scipy (0.3-0.6 s alone), but ``import femcam`` stays
            # numpy/scipy only (tests/test_imports.py): loaded when an FE body is assembled

@@ -118,7 +118,8 @@ def test_legend_only_with_labelled_artists_and_wear_plot_of_axial_peak_rows(hert
 def test_long_sweep_table_stays_on_disk_and_writes_the_same_files(tmp_path, monkeypatch):
     """With at least STREAM_ANGLES angles and an output directory the table is read from the
     chunk files (memory bounded, benchmarks/bench_sweep_memory.py); lowered here to 1 so that a
-    small sweep takes that path. Reference: the closed-form Hertz p0 (Johnson 1985 eq. 4.45,
+    small sweep takes that path (and the analytic phase runs in blocks of 5 angles, as it does
+    from ANALYTIC_BLOCK angles on). Reference: the closed-form Hertz p0 (Johnson 1985 eq. 4.45,
     written out below) at the requested angles, and the in-memory path's files."""
     import femcam.sweep.run as run
     from femcam.sweep.store import StoredTable
@@ -128,6 +129,7 @@ def test_long_sweep_table_stays_on_disk_and_writes_the_same_files(tmp_path, monk
               workers=1)
     mem = sweep(SCENE, out=tmp_path / "mem", **kw)
     monkeypatch.setattr(run, "STREAM_ANGLES", 1)
+    monkeypatch.setattr(run, "ANALYTIC_BLOCK", 5)  # the analytic phase in blocks, as from 20 000
     disk = sweep(SCENE, out=tmp_path / "disk", **kw)
     assert isinstance(disk.table, StoredTable) and isinstance(mem.table, dict)
     sc = load_scene(SCENE)
@@ -147,3 +149,20 @@ def test_long_sweep_table_stays_on_disk_and_writes_the_same_files(tmp_path, monk
         assert set(a.files) == set(b.files)
         for k in cols:
             np.testing.assert_array_equal(a[k], b[k], err_msg=k)
+
+
+def test_analytic_phase_in_blocks_is_exact_with_follower_dynamics(monkeypatch):
+    """The blocked analytic phase of long sweeps against one ``Scene.analyse`` call of all the
+    angles, on a scene with a one-degree-of-freedom follower train (its periodic response is a
+    whole-cycle computation, done once per scene and interpolated): identical arrays."""
+    import femcam.sweep.run as run
+    from femcam.sweep.realcam import contact_scene
+
+    sc = contact_scene(load_scene(Path(SCENE).parent / "seed002_dynamic.toml"))
+    assert sc.train is not None
+    th = np.radians(np.arange(0.0, 360.0, 4.5))
+    whole = sc.analyse(th)
+    monkeypatch.setattr(run, "ANALYTIC_BLOCK", 7)
+    blocks = run._analyse_in_blocks(sc, th)
+    for k in ("theta", "s", "s1", "s2", "Fc", "rho", "liftoff"):
+        np.testing.assert_array_equal(getattr(blocks, k), getattr(whole, k), err_msg=k)

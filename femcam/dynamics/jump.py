@@ -30,7 +30,6 @@ from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import brentq
 
 from .. import _validate
 from ..errors import InputError
@@ -87,6 +86,8 @@ def _first_root(fun, x, y, xtol):
     i = int(neg[0])
     if i == 0:
         return float(x[0]), 0
+    from scipy.optimize import brentq  # lazy: scipy.optimize, ~0.15 s to import
+
     root, info = brentq(fun, x[i - 1], x[i], xtol=xtol, full_output=True)
     return float(root), int(info.iterations)
 

@@ -28,7 +28,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-import scipy.fft as sfft
 
 from .. import _validate
 from .influence import dcfft_kernel
@@ -113,6 +112,8 @@ class HalfSpace:
         self.dy = _validate.positive("dy", dy, "m")
         self.E_star = _validate.positive("E_star", E_star, "Pa")
         self.kernel = dcfft_kernel(nx, ny, self.dx, self.dy, self.E_star)
+        import scipy.fft as sfft  # lazy: scipy.fft, ~0.05 s to import
+
         self._Kf = sfft.rfft2(self.kernel)
         self._pad = np.zeros((2 * self.nx, 2 * self.ny))
 
@@ -130,6 +131,8 @@ class HalfSpace:
             Combined normal displacement of both bodies [m] (a view into a new array).
         """
         # (a pruned transform that skips the zero rows measured no faster: strided column FFTs)
+        import scipy.fft as sfft  # lazy: scipy.fft, ~0.05 s to import (cached after the first)
+
         self._pad[: self.nx, : self.ny] = p
         full = sfft.irfft2(sfft.rfft2(self._pad) * self._Kf, s=self._pad.shape)
         return full[: self.nx, : self.ny]

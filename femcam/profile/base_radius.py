@@ -14,7 +14,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
 
 from .. import _validate
 from ..errors import UndercutError
@@ -85,6 +84,8 @@ def _polish_min(fun, theta, vals, dtheta, n_max: int = 8):
     ``theta`` are ``vals``: every grid local minimum within a small band of the grid minimum
     (at most ``n_max`` of them) is polished by a bounded Brent search over +-1 grid step.
     Returns ``(value, theta)``; never worse than the grid minimum."""
+    from scipy.optimize import minimize_scalar  # lazy: scipy.optimize, ~0.15 s to import
+
     i0 = int(np.argmin(vals))
     best, best_t = float(vals[i0]), float(theta[i0])
     span = float(np.max(vals)) - best
@@ -263,6 +264,8 @@ def _flat_faced(program, theta, s, s2, dtheta, rho_min, n) -> BaseRadiusResult:
 def _raise_to_undercut_limit(margin, Rb, reach, s):
     """``(Rb, iterations)``: the root of ``margin`` above ``Rb`` (bracketed by doubling, then
     ``brentq``), stepped by ``RB_MARGIN`` onto the safe side."""
+    from scipy.optimize import brentq  # lazy: scipy.optimize, ~0.15 s to import
+
     iterations = 0
     hi = max(2.0 * Rb, reach, float(np.max(np.abs(s))) + 1e-6)
     while margin(hi) <= 0.0:

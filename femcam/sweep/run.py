@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import time
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -32,6 +33,7 @@ from .wear import wear_setup
 DEFAULT_STEP_DEG = 1.0
 #: ``.vtu`` every k angles with ``out`` (API and CLI default)
 DEFAULT_VTK_EVERY = 10
+ANALYTIC_BLOCK = 20_000  # angles per Scene.analyse call in the analytic phase (memory)
 
 
 def parse_angles_deg(spec: str) -> np.ndarray:
@@ -223,12 +225,31 @@ def _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume
 def _analytic(run: SweepRun) -> None:
     """The analytic chain for all angles (cheap, vectorised): contact mask and slip."""
     # only what the planning needs (no table of all angles: memory; the chunks fill theirs)
-    st0 = contact_scene(run.scene).analyse(run.angles)
+    st0 = _analyse_in_blocks(contact_scene(run.scene), run.angles)
     run.rows0 = {k: np.asarray(getattr(st0, k), dtype=float) for k in ("Fc", "rho")}
     run.contact = contact_mask(run.rows0, st0)
     if run.opts.method != "hertz":
         run.traction = scene_traction(run.scene, run.angles)
     run.wear = wear_setup(run.scene, run.angles, st0)
+
+
+def _analyse_in_blocks(scene, theta):
+    """``scene.analyse(theta)``, ANALYTIC_BLOCK angles at a time above that size, reduced to the
+    arrays the planning and the wear slip read (``theta, s, s1, s2, Fc, rho, liftoff``).
+
+    Exact: each angle's state depends on that angle alone; a follower train's periodic response
+    is computed once per scene (a cached property) on its own grid and interpolated to each
+    block. The transient of one call (~300 B per angle) stays that of one block.
+    """
+    if theta.size <= ANALYTIC_BLOCK:
+        return scene.analyse(theta)
+    keys = ("theta", "s", "s1", "s2", "Fc", "rho", "liftoff")
+    parts = {k: [] for k in keys}
+    for i in range(0, theta.size, ANALYTIC_BLOCK):
+        st = scene.analyse(theta[i:i + ANALYTIC_BLOCK])
+        for k in keys:
+            parts[k].append(np.asarray(getattr(st, k)))
+    return SimpleNamespace(**{k: np.concatenate(v) for k, v in parts.items()})
 
 
 def _open_store(run: SweepRun) -> None:

@@ -44,7 +44,6 @@ import random
 from functools import lru_cache
 
 import numpy as np
-from scipy.spatial import ConvexHull, QhullError
 
 from .. import _validate
 from ..hertz import max_shear, unit_stresses
@@ -138,6 +137,8 @@ def enclosing_radius(P) -> float:
     >>> enclosing_radius(np.array([[1.0, 0.0], [-1.0, 0.0], [0.0, 0.5], [0.0, -1.0]]))
     1.0
     """
+    from scipy.spatial import ConvexHull, QhullError  # lazy: scipy.spatial, ~0.03 s to import
+
     P = np.asarray(P, float)
     try:
         P = P[ConvexHull(P).vertices]

@@ -36,7 +36,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.special import gamma, pbdv
 
 from .. import _validate
 
@@ -65,6 +64,8 @@ def greenwood_tripp(n, lam):
     """
     lam = _validate.finite_array("lam", lam, "")
     n = _validate.nonnegative("n", n, "")
+    from scipy.special import gamma, pbdv  # lazy: scipy.special, ~0.04 s to import
+
     D, _ = pbdv(-n - 1.0, lam)
     return gamma(n + 1.0) * np.exp(-lam * lam / 4.0) * D / math.sqrt(2.0 * math.pi)
 

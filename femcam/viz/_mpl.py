@@ -69,6 +69,12 @@ def save(fig, path, *, dpi: int = 100, tight: bool = False) -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
     if tight:
         fig.tight_layout()
-    fig.savefig(path, dpi=dpi)
+    if tight and path.suffix.lower() == ".png":
+        # the Agg canvas directly: savefig would lay the figure out once more (a draw with
+        # rendering off, for the placeholder layout engine tight_layout leaves), ~40 % of a plot
+        fig.dpi = dpi
+        fig.canvas.print_png(path)
+    else:
+        fig.savefig(path, dpi=dpi)
     pyplot().close(fig)
     return path

@@ -56,7 +56,6 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 
 import numpy as np
-from scipy.integrate import quad
 
 from .. import _validate
 from ..kinematics import law as make_law
@@ -255,6 +254,8 @@ def v2_integral_quad(law) -> float:
     float
         ``int_0^1 v(u)^2 du`` [-].
     """
+    from scipy.integrate import quad  # lazy: scipy.integrate ~0.03 s at import; only this check needs it
+
     law = _resolve(law)
 
     def f(u):
