@@ -238,6 +238,13 @@ def _run(args) -> int:
         nl = "\n" if sys.stderr.isatty() else ""  # end a progress bar's line
         print(f"{nl}femcam sweep: {exc or 'interrupted'}", file=sys.stderr)
         return 130
+    _print_summary(res, args)
+    return 0
+
+
+def _print_summary(res, args) -> None:
+    """The sweep's summary on stdout (warnings on stderr): counts, models, the 2D headline and
+    one line per extra provider's worst values (:mod:`femcam.sweep.worst`)."""
     s = res.summary()
     o = res.provenance.get("options", {})
     print(f"femcam sweep: {res.n_angles} angles ({res.n_chunks_resumed} chunks resumed, "
@@ -255,6 +262,8 @@ def _run(args) -> int:
           + (f", p0 FE {s['p0_fe_max'] / 1e6:.1f} MPa (max |err| {100 * s['err_p0_absmax']:.3f} %)"
              if res.method == "fe" else "")
           + f", von Mises {s['vm_max'] / 1e6:.1f} MPa, tau1 {s['tau1_max'] / 1e6:.1f} MPa")
+    for line in s.get("extras", {}).get("worst", ()):   # each provider's worst values (sweep.worst)
+        print(f"  {line}")
     for note in s.get("extras", {}).get("notes", ()):   # e.g. the cam disk check (femcam.sweep.extras)
         print(f"  {note}")
     for k, v in res.paths.items():
@@ -264,4 +273,3 @@ def _run(args) -> int:
     if s["n_failed"]:
         print(f"femcam sweep: warning: {s['n_failed']} angle(s) failed; see the status and "
               "message columns", file=sys.stderr)
-    return 0

@@ -316,6 +316,7 @@ def _extras_lines(ex: dict) -> list[str]:
     if not ex.get("providers"):
         return []
     lines = ["", f"Extra columns from: {', '.join(ex['providers'])}."]
+    lines += [""] + [f"- {t}" for t in ex.get("worst", ())] if ex.get("worst") else []
     if ex.get("assess"):
         lines += ["", "| criterion (assessment) | worst value | at cam angle (deg) |", "|---|---|---|"]
         lines += [f"| {c} | {w['value']:.4g} | {w['theta_deg']:.1f} |" for c, w in ex["assess"].items()]
