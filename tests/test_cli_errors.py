@@ -291,3 +291,21 @@ def test_sweep_flag_ranges_name_the_flag(flag, value, expected, tmp_path, capsys
     err = _one_line(capsys, "sweep")
     assert expected in err
     assert "a_over_h" not in err
+
+
+def test_broken_pipe_ends_quietly():
+    """``femcam wear seed000 --all-laws | head``: the reader closes the pipe before femcam
+    writes; femcam ends with Python's EPIPE code 1 and writes nothing on stderr (reference: the
+    Python documentation's SIGPIPE recipe)."""
+    import os
+    import subprocess
+    import sys
+
+    root = Path(__file__).resolve().parents[1]
+    env = {**os.environ, "PYTHONPATH": str(root)}
+    p = subprocess.Popen([sys.executable, "-m", "femcam", "wear", "seed000", "--all-laws"],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, cwd=root)
+    p.stdout.close()          # the reader is gone before the first line
+    err = p.stderr.read().decode()
+    assert p.wait(timeout=60) == 1
+    assert err == ""
