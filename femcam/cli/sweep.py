@@ -255,13 +255,16 @@ def _print_summary(res, args) -> None:
               f"{o.get('n_curvature_jump', 0)}, edge contacts {o.get('n_edge_contact', 0)}; traction: "
               f"{o.get('traction')}")
     if res.method != "hertz":
-        print(f"  {families_text(s['n_families'], s['reuse_error_max'])} "
+        print(f"  {families_text(s['n_families'], s['reuse_error_max'], s['n_binned'])} "
               f"(tolerance {100 * args.tolerance:g} %); workers "
               f"{o.get('workers')}" + (f" ({o['workers_reason']})" if o.get("workers_reason") else ""))
     print(f"  peak Fc {s['Fc_max']:.1f} N, p0 Hertz {s['p0_hertz_max'] / 1e6:.1f} MPa"
-          + (f", p0 FE {s['p0_fe_max'] / 1e6:.1f} MPa (max |err| {100 * s['err_p0_absmax']:.3f} %)"
-             if res.method == "fe" else "")
+          + (f", p0 FE {s['p0_fe_max'] / 1e6:.1f} MPa (max |err| vs Hertz "
+             f"{100 * s['err_p0_absmax_arc']:.3f} %, arc-gap rows)" if res.method == "fe" else "")
           + f", von Mises {s['vm_max'] / 1e6:.1f} MPa, tau1 {s['tau1_max'] / 1e6:.1f} MPa")
+    if res.method == "fe" and math.isfinite(s["err_p0_absmax_exact"]):
+        print(f"  exact-gap rows (curvature jump): FE departs from Hertz by up to "
+              f"{100 * s['err_p0_absmax_exact']:.1f} %; Hertz cannot see the jump")
     for line in s.get("extras", {}).get("worst", ()):   # each provider's worst values (sweep.worst)
         print(f"  {line}")
     for note in s.get("extras", {}).get("notes", ()):   # e.g. the cam disk check (femcam.sweep.extras)
