@@ -22,7 +22,7 @@ from ..scene import load_scene, study_problem
 from ..sweep import parse_angles_deg, sweep
 from ..sweep.options import TOLERANCE_FLOOR
 from ..sweep.result import families_text
-from ._common import add_law_override, add_scene_out, check_law, out_dir, plain
+from ._common import add_law_override, add_scene_out, check_law, out_dir, plain, refuse_non_empty
 
 
 def register(subparsers) -> None:
@@ -212,6 +212,7 @@ def _command_line(args) -> str:
 
 def _run(args) -> int:
     out_dir(args.out, create=False)
+    refuse_non_empty(args.out, args.overwrite, resume=args.resume)  # the flags' words, not the API's
     if args.law:
         check_law("--law", args.law)
     scene = load_scene(args.scene)
