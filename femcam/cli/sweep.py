@@ -212,7 +212,6 @@ def _command_line(args) -> str:
 
 def _run(args) -> int:
     out_dir(args.out, create=False)
-    refuse_non_empty(args.out, args.overwrite, resume=args.resume)  # the flags' words, not the API's
     if args.law:
         check_law("--law", args.law)
     scene = load_scene(args.scene)
@@ -220,6 +219,7 @@ def _run(args) -> int:
     _check_args(args)
     angles = parse_angles_deg(args.angles_deg)
     args.workers, note = useful_workers(args.workers, angles.size, args.chunk_size)
+    refuse_non_empty(args.out, args.overwrite, resume=args.resume)  # the flags' words, not the API's
     if from_scene:
         print("femcam sweep: settings from the scene file: " + ", ".join(from_scene))
     if note:
