@@ -87,8 +87,11 @@ def test_unwritable_directory_is_refused(tmp_path, capsys, monkeypatch):
     ro.mkdir()
     real = common.os.access
     monkeypatch.setattr(common.os, "access", lambda p, m: False if str(p) == str(ro) else real(p, m))
-    assert main(["run", SCENE, "--out", str(ro), "--no-plots"]) == 1
-    assert f"--out = '{ro}': directory is not writable" in _one_line(capsys, "run")
+    want = f"--out = '{ro}': directory {ro} is not writable"   # one wording for every command
+    for cmd, args in (("run", ["--no-plots"]), ("sweep", ["--method", "hertz"]),
+                      ("assess", ["--no-plots"]), ("wear", ["--no-plots"])):
+        assert main([*WITH_SCENE[cmd], SCENE, "--out", str(ro), *args]) == 1
+        assert _one_line(capsys, cmd) == f"femcam {cmd}: error: {want}"
     assert main(["sweep", SCENE, "--out", str(ro / "new"), "--method", "hertz"]) == 1
     assert f"directory {ro} is not writable" in _one_line(capsys, "sweep")
 
@@ -291,3 +294,81 @@ def test_sweep_flag_ranges_name_the_flag(flag, value, expected, tmp_path, capsys
     err = _one_line(capsys, "sweep")
     assert expected in err
     assert "a_over_h" not in err
+
+
+def test_broken_pipe_ends_quietly():
+    """``femcam wear seed000 --all-laws | head``: the reader closes the pipe before femcam
+    writes; femcam ends with Python's EPIPE code 1 and writes nothing on stderr (reference: the
+    Python documentation's SIGPIPE recipe)."""
+    import os
+    import subprocess
+    import sys
+
+    root = Path(__file__).resolve().parents[1]
+    env = {**os.environ, "PYTHONPATH": str(root)}
+    p = subprocess.Popen([sys.executable, "-m", "femcam", "wear", "seed000", "--all-laws"],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, cwd=root)
+    p.stdout.close()          # the reader is gone before the first line
+    err = p.stderr.read().decode()
+    assert p.wait(timeout=60) == 1
+    assert err == ""
+
+
+@pytest.mark.parametrize("argv, want", [
+    (["wear", "map", SCENE, "--cycles", "-3"], "--cycles = -3 revolutions: must be > 0"),
+    (["synth", "--case", "seed003", "--elements", "0"],
+     "--elements = 0 elements around the cam: must be an integer >= 3"),
+    (["synth", "--case", "seed003", "--k", "-1"], "--k = -1 (penalty constant, dimensionless): must be > 0"),
+    (["synth", "--case", "seed003", "--mu", "0"],
+     "--mu = 0 (stabilisation parameter, dimensionless): must be > 0"),
+])
+def test_bad_flag_is_named_before_any_output(argv, want, tmp_path, capsys):
+    out = tmp_path / "o"
+    assert main([*argv, "--out", str(out)]) == 1
+    cap = capsys.readouterr()
+    assert cap.out == ""                       # nothing printed before the refusal
+    assert cap.err.strip() == f"femcam {argv[0]}: error: {want}"
+    assert not out.exists()
+
+
+@pytest.mark.parametrize("argv, hint", [
+    (["sweep", SCENE, "--method", "hertz"],
+     "pass --resume to continue the sweep in it, --overwrite to replace its results, "
+     "or choose another --out"),
+    (["wear", "map", SCENE, "--no-plots"], "pass --overwrite to replace its files, or choose another --out"),
+    (["dynamics", str(STUDY_PATH.parent / "seed002_dynamic.toml"), "--no-plots"],
+     "pass --overwrite to replace its files, or choose another --out"),
+])
+def test_non_empty_out_is_refused_in_flag_words(argv, hint, tmp_path, capsys):
+    """The sweep's rule for a non-empty --out, worded with the CLI flags (no Python argument)."""
+    (tmp_path / "old.csv").write_text("x")
+    assert main([*argv, "--out", str(tmp_path)]) == 1
+    err = _one_line(capsys, argv[0])
+    assert err == f"femcam {argv[0]}: error: --out = '{tmp_path}': the directory is not empty; {hint}"
+    assert "=True" not in err and (tmp_path / "old.csv").read_text() == "x"
+
+
+def test_wear_map_row_is_the_scene_law_and_all_laws_help_matches_output(tmp_path, capsys):
+    """The scene's law is ``bezier5`` (examples/seed002_study_model.toml, [program] law); the
+    --all-laws help names exactly the laws the table prints (bezier/polynomial need control
+    points, so neither appears in either)."""
+    from femcam.cli import build_parser
+    from femcam.kinematics import LAW_NAMES
+
+    assert main(["wear", "map", SCENE, "--out", str(tmp_path / "o"), "--no-plots", "--step-deg", "10",
+                 "--cycles", "1"]) == 0
+    rows = [ln.split() for ln in capsys.readouterr().out.splitlines()]
+    assert ["bezier5"] in [r[:1] for r in rows] and ["scene"] not in [r[:1] for r in rows]
+    summ = (tmp_path / "o" / "wear_summary.csv").read_text().splitlines()
+    assert summ[2].split(",")[0] == "bezier5"
+    sub = build_parser()._subparsers._group_actions[0].choices["wear"]
+    seed = sub._subparsers._group_actions[0].choices["seed000"]
+    text = " ".join(seed.format_help().split())
+    assert main(["wear", "seed000", "--all-laws"]) == 0
+    table = capsys.readouterr().out
+    named = [n for n in LAW_NAMES if n not in ("bezier", "polynomial")]
+    assert f"({', '.join(named)})" in text      # the help's list: exactly the 10 named laws
+    lines = table.splitlines()
+    first = lines.index(next(ln for ln in lines if ln.startswith("Motion Type")))
+    block = lines[first + 1:lines.index("", first)]
+    assert len(block) == len(named) == 10        # the table: one row per named law

@@ -220,8 +220,8 @@ def test_cli_seed000_and_map(tmp_path, capsys):
     assert "11.03" in out and "3.536" in out          # hand-derived S_cyc (mm), v_rms,SHM (mm/s)
     assert (tmp_path / "t.csv").read_text().count("\n") == 5
     pytest.importorskip("femcam.scene")
-    rc = main(["wear", "map", STUDY, "--out", str(tmp_path), "--step-deg", "1",
-               "--cycles", "1000", "--no-plots"])
+    rc = main(["wear", "map", STUDY, "--out", str(tmp_path), "--step-deg", "1",   # beside t.csv
+               "--cycles", "1000", "--no-plots", "--overwrite"])
     assert rc == 0
     rows = (tmp_path / "wear_scene.csv").read_text().splitlines()
     assert rows[1].startswith("theta_deg") and len(rows) == 2 + 360

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
 
 from .. import __version__
@@ -79,7 +80,9 @@ def main(argv=None) -> int:
     int
         Exit code: 0 success, 1 a :class:`~femcam.errors.FemcamError` or an ``OSError`` (a
         file that cannot be read or written, a full disk), printed as one line
-        ``femcam <command>: error: ...`` naming the path, never a traceback; 2 usage.
+        ``femcam <command>: error: ...`` naming the path, never a traceback; 2 usage. A reader
+        that closes the pipe early (``femcam wear seed000 --all-laws | head -2``) ends the
+        command quietly with 1 (no message).
     """
     parser = build_parser()
     args = parser.parse_args(_join_negative(sys.argv[1:] if argv is None else list(argv)))
@@ -87,13 +90,26 @@ def main(argv=None) -> int:
         parser.print_help()
         return 2
     try:
-        return int(args.func(args) or 0)
+        code = int(args.func(args) or 0)
+        sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's final flush
+        return code
+    except BrokenPipeError:  # the reader closed early (femcam ... | head): quiet, as cat would be
+        return _quiet_broken_pipe()
     except FemcamError as exc:
         print(f"femcam {args.command}: error: {_capped(str(exc))}", file=sys.stderr)
         return 1
     except OSError as exc:  # the disk, not femcam: say which file and why
         print(f"femcam {args.command}: error: {os_error_line(exc)}", file=sys.stderr)
         return 1
+
+
+def _quiet_broken_pipe() -> int:
+    """Point stdout at ``os.devnull`` (the interpreter's final flush must not fail again) and
+    return 1, Python's exit code on EPIPE (the recipe of the Python documentation, "Note on
+    SIGPIPE", module ``signal``)."""
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, sys.stdout.fileno())
+    return 1
 
 
 #: flags whose value is a range START:STOP:STEP that may start with a minus sign

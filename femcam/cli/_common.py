@@ -111,6 +111,37 @@ def out_dir(path, flag: str = "--out", *, create: bool = True) -> Path:
     return p
 
 
+#: the sweep's lock file (``femcam.sweep.store.LOCK``): not "content" of an output directory
+_LOCK_NAME = ".femcam.lock"
+
+
+def refuse_non_empty(path, overwrite: bool, *, resume: bool | None = None) -> None:
+    """Refuse a non-empty output directory unless ``--overwrite`` (or ``--resume``) is given:
+    the rule of ``femcam sweep``, worded with the flags.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The ``--out`` directory (need not exist).
+    overwrite : bool
+        ``--overwrite`` given.
+    resume : bool or None, optional
+        ``--resume`` given; None: the command has no ``--resume`` (not offered in the message).
+
+    Raises
+    ------
+    InputError
+        ``--out = DIR: the directory is not empty; pass ...``.
+    """
+    p = Path(path)
+    if overwrite or resume or not p.is_dir() or not any(q.name != _LOCK_NAME for q in p.iterdir()):
+        return
+    hint = "--resume to continue the sweep in it, --overwrite to replace its results" \
+        if resume is not None else "--overwrite to replace its files"
+    raise _validate.fail("--out", str(p), "", f"the directory is not empty; pass {hint}, or choose "
+                         "another --out")
+
+
 def os_error_line(exc: OSError) -> str:
     """The reason and the path(s) of an ``OSError`` on one line.
 

@@ -23,7 +23,7 @@ from ..dynamics import jump_speed, rpm_sweep
 from ..errors import InputError
 from ..scene import load_scene
 from ..viz.dynamics import plot_force, plot_rpm_sweep
-from ._common import add_no_plots, add_scene_out, out_dir, plain
+from ._common import add_no_plots, add_scene_out, out_dir, plain, refuse_non_empty
 
 
 def register(subparsers) -> None:
@@ -43,6 +43,8 @@ def register(subparsers) -> None:
                    help="processes for the rpm sweep (default 1; capped at the CPU cores and "
                         "the number of speeds)")
     add_no_plots(p)
+    p.add_argument("--overwrite", action="store_true",
+                   help="write into a non-empty DIR, replacing its files (refused otherwise)")
     p.set_defaults(func=run)
 
 
@@ -138,6 +140,7 @@ def run(args) -> int:
         raise InputError(f"{args.scene}: [dynamics] model = 'rigid' (eq. 11) has no train to "
                          "integrate; set model = \"one_dof\" or \"two_dof\" (docs/dynamics.md)")
     workers = int(_validate.positive("--workers", args.workers, ""))
+    refuse_non_empty(args.out, args.overwrite)  # the rule of femcam sweep
     out = out_dir(args.out)
     r = scene.dynamic_response
     f_hz = ", ".join(f"{w / (2 * math.pi):.5g}" for w in r.natural_frequencies)

@@ -178,6 +178,8 @@ def _check_args(args) -> None:
 
 
 def _run(args) -> int:
+    if args.out:
+        out_dir(args.out, create=False)  # checked before any work (same words as the others)
     _check_args(args)
     if args.law:
         check_law("--law", args.law)

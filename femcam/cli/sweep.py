@@ -22,7 +22,7 @@ from ..scene import load_scene, study_problem
 from ..sweep import parse_angles_deg, sweep
 from ..sweep.options import TOLERANCE_FLOOR
 from ..sweep.result import families_text
-from ._common import add_law_override, add_scene_out, check_law, out_dir, plain
+from ._common import add_law_override, add_scene_out, check_law, out_dir, plain, refuse_non_empty
 
 
 def register(subparsers) -> None:
@@ -219,6 +219,7 @@ def _run(args) -> int:
     _check_args(args)
     angles = parse_angles_deg(args.angles_deg)
     args.workers, note = useful_workers(args.workers, angles.size, args.chunk_size)
+    refuse_non_empty(args.out, args.overwrite, resume=args.resume)  # the flags' words, not the API's
     if from_scene:
         print("femcam sweep: settings from the scene file: " + ", ".join(from_scene))
     if note:
@@ -238,6 +239,13 @@ def _run(args) -> int:
         nl = "\n" if sys.stderr.isatty() else ""  # end a progress bar's line
         print(f"{nl}femcam sweep: {exc or 'interrupted'}", file=sys.stderr)
         return 130
+    _print_summary(res, args)
+    return 0
+
+
+def _print_summary(res, args) -> None:
+    """The sweep's summary on stdout (warnings on stderr): counts, models, the 2D headline and
+    one line per extra provider's worst values (:mod:`femcam.sweep.worst`)."""
     s = res.summary()
     o = res.provenance.get("options", {})
     print(f"femcam sweep: {res.n_angles} angles ({res.n_chunks_resumed} chunks resumed, "
@@ -248,13 +256,18 @@ def _run(args) -> int:
               f"{o.get('n_curvature_jump', 0)}, edge contacts {o.get('n_edge_contact', 0)}; traction: "
               f"{o.get('traction')}")
     if res.method != "hertz":
-        print(f"  {families_text(s['n_families'], s['reuse_error_max'])} "
+        print(f"  {families_text(s['n_families'], s['reuse_error_max'], s['n_binned'])} "
               f"(tolerance {100 * args.tolerance:g} %); workers "
               f"{o.get('workers')}" + (f" ({o['workers_reason']})" if o.get("workers_reason") else ""))
     print(f"  peak Fc {s['Fc_max']:.1f} N, p0 Hertz {s['p0_hertz_max'] / 1e6:.1f} MPa"
-          + (f", p0 FE {s['p0_fe_max'] / 1e6:.1f} MPa (max |err| {100 * s['err_p0_absmax']:.3f} %)"
-             if res.method == "fe" else "")
+          + (f", p0 FE {s['p0_fe_max'] / 1e6:.1f} MPa (max |err| vs Hertz "
+             f"{100 * s['err_p0_absmax_arc']:.3f} %, arc-gap rows)" if res.method == "fe" else "")
           + f", von Mises {s['vm_max'] / 1e6:.1f} MPa, tau1 {s['tau1_max'] / 1e6:.1f} MPa")
+    if res.method == "fe" and math.isfinite(s["err_p0_absmax_exact"]):
+        print(f"  exact-gap rows (curvature jump): FE departs from Hertz by up to "
+              f"{100 * s['err_p0_absmax_exact']:.1f} %; Hertz cannot see the jump")
+    for line in s.get("extras", {}).get("worst", ()):   # each provider's worst values (sweep.worst)
+        print(f"  {line}")
     for note in s.get("extras", {}).get("notes", ()):   # e.g. the cam disk check (femcam.sweep.extras)
         print(f"  {note}")
     for k, v in res.paths.items():
@@ -264,4 +277,3 @@ def _run(args) -> int:
     if s["n_failed"]:
         print(f"femcam sweep: warning: {s['n_failed']} angle(s) failed; see the status and "
               "message columns", file=sys.stderr)
-    return 0

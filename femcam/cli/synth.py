@@ -128,6 +128,9 @@ def run(args) -> int:
         Exit code 0 (errors are raised as :class:`~femcam.errors.FemcamError`).
     """
     out_dir(args.out, create=False)  # checked before any work, created below
+    _validate.integer("--elements", args.elements, 3, "elements around the cam")
+    _validate.positive("--k", args.k, "(penalty constant, dimensionless)")
+    _validate.positive("--mu", args.mu, "(stabilisation parameter, dimensionless)")
     name, program, Rb = _case(args)
     Rb, rb_source = _base_radius(args.base_radius_mm, Rb, program,
                                  "seed 003 case" if args.case else "scene")

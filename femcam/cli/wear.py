@@ -29,6 +29,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .. import _validate
 from ..assess import wear_factor
 from ..errors import InputError
 from ..kinematics import LAW_NAMES
@@ -42,7 +43,7 @@ from ..wear.evolution import convergence_table, evolution_case
 from ..wear.options import describe_k, wear_coefficient_info, wear_options
 from ..wear.scene import scene_tip_radius, scene_wear, tip_scene
 from ..wear.seed000 import PAPER_LAWS, format_table3, seed000_table, table_rows_for_csv
-from ._common import NAMED_LAWS, add_scene_out, check_law, out_dir, plain
+from ._common import NAMED_LAWS, add_scene_out, check_law, out_dir, plain, refuse_non_empty
 
 
 def register(subparsers) -> None:
@@ -63,8 +64,8 @@ def register(subparsers) -> None:
                        "from the paper.")
     s.add_argument("--csv", default=None, metavar="FILE", help="also write the table as CSV")
     s.add_argument("--all-laws", action="store_true",
-                   help="every femcam motion law (" + ", ".join(LAW_NAMES) + "), not only the "
-                        "paper's " + ", ".join(PAPER_LAWS))
+                   help="every femcam motion law a name alone defines (" + ", ".join(NAMED_LAWS)
+                        + "), not only the paper's " + ", ".join(PAPER_LAWS))
     s.set_defaults(func=_seed000)
     m = sub.add_parser("map", help="Archard wear depth on the cam and the follower of a scene",
                        description="Archard wear depth per cam angle, along the cam surface and "
@@ -89,6 +90,8 @@ def register(subparsers) -> None:
                    help="roller followers: also evolve the profile (wear -> geometry -> pressure -> wear) "
                         "in 1, 2, 4, ... K blocks of cycles and write the convergence table")
     m.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    m.add_argument("--overwrite", action="store_true",
+                   help="write into a non-empty DIR, replacing its files (refused otherwise)")
     m.set_defaults(func=_map)
     p.set_defaults(func=lambda args: (p.print_help(), 2)[1])
 
@@ -133,6 +136,8 @@ def _check_map_args(args) -> tuple[float, float | None]:
         if not (math.isfinite(args.tip_radius_mm) and args.tip_radius_mm > 0):
             raise InputError(f"--tip-radius-mm = {args.tip_radius_mm:g} mm: must be > 0")
         tip = args.tip_radius_mm * 1e-3
+    if args.cycles is not None:
+        _validate.positive("--cycles", args.cycles, "revolutions")
     if args.evolve_blocks is not None and args.evolve_blocks < 1:
         raise InputError(f"--evolve-blocks = {args.evolve_blocks} (number of blocks): "
                          "must be an integer >= 1")
@@ -145,6 +150,7 @@ def _map(args) -> int:
     out_dir(args.out, create=False)  # checked before any work, created below
     step, tip = _check_map_args(args)
     laws = [check_law("--laws", x.strip()) for x in args.laws.split(",")] if args.laws else [None]
+    refuse_non_empty(args.out, args.overwrite)  # the rule of femcam sweep
     scene = load_scene(args.scene)
     opts = wear_options(scene)
     cycles = args.cycles if args.cycles is not None else float(opts.get("cycles", 1e6))
@@ -173,7 +179,8 @@ def _map(args) -> int:
         _write_surface_csv(out / f"wear_{label}_surface.csv", head, cycles, wm)
         _write_follower_csv(out / f"wear_{label}_follower.csv", head, cycles, wm, slip, sc)
     source = "axial_peak" if has_finite_length(scene) else args.source
-    _write_summary(out / "wear_summary.csv", head, cycles, k, k_where, results, source)
+    _write_summary(out / "wear_summary.csv", head, cycles, k, k_where, results, source,
+                   scene_law_label(scene))
     if not args.no_plots:
         _plots(scene, results, out)
     if args.evolve_blocks is not None:
@@ -239,8 +246,27 @@ def _write_follower_csv(path, head, cycles, wm, slip, scene) -> None:
             w.writerow([f"{x * 1e3:.6g}", f"{h * 1e9:.6g}", f"{hN * 1e6:.6g}", f"{h * cycles * 1e6:.6g}"])
 
 
-def _write_summary(path, head, cycles, k, k_where, results, source) -> None:
-    """One row per law (CSV) and the printed table."""
+def scene_law_label(scene) -> str:
+    """The motion law(s) of a scene's rise/fall segments, ``"bezier5"`` or ``"cycloidal+shm"``
+    (the row label of ``femcam wear map`` without ``--laws``).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene.
+
+    Returns
+    -------
+    str
+        The distinct law names in segment order, joined by ``+``.
+    """
+    names = [seg.law.name for seg in scene.program.segments if seg.law is not None]
+    return "+".join(dict.fromkeys(names)) or "scene"
+
+
+def _write_summary(path, head, cycles, k, k_where, results, source, scene_law="scene") -> None:
+    """One row per law (CSV) and the printed table; the scene's own law (file label ``scene``)
+    is shown as ``scene_law``."""
     with path.open("w", newline="") as fh:
         fh.write(f"{head.rstrip()}; {describe_k(k, k_where)}\n")
         w = csv.writer(fh)
@@ -251,7 +277,8 @@ def _write_summary(path, head, cycles, k, k_where, results, source) -> None:
                     "pressure", "slip_model"])
         print(f"{'law':<20}{'max depth um':>14}{'at theta deg':>14}{'arc mm':>9}{'V cam mm^3':>13}"
               f"{'follower um':>13}{'at mm':>9}  (after {cycles:g} revolutions)")
-        for label, (wm, _st, slip) in results.items():
+        for key, (wm, _st, slip) in results.items():
+            label = scene_law if key == "scene" else key
             skipped = " ".join(f"{math.degrees(wm.theta[i]):g}" for i in wm.skipped)
             w.writerow([label, f"{cycles:g}", f"{wm.max_depth * 1e6:.6g}",
                         f"{math.degrees(wm.theta_max):.3f}",

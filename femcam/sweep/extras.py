@@ -87,6 +87,7 @@ from .providers import (
     layers_chunk,
     ring_chunk,
 )
+from .worst import worst_lines
 
 Column = tuple[str, str, float]
 #: text column of every sweep with providers: ``"<provider>: <reason>"`` where one was refused
@@ -285,7 +286,9 @@ def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
     ``cam_disk``: largest cam bore hoop stress and shaft pressure (MPa) and, given the sweep's
     ``tolerance``, ``check``: the fully refined disk vs the local body at the peak force
     (:func:`~femcam.sweep.providers.cam_disk_check`); ``notes``: its sentence (report, CLI) and
-    ``flags``: the sentence again when the change exceeds the tolerance.
+    ``flags``: the sentence again when the change exceeds the tolerance; ``worst``: one sentence
+    per provider with its worst values, units and angles (:func:`femcam.sweep.worst.worst_lines`;
+    the CLI summary and ``report.md`` print them).
 
     Parameters
     ----------
@@ -343,4 +346,5 @@ def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
         out["coating_wear"] = {"k_coating_m3_per_N_m": cw.k_coating, "k_substrate_m3_per_N_m": cw.k_substrate,
                                "thickness_m": cw.thickness, "source": cw.source,
                                "revolutions_through": cw.thickness / d if d > 0 else math.inf}
+    out["worst"] = worst_lines(names, table, out)
     return out

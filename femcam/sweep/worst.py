@@ -1,0 +1,89 @@
+"""One sentence per extra column provider: its worst values over the sweep, with units and angles.
+
+The sweep's headline (p0 FE/Hertz, von Mises, tau1) is the 2D line contact at the mean load;
+a provider (:mod:`femcam.sweep.extras`) can change the answer (the axial peak of a crowned
+roller, the needle loads of a needle roller). :func:`worst_lines` writes its worst values as
+sentences for the CLI summary and ``report.md``; each value is the column's largest (or
+smallest, for margins) over the ``ok`` rows, the same number as the CSV column's extreme.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+#: provider -> its label and items (SI column, what, unit shown, factor SI -> unit, "max"|"min")
+ITEMS = {
+    "halfspace": ("finite length", (("hs_p_axial_peak", "axial peak", "MPa", 1e-6, "max"),
+                                    ("hs_fe_p0", "2D FE p0 at the most loaded slice", "MPa", 1e-6, "max"))),
+    "bodies": ("roller support", (("ring_hoop_max", "bore hoop stress", "MPa", 1e-6, "max"),
+                                  ("ring_pin_p0", "pin pressure", "MPa", 1e-6, "max"),
+                                  ("ring_needle_Q_on", "worst needle load", "N", 1.0, "max"))),
+    "cam_disk": ("cam disk", (("camdisk_hoop_max", "bore hoop stress", "MPa", 1e-6, "max"),
+                              ("camdisk_shaft_p0", "shaft pressure", "MPa", 1e-6, "max"))),
+    "layers": ("layers", (("layer_interface_utilisation", "interface utilisation", "", 1.0, "max"),
+                          ("layer_case_margin", "smallest case margin", "", 1.0, "min"))),
+}
+
+
+def _extreme(table, name, ok, how):
+    """``(value, theta_deg)`` of the largest/smallest finite ``ok`` value, or None."""
+    if name not in table:
+        return None
+    v = np.where(ok, np.asarray(table[name], float), np.nan)
+    if not np.any(np.isfinite(v)):
+        return None
+    i = int(np.nanargmin(v) if how == "min" else np.nanargmax(v))
+    return float(v[i]), math.degrees(float(np.asarray(table["theta"], float)[i])), i
+
+
+def _halfspace_tail(table, found) -> str:
+    """``" (2D Hertz there 1127 MPa): the 2D p0 above is not the peak"`` for the axial peak."""
+    if "hs_p_axial_peak" not in found:
+        return ""
+    i = found["hs_p_axial_peak"][2]
+    p_h = float(np.asarray(table["p0_hertz"], float)[i]) * 1e-6
+    return f" (2D Hertz there {p_h:.0f} MPa): the 2D p0 above is not the peak"
+
+
+def worst_lines(names, table, extras: dict | None = None) -> list[str]:
+    """One line per provider in ``names``: its worst values, with the unit and the cam angle.
+
+    Parameters
+    ----------
+    names : sequence of str
+        The providers that ran (:func:`femcam.sweep.extras.providers_for`).
+    table : Mapping[str, ndarray]
+        The sweep table (SI columns, ``theta`` [rad], ``status``, ``p0_hertz`` [Pa]).
+    extras : dict, optional
+        The rest of the providers' summary (``assess``: worst angle per criterion;
+        ``coating_wear``: ``revolutions_through``), as built by
+        :func:`femcam.sweep.extras.extras_provenance`.
+
+    Returns
+    -------
+    list of str
+        E.g. ``"finite length: axial peak 2032 MPa at 72.0 deg (2D Hertz there 1127 MPa): the
+        2D p0 above is not the peak"``; providers without a finite value are left out.
+    """
+    ok = np.asarray(table["status"]).astype(str) == "ok"
+    extras = extras or {}
+    lines = []
+    for name in names:
+        if name not in ITEMS:
+            continue
+        label, items = ITEMS[name]
+        found = {c: e for c, *_, how in items if (e := _extreme(table, c, ok, how)) is not None}
+        parts = [f"{what} {found[c][0] * f:.4g}{' ' + unit if unit else ''} at {found[c][1]:.1f} deg"
+                 for c, what, unit, f, _ in items if c in found]
+        if parts:
+            tail = _halfspace_tail(table, found) if name == "halfspace" else ""
+            lines.append(f"{label}: " + ", ".join(parts) + tail)
+    if extras.get("assess"):
+        lines.append("assessment (worst per criterion, SI units): " + ", ".join(
+            f"{c} {w['value']:.4g} at {w['theta_deg']:.1f} deg" for c, w in extras["assess"].items()))
+    n = extras.get("coating_wear", {}).get("revolutions_through")
+    if n is not None and math.isfinite(n):
+        lines.append(f"coating: worn through after {n:.4g} revolutions at the deepest wear rate")
+    return lines
