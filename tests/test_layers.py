@@ -206,6 +206,35 @@ def test_layered_half_space_reference(E_c):
     assert rows["interface_utilisation"][0] == pytest.approx(np.abs(tau).max() / 300e6, rel=3e-2)
 
 
+def test_unpickled_result_with_model_gives_the_interface_stress():
+    """A result after a pickle round trip has no model: ``interface_stress(..., model=m)`` and the
+    case check with ``model=m`` give the numbers of the original result (same model, same
+    displacements: identical to 1e-12) and so still meet the layered reference (t = a/2,
+    E_c / E_s = 2, tolerances of test_layered_half_space_reference); without ``model`` the
+    error names ``model=``."""
+    import pickle
+
+    from femcam.layers.interface import _case_row
+
+    a0, _ = _hertz(STEEL.E, STEEL.nu, STEEL.E, STEEL.nu)
+    coat = Material(E=420e9, nu=0.3)
+    x, p, tau, sn = layered_contact(0.5 * a0, coat)
+    m = _coated(0.5 * a0, coat)
+    r = m.solve(F=F, rho=RHO)
+    r2 = pickle.loads(pickle.dumps(r))
+    with pytest.raises(InputError, match=r"model=\.\.\."):
+        interface_stress(r2, "roller")
+    it, it2 = interface_stress(r, "roller"), interface_stress(r2, "roller", model=m)
+    np.testing.assert_allclose(it2.tau, it.tau, rtol=1e-12, atol=1e-12 * np.abs(it.tau).max())
+    np.testing.assert_allclose(it2.sigma_n, it.sigma_n, rtol=1e-12, atol=1e-12 * np.abs(it.sigma_n).max())
+    assert it2.tau_abs_max == pytest.approx(np.abs(tau).max(), rel=3e-2), "max |interface shear|"
+    assert it2.sigma_n_min == pytest.approx(sn.min(), rel=1e-2), "interface normal stress"
+    case = Case(depth=0.1e-3, surface_hardness=700 * HV, core_hardness=300 * HV)
+    with pytest.raises(InputError, match=r"model=\.\.\."):
+        _case_row(r2, case, "cam")
+    assert _case_row(r2, case, "cam", model=m) == pytest.approx(_case_row(r, case, "cam"), rel=1e-12)
+
+
 @pytest.mark.slow
 def test_interface_shear_mesh_convergence():
     """a/h = 6, 12, 24: the error of max |interface shear| against the layered reference

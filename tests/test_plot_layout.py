@@ -107,3 +107,59 @@ def test_von_mises_png_draws_mm_axes(tmp_path, monkeypatch):
     r = solve_contact(1500.0, 0.02, 0.01, STEEL, STEEL, 0.01, mesh=MeshOptions(a_over_h=6))
     plot_von_mises(r, tmp_path / "vm.png", size=(400, 300))
     assert seen["xtitle"] == "x (mm)" and seen["ytitle"] == "y (mm)"
+
+
+def test_worn_profile_draws_the_depth_above_the_floor():
+    """On a circle of radius R (counter-clockwise) with depth h(s) = h0 + A (1 + cos(s / R)), the
+    worn curve at magnification m and floor h0 has radius R - m A (1 + cos(s / R)) (closed form):
+    the least-worn point lies on the profile, the deepest is moved by m (h_max - h0)."""
+    from types import SimpleNamespace
+    R, h0, A, n = 10e-3, 1e-6, 0.2e-6, 720
+    t = np.linspace(0.0, 2 * np.pi, n, endpoint=False)
+    s = R * t
+    wm = SimpleNamespace(x_cam=s, depth_cam=h0 + A * (1 + np.cos(t)), cycles=1.0, perimeter=2 * np.pi * R)
+    m = 0.05 * 2 * R / (2 * A)
+    xw, yw = vw.worn_profile(wm, R * np.cos(t), R * np.sin(t), m, floor=h0)
+    ref = R - m * A * (1 + np.cos(t))
+    # the normal from central differences of a regular polygon is radial (exact to rounding);
+    # one-sided at the two ends, tilted by half a step (pi / n): a radial error below that
+    # tilt times the offset there
+    r = np.hypot(xw, yw)
+    np.testing.assert_allclose(r[1:-1], ref[1:-1], rtol=0, atol=1e-9 * m * 2 * A)
+    np.testing.assert_allclose(r[[0, -1]], ref[[0, -1]], rtol=0, atol=np.pi / n * m * 2 * A)
+    assert r[1:-1].max() == pytest.approx(R, abs=1e-9 * m * 2 * A), "least worn on the profile"
+
+
+def test_halfspace_extras_plot_says_what_it_shows(tmp_path, monkeypatch):
+    """The finite-length extras plot: a title naming what it shows, every y axis a quantity with
+    its unit in parentheses, the x axis the cam angle in degrees."""
+    import femcam.viz.extras as ve
+    from femcam.sweep.extras import plot_extras
+
+    figs = []
+    real = ve.save
+
+    def keep(fig, path, *a, **k):
+        figs.append(fig)
+        return real(fig, path, *a, **k)
+
+    monkeypatch.setattr(ve, "save", keep)
+    sc = load_scene(EXAMPLES / "seed002_crowned.toml")
+    theta = np.radians(np.arange(0.0, 360.0, 30.0))
+    one = np.ones_like(theta)
+    table = {"theta": theta, "status": np.array(["ok"] * theta.size), "hs_p_axial_peak": 2e9 * one,
+             "p0_hertz": 1e9 * one, "hs_fe_p0": 1.1e9 * one, "hs_w_max": 3e5 * one}
+    paths = plot_extras(sc, table, tmp_path)
+    assert "plot_extras_halfspace" in paths and len(figs) == 1
+    fig = figs[0]
+    assert "finite-length contact along the roller" in fig._suptitle.get_text()
+    labels = [ax.get_ylabel() for ax in fig.axes]
+    assert labels == ["peak pressure (MPa)", "most loaded slice\nw_max (N/mm)"]
+    assert fig.axes[-1].get_xlabel() == "cam angle (deg)"
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    FigureCanvasAgg(fig).draw()
+    r = fig.canvas.get_renderer()
+    W, H = fig.bbox.width, fig.bbox.height
+    for t in [fig._suptitle] + [ax.yaxis.label for ax in fig.axes]:  # nothing cut off
+        b = t.get_window_extent(r)
+        assert b.x0 >= -1 and b.x1 <= W + 1 and b.y0 >= -1 and b.y1 <= H + 1, t.get_text()

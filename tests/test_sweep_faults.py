@@ -107,6 +107,19 @@ def test_non_empty_directory_needs_resume_or_overwrite(tmp_path, capsys):
     assert (tmp_path / "sweep.csv").exists() and (tmp_path / "notes.txt").read_text() == "mine"
 
 
+def test_api_non_empty_out_names_resume_and_overwrite(tmp_path):
+    """The API refuses a non-empty ``out`` in its own words (the arguments and what each does),
+    the CLI in flag words (tests/test_cli_errors.py)."""
+    (tmp_path / "notes.txt").write_text("mine")
+    msg = (f"out = '{tmp_path}': the directory is not empty; pass resume=True to continue the sweep "
+           "in it, overwrite=True to replace its results, or choose another out")
+    with pytest.raises(InputError) as e:
+        sweep(load_scene(STUDY), angles=parse_angles_deg("0:90:30"), method="hertz", out=tmp_path,
+              progress=False, plots=False)
+    assert str(e.value) == msg
+    assert not (tmp_path / "sweep.csv").exists()
+
+
 def test_resume_refuses_a_chunk_of_another_scene(tmp_path):
     """A chunk computed for another scene (here: another motion law) inside a directory whose
     manifest names this scene is refused, never reported under this scene's name."""

@@ -69,7 +69,7 @@ def _coated(model, body: str):
     return g
 
 
-def interface_stress(result, body: str = "roller") -> InterfaceStress:
+def interface_stress(result, body: str = "roller", *, model=None) -> InterfaceStress:
     """Normal and shear stress along the coating-substrate interface of ``body`` within the
     contact fine zone.
 
@@ -79,6 +79,9 @@ def interface_stress(result, body: str = "roller") -> InterfaceStress:
         A result of a coated model (:func:`femcam.layers.build_coated_model`), with its model.
     body : {"cam", "roller"}, optional
         The coated body.
+    model : femcam.fe.ContactModel, optional
+        The coated model that solved ``result``, used when ``result`` carries none (after
+        unpickling); default: ``result.model``.
 
     Returns
     -------
@@ -88,12 +91,13 @@ def interface_stress(result, body: str = "roller") -> InterfaceStress:
     Raises
     ------
     InputError
-        ``body`` has no coating band, or ``result`` was unpickled (its model is not kept).
+        ``body`` has no coating band, or ``result`` was unpickled (its model is not kept) and
+        no ``model`` is given.
     """
     _validate.choice("body", body, ("cam", "roller"))
-    model = result.model_or()
+    model = result.model_or(model)
     g = _coated(model, body)
-    _, f = result.field_at_nodes(body)
+    _, f = result.field_at_nodes(body, model=model)
     nodes = g.groups[f"{body}_interface"].nodes
     x = f["xy"][0, nodes]
     keep = np.abs(x) <= model.x[-1] * (1 + 1e-9)
@@ -113,12 +117,13 @@ def interface_stress(result, body: str = "roller") -> InterfaceStress:
                            sigma_n_max=float(sn.max()))
 
 
-def _case_row(result, case: Case, body: str):
+def _case_row(result, case: Case, body: str, model=None):
     """(U_max, z at max, margin) of ``case`` in ``body``: tau_1 / k(z) at every node of the
-    stress window ``|x| <= fine zone``, ``z <= 4 max(a, depth)``."""
-    model = result.model_or()
+    stress window ``|x| <= fine zone``, ``z <= 4 max(a, depth)``; ``model``: the solving model
+    when ``result`` carries none (unpickled)."""
+    model = result.model_or(model)
     case.check_body(model.bodies[body].geometry.L, body)
-    _, f = result.field_at_nodes(body)
+    _, f = result.field_at_nodes(body, model=model)
     z, x = f["z"], f["xy"][0]
     w = (np.abs(x) <= model.x[-1]) & (z >= 0) & (z <= 4.0 * max(result.a, case.depth))
     m = case_margin(case, z[w], f["tau1"][w])

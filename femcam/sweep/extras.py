@@ -112,6 +112,8 @@ class Provider:
         replace sweep columns it documents (``halfspace``: ``wear_depth``, ``wear_source``).
     panels : tuple of (ylabel, ((SI column, label, factor), ...), log)
         Plots against cam angle (:func:`femcam.viz.extras.plot_extra_panels`).
+    title : str, optional
+        What the plot shows (its title after the scene name; default: ``name``).
     """
 
     name: str
@@ -120,12 +122,14 @@ class Provider:
     text: tuple
     compute: Callable
     panels: tuple = ()
+    title: str = ""
 
 
 #: the table, in the order the providers run (halfspace before assess: the axial peak)
 PROVIDERS: tuple[Provider, ...] = (
     Provider("halfspace", has_finite_length, HALFSPACE, ("hs_flags", "fe_load_basis"),
-             halfspace_chunk, HS_PANELS),
+             halfspace_chunk, HS_PANELS,
+             "finite-length contact along the roller:\naxial peak pressure and most loaded slice"),
     Provider("assess", lambda s: "lubricant" in (getattr(s, "tribology", None) or {}), ASSESS,
              ASSESS_TEXT, assess_chunk, ASSESS_PANELS),
     Provider("bodies", has_support, RING, (), ring_chunk, RING_PANELS),
@@ -167,7 +171,7 @@ def plot_extras(scene, table, out) -> dict[str, str]:
             continue
         path = Path(out) / "plots" / f"extras_{p.name}.png"
         paths[f"plot_extras_{p.name}"] = str(plot_extra_panels(table["theta"], panels, path,
-                                                               title=f"{scene.name}: {p.name}"))
+                                                               title=f"{scene.name}: {p.title or p.name}"))
     return paths
 
 

@@ -557,10 +557,12 @@ def has_support(scene) -> bool:
 
 
 MPA = 1e-6
-HS_PANELS = (("pressure (MPa)", (("hs_p_axial_peak", "axial peak p(x, y) (3D half-space)", MPA),
-                                  ("p0_hertz", "2D Hertz p0 at Fc / length", MPA),
-                                  ("hs_fe_p0", "2D FE p0 at the most loaded slice", MPA)), False),
-              ("load per length (N/mm)", (("hs_w_max", "most loaded slice w_max", 1e-3),), False))
+HS_PANELS = (("peak pressure (MPa)", (("hs_p_axial_peak", "axial peak p(x, y) (3D half-space)", MPA),
+                                               ("p0_hertz", "2D Hertz p0 at Fc / length", MPA),
+                                               ("hs_fe_p0", "2D FE p0 at the most loaded slice", MPA)),
+               False),
+              ("most loaded slice\nw_max (N/mm)", (("hs_w_max", "load per length of the most loaded slice",
+                                                   1e-3),), False))
 ASSESS_PANELS = (("lambda (-)", (("assess_lam", "lambda = h_min / sigma", 1.0),), True),
                   ("safety factor (-)", (("assess_sf_yield", "first yield", 1.0),
                                          ("assess_sf_shakedown", "shakedown", 1.0),

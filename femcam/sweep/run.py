@@ -14,7 +14,6 @@ from types import SimpleNamespace
 import numpy as np
 
 from .. import _validate
-from ..errors import InputError
 from ..hertz.conformity import roller_does_not_fit
 from ..io import provenance
 from ..scene import load_scene
@@ -265,9 +264,9 @@ def _open_store(run: SweepRun) -> None:
     run.out.mkdir(parents=True, exist_ok=True)
     run.lock = DirLock(run.out).acquire()
     if not run.resume and not run.overwrite and any(p.name != LOCK for p in run.out.iterdir()):
-        raise InputError(f"out = {run.out}: the directory is not empty; pass --resume to continue "
-                         "the sweep in it, --overwrite to replace its results (overwrite=True), "
-                         "or choose another --out")
+        raise _validate.fail("out", str(run.out), "", "the directory is not empty; pass resume=True "
+                             "to continue the sweep in it, overwrite=True to replace its results, "
+                             "or choose another out")  # the API's words; the CLI's: refuse_non_empty
     run.store = ChunkStore(run.out / "chunks", key, run.bounds)
     run.done = frozenset(run.store.open(run.resume))
     if not run.done:  # fresh sweep: no stale series from an earlier run in the same DIR

@@ -75,8 +75,8 @@ def plot_wear_map(wm, path, *, title: str = "", follower_label: str | None = Non
     return _save(fig, path)
 
 
-def worn_profile(wm, x, y, magnify: float):
-    """Cam-frame points of the profile moved inward by ``magnify x depth`` (m).
+def worn_profile(wm, x, y, magnify: float, floor: float = 0.0):
+    """Cam-frame points of the profile moved inward by ``magnify x (depth - floor)`` (m).
 
     Parameters
     ----------
@@ -86,6 +86,9 @@ def worn_profile(wm, x, y, magnify: float):
         Cam profile points in the cam frame (m), ordered along the profile.
     magnify : float
         Wear magnification factor (-).
+    floor : float, optional
+        Depth subtracted before magnifying (m; e.g. the smallest depth, so that the variation
+        of the depth along the profile is drawn instead of a nearly uniform offset).
 
     Returns
     -------
@@ -98,7 +101,7 @@ def worn_profile(wm, x, y, magnify: float):
     arc = np.concatenate(([0.0], np.cumsum(seg)[:-1]))
     # the profile's own arc length is rescaled to the map's perimeter (same curve, same origin)
     arc = arc * wm.perimeter / seg.sum()
-    h = np.interp(arc, wm.x_cam, wm.depth_cam * wm.cycles, period=wm.perimeter)
+    h = np.interp(arc, wm.x_cam, wm.depth_cam * wm.cycles, period=wm.perimeter) - floor
     tx = np.gradient(x)
     ty = np.gradient(y)
     nrm = np.hypot(tx, ty)
@@ -110,7 +113,9 @@ def worn_profile(wm, x, y, magnify: float):
 
 
 def plot_wear_polar(wm, x, y, path, *, magnify: float | None = None, title: str = ""):
-    """The cam profile (cam frame) and the worn profile with the wear magnified.
+    """The cam profile (cam frame) and the worn profile with the depth above its smallest value
+    magnified (a linear depth scale starting at the minimum, so the deepest region stands out);
+    the deepest point is marked.
 
     Parameters
     ----------
@@ -121,8 +126,8 @@ def plot_wear_polar(wm, x, y, path, *, magnify: float | None = None, title: str 
     path : str or os.PathLike
         Output PNG.
     magnify : float, optional
-        Wear magnification (-; default: the largest depth drawn as 5 % of the profile's x
-        extent).
+        Magnification of the depth above its minimum (-; default: the depth range drawn as
+        5 % of the profile's x extent).
     title : str
         Figure title.
 
@@ -133,18 +138,25 @@ def plot_wear_polar(wm, x, y, path, *, magnify: float | None = None, title: str 
     """
     plt = pyplot()
     hmax = wm.max_depth
+    h = np.asarray(wm.depth_cam, float) * wm.cycles
+    hmin = float(h.min()) if h.size else 0.0
     if magnify is None:
         size = np.ptp(np.asarray(x))
-        magnify = 0.05 * size / hmax if hmax > 0 else 1.0
-    xw, yw = worn_profile(wm, x, y, magnify)
+        magnify = 0.05 * size / (h.max() - hmin) if h.size and h.max() > hmin else 1.0
+    xw, yw = worn_profile(wm, x, y, magnify, floor=hmin)
+    x, y = np.asarray(x, float), np.asarray(y, float)
+    k = int(np.argmax(np.hypot(xw - x, yw - y)))
     fig, ax = plt.subplots(figsize=(7.0, 5))
-    ax.plot(np.asarray(x) * 1e3, np.asarray(y) * 1e3, "k-", lw=0.8, label="new profile")
-    ax.plot(xw * 1e3, yw * 1e3, "r-", lw=1.0, label=f"worn, depth x {magnify:.3g}")
+    ax.plot(x * 1e3, y * 1e3, "k-", lw=0.8, label="new profile")
+    ax.plot(xw * 1e3, yw * 1e3, "r-", lw=1.0,
+            label=f"worn: (depth - {hmin * 1e6:.3g} um)\n x {magnify:.3g}")
+    ax.plot(xw[k] * 1e3, yw[k] * 1e3, "rv", ms=6, label=f"deepest, {hmax * 1e6:.3g} um")
     ax.set_aspect("equal")
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
     legend_outside(ax)
-    ax.set_title((title + "\n" if title else "") + f"{wm.cycles:g} rev, max depth {hmax * 1e6:.3g} um",
+    ax.set_title((title + "\n" if title else "") + f"{wm.cycles:g} rev, depth {hmin * 1e6:.3g} to "
+                 f"{hmax * 1e6:.3g} um; drawn: depth above the minimum x {magnify:.3g}",
                  fontsize=9)
     return _save(fig, path)
 
