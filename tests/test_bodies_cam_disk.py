@@ -197,9 +197,9 @@ def test_thin_web_that_would_yield_is_flagged_with_both_numbers():
     g = CamGlobalModel.build(disk=disk, length=0.01)
     r = solve_global(g, np.array([[0.0], [0.02]]), np.array([[0.0], [1.0]]), np.array([2000.0]))
     flags = yield_flags(disk, r["hoop_max"], r["hoop_angle"])
-    assert r["hoop_max"][0] > 30e6                        # measured 40 MPa
-    assert re.match(r"cam bore hoop stress [\d.]+ MPa at -?[\d.]+ deg from the contact exceeds the cam's "
-                    r"yield strength 30 MPa \(web 1.5 mm\)", flags[0])
+    m = re.match(r"cam bore hoop stress ([\d.]+) MPa at -?[\d.]+ deg from the contact exceeds the cam's "
+                 r"yield strength 30 MPa \(web 1.5 mm\)", flags[0])
+    assert m and float(m.group(1)) == pytest.approx(r["hoop_max"][0] / 1e6, abs=0.05)  # the flag's number
 
 
 @pytest.mark.slow
@@ -286,6 +286,9 @@ def test_global_model_over_a_thin_web_hard_case():
     rg = solve_global(g, *_contact_at(sc, th), np.array([r.F]))
     assert rg["hoop_max"][0] == pytest.approx(r.hoop_max, rel=0.03)
     assert rg["shaft_p0"][0] == pytest.approx(r.shaft_p0, rel=0.03)
+    # 5e-4 is taken from runs (README web table: dp0 -0.007 %, da +0.008 % at this web), 6x their
+    # size; the only independent bound is the Saint-Venant order (a / web)^2 = 5e-3, an estimate
+    # of magnitude, not a limit, so it cannot serve as the tighter reference
     assert abs(r.dp0) < 5e-4 and abs(r.da) < 5e-4
 
 

@@ -111,7 +111,6 @@ def test_a_small_bore_moves_the_contact_by_the_hub_twist_and_is_not_flagged_for_
     # 10 %: the cam is not an annulus (outline radius 10-20 mm, rc = |C| taken as its outer
     # radius; 1/rc^2 is 2 % of 1/Rb^2 here) and x0 is fitted on nodes a/20 apart (measured 1 %)
     assert abs(c["x0_um"]) == pytest.approx(shift * 1e6, rel=0.10)
-    assert abs(c["da"]) > 2e-3                                   # raw: measured -0.27 %
     a = math.sqrt(4 * F / sc.length / (math.pi * 115.38e9 / (1 / sc.follower.Rr + 1 / rho)))
     bound = (a / 8e-3) ** 2                 # E* = E / (2 (1 - nu^2)) = 115.38 GPa, steel on steel
     assert abs(c["dp0_moved"]) < bound and abs(c["da_moved"]) < bound    # measured -2e-5, +4e-5

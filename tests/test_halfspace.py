@@ -341,7 +341,9 @@ def test_most_loaded_slice_converges_with_the_grid():
     assert r.w_max == pytest.approx(brute.max(), rel=2e-3)            # 4001 starts: within 2e-3
     assert abs(abs(r.y_wmax) - (L / 2 - b)) < L / 128                  # the window at the end
     w_ext = 2 * res[512].w_max - res[256].w_max                        # Richardson, first order
-    assert abs(res[512].w_max / res[256].w_max - 1) < 0.02             # successive change 1.1 %
-    assert abs(r.w_max / w_ext - 1) < 0.05                             # default grid: within 5 %
+    # both bounds are taken from runs (successive change 1.17 %; 128 cells 4.5 % below w_ext): the
+    # extrapolated limit is the only reference, no closed form exists for a finite roller's end
+    assert abs(res[512].w_max / res[256].w_max - 1) < 0.02             # measured 1.17 %
+    assert abs(r.w_max / w_ext - 1) < 0.05                             # measured 4.5 %
     cells = [res[n].w.max() for n in (128, 256, 512)]
     assert cells[1] / cells[0] > 1.2 and cells[2] / cells[1] > 1.2    # the end cell does not converge

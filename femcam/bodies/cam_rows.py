@@ -63,7 +63,7 @@ def has_cam_bore(scene) -> bool:
 def _cam_yield(scene):
     mats = (getattr(scene, "tribology", None) or {}).get("materials", {}) or {}
     cam = mats.get("cam", {}) if isinstance(mats, dict) else {}
-    y = cam.get("yield_strength", cam.get("Y")) if isinstance(cam, dict) else None  # Pa
+    y = cam.get("yield_strength") if isinstance(cam, dict) else None  # Pa (scene SI name)
     return float(y) if isinstance(y, int | float) else None
 
 

@@ -15,6 +15,9 @@ import numpy as np
 from .. import _validate
 from ..errors import PhysicsError
 from ..fe.recovery import fit_half_width
+from ..hertz.conformity import roller_does_not_fit
+from ..hertz.contact import effective_radius, half_width
+from ..materials import effective_modulus
 from ..mesh import surface_height
 from .contact import solve_multi_lcp
 
@@ -178,8 +181,11 @@ def solve_cam_disk(model, *, F: float, local: bool = True) -> CamDiskResult:
     h0c = surface_height(model.x, model.Rr) + surface_height(model.x, model.rho)
     h0 = np.concatenate([h0c, np.full(model.theta.size, d.c)])
     G, C = _system(model)
-    inv_R = 1 / model.Rr + (0.0 if math.isinf(model.rho) else 1 / model.rho)
-    a_guess = 2 * math.sqrt(W / (inv_R * math.pi * 1e11)) if inv_R > 0 else model.x[-1] / 2
+    if roller_does_not_fit(model.rho, model.Rr):
+        a_guess = model.x[-1] / 2
+    else:  # twice the Hertz half-width: the first active set (Johnson 1985 eq. 4.45)
+        a_guess = 2 * float(half_width(W, effective_radius(model.rho, model.Rr),
+                                       effective_modulus(d.cam, model.roller, model.plane)))
     toward = np.cos(model.theta - math.atan2(-model.centre[1], -model.centre[0]))
     active = np.concatenate([np.abs(model.x) < a_guess, toward > 0.8])
     bil = np.concatenate([np.zeros(nc, bool), np.full(model.theta.size, d.fit == "bonded")])

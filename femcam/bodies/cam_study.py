@@ -13,6 +13,7 @@ import time
 
 import numpy as np
 
+from ..hertz.contact import effective_radius, half_width
 from ..materials import effective_modulus
 from ..mesh import surface_height
 from .cam_geometry import contact_frame
@@ -69,9 +70,8 @@ def refined_at(scene, disk, theta: float, **kw):
         Its solution.
     """
     C, n, rho, F = contact_frame(scene, theta)
-    inv_R = 1 / scene.follower.Rr + (0.0 if math.isinf(rho) else 1 / rho)
-    a_ref = math.sqrt(4 * F / scene.length / (inv_R * math.pi * effective_modulus(scene.cam, scene.roller,
-                                                                                 scene.plane)))
+    a_ref = float(half_width(F / scene.length, effective_radius(scene.follower.Rr, rho),
+                             effective_modulus(scene.cam, scene.roller, scene.plane)))
     m = CamDiskModel.build(disk=disk, C=C, n=n, rho=rho, Rr=scene.follower.Rr, roller=scene.roller,
                            a_ref=a_ref, length=scene.length, plane=scene.plane, **kw)
     return m, solve_cam_disk(m, F=F)

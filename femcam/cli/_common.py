@@ -19,6 +19,7 @@ from pathlib import Path
 from .. import _validate
 from ..errors import InputError
 from ..kinematics import LAW_NAMES
+from ..sweep.store import LOCK
 
 #: motion laws a flag can name alone (``bezier`` and ``polynomial`` need control points)
 NAMED_LAWS = tuple(n for n in LAW_NAMES if n not in ("bezier", "polynomial"))
@@ -111,10 +112,6 @@ def out_dir(path, flag: str = "--out", *, create: bool = True) -> Path:
     return p
 
 
-#: the sweep's lock file (``femcam.sweep.store.LOCK``): not "content" of an output directory
-_LOCK_NAME = ".femcam.lock"
-
-
 def refuse_non_empty(path, overwrite: bool, *, resume: bool | None = None) -> None:
     """Refuse a non-empty output directory unless ``--overwrite`` (or ``--resume``) is given:
     the rule of ``femcam sweep``, worded with the flags.
@@ -133,8 +130,8 @@ def refuse_non_empty(path, overwrite: bool, *, resume: bool | None = None) -> No
     InputError
         ``--out = DIR: the directory is not empty; pass ...``.
     """
-    p = Path(path)
-    if overwrite or resume or not p.is_dir() or not any(q.name != _LOCK_NAME for q in p.iterdir()):
+    p = Path(path)  # the sweep's lock file (femcam.sweep.store.LOCK) is not content
+    if overwrite or resume or not p.is_dir() or not any(q.name != LOCK for q in p.iterdir()):
         return
     hint = "--resume to continue the sweep in it, --overwrite to replace its results" \
         if resume is not None else "--overwrite to replace its files"

@@ -22,6 +22,7 @@ from ..scene import load_scene, study_problem
 from ..sweep import parse_angles_deg, sweep
 from ..sweep.options import TOLERANCE_FLOOR
 from ..sweep.result import families_text
+from ..sweep.worst import assess_line
 from ._common import add_law_override, add_scene_out, check_law, out_dir, plain, refuse_non_empty
 
 
@@ -267,6 +268,9 @@ def _print_summary(res, args) -> None:
         print(f"  exact-gap rows (curvature jump): FE departs from Hertz by up to "
               f"{100 * s['err_p0_absmax_exact']:.1f} %; Hertz cannot see the jump")
     for line in s.get("extras", {}).get("worst", ()):   # each provider's worst values (sweep.worst)
+        print(f"  {line}")
+    line = assess_line(s.get("extras", {}))              # report.md has it as a table
+    if line:
         print(f"  {line}")
     for note in s.get("extras", {}).get("notes", ()):   # e.g. the cam disk check (femcam.sweep.extras)
         print(f"  {note}")

@@ -159,7 +159,8 @@ SI_NAMES = {"thickness_um": "thickness", "E_GPa": "E", "interface_shear_strength
             "kinematic_viscosity_40C_mm2_per_s": "kinematic_viscosity_40C",
             "kinematic_viscosity_100C_mm2_per_s": "kinematic_viscosity_100C",
             "pressure_viscosity_per_GPa": "pressure_viscosity", "cam_Ra_um": "cam_Ra",
-            "roller_Ra_um": "roller_Ra", "cam_Rq_um": "cam_Rq", "roller_Rq_um": "roller_Rq"}
+            "roller_Ra_um": "roller_Ra", "cam_Rq_um": "cam_Rq", "roller_Rq_um": "roller_Rq",
+            "k_mm3_per_N_m": "k", "tip_radius_mm": "tip_radius"}
 
 
 def si_named(table: dict) -> dict:

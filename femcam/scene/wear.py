@@ -6,7 +6,7 @@
 from __future__ import annotations
 
 from .checker import _Checker
-from .schema import _WEAR
+from .schema import _WEAR, si_named
 
 
 def wear_table(ck: _Checker, raw, hardness) -> dict:
@@ -33,7 +33,7 @@ def wear_table(ck: _Checker, raw, hardness) -> dict:
     out = ck.table(raw, "wear", _WEAR)
     if not isinstance(raw, dict):
         return out
-    out = {_SI_WEAR.get(key, key): value for key, value in out.items()}
+    out = si_named(out)
     if "srr" in out and not (-2.0 < out["srr"] < 2.0):
         ck.add("wear.srr", f"= {raw['srr']} (dimensionless): must be in (-2, 2)")
     if "K" in raw and "k_mm3_per_N_m" in raw:
@@ -43,10 +43,6 @@ def wear_table(ck: _Checker, raw, hardness) -> dict:
         ck.add("wear.K", f"= {raw['K']} (dimensionless): needs the cam hardness "
                "[materials.cam] hardness_MPa (MPa), k = K/H; or give k_mm3_per_N_m (mm^3/(N m))")
     return out
-
-
-#: [wear] keys whose checked (SI) value is handed on under an SI name
-_SI_WEAR = {"k_mm3_per_N_m": "k", "tip_radius_mm": "tip_radius"}
 
 
 def _scene_wear(ck: _Checker, raw: dict, mats: dict) -> None:

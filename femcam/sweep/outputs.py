@@ -254,9 +254,11 @@ def check_vtus(result: SweepResult, run: SweepRun) -> None:
     FemcamError
         Some ``.vtu`` files are missing.
     """
-    want = np.flatnonzero(run.vtk_mask & (result.table["status"] == "ok"))
-    missing = [vtu_name(result.table["theta"][i]) for i in want
-               if not (run.out / "vtk" / vtu_name(result.table["theta"][i])).exists()]
+    # one read of each column: a long sweep's table is read from its chunk files per access
+    theta, status = result.table["theta"], result.table["status"]
+    want = np.flatnonzero(run.vtk_mask & (status == "ok"))
+    missing = [name for name in (vtu_name(theta[i]) for i in want)
+               if not (run.out / "vtk" / name).exists()]
     if missing:
         raise FemcamError(f"{len(missing)} of {want.size} .vtu files are missing from "
                           f"{run.out / 'vtk'} (first: {missing[0]}); the table is saved in "

@@ -47,6 +47,27 @@ def _halfspace_tail(table, found) -> str:
     return f" (2D Hertz there {p_h:.0f} MPa): the 2D p0 above is not the peak"
 
 
+def assess_line(extras: dict) -> str:
+    """The assessment's worst angle per criterion as one line (the CLI's; ``report.md`` has
+    them as a table), or "" when the sweep ran no assessment.
+
+    Parameters
+    ----------
+    extras : dict
+        The providers' summary of :func:`femcam.sweep.extras.extras_provenance`.
+
+    Returns
+    -------
+    str
+        E.g. ``"assessment (worst per criterion, SI units): film (lambda) 0.2079 at 0.0 deg, ..."``.
+    """
+    worst = extras.get("assess")
+    if not worst:
+        return ""
+    return "assessment (worst per criterion, SI units): " + ", ".join(
+        f"{c} {w['value']:.4g} at {w['theta_deg']:.1f} deg" for c, w in worst.items())
+
+
 def worst_lines(names, table, extras: dict | None = None) -> list[str]:
     """One line per provider in ``names``: its worst values, with the unit and the cam angle.
 
@@ -57,8 +78,8 @@ def worst_lines(names, table, extras: dict | None = None) -> list[str]:
     table : Mapping[str, ndarray]
         The sweep table (SI columns, ``theta`` [rad], ``status``, ``p0_hertz`` [Pa]).
     extras : dict, optional
-        The rest of the providers' summary (``assess``: worst angle per criterion;
-        ``coating_wear``: ``revolutions_through``), as built by
+        The rest of the providers' summary (``coating_wear``: ``revolutions_through``; the
+        assessment's line is :func:`assess_line`), as built by
         :func:`femcam.sweep.extras.extras_provenance`.
 
     Returns
@@ -80,9 +101,6 @@ def worst_lines(names, table, extras: dict | None = None) -> list[str]:
         if parts:
             tail = _halfspace_tail(table, found) if name == "halfspace" else ""
             lines.append(f"{label}: " + ", ".join(parts) + tail)
-    if extras.get("assess"):
-        lines.append("assessment (worst per criterion, SI units): " + ", ".join(
-            f"{c} {w['value']:.4g} at {w['theta_deg']:.1f} deg" for c, w in extras["assess"].items()))
     n = extras.get("coating_wear", {}).get("revolutions_through")
     if n is not None and math.isfinite(n):
         lines.append(f"coating: worn through after {n:.4g} revolutions at the deepest wear rate")
