@@ -6,6 +6,7 @@ options refuse (``femcam.sweep.options.SweepOptions``, checked here independentl
 constructing it at and beyond each bound).
 """
 
+import os
 from pathlib import Path
 
 import numpy as np
@@ -153,7 +154,7 @@ def test_negative_angle_range_is_accepted(tmp_path, captured):
 
 
 def test_workers_capped_at_the_useful_number(tmp_path, captured, capsys, monkeypatch):
-    monkeypatch.setattr(cli_sweep.os, "cpu_count", lambda: 2)
+    monkeypatch.setattr(os, "cpu_count", lambda: 2)  # read by femcam.cli._common.cap_workers
     # 12 angles in chunks of 30: 1 chunk, so 1 process is all that can work
     assert main(["sweep", str(_scene(tmp_path, "")), "--out", str(tmp_path / "o"), "--angles-deg", "0:360:30",
                  "--workers", "999"]) == 0

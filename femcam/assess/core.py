@@ -289,6 +289,31 @@ class Assessment:
     notes: tuple
 
 
+def column_extreme(values, mask, how: str):
+    """``(value, index)`` of the largest (``how="max"``) or smallest (``"min"``) finite value of
+    ``values`` where ``mask`` holds, or None when there is none.
+
+    Parameters
+    ----------
+    values : array_like, shape (n,)
+        A table column (any unit; returned as is).
+    mask : ndarray of bool, shape (n,)
+        The rows that count.
+    how : {"max", "min"}
+        Which extreme.
+
+    Returns
+    -------
+    tuple of (float, int) or None
+        The extreme value and its row index.
+    """
+    v = np.where(mask, np.asarray(values, float), np.nan)
+    if not np.any(np.isfinite(v)):
+        return None
+    i = int(np.nanargmin(v) if how == "min" else np.nanargmax(v))
+    return float(v[i]), i
+
+
 def worst_angles(rows: dict) -> dict:
     """criterion -> ``(value, theta in rad, index)`` of the worst contact angle (NaN columns skipped).
 
@@ -306,11 +331,9 @@ def worst_angles(rows: dict) -> dict:
     on = rows["Fc"] > 0
     res = {}
     for crit, (col, how) in WORST.items():
-        v = np.where(on, rows[col], np.nan)
-        if not np.any(np.isfinite(v)):
-            continue
-        i = int(np.nanargmin(v) if how == "min" else np.nanargmax(v))
-        res[crit] = (float(v[i]), float(rows["theta"][i]), i)
+        e = column_extreme(rows[col], on, how)
+        if e is not None:
+            res[crit] = (e[0], float(rows["theta"][e[1]]), e[1])
     return res
 
 

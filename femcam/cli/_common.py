@@ -112,6 +112,30 @@ def out_dir(path, flag: str = "--out", *, create: bool = True) -> Path:
     return p
 
 
+def cap_workers(requested: int, n_tasks: int, tasks: str) -> tuple:
+    """Cap ``--workers`` at the CPU cores and the number of tasks (more processes only wait).
+
+    Parameters
+    ----------
+    requested : int
+        ``--workers`` after validation, ``>= 1``.
+    n_tasks : int
+        Number of independent tasks (chunks, speeds).
+    tasks : str
+        The tasks as the note names them, e.g. ``"12 chunks of 30 angles"``.
+
+    Returns
+    -------
+    (int, str)
+        ``(workers, note)``; ``note`` says why it was capped ("" when not).
+    """
+    cores = os.cpu_count() or 1
+    cap = max(1, min(cores, n_tasks))
+    if requested <= cap:
+        return requested, ""
+    return cap, f"--workers {requested} capped at {cap} (the useful number: {cores} CPU cores, {tasks})"
+
+
 def refuse_non_empty(path, overwrite: bool, *, resume: bool | None = None) -> None:
     """Refuse a non-empty output directory unless ``--overwrite`` (or ``--resume``) is given:
     the rule of ``femcam sweep``, worded with the flags.

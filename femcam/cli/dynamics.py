@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import csv
 import math
-import os
 import shlex
 import sys
 from pathlib import Path
@@ -23,7 +22,7 @@ from ..dynamics import jump_speed, rpm_sweep
 from ..errors import InputError
 from ..scene import load_scene
 from ..viz.dynamics import plot_force, plot_rpm_sweep
-from ._common import add_no_plots, add_scene_out, out_dir, plain, refuse_non_empty
+from ._common import add_no_plots, add_scene_out, cap_workers, out_dir, plain, refuse_non_empty
 
 
 def register(subparsers) -> None:
@@ -64,12 +63,7 @@ def _useful_workers(requested: int, n_speeds: int) -> tuple:
     (int, str)
         ``(workers, note)``; ``note`` says why it was capped ("" when not).
     """
-    cores = os.cpu_count() or 1
-    cap = max(1, min(cores, n_speeds))
-    if requested <= cap:
-        return requested, ""
-    return cap, (f"--workers {requested} capped at {cap} (the useful number: {cores} CPU cores, "
-                 f"{n_speeds} speeds)")
+    return cap_workers(requested, n_speeds, f"{n_speeds} speeds")
 
 
 def _rpm_range(text: str):

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import argparse
 import math
-import os
 import shlex
 import sys
 
@@ -23,7 +22,7 @@ from ..sweep import parse_angles_deg, sweep
 from ..sweep.options import TOLERANCE_FLOOR
 from ..sweep.result import families_text
 from ..sweep.worst import assess_line
-from ._common import add_law_override, add_scene_out, check_law, out_dir, plain, refuse_non_empty
+from ._common import add_law_override, add_scene_out, cap_workers, check_law, out_dir, plain, refuse_non_empty
 
 
 def register(subparsers) -> None:
@@ -155,13 +154,8 @@ def useful_workers(requested, n_angles: int, chunk_size: int) -> tuple:
     """
     if not isinstance(requested, int):
         return requested, ""
-    cores = os.cpu_count() or 1
     chunks = max(1, math.ceil(n_angles / chunk_size))
-    cap = max(1, min(cores, chunks))
-    if requested <= cap:
-        return requested, ""
-    return cap, (f"--workers {requested} capped at {cap} (the useful number: {cores} CPU cores, "
-                 f"{chunks} chunks of {chunk_size} angles)")
+    return cap_workers(requested, chunks, f"{chunks} chunks of {chunk_size} angles")
 
 
 #: flag dest -> (unit shown in the message, CLI hint appended to the condition); the ranges

@@ -13,6 +13,8 @@ import math
 
 import numpy as np
 
+from ..assess.core import column_extreme
+
 #: provider -> its label and items (SI column, what, unit shown, factor SI -> unit, "max"|"min")
 ITEMS = {
     "halfspace": ("finite length", (("hs_p_axial_peak", "axial peak", "MPa", 1e-6, "max"),
@@ -28,14 +30,11 @@ ITEMS = {
 
 
 def _extreme(table, name, ok, how):
-    """``(value, theta_deg)`` of the largest/smallest finite ``ok`` value, or None."""
-    if name not in table:
+    """``(value, theta_deg, index)`` of the largest/smallest finite ``ok`` value, or None."""
+    e = column_extreme(table[name], ok, how) if name in table else None
+    if e is None:
         return None
-    v = np.where(ok, np.asarray(table[name], float), np.nan)
-    if not np.any(np.isfinite(v)):
-        return None
-    i = int(np.nanargmin(v) if how == "min" else np.nanargmax(v))
-    return float(v[i]), math.degrees(float(np.asarray(table["theta"], float)[i])), i
+    return e[0], math.degrees(float(np.asarray(table["theta"], float)[e[1]])), e[1]
 
 
 def _halfspace_tail(table, found) -> str:
