@@ -61,7 +61,7 @@ def test_all_bad_shaft_fit_keys_are_reported_in_one_scene_error(tmp_path):
                                         "'shaft_clearance_um' in um?"),
     ('shaft_fit = "bonded"\nshaft_clearance_um = 5.0', BORE,
      "cam.shaft_fit = 'bonded' with shaft_clearance_um = 5 um: a bonded fit has no clearance"),
-    ("shaft_clearance_um = 5.0", "", "cam.shaft_clearance_um = 5.0: needs cam.bore_mm"),
+    ("shaft_clearance_um = 5.0", "", "cam.shaft_clearance_um = 5.0 um: needs cam.bore_mm"),
 ])
 def test_bad_shaft_fit_keys_name_key_value_unit(tmp_path, lines, bore, expect):
     with pytest.raises(SceneError) as e:

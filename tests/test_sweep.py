@@ -111,7 +111,7 @@ def test_bad_options_are_input_errors(scene):
         sweep(scene, angles=[0.0, np.nan], method="hertz")
     with pytest.raises(InputError, match="a_over_h"):
         sweep(scene, angles=[0.0], a_over_h=0.5)
-    with pytest.raises(InputError, match="tolerance = 1e-05: must be >= 0.0001"):
+    with pytest.raises(InputError, match=r"tolerance = 1e-05 \(relative p0 reuse error\): must be >= 0.0001"):
         sweep(scene, angles=[0.0], tolerance=1e-5)
     with pytest.raises(InputError, match="workers"):
         sweep(scene, angles=[0.0], workers="many", method="hertz")

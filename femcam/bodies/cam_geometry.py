@@ -28,6 +28,7 @@ import numpy as np
 from .. import _validate
 from ..errors import InputError
 from ..materials import STEEL, Material
+from ..scene.bodies import SHAFT_CLEARANCE_MAX
 
 FITS = ("contact", "bonded")
 
@@ -90,9 +91,10 @@ class CamDisk:
             raise _validate.fail("Rb", self.Rb, "m", f"the bore does not fit: the smallest outline "
                                  f"radius is {r_min * 1e3:.4g} mm (bore {self.Rb * 1e3:.4g} mm)")
         c = self.Rb - Rs
-        if c < 0 or c > 0.05 * self.Rb:
+        if c < 0 or c > SHAFT_CLEARANCE_MAX * self.Rb:
+            c_max = SHAFT_CLEARANCE_MAX * self.Rb
             raise _validate.fail("Rs", Rs, "m", f"the clearance Rb - Rs = {c * 1e6:.4g} um must be in "
-                                 f"[0, 0.05 Rb = {0.05 * self.Rb * 1e6:.4g} um] (linearised gap)")
+                                 f"[0, {SHAFT_CLEARANCE_MAX:g} Rb = {c_max * 1e6:.4g} um] (linearised gap)")
         if self.fit == "bonded" and c != 0.0:
             raise _validate.fail("Rs", Rs, "m", "a bonded fit needs Rs == Rb (no clearance)")
         if self.cam_yield is not None:

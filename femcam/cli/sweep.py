@@ -18,6 +18,7 @@ import sys
 
 from .. import _validate
 from ..scene import load_scene, study_problem
+from ..scene.schema import STUDY_UNITS
 from ..sweep import parse_angles_deg, sweep
 from ..sweep.options import TOLERANCE_FLOOR
 from ..sweep.result import families_text
@@ -161,11 +162,10 @@ def useful_workers(requested, n_angles: int, chunk_size: int) -> tuple:
 #: flag dest -> (unit shown in the message, CLI hint appended to the condition); the ranges
 #: themselves are femcam.scene.schema.study_problem (one copy; each flag's scene key is in SETTINGS)
 _FLAG_CHECKS = {
-    "mesh_size": ("(elements per contact half-width, a/h)",
-                  "10 (default) keeps p0 within 0.3 % of Hertz"),
-    "tolerance": ("(relative p0 reuse error)", ""),
-    "chunk_size": ("angles", ""),
-    "vtk_every": ("angles", "0 = no VTK"),
+    "mesh_size": (STUDY_UNITS["a_over_h"], "10 (default) keeps p0 within 0.3 % of Hertz"),
+    "tolerance": (STUDY_UNITS["tolerance"], ""),
+    "chunk_size": (STUDY_UNITS["chunk_size"], ""),
+    "vtk_every": (STUDY_UNITS["vtk_every"], "0 = no VTK"),
 }
 
 
@@ -234,11 +234,11 @@ def _run(args) -> int:
         nl = "\n" if sys.stderr.isatty() else ""  # end a progress bar's line
         print(f"{nl}femcam sweep: {exc or 'interrupted'}", file=sys.stderr)
         return 130
-    _print_summary(res, args)
+    _print_summary(res)
     return 0
 
 
-def _print_summary(res, args) -> None:
+def _print_summary(res) -> None:
     """The sweep's summary on stdout (warnings on stderr): counts, models, the 2D headline and
     one line per extra provider's worst values (:mod:`femcam.sweep.worst`)."""
     s = res.summary()
@@ -247,12 +247,12 @@ def _print_summary(res, args) -> None:
           f"{res.n_chunks_computed} computed) in {res.timings['total']:.2f} s; "
           f"liftoff {s['n_liftoff']}, undercut {s['n_undercut']}, failed {s['n_failed']}")
     if o.get("models"):
-        print(f"  models: {o['models']} (tolerance {100 * args.tolerance:g} %); curvature-jump rows "
+        print(f"  models: {o['models']} (tolerance {100 * o['tolerance']:g} %); curvature-jump rows "
               f"{o.get('n_curvature_jump', 0)}, edge contacts {o.get('n_edge_contact', 0)}; traction: "
               f"{o.get('traction')}")
     if res.method != "hertz":
         print(f"  {families_text(s['n_families'], s['reuse_error_max'], s['n_binned'])} "
-              f"(tolerance {100 * args.tolerance:g} %); workers "
+              f"(tolerance {100 * o['tolerance']:g} %); workers "
               f"{o.get('workers')}" + (f" ({o['workers_reason']})" if o.get("workers_reason") else ""))
     print(f"  peak Fc {s['Fc_max']:.1f} N, p0 Hertz {s['p0_hertz_max'] / 1e6:.1f} MPa"
           + (f", p0 FE {s['p0_fe_max'] / 1e6:.1f} MPa (max |err| vs Hertz "

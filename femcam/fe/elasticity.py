@@ -250,6 +250,7 @@ def _element(element: str):
         ElementVector,
     )
 
+    _validate.choice("element", element, ELEMENTS)   # never a silent P1 for "p2" or "P3"
     return ElementVector(ElementTriP2() if element == "P2" else ElementTriP1())
 
 

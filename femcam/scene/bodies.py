@@ -147,7 +147,9 @@ def shaft_fit_problems(*, bore_mm, fit, clearance_um) -> list[str]:
     """
     given = [(k, v) for k, v in (("shaft_fit", fit), ("shaft_clearance_um", clearance_um)) if v is not None]
     if bore_mm is None:
-        return [f"cam.{k} = {_fmt(v)}: needs cam.bore_mm (the cam on its shaft); without it the cam is "
+        unit = {"shaft_clearance_um": " um"}
+        return [f"cam.{k} = {_fmt(v)}{unit.get(k, '')}: needs cam.bore_mm "
+                "(the cam on its shaft); without it the cam is "
                 "today's local body" for k, v in given]
     out = []
     c_max = SHAFT_CLEARANCE_MAX * bore_mm * 1e3

@@ -192,6 +192,9 @@ METHODS = ("fe", "hertz", "auto")
 TOLERANCE_FLOOR = 1e-4
 #: closed ranges of the real-valued study settings
 STUDY_RANGES = {"a_over_h": (2.0, 400.0), "tolerance": (TOLERANCE_FLOOR, 0.5)}
+#: what the study settings measure, as error messages write them after the value
+STUDY_UNITS = {"a_over_h": "(elements per contact half-width, a/h)",
+               "tolerance": "(relative p0 reuse error)", "chunk_size": "angles", "vtk_every": "angles"}
 _RANGES = STUDY_RANGES  # the name tests/test_scene_tables.py reads
 #: whole-number study settings and their smallest value
 STUDY_WHOLE = {"chunk_size": 1, "vtk_every": 0}

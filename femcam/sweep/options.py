@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from .. import _validate
 from ..errors import InputError
 from ..materials import Material, effective_modulus
-from ..scene.schema import METHODS, STUDY_WHOLE, TOLERANCE_FLOOR, study_problem
+from ..scene.schema import METHODS, STUDY_UNITS, STUDY_WHOLE, TOLERANCE_FLOOR, study_problem
 from ..wear.options import follower_tip_radius
 
 __all__ = ["METHODS", "TOLERANCE_FLOOR", "ContactParams", "SweepOptions", "contact_params"]
@@ -56,8 +56,7 @@ class SweepOptions:
 
     def __post_init__(self):
         _validate.choice("method", self.method, METHODS)
-        units = {"a_over_h": "", "tolerance": "", "chunk_size": "angles", "vtk_every": "angles"}
-        for key, unit in units.items():
+        for key, unit in STUDY_UNITS.items():
             value = getattr(self, key)
             x = _validate.number(key, value, unit)
             problem = study_problem(key, x)
