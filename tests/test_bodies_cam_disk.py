@@ -298,3 +298,20 @@ def test_hat_resultants_sum_the_interleaved_dofs():
     B = np.arange(1.0, 13.0).reshape(6, 2)  # rows x0 y0 x1 y1 x2 y2, two hats
     np.testing.assert_array_equal(hat_resultants(B), [[1 + 5 + 9, 2 + 6 + 10], [3 + 7 + 11, 4 + 8 + 12]])
 
+
+
+@pytest.mark.parametrize("kw, message", [
+    (dict(length=0.0), r"length = 0 m: must be > 0"),
+    (dict(Rr=-0.01), r"Rr = -0.01 m: must be > 0"),
+    (dict(rho=0.0), r"rho = 0 m"),
+    (dict(n=[0.0, 2.0]), r"n = \[0.0, 2.0\]: C and n must be 2-vectors, n of unit length"),
+])
+def test_cam_disk_model_inputs_are_checked_before_meshing(kw, message):
+    disk = CamDisk(outline=circle(0.02), Rb=0.006)
+    args = dict(disk=disk, C=[0.0, 0.02], n=[0.0, 1.0], rho=0.02, Rr=0.01, roller=STEEL, a_ref=1e-4,
+                length=0.01)
+    with pytest.raises(InputError, match=message):
+        CamDiskModel.build(**{**args, **kw})
+    if "length" in kw:
+        with pytest.raises(InputError, match=message):
+            CamGlobalModel.build(disk=disk, length=0.0)

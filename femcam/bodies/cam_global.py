@@ -181,6 +181,7 @@ class CamGlobalModel:
             A bore too coarse for the web (:func:`~femcam.bodies.cam_model.check_bore_spacing`)
             or a web too thin for the model.
         """
+        length = _validate.positive("length", length, "m")
         cm = cam_mesh or global_mesh_for(disk)
         check_bore_spacing(disk, cm)
         t0 = time.perf_counter()

@@ -31,6 +31,7 @@ import numpy as np
 from .. import _validate
 from ..fe.contact import load_matrix, trapezoid_weights
 from ..fe.elasticity import assemble_body
+from ..fe.model import _radius
 from ..materials import Material
 from ..mesh import MeshOptions, _mesh_body
 from .cam_geometry import CamDisk, outline_without_arc
@@ -355,6 +356,13 @@ class CamDiskModel:
             A bore too close to the contact or too coarse for the web.
         """
         a_ref = _validate.positive("a_ref", a_ref, "m")
+        length = _validate.positive("length", length, "m")
+        Rr = _validate.positive("Rr", Rr, "m")
+        rho = _radius("rho", rho)
+        C = _validate.finite_array("C", C, "m")
+        n = _validate.finite_array("n", n, "")
+        if C.shape != (2,) or n.shape != (2,) or abs(float(np.hypot(*n)) - 1.0) > 1e-9:
+            raise _validate.fail("n", n.tolist(), "", "C and n must be 2-vectors, n of unit length")
         mesh = mesh or MeshOptions()
         cm = cam_mesh or CamMeshOptions(n_bore=max(64, bore_vertices_for(disk)))
         check_bore_spacing(disk, cm)
