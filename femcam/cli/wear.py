@@ -32,16 +32,16 @@ import numpy as np
 from .. import _validate
 from ..assess import wear_factor
 from ..errors import InputError
+from ..halfspace.rows import has_finite_length
 from ..kinematics import LAW_NAMES
 from ..profile import FlatFacedFollower, KnifeEdgeFollower, RollerFollower
 from ..scene import load_scene
 from ..sweep import sweep
-from ..sweep.providers import has_finite_length
 from ..viz.wear import plot_evolution, plot_wear_comparison, plot_wear_map, plot_wear_polar
-from ..wear.axial import scene_wear_axial
+from ..wear.axial import scene_wear_map
 from ..wear.evolution import convergence_table, evolution_case
 from ..wear.options import describe_k, wear_coefficient_info, wear_options
-from ..wear.scene import scene_tip_radius, scene_wear, tip_scene
+from ..wear.scene import scene_tip_radius, tip_scene
 from ..wear.seed000 import PAPER_LAWS, format_table3, seed000_table, table_rows_for_csv
 from ._common import NAMED_LAWS, add_scene_out, check_law, out_dir, plain, refuse_non_empty
 
@@ -168,12 +168,8 @@ def _map(args) -> int:
             fe = sweep(_fe_scene(sc, tip), angles=theta, method="fe",
                        progress=None, **sc.fe)  # the scene's [fe] settings; progress on a terminal
         k_factor, regime = wear_factor(sc, theta, fe.table if fe is not None else None, tip)
-        if has_finite_length(sc):  # crowned / tilted / narrower roller: the most loaded slice
-            wm, st, slip = scene_wear_axial(sc, theta, cycles=cycles, fe=fe, k_factor=k_factor,
-                                            regime=regime)
-        else:
-            wm, st, slip = scene_wear(sc, theta, cycles=cycles, tip_radius=tip, fe=fe,
-                                      k_factor=k_factor, regime=regime)
+        wm, st, slip = scene_wear_map(sc, theta, cycles=cycles, tip_radius=tip, fe=fe,
+                                      k_factor=k_factor, regime=regime)  # the axial peak if crowned
         results[label] = (wm, st, slip)
         _write_angle_csv(out / f"wear_{label}.csv", head, theta, cycles, wm, st, slip)
         _write_surface_csv(out / f"wear_{label}_surface.csv", head, cycles, wm)

@@ -166,3 +166,27 @@ def to_csv_columns(rows: dict) -> dict:
     {'L_eff_mm': array([10.])}
     """
     return {COLUMNS[k][0]: np.asarray(v) * COLUMNS[k][1] for k, v in rows.items() if k in COLUMNS}
+
+
+def has_finite_length(scene) -> bool:
+    """True when the scene asks for the finite-length contact: a crown, edge radius or
+    misalignment key, or a roller or cam width that differs from the 2D contact length. (The
+    scene fills ``finite_length`` with both widths for every roller scene with a face width, so
+    non-empty alone does not mean asked for.)
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene.
+
+    Returns
+    -------
+    bool
+        The finite-length (half-space) contact applies: the sweep's ``halfspace`` provider and
+        the wear map's most loaded slice.
+    """
+    fl = getattr(scene, "finite_length", None) or {}
+    if not fl:
+        return False
+    widths = (fl.get("roller_width", scene.length), fl.get("cam_width", scene.length))
+    return bool(set(fl) - {"roller_width", "cam_width"}) or any(w != scene.length for w in widths)

@@ -58,6 +58,7 @@ from ..assess import COLUMNS as ASSESS_COLUMNS
 from ..assess import worst_angles
 from ..bodies.cam_rows import has_cam_bore
 from ..errors import FemcamError
+from ..halfspace.rows import has_finite_length
 from ..io import write_pvd
 from ..viz.extras import plot_extra_panels
 from ..wear.coating import coating_wear
@@ -82,7 +83,6 @@ from .providers import (
     coated_cam,
     coating_wear_chunk,
     halfspace_chunk,
-    has_finite_length,
     has_support,
     layers_chunk,
     ring_chunk,

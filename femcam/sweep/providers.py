@@ -473,29 +473,6 @@ def layers_chunk(task, rows) -> dict:
     return out
 
 
-def has_finite_length(scene) -> bool:
-    """True when the scene asks for the finite-length contact: a crown, edge radius or
-    misalignment key, or a roller or cam width that differs from the 2D contact length. (The
-    scene fills ``finite_length`` with both widths for every roller scene with a face width, so
-    non-empty alone does not mean asked for.)
-
-    Parameters
-    ----------
-    scene : femcam.scene.Scene
-        The scene swept.
-
-    Returns
-    -------
-    bool
-        The ``halfspace`` provider applies.
-    """
-    fl = getattr(scene, "finite_length", None) or {}
-    if not fl:
-        return False
-    widths = (fl.get("roller_width", scene.length), fl.get("cam_width", scene.length))
-    return bool(set(fl) - {"roller_width", "cam_width"}) or any(w != scene.length for w in widths)
-
-
 def coated_cam(scene) -> bool:
     """True when the cam is coated and the scene gives a coating wear coefficient
     (:func:`femcam.wear.coating.coating_wear`).

@@ -28,10 +28,10 @@ import math
 
 import numpy as np
 
-from ..halfspace.rows import finite_length_rows
+from ..halfspace.rows import finite_length_rows, has_finite_length
 from .map import WearMap, wear_map
 from .options import slip_kwargs, wear_coefficient_info
-from .scene import with_coating
+from .scene import scene_wear, with_coating
 from .slip import SlipResult, follower_slip
 
 
@@ -135,3 +135,40 @@ def scene_wear_axial(scene, theta, *, cycles: float = 1e6, fe=None, k_factor=Non
     wm = wear_map(table, slip, k=k, length=scene.length, cycles=cycles, pressure="axial_peak",
                   k_factor=k_factor, regime=regime)
     return with_coating(scene, wm), st, slip
+
+
+def scene_wear_map(scene, theta, *, cycles: float = 1e6, tip_radius: float | None = None, fe=None,
+                   k_factor=None, regime=None) -> tuple[WearMap, object, SlipResult]:
+    """Archard wear map of a scene with the pressure its geometry asks for: the most loaded
+    slice (:func:`scene_wear_axial`) for a crowned, tilted or narrower roller
+    (:func:`femcam.halfspace.rows.has_finite_length`), the 2D contact
+    (:func:`femcam.wear.scene.scene_wear`) otherwise.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene.
+    theta : ndarray, shape (n,)
+        Cam angles [rad], uniform over one revolution, endpoint excluded.
+    cycles : float
+        Number of cam revolutions [-].
+    tip_radius : float or None, optional
+        Knife-edge tip radius [m] (2D contact only).
+    fe : femcam.sweep.SweepResult, optional
+        A sweep of ``scene`` at ``theta`` giving the pressure.
+    k_factor, regime : ndarray, shape (n,), optional
+        The wear coefficient's factor k(lambda)/k [-] and the lubrication regime per angle.
+
+    Returns
+    -------
+    wear_map : femcam.wear.map.WearMap
+        The map (the most loaded slice's when ``has_finite_length(scene)``).
+    state : femcam.scene.SceneState
+        ``scene.analyse(theta)``.
+    slip : femcam.wear.slip.SlipResult
+        Sliding and transport speeds [m/s] at ``theta``.
+    """
+    if has_finite_length(scene):
+        return scene_wear_axial(scene, theta, cycles=cycles, fe=fe, k_factor=k_factor, regime=regime)
+    return scene_wear(scene, theta, cycles=cycles, tip_radius=tip_radius, fe=fe, k_factor=k_factor,
+                      regime=regime)
