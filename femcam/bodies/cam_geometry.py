@@ -28,6 +28,7 @@ import numpy as np
 from .. import _validate
 from ..errors import InputError
 from ..materials import STEEL, Material
+from ..mesh import surface_height
 from ..scene.bodies import SHAFT_CLEARANCE_MAX
 
 FITS = ("contact", "bonded")
@@ -232,8 +233,7 @@ def outline_without_arc(disk: CamDisk, C: np.ndarray, n: np.ndarray, rho: float,
     o = to_contact_frame(disk.outline, C, n)
     c = to_contact_frame(np.zeros((2, 1)), C, n)[:, 0]
     ends = np.array([[-W, W], [0.0, 0.0]])
-    k = 0.0 if math.isinf(rho) else 1.0 / rho
-    ends[1] = -k * W**2 / (1 + math.sqrt(max(1 - (k * W) ** 2, 0.0)))
+    ends[1] = -surface_height(ends[0], rho)
     psi = np.arctan2(o[1] - c[1], o[0] - c[0])
     pL, pR = (math.atan2(e[1] - c[1], e[0] - c[0]) for e in ends.T)
     span = (pR - pL) % (2 * math.pi)

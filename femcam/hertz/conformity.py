@@ -160,7 +160,7 @@ def sizing_half_width(F, length: float, rho, Rr: float, E_star: float) -> np.nda
     return half_width(np.maximum(F, 0.0) / length, R, E_star)
 
 
-@lru_cache(maxsize=32)
+@lru_cache(maxsize=256)  # the sweep's traction-ratio grid: up to 101 ratios per (mu, nu, plane)
 def shape_factors(mu: float, nu: float, plane: str) -> dict:
     r"""Maxima of the Hertz fields in units of p0 and a, for friction ``mu``.
 

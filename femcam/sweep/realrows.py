@@ -12,7 +12,6 @@ by half-width and cam radius.
 from __future__ import annotations
 
 import math
-from functools import cache
 
 import numpy as np
 
@@ -99,19 +98,14 @@ def hertz_stress(rows, idx, cp, p0, a, ratio=None) -> None:
     for k_step in np.unique(steps):
         sel = steps == k_step
         j, p, b = idx[sel], p0[sel], a[sel]
-        k = _shape_factors(int(k_step), float(cp.mu), float(cp.cam.nu), cp.plane)
+        # the ratio on the grid mu k_step / RATIO_STEPS: at most RATIO_STEPS + 1 cached maximisations
+        k = shape_factors(float(cp.mu) * (int(k_step) / RATIO_STEPS), float(cp.cam.nu), cp.plane)
         rows["vm_max"][j] = k["von_mises"][0] * p
         rows["vm_depth"][j] = k["von_mises"][1] * b
         rows["tau1_max"][j] = k["tau1"][0] * p
         rows["tau1_depth"][j] = k["tau1"][1] * b
         for name in ("sx_min", "sx_max", "sz_min", "txz_absmax"):
             rows[name][j] = k[name] * p
-
-
-@cache  # at most RATIO_STEPS + 1 entries per (mu, nu, plane)
-def _shape_factors(k_step: int, mu: float, nu: float, plane: str) -> dict:
-    """:func:`femcam.hertz.conformity.shape_factors` at the traction ratio ``mu k_step / RATIO_STEPS``."""
-    return shape_factors(mu * (k_step / RATIO_STEPS), nu, plane)
 
 
 def hertz_row_traction(rows, i: int, cp) -> tuple[float, int]:
