@@ -38,8 +38,7 @@ from femcam.materials import Material
 from femcam.profile import RollerFollower
 from femcam.scene import load_scene
 from femcam.sweep import sweep
-from femcam.sweep.extras import omitted_physics
-from femcam.sweep.realrows import SURF_EDGE_TOL, edge_flags
+from femcam.sweep.headline import SURF_EDGE_TOL, edge_flags, omitted_physics
 
 EX = Path(__file__).resolve().parents[1] / "examples"
 #: scenes whose extra providers cost seconds (the cam disk model): run in the slow suite only

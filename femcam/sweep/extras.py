@@ -63,6 +63,7 @@ from ..halfspace.rows import has_finite_length
 from ..io import write_pvd
 from ..viz.extras import plot_extra_panels
 from ..wear.coating import coating_wear
+from .headline import omitted_physics
 from .providers import (
     ASSESS,
     ASSESS_PANELS,
@@ -138,50 +139,6 @@ PROVIDERS: tuple[Provider, ...] = (
     Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), layers_chunk, LAYER_PANELS),
     Provider("coating_wear", coated_cam, (), (), coating_wear_chunk),
 )
-
-
-def omitted_physics(scene) -> tuple[tuple[str, str], ...]:
-    """What the scene holds that the sweep's headline contact model (the 2D two-body contact of
-    homogeneous solid bodies at ``Fc / length``) leaves out: ``(flag, sentence)`` pairs. The
-    flag goes into the ``flags`` of every ``ok`` row, the sentence into the summary line and
-    ``report.md``, so a headline never omits physics silently.
-
-    A hardened case is not listed: it changes no elastic constant, so the headline contact is
-    the case-hardened body's; the case's strength is checked in the ``case_*`` columns.
-
-    Parameters
-    ----------
-    scene : femcam.scene.Scene
-        The scene swept.
-
-    Returns
-    -------
-    tuple of (str, str)
-        ``headline_omits_coating``, ``headline_solid_roller``, ``headline_solid_cam``,
-        ``headline_2d_mean_load`` as they apply, each with its sentence.
-    """
-    out = []
-    for body, tabs in (getattr(scene, "layers", None) or {}).items():
-        if "coating" in tabs:
-            c = tabs["coating"]
-            out.append(("headline_omits_coating",
-                        f"headline_omits_coating: the {body}'s {c['thickness'] * 1e6:g} um coating "
-                        f"(E {c['E'] / 1e9:g} GPa) is not in the contact FE that answers a_fe, p0_fe "
-                        "and the stresses (uncoated bodies); its own stresses are the interface_* "
-                        "and coating_* columns"))
-    if has_support(scene):
-        out.append(("headline_solid_roller",
-                    f"headline_solid_roller: the roller runs on {scene.bodies['support']}, the "
-                    "headline contact is the solid roller's; the ring's own contact is ring_p0_MPa"))
-    if has_cam_bore(scene):
-        out.append(("headline_solid_cam",
-                    "headline_solid_cam: the cam sits on its shaft, the headline contact is a solid "
-                    "cam's; the cam disk is in the cam_bore_* and shaft_* columns"))
-    if has_finite_length(scene):
-        out.append(("headline_2d_mean_load",
-                    "headline_2d_mean_load: finite length, the headline is the 2D contact at the mean "
-                    "load Fc / length; the most loaded slice is p_axial_peak_MPa and fe_slice_*"))
-    return tuple(out)
 
 
 def plot_extras(scene, table, out) -> dict[str, str]:

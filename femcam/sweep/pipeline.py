@@ -48,8 +48,9 @@ from ..hertz.conformity import (
 from ..io import vtu_name, write_fe_vtu, write_hertz_vtu
 from ..wear.slip import SlipResult
 from .cache import ModelCache, default_cache
-from .extras import fill_extras, omitted_physics
+from .extras import fill_extras
 from .families import hertz_half_width
+from .headline import omitted_physics
 from .options import ContactParams, SweepOptions, contact_params
 from .realcam import Traction, arc_error_estimate, contact_scene, hertz_within_tolerance, traction_args
 from .realrows import (

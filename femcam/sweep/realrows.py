@@ -22,6 +22,7 @@ from ..fe.followers import check_face
 from ..hertz.conformity import shape_factors
 from ..mesh import MeshOptions
 from ..profile import KnifeEdgeFollower, RollerFollower
+from .headline import edge_flags
 from .realcam import traction_args
 
 #: geometric bin ratio (half-width and cam radius) of the flat-faced models
@@ -73,52 +74,6 @@ def fe_fill(rows, i, r: ContactResult) -> list[str]:
     rows["stick_width"][i] = r.stick_width
     rows["slip_state"][i] = r.slip_state
     return edge_flags(r)
-
-
-#: FE surface error away from the contact edge, as a fraction of p0: the FE surface sx, sz, txz
-#: of a Hertzian row (a/h = 10, steel, stick and full sliding at mu = 0.1) differ from the Hertz
-#: surface field (Johnson 1985 §7.1) by <= 14 MPa at p0 = 742 MPa (1.9 %) beyond one element
-#: from the edge; within it the edge singularity of the discretisation gives up to 27 MPa of
-#: txz where the contact carries none (docs/sweep.md, "Surface columns at the contact edge")
-SURF_EDGE_TOL = 0.02
-
-
-def edge_flags(r: ContactResult) -> list[str]:
-    """``surf_edge_dominated:<column>`` for each FE surface extreme that lies within one element
-    of the contact edge and exceeds what the contact can carry by more than :data:`SURF_EDGE_TOL`
-    ``p0``: a value of the discretisation's edge singularity, not a result.
-
-    What the contact can carry, from bounds that hold for every slip state: ``|txz| <= max |q|``
-    (the surface traction boundary condition, ``q`` the solved traction), ``sz >= -p0``, and
-    ``sx`` within the Hertz surface field at full sliding (Johnson 1985 §7.1, seed 002 eqs. 5-7;
-    the tensile peak ``2 mu p0`` at the trailing edge bounds the partial-slip one).
-
-    Parameters
-    ----------
-    r : femcam.fe.ContactResult
-        The solved load case (``x``, ``p``, ``q``, ``a``, ``x0`` [m, Pa], cam surface stresses).
-
-    Returns
-    -------
-    list of str
-        The flags (empty when no extreme is edge-dominated).
-    """
-    S = r.surface_by_body.get("cam")
-    if S is None or not S.sx.size or r.x.size < 2 or not r.a > 0:
-        return []
-    p0, h = float(r.p0_nodal), float(np.median(np.diff(r.x)))
-    k = shape_factors(float(r.mu), float(r.model.cam.nu), r.model.plane)
-    q = float(np.max(np.abs(r.q))) if r.q is not None and np.size(r.q) else 0.0
-    near = np.abs(np.abs(S.x - r.x0) - r.a) <= h
-    tol = SURF_EDGE_TOL * p0
-    out = []
-    for name, v, j, limit in (("surf_sx_max", S.sx, np.argmax(S.sx), k["surf_sx_max"] * p0),
-                              ("surf_sx_min", -S.sx, np.argmin(S.sx), -k["surf_sx_min"] * p0),
-                              ("surf_sz_min", -S.sz, np.argmin(S.sz), p0),
-                              ("surf_txz_absmax", np.abs(S.txz), np.argmax(np.abs(S.txz)), q)):
-        if near[j] and v[j] > limit + tol:
-            out.append(f"surf_edge_dominated:{name}")
-    return out
 
 
 def hertz_stress(rows, idx, cp, p0, a, ratio=None) -> None:

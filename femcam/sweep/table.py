@@ -69,10 +69,10 @@ cheaper models), ``curvature_jump`` (1 inside a curvature jump's straddle span),
   model was built for this angle alone (its reuse error is 0).
 * ``surf_edge_dominated:<column>`` -- an FE surface extreme (``surf_*``) sits within one
   element of the contact edge and exceeds the value the contact can carry there by more than the
-  FE's surface error (:data:`femcam.sweep.realrows.SURF_EDGE_TOL` p0): a value of the
-  discretisation's edge singularity, not a result (:func:`femcam.sweep.realrows.edge_flags`);
+  FE's surface error (:data:`femcam.sweep.headline.SURF_EDGE_TOL` p0): a value of the
+  discretisation's edge singularity, not a result (:func:`femcam.sweep.headline.edge_flags`);
 * ``headline_omits_<what>`` -- the scene holds physics the headline contact model leaves out
-  (:func:`femcam.sweep.realrows.omitted_physics`): ``coating``, ``case`` (a homogeneous body
+  (:func:`femcam.sweep.headline.omitted_physics`): ``coating``, ``case`` (a homogeneous body
   answers), ``support`` (the solid roller answers; the ring's own contact is ``ring_p0_MPa``),
   ``cam_bore`` (a solid cam answers; the cam disk is in ``cam_bore_*``), ``finite_length``
   (the 2D mean load ``Fc / length`` answers; the most loaded slice is ``p_axial_peak_MPa``,
