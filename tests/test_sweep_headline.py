@@ -259,3 +259,16 @@ def test_layer_stresses_without_strengths_through_the_sweep(tmp_path):
         np.testing.assert_allclose(without[name], with_s[name], rtol=1e-12, err_msg=name)
     assert np.all(np.isnan(without["layer_interface_utilisation"]))
     assert np.all(np.isfinite(with_s["layer_interface_utilisation"]))
+
+
+def test_cli_summary_says_what_the_headline_omits(tmp_path, capsys):
+    """Issue 29 item 2, on the console: the coated scene's summary names the omitted coating with
+    its thickness and modulus as the TOML gives them (2.5 um, 170 GPa), and what p0 FE is."""
+    from femcam.cli import main
+
+    assert main(["sweep", str(EX / "seed002_coated.toml"), "--out", str(tmp_path / "o"),
+                 "--angles-deg", "60:61:1", "--no-plots", "--vtk-every", "0", "--mesh-size", "6",
+                 "--workers", "1"]) == 0
+    printed = capsys.readouterr().out
+    assert "headline_omits_coating: the roller's 2.5 um coating (E 170 GPa)" in printed
+    assert "(peak of the solved pressure)" in printed and "nan %" not in printed
