@@ -53,7 +53,11 @@ def edge_flags(r: ContactResult) -> list[str]:
     if S is None or not S.sx.size or r.x.size < 2 or not r.a > 0:
         return []
     p0, h = float(r.p0_nodal), float(np.median(np.diff(r.x)))
-    k = shape_factors(float(r.mu), float(r.model.cam.nu), r.model.plane)
+    # the surface extremes of the Hertz field do not depend on nu or the plane (seed 002 eqs.
+    # 5-7); the row's own values only reuse the cached shape factors of hertz_stress
+    m = r.model
+    k = shape_factors(float(r.mu), float(m.cam.nu) if m is not None else 0.3,
+                      m.plane if m is not None else "strain")
     q = float(np.max(np.abs(r.q))) if r.q is not None and np.size(r.q) else 0.0
     near = np.abs(np.abs(S.x - r.x0) - r.a) <= h
     tol = SURF_EDGE_TOL * p0

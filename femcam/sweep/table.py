@@ -20,33 +20,27 @@ Per-angle ``status``:
 
 Column names say where a value is taken (one rule, also in docs/sweep.md):
 
-==========================  ==============================================  ====================
-column                      where it is taken                               model
-==========================  ==============================================  ====================
-``p0_hertz``, ``a_hertz``   Hertz line contact at ``Fc / length``, ``rho``  Hertz (arc gap)
-``p0_fe``                   peak of the solved contact pressure: its        ``model`` column
-                            largest nodal value, the peak of the P1
-                            pressure interpolant (``ContactResult.p0_nodal``)
-``p0_fit``                  peak of the Hertz ellipse fitted to the solved  ``model`` column
-                            pressure (nodes above 20 % of the peak); a fit
-``a_fe``                    half-width of that fitted ellipse (where it     ``model`` column
-                            reaches 0), not the extent of the active set
-``err_p0``, ``err_a``       ``p0_fe / p0_hertz - 1`` (the peak against      FE vs Hertz
-                            Hertz), ``a_fe / a_hertz - 1``
-``vm_max`` + ``vm_depth``,  largest value over the stress windows of both   ``model`` column
-``tau1_max`` +              bodies (subsurface), and its depth below that
-``tau1_depth``              body's surface
-``surf_*`` (``surf_sx_min``  on the cam's contact surface (z = 0), over the  ``model`` column
-``surf_sx_max``,            FE stress window or the Hertz surface field
-``surf_sz_min``,            (Johnson 1985 §7.1, seed 002 eqs. 5-7)
-``surf_txz_absmax``)
-==========================  ==============================================  ====================
+* ``p0_hertz``, ``a_hertz``: Hertz line contact at ``Fc / length`` and ``rho`` (the reference);
+* ``p0_fe``: the peak of the solved contact pressure, its largest nodal value (the peak of the
+  P1 pressure interpolant, ``ContactResult.p0_nodal``), from the model the row's ``model``
+  names;
+* ``p0_fit``: the peak of the Hertz ellipse fitted to the solved pressure (nodes above 20 % of
+  the peak) -- a fit; ``a_fe``: that ellipse's half-width (where it reaches 0), a fit too, not
+  the extent of the active set;
+* ``err_p0``, ``err_a``: ``p0_fe / p0_hertz - 1`` (the solved peak against Hertz),
+  ``a_fe / a_hertz - 1``;
+* ``vm_max`` + ``vm_depth``, ``tau1_max`` + ``tau1_depth``: the largest value over the stress
+  windows of both bodies (subsurface) and its depth below that body's surface;
+* ``surf_sx_min``, ``surf_sx_max``, ``surf_sz_min``, ``surf_txz_absmax``: on the cam's contact
+  surface (z = 0), over the FE stress window or the Hertz surface field (Johnson 1985 §7.1,
+  seed 002 eqs. 5-7).
 
-On a row whose ``model`` is ``hertz`` every contact column is Hertz's (``p0_fe`` and ``a_fe``
-NaN, the stresses from the Hertz shape factors); on ``fe_arc``/``fe_exact`` rows they come from
-that solve. Why the peak and not the fit: near a curvature jump the pressure is no ellipse and
-the fit sits 0.5-1.5 % below the solved peak, which agrees with an independent exact-gap
-half-space solve to 0.2 % (docs/sweep.md, "Which column answers what").
+On a row whose ``model`` is ``hertz`` every contact column is Hertz's (``p0_fe``, ``p0_fit``
+and ``a_fe`` NaN, the stresses from the Hertz shape factors); on ``fe_arc``/``fe_exact`` rows
+they come from that solve. Why the peak and not the fit: near a curvature jump the pressure is
+no ellipse; over the junction scene's 21 exact-gap rows the peak agrees with an independent
+exact-gap half-space solve within 0.15 %, the fit is off by up to 1.5 % (docs/sweep.md, "Which
+column answers what").
 
 Real-cam columns (:mod:`femcam.sweep.realcam`): ``model`` (``hertz``, ``fe_arc``, ``fe_exact``:
 which model answered), ``est_err_arc_pct``/``est_err_hertz_pct`` (estimated p0 error of the
@@ -71,12 +65,11 @@ cheaper models), ``curvature_jump`` (1 inside a curvature jump's straddle span),
   element of the contact edge and exceeds the value the contact can carry there by more than the
   FE's surface error (:data:`femcam.sweep.headline.SURF_EDGE_TOL` p0): a value of the
   discretisation's edge singularity, not a result (:func:`femcam.sweep.headline.edge_flags`);
-* ``headline_omits_<what>`` -- the scene holds physics the headline contact model leaves out
-  (:func:`femcam.sweep.headline.omitted_physics`): ``coating``, ``case`` (a homogeneous body
-  answers), ``support`` (the solid roller answers; the ring's own contact is ``ring_p0_MPa``),
-  ``cam_bore`` (a solid cam answers; the cam disk is in ``cam_bore_*``), ``finite_length``
-  (the 2D mean load ``Fc / length`` answers; the most loaded slice is ``p_axial_peak_MPa``,
-  ``fe_slice_*``).
+* ``headline_omits_coating``, ``headline_solid_roller``, ``headline_solid_cam``,
+  ``headline_2d_mean_load`` -- the scene holds physics the headline contact model leaves out
+  (:func:`femcam.sweep.headline.omitted_physics`): a coating, a ring on a pin or needles (the
+  ring's own contact is ``ring_p0_MPa``), a cam on its shaft (``cam_bore_*``), a finite length
+  (the most loaded slice is ``p_axial_peak_MPa``, ``fe_slice_*``).
 
 Wear: ``wear_source`` says which pressure the ``wear_depth`` column used (``fe``, ``hertz`` or
 ``none``), see :mod:`femcam.sweep.wear`.
