@@ -58,7 +58,7 @@ def plot_p0(result, path) -> str:
     ax = axs[0, 0]
     ax.plot(deg, t["p0_hertz"] / 1e6, "-", color="C0", label="Hertz (Johnson eq. 4.45)")
     if fe:
-        ax.plot(deg, t["p0_fe"] / 1e6, ".", color="C3", ms=3, label="FE")
+        ax.plot(deg, t["p0_fe"] / 1e6, ".", color="C3", ms=3, label="FE (peak of the solved pressure)")
         axs[1, 0].plot(deg, 100 * t["err_p0"], "-", color="C3", lw=1)
         axs[1, 0].axhline(0, color="0.5", lw=0.5)
         axs[1, 0].set_ylabel("FE/Hertz - 1 (%)")
