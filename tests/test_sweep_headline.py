@@ -271,4 +271,5 @@ def test_cli_summary_says_what_the_headline_omits(tmp_path, capsys):
                  "--workers", "1"]) == 0
     printed = capsys.readouterr().out
     assert "headline_omits_coating: the roller's 2.5 um coating (E 170 GPa)" in printed
+    assert "layers: interface shear " in printed   # said even where no strength is given
     assert "(peak of the solved pressure)" in printed and "nan %" not in printed
