@@ -13,12 +13,13 @@ per row in ``flags``, never left silent:
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ..bodies.cam_rows import has_cam_bore
 from ..fe import ContactResult
 from ..halfspace.rows import has_finite_length
-from ..hertz.conformity import shape_factors
 from .providers import has_support
 
 #: FE surface error away from the contact edge, as a fraction of p0: the FE surface sx, sz, txz
@@ -53,17 +54,15 @@ def edge_flags(r: ContactResult) -> list[str]:
     if S is None or not S.sx.size or r.x.size < 2 or not r.a > 0:
         return []
     p0, h = float(r.p0_nodal), float(np.median(np.diff(r.x)))
-    # the surface extremes of the Hertz field do not depend on nu or the plane (seed 002 eqs.
-    # 5-7); the row's own values only reuse the cached shape factors of hertz_stress
-    m = r.model
-    k = shape_factors(float(r.mu), float(m.cam.nu) if m is not None else 0.3,
-                      m.plane if m is not None else "strain")
+    # Hertz surface field at full sliding (seed 002 eqs. 5-7): sx = -p0 (sqrt(1 - X^2) + 2 mu X)
+    # inside, so min sx = -p0 sqrt(1 + 4 mu^2); the tensile peak is 2 mu p0 at the trailing edge
+    sx_max, sx_min = 2.0 * r.mu * p0, -p0 * math.sqrt(1.0 + 4.0 * r.mu**2)
     q = float(np.max(np.abs(r.q))) if r.q is not None and np.size(r.q) else 0.0
     near = np.abs(np.abs(S.x - r.x0) - r.a) <= h
     tol = SURF_EDGE_TOL * p0
     out = []
-    for name, v, j, limit in (("surf_sx_max", S.sx, np.argmax(S.sx), k["surf_sx_max"] * p0),
-                              ("surf_sx_min", -S.sx, np.argmin(S.sx), -k["surf_sx_min"] * p0),
+    for name, v, j, limit in (("surf_sx_max", S.sx, np.argmax(S.sx), sx_max),
+                              ("surf_sx_min", -S.sx, np.argmin(S.sx), -sx_min),
                               ("surf_sz_min", -S.sz, np.argmin(S.sz), p0),
                               ("surf_txz_absmax", np.abs(S.txz), np.argmax(np.abs(S.txz)), q)):
         if near[j] and v[j] > limit + tol:
