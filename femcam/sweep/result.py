@@ -312,7 +312,7 @@ def hertz_check_text(s: dict) -> str:
     Returns
     -------
     str
-        E.g. ``"max |p0_fe/p0_hertz - 1| 0.137 % over 344 arc-gap rows; 16 exact-gap rows: no
+        E.g. ``"max |p0_fe/p0_hertz - 1| 0.136 % over 344 arc-gap rows; 16 exact-gap rows: no
         Hertz reference (curvature jump)"``.
     """
     parts = []
