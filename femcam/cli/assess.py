@@ -53,8 +53,8 @@ def _sweep_table(path):
     if not f.is_file():
         raise InputError(f"--sweep = {path}: no sweep.npz there (run femcam sweep SCENE --out {path} first)")
     with np.load(f, allow_pickle=False) as z:
-        return {k: np.asarray(z[k]) for k in ("theta", "a_fe", "p0_fe", "tau1_max", "txz_absmax")
-                if k in z.files}
+        return {k.removeprefix("surf_"): np.asarray(z[k])
+                for k in ("theta", "a_fe", "p0_fe", "tau1_max", "surf_txz_absmax") if k in z.files}
 
 
 def _write_csv(path, cols: dict, header: list[str]) -> None:

@@ -181,13 +181,13 @@ def shape_factors(mu: float, nu: float, plane: str) -> dict:
     Returns
     -------
     dict
-        ``von_mises`` and ``tau1``: ``(value / p0, depth / a)``; ``sx_min``, ``sx_max``,
-        ``sz_min``, ``txz_absmax``: surface extremes / p0.
+        ``von_mises`` and ``tau1``: ``(value / p0, depth / a)``; ``surf_sx_min``,
+        ``surf_sx_max``, ``surf_sz_min``, ``surf_txz_absmax``: surface (z = 0) extremes / p0.
     """
     vm = max_von_mises(mu, nu, plane)
     t1 = max_shear(mu)
     xs = np.linspace(-3.0, 3.0, 60001)
     sx, sz, txz = surface_stress(xs, 1.0, 1.0, mu)
     return {"von_mises": (vm.value, vm.z), "tau1": (t1.value, t1.z),
-            "sx_min": float(np.min(sx)), "sx_max": float(np.max(sx)),
-            "sz_min": float(np.min(sz)), "txz_absmax": float(np.max(np.abs(txz)))}
+            "surf_sx_min": float(np.min(sx)), "surf_sx_max": float(np.max(sx)),
+            "surf_sz_min": float(np.min(sz)), "surf_txz_absmax": float(np.max(np.abs(txz)))}

@@ -167,7 +167,7 @@ class ModelCache:
             with self._lock:  # gmsh is not thread-safe; one load case: no stress operators
                 fresh = build_model(cp, rho, a, options, SolverOptions(stress_operators="per_solve"))
             p0 = fresh.solve(F=F, rho=rho, mu=cp.mu, sliding=sliding, check=False, Q=Q,
-                             rolling=rolling if Q is not None else 0).p0
+                             rolling=rolling if Q is not None else 0).p0_nodal
         except (FemcamError, ValueError, ArithmeticError):
             return math.nan
         with self._lock:

@@ -27,8 +27,9 @@ Finite length (the axial slices of :mod:`femcam.halfspace.strip`):
 
 * the 2D FE answers again at the most loaded slice with that slice's load per unit length
   (method fe): ``F = w_max * length``, columns ``fe_slice_F_N``, ``fe_slice_a_um``,
-  ``fe_slice_p0_MPa``, ``fe_slice_vm_max_MPa``, ``fe_slice_tau1_max_MPa``,
-  ``fe_slice_txz_absmax_MPa`` and the text column ``fe_load_basis = "w_max*length"``; the sweep's
+  ``fe_slice_p0_MPa`` (the peak of the solved pressure), ``fe_slice_vm_max_MPa``,
+  ``fe_slice_tau1_max_MPa``, ``fe_slice_surf_txz_absmax_MPa`` and the text column
+  ``fe_load_basis = "w_max*length"``; the sweep's
   own FE columns (``a_fe``, ``p0_fe``, ``vm_max``, ...) stay at the mean load ``Fc / length``,
   comparable with Hertz (``err_a``, ``err_p0``);
 * the wear column uses the axial peak: the Archard per-pass depth ``k w v_slip / V_cam`` depends
@@ -62,6 +63,7 @@ from ..halfspace.rows import has_finite_length
 from ..io import write_pvd
 from ..viz.extras import plot_extra_panels
 from ..wear.coating import coating_wear
+from .headline import omitted_physics
 from .providers import (
     ASSESS,
     ASSESS_PANELS,
@@ -282,7 +284,8 @@ def extras_files(scene, table, out, vtk_mask) -> dict[str, str]:
 def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
     """Which providers ran and their summary over the swept angles (JSON-able).
 
-    ``providers``: names; ``columns``: the SI names of their columns; ``errors``: the refusals;
+    ``providers``: names; ``headline``: what the headline model omits (:func:`omitted_physics`,
+    one sentence each); ``columns``: the SI names of their columns; ``errors``: the refusals;
     ``assess``: the worst angle per criterion (:func:`femcam.assess.worst_angles`:
     ``{criterion: {"value", "theta_deg"}}``);
     ``halfspace``: largest axial peak (MPa) and the FE load basis; ``bodies``: largest bore hoop
@@ -310,6 +313,9 @@ def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
     """
     ps = providers_for(scene)
     out = {"providers": [p.name for p in ps]}
+    omitted = omitted_physics(scene)
+    if omitted:
+        out["headline"] = [sentence for _, sentence in omitted]
     if not ps:
         return out
     cols, text = extra_columns(scene)

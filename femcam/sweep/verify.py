@@ -383,7 +383,7 @@ def _scan_family(cache, model, cp, rec, rows, a, kap, F, rho, traction=None) -> 
         t_solves.append(r.timings.get("contact", np.nan) + r.timings.get("recovery", 0.0))
         rec.n_scanned += 1
         if np.isfinite(r.hertz_p0) and r.hertz_p0 > 0:
-            e_h[j] = r.p0 / r.hertz_p0 - 1.0
+            e_h[j] = r.p0_nodal / r.hertz_p0 - 1.0
     rec.solve_time = float(np.nanmedian(t_solves)) if t_solves else float("nan")
     return e_h, failed
 
@@ -426,4 +426,4 @@ def _reuse_error(cache, model, cp, options, F, rho, a, same: bool, load=(None, N
     if same:
         return 0.0
     p0_fresh = cache.fresh_p0(cp, rho, a, options, F, load)
-    return float(r.p0 / p0_fresh - 1.0) if math.isfinite(p0_fresh) else math.nan
+    return float(r.p0_nodal / p0_fresh - 1.0) if math.isfinite(p0_fresh) else math.nan

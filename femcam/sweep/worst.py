@@ -24,7 +24,8 @@ ITEMS = {
                                   ("ring_needle_Q_on", "worst needle load", "N", 1.0, "max"))),
     "cam_disk": ("cam disk", (("camdisk_hoop_max", "bore hoop stress", "MPa", 1e-6, "max"),
                               ("camdisk_shaft_p0", "shaft pressure", "MPa", 1e-6, "max"))),
-    "layers": ("layers", (("layer_interface_utilisation", "interface utilisation", "", 1.0, "max"),
+    "layers": ("layers", (("layer_interface_tau_max", "interface shear", "MPa", 1e-6, "max"),
+                          ("layer_interface_utilisation", "interface utilisation", "", 1.0, "max"),
                           ("layer_case_margin", "smallest case margin", "", 1.0, "min"))),
 }
 
