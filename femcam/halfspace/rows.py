@@ -1,8 +1,8 @@
 r"""Finite-length contact over cam angles: the columns the sweep writes.
 
 :func:`finite_length_rows` solves the half-space strip (:mod:`femcam.halfspace.strip`) at each
-cam angle of a scene, reusing the kernel FFTs across angles and warm-starting the conjugate
-gradients from the previous angle's pressure, and returns one SI array per column
+cam angle of a scene, reusing the kernel FFTs across angles and (unless ``warm=False``)
+warm-starting the conjugate gradients from the previous angle's pressure, and returns one SI array per column
 (:data:`COLUMNS` gives the CSV name with its unit and the factor from SI).
 
 The relative radius in the rolling direction is ``1/R = 1/rho + 1/Rr`` (Johnson 1985 eq. 4.44;
@@ -85,7 +85,7 @@ def strip_for_scene(scene, *, nx: int = 64, ny: int = 128, tol: float = 1e-5) ->
 
 
 def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float = 1e-5,
-                       strip: FiniteLengthContact | None = None) -> dict:
+                       strip: FiniteLengthContact | None = None, warm: bool = True) -> dict:
     """Finite-length contact at cam angles ``theta`` (rad) of a roller ``scene``.
 
     Parameters
@@ -101,6 +101,11 @@ def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float 
         ``strip`` is given.
     strip : FiniteLengthContact, optional
         A strip built beforehand (e.g. by :func:`strip_for_scene`) to reuse its kernel FFTs.
+    warm : bool, optional
+        Start the conjugate gradients of each angle from the previous angle's pressure (about
+        half the iterations); False starts every angle cold, so each row depends on its own
+        angle alone (bit-identical whatever other angles are solved with it; the sweep uses
+        this). Warm and cold rows differ within the solver tolerance (a few ``tol`` relative).
 
     Returns
     -------
@@ -133,7 +138,7 @@ def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float 
             flags.append(("no_contact",) if not F > 0.0 else ("non_hertzian",))
             continue
         r = fl.solve(F, R, p_start=p_prev)
-        p_prev = r.p
+        p_prev = r.p if warm else None
         p0 = math.sqrt(F / fl.L * fl.E_star / (math.pi * R))
         for k, v in (("p_axial_peak", r.p_max), ("y_peak", r.y_peak), ("L_eff", r.L_eff),
                      ("w_max", r.w_max), ("y_wmax", r.y_wmax), ("y_centre", r.y_centre),
