@@ -41,7 +41,9 @@ Finite length (the axial slices of :mod:`femcam.halfspace.strip`):
 
 A provider that the physics refuses for a documented reason (a :class:`~femcam.errors.FemcamError`)
 leaves its columns NaN and writes the reason in the text column ``extras_error``; it never stops
-the contact sweep. Models are built once per process (the ring model does not pickle; its rows
+the contact sweep, but the part the scene asked for is missing: :func:`refusals` names it
+(``provenance["extras"]["refused"]``, ``SweepResult.refused``), ``report.md`` and the CLI say it
+and ``femcam sweep`` exits 1. Models are built once per process (the ring model does not pickle; its rows
 do): ``femcam.sweep.providers.ring_model`` and ``strip_model``, keyed by the scene's ``repr``.
 """
 
@@ -114,6 +116,8 @@ class Provider:
         Plots against cam angle (:func:`femcam.viz.extras.plot_extra_panels`).
     title : str, optional
         What the plot shows (its title after the scene name; default: ``name``).
+    keys : str, optional
+        The scene keys that ask for the provider: what a refusal tells the user to change.
     """
 
     name: str
@@ -123,19 +127,28 @@ class Provider:
     compute: Callable
     panels: tuple = ()
     title: str = ""
+    keys: str = ""
 
 
 #: the table, in the order the providers run (halfspace before assess: the axial peak)
 PROVIDERS: tuple[Provider, ...] = (
     Provider("halfspace", has_finite_length, HALFSPACE, ("hs_flags", "fe_load_basis"),
              halfspace_chunk, HS_PANELS,
-             "finite-length contact along the roller:\naxial peak pressure and most loaded slice"),
+             "finite-length contact along the roller:\naxial peak pressure and most loaded slice",
+             keys="[follower] crown, crown_*, edge_radius_mm, misalignment_deg, roller_width_mm; "
+                  "[cam] face_width_mm"),
     Provider("assess", lambda s: "lubricant" in (getattr(s, "tribology", None) or {}), ASSESS,
-             ASSESS_TEXT, assess_chunk, ASSESS_PANELS),
-    Provider("bodies", has_support, RING, (), ring_chunk, RING_PANELS),
-    Provider("cam_disk", has_cam_bore, CAM_DISK, ("camdisk_flags",), cam_disk_chunk, CAM_DISK_PANELS),
-    Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), layers_chunk, LAYER_PANELS),
-    Provider("coating_wear", coated_cam, (), (), coating_wear_chunk),
+             ASSESS_TEXT, assess_chunk, ASSESS_PANELS,
+             keys="[lubricant], [surface] and the materials' strength keys"),
+    Provider("bodies", has_support, RING, (), ring_chunk, RING_PANELS,
+             keys="[follower] roller_support, roller_bore_mm, pin_radius_mm, pin_clearance_um, "
+                  "needle_count, needle_radius_mm"),
+    Provider("cam_disk", has_cam_bore, CAM_DISK, ("camdisk_flags",), cam_disk_chunk, CAM_DISK_PANELS,
+             keys="[cam] bore_mm, shaft_fit, shaft_clearance_um"),
+    Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), layers_chunk, LAYER_PANELS,
+             keys="[materials.<body>.coating] and [materials.<body>.case]"),
+    Provider("coating_wear", coated_cam, (), (), coating_wear_chunk,
+             keys="[materials.cam.coating] wear keys"),
 )
 
 
@@ -245,6 +258,49 @@ def fill_extras(task, rows) -> None:
     rows[ERROR_COLUMN] = np.full(n, " | ".join(errors), dtype=object)
 
 
+def refusals(scene, table) -> list[dict]:
+    """The providers refused at run time (:data:`ERROR_COLUMN`), one record per provider: a
+    part the scene asks for that answered nothing at some angles.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept (the providers' scene keys).
+    table : Mapping[str, ndarray]
+        The sweep table (``extras_error`` per row).
+
+    Returns
+    -------
+    list of dict
+        ``{"part", "reason", "angles", "keys", "line"}`` per refused provider, in run order:
+        ``reason`` the first refusal's ``"<error>: <message>"`` (with how many other reasons the
+        column holds), ``angles`` the number of rows refused, ``keys`` the scene keys that ask
+        for the part, ``line`` one sentence naming all of it (CLI, ``report.md``).
+    """
+    cells = np.asarray(table.get(ERROR_COLUMN, [])).astype(str)
+    reasons: dict[str, list[str]] = {}
+    rows: dict[str, int] = {}
+    for cell in cells:
+        parts = set()
+        for e in (cell.split(" | ") if cell else ()):
+            part, _, reason = e.partition(": ")
+            if reason not in reasons.setdefault(part, []):
+                reasons[part].append(reason)
+            parts.add(part)
+        for part in parts:
+            rows[part] = rows.get(part, 0) + 1
+    keys = {p.name: p.keys for p in PROVIDERS}
+    out = []
+    for part in [p.name for p in PROVIDERS if p.name in reasons] + [q for q in reasons if q not in keys]:
+        first, n = reasons[part], rows[part]
+        reason = first[0] + (f" (and {len(first) - 1} other reason(s) in {ERROR_COLUMN})"
+                             if len(first) > 1 else "")
+        line = (f"{part} refused at {n} of {cells.size} angle(s), its columns are NaN there: {reason}"
+                + (f"; change the scene keys {keys[part]}" if keys.get(part) else ""))
+        out.append({"part": part, "reason": reason, "angles": n, "keys": keys.get(part, ""), "line": line})
+    return out
+
+
 def _peak(table, name, ok, how=np.nanmax):
     v = np.where(ok, np.asarray(table[name], float), np.nan)
     return float(how(v)) if np.any(np.isfinite(v)) else float("nan")
@@ -283,6 +339,7 @@ def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
     """Which providers ran and their summary over the swept angles (JSON-able).
 
     ``providers``: names; ``columns``: the SI names of their columns; ``errors``: the refusals;
+    ``refused``: the same, one record per provider (:func:`refusals`);
     ``assess``: the worst angle per criterion (:func:`femcam.assess.worst_angles`:
     ``{criterion: {"value", "theta_deg"}}``);
     ``halfspace``: largest axial peak (MPa) and the FE load basis; ``bodies``: largest bore hoop
@@ -317,6 +374,7 @@ def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
     errs = sorted({e for e in np.asarray(table.get(ERROR_COLUMN, [])).astype(str) if e})
     if errs:
         out["errors"] = errs
+        out["refused"] = refusals(scene, table)
     ok = np.asarray(table["status"]).astype(str) == "ok"
     names = [p.name for p in ps]
     if "assess" in names:
