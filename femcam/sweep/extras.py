@@ -41,7 +41,7 @@ Finite length (the axial slices of :mod:`femcam.halfspace.strip`):
 
 A provider that the physics refuses for a documented reason (a :class:`~femcam.errors.FemcamError`)
 leaves its columns NaN and writes the reason in the text column ``extras_error``; it never stops
-the contact sweep, but the part the scene asked for is missing: :func:`refusals` names it
+the contact sweep, but the part the scene asked for is missing: :func:`femcam.sweep.worst.refusals` names it
 (``provenance["extras"]["refused"]``, ``SweepResult.refused``), ``report.md`` and the CLI say it
 and ``femcam sweep`` exits 1. Models are built once per process (the ring model does not pickle; its rows
 do): ``femcam.sweep.providers.ring_model`` and ``strip_model``, keyed by the scene's ``repr``.
@@ -89,7 +89,7 @@ from .providers import (
     layers_chunk,
     ring_chunk,
 )
-from .worst import worst_lines
+from .worst import refusals, worst_lines
 
 Column = tuple[str, str, float]
 #: text column of every sweep with providers: ``"<provider>: <reason>"`` where one was refused
@@ -258,49 +258,6 @@ def fill_extras(task, rows) -> None:
     rows[ERROR_COLUMN] = np.full(n, " | ".join(errors), dtype=object)
 
 
-def refusals(scene, table) -> list[dict]:
-    """The providers refused at run time (:data:`ERROR_COLUMN`), one record per provider: a
-    part the scene asks for that answered nothing at some angles.
-
-    Parameters
-    ----------
-    scene : femcam.scene.Scene
-        The scene swept (the providers' scene keys).
-    table : Mapping[str, ndarray]
-        The sweep table (``extras_error`` per row).
-
-    Returns
-    -------
-    list of dict
-        ``{"part", "reason", "angles", "keys", "line"}`` per refused provider, in run order:
-        ``reason`` the first refusal's ``"<error>: <message>"`` (with how many other reasons the
-        column holds), ``angles`` the number of rows refused, ``keys`` the scene keys that ask
-        for the part, ``line`` one sentence naming all of it (CLI, ``report.md``).
-    """
-    cells = np.asarray(table.get(ERROR_COLUMN, [])).astype(str)
-    reasons: dict[str, list[str]] = {}
-    rows: dict[str, int] = {}
-    for cell in cells:
-        parts = set()
-        for e in (cell.split(" | ") if cell else ()):
-            part, _, reason = e.partition(": ")
-            if reason not in reasons.setdefault(part, []):
-                reasons[part].append(reason)
-            parts.add(part)
-        for part in parts:
-            rows[part] = rows.get(part, 0) + 1
-    keys = {p.name: p.keys for p in PROVIDERS}
-    out = []
-    for part in [p.name for p in PROVIDERS if p.name in reasons] + [q for q in reasons if q not in keys]:
-        first, n = reasons[part], rows[part]
-        reason = first[0] + (f" (and {len(first) - 1} other reason(s) in {ERROR_COLUMN})"
-                             if len(first) > 1 else "")
-        line = (f"{part} refused at {n} of {cells.size} angle(s), its columns are NaN there: {reason}"
-                + (f"; change the scene keys {keys[part]}" if keys.get(part) else ""))
-        out.append({"part": part, "reason": reason, "angles": n, "keys": keys.get(part, ""), "line": line})
-    return out
-
-
 def _peak(table, name, ok, how=np.nanmax):
     v = np.where(ok, np.asarray(table[name], float), np.nan)
     return float(how(v)) if np.any(np.isfinite(v)) else float("nan")
@@ -339,7 +296,7 @@ def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
     """Which providers ran and their summary over the swept angles (JSON-able).
 
     ``providers``: names; ``columns``: the SI names of their columns; ``errors``: the refusals;
-    ``refused``: the same, one record per provider (:func:`refusals`);
+    ``refused``: the same, one record per provider (:func:`femcam.sweep.worst.refusals`);
     ``assess``: the worst angle per criterion (:func:`femcam.assess.worst_angles`:
     ``{criterion: {"value", "theta_deg"}}``);
     ``halfspace``: largest axial peak (MPa) and the FE load basis; ``bodies``: largest bore hoop
@@ -374,7 +331,7 @@ def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
     errs = sorted({e for e in np.asarray(table.get(ERROR_COLUMN, [])).astype(str) if e})
     if errs:
         out["errors"] = errs
-        out["refused"] = refusals(scene, table)
+        out["refused"] = refusals(table, {p.name: p.keys for p in PROVIDERS}, ERROR_COLUMN)
     ok = np.asarray(table["status"]).astype(str) == "ok"
     names = [p.name for p in ps]
     if "assess" in names:
