@@ -55,7 +55,8 @@ def test_the_same_physics_written_differently_is_accepted(tmp_path, swept, capsy
     first = next(i for i, ln in enumerate(lines) if ln.startswith("["))
     body = "\n".join(lines[first:]).replace(" = ", "   =   ")             # layout changed
     same = tmp_path / "same.toml"
-    same.write_text('name = "renamed"\ndescription = "other words"\n\n[fe]\na_over_h = 14.0\n\n' + body + "\n")
+    head = 'name = "renamed"\ndescription = "other words"\n\n[fe]\na_over_h = 14.0\n\n'   # free text, study
+    same.write_text(head + body + "\n")
     assert physics_hash(load_scene(same)) == physics_hash(load_scene(EXAMPLE))
     t = sweep_table(swept, load_scene(same))
     np.testing.assert_array_equal(t["theta"], np.radians([0.0, 90.0]))
