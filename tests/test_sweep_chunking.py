@@ -3,7 +3,8 @@
 
 Reference: the same angles swept with a different ``chunk_size``. Every per-angle model is chosen
 from the angle's own load case (layer models by :func:`femcam.layers.from_scene.model_grading`,
-the half-space strip from a cold start at each angle), so the rows must be bit-identical: the
+the half-space strip warm-started from the cold solution at the angle's anchor,
+:data:`femcam.halfspace.rows.ANCHOR_STEP`), so the rows must be bit-identical: the
 comparison is exact (``equal_nan``), without a tolerance. The timing columns are left out
 (wall clock).
 """
