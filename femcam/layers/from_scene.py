@@ -69,7 +69,10 @@ def scene_layers(scene) -> dict:
 A_BIN = math.log(1.25)
 K_BIN = 0.25
 _MODELS: dict = {}
-_MODELS_MAX = 24   # coated models kept per process (a revolution needs a handful of bins)
+#: models kept per process, least recently used dropped first: a coated model at a/h = 20 holds
+#: ~190 MB (mesh, factorisation, stress operators); a call solves its angles bin by bin, so it
+#: builds each bin's model once, and a rebuilt model is the same model (the rows do not change)
+_MODELS_MAX = 2
 _LOCK = threading.Lock()
 
 
@@ -109,6 +112,7 @@ def _build(scene, lay, rho_ref, a_ref, a_over_h):
     key = (repr(scene), rho_ref, a_ref, a_over_h)
     with _LOCK:
         if key in _MODELS:
+            _MODELS[key] = _MODELS.pop(key)   # most recently used last
             return _MODELS[key]
     mesh = MeshOptions(a_over_h=a_over_h)
     solver = SolverOptions()
@@ -128,16 +132,10 @@ def _build(scene, lay, rho_ref, a_ref, a_over_h):
     return model
 
 
-def _model_for(scene, lay, F, rho, a_over_h):
-    """The binned model of the load case ``(F, rho)`` (:func:`model_grading`), or one graded
-    for the case itself where the bin's model does not cover it."""
-    hc = LineContact(F=F, length=scene.length, R1=rho, R2=scene.follower.Rr, cam=scene.cam,
-                     roller=scene.roller, plane=scene.plane)
-    a = float(hc.a)
-    model = _build(scene, lay, *model_grading(a, rho, scene.follower.Rr), a_over_h)
-    if model.covers(F, rho):
-        return model
-    return _build(scene, lay, rho, a, a_over_h)
+def _hertz_a(scene, F, rho) -> float:
+    """Hertz half-width [m] of the scene's contact at ``(F, rho)``."""
+    return float(LineContact(F=F, length=scene.length, R1=rho, R2=scene.follower.Rr, cam=scene.cam,
+                             roller=scene.roller, plane=scene.plane).a)
 
 
 def scene_layer_rows(scene, theta, *, a_over_h: float = 10.0) -> dict:
@@ -176,13 +174,20 @@ def scene_layer_rows(scene, theta, *, a_over_h: float = 10.0) -> dict:
     theta = _validate.finite_array("theta", theta, "rad").ravel()
     st = scene.analyse(theta)
     sliding = -1 if scene.sliding == "-x" else 1
-    rows, used = None, set()
+    cases = []   # (grading, j, F, rho, a) of the angles in contact, solved bin by bin
     for j in range(theta.size):
         F, rho = float(st.Fc[j]), float(st.rho[j])
-        if st.liftoff[j] or F <= 0:
-            continue
-        model = _model_for(scene, lay, F, rho, a_over_h)
-        used.add(id(model))
+        if not (st.liftoff[j] or F <= 0):
+            a = _hertz_a(scene, F, rho)
+            cases.append((model_grading(a, rho, scene.follower.Rr), j, F, rho, a))
+    rows, used = None, set()
+    for grading, j, F, rho, a in sorted(cases, key=lambda c: (c[0], c[1])):
+        key = grading
+        model = _build(scene, lay, *key, a_over_h)
+        if not model.covers(F, rho):   # the bin's model does not cover it: one of its own
+            key = (rho, a)
+            model = _build(scene, lay, *key, a_over_h)
+        used.add(key)
         r = layer_rows(model, [F], [rho], [scene.mu], sliding=sliding,
                        coating=lay["coating"][1] if lay["coating"] else None,
                        coat_body=lay["coating"][0] if lay["coating"] else "roller",
