@@ -108,7 +108,7 @@ def model_grading(a: float, rho: float, Rr: float) -> tuple[float, float]:
 
 
 def _build(scene, lay, rho_ref, a_ref, a_over_h):
-    """The layer model graded for ``(rho_ref, a_ref)``, built once per process."""
+    """The layer model graded for ``(rho_ref, a_ref)`` (the last :data:`_MODELS_MAX` kept per process)."""
     key = (repr(scene), rho_ref, a_ref, a_over_h)
     with _LOCK:
         if key in _MODELS:
