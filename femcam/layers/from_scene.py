@@ -141,8 +141,8 @@ def _hertz_a(scene, F, rho) -> float:
 def scene_layer_rows(scene, theta, *, a_over_h: float = 10.0) -> dict:
     """Layer checks of ``scene`` at cam angles ``theta`` (rad): ``theta_deg``, ``F_N``,
     ``rho_mm``, ``models`` (models built) and the :func:`~femcam.layers.layer_rows` columns.
-    Each angle is solved with the model of its load case's bin (:func:`model_grading`; built once
-    per process), or one of its own where that model does not cover it, so an angle's row does
+    Each angle is solved with the model of its load case's bin (:func:`model_grading`; the last
+    two models kept per process), or one of its own where that model does not cover it, so an angle's row does
     not depend on the other angles of the call; lift-off angles are NaN rows. Roller followers
     only.
 

@@ -98,7 +98,7 @@ class SweepResult:
     @property
     def refused(self) -> tuple[tuple[str, str], ...]:
         """The parts the scene asks for that were refused at run time (an extra column
-        provider, :func:`femcam.sweep.extras.refusals`): ``(part, reason)`` each, empty when
+        provider, :func:`femcam.sweep.worst.refusals`): ``(part, reason)`` each, empty when
         every part answered. A sweep with a refusal is not a complete answer to its scene
         (``femcam sweep`` exits 1)."""
         return tuple((r["part"], r["reason"]) for r in self.provenance.get("extras", {}).get("refused", ()))
