@@ -88,3 +88,23 @@ def test_a_sweep_whose_parts_all_answer_refuses_nothing(tmp_path, capsys):
     err = capsys.readouterr().err
     assert rc == 0 and "refused" not in err
     assert SweepResult.load(tmp_path / "out").refused == ()
+
+
+def test_every_provider_names_the_scene_keys_that_ask_for_it():
+    # generated from the provider table, so a provider added later is covered: a refusal line
+    # must name the part, count its rows, keep the first reason and say which scene keys to change
+    from femcam.sweep.extras import ERROR_COLUMN, PROVIDERS
+    from femcam.sweep.worst import refusals
+
+    keys = {p.name: p.keys for p in PROVIDERS}
+    for p in PROVIDERS:
+        assert p.keys, f"provider {p.name} does not say which scene keys ask for it"
+        table = {ERROR_COLUMN: np.array([f"{p.name}: InputError: x = 1 m: bad", "",
+                                         f"{p.name}: InputError: x = 2 m: bad | other: E: y"])}
+        got = refusals(table, keys)
+        assert [r["part"] for r in got] == [p.name, "other"]
+        r = got[0]
+        assert r["angles"] == 2 and r["reason"].startswith("InputError: x = 1 m: bad")
+        assert "1 other reason(s)" in r["reason"]
+        assert r["line"] == (f"{p.name} refused at 2 of 3 angle(s), its columns are NaN there: "
+                             f"{r['reason']}; change the scene keys {p.keys}")
