@@ -84,3 +84,15 @@ def test_model_grading_depends_on_the_load_case_only():
         k = 0.0 if math.isinf(rho) else Rr / rho
         assert abs(k - Rr / rho_ref) <= 0.125 + 1e-12
         assert model_grading(a * 1.0000001, rho, Rr) == (rho_ref, a_ref)
+
+
+@pytest.mark.slow
+def test_fe_sweep_of_the_crowned_roller_does_not_depend_on_chunk_size():
+    # method fe: the FE contact (families planned over the whole angle list) and the 2D FE at the
+    # most loaded slice, whose load comes from the half-space rows
+    scene = load_scene(EX + "seed002_crowned.toml")
+    th = np.radians([0.0, 50.0, 130.0])
+    t = [sweep(scene, angles=th, method="fe", chunk_size=c, workers=1, plots=False, vtk_every=0).table
+         for c in (1, 3)]
+    assert np.all(np.isfinite(np.asarray(t[0]["hs_fe_p0"], float)))
+    _assert_identical(t[0], t[1], [c for c in t[0] if c not in TIMING])
