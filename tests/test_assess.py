@@ -1,6 +1,7 @@
 """femcam.assess and `femcam assess`: the seed 002 assessment against hand calculations written in
 the test, the flat-faced film collapse, knife-edge, huge loads, FE input and bad input."""
 
+import json
 import math
 import re
 
@@ -11,6 +12,7 @@ from femcam.assess import assess, assess_rows
 from femcam.cli import main
 from femcam.errors import InputError, SceneError
 from femcam.scene import load_scene
+from femcam.scene.digest import physics_parts
 
 EXAMPLE = "examples/seed002_assess.toml"
 OMEGA = 20 * math.pi                         # 600 rpm
@@ -274,7 +276,9 @@ def test_cli_assess_from_a_sweep_npz_and_bad_angles(tmp_path, capsys):
     h = assess_rows(sc, theta)
     sw = tmp_path / "sw"
     sw.mkdir()
-    np.savez(sw / "sweep.npz", theta=theta, a_fe=h["a"] * 1.01, p0_fe=h["p0"] / 1.01)
+    prov = {"scene_physics_parts": physics_parts(sc)}   # the scene the sweep records (its check)
+    np.savez(sw / "sweep.npz", theta=theta, a_fe=h["a"] * 1.01, p0_fe=h["p0"] / 1.01,
+             provenance_json=np.array(json.dumps(prov)))
     out = tmp_path / "o"
     assert main(["assess", EXAMPLE, "--out", str(out), "--sweep", str(sw), "--no-plots"]) == 0
     data = np.genfromtxt(out / "assessment.csv", delimiter=",", names=True, comments="#", dtype=None,

@@ -235,6 +235,20 @@ def _run(args) -> int:
         print(f"{nl}femcam sweep: {exc or 'interrupted'}", file=sys.stderr)
         return 130
     _print_summary(res)
+    return _refusal_code(res)
+
+
+def _refusal_code(res) -> int:
+    """1 (one line per refused part on stderr) when a part the scene asks for was refused at
+    run time (``SweepResult.refused``), else 0; everything computed is written either way."""
+    refused = res.summary().get("extras", {}).get("refused", ())
+    for r in refused:
+        print(f"femcam sweep: refused: {r['line']}", file=sys.stderr)
+    if refused:
+        where = f" to {res.paths['csv']}" if res.paths.get("csv") else ""
+        print(f"femcam sweep: error: {len(refused)} part(s) the scene asks for were refused (exit 1); "
+              f"everything computed is written{where}", file=sys.stderr)
+        return 1
     return 0
 
 

@@ -42,7 +42,9 @@ Finite length (the axial slices of :mod:`femcam.halfspace.strip`):
 
 A provider that the physics refuses for a documented reason (a :class:`~femcam.errors.FemcamError`)
 leaves its columns NaN and writes the reason in the text column ``extras_error``; it never stops
-the contact sweep. Models are built once per process (the ring model does not pickle; its rows
+the contact sweep, but the part the scene asked for is missing: :func:`femcam.sweep.worst.refusals` names it
+(``provenance["extras"]["refused"]``, ``SweepResult.refused``), ``report.md`` and the CLI say it
+and ``femcam sweep`` exits 1. Models are built once per process (the ring model does not pickle; its rows
 do): ``femcam.sweep.providers.ring_model`` and ``strip_model``, keyed by the scene's ``repr``.
 """
 
@@ -89,7 +91,7 @@ from .providers import (
     layers_chunk,
     ring_chunk,
 )
-from .worst import worst_lines
+from .worst import refusals, worst_lines
 
 Column = tuple[str, str, float]
 #: text column of every sweep with providers: ``"<provider>: <reason>"`` where one was refused
@@ -116,6 +118,8 @@ class Provider:
         Plots against cam angle (:func:`femcam.viz.extras.plot_extra_panels`).
     title : str, optional
         What the plot shows (its title after the scene name; default: ``name``).
+    keys : str, optional
+        The scene keys that ask for the provider: what a refusal tells the user to change.
     """
 
     name: str
@@ -125,19 +129,28 @@ class Provider:
     compute: Callable
     panels: tuple = ()
     title: str = ""
+    keys: str = ""
 
 
 #: the table, in the order the providers run (halfspace before assess: the axial peak)
 PROVIDERS: tuple[Provider, ...] = (
     Provider("halfspace", has_finite_length, HALFSPACE, ("hs_flags", "fe_load_basis"),
              halfspace_chunk, HS_PANELS,
-             "finite-length contact along the roller:\naxial peak pressure and most loaded slice"),
+             "finite-length contact along the roller:\naxial peak pressure and most loaded slice",
+             keys="[follower] crown, crown_*, edge_radius_mm, misalignment_deg, roller_width_mm; "
+                  "[cam] face_width_mm"),
     Provider("assess", lambda s: "lubricant" in (getattr(s, "tribology", None) or {}), ASSESS,
-             ASSESS_TEXT, assess_chunk, ASSESS_PANELS),
-    Provider("bodies", has_support, RING, (), ring_chunk, RING_PANELS),
-    Provider("cam_disk", has_cam_bore, CAM_DISK, ("camdisk_flags",), cam_disk_chunk, CAM_DISK_PANELS),
-    Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), layers_chunk, LAYER_PANELS),
-    Provider("coating_wear", coated_cam, (), (), coating_wear_chunk),
+             ASSESS_TEXT, assess_chunk, ASSESS_PANELS,
+             keys="[lubricant], [surface] and the materials' strength keys"),
+    Provider("bodies", has_support, RING, (), ring_chunk, RING_PANELS,
+             keys="[follower] roller_support, roller_bore_mm, pin_radius_mm, pin_clearance_um, "
+                  "needle_count, needle_radius_mm"),
+    Provider("cam_disk", has_cam_bore, CAM_DISK, ("camdisk_flags",), cam_disk_chunk, CAM_DISK_PANELS,
+             keys="[cam] bore_mm, shaft_fit, shaft_clearance_um"),
+    Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), layers_chunk, LAYER_PANELS,
+             keys="[materials.<body>.coating] and [materials.<body>.case]"),
+    Provider("coating_wear", coated_cam, (), (), coating_wear_chunk,
+             keys="[materials.cam.coating] wear keys"),
 )
 
 
@@ -286,6 +299,7 @@ def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
 
     ``providers``: names; ``headline``: what the headline model omits (:func:`omitted_physics`,
     one sentence each); ``columns``: the SI names of their columns; ``errors``: the refusals;
+    ``refused``: the same, one record per provider (:func:`femcam.sweep.worst.refusals`);
     ``assess``: the worst angle per criterion (:func:`femcam.assess.worst_angles`:
     ``{criterion: {"value", "theta_deg"}}``);
     ``halfspace``: largest axial peak (MPa) and the FE load basis; ``bodies``: largest bore hoop
@@ -323,6 +337,7 @@ def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
     errs = sorted({e for e in np.asarray(table.get(ERROR_COLUMN, [])).astype(str) if e})
     if errs:
         out["errors"] = errs
+        out["refused"] = refusals(table, {p.name: p.keys for p in PROVIDERS}, ERROR_COLUMN)
     ok = np.asarray(table["status"]).astype(str) == "ok"
     names = [p.name for p in ps]
     if "assess" in names:

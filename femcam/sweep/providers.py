@@ -220,12 +220,12 @@ def _solve_slice(task, cp, cache, i: int, F: float, rho: float):
 
 
 def halfspace_rows(scene, theta) -> dict:
-    """The half-space columns at ``theta`` (rad, one sweep chunk): the chunk's angles in order,
-    the first from a cold start and each next one warm-started from the previous angle's
-    pressure (:func:`femcam.halfspace.rows.finite_length_rows`, kernel FFTs cached per process).
-    The chunk boundaries are fixed by the angle list and ``chunk_size`` (not by the worker count
-    or by resuming), so the rows do not depend on how many processes run the chunks; a different
-    ``chunk_size`` moves them within the solver tolerance (1e-5 relative pressure change).
+    """The half-space columns at ``theta`` (rad, one sweep chunk), each angle warm-started from
+    the cold solution at its nearest anchor angle (``start="anchor"`` of
+    :func:`femcam.halfspace.rows.finite_length_rows`; kernel FFTs and anchors cached per process):
+    a row depends on its own angle alone, so the columns are bit-identical whatever the chunk
+    size or a resume (a warm start from the chunk's previous angle moved the rows by up to 4e-5
+    relative with the chunk boundaries).
 
     Parameters
     ----------
@@ -241,7 +241,7 @@ def halfspace_rows(scene, theta) -> dict:
         (Pa, m, N/m; counts and 0/1 flags as float), and ``hs_flags`` (object, the strip flags
         of each angle joined by ``;``).
     """
-    r = finite_length_rows(scene, np.asarray(theta, float), strip=strip_model(scene))
+    r = finite_length_rows(scene, np.asarray(theta, float), strip=strip_model(scene), start="anchor")
     out = {f"hs_{k}": np.asarray(r[k], float) for k in HS_COLUMNS}
     out["hs_flags"] = np.array([";".join(f) for f in r["flags"]], dtype=object)
     return out

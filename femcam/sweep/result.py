@@ -96,6 +96,14 @@ class SweepResult:
         return self.table["status"]
 
     @property
+    def refused(self) -> tuple[tuple[str, str], ...]:
+        """The parts the scene asks for that were refused at run time (an extra column
+        provider, :func:`femcam.sweep.worst.refusals`): ``(part, reason)`` each, empty when
+        every part answered. A sweep with a refusal is not a complete answer to its scene
+        (``femcam sweep`` exits 1)."""
+        return tuple((r["part"], r["reason"]) for r in self.provenance.get("extras", {}).get("refused", ()))
+
+    @property
     def n_angles(self) -> int:
         """Number of angles."""
         return int(self.table["theta"].size)
@@ -373,6 +381,11 @@ def _extras_lines(ex: dict) -> list[str]:
     if ex.get("assess"):
         lines += ["", "| criterion (assessment) | worst value | at cam angle (deg) |", "|---|---|---|"]
         lines += [f"| {c} | {w['value']:.4g} | {w['theta_deg']:.1f} |" for c, w in ex["assess"].items()]
-    lines += [f"- refused: {e}" for e in ex.get("errors", ())]
+    refused = ex.get("refused")
+    if refused:
+        lines += ["", f"**Not a complete answer: {len(refused)} part(s) the scene asks for were refused** "
+                  "(`femcam sweep` exits 1):", ""] + [f"- refused: {r['line']}" for r in refused]
+    else:   # a sweep stored before the refusal records: the raw reasons
+        lines += [f"- refused: {e}" for e in ex.get("errors", ())]
     lines += [f"- {t}" for t in ex.get("notes", ())]   # e.g. the cam disk check (femcam.sweep.extras)
     return lines
