@@ -13,10 +13,10 @@ from __future__ import annotations
 
 import copy
 import math
-import tomllib
 from pathlib import Path
 
 import pytest
+import tomllib
 
 import femcam.scene.load as scene_load
 from femcam.errors import SceneError
@@ -112,7 +112,7 @@ def load_raw(monkeypatch):
 def test_every_numeric_key_has_a_stated_range_with_its_source():
     numeric = {(g, k) for g, spec in TABLES.items() for k, (_, f, _, _) in spec.items() if f is not None}
     ranged = {(g, k) for g, keys in RANGES.items() for k in keys}
-    assert numeric == ranged, f"keys without a range: {numeric - ranged}; ranges of no key: {ranged - numeric}"
+    assert numeric == ranged, f"keys without a range: {numeric - ranged}; of no key: {ranged - numeric}"
     kinds = ("physical", "handbook", "standard", "femcam")
     for g, keys in RANGES.items():
         for k, r in keys.items():

@@ -51,7 +51,7 @@ STEP_BYTES = 2000
 MAX_STEPS = 400_000
 
 _NORTON = "handbook: Norton, Cam Design and Manufacturing Handbook (2009)"
-_LEN = "femcam: 0.1 mm to 1 m bodies (the FE mesh grades from the contact width to the body)"
+_LEN = "femcam: sub-millimetre to 1 m bodies (the FE mesh grades from the contact width to the body)"
 _E = "physical: soft elastomers (~1e-4 GPa) to diamond (~1200 GPa); femcam.materials.E_PHYSICAL"
 _HARD = "physical: lead (~50 MPa) to diamond (~100 GPa)"
 _STRENGTH = "physical: below ~E/20, the ideal strength of steel (~10 GPa)"
@@ -79,7 +79,7 @@ RANGES: dict[str, dict[str, Range]] = {
     "follower": {
         "base_radius_mm": Range(0.1, 1000.0, _LEN),
         "roller_radius_mm": Range(0.1, 1000.0, _LEN),
-        "offset_mm": Range(-1000.0, 1000.0, _LEN + "; and |offset| < prime radius"),
+        "offset_mm": Range(-1000.0, 1000.0, _LEN + "; and abs(offset) < prime radius"),
         "face_width_mm": Range(0.1, 1000.0, _LEN),
         "tip_radius_mm": Range(0.01, 1000.0, _LEN),
         "face_length_mm": Range(0.1, 2000.0, _LEN),
@@ -296,6 +296,6 @@ def reference_table(tables: dict, choices: dict) -> str:
             if check == "str" and key in choices:
                 acc = " \\| ".join(f"`{c}`" for c in choices[key])
             rows.append(f"| `[{group or 'top level'}]` | `{key}` | {unit} | "
-                        f"{'yes' if required else ''} | {acc} | {r.source if r else ''} |")
+                        f"{'yes' if required else ''} | {acc} | {r.source.replace('|', '/') if r else ''} |")
     return "\n".join(rows) + "\n"
 
