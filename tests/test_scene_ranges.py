@@ -90,6 +90,8 @@ CAMPAIGN = [
     ("seed002_study_model.toml", "spring_N_per_m = 800.0", "spring_N_per_m = 1e30",
      "dynamics.spring_N_per_m"),
     ("seed002_study_model.toml", "preload_N = 1500.0", "preload_N = 1e30", "dynamics.preload_N"),
+    ("seed002_needle_roller.toml", "pin_clearance_um = 10.0", "pin_clearance_um = 400.0",  # > 0.05 x 7 mm
+     "follower.pin_clearance_um"),
     ("seed002_study_model.toml", "friction = 0.1", "friction = 5.0", "contact.friction"),
     ("seed002_study_model.toml", "lift_mm = 10.0", "lift_mm = 10000.0", "program.segment[0].lift_mm"),
     ("seed003_knife_edge.toml", "tip_radius_mm = 2.0", 'tip_radius_mm = 2.0\nroller_support = "pin"',

@@ -19,6 +19,9 @@ from .nodes import extract, finish_body, mirror
 from .options import BodyMesh, ContactMesh, MeshOptions
 from .session import gmsh_session
 
+#: the scene keys a message names for the cam radius of curvature rho
+_RHO = "rho (cam radius of curvature, from [program] and [follower] base_radius_mm)"
+
 
 def mesh_plain_body(gmsh, lay: BodyLayout, opts: MeshOptions) -> BodyMesh:
     """Mesh one uncoated body in the cam orientation (below ``y = 0``).
@@ -121,8 +124,8 @@ def build_contact_mesh(*, Rr: float, rho: float, a_ref: float,
     if math.isnan(rho) or rho == 0.0:
         raise _validate.fail("rho", rho, "m", "must be nonzero (use inf for a flat cam)")
     if roller_does_not_fit(rho, Rr):
-        raise _validate.fail("rho", rho, "m", f"a concave cam needs |rho| > Rr = {Rr:g} m (else the roller "
-                             "does not fit)")
+        raise _validate.fail(_RHO, rho, "m", f"a concave cam needs |rho| > Rr = {Rr:g} m ([follower] "
+                             "roller_radius_mm; else the roller does not fit)")
     if opts.fine_half_width * a_ref > 0.5 * Rr:
         # named by the scene keys it comes from: a user of `femcam sweep` wrote those, not a_ref
         raise InputError(f"contact half-width a_ref = {a_ref * 1e3:.4g} mm (Hertz, from the contact force "

@@ -7,6 +7,7 @@ that do not fit together. Each problem names the scene keys it relates, their va
 * a case shallower than half the hardened body (:meth:`femcam.layers.Case.check_body`, checked
   here against the scene keys);
 * a crown drop at most :data:`CROWN_DROP_MAX_FRACTION` of the roller radius;
+* a pin clearance at most :data:`PIN_CLEARANCE_MAX` of the roller bore (linearised gap);
 * a damping given in N s/m at most :data:`DAMPING_RATIO_MAX` times the critical damping
   ``2 sqrt(k m)`` (the ratio keys' own range);
 * the roller-support keys on a roller follower only.
@@ -24,6 +25,8 @@ from .schema import _SUPPORT
 COATING_MAX_FRACTION = 0.1
 #: largest crown drop / roller radius
 CROWN_DROP_MAX_FRACTION = 0.05
+#: largest pin clearance / roller bore radius (femcam.bodies.geometry.RollerBearing)
+PIN_CLEARANCE_MAX = 0.05
 #: largest damping / critical damping (the range of the ``*_damping_ratio`` keys)
 DAMPING_RATIO_MAX = RANGES["dynamics"]["damping_ratio"].hi
 
@@ -64,6 +67,7 @@ def cross_key_problems(ck: _Checker, raw: dict) -> None:
     fraw = raw.get("follower") if isinstance(raw.get("follower"), dict) else {}
     _layers(ck, raw, fraw)
     _crown(ck, fraw)
+    _pin_clearance(ck, fraw)
     _damping(ck, raw.get("dynamics") if isinstance(raw.get("dynamics"), dict) else {})
     ftype = fraw.get("type")
     if ftype in ("knife_edge", "flat_faced"):
@@ -103,6 +107,16 @@ def _crown(ck: _Checker, fraw: dict) -> None:
         _add(ck, "follower.crown_drop_um", f"= {_fmt(fraw['crown_drop_um'])} um: must be <= "
                f"{CROWN_DROP_MAX_FRACTION:g} x roller_radius_mm = {CROWN_DROP_MAX_FRACTION * R * 1e3:g} um "
                "(a crown is a small drop of the profile, not a change of the roller's shape)")
+
+
+def _pin_clearance(ck: _Checker, fraw: dict) -> None:
+    """The pin clearance against the bore (:class:`femcam.bodies.geometry.RollerBearing`'s
+    linearised gap needs ``c <= 0.05 Ri``), refused at load rather than at run time."""
+    c, Ri = _num(fraw, "pin_clearance_um"), _num(fraw, "roller_bore_mm")
+    if c is not None and Ri is not None and Ri > 0 and c > PIN_CLEARANCE_MAX * Ri * 1e3:
+        _add(ck, "follower.pin_clearance_um", f"= {_fmt(fraw['pin_clearance_um'])} um: must be <= "
+             f"{PIN_CLEARANCE_MAX:g} x roller_bore_mm = {PIN_CLEARANCE_MAX * Ri * 1e3:g} um (the "
+             "linearised pin-bore gap needs a clearance small against the bore)")
 
 
 def _damping(ck: _Checker, dy: dict) -> None:
