@@ -243,7 +243,9 @@ def range_problem(group: str, key: str, x: float, unit: str, check: str) -> str 
         return None
     text = f"must be in {span(r, check)}{' ' + unit if unit else ''} ({r.source})"
     if key == "steps_per_rev" and x > r.hi:
-        text += f"; {x:g} steps would need about {x * STEP_BYTES / 1e9:.3g} GB of memory"
+        need = x * STEP_BYTES
+        text += (f"; {x:g} steps would need about " + (f"{need / 1e12:.3g} TB" if need >= 1e12 else
+                                                       f"{need / 1e9:.3g} GB") + " of memory")
     return text
 
 
