@@ -85,6 +85,8 @@ CAMPAIGN = [
      "materials.roller.coating.interface_shear_strength_MPa"),
     ("seed002_coated.toml", "depth_mm = 0.3", "depth_mm = 1e30", "materials.cam.case.depth_mm"),
     ("seed002_coated.toml", "depth_mm = 0.3", "depth_mm = 15.0", "materials.cam.case.depth_mm"),  # Rb = 10 mm
+    ("seed002_coated.toml", "surface_hardness_HV = 700.0", "surface_hardness_HV = 320.0",  # core 300 HV
+     "materials.cam.case.surface_hardness_HV"),
     ("seed002_dynamic.toml", "train_stiffness_N_per_m = 2.0e6", "train_stiffness_N_per_m = 1e30",
      "dynamics.train_stiffness_N_per_m"),
     ("seed002_study_model.toml", "spring_N_per_m = 800.0", "spring_N_per_m = 1e30",
@@ -111,6 +113,12 @@ def test_campaign_nonsense_is_refused_naming_the_key(tmp_path, example, old, new
     with pytest.raises(SceneError) as ei:
         load_scene(p)
     assert key in str(ei.value), str(ei.value)
+
+
+def test_case_step_is_the_layers_criterion():
+    from femcam.layers.case import DELTA_H, HV
+    from femcam.scene.cross import CASE_STEP_HV
+    assert CASE_STEP_HV * HV == DELTA_H
 
 
 def test_misalignment_bound_is_in_degrees(tmp_path):

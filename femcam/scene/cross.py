@@ -5,7 +5,8 @@ that do not fit together. Each problem names the scene keys it relates, their va
   not a body: the Hertz reference and the FE body take the substrate's radius), one coated
   body per scene (femcam models one);
 * a case shallower than half the hardened body (:meth:`femcam.layers.Case.check_body`, checked
-  here against the scene keys);
+  here against the scene keys), with a surface harder than the core by the case-depth
+  criterion;
 * a crown drop at most :data:`CROWN_DROP_MAX_FRACTION` of the roller radius;
 * a pin clearance at most :data:`PIN_CLEARANCE_MAX` of the roller bore (linearised gap);
 * a damping given in N s/m at most :data:`DAMPING_RATIO_MAX` times the critical damping
@@ -27,6 +28,10 @@ COATING_MAX_FRACTION = 0.1
 CROWN_DROP_MAX_FRACTION = 0.05
 #: largest pin clearance / roller bore radius (femcam.bodies.geometry.RollerBearing)
 PIN_CLEARANCE_MAX = 0.05
+#: effective-case-depth criterion, core + 50 HV (DIN 50190-3): a case whose surface is not harder
+#: than that has no case depth. The same value as femcam.layers.case.DELTA_H (restated: the
+#: scene layer sits below layers; tests/test_scene_ranges.py checks they agree)
+CASE_STEP_HV = 50.0
 #: largest damping / critical damping (the range of the ``*_damping_ratio`` keys)
 DAMPING_RATIO_MAX = RANGES["dynamics"]["damping_ratio"].hi
 
@@ -94,11 +99,24 @@ def _layers(ck: _Checker, raw: dict, fraw: dict) -> None:
                    f"= {_fmt(tabs['coating']['thickness_um'])} um: must be <= {COATING_MAX_FRACTION:g} x "
                    f"{rkey} = {COATING_MAX_FRACTION * R * 1e3:g} um (a coating is a surface layer "
                    "on the body, not the body)")
+        _case_pair(ck, alias, tabs.get("case"))
         d = _num(tabs.get("case"), "depth_mm")
         if d is not None and alias != "pin" and d >= 0.5 * R:
             _add(ck, f"materials.{alias}.case.depth_mm",
                    f"= {_fmt(tabs['case']['depth_mm'])} mm: must be < half of {rkey} = {0.5 * R:g} mm "
                    "(a case deeper than half the body is a through-hardened body)")
+
+
+def _case_pair(ck: _Checker, alias: str, case) -> None:
+    """Surface harder than the core by the case-depth criterion (hardness, or yield / 3)."""
+    for s_key, c_key, step, unit in (("surface_hardness_HV", "core_hardness_HV", CASE_STEP_HV, "HV"),
+                                     ("surface_yield_MPa", "core_yield_MPa",
+                                      CASE_STEP_HV * 9.80665 / 3.0, "MPa")):
+        s, c = _num(case, s_key), _num(case, c_key)
+        if s is not None and c is not None and s - c <= step:
+            _add(ck, f"materials.{alias}.case.{s_key}", f"= {_fmt(case[s_key])} {unit}: must exceed "
+                 f"{c_key} = {_fmt(case[c_key])} {unit} by more than {step:.4g} {unit} (the case-depth "
+                 "criterion core + 50 HV, DIN 50190-3)")
 
 
 def _crown(ck: _Checker, fraw: dict) -> None:
