@@ -17,8 +17,8 @@ Every range says where it comes from, one of four kinds:
 The distinction kept with the downstream formulas: a value inside its range but outside a
 formula's range of validity (a film parameter outside the Hamrock-Dowson fit, a low Peclet
 number, a contact too wide for Hertz) is computed and flagged per angle by the formula's own
-module (``hertz_validity``, ``low_peclet``, ``film_W_range`` ... in
-:mod:`femcam.assess`), never refused here. What is refused here is a number no real
+module (``hertz_validity``, ``low_peclet``, ``W_range``, ``U_range``
+in :mod:`femcam.assess`; ``EXCEEDS limit`` of the pressure angle in ``femcam run``), never refused here. What is refused here is a number no real
 cam-follower can have, or one femcam cannot compute in bounded memory.
 
 :func:`reference_table` writes the table of keys, units, ranges and sources that
