@@ -43,10 +43,11 @@ class Range(NamedTuple):
     open_: bool = False
 
 
-#: bytes of memory per time step of the periodic dynamics solve (peak of
-#: :func:`femcam.dynamics.periodic_response` measured with tracemalloc on the seed 002
-#: one-DOF train: ~1.7 kB a step; rounded up for the two-DOF train)
-STEP_BYTES = 2000
+#: bytes of memory per time step of the periodic dynamics solve: the peak of
+#: :func:`femcam.dynamics.periodic_response` measured with tracemalloc on the seed 002 train
+#: (examples/seed002_dynamic.toml) at 50,000 and 200,000 steps: 185 B a step one-DOF, 315 B
+#: two-DOF; rounded up
+STEP_BYTES = 400
 #: most time steps per revolution the periodic solve accepts (femcam.dynamics.periodic.MAX_STEPS)
 MAX_STEPS = 400_000
 
@@ -110,7 +111,7 @@ RANGES: dict[str, dict[str, Range]] = {
         "damping_ratio": Range(0.0, 10.0, _DAMP),
         "steps_per_rev": Range(16.0, MAX_STEPS, f"femcam: whole number; at least 16 steps, at most "
                                f"{MAX_STEPS} "
-                               f"(~{STEP_BYTES} bytes of memory a step)"),
+                               f"(~{STEP_BYTES} bytes of memory a step, {MAX_STEPS * STEP_BYTES / 1e6:.0f} MB)"),
         "train_stiffness_N_per_m": Range(0.0, 1e10, _K),
         "train_damping_ratio": Range(0.0, 10.0, _DAMP),
         "train_damping_N_s_per_m": Range(0.0, 1e6, _C),
