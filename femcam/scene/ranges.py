@@ -17,9 +17,9 @@ Every range says where it comes from, one of four kinds:
 The distinction kept with the downstream formulas: a value inside its range but outside a
 formula's range of validity (a film parameter outside the Hamrock-Dowson fit, a low Peclet
 number, a contact too wide for Hertz) is computed and flagged per angle by the formula's own
-module (``hertz_validity``, ``low_peclet``, ``W_range``, ``U_range``
-in :mod:`femcam.assess`; ``EXCEEDS limit`` of the pressure angle in ``femcam run``), never refused here. What is refused here is a number no real
-cam-follower can have, or one femcam cannot compute in bounded memory.
+module (``hertz_validity``, ``low_peclet``, ``W_range``, ``U_range`` in :mod:`femcam.assess`;
+``EXCEEDS limit`` of the pressure angle in ``femcam run``), never refused here. What is refused
+here is a number no real cam-follower can have, or one femcam cannot compute in bounded memory.
 
 :func:`reference_table` writes the table of keys, units, ranges and sources that
 ``docs/scene.md`` holds (a test checks that the doc equals it).
@@ -110,8 +110,8 @@ RANGES: dict[str, dict[str, Range]] = {
         "damping_N_s_per_m": Range(0.0, 1e6, _C),
         "damping_ratio": Range(0.0, 10.0, _DAMP),
         "steps_per_rev": Range(16.0, MAX_STEPS, f"femcam: whole number; at least 16 steps, at most "
-                               f"{MAX_STEPS} "
-                               f"(~{STEP_BYTES} bytes of memory a step, {MAX_STEPS * STEP_BYTES / 1e6:.0f} MB)"),
+                               f"{MAX_STEPS} (~{STEP_BYTES} bytes of memory a step, "
+                               f"{MAX_STEPS * STEP_BYTES / 1e6:.0f} MB)"),
         "train_stiffness_N_per_m": Range(0.0, 1e10, _K),
         "train_damping_ratio": Range(0.0, 10.0, _DAMP),
         "train_damping_N_s_per_m": Range(0.0, 1e6, _C),
