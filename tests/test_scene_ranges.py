@@ -226,6 +226,14 @@ def test_max_pressure_angle_matches_seed003(tmp_path):
     assert math.degrees(phi) == pytest.approx(29.44, abs=0.005)
 
 
+def test_run_summary_prints_the_whole_cam_max_not_the_analysed_angles():
+    from femcam.cli.run import summary_lines
+    sc = load_scene(EX / "seed003_knife_edge.toml")
+    st = sc.analyse(np.radians([0.0, 90.0, 180.0, 270.0]))  # coarse: miss the 29.44 deg peak
+    line = next(ln for ln in summary_lines(sc, st) if ln.startswith("max |phi|"))
+    assert np.degrees(np.max(np.abs(st.phi))) < 29.0 and "29.437 deg" in line and "whole cam" in line, line
+
+
 def test_contact_too_wide_names_the_scene_keys():
     with pytest.raises(InputError) as ei:
         build_contact_mesh(Rr=0.01, rho=0.02, a_ref=0.005)
