@@ -199,8 +199,8 @@ def _short_rise(tmp_path) -> Path:
 
 def test_short_rise_is_undercut_and_refused(tmp_path):
     sc = load_scene(_short_rise(tmp_path))
-    with pytest.raises(UndercutError, match="257 in each segment"):
-        sc.analyse(np.radians(np.arange(0.0, 360.0, 1.0)))
+    with pytest.raises(UndercutError, match=r"theta in \[0\.00\d\d, 0\.0100\] deg.*257 in each segment"):
+        sc.analyse(np.radians(np.arange(0.0, 360.0, 1.0)))  # inside the 0.01 deg rise, 4 decimals
 
 
 def test_max_pressure_angle_of_a_short_rise_is_the_closed_form(tmp_path):
