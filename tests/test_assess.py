@@ -184,10 +184,10 @@ def test_missing_lubricant_data_is_one_clear_error(tmp_path):
     for key in ("temperature_C (degC)", "viscosity_temperature_coefficient_per_K (1/K)",
                 "lubricant.pressure_viscosity_per_GPa", "lubricant.density_kg_per_m3"):
         assert key in msg, (key, msg)
-    cold = _scene(tmp_path, lambda t: t.replace("oil_temperature_C = 70.0", "oil_temperature_C = -300"),
-                  "t.toml")
-    with pytest.raises(SceneError, match=r"oil_temperature_C = -300 degC: must be above absolute zero"):
-        assess_rows(cold, np.radians([0.0]))
+    # below absolute zero, and below any oil's pour point: refused at load (femcam.scene.ranges)
+    with pytest.raises(SceneError, match=r"oil_temperature_C = -300 degC: must be in \[-60, 350\] degC"):
+        _scene(tmp_path, lambda t: t.replace("oil_temperature_C = 70.0", "oil_temperature_C = -300"),
+               "t.toml")
     with pytest.raises(SceneError, match="not a table oil"):
         assess_rows(_scene(tmp_path, lambda t: t.replace("ISO VG 46 mineral", "SAE 5W-30"), "n.toml"),
                     np.radians([0.0]))

@@ -285,7 +285,8 @@ def test_case_law_and_margin_hand_calculation():
 
 # ------------------------------------------------------------------------------ bad input
 def test_bad_inputs_are_refused_with_numbers():
-    with pytest.raises(InputError, match=r"coat_thickness = 0\.05 um.*aspect ratio.*a_over_h >="):
+    with pytest.raises(InputError, match=r"coat_thickness \(\[materials.\*.coating\] thickness_um\) "
+                       r"= 0\.05 um.*aspect ratio.*a_over_h >="):
         _coated(0.05e-6, Material(E=200e9, nu=0.2), a_over_h=10)
     with pytest.raises(InputError, match="surface and core hardness OR"):
         Case(depth=1e-3, surface_hardness=700 * HV, surface_yield=1e9)
@@ -337,8 +338,10 @@ def test_scene_coating_and_case_keys(tmp_path):
     assert "one complete pair" in msg
     deep = tmp_path / "deep.toml"
     deep.write_text(ex.read_text().replace("depth_mm = 0.3", "depth_mm = 6.0"))
-    with pytest.raises(InputError, match="case.depth = 6 mm: must be < 5 mm, half the cam body size 10 mm"):
-        scene_layers(load_scene(deep))
+    # refused at load, naming the scene keys (base circle Rb = 10 mm: half is 5 mm)
+    with pytest.raises(SceneError, match=r"materials.cam.case.depth_mm = 6.0 mm: must be < half of "
+                       r"follower.base_radius_mm = 5 mm"):
+        load_scene(deep)
 
 
 @pytest.mark.slow

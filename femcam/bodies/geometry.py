@@ -38,6 +38,9 @@ from ..errors import InputError
 from ..materials import STEEL, Material
 from ..scene import roller_support_problems
 
+#: the scene key a message names for the clearance c
+_CLEARANCE = "c ([follower] pin_clearance_um)"
+
 SUPPORTS = ("solid", "pin", "needles")
 #: Palmgren's line-contact coefficient (mm N^-0.9 mm^0.8) and load exponent
 PALMGREN_C = 3.84e-5
@@ -130,8 +133,8 @@ class RollerBearing:
         if problems:
             raise InputError("; ".join(problems))  # each names its key, value and unit
         if self.c > 0.05 * self.Ri:
-            raise _validate.fail("c", self.c, "m", f"the clearance is {self.c / self.Ri:.3g} of the bore "
-                                 "radius: the linearised gap (c << Ri) does not hold beyond 0.05 Ri")
+            raise _validate.fail(_CLEARANCE, self.c, "m", f"the clearance is {self.c / self.Ri:.3g} of "
+                                 "the bore radius: the linearised gap (c << Ri) does not hold beyond 0.05 Ri")
 
     @property
     def wall(self) -> float:

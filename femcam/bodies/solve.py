@@ -20,6 +20,9 @@ from ..mesh import surface_height
 from .contact import solve_multi_lcp
 from .geometry import needle_approach
 
+#: the scene keys a message names for the cam radius of curvature rho
+_RHO = "rho (cam radius of curvature, from [program] and [follower] base_radius_mm)"
+
 
 @dataclass(frozen=True, eq=False)
 class RingResult:
@@ -192,7 +195,8 @@ def solve_ring(model, *, F: float, rho: float, cage: float = 0.0, max_secant: in
     F = _validate.positive("F", F, "N")
     rho = float(rho)
     if math.isnan(rho) or rho == 0.0 or (math.isfinite(rho) and -model.bearing.Ro <= rho < 0):
-        raise _validate.fail("rho", rho, "m", "must be nonzero and not a concave cam tighter than the roller")
+        raise _validate.fail(_RHO, rho, "m",
+                             "must be nonzero and not a concave cam tighter than the roller")
     b = model.bearing
     nc = model.nc
     A0, P, phi, weights = _operators(model, cage)

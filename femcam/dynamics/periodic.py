@@ -271,11 +271,12 @@ def _check_follows(train: TrainModel, omega: float) -> None:
     w1 = float(train.natural_frequencies[0])
     if w1 <= omega:
         raise InputError(
-            f"k_t = {train.k_t:g} N/m: the lowest natural frequency of the train in contact, "
+            f"k_t ([dynamics] train_stiffness_N_per_m) = {train.k_t:g} N/m: the lowest natural "
+            "frequency of the train in contact, "
             f"{w1 / (2 * math.pi):.4g} Hz ({w1:.4g} rad/s), is at or below the camshaft frequency "
             f"{omega / (2 * math.pi):.4g} Hz ({omega * 30 / math.pi:.6g} rpm): every cam harmonic "
             "drives the train above resonance and the follower cannot follow the lift. Stiffen "
-            "the train (k_t) or lighten the masses")
+            "the train (train_stiffness_N_per_m) or lighten the masses (mass_kg, second_mass_kg)")
 
 
 def _setup(train, program, omega, N):

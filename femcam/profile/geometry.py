@@ -435,8 +435,14 @@ def bool_intervals(theta, mask):
 
 
 def _fmt_intervals_deg(intervals, most: int = 20) -> str:
-    """The first ``most`` intervals in degrees, then ``... and N more`` (a message stays short)."""
-    text = ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}] deg" for a, b in intervals[:most])
+    """The first ``most`` intervals in degrees, then ``... and N more`` (a message stays short);
+    two decimals, four for an interval narrower than 0.05 deg (a short segment's undercut would
+    print as ``[0.01, 0.01]``)."""
+    def one(a, b):
+        d = 2 if math.degrees(b - a) >= 0.05 else 4
+        return f"[{math.degrees(a):.{d}f}, {math.degrees(b):.{d}f}] deg"
+
+    text = ", ".join(one(a, b) for a, b in intervals[:most])
     return text + (f", ... and {len(intervals) - most} more" if len(intervals) > most else "")
 
 
