@@ -3,8 +3,10 @@ shakedown, contact fatigue, scuffing and the lubrication regime at every cam ang
 
 Writes ``DIR/assessment.csv`` (units in the column names, provenance header), ``DIR/summary.json``
 (worst angle per criterion, skipped criteria, flags), ``DIR/report.md`` (one page with the plots)
-and ``DIR/plots/assess_*.png``. ``--sweep SWEEP_DIR`` takes the angles and the FE ``a``/``p0`` of a
-finished sweep (``SWEEP_DIR/sweep.npz``) instead of Hertz.
+and ``DIR/plots/assess_*.png``. ``--sweep SWEEP_DIR`` takes the angles, the FE ``a``/``p0``, the FE
+``tau1_max`` and the FE range of ``txz`` over one pass (``txz_range_max``) of a finished sweep
+(``SWEEP_DIR/sweep.npz``) instead of Hertz; a sweep written without ``txz_range_max`` keeps
+Hertz's range at the FE ``p0`` and says so.
 """
 
 from __future__ import annotations
@@ -53,7 +55,7 @@ def _sweep_table(path):
     if not f.is_file():
         raise InputError(f"--sweep = {path}: no sweep.npz there (run femcam sweep SCENE --out {path} first)")
     with np.load(f, allow_pickle=False) as z:
-        return {k: np.asarray(z[k]) for k in ("theta", "a_fe", "p0_fe", "tau1_max", "txz_absmax")
+        return {k: np.asarray(z[k]) for k in ("theta", "a_fe", "p0_fe", "tau1_max", "txz_range_max")
                 if k in z.files}
 
 

@@ -18,7 +18,8 @@ import numpy as np
 
 from .. import _validate
 from .export import write_vtu
-from .recovery import derived, pass_shear_range
+from .passrange import ShearRange, pass_shear_range
+from .recovery import derived
 
 if TYPE_CHECKING:
     from .model import ContactModel
@@ -42,35 +43,6 @@ class StressMax:
     x: float
     z: float
     body: str
-
-
-@dataclass(frozen=True)
-class ShearRange:
-    """The largest range of the orthogonal shear ``txz`` over one pass in one body's stress
-    window (:func:`femcam.fe.recovery.pass_shear_range`): the stress cycle of subsurface
-    rolling-contact fatigue (Johnson 1985 §9.2).
-
-    Parameters
-    ----------
-    value : float
-        ``max_x txz - min_x txz`` at the depth where it is largest [Pa].
-    z : float
-        That depth in the body's Johnson frame [m].
-    x_max, x_min : float
-        Where ``txz`` is largest and smallest at that depth [m].
-    body : str
-        ``"cam"`` or ``"roller"``.
-    inside : bool
-        Both extremes lie inside the stress window (not on its edge in ``x``, not in its deepest
-        layer); False: the window cuts the pass and ``value`` may be too low.
-    """
-
-    value: float
-    z: float
-    x_max: float
-    x_min: float
-    body: str
-    inside: bool
 
 
 #: (key, field, arg-extremum) of ``ContactResult.max_by_body[body]``: the first three are maxima
@@ -389,7 +361,7 @@ def window_extrema(name: str, ev, sx, sz, txz, sy) -> tuple[dict, SurfaceStress]
     maxima : dict of str to StressMax or ShearRange
         One :class:`StressMax` per key of :data:`MAXIMA_KEYS` and the :class:`ShearRange`
         ``"txz_range"`` [Pa, m] (on the window's rows of equal depth,
-        :func:`femcam.fe.recovery.pass_grid`).
+        :func:`femcam.fe.passrange.pass_grid`; NaN without them).
     surface : SurfaceStress
         The stresses at the surface points, sorted by x.
     """
@@ -400,6 +372,10 @@ def window_extrema(name: str, ev, sx, sz, txz, sy) -> tuple[dict, SurfaceStress]
         i = int(arg(fields[comp]))
         m[key] = StressMax(float(fields[comp][i]), float(ev.x[i]), float(ev.z[i]), name)
     k = ev.surface
-    grid = np.where(ev.pass_ok, (ev.pass_P @ txz).reshape(ev.pass_ok.shape), np.nan)
-    m["txz_range"] = ShearRange(**pass_shear_range(grid, ev.pass_x, ev.pass_z, ev.pass_ok), body=name)
+    if ev.pass_P is None:                                   # no rows of equal depth: not computed
+        m["txz_range"] = ShearRange(np.nan, np.nan, np.nan, np.nan, name, False)
+    else:
+        grid = np.where(ev.pass_ok, (ev.pass_P @ txz).reshape(ev.pass_ok.shape), np.nan)
+        m["txz_range"] = ShearRange(**pass_shear_range(grid, ev.pass_x, ev.pass_z, ev.pass_ok),
+                                    body=name)
     return m, SurfaceStress(x=ev.x[k], sx=sx[k], sz=sz[k], txz=txz[k], sy=sy[k], body=name)

@@ -66,8 +66,8 @@ from .result import TEXT_COLUMNS, empty_rows
 from .wear import fill_wear
 
 #: result columns that are 0 (not NaN) at lift-off: no contact has zero width and zero pressure
-ZERO_AT_LIFTOFF = ("a_hertz", "p0_hertz", "a_fe", "p0_fe", "vm_max", "tau1_max", "sx_min",
-                   "sx_max", "sz_min", "txz_absmax")
+ZERO_AT_LIFTOFF = ("a_hertz", "p0_hertz", "a_fe", "p0_fe", "vm_max", "tau1_max", "txz_range_max",
+                   "sx_min", "sx_max", "sz_min", "txz_absmax")
 
 
 def line_contact(cp: ContactParams, F, rho) -> LineContact:
