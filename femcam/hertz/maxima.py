@@ -348,7 +348,7 @@ def max_shear_range(mu: float = 0.0) -> StressMaximum:
     Examples
     --------
     >>> m = max_shear_range()
-    >>> round(m.value, 6), round(m.z, 4)
+    >>> round(m.value, 6), round(m.z, 3)
     (0.5, 0.5)
     """
     return _shear_range(_mu(mu))
