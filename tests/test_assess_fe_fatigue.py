@@ -204,3 +204,19 @@ def test_sweep_folder_without_the_range_falls_back_to_hertz(fe_sweep, tmp_path, 
     res = assess(load_scene(EXAMPLE), TH, table={k: v for k, v in arrays.items()})
     np.testing.assert_allclose(res.rows["dtau_orth"], max_shear_range(0.1).value * res.rows["p0"], rtol=1e-12)
     assert any("txz_range_max" in n for n in res.notes)
+
+
+def test_fe_row_without_a_range_keeps_hertz_and_is_flagged():
+    """Per row: an FE row with FE stresses but no finite range (the window cut the pass) takes
+    Hertz's range at its FE p0 (McEwen 0.5 p0 for mu = 0.1) and is flagged dtau_hertz; a row
+    with a range takes it as dtau_orth, utilisation (dtau/2)/tau_e with tau_e = 350 MPa."""
+    scene = load_scene(EXAMPLE)
+    th = np.radians([0.0, 74.0])
+    h = assess_rows(scene, th)
+    table = {"a_fe": h["a"], "p0_fe": h["p0"] * 1.01, "tau1_max": 0.3 * h["p0"],
+             "txz_range_max": np.array([np.nan, 0.49 * h["p0"][1]])}
+    r = assess_rows(scene, th, table)
+    # rtol 1e-8: McEwen's range is 0.5 p0 to 2e-9 (test_hertz_shape_factor_of_the_range_against_flamant)
+    np.testing.assert_allclose(r["dtau_orth"], [0.5 * 1.01 * h["p0"][0], 0.49 * h["p0"][1]], rtol=1e-8)
+    np.testing.assert_allclose(r["sf_subsurface"], 350e6 / (0.5 * r["dtau_orth"]), rtol=1e-12)
+    assert "dtau_hertz" in r["flags"][0].split(";") and "dtau_hertz" not in r["flags"][1]
