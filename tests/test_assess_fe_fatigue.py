@@ -216,7 +216,7 @@ def test_fe_row_without_a_range_keeps_hertz_and_is_flagged():
     table = {"a_fe": h["a"], "p0_fe": h["p0"] * 1.01, "tau1_max": 0.3 * h["p0"],
              "txz_range_max": np.array([np.nan, 0.49 * h["p0"][1]])}
     r = assess_rows(scene, th, table)
-    # rtol 1e-8: McEwen's range is 0.5 p0 to 2e-9 (test_hertz_shape_factor_of_the_range_against_flamant)
+    # rtol 1e-8: the range is exactly 0.5 p0 (Johnson 1985 §4.2.3); femcam's search reaches it to 2e-9
     np.testing.assert_allclose(r["dtau_orth"], [0.5 * 1.01 * h["p0"][0], 0.49 * h["p0"][1]], rtol=1e-8)
     np.testing.assert_allclose(r["sf_subsurface"], 350e6 / (0.5 * r["dtau_orth"]), rtol=1e-12)
     assert "dtau_hertz" in r["flags"][0].split(";") and "dtau_hertz" not in r["flags"][1]
