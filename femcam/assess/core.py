@@ -175,7 +175,7 @@ def _fe_stresses(inp, table, source, out, flags):
 
     .. math:: \Delta\tau = \max_z\left[\max_x \tau_{xz}(x, z) - \min_x \tau_{xz}(x, z)\right]
 
-    never a surface value (the surface ``|txz|`` of the FE window is a contact-edge quantity, 3-5 %
+    never a surface value (the surface ``|txz|`` of the FE window is a contact-edge quantity, 2-4 %
     of ``p0`` under a sticking roller, against ``0.5 p0`` below the surface). FE rows without a
     finite range keep Hertz's shape factor at the FE ``p0``; those with an FE field (finite
     ``tau1_max``) are flagged ``dtau_hertz``."""
