@@ -156,8 +156,9 @@ def test_fe_table_replaces_hertz(tmp_path):
     assert list(r["source"]) == ["fe", "hertz", "fe"]
     p_used = np.where(np.isfinite(p_fe), p_fe, h["p0"])
     np.testing.assert_allclose(r["sf_surface_fatigue"], 1500e6 / p_used, rtol=1e-12)
-    # FE stress maxima: first yield k / tau1_max (Tresca k = Y/2), orthogonal shear range 2 |txz|max
-    table.update(tau1_max=np.full(3, 500e6), txz_absmax=np.full(3, 200e6))
+    # FE stress maxima: first yield k / tau1_max (Tresca k = Y/2); the orthogonal shear range over
+    # one pass is the FE subsurface txz_range_max, utilisation (dtau/2)/tau_e
+    table.update(tau1_max=np.full(3, 500e6), txz_range_max=np.full(3, 400e6))
     r = assess_rows(sc, theta, table)
     np.testing.assert_allclose(r["sf_yield"][[0, 2]], 850e6 / 500e6, rtol=1e-12)
     np.testing.assert_allclose(r["sf_subsurface"][[0, 2]], 350e6 / 200e6, rtol=1e-12)

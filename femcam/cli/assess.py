@@ -3,8 +3,10 @@ shakedown, contact fatigue, scuffing and the lubrication regime at every cam ang
 
 Writes ``DIR/assessment.csv`` (units in the column names, provenance header), ``DIR/summary.json``
 (worst angle per criterion, skipped criteria, flags), ``DIR/report.md`` (one page with the plots)
-and ``DIR/plots/assess_*.png``. ``--sweep SWEEP_DIR`` takes the angles and the FE ``a``/``p0`` of a
-finished sweep (``SWEEP_DIR/sweep.npz``) instead of Hertz.
+and ``DIR/plots/assess_*.png``. ``--sweep SWEEP_DIR`` takes the angles, the FE ``a``/``p0``, the FE
+``tau1_max`` and the FE range of ``txz`` over one pass (``txz_range_max``) of a finished sweep
+(``SWEEP_DIR/sweep.npz``) instead of Hertz; a sweep written without ``txz_range_max`` keeps
+Hertz's range at the FE ``p0`` and says so.
 """
 
 from __future__ import annotations
@@ -44,11 +46,11 @@ def register(subparsers) -> None:
 
 
 def _sweep_table(path, scene):
-    """The sweep's columns the assessment uses; a sweep of another scene or a corrupted folder
-    is refused by the library (:func:`femcam.assess.sweep_table`)."""
+    """The sweep's columns the assessment uses (the subsurface ``txz_range_max``, never a
+    surface value); a sweep of another scene or a corrupted folder is refused by the library
+    (:func:`femcam.assess.sweep_table`)."""
     z = sweep_table(path, scene)
-    return {k.removeprefix("surf_"): z[k]
-            for k in ("theta", "a_fe", "p0_fe", "tau1_max", "surf_txz_absmax") if k in z}
+    return {k: z[k] for k in ("theta", "a_fe", "p0_fe", "tau1_max", "txz_range_max") if k in z}
 
 
 def _write_csv(path, cols: dict, header: list[str]) -> None:

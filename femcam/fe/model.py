@@ -18,6 +18,7 @@ measured reuse errors).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -44,6 +45,7 @@ from .elasticity import (
     scalar_node_coordinates,
     stress_operator,
 )
+from .passrange import pass_grid
 from .recovery import build_eval_set, depth, derived, fit_half_width, johnson_frame
 from .result import (  # noqa: F401  (also importable from here: pickles made before the split)
     MAXIMA_KEYS,
@@ -151,6 +153,8 @@ def _body_part(name, geo, mat, *, x, plane, element, solver, a_ref) -> SimpleNam
                         shape=(cdof.size, b.n_dofs))
     ev, Yn, Yt = build_eval_set(b, Bn, Bt, S_c, float(x[-1]), solver.eval_depth * a_ref,
                                 precompute=solver.stress_operators == "precompute")
+    grid = pass_grid(b, ev.nodes, ev.x, ev.z, ev.surface)   # rows of equal depth: the txz range
+    ev = dataclasses.replace(ev, **dict(zip(("pass_P", "pass_x", "pass_z", "pass_ok"), grid, strict=True)))
     return SimpleNamespace(body=b, Bn=Bn, Bt=Bt, ev=ev, Yn=Yn, Yt=Yt,
                            t_cond=time.perf_counter() - t1)
 

@@ -28,8 +28,9 @@ Finite length (the axial slices of :mod:`femcam.halfspace.strip`):
 * the 2D FE answers again at the most loaded slice with that slice's load per unit length
   (method fe): ``F = w_max * length``, columns ``fe_slice_F_N``, ``fe_slice_a_um``,
   ``fe_slice_p0_MPa`` (the peak of the solved pressure), ``fe_slice_vm_max_MPa``,
-  ``fe_slice_tau1_max_MPa``, ``fe_slice_surf_txz_absmax_MPa`` and the text column
-  ``fe_load_basis = "w_max*length"``; the sweep's
+  ``fe_slice_tau1_max_MPa``, ``fe_slice_surf_txz_absmax_MPa``, ``fe_slice_txz_range_max_MPa``
+  (the range of ``txz`` over one pass, fed to the assessment's subsurface fatigue) and the text
+  column ``fe_load_basis = "w_max*length"``; the sweep's
   own FE columns (``a_fe``, ``p0_fe``, ``vm_max``, ...) stay at the mean load ``Fc / length``,
   comparable with Hertz (``err_a``, ``err_p0``);
 * the wear column uses the axial peak: the Archard per-pass depth ``k w v_slip / V_cam`` depends

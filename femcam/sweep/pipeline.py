@@ -68,7 +68,7 @@ from .wear import fill_wear
 
 #: result columns that are 0 (not NaN) at lift-off: no contact has zero width and zero pressure
 ZERO_AT_LIFTOFF = ("a_hertz", "p0_hertz", "a_fe", "p0_fe", "p0_fit", "vm_max", "tau1_max",
-                   "surf_sx_min", "surf_sx_max", "surf_sz_min", "surf_txz_absmax")
+                   "txz_range_max", "surf_sx_min", "surf_sx_max", "surf_sz_min", "surf_txz_absmax")
 
 
 def line_contact(cp: ContactParams, F, rho) -> LineContact:

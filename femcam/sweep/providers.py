@@ -139,7 +139,8 @@ ASSESS_TEXT = ("assess_regime", "assess_flags", "assess_source")
 FE_SLICE = (("hs_fe_F", "fe_slice_F_N", 1.0), ("hs_fe_a", "fe_slice_a_um", 1e6),
             ("hs_fe_p0", "fe_slice_p0_MPa", 1e-6), ("hs_fe_vm_max", "fe_slice_vm_max_MPa", 1e-6),
             ("hs_fe_tau1_max", "fe_slice_tau1_max_MPa", 1e-6),
-            ("hs_fe_surf_txz_absmax", "fe_slice_surf_txz_absmax_MPa", 1e-6))
+            ("hs_fe_surf_txz_absmax", "fe_slice_surf_txz_absmax_MPa", 1e-6),
+            ("hs_fe_txz_range_max", "fe_slice_txz_range_max_MPa", 1e-6))
 HALFSPACE = tuple((f"hs_{k}", csv, f) for k, (csv, f) in HS_COLUMNS.items()) + FE_SLICE
 RING = tuple((f"ring_{k}", csv, f) for k, (csv, f) in RING_COLUMNS.items() if k != "theta")
 CAM_DISK = tuple((f"camdisk_{k}", csv, f) for k, (csv, f) in CAM_CSV_COLUMNS.items())
@@ -203,7 +204,8 @@ def _fe_slice(task, rows, out) -> None:
             continue
         for si, v in (("hs_fe_F", F), ("hs_fe_a", r.a), ("hs_fe_p0", r.p0_nodal),
                       ("hs_fe_vm_max", r.von_mises_max.value), ("hs_fe_tau1_max", r.tau1_max.value),
-                      ("hs_fe_surf_txz_absmax", float(np.abs(r.txz).max()) if r.txz.size else np.nan)):
+                      ("hs_fe_surf_txz_absmax", float(np.abs(r.txz).max()) if r.txz.size else np.nan),
+                      ("hs_fe_txz_range_max", r.txz_range.value if r.txz_range.inside else np.nan)):
             out[si][i] = v
         out["fe_load_basis"][i] = "w_max*length"
 
@@ -295,12 +297,12 @@ def assess_chunk(task, rows) -> dict:
         columns ``assess_regime``, ``assess_flags``, ``assess_source``.
     """
     table = {"a_fe": rows["a_fe"], "p0_fe": rows["p0_fe"], "tau1_max": rows["tau1_max"],
-             "txz_absmax": rows["surf_txz_absmax"]}
+             "txz_range_max": rows["txz_range_max"]}
     axial = "hs_p_axial_peak" in rows
     if axial:  # finite length: the most loaded slice, Hertz shape factors at its p0
         a, p0 = axial_contact(rows)
         table = {"a_fe": a, "p0_fe": p0, "tau1_max": rows["hs_fe_tau1_max"],
-                 "txz_absmax": rows["hs_fe_surf_txz_absmax"]}
+                 "txz_range_max": rows["hs_fe_txz_range_max"]}
     n = task.theta.size
     idx = np.flatnonzero(np.asarray(rows["status"]).astype(str) != "undercut")
     out = {assess_name(si): np.full(n, np.nan) for si, _, _ in ASSESS_COLUMNS if si not in ASSESS_SKIP}

@@ -38,8 +38,10 @@ def fe_fill(rows, i, r: ContactResult) -> list[str]:
 
     ``p0_fe`` is the peak of the solved pressure (its largest nodal value), ``p0_fit`` and
     ``a_fe`` the Hertz ellipse fitted to it (:mod:`femcam.sweep.table`). Maxima are over both
-    bodies (``StressMax.value``, depth ``z`` below that body's surface); the ``surf_*`` extremes
-    are on the cam surface of the FE model's stress window.
+    bodies (``StressMax.value``, depth ``z`` below that body's surface), and so is the range of
+    ``txz`` over one pass (the larger body's; NaN where the stress window cuts the pass,
+    ``ShearRange.inside`` False); the ``surf_*`` extremes are on the cam surface of the FE
+    model's stress window.
 
     Parameters
     ----------
@@ -62,6 +64,9 @@ def fe_fill(rows, i, r: ContactResult) -> list[str]:
     rows["vm_depth"][i] = r.von_mises_max.z
     rows["tau1_max"][i] = r.tau1_max.value
     rows["tau1_depth"][i] = r.tau1_max.z
+    tr = r.txz_range
+    rows["txz_range_max"][i] = tr.value if tr.inside else np.nan
+    rows["txz_range_depth"][i] = tr.z if tr.inside else np.nan
     if r.sx.size:
         rows["surf_sx_min"][i] = r.sx.min()
         rows["surf_sx_max"][i] = r.sx.max()
@@ -113,6 +118,8 @@ def hertz_stress(rows, idx, cp, p0, a, ratio=None) -> None:
         rows["vm_depth"][j] = k["von_mises"][1] * b
         rows["tau1_max"][j] = k["tau1"][0] * p
         rows["tau1_depth"][j] = k["tau1"][1] * b
+        rows["txz_range_max"][j] = k["txz_range"][0] * p
+        rows["txz_range_depth"][j] = k["txz_range"][1] * b
         for name in ("surf_sx_min", "surf_sx_max", "surf_sz_min", "surf_txz_absmax"):
             rows[name][j] = k[name] * p
 

@@ -71,6 +71,15 @@ cheaper models), ``curvature_jump`` (1 inside a curvature jump's straddle span),
   ring's own contact is ``ring_p0_MPa``), a cam on its shaft (``cam_bore_*``), a finite length
   (the most loaded slice is ``p_axial_peak_MPa``, ``fe_slice_*``).
 
+Subsurface orthogonal shear: ``txz_range_max`` is the largest range of ``txz`` over one pass,
+``max_z [max_x txz(x, z) - min_x txz(x, z)]`` (Johnson 1985 §9.2; the stress cycle of
+subsurface rolling-contact fatigue, fed to the assessment's ``dtau_orth``), at the depth
+``txz_range_depth`` below the surface of the body where it is larger. FE rows: from the FE
+subsurface field on rows of equal depth through the stress window, the contact-surface layer
+left out (:attr:`femcam.fe.ContactResult.txz_range`; NaN where the window cuts the pass);
+Hertz rows: McEwen's field with the row's traction ratio (:func:`femcam.hertz.max_shear_range`;
+0.5 p0 at z = 0.5 a for mu up to ~0.5). It is not twice ``surf_txz_absmax``, which is a surface value.
+
 Wear: ``wear_source`` says which pressure the ``wear_depth`` column used (``fe``, ``hertz`` or
 ``none``), see :mod:`femcam.sweep.wear`.
 """
@@ -106,6 +115,8 @@ COLUMNS: tuple[tuple[str, str, float], ...] = (
     ("vm_depth", "vm_depth_um", 1e6),
     ("tau1_max", "tau1_max_MPa", 1e-6),
     ("tau1_depth", "tau1_depth_um", 1e6),
+    ("txz_range_max", "txz_range_max_MPa", 1e-6),
+    ("txz_range_depth", "txz_range_depth_um", 1e6),
     ("surf_sx_min", "surf_sx_min_MPa", 1e-6),
     ("surf_sx_max", "surf_sx_max_MPa", 1e-6),
     ("surf_sz_min", "surf_sz_min_MPa", 1e-6),
