@@ -128,6 +128,35 @@ def in_range_array(name: str, value, lo: float, hi: float, unit: str = "", *,
     return arr
 
 
+def nonnegative_array(name: str, value, unit: str = "") -> np.ndarray:
+    """A float array (or scalar) of finite numbers, all >= 0."""
+    arr = finite_array(name, value, unit)
+    if np.any(arr < 0.0):
+        nonnegative(name, float(arr[arr < 0.0].flat[0]), unit)  # raises the scalar message
+    return arr
+
+
+def radius_array(name: str, value, unit: str = "m") -> np.ndarray:
+    """A signed radius of curvature (or an array of them): nonzero, not NaN; ``-inf``/``inf`` is a
+    flat surface and a negative value a concave one, so both are accepted."""
+    cond = "must be a nonzero number (negative = concave, inf = flat)"
+    if value is None or isinstance(value, str | bytes | bool):
+        raise fail(name, value, unit, cond)
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise fail(name, value, unit, cond) from None
+    bad = np.isnan(arr) | (arr == 0.0)
+    if np.any(bad):
+        raise fail(name, float(arr[bad].flat[0]), unit, cond)
+    return arr
+
+
+def optional(check, name: str, value, *args, **kwargs):
+    """``None`` (not given) or ``check(name, value, *args, **kwargs)``."""
+    return None if value is None else check(name, value, *args, **kwargs)
+
+
 def workers(name: str, value) -> int | str:
     """A worker count: an integer >= 1, or ``"auto"`` (any case; also a numeric string).
 

@@ -33,7 +33,7 @@ import numpy as np
 
 from .. import _validate
 from ..materials import PLANES
-from .subsurface import StressField, unit_stresses
+from .subsurface import StressField, _unit_stresses
 
 _X_BOUNDS = (-2.0, 2.0)
 _Z_BOUNDS = (0.0, 2.0)
@@ -98,7 +98,7 @@ class ScaledMaximum:
 
 
 def _measure(quantity, X, Z, mu, nu, plane):
-    sx, sz, txz = unit_stresses(X, Z, mu)
+    sx, sz, txz = _unit_stresses(X, Z, mu)  # X, Z, mu checked by the callers
     if quantity == "txz":
         return np.abs(txz)
     if quantity == "tau1":
