@@ -437,23 +437,23 @@ CASES: dict[str, Case] = {
                                                  {"Rq1": NONNEG, "Rq2": NONNEG}),
     "femcam.tribology.dimensionless_groups": Case(
         kw(U=1.0, w=1.5e5, R=0.0067, E_star=1.15e11, eta0=0.05, alpha=2e-8),
-        {"U": POS, "w": POS, "R": POS, "E_star": POS, "eta0": POS, "alpha": POS}),
+        {"U": REAL, "w": NONNEG, "R": POS, "E_star": POS, "eta0": POS, "alpha": POS}),
     "femcam.tribology.effusivity": Case(kw(K=46.0, rho=7850.0, c=460.0),
                                         {"K": POS, "rho": POS, "c": POS}),
     "femcam.tribology.film_thickness": Case(
         kw(U=1.0, w=1.5e5, R=0.0067, E_star=1.15e11, eta0=0.05, alpha=2e-8, sigma=3e-7),
-        {"U": POS, "w": POS, "R": POS, "E_star": POS, "eta0": POS, "alpha": POS,
-         "sigma": opt(POS)}),
+        {"U": REAL, "w": NONNEG, "R": ("str", "none", "strlist", "nan", "neg", "zero"),
+         "E_star": POS, "eta0": POS, "alpha": POS, "sigma": opt(POS)}),
     "femcam.tribology.first_yield_limit": Case(kw(mu=0.1), {"mu": NONNEG}),
     "femcam.tribology.flash_temperature": Case(
         kw(mu=0.1, w=1.5e5, a=1e-4, u1=1.0, u2=0.9, beta1=1.2e4, beta2=1.2e4),
-        {"mu": NONNEG, "w": NONNEG, "a": POS, "u1": REAL, "u2": REAL, "beta1": POS,
+        {"mu": NONNEG, "w": NONNEG, "a": NONNEG, "u1": REAL, "u2": REAL, "beta1": POS,
          "beta2": POS, "C": POS}),
-    "femcam.tribology.greenwood_tripp": Case(kw(n=2.5, lam=1.0), {"lam": NONNEG}),
+    "femcam.tribology.greenwood_tripp": Case(kw(n=2.5, lam=1.0), {"lam": REAL, "n": NONNEG}),
     "femcam.tribology.lubrication_regime": Case(kw(lam=ARR * 1e3), {"lam": NONNEG}),
     "femcam.tribology.orthogonal_shear_range": Case(kw(mu=0.1), {"mu": NONNEG}),
     "femcam.tribology.peclet": Case(kw(u=1.0, a=1e-4, kappa=1.2e-5),
-                                    {"u": REAL, "a": POS, "kappa": POS}),
+                                    {"u": REAL, "a": NONNEG, "kappa": POS}),
     "femcam.tribology.scuffing_safety": Case(kw(T_scuff=300.0, T_bulk=80.0, dT_flash=50.0),
                                              {"T_scuff": REAL, "T_bulk": REAL,
                                               "dT_flash": NONNEG}),
@@ -461,7 +461,7 @@ CASES: dict[str, Case] = {
     "femcam.tribology.sn_cycles": Case(kw(p0=1.5e9, strength=1.5e9),
                                        {"p0": NONNEG, "strength": POS, "N_ref": POS, "m": POS}),
     "femcam.tribology.wear_coefficient": Case(kw(k0=1e-15, lam=ARR * 1e3),
-                                              {"k0": NONNEG, "lam": NONNEG}),
+                                              {"k0": NONNEG, "lam": REAL}),  # lam < 0 clips to 0
     # femcam.wear
     "femcam.wear.archard_volume": Case(kw(k=1e-15, L=500.0, S=1.0),
                                        {"k": NONNEG, "L": NONNEG, "S": NONNEG}),
