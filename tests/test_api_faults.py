@@ -407,7 +407,7 @@ CASES: dict[str, Case] = {
     # femcam.synthesis
     "femcam.synthesis.SynthesisOptions": Case(kw(), {"n_elements": INT_POS, "k": POS, "mu": POS,
                                                      "quad_points": INT_POS, "rtol": POS,
-                                                     "xtol": POS, "max_iter": INT_POS,
+                                                     "xtol": NONNEG, "max_iter": INT_POS,
                                                      "k_factor": POS, "k_start": POS,
                                                      "phi_limit": POS + (1.6,)}),
     "femcam.synthesis.pressure_angle_exact": Case(
