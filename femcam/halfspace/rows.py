@@ -64,6 +64,7 @@ def strip_for_scene(scene, *, nx: int = 64, ny: int = 128, tol: float = 1e-5) ->
     InputError
         If the follower is not a roller (``Rr`` not > 0).
     """
+    _validate.positive("tol", tol, "")  # checked before the 720-angle design-load analysis
     Rr = getattr(scene.follower, "Rr", 0.0)
     if not Rr > 0.0:
         raise InputError(f"follower = {type(scene.follower).__name__}: the finite-length half-space "
