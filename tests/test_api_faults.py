@@ -47,6 +47,7 @@ NONNEG = REAL + ("neg",)
 POS = NONNEG + ("zero",)
 NONZERO = REAL + ("zero",)
 RADIUS = ("str", "none", "strlist", "nan", "zero")  # signed radius of curvature: inf is flat
+MISSING = ("str", "none", "strlist", "inf")  # data where NaN documents a missing value (failed solve)
 INT = ("str", "none", "strlist", "nan", "inf", 2.5)
 INT_POS = INT + ("neg", "zero")
 INT_NONNEG = INT + ("neg",)
@@ -154,6 +155,7 @@ def cp():
     return contact_params(scene())
 
 
+@functools.cache
 def evolution_case():
     from femcam.wear import evolution_case as ec
 
@@ -480,24 +482,24 @@ CASES: dict[str, Case] = {
                                        {"kappa": REAL, "dkappa_ds": REAL, "h": REAL,
                                         "h1": REAL, "h2": REAL}),
     "femcam.wear.depth_per_pass": Case(kw(k=1e-15, w=1.5e5, v_slip=0.1, V_transport=1.0),
-                                       {"k": NONNEG, "w": NONNEG, "v_slip": REAL,
+                                       {"k": NONNEG, "w": MISSING, "v_slip": REAL,
                                         "V_transport": REAL}),
     "femcam.wear.drift_sum": Case(kw(h=ARR, period=4.0, drift=1.0, cycles=4),
                                   {"h": REAL, "period": POS, "drift": REAL, "cycles": NONNEG}),
     "femcam.wear.surface_depth": Case(
         kw(x=np.linspace(-1e-3, 1e-3, 5), xi=np.array([0.0, 1e-4]), a=np.array([1e-4]),
            p0=np.array([1e9]), v_slip=np.array([0.1]), dt=np.array([1e-3]), k=1e-15),
-        {"x": REAL, "xi": REAL, "a": NONNEG, "p0": NONNEG, "v_slip": REAL, "dt": NONNEG,
+        {"x": REAL, "xi": REAL, "a": MISSING, "p0": MISSING, "v_slip": MISSING, "dt": MISSING,
          "k": NONNEG, "period": opt(POS), "chunk": INT_POS}),
     "femcam.wear.wear_depth_per_angle": Case(
         lazy(lambda: dict(theta=TH, a=A12, p0=P12, Fc=F12, slip=srr_slip(), k=1e-15)),
-        {"theta": REAL, "p0": NONNEG, "Fc": REAL, "k": NONNEG}),
+        {"theta": REAL, "a": MISSING, "p0": MISSING, "Fc": MISSING, "k": NONNEG}),
     "femcam.wear.wear_map": Case(
         lazy(lambda: dict(source=dict(theta=TH, a_hertz=A12, p0_hertz=P12, Fc=F12),
                           slip=srr_slip(), k=1e-15, length=0.01, n_grid=2000)),
         {"k": NONNEG, "length": POS, "cycles": NONNEG, "n_grid": opt(INT_POS),
          "k_factor": opt(NONNEG)}),
-    "femcam.wear.Seed000Inputs": Case(kw(), {"K": NONNEG, "L": POS, "H": POS, "h": POS,
+    "femcam.wear.Seed000Inputs": Case(kw(), {"K": NONNEG, "L": NONNEG, "H": POS, "h": POS,
                                              "beta": POS, "omega": POS}),
     "femcam.wear.rms_velocity": Case(kw(law="cycloidal", h=0.01, beta=np.pi, omega=1.0),
                                      {"h": POS, "beta": POS, "omega": POS}),
@@ -508,7 +510,7 @@ CASES: dict[str, Case] = {
     "femcam.wear.follower_slip": Case(
         lazy(lambda: dict(follower=follower(), theta=TH, s=state().s, s1=state().s1,
                           s2=state().s2, omega=62.8)),
-        {"theta": REAL, "s": REAL, "s1": REAL, "s2": REAL, "omega": POS, "srr": NONNEG,
+        {"theta": REAL, "s": REAL, "s1": REAL, "s2": REAL, "omega": POS, "srr": REAL + (2.0,),
          "mu": NONNEG}),
     "femcam.wear.knife_edge": Case(
         lazy(lambda: dict(theta=TH, s=state().s, s1=state().s1, Rb=0.02, omega=62.8)),
@@ -528,7 +530,7 @@ CASES: dict[str, Case] = {
         lazy(lambda: dict(theta=TH, s=state().s, s1=state().s1, s2=state().s2, Rb=0.01,
                           Rr=0.01, omega=62.8, srr=0.02)),
         {"theta": REAL, "s": REAL, "s1": REAL, "s2": REAL, "Rb": POS, "Rr": POS,
-         "omega": POS, "srr": NONNEG, "e": REAL}),
+         "omega": POS, "srr": REAL + (2.0, -2.0), "e": REAL}),
 }
 
 
