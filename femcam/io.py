@@ -38,6 +38,7 @@ from xml.sax.saxutils import escape, quoteattr
 
 import numpy as np
 
+from . import _validate
 from .fe.export import scene_arrays, stress_tensor, vtk_point_data
 from .hertz import LineContact
 
@@ -469,7 +470,7 @@ def vtu_name(theta: float) -> str:
     >>> vtu_name(np.pi / 2)
     'angle_0090.000deg.vtu'
     """
-    return f"angle_{np.degrees(theta):08.3f}deg.vtu"
+    return f"angle_{np.degrees(_validate.number('theta', theta, 'rad')):08.3f}deg.vtu"
 
 
 def _field_data(wear: dict | None) -> dict:
