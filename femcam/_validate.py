@@ -166,6 +166,14 @@ def radius_array(name: str, value, unit: str = "m") -> np.ndarray:
     return arr
 
 
+def radius(name: str, value, unit: str = "m") -> float:
+    """One signed radius of curvature (see :func:`radius_array`) as a ``float``."""
+    arr = radius_array(name, value, unit)
+    if arr.ndim != 0:
+        raise fail(name, value, unit, "must be a number (negative = concave, inf = flat)")
+    return float(arr)
+
+
 def optional(check, name: str, value, *args, **kwargs):
     """``None`` (not given) or ``check(name, value, *args, **kwargs)``."""
     return None if value is None else check(name, value, *args, **kwargs)

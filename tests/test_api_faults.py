@@ -212,21 +212,21 @@ CASES: dict[str, Case] = {
                                             "Z": INT_NONNEG, "r_n": NONNEG}),
     "femcam.bodies.build_for": Case(
         lazy(lambda: dict(scene=scene("seed002_needle_roller"), Fc=1500.0, rho=0.02)),
-        {"Fc": POS, "rho": NONZERO}, slow=True),
+        {"Fc": MISSING, "rho": RADIUS}, slow=True),
     "femcam.bodies.cam_disk_rows": Case(
         lazy(lambda: dict(scene=scene("seed002_cam_on_shaft"), theta=TH[:1], Fc=F12[:1])),
-        {"theta": REAL, "Fc": NONNEG}, slow=True),
+        {"theta": REAL, "Fc": MISSING}, slow=True),
     "femcam.bodies.needle_approach": Case(kw(Q=150e3, length=0.01), {"Q": REAL, "length": POS}),
     "femcam.bodies.ring_rows": Case(
         lazy(lambda: dict(scene=scene("seed002_needle_roller"), theta=TH[:1], Fc=F12[:1],
                           rho=np.full(1, 0.02))),
-        {"theta": REAL, "Fc": NONNEG, "rho": NONZERO}, slow=True),
+        {"theta": REAL, "Fc": MISSING, "rho": RADIUS}, slow=True),
     "femcam.bodies.solve_cam_disk": Case(
         lazy(lambda: dict(model=None, F=1000.0)), {"F": POS}, slow=True,
         fault_base=lazy(lambda: dict(model=bare(object), F=1000.0))),
     "femcam.bodies.solve_ring": Case(
         lazy(lambda: dict(model=None, F=1000.0, rho=0.02)),
-        {"F": POS, "rho": NONZERO, "cage": REAL, "max_secant": INT_POS, "tol": POS}, slow=True,
+        {"F": POS, "rho": RADIUS, "cage": REAL, "max_secant": INT_POS, "tol": NONNEG}, slow=True,
         fault_base=lazy(lambda: dict(model=bare(object), F=1000.0, rho=0.02))),
     # femcam.dynamics
     "femcam.dynamics.TrainModel": Case(lazy(lambda: dict(follower=scene().dynamics, k_t=2e5,
@@ -251,15 +251,16 @@ CASES: dict[str, Case] = {
         {"rpm": POS, "steps_per_rev": opt(INT_POS), "max_cycles": INT_POS}),
     # femcam.fe
     "femcam.fe.MeshOptions": Case(kw(), {"a_over_h": POS, "fine_half_width": POS,
-                                         "fine_depth": POS, "growth": POS,
+                                         "fine_depth": NONNEG + (25.0,), "growth": POS,
                                          "domain_over_a": opt(POS), "max_size_fraction": POS,
                                          "coat_thickness": NONNEG, "coat_layers": INT_POS}),
     "femcam.fe.SolverOptions": Case(kw(), {"max_iter": INT_POS, "tol": POS, "kappa_tol": POS,
-                                           "eval_depth": POS, "fit_threshold": POS}),
+                                           "eval_depth": NONNEG + (25.0,),
+                                           "fit_threshold": NONNEG + (0.95,)}),
     "femcam.fe.solve_contact": Case(
         lazy(lambda: dict(F=1500.0, rho=0.02, Rr=0.01, cam=steel(), roller=steel(),
                           length=0.01, mu=0.1)),
-        {"F": NONNEG, "rho": NONZERO, "Rr": POS, "length": POS, "mu": NONNEG,
+        {"F": NONNEG, "rho": RADIUS, "Rr": POS, "length": POS, "mu": NONNEG,
          "a_ref": opt(POS)}, slow=True),
     # femcam.halfspace
     "femcam.halfspace.FiniteLengthContact": Case(
@@ -322,10 +323,8 @@ CASES: dict[str, Case] = {
     "femcam.kinematics.fall": Case(kw(beta=1.0, h=0.01), {"beta": POS, "h": POS}),
     "femcam.kinematics.rise": Case(kw(beta=1.0, h=0.01), {"beta": POS, "h": POS}),
     # femcam.layers
-    "femcam.layers.Case": Case(kw(depth=1e-3, surface_hardness=7e9, core_hardness=3e9),
-                               {"depth": POS, "surface_hardness": opt(POS),
-                                "core_hardness": opt(POS), "surface_yield": opt(POS),
-                                "core_yield": opt(POS)}),
+    "femcam.layers.Case": Case(kw(depth=1e-3, surface_yield=1.5e9, core_yield=0.8e9),
+                               {"depth": POS, "surface_yield": POS, "core_yield": POS}),
     "femcam.layers.CoatedMaterial": Case(kw(E=210e9, nu=0.3),
                                          {"E": POS, "nu": REAL + (-1.0, 0.5),
                                           "hardness": opt(POS)}),
@@ -336,13 +335,13 @@ CASES: dict[str, Case] = {
     "femcam.layers.build_coated_model": Case(
         lazy(lambda: dict(Rr=0.01, rho_ref=0.02, cam=steel(), roller=steel(), length=0.01,
                           a_ref=1e-4, coating=_coating())),
-        {"Rr": POS, "rho_ref": NONZERO, "length": POS, "a_ref": POS}, slow=True),
+        {"Rr": POS, "rho_ref": RADIUS, "length": POS, "a_ref": POS}, slow=True),
     "femcam.layers.case_margin": Case(
         lazy(lambda: dict(case=_case(), z=np.array([1e-4, 5e-4]), tau=np.array([3e8, 2e8]))),
         {"z": NONNEG, "tau": REAL}),
     "femcam.layers.layer_rows": Case(
         lazy(lambda: dict(model=None, F=1500.0, rho=0.02, mu=0.1)),
-        {"F": NONNEG, "rho": NONZERO, "mu": NONNEG}, slow=True,
+        {"F": NONNEG, "rho": RADIUS, "mu": NONNEG}, slow=True,
         fault_base=lazy(lambda: dict(model=bare(object), F=1500.0, rho=0.02, mu=0.1))),
     "femcam.layers.scene_layer_rows": Case(
         lazy(lambda: dict(scene=scene("seed002_coated"), theta=TH[:1])),
@@ -351,12 +350,12 @@ CASES: dict[str, Case] = {
     # femcam.mesh
     "femcam.mesh.body_layout": Case(
         lazy(lambda: dict(name="cam", R=0.02, L=0.01, a_ref=1e-4, opts=_mesh_options())),
-        {"R": NONZERO, "L": POS, "a_ref": POS}),
+        {"R": RADIUS, "L": POS, "a_ref": POS}),
     "femcam.mesh.build_contact_mesh": Case(kw(Rr=0.01, rho=0.02, a_ref=1e-4),
-                                           {"Rr": POS, "rho": NONZERO, "a_ref": POS}, slow=True),
+                                           {"Rr": POS, "rho": RADIUS, "a_ref": POS}, slow=True),
     "femcam.mesh.ccw": Case(kw(pts=np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]),
                                tri=np.array([[0, 2, 1]])), {"pts": REAL}),
-    "femcam.mesh.surface_height": Case(kw(x=ARR, R=0.02), {"x": REAL, "R": NONZERO}),
+    "femcam.mesh.surface_height": Case(kw(x=ARR, R=0.02), {"x": REAL, "R": RADIUS}),
     # femcam.profile
     "femcam.profile.FlatFacedFollower": Case(kw(Rb=0.02, e=0.0), {"Rb": POS, "e": REAL}),
     "femcam.profile.KnifeEdgeFollower": Case(kw(Rb=0.02, e=0.0), {"Rb": POS, "e": REAL}),
@@ -396,7 +395,7 @@ CASES: dict[str, Case] = {
     "femcam.sweep.plan_families": Case(
         lazy(lambda: dict(F=state().Fc, rho=state().rho, cp=cp(), tolerance=2e-3,
                           contact=np.ones(12, bool))),
-        {"F": NONNEG, "rho": NONZERO, "tolerance": POS}),
+        {"F": NONNEG, "rho": RADIUS, "tolerance": POS}),
     "femcam.sweep.run_tasks": Case(kw(fn=abs, tasks=[-1, 2], workers=1), {"workers": INT_POS},
                                    call=lambda *a, **k: list(femcam.sweep.run_tasks(*a, **k))),
     "femcam.sweep.sweep": Case(lazy(lambda: dict(scene=scene(), angles=TH[:2], method="hertz")),
@@ -405,7 +404,7 @@ CASES: dict[str, Case] = {
     "femcam.sweep.verify_families": Case(
         lazy(lambda: dict(F=state().Fc, rho=state().rho, theta=TH, cp=cp(),
                           options=_sweep_options(), contact=np.ones(12, bool))),
-        {"F": NONNEG, "rho": NONZERO, "theta": REAL, "n_checks": INT_POS}, slow=True),
+        {"F": NONNEG, "rho": RADIUS, "theta": REAL, "n_checks": INT_POS}, slow=True),
     # femcam.synthesis
     "femcam.synthesis.SynthesisOptions": Case(kw(), {"n_elements": INT_POS, "k": POS, "mu": POS,
                                                      "quad_points": INT_POS, "rtol": POS,

@@ -104,6 +104,7 @@ class SolverOptions:
 
     def __post_init__(self):
         _validate.choice("ordering", self.ordering, ORDERINGS)
+        _validate.integer("max_iter", self.max_iter, 1, "iterations")
         _validate.in_range("max_iter", self.max_iter, 1, 10000, "")
         _validate.positive("tol", self.tol, "")
         lo = _validate.positive("a_range[0]", self.a_range[0], "")
