@@ -128,16 +128,16 @@ def in_range_array(name: str, value, lo: float, hi: float, unit: str = "", *,
     return arr
 
 
-def data_array(name: str, value, unit: str = "") -> np.ndarray:
+def data_array(name: str, value, unit: str = "", *, inf_ok: bool = False) -> np.ndarray:
     """A float array of numbers in which NaN marks a missing value (a failed solve, no contact);
-    text, ``None``, booleans and ``inf`` are refused."""
+    text, ``None``, booleans and (unless ``inf_ok``) ``inf`` are refused."""
     if value is None or isinstance(value, str | bytes | bool):
         raise fail(name, value, unit, "must be a number or an array of numbers")
     try:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
         raise fail(name, value, unit, "must be numeric") from None
-    if np.any(np.isinf(arr)):
+    if not inf_ok and np.any(np.isinf(arr)):
         raise fail(name, float(arr[np.isinf(arr)].flat[0]), unit, "must be finite (NaN marks a missing value)")
     return arr
 

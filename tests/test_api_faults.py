@@ -396,11 +396,11 @@ CASES: dict[str, Case] = {
         lazy(lambda: dict(F=state().Fc, rho=state().rho, cp=cp(), tolerance=2e-3,
                           contact=np.ones(12, bool))),
         {"F": NONNEG, "rho": RADIUS, "tolerance": POS}),
-    "femcam.sweep.run_tasks": Case(kw(fn=abs, tasks=[-1, 2], workers=1), {"workers": INT_POS},
+    "femcam.sweep.run_tasks": Case(kw(fn=abs, tasks=[-1, 2], workers=1), {"workers": opt(INT_POS)},
                                    call=lambda *a, **k: list(femcam.sweep.run_tasks(*a, **k))),
     "femcam.sweep.sweep": Case(lazy(lambda: dict(scene=scene(), angles=TH[:2], method="hertz")),
                                {"a_over_h": POS, "tolerance": POS, "chunk_size": INT_POS,
-                                "angles": REAL}, slow=True),
+                                "angles": opt(REAL)}, slow=True),
     "femcam.sweep.verify_families": Case(
         lazy(lambda: dict(F=state().Fc, rho=state().rho, theta=TH, cp=cp(),
                           options=_sweep_options(), contact=np.ones(12, bool))),
@@ -607,6 +607,8 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.io.read_csv", "femcam.io.write_npz", "femcam.io.write_pvd",
         "femcam.io.write_vtu", "femcam.io.write_fe_vtu", "femcam.synthesis.write_study_csv")},
     "femcam.mesh.mesh_body": "takes an open gmsh session; its numbers are checked by body_layout",
+    "femcam.scene.roller_support_problems": "the scene's support check (h4-scene's femcam/scene); the "
+                                            "API entry with argument checks is bodies.bearing_problems",
     "femcam.mesh.gmsh_session": "a context manager named by a string",
     "femcam.scene.load_scene": "reads a file; scene faults are tests/test_scene*.py (h4-scene)",
     "femcam.scene.study_problem": "returns the problem text of one [fe]/[sweep] value",

@@ -62,7 +62,7 @@ def shear_strength_from_hardness(H):
     >>> round(float(shear_strength_from_hardness(600 * 9.80665e6)) / 1e6, 1)
     1132.4
     """
-    return np.asarray(H, dtype=float) / (3.0 * math.sqrt(3.0))
+    return _validate.positive_array("H", H, "Pa") / (3.0 * math.sqrt(3.0))
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -171,9 +171,9 @@ def layer_rows(model, F, rho, mu, *, coating: Coating | None = None, coat_body: 
     InputError
         Neither ``coating`` nor ``case``, or a missing strength.
     """
-    F, rho, mu = np.broadcast_arrays(np.atleast_1d(_validate.finite_array("F", F, "N")),
-                                     _validate.finite_array("rho", rho, "m"),
-                                     _validate.finite_array("mu", mu, ""))
+    F, rho, mu = np.broadcast_arrays(np.atleast_1d(_validate.nonnegative_array("F", F, "N")),
+                                     _validate.radius_array("rho", rho, "m"),
+                                     _validate.nonnegative_array("mu", mu, ""))
     if coating is None and case is None:
         raise InputError("layer_rows: give a coating and/or a case (nothing to check)")
     tau_i = coating.require("interface_shear_strength") if coating is not None else None
