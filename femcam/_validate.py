@@ -138,7 +138,8 @@ def data_array(name: str, value, unit: str = "", *, inf_ok: bool = False) -> np.
     except (TypeError, ValueError):
         raise fail(name, value, unit, "must be numeric") from None
     if not inf_ok and np.any(np.isinf(arr)):
-        raise fail(name, float(arr[np.isinf(arr)].flat[0]), unit, "must be finite (NaN marks a missing value)")
+        raise fail(name, float(arr[np.isinf(arr)].flat[0]), unit,
+                   "must be finite (NaN marks a missing value)")
     return arr
 
 

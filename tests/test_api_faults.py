@@ -191,8 +191,10 @@ CASES: dict[str, Case] = {
     # femcam.io
     "femcam.io.vtu_name": Case(kw(theta=0.5), {"theta": REAL}),
     # femcam.assess
-    "femcam.assess.assess": Case(lazy(lambda: dict(scene=scene("seed002_assess"), theta=TH)), {"theta": opt(REAL)}),
-    "femcam.assess.assess_rows": Case(lazy(lambda: dict(scene=scene("seed002_assess"), theta=TH)), {"theta": REAL}),
+    "femcam.assess.assess": Case(lazy(lambda: dict(scene=scene("seed002_assess"), theta=TH)),
+                                 {"theta": opt(REAL)}),
+    "femcam.assess.assess_rows": Case(lazy(lambda: dict(scene=scene("seed002_assess"), theta=TH)),
+                                      {"theta": REAL}),
     "femcam.assess.wear_factor": Case(lazy(lambda: dict(scene=scene(), theta=TH)),
                                       {"theta": REAL, "tip_radius": opt(POS)}),
     # femcam.bodies

@@ -35,7 +35,15 @@ from .. import _validate
 from ..errors import InputError
 from ..kinematics import CamProgram
 from .model import TrainModel
-from .periodic import _check_follows, _setup, _steps_per_rev, _whole, choose_steps, linear_periodic, periodic_response
+from .periodic import (
+    _check_follows,
+    _setup,
+    _steps_per_rev,
+    _whole,
+    choose_steps,
+    linear_periodic,
+    periodic_response,
+)
 
 RPM = 30.0 / math.pi  # rad/s -> rpm
 

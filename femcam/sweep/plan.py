@@ -159,10 +159,27 @@ def family_reference(a, kappa, rho, Rr) -> tuple[float, float]:
 
 
 def contact_rows(F, rho, contact) -> tuple[np.ndarray, np.ndarray]:
-    """``F`` (N) and ``rho`` (m) per angle as float arrays, checked where ``contact`` is set:
-    ``F >= 0`` and ``rho`` a nonzero radius (``inf``: flat); other angles (lift-off) may hold
-    anything numeric. Text, ``None`` or a length other than ``contact``'s raise an
-    :class:`~femcam.errors.InputError` naming the argument."""
+    """``F`` and ``rho`` per angle as float arrays, checked where ``contact`` is set.
+
+    Parameters
+    ----------
+    F, rho : array_like, shape (n,)
+        Contact force [N] (``>= 0`` at the contact angles) and cam radius of curvature [m]
+        (nonzero, ``inf`` flat); other angles (lift-off) may hold any number or NaN.
+    contact : array_like of bool, shape (n,)
+        Angles with contact.
+
+    Returns
+    -------
+    F, rho : ndarray, shape (n,), float
+        The checked arrays.
+
+    Raises
+    ------
+    InputError
+        Text, ``None``, inf where not allowed, a bad value at a contact angle, or a shape unlike
+        ``contact``'s; the message names the argument.
+    """
     F = _validate.data_array("F", F, "N")
     rho = _validate.data_array("rho", rho, "m", inf_ok=True)
     c = np.asarray(contact, dtype=bool)

@@ -73,7 +73,14 @@ import numpy as np
 from .. import _validate
 from .inputs import MISSING, WearInputWarning, _loaded_have, contact_columns
 from .slip import SlipResult
-from .surface import _depth_per_pass, _ellipse_primitive, depth_per_pass, drift_sum, hertz_load_per_length, surface_depth
+from .surface import (
+    _depth_per_pass,
+    _ellipse_primitive,
+    depth_per_pass,
+    drift_sum,
+    hertz_load_per_length,
+    surface_depth,
+)
 
 __all__ = ["MISSING", "WearInputWarning", "WearMap", "_ellipse_primitive", "contact_columns",
            "depth_per_pass", "drift_sum", "hertz_load_per_length", "surface_depth", "wear_depth_per_angle",
