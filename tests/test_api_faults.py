@@ -245,7 +245,7 @@ CASES: dict[str, Case] = {
         {"omega": POS, "steps_per_rev": opt(INT_POS), "cycles": INT_POS}),
     "femcam.dynamics.jump_speed": Case(
         lazy(lambda: dict(train=train(), program=program(), rpm_lo=500.0, rpm_hi=700.0,
-                          n_scan=3, steps_per_rev=360)),
+                          n_scan=3, steps_per_rev=720)),
         {"rpm_lo": POS, "rpm_hi": POS, "n_scan": INT_POS, "xtol_rpm": POS}, slow=True),
     "femcam.dynamics.rpm_sweep": Case(
         lazy(lambda: dict(train=train(), program=program(), rpm=np.array([600.0]),

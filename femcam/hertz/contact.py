@@ -75,7 +75,9 @@ def effective_radius(R1, R2):
     >>> round(float(effective_radius(-0.03, 0.01)), 12)
     0.015
     """
-    return _effective_radius(_validate.radius_array("R1", R1), _validate.radius_array("R2", R2))
+    _validate.radius_array("R1", R1)
+    _validate.radius_array("R2", R2)
+    return _effective_radius(R1, R2)
 
 
 def _effective_radius(R1, R2):
@@ -113,8 +115,10 @@ def half_width(w, R, E_star):
     >>> round(float(half_width(1.5e5, 0.005, 115.3846e9)) * 1e6, 2)   # um
     90.97
     """
-    return _half_width(_validate.nonnegative_array("w", w, "N/m"), _validate.positive_array("R", R, "m"),
-                       _validate.positive_array("E_star", E_star, "Pa"))
+    _validate.nonnegative_array("w", w, "N/m")
+    _validate.positive_array("R", R, "m")
+    _validate.positive_array("E_star", E_star, "Pa")
+    return _half_width(w, R, E_star)
 
 
 def _half_width(w, R, E_star):
@@ -146,8 +150,9 @@ def peak_pressure(w, a):
     >>> round(float(peak_pressure(1.5e5, 90.97e-6)) / 1e6, 1)   # MPa
     1049.7
     """
-    return _peak_pressure(_validate.nonnegative_array("w", w, "N/m"),
-                          _validate.nonnegative_array("a", a, "m"))
+    _validate.nonnegative_array("w", w, "N/m")
+    _validate.nonnegative_array("a", a, "m")
+    return _peak_pressure(w, a)
 
 
 def _peak_pressure(w, a):
