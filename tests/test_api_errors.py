@@ -1,6 +1,10 @@
-"""API bad input: ``ContactModel.build`` / ``.solve`` refuse wrong types with an InputError
-naming the parameter and its unit (reference: the bad values typed in the test), before any
-mesh is built."""
+"""API bad input, exact messages: ``ContactModel.build`` / ``.solve`` refuse wrong types with an
+InputError naming the parameter and its unit (reference: the bad values typed in the test),
+before any mesh is built.
+
+The generic fault injection over every public callable (string, None, NaN, inf, negative, zero
+into each numeric argument) is ``tests/test_api_faults.py``; this file keeps the exact messages
+and the methods of built models (``ContactModel``, ``Body``) that it does not reach."""
 
 import math
 
