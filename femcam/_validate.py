@@ -187,6 +187,25 @@ def radius(name: str, value, unit: str = "m") -> float:
     return float(arr)
 
 
+def record(name: str, value, what: str, *attrs: str):
+    """An input record (a scene, a model, a program) recognised by the attributes the caller reads
+    (duck typing keeps the layers one way: a lower module need not import the record's class);
+    anything else, a string or ``None`` included, raises naming ``name`` and ``what`` it must be."""
+    if value is None or isinstance(value, str | bytes | int | float) or \
+            not all(hasattr(value, a) for a in attrs):
+        raise fail(name, value if value is None or isinstance(value, str | int | float) else
+                   type(value).__name__, "", f"must be {what}")
+    return value
+
+
+def instance(name: str, value, cls: type, what: str = ""):
+    """``value`` if it is a ``cls``, else an error naming ``name`` and what it must be."""
+    if not isinstance(value, cls):
+        shown = value if value is None or isinstance(value, str | int | float) else type(value).__name__
+        raise fail(name, shown, "", f"must be {what or 'a ' + cls.__name__}")
+    return value
+
+
 def optional(check, name: str, value, *args, **kwargs):
     """``None`` (not given) or ``check(name, value, *args, **kwargs)``."""
     return None if value is None else check(name, value, *args, **kwargs)

@@ -742,6 +742,39 @@ def test_fault_is_refused_naming_the_parameter(name, param):
     assert not problems, f"{name}({param}=...):\n  " + "\n  ".join(problems)
 
 
+def _is_record(value) -> bool:
+    """A record argument (scene, model, program, options, slip result, task function)."""
+    plain = (bool, int, float, str, bytes, np.ndarray, list, tuple, dict, np.floating)
+    return value is not None and not isinstance(value, plain)
+
+
+def test_record_arguments_are_refused_naming_them():
+    """A string or None where a record (Scene, CamProgram, TrainModel, SlipResult, a model, ...)
+    belongs raises a FemcamError naming the argument, not an AttributeError from deep inside.
+    Slow cases are left out: their record is the built model the fault stand-in replaces."""
+    problems, n = [], 0
+    for name, case in CASES.items():
+        if case.slow:
+            continue
+        _, kwargs0 = case.base()
+        for param in [p for p, v in kwargs0.items() if p not in case.numeric and _is_record(v)]:
+            for bad in ("abc", None):
+                args, kwargs = case.base()
+                kwargs[param] = bad
+                n += 1
+                try:
+                    _call(name, args, kwargs)
+                except FemcamError as e:
+                    if param not in str(e):
+                        problems.append(f"{name}({param}={bad!r}): message does not name it: {e}")
+                except Exception as e:  # noqa: BLE001 - any other exception is the fault found
+                    problems.append(f"{name}({param}={bad!r}): {type(e).__name__}: {e}")
+                else:
+                    problems.append(f"{name}({param}={bad!r}): accepted")
+    assert n >= 40, n  # the table holds this many record arguments (guards against an empty loop)
+    assert not problems, "\n".join(problems)
+
+
 N_FAULTS = sum(len(k) for c in CASES.values() for k in c.numeric.values())
 
 FAST = [n for n, c in CASES.items() if not c.slow]

@@ -412,6 +412,7 @@ def wear_factor(scene, theta, table=None, tip_radius=None):
     """
     theta = _validate.finite_array("theta", theta, "rad")
     tip_radius = _validate.optional(_validate.positive, "tip_radius", tip_radius, "m")
+    _validate.record("scene", scene, "a femcam.scene.Scene", "follower", "analyse")
     k = wear_coefficient_info(scene)[0]
     if "lubricant" not in scene.tribology or not k > 0:
         return None, None

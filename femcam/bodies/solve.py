@@ -194,6 +194,7 @@ def solve_ring(model, *, F: float, rho: float, cage: float = 0.0, max_secant: in
     cage = _validate.number("cage", cage, "rad")
     max_secant = _validate.integer("max_secant", max_secant, 1, "iterations")
     tol = _validate.nonnegative("tol", tol, "")  # 0: iterate max_secant times
+    _validate.record("model", model, "a RingModel (RingModel.build)", "bearing", "nc")
     if math.isfinite(rho) and -model.bearing.Ro <= rho < 0:
         raise _validate.fail("rho", rho, "m", "must be nonzero and not a concave cam tighter than the roller")
     b = model.bearing

@@ -261,6 +261,8 @@ def rpm_sweep(train: TrainModel, program: CamProgram, rpm, *, steps_per_rev=None
         number >= 1.
     """
     rpm = np.atleast_1d(_validate.finite_array("rpm", rpm, "rpm"))
+    _validate.instance("train", train, TrainModel)
+    _validate.record("program", program, "a femcam.kinematics.CamProgram", "derivatives")
     if np.any(rpm <= 0):
         raise _validate.fail("rpm", float(rpm[rpm <= 0][0]), "rpm", "every speed must be > 0")
     workers = _whole("workers", workers, 1)

@@ -411,6 +411,7 @@ def check_resolution(train: TrainModel, omega: float, N: int) -> str | None:
     """
     omega = _validate.positive("omega", omega, "rad/s")
     N = _validate.integer("N", N, 1, "steps per revolution")
+    _validate.instance("train", train, TrainModel)
     h = 2.0 * math.pi / (omega * N)
     for contact in (True, False):
         lam = np.linalg.eigvals(train.state_space(contact)[0])

@@ -65,6 +65,7 @@ def strip_for_scene(scene, *, nx: int = 64, ny: int = 128, tol: float = 1e-5) ->
         If the follower is not a roller (``Rr`` not > 0).
     """
     _validate.positive("tol", tol, "")  # checked before the 720-angle design-load analysis
+    _validate.record("scene", scene, "a femcam.scene.Scene", "follower", "analyse")
     Rr = getattr(scene.follower, "Rr", 0.0)
     if not Rr > 0.0:
         raise InputError(f"follower = {type(scene.follower).__name__}: the finite-length half-space "
@@ -114,6 +115,7 @@ def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float 
         ``"non_hertzian"``.
     """
     th = _validate.finite_array("theta", np.atleast_1d(theta), "rad").ravel()
+    _validate.record("scene", scene, "a femcam.scene.Scene", "follower", "analyse")
     fl = strip or strip_for_scene(scene, nx=nx, ny=ny, tol=tol)   # refuses a non-roller follower
     st = scene.analyse(th)
     Rr = scene.follower.Rr

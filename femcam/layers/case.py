@@ -228,6 +228,7 @@ def case_margin(case: Case, z, tau) -> CaseMargin:
     """
     z = _validate.finite_array("z", z, "m")
     tau = _validate.finite_array("tau", tau, "Pa")
+    _validate.instance("case", case, Case)
     if z.shape != tau.shape or z.size == 0:
         raise _validate.fail("tau", tau.shape, "", f"must have the shape of z {z.shape} (non-empty)")
     u = np.abs(tau) / case.shear_strength(z)

@@ -178,6 +178,7 @@ def layer_rows(model, F, rho, mu, *, coating: Coating | None = None, coat_body: 
         raise InputError("layer_rows: give a coating and/or a case (nothing to check)")
     tau_i = coating.require("interface_shear_strength") if coating is not None else None
     Hc = coating.require("hardness") if coating is not None else None
+    _validate.record("model", model, "a ContactModel (femcam.fe or build_coated_model)", "solve", "bodies")
     n = F.size
     cols = ("interface_tau_max_MPa", "interface_sn_min_MPa", "interface_sn_max_MPa",
             "interface_utilisation", "coating_sx_max_MPa", "coating_sx_utilisation",

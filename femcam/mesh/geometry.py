@@ -128,6 +128,7 @@ def body_layout(name: str, R: float, L: float, a_ref: float, opts: MeshOptions) 
     """
     _validate.radius("R", R, "m")
     L = _validate.positive("L", L, "m")
+    _validate.instance("opts", opts, MeshOptions)
     a_ref = _validate.positive("a_ref", a_ref, "m")
     h = a_ref / opts.a_over_h
     xf = opts.fine_half_width * a_ref

@@ -143,6 +143,8 @@ def run_tasks(fn: Callable, tasks: Iterable, *, workers: int = 1, scheduler=None
     tuple[int, object]
         ``(index in tasks, fn(task))`` in completion order.
     """
+    if not callable(fn):
+        raise _validate.fail("fn", fn, "", "must be a module-level function of one task")
     tasks = list(tasks)
     if not tasks:
         return

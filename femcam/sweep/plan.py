@@ -217,6 +217,7 @@ def plan_families(F, rho, cp: ContactParams, tolerance: float, contact: np.ndarr
     """
     F, rho = contact_rows(F, rho, contact)
     tolerance = _validate.positive("tolerance", tolerance, "")
+    _validate.record("cp", cp, "a ContactParams (femcam.sweep.options.contact_params)", "Rr", "length")
     fam = np.full(F.shape, -1, dtype=int)
     refs: dict[int, tuple[float, float]] = {}
     idx = np.flatnonzero(contact)

@@ -95,6 +95,7 @@ def direct_profile(program, Rb: float, theta):
     phi : ndarray
         Pressure angle (rad), from :func:`femcam.profile.cam_profile` (Norton eq. 8.31).
     """
+    _validate.record("program", program, "a femcam.kinematics.CamProgram", "derivatives")
     s, s1, s2 = derivatives(program, theta)
     p = cam_profile(KnifeEdgeFollower(Rb=Rb), theta, s, s1, s2, allow_undercut=True)
     return np.hypot(p.x, p.y), p.phi
@@ -147,6 +148,8 @@ def compare_direct(result: SynthesisResult, program, *, n_dense: int = 72001) ->
         Deviations (m, rad) and times (s).
     """
     n_dense = _validate.integer("n_dense", n_dense, 2, "points")
+    _validate.instance("result", result, SynthesisResult, "a SynthesisResult (synthesize_knife_edge)")
+    _validate.record("program", program, "a femcam.kinematics.CamProgram", "derivatives")
     t0 = time.perf_counter()
     r_d, phi_d = direct_profile(program, result.Rb, result.theta)
     t_direct = time.perf_counter() - t0

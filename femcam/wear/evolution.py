@@ -223,6 +223,7 @@ def evolution_case(scene, theta, *, k: float | None = None) -> EvolutionCase:
     InputError
         A follower other than a roller, or ``k < 0``.
     """
+    _validate.record("scene", scene, "a femcam.scene.Scene", "follower", "analyse")
     kind = type(scene.follower).__name__
     if kind != "RollerFollower":
         raise _validate.fail("follower type", getattr(scene.follower, "kind", kind), "",

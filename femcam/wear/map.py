@@ -370,6 +370,7 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
     length = _validate.positive("length", length, "m")
     cycles = _validate.nonnegative("cycles", cycles, "revolutions")
     n_grid = _validate.optional(_validate.integer, "n_grid", n_grid, 2, "(grid points)")
+    _validate.instance("slip", slip, SlipResult)
     skipped: list = []
     theta, a, p0, Fc = contact_columns(source, pressure=pressure, missing=missing, skipped=skipped)
     n = theta.size
@@ -479,6 +480,7 @@ def wear_depth_per_angle(theta, a, p0, Fc, slip: SlipResult, k, *, missing: str 
     _validate.choice("missing", missing, ("zero", "nan", "raise"))
     _validate.finite_array("theta", theta, "rad")
     k = _validate.nonnegative("k", k, "m^3/(N m)")
+    _validate.instance("slip", slip, SlipResult)
     a_in, p_in, F_in = (_validate.data_array(n, x, u) for n, x, u in
                         (("a", a, "m"), ("p0", p0, "Pa"), ("Fc", Fc, "N")))   # NaN: a failed solve
     _, a_, p_, _ = contact_columns({"theta": theta, "a": a_in, "p0": p_in, "Fc": F_in},
