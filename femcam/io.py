@@ -532,6 +532,7 @@ def write_hertz_vtu(path, hc: LineContact, n: int = 41, wear: dict | None = None
         ``sx, sz, sy, -txz, 0, 0``), ``tau1_Pa``, ``von_mises_Pa``, ``contact_pressure_Pa``; the cam
         lies below the surface (``y = -z``).
     """
+    n = _validate.integer("n", n, 2, "grid points")
     a = float(hc.a)
     xs = np.linspace(-3 * a, 3 * a, 2 * n - 1)
     zs = np.linspace(0.0, 3 * a, n)

@@ -27,6 +27,7 @@ import importlib
 import inspect
 import math
 import pkgutil
+import tempfile
 import warnings
 from pathlib import Path
 
@@ -62,7 +63,8 @@ def opt(kinds):
 class Case:
     """A valid call and the numeric parameters to corrupt.
 
-    base : callable() -> (args, kwargs), the valid call (built fresh for every fault)
+    base : callable() -> (args, kwargs), the valid call (built fresh for every fault); None
+        where the valid call needs a built FE model (its own test module solves one)
     numeric : {param: fault kinds}
     slow : the valid base call meshes or solves an FE model (marked slow)
     fault_base : callable() -> (args, kwargs) used instead of ``base`` for the faults (a
@@ -190,6 +192,10 @@ CASES: dict[str, Case] = {
         {"theta": REAL, "s": REAL, "v": REAL, "a": REAL, "phi": REAL + (2.0,)}),
     # femcam.io
     "femcam.io.vtu_name": Case(kw(theta=0.5), {"theta": REAL}),
+    "femcam.io.write_hertz_vtu": Case(
+        lazy(lambda: dict(path=Path(tempfile.mkdtemp()) / "hertz.vtu", hc=_line_contact(), n=5)),
+        {"n": INT_POS}, slow=True,
+        fault_base=lazy(lambda: dict(path=Path("unused.vtu"), hc=None, n=5))),
     # femcam.assess
     "femcam.assess.assess": Case(lazy(lambda: dict(scene=scene("seed002_assess"), theta=TH)),
                                  {"theta": opt(REAL)}),
@@ -224,10 +230,10 @@ CASES: dict[str, Case] = {
                           rho=np.full(1, 0.02))),
         {"theta": REAL, "Fc": MISSING, "rho": RADIUS}, slow=True),
     "femcam.bodies.solve_cam_disk": Case(
-        lazy(lambda: dict(model=None, F=1000.0)), {"F": POS}, slow=True,
+        None, {"F": POS}, slow=True,
         fault_base=lazy(lambda: dict(model=bare(object), F=1000.0))),
     "femcam.bodies.solve_ring": Case(
-        lazy(lambda: dict(model=None, F=1000.0, rho=0.02)),
+        None,
         {"F": POS, "rho": RADIUS, "cage": REAL, "max_secant": INT_POS, "tol": NONNEG}, slow=True,
         fault_base=lazy(lambda: dict(model=bare(object), F=1000.0, rho=0.02))),
     # femcam.dynamics
@@ -342,7 +348,7 @@ CASES: dict[str, Case] = {
         lazy(lambda: dict(case=_case(), z=np.array([1e-4, 5e-4]), tau=np.array([3e8, 2e8]))),
         {"z": NONNEG, "tau": REAL}),
     "femcam.layers.layer_rows": Case(
-        lazy(lambda: dict(model=None, F=1500.0, rho=0.02, mu=0.1)),
+        None,
         {"F": NONNEG, "rho": RADIUS, "mu": NONNEG}, slow=True,
         fault_base=lazy(lambda: dict(model=bare(object), F=1500.0, rho=0.02, mu=0.1))),
     "femcam.layers.scene_layer_rows": Case(
@@ -421,7 +427,7 @@ CASES: dict[str, Case] = {
         {"Rb": POS, "samples_per_element": INT_POS}, slow=True),
     "femcam.synthesis.seed003_program": Case(kw(h=0.003), {"h": POS}),
     "femcam.synthesis.compare_direct": Case(
-        lazy(lambda: dict(result=None, program=_seed003())), {"n_dense": INT_POS}, slow=True,
+        None, {"n_dense": INT_POS}, slow=True,
         fault_base=lazy(lambda: dict(result=synthesis_result_stub(), program=_seed003()))),
     "femcam.synthesis.direct_profile": Case(lazy(lambda: dict(program=_seed003(), Rb=0.03,
                                                               theta=TH)),
@@ -535,6 +541,12 @@ CASES: dict[str, Case] = {
 }
 
 
+def _line_contact():
+    from femcam.hertz import LineContact
+
+    return LineContact(F=1500.0, length=0.01, R1=0.02, R2=0.01, cam=steel(), roller=steel())
+
+
 def _coating():
     from femcam.layers import Coating
 
@@ -618,7 +630,6 @@ NOT_AN_INPUT: dict[str, str] = {
     "femcam.sweep.default_cache": "no arguments",
     "femcam.sweep.parse_angles_deg": "parses a 'start:stop:step' string (tests/test_cli_errors.py)",
     "femcam.tribology.lubricant": "looks a lubricant up by name",
-    "femcam.io.write_hertz_vtu": "writes a checked LineContact; n is a sample count",
 }
 
 # ----------------------------------------------------------------------------- discovery
@@ -779,7 +790,7 @@ N_FAULTS = sum(len(k) for c in CASES.values() for k in c.numeric.values())
 
 FAST = [n for n, c in CASES.items() if not c.slow]
 SLOW = [pytest.param(n, marks=pytest.mark.slow) for n, c in CASES.items() if c.slow
-        and c.fault_base is None]
+        and c.base is not None]
 
 
 @pytest.mark.parametrize("name", FAST + SLOW)
