@@ -661,6 +661,7 @@ def solve_contact(F: float, rho: float, Rr: float, cam: Material, roller: Materi
     ContactResult
         The solved load case (see :meth:`ContactModel.solve`).
     """
+    ContactModel._check_inputs(F, rho, mu, sliding, None, 0)  # before the mesh is built
     if a_ref is None:
         aH, _ = _hertz(_validate.nonnegative("F", F, "N"), _validate.positive("length", length, "m"),
                        _radius("rho", rho),
