@@ -27,6 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import _validate
 from ..errors import InputError
 from ..hertz import HertzValidityWarning, LineContact
 from ..profile import RollerFollower
@@ -240,7 +241,7 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
     """
     inp = inputs or assessment_inputs(scene, lubricated=lubricated)
     table = getattr(table, "table", table)                   # a SweepResult or its table mapping
-    theta = np.atleast_1d(np.asarray(theta, float))
+    theta = np.atleast_1d(_validate.finite_array("theta", theta, "rad"))
     n = theta.size
     sc, R2, tip = _geometry(scene)
     st = sc.analyse(theta)
@@ -424,6 +425,9 @@ def wear_factor(scene, theta, table=None, tip_radius=None):
     regime : ndarray of str, shape (n,), or None
         ``boundary`` / ``mixed`` / ``full`` per angle (``no contact`` where ``Fc = 0``).
     """
+    theta = _validate.finite_array("theta", theta, "rad")
+    tip_radius = _validate.optional(_validate.positive, "tip_radius", tip_radius, "m")
+    _validate.record("scene", scene, "a femcam.scene.Scene", "follower", "analyse")
     k = wear_coefficient_info(scene)[0]
     if "lubricant" not in scene.tribology or not k > 0:
         return None, None

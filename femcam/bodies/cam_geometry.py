@@ -40,8 +40,8 @@ FITS = ("contact", "bonded")
 
 
 def _check_outline(outline) -> np.ndarray:
-    o = np.asarray(outline, dtype=float)
-    if o.ndim != 2 or o.shape[0] != 2 or o.shape[1] < 16 or not np.all(np.isfinite(o)):
+    o = _validate.finite_array("outline", outline, "m")
+    if o.ndim != 2 or o.shape[0] != 2 or o.shape[1] < 16:
         raise InputError(f"outline: shape {o.shape}: must be (2, N >= 16) finite points (m)")
     ang = np.arctan2(o[1], o[0])
     order = np.argsort(ang)

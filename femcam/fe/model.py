@@ -106,6 +106,7 @@ class SolverOptions:
 
     def __post_init__(self):
         _validate.choice("ordering", self.ordering, ORDERINGS)
+        _validate.integer("max_iter", self.max_iter, 1, "iterations")
         _validate.in_range("max_iter", self.max_iter, 1, 10000, "")
         _validate.positive("tol", self.tol, "")
         lo = _validate.positive("a_range[0]", self.a_range[0], "")
@@ -664,6 +665,7 @@ def solve_contact(F: float, rho: float, Rr: float, cam: Material, roller: Materi
     ContactResult
         The solved load case (see :meth:`ContactModel.solve`).
     """
+    ContactModel._check_inputs(F, rho, mu, sliding, None, 0)  # before the mesh is built
     if a_ref is None:
         aH, _ = _hertz(_validate.nonnegative("F", F, "N"), _validate.positive("length", length, "m"),
                        _radius("rho", rho),

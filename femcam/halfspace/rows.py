@@ -94,6 +94,8 @@ def strip_for_scene(scene, *, nx: int = 64, ny: int = 128, tol: float = 1e-5) ->
     InputError
         If the follower is not a roller (``Rr`` not > 0).
     """
+    _validate.positive("tol", tol, "")  # checked before the 720-angle design-load analysis
+    _validate.record("scene", scene, "a femcam.scene.Scene", "follower", "analyse")
     Rr = getattr(scene.follower, "Rr", 0.0)
     if not Rr > 0.0:
         raise InputError(f"follower = {type(scene.follower).__name__}: the finite-length half-space "
@@ -152,6 +154,7 @@ def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float 
     th = _validate.finite_array("theta", np.atleast_1d(theta), "rad").ravel()
     if start not in STARTS:
         raise _validate.fail("start", start, "", f"must be one of {', '.join(STARTS)}")
+    _validate.record("scene", scene, "a femcam.scene.Scene", "follower", "analyse")
     fl = strip or strip_for_scene(scene, nx=nx, ny=ny, tol=tol)   # refuses a non-roller follower
     st = scene.analyse(th)
     Rr = scene.follower.Rr

@@ -38,7 +38,7 @@ import numpy as np
 
 from .. import _validate
 from ..materials import PLANES
-from .subsurface import StressField, unit_stresses
+from .subsurface import StressField, _unit_stresses
 
 _X_BOUNDS = (-2.0, 2.0)
 _Z_BOUNDS = (0.0, 2.0)
@@ -105,7 +105,7 @@ class ScaledMaximum:
 
 
 def _measure(quantity, X, Z, mu, nu, plane):
-    sx, sz, txz = unit_stresses(X, Z, mu)
+    sx, sz, txz = _unit_stresses(X, Z, mu)  # X, Z, mu checked by the callers
     if quantity == "txz":
         return np.abs(txz)
     if quantity == "tau1":
@@ -271,7 +271,7 @@ def max_orthogonal_shear(mu: float = 0.0) -> StressMaximum:
 
 def _pass_range(X, Z, mu):
     """``(range, x of the largest txz)`` of ``txz / p0`` along the rows ``Z`` (units of a)."""
-    t = unit_stresses(X[None, :], Z[:, None], mu)[2]
+    t = _unit_stresses(X[None, :], Z[:, None], mu)[2]
     return t.max(axis=1) - t.min(axis=1), X[np.argmax(t, axis=1)]
 
 
@@ -280,7 +280,7 @@ def _x_extreme(z, x0, h, sign, mu, tol=1e-11):
     best = -np.inf
     while h > tol:
         xs = np.linspace(x0 - h, x0 + h, 21)
-        t = sign * unit_stresses(xs, z, mu)[2]
+        t = sign * _unit_stresses(xs, z, mu)[2]
         k = int(np.argmax(t))
         if t[k] >= best:
             best, x0 = float(t[k]), float(xs[k])
@@ -304,7 +304,7 @@ def _shear_range(mu: float, n_x: int = 601, n_z: int = 61) -> StressMaximum:
             best, z0 = float(rr[k]), float(zs[k])
         h = float(zs[1] - zs[0])
     # the x extremes at that depth, refined off the grid (the range is flat in z at its maximum)
-    t = unit_stresses(X, z0, mu)[2]
+    t = _unit_stresses(X, z0, mu)[2]
     hi, x = _x_extreme(z0, X[int(np.argmax(t))], X[1] - X[0], 1.0, mu)
     lo, _ = _x_extreme(z0, X[int(np.argmin(t))], X[1] - X[0], -1.0, mu)
     value, x = max(best, hi - lo), min(max(x, -3.0), 3.0)

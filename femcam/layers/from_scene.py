@@ -172,6 +172,7 @@ def scene_layer_rows(scene, theta, *, a_over_h: float = 10.0) -> dict:
     if lay["coating"] is None and lay["case"] is None:
         raise InputError(f"scene {scene.name!r} has no [materials.<body>.coating] or .case table")
     theta = _validate.finite_array("theta", theta, "rad").ravel()
+    a_over_h = _validate.positive("a_over_h", a_over_h, "")
     st = scene.analyse(theta)
     sliding = -1 if scene.sliding == "-x" else 1
     cases = []   # (grading, j, F, rho, a) of the angles in contact, solved bin by bin

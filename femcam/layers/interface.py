@@ -172,14 +172,15 @@ def layer_rows(model, F, rho, mu, *, coating: Coating | None = None, coat_body: 
     InputError
         Neither ``coating`` nor ``case``.
     """
-    F, rho, mu = np.broadcast_arrays(np.atleast_1d(_validate.finite_array("F", F, "N")),
-                                     _validate.finite_array("rho", rho, "m"),
-                                     _validate.finite_array("mu", mu, ""))
+    F, rho, mu = np.broadcast_arrays(np.atleast_1d(_validate.nonnegative_array("F", F, "N")),
+                                     _validate.radius_array("rho", rho, "m"),
+                                     _validate.nonnegative_array("mu", mu, ""))
     if coating is None and case is None:
         raise InputError("layer_rows: give a coating and/or a case (nothing to check)")
     # the stresses need no strength; only the utilisations do (NaN without it)
     tau_i = coating.interface_shear_strength if coating is not None else None
     Hc = coating.hardness if coating is not None else None
+    _validate.record("model", model, "a ContactModel (femcam.fe or build_coated_model)", "solve", "bodies")
     n = F.size
     cols = ("interface_tau_max_MPa", "interface_sn_min_MPa", "interface_sn_max_MPa",
             "interface_utilisation", "coating_sx_max_MPa", "coating_sx_utilisation",

@@ -120,9 +120,7 @@ def build_contact_mesh(*, Rr: float, rho: float, a_ref: float,
     opts = options or MeshOptions()
     Rr = _validate.positive("Rr", Rr, "m")
     a_ref = _validate.positive("a_ref", a_ref, "m")
-    rho = float(rho)
-    if math.isnan(rho) or rho == 0.0:
-        raise _validate.fail("rho", rho, "m", "must be nonzero (use inf for a flat cam)")
+    rho = _validate.radius("rho", rho, "m")
     if roller_does_not_fit(rho, Rr):
         raise _validate.fail(_RHO, rho, "m", f"a concave cam needs |rho| > Rr = {Rr:g} m ([follower] "
                              "roller_radius_mm; else the roller does not fit)")

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import _validate
 from ..errors import InputError
 from .options import MeshOptions
 
@@ -36,7 +37,8 @@ def surface_height(x, R):
     >>> round(float(surface_height(0.006, 0.01)) * 1e3, 6)
     2.0
     """
-    x = np.asarray(x, dtype=float)
+    x = _validate.finite_array("x", x, "m")
+    R = _validate.radius("R", R, "m")
     k = 0.0 if math.isinf(R) else 1.0 / R
     return k * x**2 / (1.0 + np.sqrt(np.maximum(1.0 - (k * x) ** 2, 0.0)))
 
@@ -124,6 +126,10 @@ def body_layout(name: str, R: float, L: float, a_ref: float, opts: MeshOptions) 
     InputError
         The body is too small for the fine zone.
     """
+    _validate.radius("R", R, "m")
+    L = _validate.positive("L", L, "m")
+    _validate.instance("opts", opts, MeshOptions)
+    a_ref = _validate.positive("a_ref", a_ref, "m")
     h = a_ref / opts.a_over_h
     xf = opts.fine_half_width * a_ref
     n_fine = int(round(2 * xf / h))

@@ -9,6 +9,7 @@ import threading
 import time
 from collections import OrderedDict
 
+from .. import _validate
 from ..errors import FemcamError
 from ..fe import ContactModel, ContactResult, SolverOptions
 from ..mesh import MeshOptions
@@ -38,7 +39,7 @@ class ModelCache:
     """
 
     def __init__(self, max_models: int = 64):
-        self.max_models = int(max_models)
+        self.max_models = _validate.integer("max_models", max_models, 1, "models")
         self._models: OrderedDict = OrderedDict()
         #: ``id(model) -> {(F, rho, mu, sliding): ContactResult}`` (lives as long as its model)
         self._results: dict[int, dict] = {}

@@ -32,10 +32,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .. import _validate
 from ..errors import FemcamError
 from .cache import ModelCache, default_cache
 from .options import ContactParams, SweepOptions
-from .plan import curvature_ratio, family_reference, hertz_half_width, initial_groups
+from .plan import contact_rows, curvature_ratio, family_reference, hertz_half_width, initial_groups
 from .realcam import traction_args
 
 __all__ = ["ESTIMATE_MARGIN", "MAX_SCAN", "N_CHECKS", "FamilyRecord", "check_angles",
@@ -260,9 +261,9 @@ def verify_families(F, rho, theta, cp: ContactParams, options: SweepOptions,
         One per family, ids in order.
     """
     cache = default_cache() if cache is None else cache
-    F = np.asarray(F, float)
-    rho = np.asarray(rho, float)
-    theta = np.asarray(theta, float)
+    F, rho = contact_rows(F, rho, contact)
+    theta = _validate.finite_array("theta", theta, "rad")
+    n_checks = _validate.integer("n_checks", n_checks, 1, "checks")
     fam = np.full(F.shape, -1, dtype=int)
     idx = np.flatnonzero(contact)
     if idx.size == 0:

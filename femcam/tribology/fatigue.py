@@ -275,7 +275,9 @@ def sn_cycles(p0, strength, *, N_ref=SN_CYCLES_ISO6336, m=SN_EXPONENT_ISO6336):
     >>> f"{float(sn_cycles(1.6e9, 1.0e9)):.3g}"      # Z_NT = 1.6 at 1e5 cycles
     '1e+05'
     """
-    p0 = np.asarray(p0, float)
+    p0 = _validate.nonnegative_array("p0", p0, "Pa")
     strength = _validate.positive("strength", strength, "Pa")
+    N_ref = _validate.positive("N_ref", N_ref, "")
+    m = _validate.positive("m", m, "")
     with np.errstate(divide="ignore"):
         return np.where(p0 > 0, N_ref * (strength / np.where(p0 > 0, p0, 1.0)) ** m, np.inf)
