@@ -1,0 +1,127 @@
+"""Sphinx configuration of the femcam documentation site.
+
+Build it (warnings are errors, as in CI) from the repository root::
+
+    python -m pip install -e ".[docs]"
+    python -m sphinx -W --keep-going -b html docs docs/_build/html
+
+The pages are the Markdown files of ``docs/`` (read by myst-parser), the API reference is made
+by autodoc from the numpydoc docstrings, and the gallery is made by sphinx-gallery from
+``examples/*.py``, which it runs during the build.
+"""
+
+from __future__ import annotations
+
+import importlib
+import inspect
+import sys
+from pathlib import Path
+
+DOCS = Path(__file__).resolve().parent
+ROOT = DOCS.parent
+sys.path.insert(0, str(ROOT))  # document this checkout's femcam, not another installed copy
+
+import femcam  # noqa: E402
+
+project = "femcam"
+author = "femcam developers"
+copyright = "femcam developers"  # noqa: A001  (the name Sphinx reads)
+version = release = femcam.__version__
+
+extensions = [
+    "myst_parser",
+    "sphinx.ext.autodoc",
+    "sphinx.ext.autosummary",
+    "sphinx.ext.mathjax",
+    "numpydoc",
+    "sphinx_gallery.gen_gallery",
+]
+
+source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
+root_doc = "index"
+templates_path = ["_templates"]
+exclude_patterns = [
+    "_build",
+    "readme",  # internal drafts, not part of the published site
+    "gallery/*.py",  # sphinx-gallery's copies of the example scripts
+    "gallery/*.ipynb",
+    "gallery/*.md5",
+]
+
+# --- Markdown pages (myst-parser) ---
+# "dollarmath" for $...$ and $$...$$, "colon_fence" for ::: directives; anchors for the
+# "[text](page.md#section)" links the pages use between themselves.
+myst_enable_extensions = ["dollarmath", "colon_fence"]
+myst_heading_anchors = 4
+
+# --- API reference (autodoc + numpydoc) ---
+autodoc_default_options = {"members": True, "member-order": "bysource"}
+autodoc_typehints = "none"  # the numpydoc "Parameters" sections carry types and units
+autosummary_generate = True
+autosummary_imported_members = False
+# numpydoc: no per-method autosummary tables inside each class (autodoc already lists the
+# members); parameter types are prose ("float, m"), not cross-reference targets.
+numpydoc_show_class_members = False
+numpydoc_class_members_toctree = False
+numpydoc_xref_param_type = False
+
+
+#: the packages of the API reference (docs/api.md lists the same; tests/test_docs.py checks both)
+API_PACKAGES = [
+    "femcam", "femcam.errors", "femcam.materials", "femcam.kinematics", "femcam.profile",
+    "femcam.loads", "femcam.dynamics", "femcam.halfspace", "femcam.scene", "femcam.hertz",
+    "femcam.tribology", "femcam.mesh", "femcam.fe", "femcam.layers", "femcam.bodies", "femcam.wear",
+    "femcam.assess", "femcam.synthesis", "femcam.io", "femcam.viz", "femcam.sweep",
+]
+
+
+def _home(obj, default: str) -> str:
+    """The API package whose page documents ``obj``: the longest package name its module
+    starts with (a name re-exported by several packages is documented once, where it is defined)."""
+    mod = obj.__name__ if inspect.ismodule(obj) else getattr(obj, "__module__", None)
+    if not isinstance(mod, str) or not mod.startswith("femcam"):
+        return default
+    found = [p for p in API_PACKAGES if mod == p or mod.startswith(p + ".")]
+    return max(found, key=len) if found else default
+
+
+def _elsewhere() -> dict[str, list[tuple[str, str]]]:
+    """For each API package, ``(name, reST link)`` of the names in its ``__all__`` that another
+    package's page documents; the page lists them as links instead of a second copy."""
+    out = {}
+    for pkg in API_PACKAGES:
+        mod = importlib.import_module(pkg)
+        out[pkg] = []
+        for n in getattr(mod, "__all__", ()):
+            obj = getattr(mod, n)
+            home = _home(obj, pkg)
+            if n.startswith("__") or home == pkg:
+                continue
+            link = f":py:mod:`{home}`" if inspect.ismodule(obj) else f":py:obj:`{home}.{n}`"
+            out[pkg].append((n, link))
+    return out
+
+
+autosummary_context = {"elsewhere": _elsewhere()}
+
+# --- Gallery (sphinx-gallery) ---
+# Every examples/*.py is a narrated script, executed during the build; its figures are
+# rendered into docs/gallery/ (generated, git-ignored). A failing example fails the build.
+sphinx_gallery_conf = {
+    "examples_dirs": str(ROOT / "examples"),
+    "gallery_dirs": str(DOCS / "gallery"),
+    "filename_pattern": r"\.py$",
+    "ignore_pattern": r"__init__\.py",
+    "download_all_examples": False,
+    "remove_config_comments": True,
+    "within_subsection_order": "FileNameSortKey",
+    "matplotlib_animations": False,
+    "image_scrapers": ("matplotlib",),
+    "show_memory": False,
+}
+
+# --- HTML ---
+html_theme = "furo"
+html_title = f"femcam {release}"
+html_static_path: list[str] = []
+html_show_sourcelink = False
