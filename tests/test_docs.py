@@ -1,0 +1,102 @@
+"""The docs site (docs/conf.py) publishes every page and every public package, and the examples
+written on its pages run as printed.
+
+The full Sphinx build (warnings as errors, the gallery executed) runs in CI (.ci/run); these checks
+are the cheap part of it:
+
+* every ``docs/*.md`` page is in the index's toctree (by name, or by its ``*`` glob), and the
+  internal drafts of ``docs/readme/`` are excluded from the site;
+* the API reference (``docs/api.md``) lists the packages ``API_PACKAGES`` of ``docs/conf.py``, and
+  those are every public subpackage of femcam (all but the command line, documented by
+  ``femcam --help``);
+* the ``pycon`` blocks of the pages are doctests: they run, a page's blocks in one namespace from
+  the top as a reader types them, with the expected output checked (the docstrings' doctests run
+  through ``--doctest-modules``). Blocks written as ``python`` are sketches of the API and are not run.
+"""
+
+from __future__ import annotations
+
+import ast
+import doctest
+import pkgutil
+import re
+import shutil
+from pathlib import Path
+
+import pytest
+
+import femcam
+
+ROOT = Path(__file__).resolve().parents[1]
+DOCS = ROOT / "docs"
+#: subpackages left out of the API reference, with the reason
+NOT_IN_API = {"cli": "the command line; its reference is `femcam --help` and the guide pages"}
+
+
+def _conf(name: str):
+    """The literal value assigned to ``name`` in docs/conf.py (read, not imported: no Sphinx needed)."""
+    tree = ast.parse((DOCS / "conf.py").read_text(encoding="utf-8"))
+    for node in tree.body:
+        targets = node.targets if isinstance(node, ast.Assign) else [getattr(node, "target", None)]
+        if any(isinstance(t, ast.Name) and t.id == name for t in targets) and node.value is not None:
+            return ast.literal_eval(node.value)
+    raise AssertionError(f"docs/conf.py assigns no {name}")
+
+
+def _toctree_entries(page: Path) -> list[str]:
+    text = page.read_text(encoding="utf-8")
+    entries = []
+    for block in re.findall(r"^```\{toctree\}\n(.*?)^```", text, re.S | re.M):
+        entries += [ln.strip() for ln in block.splitlines() if ln.strip() and not ln.startswith(":")]
+    return entries
+
+
+def test_every_page_is_in_the_index_toctree():
+    entries = _toctree_entries(DOCS / "index.md")
+    assert entries, "docs/index.md has no toctree"
+    pages = sorted(p.stem for p in DOCS.glob("*.md") if p.stem != "index")
+    missing = [p for p in pages if p not in entries and "*" not in entries]
+    assert not missing, f"docs pages in no toctree of docs/index.md: {missing}"
+    named = [e for e in entries if "*" not in e and not e.startswith("gallery/")]
+    assert not [e for e in named if not (DOCS / f"{e}.md").is_file()], "toctree names a missing page"
+    assert "gallery/index" in entries, "the gallery is not in the index's toctree"
+
+
+def test_internal_drafts_are_not_published():
+    assert "readme" in _conf("exclude_patterns")
+
+
+def test_api_reference_lists_every_public_package():
+    listed = _conf("API_PACKAGES")
+    public = {f"femcam.{m.name}" for m in pkgutil.iter_modules(femcam.__path__)
+              if not m.name.startswith("_") and m.name not in NOT_IN_API}
+    assert set(listed) == public | {"femcam"}, (
+        f"docs/conf.py API_PACKAGES vs femcam's public packages: missing {sorted(public - set(listed))}, "
+        f"unknown {sorted(set(listed) - public - {'femcam'})}")
+    api = (DOCS / "api.md").read_text(encoding="utf-8")
+    in_api = re.findall(r"^   (femcam[\w.]*)$", api, re.M)
+    assert in_api == listed, "docs/api.md's autosummary list differs from docs/conf.py API_PACKAGES"
+
+
+def _pycon_pages() -> list[Path]:
+    return [p for p in sorted(DOCS.glob("*.md")) if "```pycon" in p.read_text(encoding="utf-8")]
+
+
+def test_some_pages_carry_doctests():
+    assert len(_pycon_pages()) >= 2
+
+
+@pytest.mark.parametrize("page", _pycon_pages(), ids=lambda p: p.name)
+def test_page_examples_run_as_printed(page, tmp_path, monkeypatch):
+    shutil.copytree(ROOT / "examples", tmp_path / "examples")  # pages load examples/*.toml
+    monkeypatch.chdir(tmp_path)
+    text = page.read_text(encoding="utf-8")
+    parser = doctest.DocTestParser()
+    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    globs: dict = {}
+    report: list[str] = []
+    for m in re.finditer(r"^```pycon\n(.*?)^```", text, re.S | re.M):
+        line = text.count("\n", 0, m.start()) + 1
+        test = parser.get_doctest(m.group(1), globs, f"{page.name}:{line}", str(page), line)
+        runner.run(test, out=report.append, clear_globs=False)
+    assert runner.failures == 0, "".join(report)
