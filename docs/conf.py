@@ -16,6 +16,7 @@ import importlib
 import inspect
 import re
 import sys
+import types
 from pathlib import Path
 
 DOCS = Path(__file__).resolve().parent
@@ -44,6 +45,7 @@ templates_path = ["_templates"]
 exclude_patterns = [
     "_build",
     "readme",  # internal drafts, not part of the published site
+    "sg_execution_times.rst",  # sphinx-gallery's timing page, if an older build left one
 ]
 
 # --- Markdown pages (myst-parser) ---
@@ -107,6 +109,20 @@ def _elsewhere() -> dict[str, list[tuple[str, str]]]:
 
 autosummary_context = {"elsewhere": _elsewhere(), "api_packages": API_PACKAGES}
 
+
+
+def _skip_type_alias(app, what, name, obj, skip, options):
+    """Leave type aliases (``femcam.io.Column = tuple[str, str, float]``) out of the API pages:
+    numpydoc gives a callable alias a signature, on which Sphinx 9 fails ("error while formatting
+    signature", Sphinx issue 14576); the module docstrings describe them in words."""
+    return True if isinstance(obj, types.GenericAlias) else None
+
+
+def setup(app):
+    """Connect the hooks above."""
+    app.connect("autodoc-skip-member", _skip_type_alias)
+
+
 # --- Gallery (sphinx-gallery) ---
 # Every examples/*.py is a narrated script, executed during the build; its figures are
 # rendered into docs/gallery/ (generated, git-ignored). A failing example fails the build.
@@ -121,7 +137,14 @@ sphinx_gallery_conf = {
     "matplotlib_animations": False,
     "image_scrapers": ("matplotlib",),
     "show_memory": False,
+    "write_computation_times": False,  # the build log prints them; no extra page in the index glob
 }
+# sphinx-gallery needs the gallery's header (examples/GALLERY_HEADER.rst, written with the
+# scripts); a checkout without it gets a one-line gallery page, so the index's toctree stays whole.
+if not (ROOT / "examples" / "GALLERY_HEADER.rst").is_file():
+    extensions.remove("sphinx_gallery.gen_gallery")
+    (DOCS / "gallery").mkdir(exist_ok=True)
+    (DOCS / "gallery" / "index.rst").write_text("Gallery\n=======\n\nNo example scripts here.\n")
 
 # --- HTML ---
 html_theme = "furo"

@@ -42,9 +42,7 @@ from . import _validate
 from .fe.export import scene_arrays, stress_tensor, vtk_point_data
 from .hertz import LineContact
 
-# one column of a written table: (internal SI name, CSV column name, factor SI -> CSV unit);
-# a plain comment, not a "#:" doc comment: autodoc cannot document a callable type alias
-# (numpydoc gives it a signature, Sphinx issue 14576)
+#: one column of a written table: (internal SI name, CSV column name, factor SI -> CSV unit)
 Column = tuple[str, str, float]
 
 
