@@ -8,6 +8,12 @@ degrees, rpm, mm and MPa appear only at the edges (CLI, scene files, plot labels
 that use them.
 """
 
+# first: on the command line, Ctrl-C / SIGTERM during the imports below is one line and exit
+# 130 / 143, not a traceback (femcam._interrupt; stdlib only, a no-op for an importing program)
+from . import _interrupt  # noqa: E402, I001
+
+_interrupt.install_if_command_line()
+
 __version__ = "0.1.0"
 
 from . import sweep  # noqa: E402  (a callable package: femcam.sweep(scene, angles=...))

@@ -26,6 +26,7 @@ rpm_rigid  same for the rigid eq. 11 force              rpm    seed 002 eq. 11
 from __future__ import annotations
 
 import math
+import signal
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
@@ -220,6 +221,13 @@ def _one(args):
             r.message)
 
 
+def _worker_init() -> None:
+    """A pool worker leaves Ctrl-C to the parent (one line, exit 130) and ends at once on the
+    SIGTERM with which the pool stops it (a forked worker inherits the command line's handlers)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
 def rpm_sweep(train: TrainModel, program: CamProgram, rpm, *, steps_per_rev=None,
               max_cycles: int = 400, workers: int = 1) -> RpmSweep:
     """Periodic response at each speed of ``rpm`` (rpm); ``workers`` > 1 runs the speeds in
@@ -260,7 +268,7 @@ def rpm_sweep(train: TrainModel, program: CamProgram, rpm, *, steps_per_rev=None
     if workers == 1:
         rows = [_one(j) for j in jobs]
     else:
-        with ProcessPoolExecutor(max_workers=workers) as ex:
+        with ProcessPoolExecutor(max_workers=workers, initializer=_worker_init) as ex:
             rows = list(ex.map(_one, jobs, chunksize=max(1, len(jobs) // (4 * workers))))
     cols = list(zip(*rows, strict=True))
     out = {k: np.array(c) for k, c in zip(_KEYS, cols[:-1], strict=True)}

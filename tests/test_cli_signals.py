@@ -1,0 +1,104 @@
+"""Ctrl-C (SIGINT) and SIGTERM on the command line: every subcommand, at every moment (while
+Python imports numpy/scipy, while the subcommand modules load, while it computes), ends with
+exit 130 (SIGINT) or 143 (SIGTERM, 128 + 15, the shell's convention) and one line on stderr,
+never a traceback (femcam._interrupt).
+
+The reference is the convention itself (128 + signal number) and the one-line rule of the CLI.
+The moment a signal lands is set by a delay; under load a "compute" delay may still land
+during the imports, which the same assertions cover (both phases must give one line).
+"""
+
+import os
+import re
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+EX = ROOT / "examples"
+
+#: arguments of each subcommand that keep it computing for well over 10 s (killed before then)
+LONG = {
+    "run": ["run", str(EX / "seed002_cam_on_shaft.toml"), "--angles-deg", "0:360:0.0002", "--no-plots"],
+    "assess": ["assess", str(EX / "seed002_assess.toml"), "--angles-deg", "0:360:0.0005", "--no-plots"],
+    "dynamics": ["dynamics", str(EX / "seed002_dynamic.toml"), "--rpm-sweep", "100:20000:1",
+                 "--no-plots"],
+    "wear": ["wear", "map", str(EX / "seed002_cam_on_shaft.toml"), "--step-deg", "0.05",
+             "--evolve-blocks", "64", "--no-plots"],
+    "synth": ["synth", "--case", "seed003", "--elements", "4000", "--study"],
+    "sweep": ["sweep", str(EX / "seed002_cam_on_shaft.toml"), "--angles-deg", "0:360:0.5",
+              "--no-plots", "--workers", "1"],
+}
+
+#: one line: "femcam: interrupted" (while starting) or "femcam <cmd>: interrupted..." /
+#: "femcam <cmd>: terminated (SIGTERM)" (while working)
+LINE = re.compile(r"^femcam( [a-z]+)?: (interrupted|terminated)")
+
+
+def _signal_run(argv, delay_s, signum, out):
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    p = subprocess.Popen([sys.executable, "-m", "femcam", *argv, "--out", str(out)],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, cwd=ROOT)
+    time.sleep(delay_s)
+    p.send_signal(signum)
+    _, err = p.communicate(timeout=120)
+    return p.returncode, err.decode()
+
+
+def _check(code, err, signum):
+    want = {signal.SIGINT: 130, signal.SIGTERM: 143}[signum]
+    assert "Traceback" not in err, err
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and LINE.match(lines[0]), err
+    assert code == want, (code, err)
+
+
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
+def test_signal_during_imports_is_one_line(signum, tmp_path):
+    """While ``import femcam`` runs (the first ~0.5 s): 130 / 143 and one line."""
+    code, err = _signal_run(LONG["sweep"], 0.15, signum, tmp_path / "o")
+    _check(code, err, signum)
+
+
+def test_sigint_while_computing_is_one_line(tmp_path):
+    """``femcam run`` printed a 40-line traceback on Ctrl-C before the common handler."""
+    code, err = _signal_run(LONG["run"], 3.0, signal.SIGINT, tmp_path / "o")
+    _check(code, err, signal.SIGINT)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("cmd", list(LONG))
+@pytest.mark.parametrize("delay_s", [0.05, 0.4, 1.0, 3.0])
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
+def test_signal_matrix(cmd, delay_s, signum, tmp_path):
+    """Every subcommand, during imports (0.05-0.4 s), while loading the subcommands (~1 s) and
+    while computing (3 s): exit 130 / 143 and one line."""
+    code, err = _signal_run(LONG[cmd], delay_s, signum, tmp_path / "o")
+    _check(code, err, signum)
+
+
+def test_main_in_process_restores_handlers(tmp_path):
+    """``main()`` called from a program keeps that program's handlers afterwards."""
+    from femcam.cli import main
+
+    before = signal.getsignal(signal.SIGINT), signal.getsignal(signal.SIGTERM)
+    main(["run", str(EX / "seed002_cam_on_shaft.toml"), "--out", str(tmp_path / "o"),
+          "--angles-deg", "0:360:30", "--no-plots"])
+    assert (signal.getsignal(signal.SIGINT), signal.getsignal(signal.SIGTERM)) == before
+
+
+def test_is_command_line_only_for_femcam(monkeypatch):
+    """The early handler is for ``python -m femcam`` and the console script, not for a program
+    that imports femcam (pytest here)."""
+    from femcam import _interrupt
+
+    assert not _interrupt.is_command_line()
+    monkeypatch.setattr(sys, "orig_argv", ["python", "-X", "importtime", "-m", "femcam", "run"])
+    assert _interrupt.is_command_line()
+    monkeypatch.setattr(sys, "orig_argv", ["python", "/usr/bin/femcam", "run"])
+    monkeypatch.setattr(sys, "argv", ["/usr/bin/femcam", "run"])
+    assert _interrupt.is_command_line()
