@@ -9,10 +9,9 @@ that use them.
 """
 
 # first: on the command line, Ctrl-C / SIGTERM during the imports below is one line and exit
-# 130 / 143, not a traceback (femcam._interrupt; stdlib only, a no-op for an importing program)
-from . import _interrupt  # noqa: E402, I001
-
-_interrupt.install_if_command_line()
+# 130 / 143, not a traceback (importing femcam._interrupt installs its handler when this process
+# is the command line; stdlib only, and nothing for a program that imports femcam)
+from . import _interrupt  # noqa: F401, I001
 
 __version__ = "0.1.0"
 

@@ -6,8 +6,8 @@ Two phases, because what an interruption may leave behind differs:
 * **starting** (imports, building the parser, reading the flags): nothing has been written,
   so the handler :func:`_exit_now` prints ``femcam: interrupted`` and ends the process at once
   with ``os._exit`` (a ``KeyboardInterrupt`` raised inside an import would print a traceback
-  from wherever the import happened to be). ``femcam/__init__.py`` installs it as its first
-  statement when the process is the command line (:func:`is_command_line`), so the 0.5-1 s of
+  from wherever the import happened to be). ``femcam/__init__.py`` installs it (its first
+  import) when the process is the command line (:func:`is_command_line`), so the 0.5-1 s of
   ``import femcam`` are covered too: the console script and ``python -m femcam`` both import
   the package before any code of :mod:`femcam.cli` can run.
 * **working** (the subcommand's function): SIGINT raises ``KeyboardInterrupt`` (Python's own
@@ -134,8 +134,11 @@ def exit_code(exc: BaseException) -> int:
 
 
 def install_if_command_line() -> None:
-    """The first statement of ``femcam/__init__.py``: the starting-phase handler, only when
-    this process is the command line (:func:`is_command_line`); a program that imports femcam
-    keeps its own handlers."""
+    """The starting-phase handler, only when this process is the command line
+    (:func:`is_command_line`); a program that imports femcam keeps its own handlers. Run on
+    import of this module, the first import of ``femcam/__init__.py``."""
     if is_command_line():
         starting()
+
+
+install_if_command_line()

@@ -79,8 +79,9 @@ def main(argv=None) -> int:
     -------
     int
         Exit code: 0 success; 130 Ctrl-C (SIGINT), 143 SIGTERM, with one line on stderr,
-        from the first instruction (:mod:`femcam._interrupt`); 1 a :class:`~femcam.errors.FemcamError` or an ``OSError`` (a
-        file that cannot be read or written, a full disk), printed as one line
+        from the first instruction (:mod:`femcam._interrupt`); 1 a
+        :class:`~femcam.errors.FemcamError` or an ``OSError`` (a file that cannot be read or
+        written, a full disk), printed as one line
         ``femcam <command>: error: ...`` naming the path, never a traceback; 2 usage. A reader
         that closes the pipe early (``femcam wear seed000 --all-laws | head -2``) ends the
         command quietly with 1 (no message).
