@@ -17,6 +17,8 @@ import shlex
 import sys
 
 from .. import _validate
+from ..mesh import MeshOptions
+from ..mesh.estimate import check_contact_elements
 from ..scene import load_scene, study_problem
 from ..scene.schema import STUDY_UNITS
 from ..sweep import parse_angles_deg, sweep
@@ -181,6 +183,8 @@ def _check_args(args) -> None:
         if problem:
             problem = problem.replace("a_over_h", "--mesh-size")
             raise _validate.fail(flag, value, unit, f"{problem}; {hint}" if hint else problem)
+    if args.method != "hertz":  # the FE mesh's size, estimated before any work (the library's cap)
+        check_contact_elements(MeshOptions(a_over_h=args.mesh_size), "--mesh-size")
     args.workers = _validate.workers("--workers", args.workers)
 
 
