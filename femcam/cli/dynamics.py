@@ -19,6 +19,7 @@ import numpy as np
 
 from .. import __version__, _validate
 from ..dynamics import jump_speed, rpm_sweep
+from ..dynamics.jump import MAX_SPEEDS, speeds_problem
 from ..errors import InputError
 from ..scene import load_scene
 from ..viz.dynamics import plot_force, plot_rpm_sweep
@@ -71,9 +72,11 @@ def _rpm_range(text: str):
         a, b, c = (float(x) for x in text.split(":"))
     except ValueError:
         raise InputError(f"--rpm-sweep = {text!r}: must be START:STOP:STEP in rpm") from None
-    if not (0 < a < b and c > 0):
-        raise InputError(f"--rpm-sweep = {text!r}: need 0 < START < STOP and STEP > 0 (rpm)")
-    n = int(math.floor((b - a) / c + 1e-9)) + 1
+    if not all(map(math.isfinite, (a, b, c))) or not (0 < a < b and c > 0):
+        raise InputError(f"--rpm-sweep = {text!r} rpm: need finite 0 < START < STOP and STEP > 0")
+    n = math.floor((b - a) / c + 1e-9) + 1
+    if n > MAX_SPEEDS:  # refused before the speeds are even listed
+        raise InputError(f"--rpm-sweep = {text!r} rpm: {speeds_problem(n)}")
     return a + c * np.arange(n)
 
 

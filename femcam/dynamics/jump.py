@@ -221,6 +221,32 @@ def _one(args):
             r.message)
 
 
+#: most speeds of one rpm sweep: ~10 ms each at 3,600 steps per revolution (101 speeds of
+#: seed 002's one_dof train in ~1 s on one core), so the cap is a few minutes; more steps per
+#: revolution at high speed take longer
+MAX_SPEEDS = 20_000
+#: measured seconds per speed of an rpm sweep, for the refusal's time estimate
+SECONDS_PER_SPEED = 0.01
+
+
+def speeds_problem(n: int) -> str:
+    """Why an rpm sweep of ``n`` speeds is refused (the estimate, the cap, what to change).
+
+    Parameters
+    ----------
+    n : int
+        Number of speeds (-).
+
+    Returns
+    -------
+    str
+        The condition, for an error message.
+    """
+    return (f"{n:,} speeds would take ~{n * SECONDS_PER_SPEED / 3600:.3g} h at ~"
+            f"{SECONDS_PER_SPEED * 1e3:g} ms per speed, above the cap of {MAX_SPEEDS:,} speeds "
+            "(femcam.dynamics.jump.MAX_SPEEDS); use a larger STEP or a narrower range")
+
+
 def _worker_init() -> None:
     """A pool worker leaves Ctrl-C to the parent (one line, exit 130) and ends at once on the
     SIGTERM with which the pool stops it (a forked worker inherits the command line's handlers)."""
@@ -256,9 +282,12 @@ def rpm_sweep(train: TrainModel, program: CamProgram, rpm, *, steps_per_rev=None
     Raises
     ------
     InputError
-        Non-finite or non-positive speeds, or ``workers`` or ``max_cycles`` not a whole
-        number >= 1.
+        Non-finite or non-positive speeds, more than :data:`MAX_SPEEDS`, or ``workers`` or
+        ``max_cycles`` not a whole number >= 1.
     """
+    n = np.size(rpm)
+    if n > MAX_SPEEDS:  # before any work (or any copy of the array)
+        raise _validate.fail("rpm", f"<{n} speeds>", "", speeds_problem(n))
     rpm = np.atleast_1d(_validate.finite_array("rpm", rpm, "rpm"))
     if np.any(rpm <= 0):
         raise _validate.fail("rpm", float(rpm[rpm <= 0][0]), "rpm", "every speed must be > 0")
