@@ -17,6 +17,7 @@ import sys
 from .. import __version__, _interrupt
 from ..errors import FemcamError
 from ._common import os_error_line
+from ._flags import FlagError
 
 #: subcommand modules, in the order they appear in ``femcam --help``
 SUBCOMMANDS = ("run", "sweep", "wear", "synth", "dynamics", "assess")
@@ -96,7 +97,11 @@ def main(argv=None) -> int:
 def _main(argv) -> int:
     """:func:`main` inside the interruption handlers (:mod:`femcam._interrupt`)."""
     parser = build_parser()
-    args = parser.parse_args(_join_negative(sys.argv[1:] if argv is None else list(argv)))
+    try:  # a numeric flag out of its range is refused while parsing (femcam.cli._flags)
+        args = parser.parse_args(_join_negative(sys.argv[1:] if argv is None else list(argv)))
+    except FlagError as exc:
+        print(f"{exc.prog}: error: {exc}", file=sys.stderr)
+        return 1
     if not getattr(args, "func", None):
         parser.print_help()
         return 2

@@ -23,7 +23,7 @@ from ..errors import InputError
 from ..io import atomic_write_text, csv_text, provenance
 from ..scene import load_scene
 from ..viz.assess import plot_assessment, report_markdown
-from ._common import add_no_plots, add_scene_out, out_dir, plain
+from ._common import add_no_plots, add_overwrite, add_scene_out, out_dir, plain, refuse_non_empty
 
 
 def register(subparsers) -> None:
@@ -42,6 +42,7 @@ def register(subparsers) -> None:
     p.add_argument("--sweep", default=None, metavar="SWEEP_DIR",
                    help="use the angles and FE a/p0 of a finished sweep (SWEEP_DIR/sweep.npz)")
     add_no_plots(p)
+    add_overwrite(p)
     p.set_defaults(func=_run)
 
 
@@ -70,6 +71,7 @@ def _write_csv(path, cols: dict, header: list[str]) -> None:
 
 def _run(args) -> int:
     out_dir(args.out, create=False)  # checked before any work, created below
+    refuse_non_empty(args.out, args.overwrite)  # the rule of every subcommand
     scene = load_scene(args.scene)
     table = _sweep_table(args.sweep) if args.sweep else None
     theta = table["theta"] if table is not None else _validate.angles_deg("--angles-deg", args.angles_deg)

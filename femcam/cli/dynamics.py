@@ -23,7 +23,8 @@ from ..dynamics.jump import MAX_SPEEDS, speeds_problem
 from ..errors import InputError
 from ..scene import load_scene
 from ..viz.dynamics import plot_force, plot_rpm_sweep
-from ._common import add_no_plots, add_scene_out, cap_workers, out_dir, plain, refuse_non_empty
+from ._common import add_no_plots, add_overwrite, add_scene_out, cap_workers, out_dir, plain, refuse_non_empty
+from ._flags import Range, add_number
 
 
 def register(subparsers) -> None:
@@ -39,12 +40,11 @@ def register(subparsers) -> None:
     add_scene_out(p, "scene with [dynamics] model = one_dof or two_dof")
     p.add_argument("--rpm-sweep", metavar="START:STOP:STEP", default=None,
                    help="also sweep the cam speed (rpm, stop inclusive) and find the jump speed")
-    p.add_argument("--workers", type=int, default=1, metavar="N",
-                   help="processes for the rpm sweep (default 1; capped at the CPU cores and "
+    add_number(p, "--workers", Range("processes", 1, 1024, whole=True), default=1, metavar="N",
+               help="processes for the rpm sweep (default 1; capped at the CPU cores and "
                         "the number of speeds)")
     add_no_plots(p)
-    p.add_argument("--overwrite", action="store_true",
-                   help="write into a non-empty DIR, replacing its files (refused otherwise)")
+    add_overwrite(p)
     p.set_defaults(func=run)
 
 

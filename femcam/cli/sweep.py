@@ -20,12 +20,21 @@ from .. import _validate
 from ..mesh import MeshOptions
 from ..mesh.estimate import check_contact_elements
 from ..scene import load_scene, study_problem
-from ..scene.schema import STUDY_UNITS
+from ..scene.schema import STUDY_RANGES, STUDY_UNITS, STUDY_WHOLE
 from ..sweep import parse_angles_deg, sweep
 from ..sweep.options import TOLERANCE_FLOOR
 from ..sweep.result import families_text
 from ..sweep.worst import assess_line
-from ._common import add_law_override, add_scene_out, cap_workers, check_law, out_dir, plain, refuse_non_empty
+from ._common import (
+    add_law_override,
+    add_scene_out,
+    cap_workers,
+    check_law,
+    out_dir,
+    plain,
+    refuse_non_empty,
+)
+from ._flags import Range, add_number
 
 
 def register(subparsers) -> None:
@@ -59,10 +68,10 @@ def register(subparsers) -> None:
                    help="replace the results in a non-empty DIR (refused otherwise)")
     p.add_argument("--animate", action="store_true",
                    help="also write DIR/animation.gif: von Mises over cam angle (the VTK series)")
-    for flag, typ, metavar, text, extra in _SCENE_FLAGS:
+    for flag, rng, metavar, text, extra in _SCENE_FLAGS:
         dest = flag[2:].replace("-", "_")
-        p.add_argument(flag, type=typ, default=None, metavar=metavar,
-                       help=f"{text} {_default_text(dest, extra)}")
+        add_number(p, flag, rng, default=None, metavar=metavar,
+                   help=f"{text} {_default_text(dest, extra)}")
     p.add_argument("--method", choices=("fe", "hertz", "auto"), default=None,
                    help="fe: FE contact solve; hertz: analytic only; auto: the cheapest of Hertz, "
                         "FE arc gap, FE exact gap within --tolerance per angle "
@@ -75,7 +84,7 @@ def register(subparsers) -> None:
                    help="progress bar on stderr (auto: only on a terminal)")
     # a test aid (not shown in --help): sleep after each chunk, so that a test can kill the
     # sweep between chunks deterministically
-    p.add_argument("--chunk-delay-s", type=float, default=0.0, help=argparse.SUPPRESS)
+    add_number(p, "--chunk-delay-s", Range("s", 0.0, 60.0), default=0.0, help=argparse.SUPPRESS)
     p.set_defaults(func=_run)
 
 
@@ -86,15 +95,25 @@ SETTINGS = {"angles_deg": ("sweep", "angles_deg", "0:360:1"), "mesh_size": ("fe"
             "vtk_every": ("sweep", "vtk_every", 10), "method": ("sweep", "method", "fe"),
             "plots": ("sweep", "plots", True)}
 
-#: the numeric flags a scene can set: (flag, type, metavar, help, note after the default)
+def _study(key: str, whole: bool = False, hi: float | None = None) -> Range:
+    """The flag's range: the scene's (femcam.scene.schema.study_problem, one copy)."""
+    lo, top = STUDY_RANGES.get(key, (STUDY_WHOLE.get(key, 0), hi))
+    return Range(STUDY_UNITS[key], lo, top, whole=whole, check=lambda x: study_problem(key, x))
+
+
+#: the numeric flags a scene can set: (flag, range, metavar, help, note after the default);
+#: chunk_size and vtk_every are capped at 1e6 angles (a revolution at 0.001 deg is 360,000)
 _SCENE_FLAGS = (
-    ("--mesh-size", float, "A_OVER_H", "FE element size in the contact zone, h = a / A_OVER_H", ""),
-    ("--tolerance", float, "TOL",
+    ("--mesh-size", _study("a_over_h"), "A_OVER_H",
+     "FE element size in the contact zone, h = a / A_OVER_H", ""),
+    ("--tolerance", _study("tolerance"), "TOL",
      "bound on the relative p0 difference between an angle solved with its family's shared model "
      "and with a model built for it alone; checked with fresh models at each family's worst "
      "angles, families are split until it holds", f">= {TOLERANCE_FLOOR:g}"),
-    ("--chunk-size", int, "N", "angles per chunk on disk / per parallel task", ""),
-    ("--vtk-every", int, "K", "write a .vtu (both bodies, ~1 MB) every K angles plus sweep.pvd",
+    ("--chunk-size", _study("chunk_size", True, 1e6), "N",
+     "angles per chunk on disk / per parallel task", ""),
+    ("--vtk-every", _study("vtk_every", True, 1e6), "K",
+     "write a .vtu (both bodies, ~1 MB) every K angles plus sweep.pvd",
      "1 = every angle; 0 = none"),
 )
 
@@ -211,7 +230,7 @@ def _command_line(args) -> str:
 
 def _run(args) -> int:
     out_dir(args.out, create=False)
-    if args.law:
+    if args.law is not None:
         check_law("--law", args.law)
     scene = load_scene(args.scene)
     from_scene = resolve_settings(args, scene)
@@ -223,7 +242,7 @@ def _run(args) -> int:
         print("femcam sweep: settings from the scene file: " + ", ".join(from_scene))
     if note:
         print(f"femcam sweep: note: {note}", file=sys.stderr)
-    if args.law:
+    if args.law is not None:
         scene = scene.with_law(args.law)
     progress = {"auto": None, "on": True, "off": False}[args.progress]
     try:
