@@ -91,8 +91,15 @@ class Range:
         """
         if isinstance(text, str) and text.strip().lower() in self.words:
             return text.strip().lower()
-        x = _validate.number(flag, text, self.unit)
-        shown = x if isinstance(text, str) else text  # 1e-09, not '1e-9'
+        try:  # shown as a number where it is one: 1e-09 and nan, not '1e-9' and 'nan'
+            shown = float(text) if isinstance(text, str) else text
+        except ValueError:
+            shown = text
+        x = _validate.number(flag, shown, self.unit)
+        if self.check is not None:  # the setting's own condition first (its words and hint)
+            problem = self.check(x)
+            if problem:
+                raise _validate.fail(flag, shown, self.unit, problem)
         lo_bad = x <= self.lo if self.lo_open else x < self.lo
         hi_bad = x >= self.hi if self.hi_open else x > self.hi
         if lo_bad or hi_bad or (self.whole and x != math.floor(x)):
@@ -100,10 +107,6 @@ class Range:
             why = f" ({self.why})" if self.why else ""
             must = f"must be {'' if self.whole else 'in '}{self.text(unit=False)}"
             raise _validate.fail(flag, shown, self.unit, f"{must}{words}{why}")
-        if self.check is not None:
-            problem = self.check(x)
-            if problem:
-                raise _validate.fail(flag, shown, self.unit, problem)
         return int(x) if self.whole else x
 
 

@@ -13,11 +13,13 @@ import json
 import math
 import shlex
 import sys
+import zipfile
 from pathlib import Path
 
 import numpy as np
 
 from .. import _validate
+from .._files import check_regular
 from ..assess import assess, csv_columns
 from ..errors import InputError
 from ..io import atomic_write_text, csv_text, provenance
@@ -46,16 +48,23 @@ def register(subparsers) -> None:
     p.set_defaults(func=_run)
 
 
+#: largest sweep.npz read by --sweep (bytes): 360,000 angles of ~150 columns are ~0.4 GB
+MAX_SWEEP_BYTES = 2_000_000_000
+
+
 def _sweep_table(path):
-
-
-
     f = Path(path) / "sweep.npz"
-    if not f.is_file():
+    if not f.exists() and not f.is_symlink():
         raise InputError(f"--sweep = {path}: no sweep.npz there (run femcam sweep SCENE --out {path} first)")
-    with np.load(f, allow_pickle=False) as z:
-        return {k: np.asarray(z[k]) for k in ("theta", "a_fe", "p0_fe", "tau1_max", "txz_absmax")
-                if k in z.files}
+    check_regular(f, f"--sweep = {path}:", MAX_SWEEP_BYTES)   # a FIFO or a device there is not read
+    try:
+        with np.load(f, allow_pickle=False) as z:
+            return {k: np.asarray(z[k]) for k in ("theta", "a_fe", "p0_fe", "tau1_max", "txz_absmax")
+                    if k in z.files}
+    except (OSError, ValueError, EOFError, zipfile.BadZipFile) as exc:  # truncated or not an npz
+        why = (str(exc).splitlines() or [""])[0][:80]
+        raise InputError(f"--sweep = {path}: {f} is not a readable sweep result "
+                         f"({type(exc).__name__}: {why}); rerun femcam sweep") from None
 
 
 def _write_csv(path, cols: dict, header: list[str]) -> None:

@@ -96,9 +96,21 @@ SETTINGS = {"angles_deg": ("sweep", "angles_deg", "0:360:1"), "mesh_size": ("fe"
             "plots": ("sweep", "plots", True)}
 
 def _study(key: str, whole: bool = False, hi: float | None = None) -> Range:
-    """The flag's range: the scene's (femcam.scene.schema.study_problem, one copy)."""
+    """The flag's range: the scene's (femcam.scene.schema.study_problem, one copy, with the
+    hint of :data:`_FLAG_CHECKS`), capped at ``hi`` where the scene has no upper bound."""
     lo, top = STUDY_RANGES.get(key, (STUDY_WHOLE.get(key, 0), hi))
-    return Range(STUDY_UNITS[key], lo, top, whole=whole, check=lambda x: study_problem(key, x))
+    dest = {v[1]: k for k, v in SETTINGS.items()}[key]
+    return Range(STUDY_UNITS[key], lo, top, whole=whole, check=lambda x: _study_problem(dest, x))
+
+
+def _study_problem(dest: str, x: float) -> str | None:
+    """:func:`study_problem` of a flag's setting in the flag's words, with its hint."""
+    problem = study_problem(SETTINGS[dest][1], x)
+    if not problem:
+        return None
+    hint = _FLAG_CHECKS[dest][1]
+    problem = problem.replace("a_over_h", "--mesh-size")
+    return f"{problem}; {hint}" if hint else problem
 
 
 #: the numeric flags a scene can set: (flag, range, metavar, help, note after the default);
@@ -196,12 +208,11 @@ def _check_args(args) -> None:
     The condition is :func:`femcam.scene.schema.study_problem`'s, with the scene key
     ``a_over_h`` it may mention written as its flag ``--mesh-size``.
     """
-    for dest, (unit, hint) in _FLAG_CHECKS.items():
+    for dest, (unit, _hint) in _FLAG_CHECKS.items():
         flag, value = "--" + dest.replace("_", "-"), getattr(args, dest)
-        problem = study_problem(SETTINGS[dest][1], _validate.number(flag, value, unit))
+        problem = _study_problem(dest, _validate.number(flag, value, unit))
         if problem:
-            problem = problem.replace("a_over_h", "--mesh-size")
-            raise _validate.fail(flag, value, unit, f"{problem}; {hint}" if hint else problem)
+            raise _validate.fail(flag, value, unit, problem)
     if args.method != "hertz":  # the FE mesh's size, estimated before any work (the library's cap)
         check_contact_elements(MeshOptions(a_over_h=args.mesh_size), "--mesh-size")
     args.workers = _validate.workers("--workers", args.workers)

@@ -48,8 +48,9 @@ N_RESIDUALS_SHOWN = 5
 #: ranges of the numeric flags (femcam.cli._flags); the element cap is the library's
 ELEMENTS = Range("elements around the cam", 3, MAX_ELEMENTS, whole=True,
                  why="femcam.synthesis.options.MAX_ELEMENTS: time and memory")
-PENALTY = Range("(dimensionless)", 0.0, 1e14, lo_open=True,
-                why="the studies span 1e2-1e10; beyond 1e14 the tangent is singular in double precision")
+_WHY = "the studies span 1e2-1e10; beyond 1e14 the tangent is singular in double precision"
+PENALTY = Range("(penalty constant, dimensionless)", 0.0, 1e14, lo_open=True, why=_WHY)
+STABILISATION = Range("(stabilisation parameter, dimensionless)", 0.0, 1e14, lo_open=True, why=_WHY)
 BASE_RADIUS = Range("mm", 0.0, 1000.0, lo_open=True, words=("auto",),
                     why="a base circle of more than 1 m is not a cam")
 MAX_ITER = Range("iterations", 1, 10_000, whole=True)
@@ -76,7 +77,7 @@ def register(subparsers) -> None:
                help="quadratic elements around the cam (default 180)")
     add_number(p, "--k", PENALTY, default=1e6, metavar="K",
                help="penalty constant k (dimensionless; default 1e6)")
-    add_number(p, "--mu", PENALTY, default=1.0, metavar="MU",
+    add_number(p, "--mu", STABILISATION, default=1.0, metavar="MU",
                help="stabilisation parameter mu (dimensionless; default 1)")
     add_number(p, "--base-radius-mm", BASE_RADIUS, default=None, metavar="auto|RB_MM",
                    help="base circle radius in mm, or 'auto': the smallest one with max "
@@ -140,7 +141,7 @@ def run(args) -> int:
     refuse_non_empty(args.out, args.overwrite)  # the rule of every subcommand
     ELEMENTS.parse("--elements", args.elements)   # the flags' ranges (also for main(...) values)
     PENALTY.parse("--k", args.k)
-    PENALTY.parse("--mu", args.mu)
+    STABILISATION.parse("--mu", args.mu)
     name, program, Rb = _case(args)
     Rb, rb_source = _base_radius(args.base_radius_mm, Rb, program,
                                  "seed 003 case" if args.case else "scene")
