@@ -71,10 +71,11 @@ def test_signal_during_imports_is_one_line(signum, tmp_path):
 
 def test_sigint_while_computing_is_one_line(tmp_path):
     """``femcam run`` printed a 40-line traceback on Ctrl-C before the common handler."""
-    code, err = _signal_run(LONG["run"], 3.0, signal.SIGINT, tmp_path / "o")
+    code, err = _signal_run(LONG["run"], 1.5, signal.SIGINT, tmp_path / "o")
     _check(code, err, signal.SIGINT)
 
 
+@pytest.mark.slow
 def test_sigterm_after_gmsh_is_one_line(tmp_path):
     """gmsh.initialize resets SIGTERM to the default action (the sweep died silently with -15);
     femcam.mesh.session puts the Python handler back: one line, exit 143, resumable."""

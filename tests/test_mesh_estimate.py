@@ -67,12 +67,17 @@ def test_sweep_mesh_size_100_refused_on_the_cli(tmp_path, capsys):
 
 
 def test_sweep_api_refuses_too(monkeypatch):
-    from femcam.sweep.options import SweepOptions
+    """``femcam.sweep(..., a_over_h=100)`` is refused before the analytic chain or any mesh
+    (the scene range of a_over_h stays [2, 400]: the cap is the mesh's, not the setting's)."""
+    from femcam import sweep
+    from femcam.scene import load_scene
 
     _no_gmsh(monkeypatch)
+    sc = load_scene(EX + "seed002_study_model.toml")   # no cam disk: nothing else meshes
     with pytest.raises(InputError, match="cap of 80,000 elements"):
-        SweepOptions(a_over_h=100)
-    SweepOptions(a_over_h=100, method="hertz")   # no mesh: no cap
+        sweep(sc, angles=np.radians([0.0, 1.0]), a_over_h=100)
+    res = sweep(sc, angles=np.radians([0.0, 1.0]), a_over_h=100, method="hertz")  # no mesh: no cap
+    assert res.n_angles == 2
 
 
 def _disk_outline(r=0.01, n=360):

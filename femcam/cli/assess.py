@@ -80,10 +80,10 @@ def _write_csv(path, cols: dict, header: list[str]) -> None:
 
 def _run(args) -> int:
     out_dir(args.out, create=False)  # checked before any work, created below
-    refuse_non_empty(args.out, args.overwrite)  # the rule of every subcommand
     scene = load_scene(args.scene)
     table = _sweep_table(args.sweep) if args.sweep else None
     theta = table["theta"] if table is not None else _validate.angles_deg("--angles-deg", args.angles_deg)
+    refuse_non_empty(args.out, args.overwrite)  # the rule of every subcommand, before the work
     res = assess(scene, theta, table=table)
     out = out_dir(args.out)
     prov = provenance(scene_path=args.scene, command=shlex.join(["femcam", "assess", *sys.argv[2:]]))

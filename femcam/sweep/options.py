@@ -13,8 +13,6 @@ from dataclasses import dataclass
 from .. import _validate
 from ..errors import InputError
 from ..materials import Material, effective_modulus
-from ..mesh import MeshOptions
-from ..mesh.estimate import check_contact_elements
 from ..scene.schema import METHODS, STUDY_UNITS, STUDY_WHOLE, TOLERANCE_FLOOR, study_problem
 from ..wear.options import follower_tip_radius
 
@@ -65,8 +63,6 @@ class SweepOptions:
             if problem:
                 raise _validate.fail(key, value, unit, problem)
             object.__setattr__(self, key, int(x) if key in STUDY_WHOLE else x)
-        if self.method != "hertz":  # refused before any work: a mesh too large for memory
-            check_contact_elements(MeshOptions(a_over_h=self.a_over_h))
 
     def to_dict(self) -> dict:
         """The options as a JSON-able dict (manifest key and provenance).
