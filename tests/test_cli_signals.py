@@ -27,8 +27,8 @@ LONG = {
     "assess": ["assess", str(EX / "seed002_assess.toml"), "--angles-deg", "0:360:0.0005", "--no-plots"],
     "dynamics": ["dynamics", str(EX / "seed002_dynamic.toml"), "--rpm-sweep", "100:20000:1",
                  "--no-plots"],
-    "wear": ["wear", "map", str(EX / "seed002_cam_on_shaft.toml"), "--step-deg", "0.05",
-             "--evolve-blocks", "64", "--no-plots"],
+    "wear": ["wear", "map", str(EX / "seed002_cam_on_shaft.toml"), "--step-deg", "0.5",
+             "--evolve-blocks", "256", "--no-plots"],
     "synth": ["synth", "--case", "seed003", "--elements", "4000", "--study"],
     "sweep": ["sweep", str(EX / "seed002_cam_on_shaft.toml"), "--angles-deg", "0:360:0.5",
               "--no-plots", "--workers", "1"],
@@ -43,10 +43,24 @@ def _signal_run(argv, delay_s, signum, out):
     env = {**os.environ, "PYTHONPATH": str(ROOT)}
     p = subprocess.Popen([sys.executable, "-m", "femcam", *argv, "--out", str(out)],
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, cwd=ROOT)
+    _wait_for_exec(p.pid)   # a signal between fork and exec hits the parent's inherited handler
     time.sleep(delay_s)
     p.send_signal(signum)
     _, err = p.communicate(timeout=120)
     return p.returncode, err.decode()
+
+
+def _wait_for_exec(pid, timeout_s=10.0):
+    """Wait until the child runs the interpreter (its command line names femcam): before the
+    exec the child still has pytest's signal handlers, and a signal there is lost with them."""
+    end = time.monotonic() + timeout_s
+    while time.monotonic() < end:
+        try:
+            if b"femcam" in Path(f"/proc/{pid}/cmdline").read_bytes():
+                return
+        except OSError:
+            return
+        time.sleep(0.002)
 
 
 def _check(code, err, signum, starting=False):

@@ -53,8 +53,9 @@ def register(subparsers) -> None:
     p.add_argument("--angles-deg", default=None, metavar="START:STOP:STEP",
                    help="cam angles in degrees, stop exclusive " + _default_text("angles_deg")
                    + "; a negative start is accepted (--angles-deg -360:0:30)")
-    p.add_argument("--workers", default="auto", metavar="N|auto",
-                   help="local worker processes; 1 = serial in this process; auto (default) = "
+    add_number(p, "--workers", Range("processes", 1, 1024, whole=True, words=("auto",)),
+               default="auto", metavar="N|auto",
+               help="local worker processes; 1 = serial in this process; auto (default) = "
                         "processes only when the expected saving beats the pool start-up: the "
                         "model families are built and verified before the chunks run, so the "
                         "chunks are only ~1-2 ms contact solves per angle: a sweep without VTK "
