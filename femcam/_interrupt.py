@@ -17,15 +17,18 @@ Two phases, because what an interruption may leave behind differs:
   :data:`EXIT_CODES` gives: 128 + the signal number, the shell's convention (130 for SIGINT,
   143 for SIGTERM).
 
-stdlib only: it runs before numpy is imported.
+Built on the C module ``_signal`` (and ``os``/``sys``, loaded with the interpreter): importing
+``signal`` would first import ``enum`` and ``functools``, tens of milliseconds in which a
+Ctrl-C would still be a traceback. What remains uncovered is the interpreter's own start-up
+before the first statement of ``femcam/__init__.py`` (~20-30 ms), where Python's default
+applies.
 """
 
 from __future__ import annotations
 
+import _signal as signal  # the C module: no Python imports before the handler is in place
 import os
-import signal
 import sys
-import threading
 
 #: exit code per signal: 128 + signal number (what a shell reports for a process it killed)
 EXIT_CODES = {signal.SIGINT: 130, signal.SIGTERM: 143}
@@ -76,9 +79,10 @@ def _raise_interrupt(signum, frame) -> None:  # noqa: ARG001 - the signal handle
 def _set(handlers: dict) -> dict:
     """Install ``{signum: handler}`` and return the previous ones ({} off the main thread,
     where Python allows no signal handler: an in-process ``main()`` from a worker thread)."""
-    if threading.current_thread() is not threading.main_thread():
+    try:
+        return {s: signal.signal(s, h) for s, h in handlers.items()}
+    except ValueError:  # "signal only works in main thread of the main interpreter"
         return {}
-    return {s: signal.signal(s, h) for s, h in handlers.items()}
 
 
 def starting() -> dict:
