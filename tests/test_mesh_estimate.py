@@ -171,3 +171,18 @@ def test_synth_elements_api_cap():
 
     with pytest.raises(InputError, match="n_elements = 1000000000: must be <= 20,000"):
         SynthesisOptions(n_elements=10**9)
+
+
+def test_thin_web_refused_before_gmsh(monkeypatch):
+    """``[cam] bore_mm = 9.99`` under a 10 mm base radius (a 10 um web) ran for more than 10
+    minutes in the issue's report; the disk model refuses it before meshing, with the reason
+    (the bore spacing must be <= web / 4, which needs more bore vertices than the model takes).
+    A regression guard: this refusal already stood on this branch's base."""
+    from femcam.bodies.cam_global import CamGlobalModel
+    from femcam.bodies.cam_rows import disk_from_scene
+    from femcam.scene import load_scene
+
+    _no_gmsh(monkeypatch)
+    sc = load_scene(EX + "seed002_cam_on_shaft.toml")
+    with pytest.raises(InputError, match=r"web r_min - Rb = 0\.01 mm is too thin"):
+        CamGlobalModel.build(disk=disk_from_scene(sc, Rb=9.99e-3), length=sc.length)
