@@ -129,3 +129,17 @@ def test_is_command_line_only_for_femcam(monkeypatch):
     monkeypatch.setattr(sys, "orig_argv", ["python", "/usr/bin/femcam", "run"])
     monkeypatch.setattr(sys, "argv", ["/usr/bin/femcam", "run"])
     assert _interrupt.is_command_line()
+
+
+def test_console_script_is_covered_from_import(tmp_path):
+    """The console script (``femcam = "femcam.cli:main"``: a file named ``femcam`` that imports
+    femcam.cli) gets the handler from femcam's first statement too (``sys.argv[0]`` names it)."""
+    script = tmp_path / "femcam"
+    script.write_text("import sys\nfrom femcam.cli import main\nsys.exit(main())\n")
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    p = subprocess.Popen([sys.executable, str(script), *LONG["synth"], "--out", str(tmp_path / "o")],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, cwd=ROOT)
+    _wait_for_numpy(p.pid)
+    p.send_signal(signal.SIGINT)
+    _, err = p.communicate(timeout=120)
+    _check(p.returncode, err.decode(), signal.SIGINT)
