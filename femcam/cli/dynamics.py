@@ -42,7 +42,7 @@ def register(subparsers) -> None:
                    help="also sweep the cam speed (rpm, stop inclusive) and find the jump speed")
     add_number(p, "--workers", Range("processes", 1, 1024, whole=True), default=1, metavar="N",
                help="processes for the rpm sweep (default 1; capped at the CPU cores and "
-                        "the number of speeds)")
+                    "the number of speeds)")
     add_no_plots(p)
     add_overwrite(p)
     p.set_defaults(func=run)

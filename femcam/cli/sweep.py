@@ -56,11 +56,11 @@ def register(subparsers) -> None:
     add_number(p, "--workers", Range("processes", 1, 1024, whole=True, words=("auto",)),
                default="auto", metavar="N|auto",
                help="local worker processes; 1 = serial in this process; auto (default) = "
-                        "processes only when the expected saving beats the pool start-up: the "
-                        "model families are built and verified before the chunks run, so the "
-                        "chunks are only ~1-2 ms contact solves per angle: a sweep without VTK "
-                        "usually runs serially, while writing many VTU files pays on 2 "
-                        "processes; capped at the useful number (CPU cores, chunks)")
+                    "processes only when the expected saving beats the pool start-up: the "
+                    "model families are built and verified before the chunks run, so the "
+                    "chunks are only ~1-2 ms contact solves per angle: a sweep without VTK "
+                    "usually runs serially, while writing many VTU files pays on 2 "
+                    "processes; capped at the useful number (CPU cores, chunks)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="Dask scheduler address, e.g. tcp://host:8786 (needs femcam[dask])")
     p.add_argument("--resume", action="store_true",

@@ -80,9 +80,9 @@ def register(subparsers) -> None:
     add_number(p, "--mu", STABILISATION, default=1.0, metavar="MU",
                help="stabilisation parameter mu (dimensionless; default 1)")
     add_number(p, "--base-radius-mm", BASE_RADIUS, default=None, metavar="auto|RB_MM",
-                   help="base circle radius in mm, or 'auto': the smallest one with max "
-                        "pressure angle <= 30 deg (femcam.profile.min_base_radius); default: "
-                        "the case's 5 mm or the scene's Rb")
+               help="base circle radius in mm, or 'auto': the smallest one with max "
+                    "pressure angle <= 30 deg (femcam.profile.min_base_radius); default: "
+                    "the case's 5 mm or the scene's Rb")
     add_number(p, "--max-iter", MAX_ITER, default=50, metavar="N",
                help="Newton iterations per k stage before giving up (default 50)")
     p.add_argument("--study", action="store_true",

@@ -95,10 +95,10 @@ def register(subparsers) -> None:
     add_number(m, "--step-deg", STEP, default=0.5, metavar="DEG", help="cam angle step (default 0.5)")
     add_number(m, "--tip-radius-mm", TIP, default=None, metavar="R",
                help="knife-edge followers: tip radius in mm (default: scene [follower] tip_radius_mm); "
-                        "a sharp tip has no contact width, so the wear map needs one")
+                    "a sharp tip has no contact width, so the wear map needs one")
     add_number(m, "--evolve-blocks", BLOCKS, default=None, metavar="K",
                help="roller followers: also evolve the profile (wear -> geometry -> pressure -> wear) "
-                        "in 1, 2, 4, ... K blocks of cycles and write the convergence table")
+                    "in 1, 2, 4, ... K blocks of cycles and write the convergence table")
     m.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     add_overwrite(m)
     m.set_defaults(func=_map)
