@@ -173,3 +173,17 @@ def test_assess_sweep_folder_files(kind, tmp_path, capsys):
     assert main(["assess", SCENE, "--out", str(tmp_path / "o"), "--sweep", str(d)]) == 1
     err, _ = _one_line(capsys, "assess")
     assert f"--sweep = {d}" in err
+
+
+def test_resume_store_manifest_fifo_does_not_block(tmp_path):
+    """A resume store whose manifest is a FIFO blocked for ever on read. It is not read (only
+    regular files are): like an unreadable manifest it counts as none, the sweep starts fresh
+    and writes a regular manifest in its place."""
+    from femcam.sweep.store import MANIFEST
+
+    chunks = tmp_path / "o" / "chunks"
+    chunks.mkdir(parents=True)
+    os.mkfifo(chunks / MANIFEST)
+    assert main(["sweep", SCENE, "--out", str(tmp_path / "o"), "--method", "hertz", "--angles-deg",
+                 "0:10:5", "--no-plots", "--resume"]) == 0
+    assert (chunks / MANIFEST).is_file()
