@@ -1,0 +1,178 @@
+r"""The analytic chain of a design at sample angles: objective and constraint margins per angle.
+
+Every quantity is a smooth function of the design at a fixed *normalised* angle ``u`` of each
+segment (the grid moves with ``rise_angle``), so its finite differences are smooth too. A
+maximum over angles is handled as one constraint per sample angle (the epigraph form, see
+:mod:`femcam.optimise.solve`); margins are dimensionless and >= 0 when the limit holds.
+
+Symbols
+-------
+=========  ===============================================  =====  ================================
+symbol     meaning                                          unit   source
+=========  ===============================================  =====  ================================
+phi        pressure angle                                   rad    Norton, *Design of Machinery*
+                                                                   eq. 8.31
+kappa_p    pitch-curve curvature (> 0 convex)               1/m    Norton ch. 8
+rho        cam radius of curvature at the contact           m      ``1/kappa_p - Rr``
+Fc         contact force at the operating speed             N      seed 002 eq. 11
+p0         Hertz peak pressure                              Pa     Johnson (1985) eq. 4.45
+k_vm       von Mises / p0 (and tau1 / p0), with friction    -      Johnson (1985) §7.1, McEwen 1949
+g_phi      ``1 - (phi/phi_max)^2``                          -      this module
+g_rho      ``1 - kappa_p (Rr + rho_min)``                   -      roller fits / no undercut
+g_lift     ``(m a + c v + k s + Fpl)/Fpl`` at ``omega_L``   -      seed 002 eq. 11 numerator
+=========  ===============================================  =====  ================================
+
+``g_rho >= 0`` is the undercut condition in a form that stays smooth through a flat pitch curve:
+a convex pitch radius ``1/kappa_p`` must exceed ``Rr + rho_min`` (cam radius ``rho >= rho_min``);
+a concave pitch curve (``kappa_p < 0``) always fits the roller (``|rho| = |1/kappa_p| + Rr``).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..errors import InputError
+from ..hertz import LineContact
+from ..hertz.conformity import shape_factors
+from ..profile import RollerFollower, cam_profile, pitch_curvature
+
+__all__ = ["OBJECTIVES", "OBJECTIVE_UNITS", "CONSTRAINT_UNITS", "angle_grid", "evaluate"]
+
+#: per-angle objectives (the maximum over the revolution is minimised) and their SI units;
+#: ``"wear"`` (max Archard depth per revolution, m) is a scalar objective (femcam.wear)
+OBJECTIVE_UNITS = {"p0": "Pa", "von_mises": "Pa", "tau1": "Pa", "acceleration": "m/s^2", "size": "m",
+                   "wear": "m"}
+OBJECTIVES = tuple(OBJECTIVE_UNITS)
+#: constraint names and the unit of their limit
+CONSTRAINT_UNITS = {"phi_max": "rad", "rho_min": "m", "liftoff_omega": "rad/s"}
+
+_RHO_FLOOR = 1e-7  # m: an undercut trial design gets a tiny convex radius (huge p0), not an error
+
+
+def angle_grid(program, n_motion: int, extra_u=()) -> tuple[np.ndarray, np.ndarray]:
+    """Sample angles: ``n_motion`` uniform ``u`` per rise/fall (plus ``extra_u``), one per dwell.
+
+    Parameters
+    ----------
+    program : femcam.kinematics.CamProgram
+        The cam program of the design.
+    n_motion : int
+        Samples per rise/fall segment, ends included.
+    extra_u : sequence of (int, float)
+        Extra ``(segment index, u)`` samples (the exchange points of the refinement).
+
+    Returns
+    -------
+    theta : ndarray, shape (m,)
+        Cam angles (rad).
+    seg_u : ndarray, shape (m, 2)
+        ``(segment index, u)`` of each angle.
+    """
+    rows = []
+    for k, sg in enumerate(program.segments):
+        us = np.linspace(0.0, 1.0, n_motion) if sg.law is not None else np.array([0.5])
+        rows.extend((k, float(u)) for u in us)
+    rows.extend((int(k), float(u)) for k, u in extra_u)
+    seg_u = np.array(rows, float)
+    starts = program.theta_starts
+    beta = np.array([sg.beta for sg in program.segments])
+    k = seg_u[:, 0].astype(int)
+    # u = 1 of segment k is u = 0 of segment k+1; keep it inside segment k by a round-off step back
+    theta = starts[k] + np.minimum(seg_u[:, 1], 1.0 - 1e-12) * beta[k]
+    return theta, seg_u
+
+
+def evaluate(scene, theta, objective: str, *, phi_max: float | None, rho_min: float | None,
+             liftoff_omega: float | None) -> dict:
+    """Objective and constraint margins of a scene variant at ``theta``.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The variant (roller or knife-edge follower).
+    theta : ndarray, shape (m,)
+        Cam angles (rad).
+    objective : str
+        One of :data:`OBJECTIVES` other than ``"wear"``.
+    phi_max : float or None
+        Pressure-angle limit (rad); None: not constrained.
+    rho_min : float or None
+        Smallest convex cam radius (m, >= 0; 0 = no undercut); None: not constrained.
+    liftoff_omega : float or None
+        Speed (rad/s) up to which the follower must not lift off; None: not constrained.
+
+    Returns
+    -------
+    dict
+        ``"objective"``: ndarray (m,) in the unit of :data:`OBJECTIVE_UNITS`; one margin array
+        (m,) per given constraint, dimensionless, >= 0 where it holds; ``"phi"`` (rad),
+        ``"rho"`` (m), ``"p0"`` (Pa), ``"Fc"`` (N), ``"a"`` (m/s^2) for reports.
+
+    Examples
+    --------
+    >>> from femcam.scene import load_scene
+    >>> sc = load_scene("examples/seed002_study_model.toml")
+    >>> r = evaluate(sc, np.array([0.5]), "p0", phi_max=0.5, rho_min=None, liftoff_omega=None)
+    >>> sorted(r)[:3]
+    ['Fc', 'a', 'objective']
+    """
+    f, w, dyn = scene.follower, scene.omega, scene.dynamics
+    d = scene.program.derivatives(theta)
+    Rr = float(f.Rr)
+    p = cam_profile(f, d.theta, d.s, d.s1, d.s2, allow_undercut=True)
+    kappa = pitch_curvature(d.s, d.s1, d.s2, f.Rp, f.e)
+    a = w * w * d.s2
+    Fc = (dyn.m * a + dyn.c * w * d.s1 + dyn.k * d.s + dyn.Fpl) / np.cos(p.phi)
+    out = {"phi": p.phi, "rho": p.rho, "Fc": Fc, "a": a}
+    if objective in ("p0", "von_mises", "tau1"):
+        if not isinstance(f, RollerFollower):
+            raise InputError(f"objective = {objective!r}: needs a roller follower (Hertz contact); "
+                             f"this scene's follower is a {f.kind} follower")
+        rho = np.where(kappa * (Rr + _RHO_FLOOR) >= 1.0, _RHO_FLOOR, p.rho)
+        hc = LineContact(F=np.clip(Fc, 0.0, None), length=scene.length, R1=rho, R2=Rr, cam=scene.cam,
+                         roller=scene.roller, plane=scene.plane)
+        p0 = np.asarray(hc.p0, float)
+        out["p0"] = p0
+        factors = shape_factors(scene.mu, scene.cam.nu, scene.plane)
+        factor = 1.0 if objective == "p0" else factors[objective][0]
+        out["objective"] = factor * p0
+    elif objective == "acceleration":
+        out["objective"] = np.abs(a)
+    elif objective == "size":
+        out["objective"] = np.hypot(p.x, p.y)
+    if phi_max is not None:
+        out["phi_max"] = 1.0 - (p.phi / phi_max) ** 2
+    if rho_min is not None:
+        out["rho_min"] = 1.0 - kappa * (Rr + rho_min)
+    if liftoff_omega is not None:
+        wl = liftoff_omega
+        out["liftoff_omega"] = (dyn.m * wl * wl * d.s2 + dyn.c * wl * d.s1 + dyn.k * d.s + dyn.Fpl) / dyn.Fpl
+    return out
+
+
+def constraint_value(name: str, r: dict, limit: float) -> float:
+    """The physical worst value of a constraint from :func:`evaluate`'s output (SI).
+
+    Parameters
+    ----------
+    name : str
+        ``"phi_max"``, ``"rho_min"`` or ``"liftoff_omega"``.
+    r : dict
+        Output of :func:`evaluate`.
+    limit : float
+        The constraint's limit (SI).
+
+    Returns
+    -------
+    float
+        Largest ``|phi|`` (rad), smallest convex cam radius (m; inf if none), or the smallest
+        contact force ratio ``Fc/Fpl`` at the lift-off speed (-).
+    """
+    if name == "phi_max":
+        return float(np.max(np.abs(r["phi"])))
+    if name == "rho_min":
+        rho = r["rho"][np.isfinite(r["rho"]) & (r["rho"] > 0)]
+        return float(rho.min()) if rho.size else math.inf
+    return float(np.min(r["liftoff_omega"]))

@@ -1,0 +1,175 @@
+"""The optimisation problem in scaled variables: values, finite-difference Jacobians, SLSQP runs.
+
+Design variables are scaled to ``z in [0, 1]`` by their bounds; the objective is divided by its
+value at the first start, so SLSQP sees numbers of order one. A maximum over angles is the
+*epigraph* form: minimise ``t`` subject to ``t >= q(theta_i)/q_ref`` at every sample angle
+(one linear-in-``t`` constraint per angle) -- exact for the discrete grid, no smoothing
+parameter, and SLSQP's multipliers pick the active angles. The grid is then refined by
+exchange (:mod:`femcam.optimise.solve`). Gradients are central finite differences in ``z``
+(step ``FD_STEP``) of the analytic chain, which is smooth in the design at a fixed normalised
+angle; the ``wear`` objective is a scalar whose maximum over the wear map is differenced as it
+is (piecewise smooth).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..wear.scene import scene_wear
+from .chain import angle_grid, evaluate
+
+#: central-difference step in the scaled variables z (truncation ~1e-12, round-off ~1e-10)
+FD_STEP = 1e-6
+#: a margin >= -FEAS_TOL counts as satisfied (margins are dimensionless)
+FEAS_TOL = 1e-7
+_WEAR_N = 720  # angles of the wear map per revolution (0.5 deg)
+
+
+class Problem:
+    """Scaled objective and constraint margins of one design problem (cached per ``z``).
+
+    Parameters
+    ----------
+    design : femcam.optimise.design.Design
+        Variables and the base scene.
+    objective : str
+        Objective name (:data:`femcam.optimise.chain.OBJECTIVES`).
+    limits : dict
+        ``{constraint name: limit (SI)}``.
+    n_motion : int
+        Samples per rise/fall segment.
+    """
+
+    def __init__(self, design, objective: str, limits: dict, n_motion: int):
+        self.design, self.objective, self.limits, self.n_motion = design, objective, dict(limits), n_motion
+        self.lo, self.hi = design.bounds()
+        self.extra_u: list = []
+        self.ref = 1.0
+        self.nfev = 0
+        self._cache: dict = {}
+
+    # ---- values -------------------------------------------------------------------------
+    def x_of(self, z) -> np.ndarray:
+        """Design vector (SI) of the scaled ``z``."""
+        return self.lo + np.asarray(z, float) * (self.hi - self.lo)
+
+    def z_of(self, x) -> np.ndarray:
+        """Scaled ``z`` of a design vector (SI)."""
+        return (np.asarray(x, float) - self.lo) / (self.hi - self.lo)
+
+    def raw(self, z, *, dense: int | None = None) -> dict:
+        """:func:`~femcam.optimise.chain.evaluate` of the variant at ``z`` on the current grid
+        (or on ``dense`` samples per rise/fall), plus ``"theta"``, ``"seg_u"`` and, for the wear
+        objective, the scalar ``"wear"`` (m per revolution)."""
+        scene = self.design.apply(self.x_of(z))
+        n = dense or self.n_motion
+        theta, seg_u = angle_grid(scene.program, n, () if dense else self.extra_u)
+        obj = "acceleration" if self.objective == "wear" else self.objective
+        lim = self.limits.get
+        r = evaluate(scene, theta, obj, phi_max=lim("phi_max"), rho_min=lim("rho_min"),
+                     liftoff_omega=self.limits.get("liftoff_omega"))
+        r["theta"], r["seg_u"], r["scene"] = theta, seg_u, scene
+        if self.objective == "wear":
+            r["wear"] = scalar_wear(scene)
+        self.nfev += 1
+        return r
+
+    def vector(self, z) -> tuple[np.ndarray, np.ndarray]:
+        """``(objective samples / ref, constraint margins)`` at ``z`` (cached)."""
+        key = np.asarray(z, float).tobytes()
+        if key not in self._cache:
+            r = self.raw(z)
+            q = np.atleast_1d(r["wear"]) if self.objective == "wear" else r["objective"]
+            m = [r[c] for c in self.limits]
+            self._cache = {key: (q / self.ref, np.concatenate(m) if m else np.zeros(0))} | (
+                {k: v for k, v in list(self._cache.items())[-64:]})
+        return self._cache[key]
+
+    def jacobian(self, z) -> tuple[np.ndarray, np.ndarray]:
+        """Central differences of :meth:`vector` in ``z`` (one-sided at a bound)."""
+        z = np.asarray(z, float)
+        cols_q, cols_m = [], []
+        for i in range(z.size):
+            up, dn = z.copy(), z.copy()
+            hp = FD_STEP if z[i] + FD_STEP <= 1.0 else 0.0
+            hm = FD_STEP if z[i] - FD_STEP >= 0.0 else 0.0
+            up[i] += hp
+            dn[i] -= hm
+            qu, mu = self.vector(up)
+            qd, md = self.vector(dn)
+            cols_q.append((qu - qd) / (hp + hm))
+            cols_m.append((mu - md) / (hp + hm))
+        return np.array(cols_q).T, np.array(cols_m).T
+
+    # ---- SLSQP --------------------------------------------------------------------------
+    def run(self, z0, *, maxiter: int = 200, ftol: float = 1e-12, only: str | None = None):
+        """One SLSQP run from ``z0``.
+
+        ``only=name``: the feasibility problem of one constraint alone (maximise its smallest
+        margin, the objective ignored). Returns the ``scipy.optimize.OptimizeResult`` with
+        ``z`` (scaled design) and ``t`` (epigraph value) added.
+        """
+        from scipy.optimize import minimize  # lazy: scipy.optimize, ~0.15 s to import
+
+        n = len(self.lo)
+        names = list(self.limits)
+        epi = only is not None or self.objective != "wear"
+        q0, m0 = self.vector(z0)
+
+        def split(y):
+            return (y[:n], y[n]) if epi else (y, 0.0)
+
+        def sel(m):
+            if only is None:
+                return m
+            k = names.index(only)
+            size = m.shape[0] // len(names)
+            return m[k * size:(k + 1) * size]
+
+        if only is not None:  # maximise s subject to margin_i >= s
+            fun = (lambda y: -y[n], lambda y: np.r_[np.zeros(n), -1.0])
+            cons = {"type": "ineq", "fun": lambda y: sel(self.vector(y[:n])[1]) - y[n],
+                    "jac": lambda y: np.c_[sel(self.jacobian(y[:n])[1]), -np.ones(sel(m0).size)]}
+            y0 = np.r_[z0, float(np.min(sel(m0)))]
+        elif epi:
+            fun = (lambda y: y[n], lambda y: np.r_[np.zeros(n), 1.0])
+
+            def cf(y):
+                q, m = self.vector(y[:n])
+                return np.r_[y[n] - q, m]
+
+            def cj(y):
+                jq, jm = self.jacobian(y[:n])
+                return np.r_[np.c_[-jq, np.ones(q0.size)], np.c_[jm, np.zeros(m0.size)]]
+
+            cons = {"type": "ineq", "fun": cf, "jac": cj}
+            y0 = np.r_[z0, float(np.max(q0))]
+        else:
+            fun = (lambda y: float(self.vector(y)[0][0]), lambda y: self.jacobian(y)[0][0])
+            cons = {"type": "ineq", "fun": lambda y: self.vector(y)[1], "jac": lambda y: self.jacobian(y)[1]}
+            y0 = np.asarray(z0, float)
+        bounds = [(0.0, 1.0)] * n + ([(None, None)] if epi else [])
+        res = minimize(fun[0], y0, jac=fun[1], method="SLSQP", bounds=bounds,
+                       constraints=[cons] if (names or epi) else [],
+                       options={"maxiter": maxiter, "ftol": ftol})
+        z, t = split(np.asarray(res.x, float))
+        res.z, res.t = np.clip(z, 0.0, 1.0), t
+        return res
+
+
+def scalar_wear(scene) -> float:
+    """Largest Archard wear depth per revolution on the cam (m), Hertz pressure (femcam.wear).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A roller scene variant.
+
+    Returns
+    -------
+    float
+        ``WearMap.max_depth`` of one revolution on ``_WEAR_N`` uniform angles (m).
+    """
+    theta = np.linspace(0.0, 2.0 * np.pi, _WEAR_N, endpoint=False)
+    wm, _st, _slip = scene_wear(scene, theta, cycles=1.0)
+    return float(wm.max_depth)
