@@ -5,8 +5,10 @@ SLSQP on the analytic chain, the optimum checked by the FE (docs/optimise.md).
 """
 
 from .chain import CONSTRAINT_UNITS, OBJECTIVE_UNITS, OBJECTIVES
+from .compare import COMPARE_COLUMNS, STANDARD_LAWS, compare_laws
 from .design import BezierRise, Design, Variable
 from .solve import FECheck, OptimiseResult, StartRecord, optimise
 
 __all__ = ["optimise", "OptimiseResult", "StartRecord", "FECheck", "Variable", "BezierRise", "Design",
+           "compare_laws", "COMPARE_COLUMNS", "STANDARD_LAWS",
            "OBJECTIVES", "OBJECTIVE_UNITS", "CONSTRAINT_UNITS"]

@@ -30,12 +30,14 @@ a concave pitch curve (``kappa_p < 0``) always fits the roller (``|rho| = |1/kap
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 
 from ..errors import InputError
 from ..hertz import LineContact
 from ..hertz.conformity import shape_factors
+from ..hertz.contact import HertzValidityWarning
 from ..profile import RollerFollower, cam_profile, pitch_curvature
 
 __all__ = ["OBJECTIVES", "OBJECTIVE_UNITS", "CONSTRAINT_UNITS", "angle_grid", "evaluate"]
@@ -131,9 +133,11 @@ def evaluate(scene, theta, objective: str, *, phi_max: float | None, rho_min: fl
             raise InputError(f"objective = {objective!r}: needs a roller follower (Hertz contact); "
                              f"this scene's follower is a {f.kind} follower")
         rho = np.where(kappa * (Rr + _RHO_FLOOR) >= 1.0, _RHO_FLOOR, p.rho)
-        hc = LineContact(F=np.clip(Fc, 0.0, None), length=scene.length, R1=rho, R2=Rr, cam=scene.cam,
-                         roller=scene.roller, plane=scene.plane)
-        p0 = np.asarray(hc.p0, float)
+        with warnings.catch_warnings():  # a trial design may strain Hertz; the optimum is reported
+            warnings.simplefilter("ignore", HertzValidityWarning)
+            hc = LineContact(F=np.clip(Fc, 0.0, None), length=scene.length, R1=rho, R2=Rr, cam=scene.cam,
+                             roller=scene.roller, plane=scene.plane)
+            p0 = np.asarray(hc.p0, float)
         out["p0"] = p0
         factors = shape_factors(scene.mu, scene.cam.nu, scene.plane)
         factor = 1.0 if objective == "p0" else factors[objective][0]
