@@ -216,9 +216,14 @@ class Design:
         return tuple(v.name for v in self.variables)
 
     def base_free(self) -> np.ndarray:
-        """Free Bezier ordinates of the base scene: its rise law's, if that law is of the family."""
+        """Free Bezier ordinates of the base scene: its rise law's, degree-elevated to the family's
+        degree (Farin ch. 5: the curve is unchanged), if that law is of the family."""
         lw = next(s.law for s in self.scene.program.segments if s.law is not None)
         P = getattr(lw, "control_points", None)
+        while P is not None and len(P) < self.bezier.degree + 1:
+            m = len(P)  # elevate degree m-1 -> m: Q_i = i/m P_{i-1} + (1 - i/m) P_i
+            i = np.arange(1, m)
+            P = np.r_[P[0], i / m * P[:-1] + (1.0 - i / m) * P[1:], P[-1]]
         if P is not None and len(P) == self.bezier.degree + 1:
             cand = np.asarray(P, float)
             if np.allclose(self.bezier.control_points(cand[list(self.bezier.free)]), cand, atol=1e-12):
