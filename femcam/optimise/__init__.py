@@ -7,7 +7,8 @@ SLSQP on the analytic chain, the optimum checked by the FE (docs/optimise.md).
 from .chain import CONSTRAINT_UNITS, OBJECTIVE_UNITS, OBJECTIVES
 from .compare import COMPARE_COLUMNS, STANDARD_LAWS, compare_laws
 from .design import BezierRise, Design, Variable
-from .solve import FECheck, OptimiseResult, StartRecord, optimise
+from .result import FECheck, OptimiseResult, StartRecord
+from .solve import optimise
 
 __all__ = ["optimise", "OptimiseResult", "StartRecord", "FECheck", "Variable", "BezierRise", "Design",
            "compare_laws", "COMPARE_COLUMNS", "STANDARD_LAWS",

@@ -130,7 +130,13 @@ class BezierRise:
         return P
 
     def default_free(self) -> np.ndarray:
-        """Free ordinates evenly spaced in (0, 1): the starting law when the scene gives none."""
+        """Free ordinates evenly spaced in (0, 1): the starting law when the scene gives none.
+
+        Returns
+        -------
+        ndarray, shape (len(free),)
+            Ordinates ``1/(m+1) ... m/(m+1)`` (dimensionless).
+        """
         m = len(self.free)
         return np.arange(1, m + 1) / (m + 1.0)
 
@@ -217,7 +223,13 @@ class Design:
 
     def base_free(self) -> np.ndarray:
         """Free Bezier ordinates of the base scene: its rise law's, degree-elevated to the family's
-        degree (Farin ch. 5: the curve is unchanged), if that law is of the family."""
+        degree (Farin ch. 5: the curve is unchanged), if that law is of the family.
+
+        Returns
+        -------
+        ndarray, shape (len(free),)
+            Free ordinates (dimensionless); :meth:`BezierRise.default_free` otherwise.
+        """
         lw = next(s.law for s in self.scene.program.segments if s.law is not None)
         P = getattr(lw, "control_points", None)
         while P is not None and len(P) < self.bezier.degree + 1:
@@ -231,7 +243,18 @@ class Design:
         return self.bezier.default_free()
 
     def base_value(self, name: str) -> float:
-        """The base scene's value of variable ``name`` (SI)."""
+        """The base scene's value of a variable.
+
+        Parameters
+        ----------
+        name : str
+            Variable name.
+
+        Returns
+        -------
+        float
+            Its value in the base scene (SI).
+        """
         f = self.scene.follower
         if name == "base_radius":
             return float(f.Rb)
@@ -243,16 +266,39 @@ class Design:
         return float(self.base_free()[i])
 
     def start(self) -> np.ndarray:
-        """The first starting point: each variable's ``start``, else the scene's value, clipped."""
+        """The first starting point: each variable's ``start``, else the scene's value, clipped.
+
+        Returns
+        -------
+        ndarray, shape (n_variables,)
+            Design vector (SI).
+        """
         return np.array([v.start if v.start is not None else
                          min(max(self.base_value(v.name), v.lower), v.upper) for v in self.variables])
 
     def bounds(self) -> tuple[np.ndarray, np.ndarray]:
-        """``(lower, upper)`` arrays (SI)."""
+        """The bounds.
+
+        Returns
+        -------
+        lower, upper : ndarray, shape (n_variables,)
+            Bounds (SI).
+        """
         return (np.array([v.lower for v in self.variables]), np.array([v.upper for v in self.variables]))
 
     def control_points(self, x) -> np.ndarray | None:
-        """All Bezier ordinates at ``x`` (None when no control point is a variable)."""
+        """All Bezier ordinates of the design.
+
+        Parameters
+        ----------
+        x : array_like, shape (n_variables,)
+            Design vector (SI).
+
+        Returns
+        -------
+        ndarray, shape (n + 1,) or None
+            Ordinates (dimensionless); None when no control point is a variable.
+        """
         if self.bezier is None or not any(n.startswith("control_point_") for n in self.names):
             return None
         free = self.base_free().copy()
@@ -262,7 +308,18 @@ class Design:
         return self.bezier.control_points(free)
 
     def follower(self, x):
-        """The follower at ``x`` (``dataclasses.replace`` of the scene's)."""
+        """The follower of the design.
+
+        Parameters
+        ----------
+        x : array_like, shape (n_variables,)
+            Design vector (SI).
+
+        Returns
+        -------
+        RollerFollower or KnifeEdgeFollower
+            ``dataclasses.replace`` of the scene's follower (m).
+        """
         kw = {}
         for n, xi in zip(self.names, x, strict=True):
             if n == "base_radius":
@@ -272,7 +329,18 @@ class Design:
         return dataclasses.replace(self.scene.follower, **kw) if kw else self.scene.follower
 
     def program(self, x) -> CamProgram:
-        """The cam program at ``x``: new Bezier law and/or rise angle; dwells rescaled."""
+        """The cam program of the design: new Bezier law and/or rise angle; dwells rescaled.
+
+        Parameters
+        ----------
+        x : array_like, shape (n_variables,)
+            Design vector (SI).
+
+        Returns
+        -------
+        femcam.kinematics.CamProgram
+            The program (rad, m).
+        """
         segs = list(self.scene.program.segments)
         P = self.control_points(x)
         if P is not None:

@@ -50,17 +50,52 @@ class Problem:
 
     # ---- values -------------------------------------------------------------------------
     def x_of(self, z) -> np.ndarray:
-        """Design vector (SI) of the scaled ``z``."""
+        """Design vector of a scaled point.
+
+        Parameters
+        ----------
+        z : array_like, shape (n,)
+            Scaled design in [0, 1].
+
+        Returns
+        -------
+        ndarray, shape (n,)
+            Design vector (SI).
+        """
         return self.lo + np.asarray(z, float) * (self.hi - self.lo)
 
     def z_of(self, x) -> np.ndarray:
-        """Scaled ``z`` of a design vector (SI)."""
+        """Scaled point of a design vector.
+
+        Parameters
+        ----------
+        x : array_like, shape (..., n)
+            Design vector(s) (SI).
+
+        Returns
+        -------
+        ndarray, shape (..., n)
+            Scaled design in [0, 1].
+        """
         return (np.asarray(x, float) - self.lo) / (self.hi - self.lo)
 
     def raw(self, z, *, dense: int | None = None) -> dict:
         """:func:`~femcam.optimise.chain.evaluate` of the variant at ``z`` on the current grid
         (or on ``dense`` samples per rise/fall), plus ``"theta"``, ``"seg_u"`` and, for the wear
-        objective, the scalar ``"wear"`` (m per revolution)."""
+        objective, the scalar ``"wear"`` (m per revolution).
+
+        Parameters
+        ----------
+        z : array_like, shape (n,)
+            Scaled design.
+        dense : int, optional
+            Samples per rise/fall of a fine grid (no exchange points).
+
+        Returns
+        -------
+        dict
+            Per-angle arrays (SI and dimensionless margins) and the variant ``"scene"``.
+        """
         scene = self.design.apply(self.x_of(z))
         n = dense or self.n_motion
         theta, seg_u = angle_grid(scene.program, n, () if dense else self.extra_u)
@@ -75,7 +110,20 @@ class Problem:
         return r
 
     def vector(self, z) -> tuple[np.ndarray, np.ndarray]:
-        """``(objective samples / ref, constraint margins)`` at ``z`` (cached)."""
+        """Scaled objective samples and constraint margins (cached per ``z``).
+
+        Parameters
+        ----------
+        z : array_like, shape (n,)
+            Scaled design.
+
+        Returns
+        -------
+        q : ndarray, shape (m,)
+            Objective per grid angle / ``ref`` (one value for the wear objective).
+        margins : ndarray, shape (k m,)
+            Constraint margins, constraint by constraint (dimensionless).
+        """
         key = np.asarray(z, float).tobytes()
         if key not in self._cache:
             r = self.raw(z)
@@ -86,7 +134,18 @@ class Problem:
         return self._cache[key]
 
     def jacobian(self, z) -> tuple[np.ndarray, np.ndarray]:
-        """Central differences of :meth:`vector` in ``z`` (one-sided at a bound)."""
+        """Central differences of :meth:`vector` in ``z`` (one-sided at a bound).
+
+        Parameters
+        ----------
+        z : array_like, shape (n,)
+            Scaled design.
+
+        Returns
+        -------
+        dq, dm : ndarray, shapes (m, n) and (k m, n)
+            Jacobians of the two arrays of :meth:`vector`.
+        """
         z = np.asarray(z, float)
         cols_q, cols_m = [], []
         for i in range(z.size):
@@ -106,8 +165,23 @@ class Problem:
         """One SLSQP run from ``z0``.
 
         ``only=name``: the feasibility problem of one constraint alone (maximise its smallest
-        margin, the objective ignored). Returns the ``scipy.optimize.OptimizeResult`` with
-        ``z`` (scaled design) and ``t`` (epigraph value) added.
+        margin, the objective ignored).
+
+        Parameters
+        ----------
+        z0 : array_like, shape (n,)
+            Scaled start.
+        maxiter : int
+            SLSQP iterations.
+        ftol : float
+            SLSQP's tolerance on the (scaled) objective.
+        only : str, optional
+            A constraint name: its feasibility problem alone.
+
+        Returns
+        -------
+        scipy.optimize.OptimizeResult
+            With ``z`` (scaled design) and ``t`` (epigraph value) added.
         """
         from scipy.optimize import minimize  # lazy: scipy.optimize, ~0.15 s to import
 
