@@ -39,11 +39,14 @@ from ..hertz import LineContact
 from ..hertz.conformity import shape_factors
 from ..hertz.contact import HertzValidityWarning
 from ..profile import RollerFollower, cam_profile, pitch_curvature
+from ..wear.map import wear_depth_per_angle
+from ..wear.options import slip_kwargs, wear_coefficient_info, wear_options
+from ..wear.slip import follower_slip
 
 __all__ = ["OBJECTIVES", "OBJECTIVE_UNITS", "CONSTRAINT_UNITS", "angle_grid", "evaluate"]
 
 #: per-angle objectives (the maximum over the revolution is minimised) and their SI units;
-#: ``"wear"`` (max Archard depth per revolution, m) is a scalar objective (femcam.wear)
+#: ``"wear"``: the Archard cam wear depth per revolution at the contact (femcam.wear)
 OBJECTIVE_UNITS = {"p0": "Pa", "von_mises": "Pa", "tau1": "Pa", "acceleration": "m/s^2", "size": "m",
                    "wear": "m"}
 OBJECTIVES = tuple(OBJECTIVE_UNITS)
@@ -97,7 +100,7 @@ def evaluate(scene, theta, objective: str, *, phi_max: float | None, rho_min: fl
     theta : ndarray, shape (m,)
         Cam angles (rad).
     objective : str
-        One of :data:`OBJECTIVES` other than ``"wear"``.
+        One of :data:`OBJECTIVES`.
     phi_max : float or None
         Pressure-angle limit (rad); None: not constrained.
     rho_min : float or None
@@ -128,7 +131,7 @@ def evaluate(scene, theta, objective: str, *, phi_max: float | None, rho_min: fl
     a = w * w * d.s2
     Fc = (dyn.m * a + dyn.c * w * d.s1 + dyn.k * d.s + dyn.Fpl) / np.cos(p.phi)
     out = {"phi": p.phi, "rho": p.rho, "Fc": Fc, "a": a}
-    if objective in ("p0", "von_mises", "tau1"):
+    if objective in ("p0", "von_mises", "tau1", "wear"):
         if not isinstance(f, RollerFollower):
             raise InputError(f"objective = {objective!r}: needs a roller follower (Hertz contact); "
                              f"this scene's follower is a {f.kind} follower")
@@ -139,9 +142,11 @@ def evaluate(scene, theta, objective: str, *, phi_max: float | None, rho_min: fl
                              roller=scene.roller, plane=scene.plane)
             p0 = np.asarray(hc.p0, float)
         out["p0"] = p0
-        factors = shape_factors(scene.mu, scene.cam.nu, scene.plane)
-        factor = 1.0 if objective == "p0" else factors[objective][0]
-        out["objective"] = factor * p0
+        if objective == "wear":
+            out["objective"] = _wear(scene, d, np.clip(Fc, 0.0, None), np.asarray(hc.a, float), p0)
+        else:
+            factors = shape_factors(scene.mu, scene.cam.nu, scene.plane)
+            out["objective"] = (1.0 if objective == "p0" else factors[objective][0]) * p0
     elif objective == "acceleration":
         out["objective"] = np.abs(a)
     elif objective == "size":
@@ -154,6 +159,20 @@ def evaluate(scene, theta, objective: str, *, phi_max: float | None, rho_min: fl
         wl = liftoff_omega
         out["liftoff_omega"] = (dyn.m * wl * wl * d.s2 + dyn.c * wl * d.s1 + dyn.k * d.s + dyn.Fpl) / dyn.Fpl
     return out
+
+
+def _wear(scene, d, Fc, a, p0) -> np.ndarray:
+    """Archard cam wear depth per revolution at each angle's contact (m): femcam.wear's closed
+    form ``k w v_slip / V_cam`` with the scene's k and slip model (pointwise models only: the
+    inertia-limited roller integrates over the revolution, which a design grid is not)."""
+    opts = wear_options(scene)
+    kw = slip_kwargs(scene, opts)
+    if kw["roller_model"] != "srr":
+        raise InputError(f"[wear] roller_model = {kw['roller_model']!r}: the wear objective needs the "
+                         "pointwise slide-to-roll model ('srr')")
+    slip = follower_slip(scene.follower, d.theta, d.s, d.s1, d.s2, Fc=Fc, **kw)
+    k, _where = wear_coefficient_info(scene)
+    return wear_depth_per_angle(d.theta, a, p0, Fc, slip, k)
 
 
 def constraint_value(name: str, r: dict, limit: float) -> float:

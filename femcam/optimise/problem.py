@@ -7,22 +7,19 @@ value at the first start, so SLSQP sees numbers of order one. A maximum over ang
 parameter, and SLSQP's multipliers pick the active angles. The grid is then refined by
 exchange (:mod:`femcam.optimise.solve`). Gradients are central finite differences in ``z``
 (step ``FD_STEP``) of the analytic chain, which is smooth in the design at a fixed normalised
-angle; the ``wear`` objective is a scalar whose maximum over the wear map is differenced as it
-is (piecewise smooth).
+angle.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from ..wear.scene import scene_wear
 from .chain import angle_grid, evaluate
 
 #: central-difference step in the scaled variables z (truncation ~1e-12, round-off ~1e-10)
 FD_STEP = 1e-6
 #: a margin >= -FEAS_TOL counts as satisfied (margins are dimensionless)
 FEAS_TOL = 1e-7
-_WEAR_N = 720  # angles of the wear map per revolution (0.5 deg)
 
 
 class Problem:
@@ -81,8 +78,7 @@ class Problem:
 
     def raw(self, z, *, dense: int | None = None) -> dict:
         """:func:`~femcam.optimise.chain.evaluate` of the variant at ``z`` on the current grid
-        (or on ``dense`` samples per rise/fall), plus ``"theta"``, ``"seg_u"`` and, for the wear
-        objective, the scalar ``"wear"`` (m per revolution).
+        (or on ``dense`` samples per rise/fall), plus ``"theta"`` and ``"seg_u"``.
 
         Parameters
         ----------
@@ -99,13 +95,10 @@ class Problem:
         scene = self.design.apply(self.x_of(z))
         n = dense or self.n_motion
         theta, seg_u = angle_grid(scene.program, n, () if dense else self.extra_u)
-        obj = "acceleration" if self.objective == "wear" else self.objective
         lim = self.limits.get
-        r = evaluate(scene, theta, obj, phi_max=lim("phi_max"), rho_min=lim("rho_min"),
+        r = evaluate(scene, theta, self.objective, phi_max=lim("phi_max"), rho_min=lim("rho_min"),
                      liftoff_omega=self.limits.get("liftoff_omega"))
         r["theta"], r["seg_u"], r["scene"] = theta, seg_u, scene
-        if self.objective == "wear":
-            r["wear"] = scalar_wear(scene)
         self.nfev += 1
         return r
 
@@ -120,14 +113,14 @@ class Problem:
         Returns
         -------
         q : ndarray, shape (m,)
-            Objective per grid angle / ``ref`` (one value for the wear objective).
+            Objective per grid angle / ``ref``.
         margins : ndarray, shape (k m,)
             Constraint margins, constraint by constraint (dimensionless).
         """
         key = np.asarray(z, float).tobytes()
         if key not in self._cache:
             r = self.raw(z)
-            q = np.atleast_1d(r["wear"]) if self.objective == "wear" else r["objective"]
+            q = r["objective"]
             m = [r[c] for c in self.limits]
             self._cache = {key: (q / self.ref, np.concatenate(m) if m else np.zeros(0))} | (
                 {k: v for k, v in list(self._cache.items())[-64:]})
@@ -187,7 +180,7 @@ class Problem:
 
         n = len(self.lo)
         names = list(self.limits)
-        epi = only is not None or self.objective != "wear"
+        epi = True
         q0, m0 = self.vector(z0)
 
         def split(y):
@@ -229,21 +222,3 @@ class Problem:
         z, t = split(np.asarray(res.x, float))
         res.z, res.t = np.clip(z, 0.0, 1.0), t
         return res
-
-
-def scalar_wear(scene) -> float:
-    """Largest Archard wear depth per revolution on the cam (m), Hertz pressure (femcam.wear).
-
-    Parameters
-    ----------
-    scene : femcam.scene.Scene
-        A roller scene variant.
-
-    Returns
-    -------
-    float
-        ``WearMap.max_depth`` of one revolution on ``_WEAR_N`` uniform angles (m).
-    """
-    theta = np.linspace(0.0, 2.0 * np.pi, _WEAR_N, endpoint=False)
-    wm, _st, _slip = scene_wear(scene, theta, cycles=1.0)
-    return float(wm.max_depth)

@@ -87,10 +87,9 @@ def _worst_u(prob: Problem, z) -> tuple[list, float, dict]:
     """Exchange points (segment, u) of the fine grid, the relative gap, and the fine-grid values."""
     fine = prob.raw(z, dense=DENSE)
     grid = prob.raw(z)
-    q_f = fine["wear"] if prob.objective == "wear" else fine["objective"]
-    q_g = grid["wear"] if prob.objective == "wear" else grid["objective"]
+    q_f, q_g = fine["objective"], grid["objective"]
     gap = float((np.max(q_f) - np.max(q_g)) / max(abs(np.max(q_g)), 1e-300))
-    arrays = ([] if prob.objective == "wear" else [np.asarray(fine["objective"])]) + \
+    arrays = [np.asarray(fine["objective"])] + \
         [-np.asarray(fine[c]) for c in prob.limits]
     for c in prob.limits:
         gap = max(gap, float(np.min(grid[c]) - np.min(fine[c])))
@@ -99,7 +98,7 @@ def _worst_u(prob: Problem, z) -> tuple[list, float, dict]:
     du = 1.0 / (DENSE - 1)
     for f in arrays:
         top = float(np.max(f))
-        near = top - 1e-3 * max(abs(top), 1.0 if f is not arrays[0] or prob.objective == "wear" else 0.0)
+        near = top - 1e-3 * max(abs(top), 0.0 if f is arrays[0] else 1.0)  # margins: scale 1
         for k in np.unique(seg):
             idx = np.flatnonzero(seg == k)
             if idx.size < 3:
@@ -127,7 +126,8 @@ def optimise(scene_or_path, *, objective: str = "p0", variables, constraints=Non
     objective : str
         ``"p0"`` (peak Hertz pressure, Pa), ``"von_mises"``/``"tau1"`` (Pa; Hertz shape factors
         with the scene's friction), ``"acceleration"`` (peak ``|a|``, m/s^2), ``"size"``
-        (largest cam radius, m) or ``"wear"`` (largest Archard depth per revolution, m).
+        (largest cam radius, m) or ``"wear"`` (largest Archard cam wear depth per revolution at
+        the contact, m; slide-to-roll roller model).
     variables : dict or sequence of Variable
         ``{name: (lower, upper)}`` in SI, or :class:`Variable` objects: ``base_radius`` (m),
         ``roller_radius`` (m), ``rise_angle`` (rad), ``control_point_<i>`` (free Bezier
@@ -166,7 +166,7 @@ def optimise(scene_or_path, *, objective: str = "p0", variables, constraints=Non
     prob = Problem(design, objective, limits, _validate.integer("n_motion", n_motion, 3))
     zs = _starts(prob, design, starts)
     q_start = prob.raw(zs[0], dense=DENSE)
-    start_value = float(np.max(q_start["wear"] if objective == "wear" else q_start["objective"]))
+    start_value = float(np.max(q_start["objective"]))
     prob.ref = max(abs(float(np.max(prob.vector(zs[0])[0]))), 1e-300)
     prob._cache.clear()
     records, runs = [], []
@@ -200,7 +200,7 @@ def optimise(scene_or_path, *, objective: str = "p0", variables, constraints=Non
 
 def _result(prob, design, res, fine, start_value, records, iters, rounds, gap, spread, verify_fe):
     x = prob.x_of(res.z)
-    q = fine["wear"] if prob.objective == "wear" else fine["objective"]
+    q = fine["objective"]
     cons = {c: {"limit": lim, "value": constraint_value(c, fine, lim), "margin": float(np.min(fine[c]))}
             for c, lim in prob.limits.items()}
     feas = all(v["margin"] >= -FEAS_TOL for v in cons.values())
