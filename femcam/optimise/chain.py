@@ -170,7 +170,13 @@ def _wear(scene, d, Fc, a, p0) -> np.ndarray:
     if kw["roller_model"] != "srr":
         raise InputError(f"[wear] roller_model = {kw['roller_model']!r}: the wear objective needs the "
                          "pointwise slide-to-roll model ('srr')")
-    slip = follower_slip(scene.follower, d.theta, d.s, d.s1, d.s2, Fc=Fc, **kw)
+    f = scene.follower
+    # an undercut trial design (cam rho <= 0 somewhere) has no slip kinematics: continue it with
+    # the s'' that gives rho = _RHO_FLOOR there (the pitch curvature is linear in s'')
+    r = math.sqrt(f.Rp**2 - f.e**2) + d.s
+    q = d.s1 - f.e
+    s2_floor = (r * r + q * (2.0 * d.s1 - f.e) - (r * r + q * q) ** 1.5 / (f.Rr + _RHO_FLOOR)) / r
+    slip = follower_slip(f, d.theta, d.s, d.s1, np.maximum(d.s2, s2_floor), Fc=Fc, **kw)
     k, _where = wear_coefficient_info(scene)
     return wear_depth_per_angle(d.theta, a, p0, Fc, slip, k)
 

@@ -9,6 +9,7 @@ import math
 import numpy as np
 
 from .. import _validate
+from ..errors import InputError
 from ..kinematics import LAW_NAMES
 from .chain import angle_grid, constraint_value, evaluate
 from .solve import DENSE
@@ -23,7 +24,8 @@ STANDARD_LAWS = ("bezier5", "bezier7", "bezier9", "cycloidal", "poly345", "poly4
 COMPARE_COLUMNS = (("p0_max", "p0_max_MPa", 1e-6), ("phi_max", "phi_max_deg", 180.0 / math.pi),
                    ("rho_min", "rho_min_mm", 1e3), ("a_max", "a_max_m_per_s2", 1.0),
                    ("margin_phi", "margin_phi_deg", 180.0 / math.pi), ("margin_rho", "margin_rho_mm", 1e3),
-                   ("margin_liftoff", "margin_liftoff_Fc_over_Fpl", 1.0))
+                   ("margin_liftoff", "margin_liftoff_Fc_over_Fpl", 1.0),
+                   ("wear_max", "wear_max_m_per_rev", 1.0))
 
 
 def compare_laws(scene, *, optimum=None, laws=STANDARD_LAWS, constraints=None) -> dict:
@@ -47,7 +49,9 @@ def compare_laws(scene, *, optimum=None, laws=STANDARD_LAWS, constraints=None) -
         ``"law"`` (str array) and, per row, ``p0_max`` (Pa), ``phi_max`` (rad), ``rho_min``
         (m, smallest convex cam radius), ``a_max`` (m/s^2), ``margin_phi`` (limit - max
         ``|phi|``, rad), ``margin_rho`` (min ``rho`` - limit, m), ``margin_liftoff`` (min
-        ``Fc/Fpl`` at the lift-off speed, -); >= 0 means the limit holds.
+        ``Fc/Fpl`` at the lift-off speed, -); >= 0 means the limit holds; ``wear_max``: the
+        largest Archard cam wear depth per revolution at the contact (m; NaN when the scene's
+        slip model is not the pointwise slide-to-roll one).
     """
     lim = dict(constraints or {})
     names = [_validate.choice("laws", n, LAW_NAMES) for n in laws]
@@ -55,9 +59,15 @@ def compare_laws(scene, *, optimum=None, laws=STANDARD_LAWS, constraints=None) -
     if optimum is not None:
         variants.append(("optimum", optimum.apply(scene)))
     rows = {k: [] for k in ("law", "p0_max", "phi_max", "rho_min", "a_max", "margin_phi", "margin_rho",
-                            "margin_liftoff")}
+                            "margin_liftoff", "wear_max")}
     for name, sc in variants:
         theta, _ = angle_grid(sc.program, DENSE)
+        try:
+            wear = float(np.max(evaluate(sc, theta, "wear", phi_max=None, rho_min=None,
+                                         liftoff_omega=None)["objective"]))
+        except InputError:  # the inertia-limited roller: no pointwise wear
+            wear = math.nan
+        rows["wear_max"].append(wear)
         r = evaluate(sc, theta, "p0", phi_max=lim.get("phi_max"), rho_min=lim.get("rho_min"),
                      liftoff_omega=lim.get("liftoff_omega"))
         phi = constraint_value("phi_max", r, 0.0)
