@@ -18,8 +18,8 @@ from .chain import angle_grid, evaluate
 
 #: central-difference step in the scaled variables z (truncation ~1e-12, round-off ~1e-10)
 FD_STEP = 1e-6
-#: a margin >= -FEAS_TOL counts as satisfied (margins are dimensionless)
-FEAS_TOL = 1e-7
+#: a margin >= -FEAS_TOL counts as satisfied (dimensionless; phi over its limit by <= 5e-7 phi_max)
+FEAS_TOL = 1e-6
 
 
 class Problem:
