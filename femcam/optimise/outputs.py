@@ -54,13 +54,15 @@ def parse_vary(spec: str, free: tuple = ()) -> list:
     if not sep or not sep2:
         raise InputError(f"--vary = {spec!r}: must be NAME=LO:HI (e.g. base_radius_mm=5:20)")
     name = name.strip()
+    unit = name.rsplit("_", 1)[1] if name in EDGE_UNITS else ""
+    lo = _validate.number(f"--vary {name} LO", lo_s, unit)
+    hi = _validate.number(f"--vary {name} HI", hi_s, unit)
+    if not lo < hi:
+        raise InputError(f"--vary {name} = {lo:g}:{hi:g}{' ' + unit if unit else ''}: empty or inverted "
+                         "range (must have LO < HI)")
     if name in EDGE_UNITS:
         si, f = EDGE_UNITS[name]
-        unit = name.rsplit("_", 1)[1]
-        return [Variable(name=si, lower=_validate.number(f"--vary {name} LO", lo_s, unit) * f,
-                         upper=_validate.number(f"--vary {name} HI", hi_s, unit) * f)]
-    lo = _validate.number(f"--vary {name} LO", lo_s)
-    hi = _validate.number(f"--vary {name} HI", hi_s)
+        return [Variable(name=si, lower=lo * f, upper=hi * f)]
     if name == "control_points":
         return [Variable(name=f"control_point_{i}", lower=lo, upper=hi) for i in free]
     if name.startswith("control_point_"):
