@@ -144,6 +144,18 @@ def test_cli_optimise_writes_optimum_and_table(tmp_path):
 
 
 @pytest.mark.slow
+def test_largest_smallest_safety_factor_is_the_p0_optimum():
+    # on seed002_assess the smallest safety factor is subsurface fatigue, a fixed limit over
+    # tau_orth = const * p0: maximising it is minimising peak p0 (same law, same constraints)
+    sc = load_scene(SCENE.parent / "seed002_assess.toml")
+    cons = {"phi_max": PHI, "rho_min": 0.0}
+    ru = optimise(sc, objective="utilisation", variables=FREE, constraints=cons, verify_fe=False)
+    rp = optimise(sc, objective="p0", variables=FREE, constraints=cons, verify_fe=False)
+    np.testing.assert_allclose(ru.control_points, rp.control_points, atol=1e-5,
+                               err_msg="max-min safety factor law = min peak p0 law")
+
+
+@pytest.mark.slow
 def test_fe_check_of_the_p0_optimum(scene):
     r = optimise(scene, objective="p0", variables=FREE, constraints={"phi_max": PHI, "rho_min": 0.0},
                  verify_fe=True)

@@ -40,6 +40,9 @@ def register(subparsers) -> None:
     p.add_argument("--rho-min-mm", type=float, default=0.0,
                    help="smallest convex cam radius (mm; default 0 = no undercut)")
     p.add_argument("--liftoff-rpm", type=float, default=None, help="no lift-off up to this speed (rpm)")
+    p.add_argument("--safety-min", type=float, default=None,
+                   help="smallest safety factor of every assessment criterion (needs the scene's data)")
+    p.add_argument("--lambda-min", type=float, default=None, help="smallest film ratio lambda (assessment)")
     p.add_argument("--degree", type=int, default=9, help="Bezier degree when control points vary (default 9)")
     p.add_argument("--zero-derivatives", type=int, default=2,
                    help="derivatives that vanish at each end of the Bezier rise (default 2: v, a)")
@@ -54,6 +57,9 @@ def _run(args) -> int:
     bez = BezierRise(degree=args.degree, zero_derivatives=args.zero_derivatives)
     variables = [v for spec in args.vary for v in parse_vary(spec, bez.free)]
     cons = {"phi_max": math.radians(args.phi_max_deg), "rho_min": args.rho_min_mm * 1e-3}
+    for key in ("safety_min", "lambda_min"):
+        if getattr(args, key) is not None:
+            cons[key] = getattr(args, key)
     if args.liftoff_rpm is not None:
         cons["liftoff_omega"] = args.liftoff_rpm * math.pi / 30.0
     res = optimise(scene, objective=args.objective, variables=variables, constraints=cons, starts=args.starts,

@@ -34,7 +34,8 @@ import warnings
 
 import numpy as np
 
-from ..errors import InputError
+from ..assess import assess
+from ..errors import InputError, PhysicsError
 from ..hertz import LineContact
 from ..hertz.conformity import shape_factors
 from ..hertz.contact import HertzValidityWarning
@@ -48,10 +49,14 @@ __all__ = ["OBJECTIVES", "OBJECTIVE_UNITS", "CONSTRAINT_UNITS", "angle_grid", "e
 #: per-angle objectives (the maximum over the revolution is minimised) and their SI units;
 #: ``"wear"``: the Archard cam wear depth per revolution at the contact (femcam.wear)
 OBJECTIVE_UNITS = {"p0": "Pa", "von_mises": "Pa", "tau1": "Pa", "acceleration": "m/s^2", "size": "m",
-                   "wear": "m"}
+                   "wear": "m", "utilisation": "-"}
 OBJECTIVES = tuple(OBJECTIVE_UNITS)
 #: constraint names and the unit of their limit
-CONSTRAINT_UNITS = {"phi_max": "rad", "rho_min": "m", "liftoff_omega": "rad/s"}
+CONSTRAINT_UNITS = {"phi_max": "rad", "rho_min": "m", "liftoff_omega": "rad/s", "safety_min": "-",
+                    "lambda_min": "-"}
+#: the assessment's safety-factor columns (femcam.assess): every one is a row of the margins
+SF_COLUMNS = ("sf_yield", "sf_shakedown", "sf_subsurface", "sf_surface_fatigue", "sf_scuffing")
+_SF_NONE = 1e6  # a criterion the scene cannot assess, or an angle without contact: no limit
 
 _RHO_FLOOR = 1e-7  # m: an undercut trial design gets a tiny convex radius (huge p0), not an error
 
@@ -90,7 +95,8 @@ def angle_grid(program, n_motion: int, extra_u=()) -> tuple[np.ndarray, np.ndarr
 
 
 def evaluate(scene, theta, objective: str, *, phi_max: float | None, rho_min: float | None,
-             liftoff_omega: float | None) -> dict:
+             liftoff_omega: float | None, safety_min: float | None = None,
+             lambda_min: float | None = None) -> dict:
     """Objective and constraint margins of a scene variant at ``theta``.
 
     Parameters
@@ -107,12 +113,16 @@ def evaluate(scene, theta, objective: str, *, phi_max: float | None, rho_min: fl
         Smallest convex cam radius (m, >= 0; 0 = no undercut); None: not constrained.
     liftoff_omega : float or None
         Speed (rad/s) up to which the follower must not lift off; None: not constrained.
+    safety_min, lambda_min : float or None
+        Smallest safety factor of every assessment criterion (:data:`SF_COLUMNS`) and smallest
+        film ratio lambda (femcam.assess; the scene needs its data); None: not constrained.
 
     Returns
     -------
     dict
         ``"objective"``: ndarray (m,) in the unit of :data:`OBJECTIVE_UNITS`; one margin array
-        (m,) per given constraint, dimensionless, >= 0 where it holds; ``"phi"`` (rad),
+        (m,) per given constraint (``safety_min`` and the ``"utilisation"`` objective, 1/sf:
+        shape (5, m), one row per criterion), dimensionless, >= 0 where it holds; ``"phi"`` (rad),
         ``"rho"`` (m), ``"p0"`` (Pa), ``"Fc"`` (N), ``"a"`` (m/s^2) for reports.
 
     Examples
@@ -151,6 +161,8 @@ def evaluate(scene, theta, objective: str, *, phi_max: float | None, rho_min: fl
         out["objective"] = np.abs(a)
     elif objective == "size":
         out["objective"] = np.hypot(p.x, p.y)
+    if objective == "utilisation" or safety_min is not None or lambda_min is not None:
+        out.update(_assessment(scene, d.theta, objective, safety_min, lambda_min))
     if phi_max is not None:
         out["phi_max"] = 1.0 - (p.phi / phi_max) ** 2
     if rho_min is not None:
@@ -181,13 +193,35 @@ def _wear(scene, d, Fc, a, p0) -> np.ndarray:
     return wear_depth_per_angle(d.theta, a, p0, Fc, slip, k)
 
 
+def _assessment(scene, theta, objective, safety_min, lambda_min) -> dict:
+    """Safety factors ``"sf"`` (5, m) and film ratio ``"lam"`` (m,) of femcam.assess at
+    ``theta``, the ``utilisation`` objective 1/sf and the margins; an undercut trial design (the
+    assessment refuses it) gets sf = lambda = 0: every margin -1."""
+    try:
+        rows = assess(scene, theta).rows
+        sf = np.array([np.asarray(rows[c], float) if c in rows else np.full(theta.size, np.nan)
+                       for c in SF_COLUMNS])
+        lam = np.asarray(rows.get("lam", np.full(theta.size, np.nan)), float)
+        sf, lam = np.where(np.isfinite(sf), sf, _SF_NONE), np.where(np.isfinite(lam), lam, _SF_NONE)
+    except PhysicsError:
+        sf, lam = np.zeros((len(SF_COLUMNS), theta.size)), np.zeros(theta.size)
+    out = {"sf": sf, "lam": lam}
+    if objective == "utilisation":
+        out["objective"] = 1.0 / np.maximum(sf, 1e-3)
+    if safety_min is not None:
+        out["safety_min"] = sf / safety_min - 1.0
+    if lambda_min is not None:
+        out["lambda_min"] = lam / lambda_min - 1.0
+    return out
+
+
 def constraint_value(name: str, r: dict, limit: float) -> float:
     """The physical worst value of a constraint from :func:`evaluate`'s output (SI).
 
     Parameters
     ----------
     name : str
-        ``"phi_max"``, ``"rho_min"`` or ``"liftoff_omega"``.
+        A name of :data:`CONSTRAINT_UNITS`.
     r : dict
         Output of :func:`evaluate`.
     limit : float
@@ -197,11 +231,16 @@ def constraint_value(name: str, r: dict, limit: float) -> float:
     -------
     float
         Largest ``|phi|`` (rad), smallest convex cam radius (m; inf if none), or the smallest
-        contact force ratio ``Fc/Fpl`` at the lift-off speed (-).
+        contact force ratio ``Fc/Fpl`` at the lift-off speed (-), smallest safety factor or
+        film ratio lambda (-).
     """
     if name == "phi_max":
         return float(np.max(np.abs(r["phi"])))
     if name == "rho_min":
         rho = r["rho"][np.isfinite(r["rho"]) & (r["rho"] > 0)]
         return float(rho.min()) if rho.size else math.inf
+    if name == "safety_min":
+        return float(np.min(r["sf"]))
+    if name == "lambda_min":
+        return float(np.min(r["lam"]))
     return float(np.min(r["liftoff_omega"]))

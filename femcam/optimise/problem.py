@@ -97,7 +97,8 @@ class Problem:
         theta, seg_u = angle_grid(scene.program, n, () if dense else self.extra_u)
         lim = self.limits.get
         r = evaluate(scene, theta, self.objective, phi_max=lim("phi_max"), rho_min=lim("rho_min"),
-                     liftoff_omega=self.limits.get("liftoff_omega"))
+                     liftoff_omega=lim("liftoff_omega"), safety_min=lim("safety_min"),
+                     lambda_min=lim("lambda_min"))
         r["theta"], r["seg_u"], r["scene"] = theta, seg_u, scene
         self.nfev += 1
         return r
@@ -120,8 +121,9 @@ class Problem:
         key = np.asarray(z, float).tobytes()
         if key not in self._cache:
             r = self.raw(z)
-            q = r["objective"]
-            m = [r[c] for c in self.limits]
+            q = np.ravel(r["objective"])
+            m = [np.ravel(r[c]) for c in self.limits]
+            self.sizes = [x.size for x in m]
             self._cache = {key: (q / self.ref, np.concatenate(m) if m else np.zeros(0))} | (
                 {k: v for k, v in list(self._cache.items())[-64:]})
         return self._cache[key]
@@ -190,8 +192,8 @@ class Problem:
             if only is None:
                 return m
             k = names.index(only)
-            size = m.shape[0] // len(names)
-            return m[k * size:(k + 1) * size]
+            start = sum(self.sizes[:k])
+            return m[start:start + self.sizes[k]]
 
         if only is not None:  # maximise s subject to margin_i >= s
             fun = (lambda y: -y[n], lambda y: np.r_[np.zeros(n), -1.0])

@@ -58,7 +58,7 @@ def _limits(constraints) -> dict:
         unit = CONSTRAINT_UNITS[name]
         if name == "phi_max":
             out[name] = _validate.in_range(name, lim, 0.0, math.pi / 2, unit, lo_open=True, hi_open=True)
-        elif name == "rho_min":
+        elif name in ("rho_min", "safety_min", "lambda_min"):
             out[name] = _validate.nonnegative(name, lim, unit)
         else:
             out[name] = _validate.positive(name, lim, unit)
@@ -89,16 +89,16 @@ def _worst_u(prob: Problem, z) -> tuple[list, float, dict]:
     grid = prob.raw(z)
     q_f, q_g = fine["objective"], grid["objective"]
     gap = float((np.max(q_f) - np.max(q_g)) / max(abs(np.max(q_g)), 1e-300))
-    arrays = [np.asarray(fine["objective"])] + \
-        [-np.asarray(fine[c]) for c in prob.limits]
+    objective_rows = list(np.atleast_2d(fine["objective"]))
+    arrays = objective_rows + [row for c in prob.limits for row in -np.atleast_2d(fine[c])]
     for c in prob.limits:
         gap = max(gap, float(np.min(grid[c]) - np.min(fine[c])))
     seg, u = fine["seg_u"][:, 0].astype(int), fine["seg_u"][:, 1]
     pts = []
     du = 1.0 / (DENSE - 1)
-    for f in arrays:
+    for j, f in enumerate(arrays):
         top = float(np.max(f))
-        near = top - 1e-3 * max(abs(top), 0.0 if f is arrays[0] else 1.0)  # margins: scale 1
+        near = top - 1e-3 * (abs(top) if j < len(objective_rows) else 1.0)  # margins: scale 1
         for k in np.unique(seg):
             idx = np.flatnonzero(seg == k)
             if idx.size < 3:
@@ -126,15 +126,18 @@ def optimise(scene_or_path, *, objective: str = "p0", variables, constraints=Non
     objective : str
         ``"p0"`` (peak Hertz pressure, Pa), ``"von_mises"``/``"tau1"`` (Pa; Hertz shape factors
         with the scene's friction), ``"acceleration"`` (peak ``|a|``, m/s^2), ``"size"``
-        (largest cam radius, m) or ``"wear"`` (largest Archard cam wear depth per revolution at
+        (largest cam radius, m), ``"utilisation"`` (largest 1/safety factor of the assessment:
+        maximises the smallest safety factor) or ``"wear"`` (largest Archard cam wear depth per revolution at
         the contact, m; slide-to-roll roller model).
     variables : dict or sequence of Variable
         ``{name: (lower, upper)}`` in SI, or :class:`Variable` objects: ``base_radius`` (m),
         ``roller_radius`` (m), ``rise_angle`` (rad), ``control_point_<i>`` (free Bezier
         ordinates of ``bezier``).
     constraints : dict, optional
-        ``{"phi_max": rad, "rho_min": m, "liftoff_omega": rad/s}``; ``rho_min = 0`` is "no
-        undercut". Default: none.
+        ``{"phi_max": rad, "rho_min": m, "liftoff_omega": rad/s, "safety_min": -,
+        "lambda_min": -}``; ``rho_min = 0`` is "no undercut"; the last two need the scene's
+        assessment data (femcam.assess, every safety factor of
+        :data:`femcam.optimise.chain.SF_COLUMNS`). Default: none.
     starts : int or array_like, shape (k, n_variables)
         Number of starts (the scene's design, then a seeded Latin hypercube) or the starts (SI).
     bezier : BezierRise, optional
@@ -208,7 +211,7 @@ def _result(prob, design, res, fine, start_value, records, iters, rounds, gap, s
     msg = (f"SLSQP: {res.message}; {len(records)} start(s), exchange rounds {rounds}, grid gap {gap:.2e}"
            + ("" if feas else "; a constraint is violated on the fine grid"))
     P = design.control_points(x)
-    theta_worst = float(fine["theta"][int(np.argmax(fine["objective"]))])
+    theta_worst = float(fine["theta"][int(np.argmax(fine["objective"])) % fine["theta"].size])
     scene = fine["scene"]
     hertz = prob.objective in ("p0", "von_mises", "tau1")
     fe = _verify_fe(scene, theta_worst) if verify_fe and hertz else None
@@ -225,7 +228,8 @@ def _result(prob, design, res, fine, start_value, records, iters, rounds, gap, s
 def _fmt_limit(name: str, value: float) -> str:
     unit = CONSTRAINT_UNITS[name]
     extra = {"phi_max": f" ({math.degrees(value):.4g} deg)",
-             "liftoff_omega": f" ({value * 30.0 / math.pi:.5g} rpm)"}.get(name, f" ({value * 1e3:.4g} mm)")
+             "liftoff_omega": f" ({value * 30.0 / math.pi:.5g} rpm)",
+             "rho_min": f" ({value * 1e3:.4g} mm)"}.get(name, "")
     return f"{name} = {value:.6g} {unit}{extra}"
 
 
