@@ -38,6 +38,7 @@ from xml.sax.saxutils import escape, quoteattr
 
 import numpy as np
 
+from . import _validate
 from .fe.export import scene_arrays, stress_tensor, vtk_point_data
 from .hertz import LineContact
 
@@ -469,7 +470,7 @@ def vtu_name(theta: float) -> str:
     >>> vtu_name(np.pi / 2)
     'angle_0090.000deg.vtu'
     """
-    return f"angle_{np.degrees(theta):08.3f}deg.vtu"
+    return f"angle_{np.degrees(_validate.number('theta', theta, 'rad')):08.3f}deg.vtu"
 
 
 def _field_data(wear: dict | None) -> dict:
@@ -531,6 +532,7 @@ def write_hertz_vtu(path, hc: LineContact, n: int = 41, wear: dict | None = None
         ``sx, sz, sy, -txz, 0, 0``), ``tau1_Pa``, ``von_mises_Pa``, ``contact_pressure_Pa``; the cam
         lies below the surface (``y = -z``).
     """
+    n = _validate.integer("n", n, 2, "grid points")
     a = float(hc.a)
     xs = np.linspace(-3 * a, 3 * a, 2 * n - 1)
     zs = np.linspace(0.0, 3 * a, n)

@@ -1,6 +1,10 @@
-"""API bad input: ``ContactModel.build`` / ``.solve`` refuse wrong types with an InputError
-naming the parameter and its unit (reference: the bad values typed in the test), before any
-mesh is built."""
+"""API bad input, exact messages: ``ContactModel.build`` / ``.solve`` refuse wrong types with an
+InputError naming the parameter and its unit (reference: the bad values typed in the test),
+before any mesh is built.
+
+The generic fault injection over every public callable (string, None, NaN, inf, negative, zero
+into each numeric argument) is ``tests/test_api_faults.py``; this file keeps the exact messages
+and the methods of built models (``ContactModel``, ``Body``) that it does not reach."""
 
 import math
 
@@ -188,3 +192,33 @@ def test_unused_parameters_are_gone():
 
     assert list(inspect.signature(traction_fields).parameters) == ["trac", "q", "w", "x", "length"]
     assert list(inspect.signature(contact_geometry).parameters) == ["follower", "tip_radius"]
+
+
+# --------------------------------------------------------------------------- issue 29 reproductions
+# The tracebacks of the independent API campaign, each now one message in the house format
+# (reference: the format of femcam._validate, "<name> = <value> <unit>: must be ...").
+def _campaign_calls():
+    from femcam.bodies import needle_approach
+    from femcam.halfspace import circular_drop
+    from femcam.hertz import effective_radius, half_width, peak_pressure
+
+    return [
+        # was "can't multiply sequence by non-int of type 'numpy.float64'"
+        (lambda: half_width(1.5e5, "abc", 1.15e11), "R = 'abc' m: must be a number or an array of numbers"),
+        # was "unsupported operand type(s) for *: 'float' and 'NoneType'"
+        (lambda: needle_approach(150e3, None), "length = None m: must be a number"),
+        # was "could not convert string to float: 'abc'"
+        (lambda: effective_radius("abc", 0.01), "R1 = 'abc' m: must be a number or an array of numbers"),
+        # was a NaN result
+        (lambda: peak_pressure(math.nan, 1e-4), "w = nan N/m: must be finite"),
+        # was a silently negative crown drop
+        (lambda: circular_drop(0.001, -0.5), "Rc = -0.5 m: must be > 0"),
+    ]
+
+
+@pytest.mark.parametrize("case", range(5))
+def test_campaign_tracebacks_are_one_message(case):
+    call, msg = _campaign_calls()[case]
+    with pytest.raises(InputError) as ei:
+        call()
+    assert msg in str(ei.value)

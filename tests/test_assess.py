@@ -1,6 +1,7 @@
 """femcam.assess and `femcam assess`: the seed 002 assessment against hand calculations written in
 the test, the flat-faced film collapse, knife-edge, huge loads, FE input and bad input."""
 
+import json
 import math
 import re
 
@@ -11,6 +12,7 @@ from femcam.assess import assess, assess_rows
 from femcam.cli import main
 from femcam.errors import InputError, SceneError
 from femcam.scene import load_scene
+from femcam.scene.digest import physics_parts
 
 EXAMPLE = "examples/seed002_assess.toml"
 OMEGA = 20 * math.pi                         # 600 rpm
@@ -154,8 +156,9 @@ def test_fe_table_replaces_hertz(tmp_path):
     assert list(r["source"]) == ["fe", "hertz", "fe"]
     p_used = np.where(np.isfinite(p_fe), p_fe, h["p0"])
     np.testing.assert_allclose(r["sf_surface_fatigue"], 1500e6 / p_used, rtol=1e-12)
-    # FE stress maxima: first yield k / tau1_max (Tresca k = Y/2), orthogonal shear range 2 |txz|max
-    table.update(tau1_max=np.full(3, 500e6), txz_absmax=np.full(3, 200e6))
+    # FE stress maxima: first yield k / tau1_max (Tresca k = Y/2); the orthogonal shear range over
+    # one pass is the FE subsurface txz_range_max, utilisation (dtau/2)/tau_e
+    table.update(tau1_max=np.full(3, 500e6), txz_range_max=np.full(3, 400e6))
     r = assess_rows(sc, theta, table)
     np.testing.assert_allclose(r["sf_yield"][[0, 2]], 850e6 / 500e6, rtol=1e-12)
     np.testing.assert_allclose(r["sf_subsurface"][[0, 2]], 350e6 / 200e6, rtol=1e-12)
@@ -182,10 +185,10 @@ def test_missing_lubricant_data_is_one_clear_error(tmp_path):
     for key in ("temperature_C (degC)", "viscosity_temperature_coefficient_per_K (1/K)",
                 "lubricant.pressure_viscosity_per_GPa", "lubricant.density_kg_per_m3"):
         assert key in msg, (key, msg)
-    cold = _scene(tmp_path, lambda t: t.replace("oil_temperature_C = 70.0", "oil_temperature_C = -300"),
-                  "t.toml")
-    with pytest.raises(SceneError, match=r"oil_temperature_C = -300 degC: must be above absolute zero"):
-        assess_rows(cold, np.radians([0.0]))
+    # below absolute zero, and below any oil's pour point: refused at load (femcam.scene.ranges)
+    with pytest.raises(SceneError, match=r"oil_temperature_C = -300 degC: must be in \[-60, 350\] degC"):
+        _scene(tmp_path, lambda t: t.replace("oil_temperature_C = 70.0", "oil_temperature_C = -300"),
+               "t.toml")
     with pytest.raises(SceneError, match="not a table oil"):
         assess_rows(_scene(tmp_path, lambda t: t.replace("ISO VG 46 mineral", "SAE 5W-30"), "n.toml"),
                     np.radians([0.0]))
@@ -274,7 +277,9 @@ def test_cli_assess_from_a_sweep_npz_and_bad_angles(tmp_path, capsys):
     h = assess_rows(sc, theta)
     sw = tmp_path / "sw"
     sw.mkdir()
-    np.savez(sw / "sweep.npz", theta=theta, a_fe=h["a"] * 1.01, p0_fe=h["p0"] / 1.01)
+    prov = {"scene_physics_parts": physics_parts(sc)}   # the scene the sweep records (its check)
+    np.savez(sw / "sweep.npz", theta=theta, a_fe=h["a"] * 1.01, p0_fe=h["p0"] / 1.01,
+             provenance_json=np.array(json.dumps(prov)))
     out = tmp_path / "o"
     assert main(["assess", EXAMPLE, "--out", str(out), "--sweep", str(sw), "--no-plots"]) == 0
     data = np.genfromtxt(out / "assessment.csv", delimiter=",", names=True, comments="#", dtype=None,

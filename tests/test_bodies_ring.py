@@ -170,7 +170,8 @@ def test_bearing_problems_are_all_reported_with_numbers():
 
 
 def test_large_clearance_is_refused_with_numbers():
-    with pytest.raises(InputError, match="c = 0.0005 m: the clearance is 0.0714 of the bore"):
+    with pytest.raises(InputError, match=r"c \(\[follower\] pin_clearance_um\) = 0.0005 m: "
+                       r"the clearance is 0.0714 of the bore"):
         RollerBearing(Ro=0.01, Ri=0.007, support="pin", Rp=0.0065, c=0.0005)
 
 

@@ -282,7 +282,8 @@ def test_rpm_sweep_rows_and_liftoff():
 # ------------------------------------------------------------------------------------------
 def test_soft_train_that_cannot_follow_is_refused():
     tm = _train(m=1.0, k_s=0.0, k_t=10.0)  # w_n = 3.16 rad/s < cam 6.28 rad/s
-    with pytest.raises(InputError, match=r"k_t = 10 N/m.*0\.5033 Hz.*1 Hz.*cannot follow"):
+    with pytest.raises(InputError, match=r"k_t \(\[dynamics\] train_stiffness_N_per_m\) = 10 N/m.*"
+                       r"0\.5033 Hz.*1 Hz.*cannot follow"):
         periodic_response(tm, _program(), RPM60)
 
 

@@ -204,6 +204,13 @@ def test_layered_half_space_reference(E_c):
     coat_s = Coating(thickness=0.5 * a0, material=coat, interface_shear_strength=300e6, hardness=10e9)
     rows = layer_rows(r.model, [F], [RHO], [0.0], coating=coat_s)
     assert rows["interface_utilisation"][0] == pytest.approx(np.abs(tau).max() / 300e6, rel=3e-2)
+    # the interface stresses need no strength (issue 29 item 2): reported without strengths too,
+    # against the same layered reference; only the utilisations are NaN
+    bare = layer_rows(r.model, [F], [RHO], [0.0], coating=Coating(thickness=0.5 * a0, material=coat))
+    assert bare["interface_tau_max_MPa"][0] * 1e6 == pytest.approx(np.abs(tau).max(), rel=3e-2)
+    assert bare["interface_sn_min_MPa"][0] * 1e6 == pytest.approx(sn.min(), rel=1e-2)
+    assert np.isfinite(bare["coating_sx_max_MPa"][0])
+    assert np.isnan(bare["interface_utilisation"][0]) and np.isnan(bare["coating_sx_utilisation"][0])
 
 
 def test_unpickled_result_with_model_gives_the_interface_stress():
@@ -278,7 +285,8 @@ def test_case_law_and_margin_hand_calculation():
 
 # ------------------------------------------------------------------------------ bad input
 def test_bad_inputs_are_refused_with_numbers():
-    with pytest.raises(InputError, match=r"coat_thickness = 0\.05 um.*aspect ratio.*a_over_h >="):
+    with pytest.raises(InputError, match=r"coat_thickness \(\[materials.\*.coating\] thickness_um\) "
+                       r"= 0\.05 um.*aspect ratio.*a_over_h >="):
         _coated(0.05e-6, Material(E=200e9, nu=0.2), a_over_h=10)
     with pytest.raises(InputError, match="surface and core hardness OR"):
         Case(depth=1e-3, surface_hardness=700 * HV, surface_yield=1e9)
@@ -290,8 +298,8 @@ def test_bad_inputs_are_refused_with_numbers():
     with pytest.raises(InputError, match=r"case.depth = 8 mm: must be < 5 mm, half the cam body size 10 mm"):
         c.check_body(0.01)
     coat = Coating(thickness=2e-6, material=Material(E=200e9, nu=0.2))
-    with pytest.raises(InputError, match="coating.interface_shear_strength.*needed"):
-        layer_rows(None, [1000.0], [0.02], [0.1], coating=coat)
+    with pytest.raises(InputError, match="interface_shear_strength_MPa"):
+        coat.require("interface_shear_strength")
     with pytest.raises(InputError, match="thickness = 2000 um"):
         Coating(thickness=2e-3, material=STEEL)
     with pytest.raises(InputError, match="no coating band"):
@@ -330,8 +338,10 @@ def test_scene_coating_and_case_keys(tmp_path):
     assert "one complete pair" in msg
     deep = tmp_path / "deep.toml"
     deep.write_text(ex.read_text().replace("depth_mm = 0.3", "depth_mm = 6.0"))
-    with pytest.raises(InputError, match="case.depth = 6 mm: must be < 5 mm, half the cam body size 10 mm"):
-        scene_layers(load_scene(deep))
+    # refused at load, naming the scene keys (base circle Rb = 10 mm: half is 5 mm)
+    with pytest.raises(SceneError, match=r"materials.cam.case.depth_mm = 6.0 mm: must be < half of "
+                       r"follower.base_radius_mm = 5 mm"):
+        load_scene(deep)
 
 
 @pytest.mark.slow

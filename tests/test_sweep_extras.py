@@ -107,8 +107,8 @@ def test_assess_uses_fe_contact_of_the_sweep(tmp_path):
 def test_halfspace_columns_and_axial_peak_wear(tmp_path):
     scene = load_scene(EX + "seed002_crowned.toml")
     r, cols = _sweep_csv(scene, TH8, tmp_path)
-    # one chunk (8 angles < chunk_size 30): warm-started from angle to angle, as the direct call
-    direct = finite_length_rows(scene, TH8)
+    # every angle warm-started from its anchor angle, as the direct call with start="anchor"
+    direct = finite_length_rows(scene, TH8, start="anchor")
     for k, (csv, f) in HS_COLUMNS.items():
         _close(cols[csv], direct[k], f)
     assert list(cols["hs_flags"]) == [";".join(f) for f in direct["flags"]]

@@ -108,10 +108,10 @@ def test_surface_extremes_use_the_row_traction_ratio(answered, i, r):
     # off the ratio grid the ratio is taken within mu / (2 RATIO_STEPS): each extreme moves by
     # its slope (d/dr of the closed forms: 4r/sqrt(1+4r^2) <= 2, 2, 1) times that
     tol = 1e-6 + 2.0 * MU / (2 * RATIO_STEPS) * (i == 3)
-    assert rows["sx_min"][i] / P0 == pytest.approx(-math.sqrt(1 + 4 * r * r), abs=tol)
-    assert rows["sx_max"][i] / P0 == pytest.approx(2 * r, abs=tol)
-    assert rows["txz_absmax"][i] / P0 == pytest.approx(r, abs=tol)
-    assert rows["sz_min"][i] / P0 == pytest.approx(-1.0, abs=1e-6)
+    assert rows["surf_sx_min"][i] / P0 == pytest.approx(-math.sqrt(1 + 4 * r * r), abs=tol)
+    assert rows["surf_sx_max"][i] / P0 == pytest.approx(2 * r, abs=tol)
+    assert rows["surf_txz_absmax"][i] / P0 == pytest.approx(r, abs=tol)
+    assert rows["surf_sz_min"][i] / P0 == pytest.approx(-1.0, abs=1e-6)
 
 
 def test_off_grid_ratio_is_within_the_grid_bound(answered):

@@ -66,7 +66,8 @@ def references(junction_sweep):
 
 def test_junction_rows_inserted_flagged_and_vs_halfspace(junction_sweep, references):
     """The sweep inserts the junction and +-0.05, +-0.1 deg, flags the straddle span, answers
-    with the exact gap; its p0 (largest nodal pressure) within 1 % of the half-space reference
+    with the exact gap; its headline p0_fe (the peak of the solved pressure, not the elliptic fit
+    p0_fit, which sits up to 1.5 % below at the junction) within 1 % of the half-space reference
     (measured <= 0.3 % at a/h = 10); exact-vs-arc p0 difference within 0.5 %-points of the
     reference's own arc/exact ratio (up to 6.7 % at the junction)."""
     sc, r = junction_sweep
@@ -74,7 +75,7 @@ def test_junction_rows_inserted_flagged_and_vs_halfspace(junction_sweep, referen
     for d, (i, p_ex, p_arc) in references.items():
         assert abs(deg[i] - (90.0 + d)) < 1e-9, "junction and +-0.05, +-0.1 deg inserted"
         assert r["curvature_jump"][i] == 1 and r["model"][i] == "fe_exact" and r.status[i] == "ok"
-        assert r["p0_nodal"][i] == pytest.approx(p_ex, rel=1e-2), f"p0 at {d:+} deg vs half-space"
+        assert r["p0_fe"][i] == pytest.approx(p_ex, rel=1e-2), f"p0 at {d:+} deg vs half-space"
         assert 100 * r["exact_vs_arc_p0"][i] == pytest.approx(100 * (p_arc / p_ex - 1), abs=0.5)
     # the requested angles are outside the straddle span (-0.29 .. +0.23 deg): not flagged
     for t in (89.0, 91.0):
@@ -93,7 +94,7 @@ def test_junction_p0_curve_is_smooth(junction_sweep):
     sc, r = junction_sweep
     deg = np.degrees(r["theta"])
     j = (deg > 89.5) & (deg < 90.5)
-    p0 = r["p0_nodal"][j]
+    p0 = r["p0_fe"][j]
     F = r["Fc"][j]
     Rr, Rp, s2 = 0.010, 0.030, 0.008 * math.pi**2 / (2 * (math.pi / 2) ** 2)
     rho_r = 1 / ((Rp**2 - Rp * s2) / Rp**3) - Rr
@@ -246,7 +247,7 @@ def test_worst_profile_is_the_rows_own_solve_with_its_traction():
     i = r.worst_index("p0_fe")
     assert r["slip_state"][i] == "stick" and abs(r["Q_over_muFc"][i]) < 1e-3
     prof = worst_surface_profile(r.table, "fe", contact_params(sc), r.families, SweepOptions(), scene=sc)
-    assert prof["sx_fe"].max() == pytest.approx(r["sx_max"][i], rel=1e-9)
+    assert prof["sx_fe"].max() == pytest.approx(r["surf_sx_max"][i], rel=1e-9)
     assert "stick" in prof["traction"] and "Q/(mu Fc)" in prof["traction"]
     assert "frictionless" in prof["hertz_label"]
     x, a = prof["x_hertz"], prof["a_hertz"]

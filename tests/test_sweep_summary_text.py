@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from femcam.sweep.result import SweepResult, families_text, report_markdown
+from femcam.sweep.result import SweepResult, families_text, hertz_check_text, report_markdown
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -39,9 +39,22 @@ def test_arc_and_exact_rows_are_reported_apart():
     assert s["err_p0_absmax_exact"] == pytest.approx(6.2e-2, rel=1e-12)
     assert s["n_binned"] == 0
     md = report_markdown(res)
-    assert "| max FE/Hertz - 1 for p0, arc-gap rows (%) | 0.140 |" in md
-    assert re.search(r"\| exact-gap rows \(curvature jump\).*Hertz, which cannot see the jump "
-                     r"\(%\) \| 6\.200 \|", md)
+    assert ("| p0 FE vs Hertz | max |p0_fe/p0_hertz - 1| 0.140 % over 2 arc-gap rows; 2 exact-gap "
+            "rows: no Hertz reference (curvature jump; they depart from Hertz by up to 6.2 %) |") in md
+
+
+def test_all_exact_gap_rows_print_no_nan():
+    """Issue 29 item 3: a sweep whose rows are all exact-gap printed ``max |err| vs Hertz nan %``;
+    it now says that Hertz is no reference there (and prints no NaN)."""
+    t = _table()
+    t["model"] = np.array(["fe_exact"] * 4 + [""])
+    res = SweepResult(table=t, method="fe", provenance={"options": {"tolerance": 2e-3}})
+    s = res.summary()
+    assert s["n_vs_hertz"] == 0 and s["n_exact"] == 4
+    text = hertz_check_text(s)
+    assert text == ("4 exact-gap rows: no Hertz reference (curvature jump; they depart from Hertz "
+                    "by up to 6.2 %)")
+    assert "nan %" not in report_markdown(res)
 
 
 def test_flat_faced_rows_without_families_say_how_they_are_binned():
@@ -71,8 +84,9 @@ def test_cli_headline_on_the_junction_example(tmp_path, capsys):
     # the junction example: the jump rows depart (an independent half-space solve of the exact gap
     # there gives -6.8 % against Hertz, tests/test_sweep_real_cam.py), the arc rows agree (0.145 %)
     assert exact > 1.0 > arc
-    m = re.search(r"max \|err\| vs Hertz ([\d.]+) %, arc-gap rows", printed)
+    m = re.search(r"max \|p0_fe/p0_hertz - 1\| ([\d.]+) % over (\d+) arc-gap rows", printed)
     assert m and float(m.group(1)) == pytest.approx(arc, abs=5e-4)
-    m = re.search(r"exact-gap rows \(curvature jump\): FE departs from Hertz by up to ([\d.]+) %; "
-                  r"Hertz cannot see the jump", printed)
-    assert m and float(m.group(1)) == pytest.approx(exact, abs=0.05)
+    assert int(m.group(2)) == sum(r["model"] != "fe_exact" for r in rows)
+    m = re.search(r"(\d+) exact-gap rows: no Hertz reference \(curvature jump; they depart from "
+                  r"Hertz by up to ([\d.]+) %\)", printed)
+    assert m and float(m.group(2)) == pytest.approx(exact, abs=0.05)

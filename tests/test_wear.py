@@ -400,7 +400,7 @@ def test_fe_failed_angles_are_skipped_with_a_warning(fe_study):
     table["message"] = table["message"].astype(object)
     for i in (3, 4):
         table["status"][i], table["message"][i] = "failed", "ConvergenceError: active set cycled"
-        table["a_fe"][i] = table["p0_fe"][i] = np.nan
+        table["a_fe"][i] = table["p0_fe"][i] = table["p0_fit"][i] = np.nan
     table["status"] = table["status"].astype(str)
     table["message"] = table["message"].astype(str)
     bad = dataclasses.replace(res, table=table)

@@ -13,6 +13,7 @@ from .core import (
     worst_angles,
 )
 from .inputs import AssessInputs, assessment_inputs
+from .sweep_dir import sweep_table
 
 __all__ = ["COLUMNS", "WORST", "AssessInputs", "Assessment", "assess", "assess_rows", "assessment_inputs",
-           "csv_columns", "wear_factor", "worst_angles"]
+           "csv_columns", "sweep_table", "wear_factor", "worst_angles"]

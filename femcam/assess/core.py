@@ -13,7 +13,9 @@ where ``rho + s'' = 0``... and the film collapses there, flagged ``no_entrainmen
 
 Columns (:data:`COLUMNS`: SI name, CSV name, factor) are returned by :func:`assess_rows`; text
 columns are ``regime`` and ``flags`` (``;``-separated: ``liftoff``, ``no_entrainment``,
-``W_range``, ``U_range``, ``low_peclet``, ``hertz_validity``).
+``W_range``, ``U_range``, ``low_peclet``, ``hertz_validity``, ``dtau_hertz``: an FE row with
+FE stresses but no finite ``txz_range_max``, so its orthogonal-shear range is Hertz's shape
+factor at the FE ``p0``).
 """
 
 from __future__ import annotations
@@ -25,6 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import _validate
 from ..errors import InputError
 from ..hertz import HertzValidityWarning, LineContact
 from ..profile import RollerFollower
@@ -166,25 +169,32 @@ def _strength(inp, mu, p0, out):
         out["N_pitting"] = np.minimum(*(fatigue.sn_cycles(p0, s, N_ref=N, m=m) for s, N, m in lim))
 
 
-def _fe_stresses(inp, table, source, out):
-    """FE stress maxima of a sweep table, where the FE answered: first yield from the FE ``tau1_max``
-    (``k / tau1_max``) and the orthogonal shear range ``2 txz_absmax`` (the frictionless Hertz
-    field has ``min txz = -max txz`` over a pass, Johnson 1985 §9.2)."""
+def _fe_stresses(inp, table, source, out, flags):
+    r"""FE stress maxima of a sweep table, where the FE answered: first yield from the FE
+    ``tau1_max`` (``k / tau1_max``) and the orthogonal shear range from the FE subsurface field,
+    ``txz_range_max`` (Johnson 1985 §9.2),
+
+    .. math:: \Delta\tau = \max_z\left[\max_x \tau_{xz}(x, z) - \min_x \tau_{xz}(x, z)\right]
+
+    never a surface value (the surface ``|txz|`` of the FE window is a contact-edge quantity, 2-4 %
+    of ``p0`` under a sticking roller, against ``0.5 p0`` below the surface). FE rows without a
+    finite range keep Hertz's shape factor at the FE ``p0``; those with an FE field (finite
+    ``tau1_max``) are flagged ``dtau_hertz``."""
     fe = np.asarray(source) == "fe"
     if "tau1_max" in table and inp.has("yield and shakedown"):
         t1 = np.asarray(table["tau1_max"], float)
         use = fe & np.isfinite(t1) & (t1 > 0)
         k = 0.5 * min(_pair(inp, "Y"))
         out["sf_yield"] = np.where(use, k / np.where(use, t1, 1.0), out["sf_yield"])
-    if "txz_absmax" in table:
-        tx = np.asarray(table["txz_absmax"], float)
-        use = fe & np.isfinite(tx)
-        out["dtau_orth"] = np.where(use, 2.0 * tx, out["dtau_orth"])
-        if inp.has("subsurface fatigue"):
-            out["util_subsurface"] = 0.5 * out["dtau_orth"] / min(_pair(inp, "tau_e"))
-            with np.errstate(divide="ignore"):
-                out["sf_subsurface"] = np.where(out["util_subsurface"] > 0, 1.0 / out["util_subsurface"],
-                                                np.inf)
+    tr = np.asarray(table["txz_range_max"], float) if "txz_range_max" in table else np.full(fe.size, np.nan)
+    use = fe & np.isfinite(tr)
+    field = np.isfinite(np.asarray(table["tau1_max"], float)) if "tau1_max" in table else fe
+    flags.append(("dtau_hertz", fe & ~use & field))      # an FE field without its range
+    out["dtau_orth"] = np.where(use, tr, out["dtau_orth"])
+    if inp.has("subsurface fatigue"):
+        out["util_subsurface"] = 0.5 * out["dtau_orth"] / min(_pair(inp, "tau_e"))
+        with np.errstate(divide="ignore"):
+            out["sf_subsurface"] = np.where(out["util_subsurface"] > 0, 1.0 / out["util_subsurface"], np.inf)
 
 
 def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
@@ -193,9 +203,10 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
     plus the text columns ``regime``, ``flags``, ``source`` (``hertz``/``fe``).
 
     ``table``: optional sweep table (mapping with ``a_fe``, ``p0_fe`` per angle in m, Pa; optional
-    ``tau1_max``, ``txz_absmax`` in Pa) whose finite FE values replace Hertz ``a``/``p0`` and, where
-    given, the first-yield and orthogonal-shear maxima (shakedown and surface fatigue keep
-    Hertz's shape factors with the FE ``p0``). Criteria
+    ``tau1_max``, ``txz_range_max`` in Pa) whose finite FE values replace Hertz ``a``/``p0`` and,
+    where given, the first-yield maximum and the orthogonal-shear range over one pass (shakedown
+    and surface fatigue keep Hertz's shape factors with the FE ``p0``; so does the range where
+    ``txz_range_max`` is missing, flagged ``dtau_hertz``). Criteria
     without their material data are NaN (see :attr:`AssessInputs.skipped`). Angles outside a
     formula's validity are computed and flagged. Raises :class:`~femcam.errors.SceneError` if a
     lubricated assessment lacks lubricant data, and :class:`~femcam.errors.InputError` for a sharp
@@ -209,7 +220,7 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
         Cam angles [rad].
     table : mapping or SweepResult, optional
         Sweep table with per-angle ``a_fe`` [m], ``p0_fe`` [Pa] and optionally ``tau1_max``,
-        ``txz_absmax`` [Pa]; None: Hertz only.
+        ``txz_range_max`` [Pa]; None: Hertz only.
     lubricated : bool
         Assess the EHL film (needs ``[lubricant]``, ``[surface]``, ``oil_temperature_C``).
     inputs : AssessInputs, optional
@@ -230,7 +241,7 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
     """
     inp = inputs or assessment_inputs(scene, lubricated=lubricated)
     table = getattr(table, "table", table)                   # a SweepResult or its table mapping
-    theta = np.atleast_1d(np.asarray(theta, float))
+    theta = np.atleast_1d(_validate.finite_array("theta", theta, "rad"))
     n = theta.size
     sc, R2, tip = _geometry(scene)
     st = sc.analyse(theta)
@@ -256,7 +267,7 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
     _thermal(inp, scene.mu, w, a, u1, u2, inp.T_oil, out, flags)
     _strength(inp, scene.mu, p0, out)
     if table is not None:
-        _fe_stresses(inp, table, source, out)
+        _fe_stresses(inp, table, source, out, flags)
     out["regime"] = np.where(Fc > 0, regime, "no contact")
     out["flags"] = np.array([";".join(nm for nm, m in flags if m[i]) for i in range(n)], dtype=object)
     out["source"] = source
@@ -366,6 +377,11 @@ def assess(scene, theta=None, *, table=None, lubricated: bool = True) -> Assessm
     inp = assessment_inputs(scene, lubricated=lubricated)
     rows = assess_rows(scene, theta, table, inputs=inp)
     notes = tuple(f"{crit}: skipped, needs {', '.join(keys)}" for crit, keys in inp.skipped.items())
+    fe_rows = np.asarray(rows["source"]) == "fe"
+    if np.any(fe_rows) and "txz_range_max" not in getattr(table, "table", table):
+        notes += ("subsurface fatigue: the sweep table has no txz_range_max (a sweep written before "
+                  "femcam computed the FE range of txz over one pass): dtau_orth is Hertz's range "
+                  "(McEwen) at the FE p0 on every FE row; re-run the sweep for the FE field",)
     return Assessment(scene_name=scene.name, rows=rows, inputs=inp, worst=worst_angles(rows), notes=notes)
 
 
@@ -409,6 +425,9 @@ def wear_factor(scene, theta, table=None, tip_radius=None):
     regime : ndarray of str, shape (n,), or None
         ``boundary`` / ``mixed`` / ``full`` per angle (``no contact`` where ``Fc = 0``).
     """
+    theta = _validate.finite_array("theta", theta, "rad")
+    tip_radius = _validate.optional(_validate.positive, "tip_radius", tip_radius, "m")
+    _validate.record("scene", scene, "a femcam.scene.Scene", "follower", "analyse")
     k = wear_coefficient_info(scene)[0]
     if "lubricant" not in scene.tribology or not k > 0:
         return None, None

@@ -31,12 +31,17 @@ from ..materials import STEEL, Material
 from ..mesh import surface_height
 from ..scene.bodies import SHAFT_CLEARANCE_MAX
 
+#: the scene key a message names for the bore radius Rb (not the base radius)
+_BORE = "Rb (bore radius, [cam] bore_mm)"
+#: the scene keys a message names for the shaft radius Rs
+_SHAFT = "Rs (shaft radius, [cam] bore_mm - shaft_clearance_um)"
+
 FITS = ("contact", "bonded")
 
 
 def _check_outline(outline) -> np.ndarray:
-    o = np.asarray(outline, dtype=float)
-    if o.ndim != 2 or o.shape[0] != 2 or o.shape[1] < 16 or not np.all(np.isfinite(o)):
+    o = _validate.finite_array("outline", outline, "m")
+    if o.ndim != 2 or o.shape[0] != 2 or o.shape[1] < 16:
         raise InputError(f"outline: shape {o.shape}: must be (2, N >= 16) finite points (m)")
     ang = np.arctan2(o[1], o[0])
     order = np.argsort(ang)
@@ -89,15 +94,15 @@ class CamDisk:
         object.__setattr__(self, "Rs", float(Rs))
         r_min = self.r_min
         if self.Rb >= r_min:
-            raise _validate.fail("Rb", self.Rb, "m", f"the bore does not fit: the smallest outline "
+            raise _validate.fail(_BORE, self.Rb, "m", f"the bore does not fit: the smallest outline "
                                  f"radius is {r_min * 1e3:.4g} mm (bore {self.Rb * 1e3:.4g} mm)")
         c = self.Rb - Rs
         if c < 0 or c > SHAFT_CLEARANCE_MAX * self.Rb:
             c_max = SHAFT_CLEARANCE_MAX * self.Rb
-            raise _validate.fail("Rs", Rs, "m", f"the clearance Rb - Rs = {c * 1e6:.4g} um must be in "
+            raise _validate.fail(_SHAFT, Rs, "m", f"the clearance Rb - Rs = {c * 1e6:.4g} um must be in "
                                  f"[0, {SHAFT_CLEARANCE_MAX:g} Rb = {c_max * 1e6:.4g} um] (linearised gap)")
         if self.fit == "bonded" and c != 0.0:
-            raise _validate.fail("Rs", Rs, "m", "a bonded fit needs Rs == Rb (no clearance)")
+            raise _validate.fail(_SHAFT, Rs, "m", "a bonded fit needs Rs == Rb (no clearance)")
         if self.cam_yield is not None:
             _validate.positive("cam_yield", self.cam_yield, "Pa")
 

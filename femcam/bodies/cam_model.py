@@ -40,6 +40,9 @@ from .contact import arc_load_matrix, arc_weights, radial_measure
 from .mesh import gmsh_session, mesh_disk
 from .model import _condense, _hoop_rows, check_bore_mesh
 
+#: the scene key a message names for the bore radius Rb (not the base radius)
+_BORE = "Rb (bore radius, [cam] bore_mm)"
+
 
 @dataclass(frozen=True, kw_only=True)
 class CamMeshOptions:
@@ -378,7 +381,7 @@ class CamDiskModel:
         pts, centre = outline_without_arc(disk, np.asarray(C, float), np.asarray(n, float), rho, W)
         gap = math.hypot(*centre) - disk.Rb
         if gap < 2 * W:
-            raise _validate.fail("Rb", disk.Rb, "m", f"the bore comes within {gap * 1e3:.3g} mm of the "
+            raise _validate.fail(_BORE, disk.Rb, "m", f"the bore comes within {gap * 1e3:.3g} mm of the "
                                  f"contact: the fine contact zone needs {2 * W * 1e3:.3g} mm")
         hb = 2 * math.pi * disk.Rb / cm.n_bore
         h_max = h_max_for(disk, cm)

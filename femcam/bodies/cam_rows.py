@@ -188,7 +188,7 @@ def cam_disk_rows(scene, theta, Fc, *, model: CamGlobalModel | None = None,
         :data:`WEB_OVER_A_MIN` contact half-widths.
     """
     theta = _validate.finite_array("theta", theta, "rad")
-    Fc = np.asarray(Fc, dtype=float)
+    Fc = _validate.data_array("Fc", Fc, "N")  # NaN or <= 0: no contact at that angle
     if theta.shape != Fc.shape:
         raise InputError(f"theta, Fc: shapes {theta.shape}, {Fc.shape} must match")
     on = np.flatnonzero(np.isfinite(Fc) & (Fc > 0))

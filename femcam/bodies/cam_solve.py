@@ -176,6 +176,7 @@ def solve_cam_disk(model, *, F: float, local: bool = True) -> CamDiskResult:
         The active set cycles.
     """
     F = _validate.positive("F", F, "N")
+    _validate.record("model", model, "a CamDiskModel (CamDiskModel.build)", "nc", "disk")
     nc, d = model.nc, model.disk
     W = F / model.length
     h0c = surface_height(model.x, model.Rr) + surface_height(model.x, model.rho)

@@ -38,6 +38,9 @@ from ..errors import InputError
 from ..materials import STEEL, Material
 from ..scene import roller_support_problems
 
+#: the scene key a message names for the clearance c
+_CLEARANCE = "c ([follower] pin_clearance_um)"
+
 SUPPORTS = ("solid", "pin", "needles")
 #: Palmgren's line-contact coefficient (mm N^-0.9 mm^0.8) and load exponent
 PALMGREN_C = 3.84e-5
@@ -64,13 +67,43 @@ def needle_approach(Q, length: float):
     >>> round(float(needle_approach(150e3, 0.01)) * 1e6, 2)   # 1500 N on a 10 mm needle: um
     8.79
     """
-    Q = np.maximum(np.asarray(Q, dtype=float), 0.0)
+    Q = np.maximum(_validate.finite_array("Q", Q, "N/m"), 0.0)
+    length = _validate.positive("length", length, "m")
     return 2.0 * PALMGREN_C * (Q * length) ** PALMGREN_EXP / (length * 1e3) ** 0.8 * 1e-3
 
 
-#: every geometry problem of a ring support, as scene-style messages (mm, um): defined with the
-#: scene keys it checks (femcam.scene) and shared here
-bearing_problems = roller_support_problems
+def bearing_problems(*, Ro, Ri, support, Rp, c, Z, r_n) -> list[str]:
+    """Every geometry problem of a ring support, as scene-style messages (mm, um).
+
+    The relations between the dimensions are checked by the scene's
+    :func:`femcam.scene.roller_support_problems` (one copy, with the scene keys it names); each
+    argument is first checked alone here, so a wrong type or sign raises naming the argument.
+
+    Parameters
+    ----------
+    Ro, Ri : float
+        Outer and bore radius of the ring [m], > 0.
+    support : str
+        ``"pin"`` or ``"needles"``.
+    Rp, c : float
+        Pin radius and diametral clearance [m], >= 0.
+    Z : int
+        Number of needles, >= 0.
+    r_n : float
+        Needle radius [m], >= 0.
+
+    Returns
+    -------
+    list of str
+        The problems (empty when the geometry fits).
+    """
+    Ro = _validate.positive("Ro", Ro, "m")
+    Ri = _validate.positive("Ri", Ri, "m")
+    Rp = _validate.nonnegative("Rp", Rp, "m")
+    c = _validate.nonnegative("c", c, "m")
+    Z = _validate.integer("Z", Z, 0, "needles")
+    r_n = _validate.nonnegative("r_n", r_n, "m")
+    return roller_support_problems(Ro=Ro, Ri=Ri, support=support, Rp=Rp, c=c, Z=Z, r_n=r_n)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -125,13 +158,14 @@ class RollerBearing:
         _validate.positive("Ro", self.Ro, "m")
         _validate.positive("Ri", self.Ri, "m")
         _validate.nonnegative("c", self.c, "m")
+        _validate.optional(_validate.positive, "ring_yield", self.ring_yield, "Pa")
         problems = bearing_problems(Ro=self.Ro, Ri=self.Ri, support=self.support, Rp=self.Rp,
-                                    c=self.c, Z=int(self.Z), r_n=self.r_n)
+                                    c=self.c, Z=self.Z, r_n=self.r_n)
         if problems:
             raise InputError("; ".join(problems))  # each names its key, value and unit
         if self.c > 0.05 * self.Ri:
-            raise _validate.fail("c", self.c, "m", f"the clearance is {self.c / self.Ri:.3g} of the bore "
-                                 "radius: the linearised gap (c << Ri) does not hold beyond 0.05 Ri")
+            raise _validate.fail(_CLEARANCE, self.c, "m", f"the clearance is {self.c / self.Ri:.3g} of "
+                                 "the bore radius: the linearised gap (c << Ri) does not hold beyond 0.05 Ri")
 
     @property
     def wall(self) -> float:

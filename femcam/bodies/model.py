@@ -56,7 +56,8 @@ def check_bore_mesh(n_bore, growth) -> None:
     InputError
         A value out of range, naming the field.
     """
-    if int(n_bore) != n_bore or n_bore < 16 or n_bore % 4:
+    n = _validate.number("n_bore", n_bore, "")
+    if int(n) != n or n < 16 or n % 4:
         raise _validate.fail("n_bore", n_bore, "", "must be a multiple of 4, >= 16")
     _validate.in_range("growth", growth, 0.05, 1.0, "")
 

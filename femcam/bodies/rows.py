@@ -110,8 +110,15 @@ def build_for(scene, Fc, rho, *, mesh: MeshOptions | None = None,
     RingModel
         The model, its fine zone graded for the Hertz half-width of the largest ``Fc``.
     """
+    Fc = np.atleast_1d(_validate.data_array("Fc", Fc, "N"))
+    rho = np.atleast_1d(_validate.radius_array("rho", rho, "m"))
+    if Fc.shape != rho.shape:
+        raise InputError(f"Fc, rho: shapes {Fc.shape}, {rho.shape} must match")
+    if not np.any(Fc > 0):
+        raise _validate.fail("Fc", f"max {np.nanmax(Fc, initial=-np.inf):g}", "N",
+                             "needs a positive contact force at one angle at least")
     b = bearing_from_scene(scene)
-    k = int(np.nanargmax(Fc))
+    k = int(np.nanargmax(np.where(Fc > 0, Fc, np.nan)))
     F, r = float(Fc[k]), float(rho[k])
     inv_R = 1.0 / b.Ro + (0.0 if math.isinf(r) else 1.0 / r)
     a_ref = math.sqrt(4 * F / scene.length / (inv_R * math.pi *
@@ -169,8 +176,8 @@ def ring_rows(scene, theta, Fc, rho, *, model: RingModel | None = None,
         Shapes that differ, non-finite ``theta``, or a solid roller.
     """
     theta = _validate.finite_array("theta", theta, "rad")
-    Fc = np.asarray(Fc, dtype=float)
-    rho = np.asarray(rho, dtype=float)
+    Fc = _validate.data_array("Fc", Fc, "N")  # NaN or <= 0: no contact at that angle
+    rho = _validate.radius_array("rho", rho, "m")
     if not (theta.shape == Fc.shape == rho.shape):
         raise InputError(f"theta, Fc, rho: shapes {theta.shape}, {Fc.shape}, {rho.shape} must match")
     model = model or build_for(scene, np.where(Fc > 0, Fc, np.nan), rho, mesh=mesh, ring_mesh=ring_mesh)

@@ -20,6 +20,9 @@ from ..mesh import surface_height
 from .contact import solve_multi_lcp
 from .geometry import needle_approach
 
+#: the scene keys a message names for the cam radius of curvature rho
+_RHO = "rho (cam radius of curvature, from [program] and [follower] base_radius_mm)"
+
 
 @dataclass(frozen=True, eq=False)
 class RingResult:
@@ -190,9 +193,13 @@ def solve_ring(model, *, F: float, rho: float, cage: float = 0.0, max_secant: in
         residuals).
     """
     F = _validate.positive("F", F, "N")
-    rho = float(rho)
-    if math.isnan(rho) or rho == 0.0 or (math.isfinite(rho) and -model.bearing.Ro <= rho < 0):
-        raise _validate.fail("rho", rho, "m", "must be nonzero and not a concave cam tighter than the roller")
+    rho = _validate.radius(_RHO, rho, "m")
+    cage = _validate.number("cage", cage, "rad")
+    max_secant = _validate.integer("max_secant", max_secant, 1, "iterations")
+    tol = _validate.nonnegative("tol", tol, "")  # 0: iterate max_secant times
+    _validate.record("model", model, "a RingModel (RingModel.build)", "bearing", "nc")
+    if math.isfinite(rho) and -model.bearing.Ro <= rho < 0:
+        raise _validate.fail(_RHO, rho, "m", "must be nonzero and not a concave cam tighter than the roller")
     b = model.bearing
     nc = model.nc
     A0, P, phi, weights = _operators(model, cage)

@@ -3,8 +3,10 @@ shakedown, contact fatigue, scuffing and the lubrication regime at every cam ang
 
 Writes ``DIR/assessment.csv`` (units in the column names, provenance header), ``DIR/summary.json``
 (worst angle per criterion, skipped criteria, flags), ``DIR/report.md`` (one page with the plots)
-and ``DIR/plots/assess_*.png``. ``--sweep SWEEP_DIR`` takes the angles and the FE ``a``/``p0`` of a
-finished sweep (``SWEEP_DIR/sweep.npz``) instead of Hertz.
+and ``DIR/plots/assess_*.png``. ``--sweep SWEEP_DIR`` takes the angles, the FE ``a``/``p0``, the FE
+``tau1_max`` and the FE range of ``txz`` over one pass (``txz_range_max``) of a finished sweep
+(``SWEEP_DIR/sweep.npz``) instead of Hertz; a sweep written without ``txz_range_max`` keeps
+Hertz's range at the FE ``p0`` and says so.
 """
 
 from __future__ import annotations
@@ -13,13 +15,11 @@ import json
 import math
 import shlex
 import sys
-from pathlib import Path
 
 import numpy as np
 
 from .. import _validate
-from ..assess import assess, csv_columns
-from ..errors import InputError
+from ..assess import assess, csv_columns, sweep_table
 from ..io import atomic_write_text, csv_text, provenance
 from ..scene import load_scene
 from ..viz.assess import plot_assessment, report_markdown
@@ -45,16 +45,12 @@ def register(subparsers) -> None:
     p.set_defaults(func=_run)
 
 
-def _sweep_table(path):
-
-
-
-    f = Path(path) / "sweep.npz"
-    if not f.is_file():
-        raise InputError(f"--sweep = {path}: no sweep.npz there (run femcam sweep SCENE --out {path} first)")
-    with np.load(f, allow_pickle=False) as z:
-        return {k: np.asarray(z[k]) for k in ("theta", "a_fe", "p0_fe", "tau1_max", "txz_absmax")
-                if k in z.files}
+def _sweep_table(path, scene):
+    """The sweep's columns the assessment uses (the subsurface ``txz_range_max``, never a
+    surface value); a sweep of another scene or a corrupted folder is refused by the library
+    (:func:`femcam.assess.sweep_table`)."""
+    z = sweep_table(path, scene)
+    return {k: z[k] for k in ("theta", "a_fe", "p0_fe", "tau1_max", "txz_range_max") if k in z}
 
 
 def _write_csv(path, cols: dict, header: list[str]) -> None:
@@ -71,7 +67,7 @@ def _write_csv(path, cols: dict, header: list[str]) -> None:
 def _run(args) -> int:
     out_dir(args.out, create=False)  # checked before any work, created below
     scene = load_scene(args.scene)
-    table = _sweep_table(args.sweep) if args.sweep else None
+    table = _sweep_table(args.sweep, scene) if args.sweep else None
     theta = table["theta"] if table is not None else _validate.angles_deg("--angles-deg", args.angles_deg)
     res = assess(scene, theta, table=table)
     out = out_dir(args.out)

@@ -89,8 +89,8 @@ def summary_lines(scene, st, phi_limit_deg: float = 30.0) -> list[str]:
     list of str
         One line per quantity, angles in deg, lengths in mm, forces in N.
     """
-    phi = np.degrees(np.abs(st.phi))
-    i_phi = int(np.argmax(phi))
+    # the whole cam's max |phi| (every segment at its own points), not the analysed angles'
+    phi_max, th_phi = (math.degrees(x) for x in scene.max_pressure_angle)
     rho = np.asarray(st.rho, float)
     i_rho = int(np.argmin(np.abs(rho)))
     conv = rho > 0
@@ -98,8 +98,8 @@ def summary_lines(scene, st, phi_limit_deg: float = 30.0) -> list[str]:
     deg = lambda i: math.degrees(st.theta[i])  # noqa: E731
     concave = (f"yes, tightest rho {np.max(rho[~conv]) * 1e3:.4g} mm" if (~conv).any() else "no")
     lines = [
-        f"max |phi|      = {phi[i_phi]:.3f} deg at theta = {deg(i_phi):.2f} deg "
-        f"({'OK' if phi[i_phi] <= phi_limit_deg else 'EXCEEDS'} limit {phi_limit_deg:g} deg)",
+        f"max |phi|      = {phi_max:.3f} deg at theta = {th_phi:.4g} deg (whole cam; "
+        f"{'OK' if phi_max <= phi_limit_deg else 'EXCEEDS'} limit {phi_limit_deg:g} deg)",
         f"min |rho|      = {abs(rho[i_rho]) * 1e3:.4g} mm at theta = {deg(i_rho):.2f} deg"
         f" ({'convex' if rho[i_rho] > 0 else 'concave'})",
         f"min convex rho = {np.min(rho[conv]) * 1e3:.4g} mm" if conv.any() else "min convex rho = none",
@@ -107,7 +107,8 @@ def summary_lines(scene, st, phi_limit_deg: float = 30.0) -> list[str]:
         f"max Fc         = {st.Fc[i_max]:.2f} N at theta = {deg(i_max):.2f} deg",
         f"min Fc         = {st.Fc[i_min]:.2f} N at theta = {deg(i_min):.2f} deg",
         f"lift-off       = {_intervals_deg(st.loads.liftoff_intervals)}",
-        f"undercut       = {_intervals_deg(_undercut_intervals(st))} (whole revolution, 0.05 deg check)",
+        f"undercut       = {_intervals_deg(_undercut_intervals(st))} (whole revolution: 0.05 deg grid and "
+        "every segment)",
     ]
     if scene.follower.kind == "flat_faced":
         lines.append(f"min face width = {st.profile.face_width_min * 1e3:.3f} mm (face centred on the axis)")

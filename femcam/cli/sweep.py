@@ -21,7 +21,7 @@ from ..scene import load_scene, study_problem
 from ..scene.schema import STUDY_UNITS
 from ..sweep import parse_angles_deg, sweep
 from ..sweep.options import TOLERANCE_FLOOR
-from ..sweep.result import families_text
+from ..sweep.result import families_text, hertz_check_text
 from ..sweep.worst import assess_line
 from ._common import add_law_override, add_scene_out, cap_workers, check_law, out_dir, plain, refuse_non_empty
 
@@ -235,6 +235,20 @@ def _run(args) -> int:
         print(f"{nl}femcam sweep: {exc or 'interrupted'}", file=sys.stderr)
         return 130
     _print_summary(res)
+    return _refusal_code(res)
+
+
+def _refusal_code(res) -> int:
+    """1 (one line per refused part on stderr) when a part the scene asks for was refused at
+    run time (``SweepResult.refused``), else 0; everything computed is written either way."""
+    refused = res.summary().get("extras", {}).get("refused", ())
+    for r in refused:
+        print(f"femcam sweep: refused: {r['line']}", file=sys.stderr)
+    if refused:
+        where = f" to {res.paths['csv']}" if res.paths.get("csv") else ""
+        print(f"femcam sweep: error: {len(refused)} part(s) the scene asks for were refused (exit 1); "
+              f"everything computed is written{where}", file=sys.stderr)
+        return 1
     return 0
 
 
@@ -255,12 +269,13 @@ def _print_summary(res) -> None:
               f"(tolerance {100 * o['tolerance']:g} %); workers "
               f"{o.get('workers')}" + (f" ({o['workers_reason']})" if o.get("workers_reason") else ""))
     print(f"  peak Fc {s['Fc_max']:.1f} N, p0 Hertz {s['p0_hertz_max'] / 1e6:.1f} MPa"
-          + (f", p0 FE {s['p0_fe_max'] / 1e6:.1f} MPa (max |err| vs Hertz "
-             f"{100 * s['err_p0_absmax_arc']:.3f} %, arc-gap rows)" if res.method == "fe" else "")
+          + (f", p0 FE {s['p0_fe_max'] / 1e6:.1f} MPa (peak of the solved pressure)"
+             if res.method == "fe" else "")
           + f", von Mises {s['vm_max'] / 1e6:.1f} MPa, tau1 {s['tau1_max'] / 1e6:.1f} MPa")
-    if res.method == "fe" and math.isfinite(s["err_p0_absmax_exact"]):
-        print(f"  exact-gap rows (curvature jump): FE departs from Hertz by up to "
-              f"{100 * s['err_p0_absmax_exact']:.1f} %; Hertz cannot see the jump")
+    if res.method == "fe":
+        print(f"  p0 FE vs Hertz: {hertz_check_text(s)}")
+    for line in s.get("extras", {}).get("headline", ()):   # what the headline model omits
+        print(f"  {line}")
     for line in s.get("extras", {}).get("worst", ()):   # each provider's worst values (sweep.worst)
         print(f"  {line}")
     line = assess_line(s.get("extras", {}))              # report.md has it as a table

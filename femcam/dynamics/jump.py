@@ -35,7 +35,15 @@ from .. import _validate
 from ..errors import InputError
 from ..kinematics import CamProgram
 from .model import TrainModel
-from .periodic import _check_follows, _setup, _whole, choose_steps, linear_periodic, periodic_response
+from .periodic import (
+    _check_follows,
+    _setup,
+    _steps_per_rev,
+    _whole,
+    choose_steps,
+    linear_periodic,
+    periodic_response,
+)
 
 RPM = 30.0 / math.pi  # rad/s -> rpm
 
@@ -131,6 +139,7 @@ def jump_speed(train: TrainModel, program: CamProgram, rpm_lo: float, rpm_hi: fl
     if hi <= lo:
         raise _validate.fail("rpm_hi", rpm_hi, "rpm", f"must be > rpm_lo = {lo:g} rpm")
     n_scan = _whole("n_scan", n_scan, 1)
+    xtol_rpm = _validate.positive("xtol_rpm", xtol_rpm, "rpm")
     _check_follows(train, hi / RPM)
     N = choose_steps(train, lo / RPM, steps_per_rev)
 
@@ -252,10 +261,14 @@ def rpm_sweep(train: TrainModel, program: CamProgram, rpm, *, steps_per_rev=None
         number >= 1.
     """
     rpm = np.atleast_1d(_validate.finite_array("rpm", rpm, "rpm"))
+    _validate.instance("train", train, TrainModel)
+    _validate.record("program", program, "a femcam.kinematics.CamProgram", "derivatives")
     if np.any(rpm <= 0):
         raise _validate.fail("rpm", float(rpm[rpm <= 0][0]), "rpm", "every speed must be > 0")
     workers = _whole("workers", workers, 1)
     max_cycles = _whole("max_cycles", max_cycles, 1)
+    if steps_per_rev is not None:
+        _steps_per_rev(steps_per_rev)  # refused here, not per speed in the rows
     jobs = [(train, program, float(r), steps_per_rev, max_cycles) for r in rpm]
     if workers == 1:
         rows = [_one(j) for j in jobs]

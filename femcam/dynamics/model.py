@@ -58,13 +58,14 @@ SHORT_RUN = 64
 
 
 def _damping(name, c, zeta, k, m, unit="N s/m"):
-    """c from exactly one of (c, zeta); zeta relative to 2 sqrt(k m)."""
+    """c from exactly one of (c, zeta); zeta relative to 2 sqrt(k m). ``name`` is the suffix of the
+    parameters (``"_t"``: ``c_t``/``zeta_t``; ``"2"``: ``c2``/``zeta2``)."""
     if (c is None) == (zeta is None):
-        raise InputError(f"{name}: give exactly one of the damping c (N s/m) or the ratio zeta; "
+        raise InputError(f"c{name}, zeta{name}: give exactly one of the damping c (N s/m) or the ratio zeta; "
                          f"got c = {c!r}, zeta = {zeta!r}")
     if c is not None:
-        return _validate.nonnegative(f"c ({name})", c, unit)
-    return _validate.nonnegative(f"zeta ({name})", zeta, "") * 2.0 * math.sqrt(k * m)
+        return _validate.nonnegative(f"c{name}", c, unit)
+    return _validate.nonnegative(f"zeta{name}", zeta, "") * 2.0 * math.sqrt(k * m)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -126,14 +127,14 @@ class TrainModel:
         _validate.positive("m (follower mass)", f.m, "kg")
         k_t = _validate.positive("k_t", self.k_t, "N/m")
         object.__setattr__(self, "k_t", k_t)
-        object.__setattr__(self, "c_t", _damping("train", self.c_t, self.zeta_t, k_t, f.m))
+        object.__setattr__(self, "c_t", _damping("_t", self.c_t, self.zeta_t, k_t, f.m))
         if self.m2 is None:
             if any(x is not None for x in (self.k2, self.c2, self.zeta2)):
                 raise InputError("k2, c2, zeta2 belong to a two_dof train: give m2 (kg) too")
             return
         object.__setattr__(self, "m2", _validate.positive("m2", self.m2, "kg"))
         object.__setattr__(self, "k2", _validate.positive("k2", self.k2, "N/m"))
-        object.__setattr__(self, "c2", _damping("second", self.c2, self.zeta2, self.k2, self.m2))
+        object.__setattr__(self, "c2", _damping("2", self.c2, self.zeta2, self.k2, self.m2))
 
     @property
     def model(self) -> str:
@@ -408,6 +409,9 @@ def check_resolution(train: TrainModel, omega: float, N: int) -> str | None:
     str or None
         None if resolved, else the reason ending in ``steps_per_rev >= <count>)``.
     """
+    omega = _validate.positive("omega", omega, "rad/s")
+    N = _validate.integer("N", N, 1, "steps per revolution")
+    _validate.instance("train", train, TrainModel)
     h = 2.0 * math.pi / (omega * N)
     for contact in (True, False):
         lam = np.linalg.eigvals(train.state_space(contact)[0])

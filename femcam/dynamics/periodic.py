@@ -221,6 +221,14 @@ class DynamicsResult:
                           liftoff_intervals=bool_intervals(theta, lift))
 
 
+def _steps_per_rev(steps_per_rev) -> int:
+    """A requested step count: a whole number >= 16 (``720.0`` is accepted as 720)."""
+    N = int(_validate.positive("steps_per_rev", steps_per_rev, ""))
+    if N != steps_per_rev or N < 16:
+        raise _validate.fail("steps_per_rev", steps_per_rev, "", "must be a whole number >= 16")
+    return N
+
+
 def choose_steps(train: TrainModel, omega: float, steps_per_rev=None) -> int:
     """Steps per revolution: the given number if it resolves the train (else InputError with
     the numbers), or ``DEFAULT_STEPS`` raised to the resolving count when that is larger.
@@ -246,9 +254,7 @@ def choose_steps(train: TrainModel, omega: float, steps_per_rev=None) -> int:
         more than ``MAX_STEPS`` would be needed.
     """
     if steps_per_rev is not None:
-        N = int(_validate.positive("steps_per_rev", steps_per_rev, ""))
-        if N != steps_per_rev or N < 16:
-            raise _validate.fail("steps_per_rev", steps_per_rev, "", "must be a whole number >= 16")
+        N = _steps_per_rev(steps_per_rev)
         why = check_resolution(train, omega, N)
         if why:
             raise InputError(why + "; give more steps or leave steps_per_rev unset")
@@ -271,11 +277,12 @@ def _check_follows(train: TrainModel, omega: float) -> None:
     w1 = float(train.natural_frequencies[0])
     if w1 <= omega:
         raise InputError(
-            f"k_t = {train.k_t:g} N/m: the lowest natural frequency of the train in contact, "
+            f"k_t ([dynamics] train_stiffness_N_per_m) = {train.k_t:g} N/m: the lowest natural "
+            "frequency of the train in contact, "
             f"{w1 / (2 * math.pi):.4g} Hz ({w1:.4g} rad/s), is at or below the camshaft frequency "
             f"{omega / (2 * math.pi):.4g} Hz ({omega * 30 / math.pi:.6g} rpm): every cam harmonic "
             "drives the train above resonance and the follower cannot follow the lift. Stiffen "
-            "the train (k_t) or lighten the masses")
+            "the train (train_stiffness_N_per_m) or lighten the masses (mass_kg, second_mass_kg)")
 
 
 def _setup(train, program, omega, N):

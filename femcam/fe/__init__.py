@@ -4,8 +4,9 @@ the contact vertices, active-set complementarity solve, stress recovery and VTU 
 >>> from femcam.fe import ContactModel, MeshOptions, SolverOptions, ContactResult  # doctest: +SKIP
 
 Modules: ``elasticity`` (assembly, supports, factorisation), ``contact`` (consistent nodal
-forces, compliances, LCP), ``recovery`` (stresses, half-width fit), ``model``
-(``ContactModel``, ``solve_contact``), ``result`` (``ContactResult`` with the stress maxima and
+forces, compliances, LCP), ``recovery`` (stresses, half-width fit), ``passrange`` (the range of
+``txz`` over one pass from the subsurface field), ``model`` (``ContactModel``,
+``solve_contact``), ``result`` (``ContactResult`` with the stress maxima, the ``txz`` range and
 both bodies' surface stresses), ``export`` (VTU through meshio), ``traction`` (partial slip),
 ``gap``, ``followers``, ``angles``, ``choice`` (exact gap, follower types, angle sets and the
 model choice).
@@ -13,7 +14,7 @@ model choice).
 
 from ..mesh import MeshOptions
 from .model import ContactModel, SolverOptions, solve_contact
-from .result import MAXIMA_KEYS, ContactResult, StressMax, SurfaceStress
+from .result import MAXIMA_KEYS, ContactResult, ShearRange, StressMax, SurfaceStress
 
-__all__ = ["MAXIMA_KEYS", "ContactModel", "ContactResult", "MeshOptions", "SolverOptions", "StressMax",
-           "SurfaceStress", "solve_contact"]
+__all__ = ["MAXIMA_KEYS", "ContactModel", "ContactResult", "MeshOptions", "ShearRange", "SolverOptions",
+           "StressMax", "SurfaceStress", "solve_contact"]

@@ -18,6 +18,7 @@ measured reuse errors).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -44,6 +45,7 @@ from .elasticity import (
     scalar_node_coordinates,
     stress_operator,
 )
+from .passrange import pass_grid
 from .recovery import build_eval_set, depth, derived, fit_half_width, johnson_frame
 from .result import (  # noqa: F401  (also importable from here: pickles made before the split)
     MAXIMA_KEYS,
@@ -104,6 +106,7 @@ class SolverOptions:
 
     def __post_init__(self):
         _validate.choice("ordering", self.ordering, ORDERINGS)
+        _validate.integer("max_iter", self.max_iter, 1, "iterations")
         _validate.in_range("max_iter", self.max_iter, 1, 10000, "")
         _validate.positive("tol", self.tol, "")
         lo = _validate.positive("a_range[0]", self.a_range[0], "")
@@ -151,6 +154,8 @@ def _body_part(name, geo, mat, *, x, plane, element, solver, a_ref) -> SimpleNam
                         shape=(cdof.size, b.n_dofs))
     ev, Yn, Yt = build_eval_set(b, Bn, Bt, S_c, float(x[-1]), solver.eval_depth * a_ref,
                                 precompute=solver.stress_operators == "precompute")
+    grid = pass_grid(b, ev.nodes, ev.x, ev.z, ev.surface)   # rows of equal depth: the txz range
+    ev = dataclasses.replace(ev, **dict(zip(("pass_P", "pass_x", "pass_z", "pass_ok"), grid, strict=True)))
     return SimpleNamespace(body=b, Bn=Bn, Bt=Bt, ev=ev, Yn=Yn, Yt=Yt,
                            t_cond=time.perf_counter() - t1)
 
@@ -660,6 +665,7 @@ def solve_contact(F: float, rho: float, Rr: float, cam: Material, roller: Materi
     ContactResult
         The solved load case (see :meth:`ContactModel.solve`).
     """
+    ContactModel._check_inputs(F, rho, mu, sliding, None, 0)  # before the mesh is built
     if a_ref is None:
         aH, _ = _hertz(_validate.nonnegative("F", F, "N"), _validate.positive("length", length, "m"),
                        _radius("rho", rho),

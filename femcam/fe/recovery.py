@@ -11,6 +11,8 @@ Derived quantities (Johnson 1985 §4.2, §7.1):
 .. math:: \tau_1 = \sqrt{\left(\tfrac{\sigma_x - \sigma_z}{2}\right)^2 + \tau_{xz}^2},\qquad
           \sigma_{vM} = \sqrt{\tfrac12[(\sigma_x-\sigma_z)^2 + (\sigma_z-\sigma_y)^2
           + (\sigma_y-\sigma_x)^2] + 3\tau_{xz}^2}
+
+The range of the orthogonal shear over one pass is in :mod:`femcam.fe.passrange`.
 """
 
 from __future__ import annotations
@@ -51,6 +53,11 @@ class EvalSet:
         ``"per_solve"``: consistent nodal forces of unit pressure / traction hats [m].
     solver : Body, optional
         ``"per_solve"``: the factorised body.
+    pass_P, pass_x, pass_z, pass_ok : optional
+        The rows of equal depth for the range of ``txz`` over one pass
+        (:func:`femcam.fe.passrange.pass_grid`, attached by the model build; None: not computed):
+        interpolation (n_z n_x, n_eval) [-], abscissae (n_x,) [m], depths (n_z,) [m], and the
+        grid points inside the window (n_z, n_x).
     """
 
     body: str
@@ -64,6 +71,10 @@ class EvalSet:
     Bn: sp.csc_matrix | None = None
     Bt: sp.csc_matrix | None = None
     solver: Body | None = field(default=None, repr=False)
+    pass_P: sp.csr_matrix | None = field(default=None, repr=False)
+    pass_x: np.ndarray | None = None
+    pass_z: np.ndarray | None = None
+    pass_ok: np.ndarray | None = None
 
     def stresses(self, p: np.ndarray, q: np.ndarray | None = None) -> np.ndarray:
         """Stresses at the window nodes for one load case.

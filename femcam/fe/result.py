@@ -1,6 +1,6 @@
 """Result of one FE contact solve: :class:`ContactResult` with its stress maxima
-(:class:`StressMax`, keys :data:`MAXIMA_KEYS`) and both bodies' surface stresses
-(:class:`SurfaceStress`).
+(:class:`StressMax`, keys :data:`MAXIMA_KEYS`), the range of ``txz`` over one pass
+(:class:`ShearRange`) and both bodies' surface stresses (:class:`SurfaceStress`).
 
 The maxima and surface stresses are stored once per body (``max_by_body``,
 ``surface_by_body``); the over-both-bodies values (``von_mises_max``, ...) and the cam's surface
@@ -18,6 +18,7 @@ import numpy as np
 
 from .. import _validate
 from .export import write_vtu
+from .passrange import ShearRange, pass_shear_range
 from .recovery import derived
 
 if TYPE_CHECKING:
@@ -128,7 +129,10 @@ class ContactResult:
         Integral of p times length (N) and its relative error against F (-).
     max_by_body : dict
         ``{"cam"|"roller": {key: StressMax}}`` with the keys of :data:`MAXIMA_KEYS` over the
-        stress window ``|x| <= fine_half_width * a_ref``, ``z <= eval_depth * a_ref``; the nine
+        stress window ``|x| <= fine_half_width * a_ref``, ``z <= eval_depth * a_ref``, and
+        ``"txz_range"``: the body's :class:`ShearRange` (``txz_range`` over both bodies is the
+        larger of the two: the fatigue check takes the weaker body's limit, and with friction
+        or unlike materials the two fields differ); the nine
         over both bodies (``von_mises_max``, ``tau1_max``, ``txz_abs_max``, ``sx_max``,
         ``sx_min``, ``sz_max``, ``sz_min``, ``sy_max``, ``sy_min``; Pa) are properties derived
         from it (e.g. the trailing-edge tension ``sx_max`` ~ 2 mu p0 at x = -a on the cam for
@@ -214,6 +218,7 @@ class ContactResult:
     sz_min = _over_bodies("sz_min")
     sy_max = _over_bodies("sy_max")
     sy_min = _over_bodies("sy_min")
+    txz_range = _over_bodies("txz_range")
     x_surface = _cam_surface("x")
     sx = _cam_surface("sx")
     sz = _cam_surface("sz")
@@ -338,21 +343,25 @@ def traction_fields(trac, q, w, x, length) -> dict:
 
 
 def window_extrema(name: str, ev, sx, sz, txz, sy) -> tuple[dict, SurfaceStress]:
-    """Stress extrema over the stress window of one body, and its surface stresses.
+    """Stress extrema over the stress window of one body, the range of ``txz`` over one pass
+    below its surface, and its surface stresses.
 
     Parameters
     ----------
     name : str
         Body name, ``"cam"`` or ``"roller"``.
     ev : femcam.fe.recovery.EvalSet
-        Its stress window (``ev.x, ev.z`` [m], ``ev.surface`` the surface points).
+        Its stress window (``ev.x, ev.z`` [m], ``ev.surface`` the surface points, ``ev.pass_*``
+        the rows of equal depth).
     sx, sz, txz, sy : ndarray of float, shape (n_eval,)
         Stresses at the window points, Johnson frame [Pa].
 
     Returns
     -------
-    maxima : dict of str to StressMax
-        One per key of :data:`MAXIMA_KEYS` [Pa, m].
+    maxima : dict of str to StressMax or ShearRange
+        One :class:`StressMax` per key of :data:`MAXIMA_KEYS` and the :class:`ShearRange`
+        ``"txz_range"`` [Pa, m] (on the window's rows of equal depth,
+        :func:`femcam.fe.passrange.pass_grid`; NaN without them).
     surface : SurfaceStress
         The stresses at the surface points, sorted by x.
     """
@@ -363,4 +372,10 @@ def window_extrema(name: str, ev, sx, sz, txz, sy) -> tuple[dict, SurfaceStress]
         i = int(arg(fields[comp]))
         m[key] = StressMax(float(fields[comp][i]), float(ev.x[i]), float(ev.z[i]), name)
     k = ev.surface
+    if ev.pass_P is None:                                   # no rows of equal depth: not computed
+        m["txz_range"] = ShearRange(np.nan, np.nan, np.nan, np.nan, name, False)
+    else:
+        grid = np.where(ev.pass_ok, (ev.pass_P @ txz).reshape(ev.pass_ok.shape), np.nan)
+        m["txz_range"] = ShearRange(**pass_shear_range(grid, ev.pass_x, ev.pass_z, ev.pass_ok),
+                                    body=name)
     return m, SurfaceStress(x=ev.x[k], sx=sx[k], sz=sz[k], txz=txz[k], sy=sy[k], body=name)

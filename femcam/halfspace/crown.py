@@ -63,7 +63,8 @@ def circular_drop(y, Rc):
     >>> round(float(circular_drop(0.005, 1.0)) * 1e6, 4)   # um, ~ y^2 / 2 Rc = 12.5 um
     12.5001
     """
-    y = np.asarray(y, float)
+    y = _validate.finite_array("y", y, "m")
+    Rc = _validate.positive("Rc", Rc, "m")
     return Rc - np.sqrt(np.maximum(Rc * Rc - y * y, 0.0))
 
 
@@ -99,7 +100,11 @@ def log_drop(y, l, Q, b, E_star):
     >>> bool(np.isclose(c, 1000.0 / (np.pi * 0.01 * 1.15e11) * np.log(0.01 / 1e-4)))
     True
     """
-    y = np.asarray(y, float)
+    y = _validate.finite_array("y", y, "m")
+    l = _validate.positive("l", l, "m")
+    Q = _validate.positive("Q", Q, "N")
+    b = _validate.in_range("b", b, 0.0, 0.5 * l, "m", lo_open=True, hi_open=True)
+    E_star = _validate.positive("E_star", E_star, "Pa")
     k = 1.0 - 2.0 * b / l
     return Q / (math.pi * l * E_star) * -np.log1p(-k * np.minimum((2.0 * y / l) ** 2, 1.0))
 
@@ -128,7 +133,9 @@ def edge_drop(y, l, re):
     >>> float(edge_drop(0.005, 0.01, 0.001)) * 1e3   # mm: the full radius at the end
     1.0
     """
-    y = np.asarray(y, float)
+    y = _validate.finite_array("y", y, "m")
+    l = _validate.positive("l", l, "m")
+    re = _validate.nonnegative("re", re, "m")
     if re <= 0.0:
         return np.zeros_like(y)
     s = np.clip(np.abs(y) - (0.5 * l - re), 0.0, re)

@@ -82,8 +82,8 @@ def cell_influence(x, y, dx, dy, E_star):
     dx = _validate.positive("dx", dx, "m")
     dy = _validate.positive("dy", dy, "m")
     E_star = _validate.positive("E_star", E_star, "Pa")
-    x = np.asarray(x, float)
-    y = np.asarray(y, float)
+    x = _validate.finite_array("x", x, "m")
+    y = _validate.finite_array("y", y, "m")
     hx, hy = 0.5 * dx, 0.5 * dy
     s = _G(x + hx, y + hy) - _G(x + hx, y - hy) - _G(x - hx, y + hy) + _G(x - hx, y - hy)
     return s / (np.pi * E_star)
@@ -119,6 +119,8 @@ def dcfft_kernel(nx: int, ny: int, dx: float, dy: float, E_star: float) -> np.nd
     for name, n in (("nx", nx), ("ny", ny)):
         if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 1:
             raise _validate.fail(name, n, "cells", "must be an integer >= 1")
+    dx = _validate.positive("dx", dx, "m")
+    dy = _validate.positive("dy", dy, "m")
     ix = np.concatenate([np.arange(nx), [0], -np.arange(nx - 1, 0, -1)]).astype(float)
     iy = np.concatenate([np.arange(ny), [0], -np.arange(ny - 1, 0, -1)]).astype(float)
     K = cell_influence(ix[:, None] * dx, iy[None, :] * dy, dx, dy, E_star)

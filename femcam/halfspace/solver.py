@@ -107,7 +107,8 @@ class HalfSpace:
     """
 
     def __init__(self, *, nx: int, ny: int, dx: float, dy: float, E_star: float):
-        self.nx, self.ny = int(nx), int(ny)
+        self.nx = _validate.integer("nx", nx, 1, "cells")
+        self.ny = _validate.integer("ny", ny, 1, "cells")
         self.dx = _validate.positive("dx", dx, "m")
         self.dy = _validate.positive("dy", dy, "m")
         self.E_star = _validate.positive("E_star", E_star, "Pa")

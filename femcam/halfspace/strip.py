@@ -202,7 +202,11 @@ class FiniteLengthContact:
         for name, n in (("nx", nx), ("ny", ny)):
             if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 4:
                 raise _validate.fail(name, n, "cells", "must be an integer >= 4")
-        self.nx, self.ny, self.tol, self.max_iter = int(nx), int(ny), float(tol), int(max_iter)
+        self.nx, self.ny = int(nx), int(ny)
+        self.tol = _validate.positive("tol", tol, "")
+        self.max_iter = _validate.integer("max_iter", max_iter, 1, "iterations")
+        _validate.optional(_validate.positive, "design_load", design_load, "N")
+        _validate.optional(_validate.positive, "design_radius", design_radius, "m")
         self.L = min(profile.width, self.cam_width)
         self.dy = self.L / self.ny
         self.y = (np.arange(self.ny) + 0.5) * self.dy - 0.5 * self.L

@@ -7,7 +7,8 @@ Every FE result in femcam is judged against this package.
 * :mod:`~femcam.hertz.surface` -- pressure and surface stresses on ``z = 0`` (seed 002 eqs. 5-7).
 * :mod:`~femcam.hertz.subsurface` -- closed-form field ``sx, sz, txz, sy`` and ``tau1``,
   Tresca, von Mises (McEwen 1949; Johnson eqs. 7.20-7.21).
-* :mod:`~femcam.hertz.maxima` -- maxima of ``tau1``, von Mises and ``|txz|`` for any ``mu``.
+* :mod:`~femcam.hertz.maxima` -- maxima of ``tau1``, von Mises and ``|txz|``, and the range of
+  ``txz`` over one pass, for any ``mu``.
 
 Sign convention: tension positive, ``z >= 0`` into the body, friction traction on the body in
 +x (the other body slides in +x), so the tensile surface peak ``2 mu p0`` sits at ``x = -a``.
@@ -26,6 +27,7 @@ from .maxima import (
     StressMaximum,
     max_orthogonal_shear,
     max_shear,
+    max_shear_range,
     max_von_mises,
 )
 from .subsurface import StressField, stress_field, unit_stresses
@@ -43,6 +45,7 @@ __all__ = [
     "hertz_pressure",
     "max_orthogonal_shear",
     "max_shear",
+    "max_shear_range",
     "max_von_mises",
     "peak_pressure",
     "stress_field",

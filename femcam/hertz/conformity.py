@@ -26,7 +26,7 @@ from functools import lru_cache
 import numpy as np
 
 from .contact import effective_radius, half_width
-from .maxima import max_shear, max_von_mises
+from .maxima import max_shear, max_shear_range, max_von_mises
 from .surface import surface_stress
 
 #: ``nearly_conformal`` flag threshold on :func:`gap_nonparabolicity`
@@ -166,8 +166,8 @@ def shape_factors(mu: float, nu: float, plane: str) -> dict:
 
     Hertz line-contact stresses are self-similar: :math:`\sigma/p_0` depends only on
     :math:`(x/a, z/a, \mu, \nu)` (Johnson 1985 §7.1, McEwen 1949), so the maxima of von Mises
-    and tau1 (:mod:`femcam.hertz.maxima`) are found once and scaled by each angle's p0 and a.
-    Surface extremes: seed 002 eqs. 5-7 on a fine grid of ``x/a``.
+    and tau1 and the range of txz over one pass (:mod:`femcam.hertz.maxima`) are found once and
+    scaled by each angle's p0 and a. Surface extremes: seed 002 eqs. 5-7 on a fine grid of ``x/a``.
 
     Parameters
     ----------
@@ -181,13 +181,15 @@ def shape_factors(mu: float, nu: float, plane: str) -> dict:
     Returns
     -------
     dict
-        ``von_mises`` and ``tau1``: ``(value / p0, depth / a)``; ``sx_min``, ``sx_max``,
-        ``sz_min``, ``txz_absmax``: surface extremes / p0.
+        ``von_mises``, ``tau1`` and ``txz_range`` (:func:`~femcam.hertz.maxima.max_shear_range`):
+        ``(value / p0, depth / a)``; ``surf_sx_min``, ``surf_sx_max``, ``surf_sz_min``,
+        ``surf_txz_absmax``: surface (z = 0) extremes / p0.
     """
     vm = max_von_mises(mu, nu, plane)
     t1 = max_shear(mu)
+    tr = max_shear_range(mu)
     xs = np.linspace(-3.0, 3.0, 60001)
     sx, sz, txz = surface_stress(xs, 1.0, 1.0, mu)
-    return {"von_mises": (vm.value, vm.z), "tau1": (t1.value, t1.z),
-            "sx_min": float(np.min(sx)), "sx_max": float(np.max(sx)),
-            "sz_min": float(np.min(sz)), "txz_absmax": float(np.max(np.abs(txz)))}
+    return {"von_mises": (vm.value, vm.z), "tau1": (t1.value, t1.z), "txz_range": (tr.value, tr.z),
+            "surf_sx_min": float(np.min(sx)), "surf_sx_max": float(np.max(sx)),
+            "surf_sz_min": float(np.min(sz)), "surf_txz_absmax": float(np.max(np.abs(txz)))}

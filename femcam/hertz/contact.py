@@ -75,6 +75,13 @@ def effective_radius(R1, R2):
     >>> round(float(effective_radius(-0.03, 0.01)), 12)
     0.015
     """
+    _validate.radius_array("R1", R1)
+    _validate.radius_array("R2", R2)
+    return _effective_radius(R1, R2)
+
+
+def _effective_radius(R1, R2):
+    """:func:`effective_radius` without the input checks."""
     R1 = np.asarray(R1, dtype=float)
     R2 = np.asarray(R2, dtype=float)
     with np.errstate(divide="ignore"):
@@ -108,6 +115,14 @@ def half_width(w, R, E_star):
     >>> round(float(half_width(1.5e5, 0.005, 115.3846e9)) * 1e6, 2)   # um
     90.97
     """
+    _validate.nonnegative_array("w", w, "N/m")
+    _validate.positive_array("R", R, "m")
+    _validate.positive_array("E_star", E_star, "Pa")
+    return _half_width(w, R, E_star)
+
+
+def _half_width(w, R, E_star):
+    """:func:`half_width` without the input checks."""
     return np.sqrt(4.0 * np.asarray(w, dtype=float) * R / (np.pi * E_star))
 
 
@@ -135,6 +150,13 @@ def peak_pressure(w, a):
     >>> round(float(peak_pressure(1.5e5, 90.97e-6)) / 1e6, 1)   # MPa
     1049.7
     """
+    _validate.nonnegative_array("w", w, "N/m")
+    _validate.nonnegative_array("a", a, "m")
+    return _peak_pressure(w, a)
+
+
+def _peak_pressure(w, a):
+    """:func:`peak_pressure` without the input checks."""
     w = np.asarray(w, dtype=float)
     a = np.asarray(a, dtype=float)
     safe = np.where(a > 0.0, a, 1.0)  # w = 0 <=> a = 0: p0 = 0, not 0/0
@@ -290,8 +312,8 @@ class LineContact:
         R = 1.0 / inv_R
         E_star = effective_modulus(self.cam, self.roller, self.plane)
         w = F / length
-        a = half_width(w, R, E_star)
-        p0 = peak_pressure(w, a)
+        a = _half_width(w, R, E_star)  # checked above
+        p0 = _peak_pressure(w, a)
         with np.errstate(divide="ignore"):
             inv_rmin = np.maximum(inv_R, np.maximum(np.abs(1.0 / R1), np.abs(1.0 / R2)))
         a_over_rmin = a * inv_rmin

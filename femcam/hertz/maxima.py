@@ -16,7 +16,12 @@ Textbook values (frictionless, Johnson 1985 §4.2.3 and Fig. 4.6):
 
 * ``tau1`` max ``= 0.300 p0`` at ``x = 0, z = 0.786 a``;
 * ``|txz|`` max ``= p0/4`` at ``x = +-sqrt(3)/2 a, z = a/2`` (exact);
-* von Mises max ``~ 0.557 p0`` at ``z ~ 0.70 a`` for ``nu = 0.3`` (plane strain).
+* von Mises max ``~ 0.557 p0`` at ``z ~ 0.70 a`` for ``nu = 0.3`` (plane strain);
+* range of ``txz`` over one pass, ``max_z [max_x txz - min_x txz]`` (:func:`max_shear_range`)
+  ``= p0/2`` at ``z = a/2`` (Johnson 1985 §9.2), unchanged by a sliding traction ``q = mu p``
+  up to ``mu ~ 0.5``: the traction adds ``mu sx_p`` to ``txz``, and at the extremes of ``txz_p``
+  equilibrium (``d sx/dx = -d txz/dz = 0`` there) leaves ``sx_p`` stationary in ``x``, so both
+  peaks move alike. Above that the surface range ``mu p0`` (``txz = -q`` at ``z = 0``) governs.
 
 With friction the maxima move towards the surface and to the trailing side; above
 ``mu ~ 0.25-0.3`` ``tau1`` peaks at the surface.  There ``tau1(x, 0) = mu p0`` for every
@@ -33,7 +38,7 @@ import numpy as np
 
 from .. import _validate
 from ..materials import PLANES
-from .subsurface import StressField, unit_stresses
+from .subsurface import StressField, _unit_stresses
 
 _X_BOUNDS = (-2.0, 2.0)
 _Z_BOUNDS = (0.0, 2.0)
@@ -46,11 +51,13 @@ class StressMaximum:
     Attributes
     ----------
     quantity : str
-        Stress measure: ``"tau1"``, ``"von_mises"`` or ``"txz"`` (``|tau_xz|``).
+        Stress measure: ``"tau1"``, ``"von_mises"``, ``"txz"`` (``|tau_xz|``) or
+        ``"txz_range"`` (range of ``tau_xz`` over one pass, :func:`max_shear_range`).
     value : float
         Maximum divided by ``p0`` [-].
     x, z : float
-        Location ``x / a`` and depth ``z / a >= 0`` [-].
+        Location ``x / a`` and depth ``z / a >= 0`` [-] (``txz_range``: ``x`` of the largest
+        ``tau_xz`` at that depth).
     mu : float
         Friction coefficient [-] the maximum was computed for.
     nu : float or None
@@ -98,7 +105,7 @@ class ScaledMaximum:
 
 
 def _measure(quantity, X, Z, mu, nu, plane):
-    sx, sz, txz = unit_stresses(X, Z, mu)
+    sx, sz, txz = _unit_stresses(X, Z, mu)  # X, Z, mu checked by the callers
     if quantity == "txz":
         return np.abs(txz)
     if quantity == "tau1":
@@ -260,3 +267,88 @@ def max_orthogonal_shear(mu: float = 0.0) -> StressMaximum:
     0.25
     """
     return _maximise("txz", _mu(mu), None, "strain")
+
+
+def _pass_range(X, Z, mu):
+    """``(range, x of the largest txz)`` of ``txz / p0`` along the rows ``Z`` (units of a)."""
+    t = _unit_stresses(X[None, :], Z[:, None], mu)[2]
+    return t.max(axis=1) - t.min(axis=1), X[np.argmax(t, axis=1)]
+
+
+def _x_extreme(z, x0, h, sign, mu, tol=1e-11):
+    """``(sign * extreme of sign * txz / p0, x)`` at depth ``z`` near ``x0`` by zoomed sampling."""
+    best = -np.inf
+    while h > tol:
+        xs = np.linspace(x0 - h, x0 + h, 21)
+        t = sign * _unit_stresses(xs, z, mu)[2]
+        k = int(np.argmax(t))
+        if t[k] >= best:
+            best, x0 = float(t[k]), float(xs[k])
+        h = float(xs[1] - xs[0])
+    return sign * best, x0
+
+
+@lru_cache(maxsize=256)
+def _shear_range(mu: float, n_x: int = 601, n_z: int = 61) -> StressMaximum:
+    X = np.linspace(-3.0, 3.0, n_x)            # txz decays like 1/r: the extremes lie in |x| < 3a
+    Z = np.linspace(0.0, 1.5, n_z)
+    r, _ = _pass_range(X, Z, mu)
+    grid_best = float(r.max())
+    z0, h, best, evals = float(Z[int(np.argmax(r))]), float(Z[1] - Z[0]), grid_best, r.size * n_x
+    while h > 1e-6:                             # zoomed sampling in z (as _zoom, one dimension)
+        zs = np.linspace(max(z0 - h, 0.0), z0 + h, 21)
+        rr, _ = _pass_range(X, zs, mu)
+        evals += rr.size * n_x
+        k = int(np.argmax(rr))
+        if rr[k] >= best:
+            best, z0 = float(rr[k]), float(zs[k])
+        h = float(zs[1] - zs[0])
+    # the x extremes at that depth, refined off the grid (the range is flat in z at its maximum)
+    t = _unit_stresses(X, z0, mu)[2]
+    hi, x = _x_extreme(z0, X[int(np.argmax(t))], X[1] - X[0], 1.0, mu)
+    lo, _ = _x_extreme(z0, X[int(np.argmin(t))], X[1] - X[0], -1.0, mu)
+    value, x = max(best, hi - lo), min(max(x, -3.0), 3.0)
+    msg = "subsurface maximum" if z0 > 1e-6 else "surface maximum (txz = -q at z = 0)"
+    return StressMaximum(quantity="txz_range", value=value, x=x, z=z0, mu=mu, nu=None,
+                         grid_value=grid_best, nfev=evals, converged=True, message=msg)
+
+
+def max_shear_range(mu: float = 0.0) -> StressMaximum:
+    r"""Largest range of the orthogonal shear :math:`\tau_{xz}` over one pass, / ``p0``, and its depth.
+
+    A point at depth ``z`` sees the whole field ``txz(x, z)`` pass as the load rolls over it
+    (Johnson 1985 §9.2: the stress cycle of rolling contact fatigue):
+
+    .. math:: \frac{\Delta\tau}{p_0} = \max_z\left[\max_x \tau_{xz}(x, z) -
+              \min_x \tau_{xz}(x, z)\right] / p_0
+
+    Frictionless: exactly 1/2 at ``z = a/2`` (the peaks ``+-p0/4`` at ``x = -+sqrt(3)/2 a``);
+    the same up to ``mu ~ 0.5`` (module docstring), then the surface range ``mu``. Search: the
+    field on 601 points of ``-3 <= x/a <= 3`` at 61 depths ``0 <= z/a <= 1.5``, zoomed sampling
+    in ``z`` to a step below 1e-6 a (the range is stationary in ``z`` there, so the value is not
+    sensitive to it), then both ``x`` extremes at that depth refined off the grid by zoomed
+    sampling to 1e-11 a.
+
+    Parameters
+    ----------
+    mu : float, optional
+        Friction coefficient [-], ``>= 0``; traction ``q = mu p`` (full sliding). Default 0.
+
+    Returns
+    -------
+    StressMaximum
+        ``value = dtau / p0`` [-] at depth ``z / a`` [-] (``x / a``: where ``txz`` is largest at
+        that depth), with search diagnostics.
+
+    Raises
+    ------
+    InputError
+        ``mu`` is negative or not finite.
+
+    Examples
+    --------
+    >>> m = max_shear_range()
+    >>> round(m.value, 6), round(m.z, 3)
+    (0.5, 0.5)
+    """
+    return _shear_range(_mu(mu))

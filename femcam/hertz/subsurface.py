@@ -114,6 +114,13 @@ def unit_stresses(X, Z, mu=0.0):
     >>> [round(float(s), 6) + 0.0 for s in unit_stresses(0.0, 0.786)]   # axis, frictionless
     [-0.185643, -0.786209, 0.0]
     """
+    X = _validate.finite_array("X", X, "")
+    Z = _validate.nonnegative_array("Z", Z, "")
+    return _unit_stresses(X, Z, _validate.finite_array("mu", mu, ""))
+
+
+def _unit_stresses(X, Z, mu):
+    """:func:`unit_stresses` without the input checks (for callers that checked them)."""
     X = np.asarray(X, dtype=float)
     Z = np.asarray(Z, dtype=float)
     m, n, D = mn(X, Z)
@@ -234,10 +241,11 @@ def stress_field(x, z, a, p0, mu=0.0, *, nu=0.3, plane="strain") -> StressField:
         raise _validate.fail("z", z[z < 0.0].flat[0], "m", "must be >= 0 (depth into the body)")
     _validate.in_range("nu", nu, -1.0, 0.5, "", lo_open=True, hi_open=True)
     _validate.choice("plane", plane, PLANES)
-    a = np.asarray(a, dtype=float)
-    p0 = np.asarray(p0, dtype=float)
+    a = _validate.nonnegative_array("a", a, "m")
+    p0 = _validate.nonnegative_array("p0", p0, "Pa")
+    mu = _validate.finite_array("mu", mu, "")
     a_safe = np.where(a > 0.0, a, 1.0)           # a = 0 <=> p0 = 0: 0 * finite = 0, not NaN
-    sx, sz, txz = unit_stresses(x / a_safe, z / a_safe, mu)
+    sx, sz, txz = _unit_stresses(x / a_safe, z / a_safe, mu)
     sx, sz, txz = p0 * sx, p0 * sz, p0 * txz
     sy = nu * (sx + sz) if plane == "strain" else np.zeros_like(sx)
     return StressField(sx=sx, sz=sz, txz=txz, sy=sy)

@@ -54,7 +54,7 @@ def hertz_pressure(x, a, p0):
     Raises
     ------
     InputError
-        ``x`` is not finite.
+        An input is not a number or not finite, or ``a < 0``, ``p0 < 0``.
 
     Examples
     --------
@@ -62,7 +62,8 @@ def hertz_pressure(x, a, p0):
     True
     """
     x = _validate.finite_array("x", x, "m")
-    a = np.asarray(a, dtype=float)
+    a = _validate.nonnegative_array("a", a, "m")
+    p0 = _validate.nonnegative_array("p0", p0, "Pa")
     X = x / np.where(a > 0.0, a, 1.0)
     return np.where(a > 0.0, p0 * np.sqrt(np.clip(1.0 - X * X, 0.0, None)), 0.0 * X)
 
@@ -97,7 +98,7 @@ def surface_stress(x, a, p0, mu=0.0):
     Raises
     ------
     InputError
-        ``x`` is not finite.
+        An input is not a number or not finite, or ``a < 0``, ``p0 < 0``.
 
     Examples
     --------
@@ -106,8 +107,9 @@ def surface_stress(x, a, p0, mu=0.0):
     [0.2, -1.0, -0.05359]
     """
     x = _validate.finite_array("x", x, "m")
-    a = np.asarray(a, dtype=float)
-    p0 = np.asarray(p0, dtype=float)
+    a = _validate.nonnegative_array("a", a, "m")
+    p0 = _validate.nonnegative_array("p0", p0, "Pa")
+    mu = _validate.finite_array("mu", mu, "")
     X = x / np.where(a > 0.0, a, 1.0)            # a = 0 <=> p0 = 0: every term below is 0 * finite
     u = 1.0 - X * X
     root = np.sqrt(np.abs(u))

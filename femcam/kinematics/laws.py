@@ -98,7 +98,9 @@ def bernstein(n: int, i: int, u) -> np.ndarray:
     >>> round(float(sum(bernstein(5, i, 0.3) for i in range(6))), 12)  # partition of unity
     1.0
     """
-    u = np.asarray(u, dtype=float)
+    n = _validate.integer("n", n, 0)
+    i = _validate.integer("i", i, 0)
+    u = _validate.finite_array("u", u, "")
     return comb(n, i) * u**i * (1.0 - u) ** (n - i)
 
 

@@ -84,6 +84,7 @@ class Segment:
     def __post_init__(self):
         _validate.choice("kind", self.kind, _KINDS)
         object.__setattr__(self, "beta", _validate.positive("beta", self.beta, "rad"))
+        _validate.nonnegative("h", self.h, "m")  # a dwell ignores h, but not a bad one
         if self.kind == "dwell":
             object.__setattr__(self, "h", 0.0)
             object.__setattr__(self, "law", None)

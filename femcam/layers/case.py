@@ -62,7 +62,7 @@ def shear_strength_from_hardness(H):
     >>> round(float(shear_strength_from_hardness(600 * 9.80665e6)) / 1e6, 1)
     1132.4
     """
-    return np.asarray(H, dtype=float) / (3.0 * math.sqrt(3.0))
+    return _validate.positive_array("H", H, "Pa") / (3.0 * math.sqrt(3.0))
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -228,6 +228,7 @@ def case_margin(case: Case, z, tau) -> CaseMargin:
     """
     z = _validate.finite_array("z", z, "m")
     tau = _validate.finite_array("tau", tau, "Pa")
+    _validate.instance("case", case, Case)
     if z.shape != tau.shape or z.size == 0:
         raise _validate.fail("tau", tau.shape, "", f"must have the shape of z {z.shape} (non-empty)")
     u = np.abs(tau) / case.shear_strength(z)

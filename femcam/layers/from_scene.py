@@ -4,6 +4,7 @@ per-angle layer checks of a scene (sweep-facing: one row per cam angle)."""
 from __future__ import annotations
 
 import math
+import threading
 
 import numpy as np
 
@@ -62,26 +63,88 @@ def scene_layers(scene) -> dict:
     return out
 
 
-def _build(scene, lay, F, rho, a_over_h):
-    hc = LineContact(F=F, length=scene.length, R1=rho, R2=scene.follower.Rr, cam=scene.cam,
-                     roller=scene.roller, plane=scene.plane)
+#: model grading bins (:func:`model_grading`): log of the Hertz half-width in steps of ln 1.25
+#: and the cam curvature ``Rr / rho`` in steps of 0.25, both well inside the range a model covers
+#: (``SolverOptions.a_range = (0.6, 1.6)``, ``kappa_tol = 0.5``)
+A_BIN = math.log(1.25)
+K_BIN = 0.25
+_MODELS: dict = {}
+#: models kept per process, least recently used dropped first: a coated model at a/h = 20 holds
+#: ~190 MB (mesh, factorisation, stress operators); a call solves its angles bin by bin, so it
+#: builds each bin's model once, and a rebuilt model is the same model (the rows do not change)
+_MODELS_MAX = 2
+_LOCK = threading.Lock()
+
+
+def model_grading(a: float, rho: float, Rr: float) -> tuple[float, float]:
+    """``(rho_ref, a_ref)`` of the layer model that answers a load case of Hertz half-width ``a``
+    at cam radius of curvature ``rho``: the centre of the case's bin (:data:`A_BIN` in ``log a``,
+    :data:`K_BIN` in ``Rr / rho``). It depends on the load case alone, so a cam angle's layer
+    rows never depend on which other angles are solved with it (sweep chunks, resumes).
+
+    Parameters
+    ----------
+    a : float
+        Hertz half-width of the load case [m], > 0.
+    rho : float
+        Cam radius of curvature [m] (signed; ``inf`` flat).
+    Rr : float
+        Roller radius [m].
+
+    Returns
+    -------
+    rho_ref, a_ref : float
+        Grading of the model [m] (``rho_ref`` is never infinite: the flat bin's centre is
+        ``8 Rr``).
+
+    >>> rho_ref, a_ref = model_grading(1e-4, math.inf, 0.01)
+    >>> round(rho_ref, 6), round(a_ref / 1e-4, 4)
+    (0.08, 0.9511)
+    """
+    i = math.floor(math.log(a) / A_BIN)
+    k = 0.0 if math.isinf(rho) else Rr / rho
+    j = math.floor(k / K_BIN)
+    return Rr / ((j + 0.5) * K_BIN), math.exp((i + 0.5) * A_BIN)
+
+
+def _build(scene, lay, rho_ref, a_ref, a_over_h):
+    """The layer model graded for ``(rho_ref, a_ref)`` (the last :data:`_MODELS_MAX` kept per process)."""
+    key = (repr(scene), rho_ref, a_ref, a_over_h)
+    with _LOCK:
+        if key in _MODELS:
+            _MODELS[key] = _MODELS.pop(key)   # most recently used last
+            return _MODELS[key]
     mesh = MeshOptions(a_over_h=a_over_h)
     solver = SolverOptions()
     if lay["coating"] is None:
-        return ContactModel.build(Rr=scene.follower.Rr, rho_ref=rho, cam=scene.cam, roller=scene.roller,
-                                  length=scene.length, a_ref=float(hc.a), mesh=mesh, solver=solver,
-                                  plane=scene.plane)
-    body, coat = lay["coating"]
-    return build_coated_model(Rr=scene.follower.Rr, rho_ref=rho, cam=scene.cam, roller=scene.roller,
-                              length=scene.length, a_ref=float(hc.a), coating=coat, body=body,
-                              mesh=mesh, solver=solver, plane=scene.plane)
+        model = ContactModel.build(Rr=scene.follower.Rr, rho_ref=rho_ref, cam=scene.cam, roller=scene.roller,
+                                   length=scene.length, a_ref=a_ref, mesh=mesh, solver=solver,
+                                   plane=scene.plane)
+    else:
+        body, coat = lay["coating"]
+        model = build_coated_model(Rr=scene.follower.Rr, rho_ref=rho_ref, cam=scene.cam, roller=scene.roller,
+                                   length=scene.length, a_ref=a_ref, coating=coat, body=body,
+                                   mesh=mesh, solver=solver, plane=scene.plane)
+    with _LOCK:
+        while len(_MODELS) >= _MODELS_MAX:
+            _MODELS.pop(next(iter(_MODELS)))
+        _MODELS[key] = model
+    return model
+
+
+def _hertz_a(scene, F, rho) -> float:
+    """Hertz half-width [m] of the scene's contact at ``(F, rho)``."""
+    return float(LineContact(F=F, length=scene.length, R1=rho, R2=scene.follower.Rr, cam=scene.cam,
+                             roller=scene.roller, plane=scene.plane).a)
 
 
 def scene_layer_rows(scene, theta, *, a_over_h: float = 10.0) -> dict:
     """Layer checks of ``scene`` at cam angles ``theta`` (rad): ``theta_deg``, ``F_N``,
     ``rho_mm``, ``models`` (models built) and the :func:`~femcam.layers.layer_rows` columns.
-    A model is rebuilt (rho_ref, a_ref of the angle) whenever the current one does not cover
-    the angle (``ContactModel.covers``); lift-off angles are NaN rows. Roller followers only.
+    Each angle is solved with the model of its load case's bin (:func:`model_grading`; the last
+    two models kept per process), or one of its own where that model does not cover it, so an angle's row does
+    not depend on the other angles of the call; lift-off angles are NaN rows. Roller followers
+    only.
 
     Parameters
     ----------
@@ -109,15 +172,23 @@ def scene_layer_rows(scene, theta, *, a_over_h: float = 10.0) -> dict:
     if lay["coating"] is None and lay["case"] is None:
         raise InputError(f"scene {scene.name!r} has no [materials.<body>.coating] or .case table")
     theta = _validate.finite_array("theta", theta, "rad").ravel()
+    a_over_h = _validate.positive("a_over_h", a_over_h, "")
     st = scene.analyse(theta)
     sliding = -1 if scene.sliding == "-x" else 1
-    rows, model, n_models = None, None, 0
+    cases = []   # (grading, j, F, rho, a) of the angles in contact, solved bin by bin
     for j in range(theta.size):
         F, rho = float(st.Fc[j]), float(st.rho[j])
-        if st.liftoff[j] or F <= 0:
-            continue
-        if model is None or not model.covers(F, rho):
-            model, n_models = _build(scene, lay, F, rho, a_over_h), n_models + 1
+        if not (st.liftoff[j] or F <= 0):
+            a = _hertz_a(scene, F, rho)
+            cases.append((model_grading(a, rho, scene.follower.Rr), j, F, rho, a))
+    rows, used = None, set()
+    for grading, j, F, rho, a in sorted(cases, key=lambda c: (c[0], c[1])):
+        key = grading
+        model = _build(scene, lay, *key, a_over_h)
+        if not model.covers(F, rho):   # the bin's model does not cover it: one of its own
+            key = (rho, a)
+            model = _build(scene, lay, *key, a_over_h)
+        used.add(key)
         r = layer_rows(model, [F], [rho], [scene.mu], sliding=sliding,
                        coating=lay["coating"][1] if lay["coating"] else None,
                        coat_body=lay["coating"][0] if lay["coating"] else "roller",
@@ -129,5 +200,5 @@ def scene_layer_rows(scene, theta, *, a_over_h: float = 10.0) -> dict:
             rows[k][j] = v[0]
     rows = rows or {}
     rows.update(theta_deg=np.degrees(theta), F_N=np.asarray(st.Fc, float),
-                rho_mm=np.asarray(st.rho, float) * 1e3, models=n_models)
+                rho_mm=np.asarray(st.rho, float) * 1e3, models=len(used))
     return rows

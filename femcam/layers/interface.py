@@ -134,7 +134,8 @@ def layer_rows(model, F, rho, mu, *, coating: Coating | None = None, coat_body: 
                case: Case | None = None, case_body: str = "cam", sliding: int = 1) -> dict:
     """Per-angle layer checks (one FE solve per angle on the prepared ``model``).
 
-    Requested checks need their strengths (InputError otherwise).
+    The coating's stresses are computed whether or not its strengths are given; only the
+    utilisations need them (``interface_shear_strength``, ``hardness``) and are NaN without.
 
     Parameters
     ----------
@@ -147,7 +148,7 @@ def layer_rows(model, F, rho, mu, *, coating: Coating | None = None, coat_body: 
     mu : array_like of float
         Friction coefficient per angle [-]; broadcast against ``F``.
     coating : Coating, optional
-        The coating to check (needs ``interface_shear_strength`` and ``hardness``).
+        The coating to check (its strengths, where given, for the utilisations).
     coat_body : {"cam", "roller"}, optional
         The coated body.
     case : Case, optional
@@ -169,15 +170,17 @@ def layer_rows(model, F, rho, mu, *, coating: Coating | None = None, coat_body: 
     Raises
     ------
     InputError
-        Neither ``coating`` nor ``case``, or a missing strength.
+        Neither ``coating`` nor ``case``.
     """
-    F, rho, mu = np.broadcast_arrays(np.atleast_1d(_validate.finite_array("F", F, "N")),
-                                     _validate.finite_array("rho", rho, "m"),
-                                     _validate.finite_array("mu", mu, ""))
+    F, rho, mu = np.broadcast_arrays(np.atleast_1d(_validate.nonnegative_array("F", F, "N")),
+                                     _validate.radius_array("rho", rho, "m"),
+                                     _validate.nonnegative_array("mu", mu, ""))
     if coating is None and case is None:
         raise InputError("layer_rows: give a coating and/or a case (nothing to check)")
-    tau_i = coating.require("interface_shear_strength") if coating is not None else None
-    Hc = coating.require("hardness") if coating is not None else None
+    # the stresses need no strength; only the utilisations do (NaN without it)
+    tau_i = coating.interface_shear_strength if coating is not None else None
+    Hc = coating.hardness if coating is not None else None
+    _validate.record("model", model, "a ContactModel (femcam.fe or build_coated_model)", "solve", "bodies")
     n = F.size
     cols = ("interface_tau_max_MPa", "interface_sn_min_MPa", "interface_sn_max_MPa",
             "interface_utilisation", "coating_sx_max_MPa", "coating_sx_utilisation",
@@ -192,9 +195,9 @@ def layer_rows(model, F, rho, mu, *, coating: Coating | None = None, coat_body: 
             out["interface_tau_max_MPa"][j] = it.tau_abs_max / 1e6
             out["interface_sn_min_MPa"][j] = it.sigma_n_min / 1e6
             out["interface_sn_max_MPa"][j] = it.sigma_n_max / 1e6
-            out["interface_utilisation"][j] = it.tau_abs_max / tau_i
+            out["interface_utilisation"][j] = it.tau_abs_max / tau_i if tau_i else np.nan
             out["coating_sx_max_MPa"][j] = sx / 1e6
-            out["coating_sx_utilisation"][j] = max(sx, 0.0) / (Hc / 3.0)
+            out["coating_sx_utilisation"][j] = max(sx, 0.0) / (Hc / 3.0) if Hc else np.nan
         if case is not None:
             u, zm, mg = _case_row(r, case, case_body)
             out["case_utilisation_max"][j] = u

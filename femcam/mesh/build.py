@@ -11,12 +11,16 @@ from __future__ import annotations
 import math
 
 from .. import _validate
+from ..errors import InputError
 from ..hertz.conformity import roller_does_not_fit
 from .coating import mesh_coated_body
 from .geometry import BodyLayout, body_layout, body_size, outline, size_field
 from .nodes import extract, finish_body, mirror
 from .options import BodyMesh, ContactMesh, MeshOptions
 from .session import gmsh_session
+
+#: the scene keys a message names for the cam radius of curvature rho
+_RHO = "rho (cam radius of curvature, from [program] and [follower] base_radius_mm)"
 
 
 def mesh_plain_body(gmsh, lay: BodyLayout, opts: MeshOptions) -> BodyMesh:
@@ -116,16 +120,19 @@ def build_contact_mesh(*, Rr: float, rho: float, a_ref: float,
     opts = options or MeshOptions()
     Rr = _validate.positive("Rr", Rr, "m")
     a_ref = _validate.positive("a_ref", a_ref, "m")
-    rho = float(rho)
-    if math.isnan(rho) or rho == 0.0:
-        raise _validate.fail("rho", rho, "m", "must be nonzero (use inf for a flat cam)")
+    rho = _validate.radius("rho", rho, "m")
     if roller_does_not_fit(rho, Rr):
-        raise _validate.fail("rho", rho, "m", f"a concave cam needs |rho| > Rr = {Rr:g} m (else the roller "
-                             "does not fit)")
+        raise _validate.fail(_RHO, rho, "m", f"a concave cam needs |rho| > Rr = {Rr:g} m ([follower] "
+                             "roller_radius_mm; else the roller does not fit)")
     if opts.fine_half_width * a_ref > 0.5 * Rr:
-        raise _validate.fail("a_ref", a_ref, "m", f"must be <= Rr/(2 fine_half_width) = "
-                             f"{Rr / (2 * opts.fine_half_width):g} m: the contact zone would not be small "
-                             "against the roller (far outside Hertz theory and this mesh layout)")
+        # named by the scene keys it comes from: a user of `femcam sweep` wrote those, not a_ref
+        raise InputError(f"contact half-width a_ref = {a_ref * 1e3:.4g} mm (Hertz, from the contact force "
+                         "and the scene keys [materials.*] E_GPa, nu, [follower] roller_radius_mm, "
+                         f"face_width_mm): must be <= roller radius / {2 * opts.fine_half_width:g} = "
+                         f"{Rr / (2 * opts.fine_half_width) * 1e3:.4g} mm: the contact zone would not be "
+                         "small against the roller (far outside Hertz theory and this mesh layout); give "
+                         "stiffer materials, a wider face or a lighter load ([dynamics] preload_N, "
+                         "spring_N_per_m)")
     cap = None if opts.domain_over_a is None else opts.domain_over_a * a_ref
     L_roller = body_size(Rr, cap, math.inf)
     L_cam = body_size(rho, cap, Rr)

@@ -36,13 +36,13 @@ def _layers(lay: BodyLayout, opts: MeshOptions) -> int:
     n = max(int(opts.coat_layers), math.ceil(t / h - 1e-9))
     if h / (t / n) > COAT_MAX_ASPECT:
         need = lay.a_ref / (COAT_MAX_ASPECT * t / n)
-        raise _validate.fail("coat_thickness", t * 1e6, "um",
+        raise _validate.fail("coat_thickness ([materials.*.coating] thickness_um)", t * 1e6, "um",
                              f"is too thin for the mesh: {n} layers of {t / n * 1e6:.3g} um under a "
                              f"fine-zone spacing h = {h * 1e6:.3g} um give an element aspect ratio "
                              f"{h / (t / n):.0f} > {COAT_MAX_ASPECT:g}; use a_over_h >= {need:.0f} "
-                             "or more coat_layers")
+                             "([fe] a_over_h or --mesh-size) or more coat_layers")
     if t > 0.25 * lay.L:
-        raise _validate.fail("coat_thickness", t * 1e6, "um",
+        raise _validate.fail("coat_thickness ([materials.*.coating] thickness_um)", t * 1e6, "um",
                              f"must be <= L/4 = {0.25 * lay.L * 1e6:.4g} um (body {lay.name} size L)")
     return n
 

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import _validate
 from ..errors import InputError
 from .options import MeshOptions
 
@@ -36,7 +37,8 @@ def surface_height(x, R):
     >>> round(float(surface_height(0.006, 0.01)) * 1e3, 6)
     2.0
     """
-    x = np.asarray(x, dtype=float)
+    x = _validate.finite_array("x", x, "m")
+    R = _validate.radius("R", R, "m")
     k = 0.0 if math.isinf(R) else 1.0 / R
     return k * x**2 / (1.0 + np.sqrt(np.maximum(1.0 - (k * x) ** 2, 0.0)))
 
@@ -124,14 +126,21 @@ def body_layout(name: str, R: float, L: float, a_ref: float, opts: MeshOptions) 
     InputError
         The body is too small for the fine zone.
     """
+    _validate.radius("R", R, "m")
+    L = _validate.positive("L", L, "m")
+    _validate.instance("opts", opts, MeshOptions)
+    a_ref = _validate.positive("a_ref", a_ref, "m")
     h = a_ref / opts.a_over_h
     xf = opts.fine_half_width * a_ref
     n_fine = int(round(2 * xf / h))
     xf = 0.5 * n_fine * h  # exact multiple of h
     W = 0.9 * L
     if W <= xf * 1.5:
-        raise InputError(f"body size L = {L:g} m is too small for the fine zone |x| <= {xf:g} m "
-                         f"({name}); increase domain_over_a or reduce fine_half_width")
+        raise InputError(f"body size L = {L * 1e3:.4g} mm ({name}; its radius of curvature here, set by "
+                         "[follower] base_radius_mm, roller_radius_mm and [program]) is too small for the "
+                         f"fine zone |x| <= {xf * 1e3:.4g} mm around a contact half-width of "
+                         f"{a_ref * 1e3:.4g} mm (from the force, [materials.*] E_GPa and face_width_mm); "
+                         "in code: increase MeshOptions.domain_over_a or reduce fine_half_width")
     return BodyLayout(name=name, R=R, L=L, a_ref=a_ref, h=h, n_fine=n_fine, xf=xf, W=W,
                       lc=L * opts.max_size_fraction)
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import _validate
 from ..errors import FemcamError
 from .geometry import BodyLayout, surface_height
 from .options import BodyMesh, PhysicalGroup
@@ -152,7 +153,10 @@ def ccw(pts: np.ndarray, tri: np.ndarray) -> np.ndarray:
     ndarray of int, shape (T, 3)
         A copy, with the clockwise triangles' last two nodes swapped.
     """
-    tri = tri.copy()
+    pts = _validate.finite_array("pts", pts, "m")
+    if pts.ndim != 2 or pts.shape[1] != 2:
+        raise _validate.fail("pts", f"shape {pts.shape}", "m", "must have the shape (N, 2)")
+    tri = np.array(tri, dtype=int)
     d = pts[tri]
     det = (d[:, 1, 0] - d[:, 0, 0]) * (d[:, 2, 1] - d[:, 0, 1]) - \
           (d[:, 2, 0] - d[:, 0, 0]) * (d[:, 1, 1] - d[:, 0, 1])

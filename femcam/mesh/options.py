@@ -68,6 +68,8 @@ class MeshOptions:
             _validate.in_range("domain_over_a", self.domain_over_a, 5.0 * self.fine_half_width, 1e7,
                                "(x a_ref)")
         _validate.in_range("max_size_fraction", self.max_size_fraction, 0.01, 0.5, "")
+        _validate.nonnegative("coat_thickness", self.coat_thickness, "m")
+        _validate.integer("coat_layers", self.coat_layers, 2, "layers")
         if self.coat_body is not None:
             _validate.choice("coat_body", self.coat_body, ("cam", "roller"))
             _validate.positive("coat_thickness", self.coat_thickness, "m")

@@ -161,6 +161,7 @@ def min_base_radius(kind: str, program, *, phi_max: float = math.radians(30.0), 
         No base radius below 1 km avoids undercutting.
     """
     phi_lim, Rr, e, rho_min, n = _checked(kind, phi_max, Rr, e, rho_min, n_theta)
+    _validate.record("program", program, "a femcam.kinematics.CamProgram", "derivatives")
     theta = np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
     dtheta = 2.0 * math.pi / n
     s, s1, s2 = _derivs(program, theta)

@@ -329,8 +329,18 @@ def pressure_angle(s, s1, Rp, e=0.0):
     >>> round(math.degrees(float(pressure_angle(0.0, 0.02, 0.02))), 6)
     45.0
     """
-    d = math.sqrt(Rp * Rp - e * e)
-    return np.arctan2(np.asarray(s1, float) - e, d + np.asarray(s, float))
+    s, s1 = _validate.finite_array("s", s, "m"), _validate.finite_array("s1", s1, "m/rad")
+    d = _prime_offset(Rp, e)
+    return np.arctan2(s1 - e, d + s)
+
+
+def _prime_offset(Rp, e) -> float:
+    """``d = sqrt(Rp^2 - e^2)`` of a checked prime radius ``Rp > 0`` and offset ``|e| < Rp``."""
+    Rp = _validate.positive("Rp", Rp, "m")
+    e = _validate.number("e", e, "m")
+    if abs(e) >= Rp:
+        raise _validate.fail("e", e, "m", f"must satisfy |e| < Rp = {Rp:g} m")
+    return math.sqrt(Rp * Rp - e * e)
 
 
 def pitch_curvature(s, s1, s2, Rp, e=0.0):
@@ -366,10 +376,12 @@ def pitch_curvature(s, s1, s2, Rp, e=0.0):
     >>> round(float(pitch_curvature(0.0, 0.0, 0.0, 0.02)), 6)   # base circle: 1/Rp
     50.0
     """
-    d = math.sqrt(Rp * Rp - e * e)
-    r = d + np.asarray(s, float)
-    q = np.asarray(s1, float) - e
-    num = r * r + q * (2.0 * np.asarray(s1, float) - e) - np.asarray(s2, float) * r
+    s, s1 = _validate.finite_array("s", s, "m"), _validate.finite_array("s1", s1, "m/rad")
+    s2 = _validate.finite_array("s2", s2, "m/rad^2")
+    d = _prime_offset(Rp, e)
+    r = d + s
+    q = s1 - e
+    num = r * r + q * (2.0 * s1 - e) - s2 * r
     return num / (r * r + q * q) ** 1.5
 
 
@@ -399,7 +411,8 @@ def flat_face_radius(s, s2, Rb):
     >>> float(flat_face_radius(0.001, -0.002, 0.01))
     0.009
     """
-    return Rb + np.asarray(s, float) + np.asarray(s2, float)
+    return (_validate.positive_array("Rb", Rb, "m") + _validate.finite_array("s", s, "m")
+            + _validate.finite_array("s2", s2, "m/rad^2"))
 
 
 def _rot(theta, x, y):
@@ -424,8 +437,10 @@ def bool_intervals(theta, mask):
         ``(theta_start, theta_end)`` [rad] of each run: the first and last flagged sample
         (inclusive); empty if no flag is set.
     """
-    theta = np.ravel(theta)
+    theta = np.ravel(_validate.finite_array("theta", theta, "rad"))
     m = np.ravel(np.asarray(mask, bool))
+    if m.size != theta.size:
+        raise _validate.fail("mask", f"{m.size} flags", "", f"must have one flag per angle ({theta.size})")
     if not m.any():
         return []
     edges = np.diff(np.concatenate(([0], m.astype(np.int8), [0])))
@@ -435,8 +450,14 @@ def bool_intervals(theta, mask):
 
 
 def _fmt_intervals_deg(intervals, most: int = 20) -> str:
-    """The first ``most`` intervals in degrees, then ``... and N more`` (a message stays short)."""
-    text = ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}] deg" for a, b in intervals[:most])
+    """The first ``most`` intervals in degrees, then ``... and N more`` (a message stays short);
+    two decimals, four for an interval narrower than 0.05 deg (a short segment's undercut would
+    print as ``[0.01, 0.01]``)."""
+    def one(a, b):
+        d = 2 if math.degrees(b - a) >= 0.05 else 4
+        return f"[{math.degrees(a):.{d}f}, {math.degrees(b):.{d}f}] deg"
+
+    text = ", ".join(one(a, b) for a, b in intervals[:most])
     return text + (f", ... and {len(intervals) - most} more" if len(intervals) > most else "")
 
 

@@ -48,7 +48,11 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
     [wear]?            K | k_mm3_per_N_m, roller_model?, srr?, J_kg_m2?, T_drag_N_m?, tip_radius_mm?,
                        cycles? (femcam.wear.options)
 
-Modules: ``schema`` (the key tables and units, the study-setting ranges), ``checker`` (the
+Every numeric key has a stated range with its source (``ranges``; the table of all keys is
+docs/scene.md), and keys that must fit together are checked together (``cross``).
+
+Modules: ``schema`` (the key tables and units, the study-setting ranges), ``ranges``, ``cross``,
+``checker`` (the
 problem collector, did-you-mean), ``load`` (TOML reading, :func:`load_scene`), one module per
 table group (``program``, ``follower`` with ``[cam]``, ``dynamics``, ``materials``, ``contact``
 with ``[lubricant]``/``[surface]``/coatings and cases, ``bodies``, ``study`` for

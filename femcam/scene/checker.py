@@ -13,6 +13,7 @@ import difflib
 import math
 
 from ..errors import SceneError
+from .ranges import group_of, range_problem
 from .schema import _CHOICES, STUDY_RANGES, STUDY_WHOLE, study_problem
 
 #: problems one SceneError lists (then "... and N more")
@@ -79,7 +80,7 @@ class _Checker:
                 self.add(dk, f"= {_fmt(v)}: unknown key{self._hint(k, spec)}")
                 continue
             unit, factor, check, _ = spec[k]
-            val = self.value(dk, k, v, unit, factor, check)
+            val = self.value(dk, k, v, unit, factor, check, group=group_of(key))
             if val is not None:
                 out[k] = val
         for k, (unit, _, _, required) in spec.items():
@@ -99,8 +100,8 @@ class _Checker:
         why = " (units go in the key name)" if pref else ""
         return f"; did you mean {near[0]!r}{' in ' + unit if unit else ''}?{why}"
 
-    def value(self, dk, k, v, unit, factor, check):
-        """One value checked and converted to SI.
+    def value(self, dk, k, v, unit, factor, check, *, group: str = ""):
+        """One value checked against its basic check and its stated range, converted to SI.
 
         Parameters
         ----------
@@ -114,6 +115,8 @@ class _Checker:
             SI factor of a number.
         check : str
             The check of :mod:`femcam.scene.schema`.
+        group : str, optional
+            Table group of :data:`femcam.scene.ranges.RANGES` (the key's stated range).
 
         Returns
         -------
@@ -123,12 +126,15 @@ class _Checker:
         if check in ("str", "list", "seglist", "bool"):
             return self._plain(dk, k, v, check)
         x = self._number(dk, v, unit, factor, check)
-        if x is None or k not in STUDY_RANGES and k not in STUDY_WHOLE:
+        if x is None:
             return x
-        problem = study_problem(k, x)
+        study = k in STUDY_RANGES or k in STUDY_WHOLE
+        problem = (study_problem(k, x) if study else None) or range_problem(group, k, float(v), unit, check)
         if problem:
-            self.add(dk, f"= {_fmt(v)} {unit}: {problem}")
+            self.add(dk, f"= {_fmt(v)}{' ' + unit if unit else ''}: {problem}")
             return None
+        if not study:
+            return x
         return int(x) if k in STUDY_WHOLE else x
 
     def _plain(self, dk, k, v, check):

@@ -12,6 +12,7 @@ from ..errors import SceneError
 from .bodies import _check_bodies
 from .checker import _Checker
 from .contact import _contact, _layers, _tribology
+from .cross import cross_key_problems
 from .dynamics import _dynamics
 from .follower import _finite_length, _follower
 from .materials import _materials
@@ -61,6 +62,7 @@ def load_scene(path) -> Scene:
     co = _contact(ck, raw)
     study = _study(ck, raw)
     _scene_wear(ck, raw, mats)
+    cross_key_problems(ck, raw)
     ck.raise_if_any()
 
     return Scene(name=top["name"], description=top.get("description", ""), source=top.get("source", ""),

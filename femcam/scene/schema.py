@@ -260,3 +260,12 @@ _CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", 
             "method": METHODS, "roller_model": ("srr", "inertia"),
             "roller_support": ("solid", "pin", "needles"), "shaft_fit": ("contact", "bonded"),
             "hardness_law": ("exponential", "linear")}
+
+#: every key table by its table group (``*``: any body; the segment index dropped): the one
+#: list the range table (:data:`femcam.scene.ranges.RANGES`), the scene reference
+#: (``docs/scene.md``) and tests/test_scene_faults.py iterate, so a key added to a table above
+#: is covered everywhere
+TABLES = {"": _TOP, "operating": _OPERATING, "program": _PROGRAM, "program.segment": _SEGMENT,
+          "follower": _FOLLOWER, "cam": _CAM, "dynamics": _DYNAMICS, "materials.*": _MATERIAL,
+          "materials.*.coating": _COATING, "materials.*.case": _CASE, "contact": _CONTACT,
+          "lubricant": _LUBRICANT, "surface": _SURFACE, "fe": _FE, "sweep": _SWEEP, "wear": _WEAR}

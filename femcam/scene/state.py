@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 import numpy as np
+from scipy.optimize import minimize_scalar
 
 from ..dynamics import TrainModel, periodic_response
 from ..errors import ConvergenceError, InputError, UndercutError
@@ -23,11 +24,20 @@ from ..profile import CamProfile, bool_intervals, cam_profile
 
 #: angles of the dense undercut check of Scene.analyse over one revolution (0.05 deg apart)
 UNDERCUT_CHECK_N = 7200
+#: angles of the check inside each segment, ends included, however short the segment: a rise
+#: over 0.01 deg falls between two of the uniform angles and is seen only at its own points
+SEGMENT_CHECK_N = 257
 
 
-def _dense_theta() -> np.ndarray:
-    """The ``UNDERCUT_CHECK_N`` angles (rad) of the dense undercut check."""
-    return np.linspace(0.0, 2.0 * math.pi, UNDERCUT_CHECK_N, endpoint=False)
+def _dense_theta(program: CamProgram | None = None) -> np.ndarray:
+    """The angles (rad, sorted, in [0, 2 pi)) of the whole-cam check: ``UNDERCUT_CHECK_N``
+    uniform angles, plus ``SEGMENT_CHECK_N`` in each segment of ``program``."""
+    th = np.linspace(0.0, 2.0 * math.pi, UNDERCUT_CHECK_N, endpoint=False)
+    if program is None:
+        return th
+    u = np.linspace(0.0, 1.0, SEGMENT_CHECK_N)
+    own = [t0 + sg.beta * u for t0, sg in zip(program.theta_starts, program.segments, strict=True)]
+    return np.unique(np.mod(np.concatenate([th, *own]), 2.0 * math.pi))
 
 
 @dataclass(frozen=True)
@@ -191,13 +201,35 @@ class Scene:
         the :class:`~femcam.errors.UndercutError` text of :func:`~femcam.profile.cam_profile`,
         or None). Computed once per scene (the scene is immutable), not per :meth:`analyse`
         call (the sweep analyses chunk by chunk)."""
-        dense = _dense_theta()
+        dense = _dense_theta(self.program)
         dd = self.program.derivatives(dense)
         try:
             return cam_profile(self.follower, dense, dd.s, dd.s1, dd.s2).undercut, None
         except UndercutError as exc:
             flags = cam_profile(self.follower, dense, dd.s, dd.s1, dd.s2, allow_undercut=True).undercut
             return flags, str(exc)
+
+    @cached_property
+    def max_pressure_angle(self) -> tuple:
+        """``(phi, theta)``: the largest ``|phi|`` over the whole cam (rad) and its cam angle
+        (rad), from the dense check (every segment at its own points) refined to the maximum
+        between the neighbouring check angles; computed once per scene."""
+        dense = _dense_theta(self.program)
+
+        def phi(th):
+            dd = self.program.derivatives(th)
+            return np.abs(cam_profile(self.follower, dd.theta, dd.s, dd.s1, dd.s2,
+                                      allow_undercut=True).phi)
+
+        f = phi(dense)
+        i = int(np.argmax(f))
+        lo, hi = dense[max(i - 1, 0)], dense[min(i + 1, dense.size - 1)]
+        if hi > lo:  # |phi| is smooth inside a segment: the bounded maximum between neighbours
+            res = minimize_scalar(lambda t: -float(phi(np.array([t]))[0]), bounds=(lo, hi),
+                                  method="bounded", options={"xatol": 1e-12})
+            if -res.fun > f[i]:
+                return float(-res.fun), float(res.x)
+        return float(f[i]), float(dense[i])
 
     @cached_property
     def dynamic_response(self):
@@ -211,7 +243,8 @@ class Scene:
         """Undercut intervals of the whole cam, found on a dense grid.
 
         The profile is checked on a dense grid of ``UNDERCUT_CHECK_N`` angles over one
-        revolution (0.05 deg apart; computed once per scene) merged with ``theta``, so a narrow
+        revolution (0.05 deg apart) and ``SEGMENT_CHECK_N`` inside each segment (so a segment
+        shorter than the grid step is seen; computed once per scene) merged with ``theta``, so a narrow
         undercut band between coarse analysis angles is still found. Vectorised.
 
         Parameters
@@ -231,7 +264,7 @@ class Scene:
         InputError
             ``undercut`` without one flag per angle of ``theta``.
         """
-        dense, flags = _dense_theta(), self._dense_undercut[0]
+        dense, flags = _dense_theta(self.program), self._dense_undercut[0]
         if theta is None:
             return bool_intervals(dense, flags)
         extra = np.mod(np.ravel(np.asarray(theta, float)), 2.0 * math.pi)
@@ -284,8 +317,8 @@ class Scene:
         if intervals and not allow_undercut:
             # cam_profile passed on theta, so the dense grid found it (and holds the message)
             raise UndercutError(f"{self._dense_undercut[1]} (found by the dense check on "
-                                f"{UNDERCUT_CHECK_N} angles over one revolution; the analysed "
-                                "angles miss it)")
+                                f"{UNDERCUT_CHECK_N} angles over one revolution and "
+                                f"{SEGMENT_CHECK_N} in each segment; the analysed angles miss it)")
         if self.train is None:
             r = contact_force(self.dynamics, d.theta, d.s, v, a, p.phi)
         else:  # the dynamic contact force of the periodic train response, at theta

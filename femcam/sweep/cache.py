@@ -9,6 +9,7 @@ import threading
 import time
 from collections import OrderedDict
 
+from .. import _validate
 from ..errors import FemcamError
 from ..fe import ContactModel, ContactResult, SolverOptions
 from ..mesh import MeshOptions
@@ -38,7 +39,7 @@ class ModelCache:
     """
 
     def __init__(self, max_models: int = 64):
-        self.max_models = int(max_models)
+        self.max_models = _validate.integer("max_models", max_models, 1, "models")
         self._models: OrderedDict = OrderedDict()
         #: ``id(model) -> {(F, rho, mu, sliding): ContactResult}`` (lives as long as its model)
         self._results: dict[int, dict] = {}
@@ -167,7 +168,7 @@ class ModelCache:
             with self._lock:  # gmsh is not thread-safe; one load case: no stress operators
                 fresh = build_model(cp, rho, a, options, SolverOptions(stress_operators="per_solve"))
             p0 = fresh.solve(F=F, rho=rho, mu=cp.mu, sliding=sliding, check=False, Q=Q,
-                             rolling=rolling if Q is not None else 0).p0
+                             rolling=rolling if Q is not None else 0).p0_nodal
         except (FemcamError, ValueError, ArithmeticError):
             return math.nan
         with self._lock:

@@ -27,8 +27,10 @@ Finite length (the axial slices of :mod:`femcam.halfspace.strip`):
 
 * the 2D FE answers again at the most loaded slice with that slice's load per unit length
   (method fe): ``F = w_max * length``, columns ``fe_slice_F_N``, ``fe_slice_a_um``,
-  ``fe_slice_p0_MPa``, ``fe_slice_vm_max_MPa``, ``fe_slice_tau1_max_MPa``,
-  ``fe_slice_txz_absmax_MPa`` and the text column ``fe_load_basis = "w_max*length"``; the sweep's
+  ``fe_slice_p0_MPa`` (the peak of the solved pressure), ``fe_slice_vm_max_MPa``,
+  ``fe_slice_tau1_max_MPa``, ``fe_slice_surf_txz_absmax_MPa``, ``fe_slice_txz_range_max_MPa``
+  (the range of ``txz`` over one pass, fed to the assessment's subsurface fatigue) and the text
+  column ``fe_load_basis = "w_max*length"``; the sweep's
   own FE columns (``a_fe``, ``p0_fe``, ``vm_max``, ...) stay at the mean load ``Fc / length``,
   comparable with Hertz (``err_a``, ``err_p0``);
 * the wear column uses the axial peak: the Archard per-pass depth ``k w v_slip / V_cam`` depends
@@ -41,7 +43,9 @@ Finite length (the axial slices of :mod:`femcam.halfspace.strip`):
 
 A provider that the physics refuses for a documented reason (a :class:`~femcam.errors.FemcamError`)
 leaves its columns NaN and writes the reason in the text column ``extras_error``; it never stops
-the contact sweep. Models are built once per process (the ring model does not pickle; its rows
+the contact sweep, but the part the scene asked for is missing: :func:`femcam.sweep.worst.refusals` names it
+(``provenance["extras"]["refused"]``, ``SweepResult.refused``), ``report.md`` and the CLI say it
+and ``femcam sweep`` exits 1. Models are built once per process (the ring model does not pickle; its rows
 do): ``femcam.sweep.providers.ring_model`` and ``strip_model``, keyed by the scene's ``repr``.
 """
 
@@ -62,6 +66,7 @@ from ..halfspace.rows import has_finite_length
 from ..io import write_pvd
 from ..viz.extras import plot_extra_panels
 from ..wear.coating import coating_wear
+from .headline import omitted_physics
 from .providers import (
     ASSESS,
     ASSESS_PANELS,
@@ -87,7 +92,7 @@ from .providers import (
     layers_chunk,
     ring_chunk,
 )
-from .worst import worst_lines
+from .worst import refusals, worst_lines
 
 Column = tuple[str, str, float]
 #: text column of every sweep with providers: ``"<provider>: <reason>"`` where one was refused
@@ -114,6 +119,8 @@ class Provider:
         Plots against cam angle (:func:`femcam.viz.extras.plot_extra_panels`).
     title : str, optional
         What the plot shows (its title after the scene name; default: ``name``).
+    keys : str, optional
+        The scene keys that ask for the provider: what a refusal tells the user to change.
     """
 
     name: str
@@ -123,19 +130,28 @@ class Provider:
     compute: Callable
     panels: tuple = ()
     title: str = ""
+    keys: str = ""
 
 
 #: the table, in the order the providers run (halfspace before assess: the axial peak)
 PROVIDERS: tuple[Provider, ...] = (
     Provider("halfspace", has_finite_length, HALFSPACE, ("hs_flags", "fe_load_basis"),
              halfspace_chunk, HS_PANELS,
-             "finite-length contact along the roller:\naxial peak pressure and most loaded slice"),
+             "finite-length contact along the roller:\naxial peak pressure and most loaded slice",
+             keys="[follower] crown, crown_*, edge_radius_mm, misalignment_deg, roller_width_mm; "
+                  "[cam] face_width_mm"),
     Provider("assess", lambda s: "lubricant" in (getattr(s, "tribology", None) or {}), ASSESS,
-             ASSESS_TEXT, assess_chunk, ASSESS_PANELS),
-    Provider("bodies", has_support, RING, (), ring_chunk, RING_PANELS),
-    Provider("cam_disk", has_cam_bore, CAM_DISK, ("camdisk_flags",), cam_disk_chunk, CAM_DISK_PANELS),
-    Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), layers_chunk, LAYER_PANELS),
-    Provider("coating_wear", coated_cam, (), (), coating_wear_chunk),
+             ASSESS_TEXT, assess_chunk, ASSESS_PANELS,
+             keys="[lubricant], [surface] and the materials' strength keys"),
+    Provider("bodies", has_support, RING, (), ring_chunk, RING_PANELS,
+             keys="[follower] roller_support, roller_bore_mm, pin_radius_mm, pin_clearance_um, "
+                  "needle_count, needle_radius_mm"),
+    Provider("cam_disk", has_cam_bore, CAM_DISK, ("camdisk_flags",), cam_disk_chunk, CAM_DISK_PANELS,
+             keys="[cam] bore_mm, shaft_fit, shaft_clearance_um"),
+    Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), layers_chunk, LAYER_PANELS,
+             keys="[materials.<body>.coating] and [materials.<body>.case]"),
+    Provider("coating_wear", coated_cam, (), (), coating_wear_chunk,
+             keys="[materials.cam.coating] wear keys"),
 )
 
 
@@ -282,7 +298,9 @@ def extras_files(scene, table, out, vtk_mask) -> dict[str, str]:
 def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
     """Which providers ran and their summary over the swept angles (JSON-able).
 
-    ``providers``: names; ``columns``: the SI names of their columns; ``errors``: the refusals;
+    ``providers``: names; ``headline``: what the headline model omits (:func:`omitted_physics`,
+    one sentence each); ``columns``: the SI names of their columns; ``errors``: the refusals;
+    ``refused``: the same, one record per provider (:func:`femcam.sweep.worst.refusals`);
     ``assess``: the worst angle per criterion (:func:`femcam.assess.worst_angles`:
     ``{criterion: {"value", "theta_deg"}}``);
     ``halfspace``: largest axial peak (MPa) and the FE load basis; ``bodies``: largest bore hoop
@@ -310,6 +328,9 @@ def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
     """
     ps = providers_for(scene)
     out = {"providers": [p.name for p in ps]}
+    omitted = omitted_physics(scene)
+    if omitted:
+        out["headline"] = [sentence for _, sentence in omitted]
     if not ps:
         return out
     cols, text = extra_columns(scene)
@@ -317,6 +338,7 @@ def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
     errs = sorted({e for e in np.asarray(table.get(ERROR_COLUMN, [])).astype(str) if e})
     if errs:
         out["errors"] = errs
+        out["refused"] = refusals(table, {p.name: p.keys for p in PROVIDERS}, ERROR_COLUMN)
     ok = np.asarray(table["status"]).astype(str) == "ok"
     names = [p.name for p in ps]
     if "assess" in names:

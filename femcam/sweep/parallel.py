@@ -32,6 +32,7 @@ from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
+from .. import _validate
 from .._threads import limit_blas_threads
 from ..errors import InputError
 from ..io import atomic_write_bytes
@@ -99,7 +100,13 @@ def auto_workers(n_tasks: int, n_solves: int, t_solve: float, n_families: int, t
     reason : str
         One line saying why.
     """
-    cpus = _cpu_count() if cpus is None else int(cpus)
+    n_tasks = _validate.integer("n_tasks", n_tasks, 0, "chunks")
+    _validate.integer("n_solves", n_solves, 0, "solves")
+    _validate.nonnegative("t_solve", t_solve, "s")
+    _validate.integer("n_families", n_families, 0, "families")
+    _validate.nonnegative("t_build", t_build, "s")
+    _validate.nonnegative("t_other", t_other, "s")
+    cpus = _cpu_count() if cpus is None else _validate.integer("cpus", cpus, 1, "cores")
     if fork is None:
         fork = sys.platform.startswith("linux")
     serial = n_solves * t_solve + t_other
@@ -126,7 +133,7 @@ def run_tasks(fn: Callable, tasks: Iterable, *, workers: int = 1, scheduler=None
     tasks : iterable
         The tasks.
     workers : int
-        Local processes (<= 1: serial in this process).
+        Local processes, >= 1 (1: serial in this process).
     scheduler : str, optional
         Dask scheduler address.
     client : dask.distributed.Client or cluster, optional
@@ -136,12 +143,15 @@ def run_tasks(fn: Callable, tasks: Iterable, *, workers: int = 1, scheduler=None
     tuple[int, object]
         ``(index in tasks, fn(task))`` in completion order.
     """
+    if not callable(fn):
+        raise _validate.fail("fn", fn, "", "must be a module-level function of one task")
     tasks = list(tasks)
     if not tasks:
         return
     if client is not None or scheduler is not None:
         yield from _run_dask(fn, tasks, scheduler=scheduler, client=client)
-    elif workers is None or workers <= 1 or len(tasks) == 1:
+    elif _validate.optional(_validate.integer, "workers", workers, 1, "processes") in (None, 1) \
+            or len(tasks) == 1:
         for i, t in enumerate(tasks):
             yield i, fn(t)
     else:
@@ -267,6 +277,8 @@ class Progress:
 
     def __init__(self, total: int, label: str = "sweep", enabled: bool | None = None,
                  stream=None, delay_s: float = 1.0):
+        total = _validate.integer("total", total, 0, "steps")
+        delay_s = _validate.nonnegative("delay_s", delay_s, "s")
         self.stream = stream or sys.stderr
         if enabled is None:
             enabled = bool(getattr(self.stream, "isatty", lambda: False)())

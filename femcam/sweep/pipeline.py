@@ -50,6 +50,7 @@ from ..wear.slip import SlipResult
 from .cache import ModelCache, default_cache
 from .extras import fill_extras
 from .families import hertz_half_width
+from .headline import omitted_physics
 from .options import ContactParams, SweepOptions, contact_params
 from .realcam import Traction, arc_error_estimate, contact_scene, hertz_within_tolerance, traction_args
 from .realrows import (
@@ -66,8 +67,8 @@ from .result import TEXT_COLUMNS, empty_rows
 from .wear import fill_wear
 
 #: result columns that are 0 (not NaN) at lift-off: no contact has zero width and zero pressure
-ZERO_AT_LIFTOFF = ("a_hertz", "p0_hertz", "a_fe", "p0_fe", "vm_max", "tau1_max", "sx_min",
-                   "sx_max", "sz_min", "txz_absmax")
+ZERO_AT_LIFTOFF = ("a_hertz", "p0_hertz", "a_fe", "p0_fe", "p0_fit", "vm_max", "tau1_max",
+                   "txz_range_max", "surf_sx_min", "surf_sx_max", "surf_sz_min", "surf_txz_absmax")
 
 
 def line_contact(cp: ContactParams, F, rho) -> LineContact:
@@ -259,12 +260,15 @@ def _run_chunk(task: ChunkTask) -> dict:
     else:
         fe = _choose_models(task, cp, rows, flags, good)
         if cp.kind == "flat_faced":
-            vtk_fe = flat_rows(task, cp, rows, fe, default_cache())
+            vtk_fe = flat_rows(task, cp, rows, fe, default_cache(), flags)
         else:
             vtk_fe = _fe_rows(task, cp, rows, flags, fe, default_cache())
     fill_wear(rows, task.slip, task.wear_k, opts.method)
     fill_extras(task, rows)  # extra column providers (femcam.sweep.extras), after contact and wear
     _write_vtus(task, cp, rows, vtk_fe)  # last: not part of any timing column
+    omitted = [flag for flag, _ in omitted_physics(task.scene)]
+    for i in np.flatnonzero(rows["status"] == "ok"):   # never silently (femcam.sweep.extras)
+        flags[i].extend(omitted)
     for i in range(n):
         rows["flags"][i] = ";".join(flags[i])
     for name in TEXT_COLUMNS:
@@ -337,7 +341,7 @@ def _fe_angle(task: ChunkTask, cp: ContactParams, rows, flags, i: int,
         r = cache.solve(model, F, rho, cp.mu, sl, check=not own, Q=Q, rolling=roll)
         rows["model"][i] = "fe_arc"
     rows["fe_time"][i] = r.timings["contact"] + r.timings.get("recovery", 0.0)
-    fe_fill(rows, i, r)
+    flags[i].extend(fe_fill(rows, i, r))
     rows["Q_over_muFc"][i] = r.Q / (cp.mu * F) if cp.mu > 0 else np.nan
     rows["family"][i] = fid
     if r.outside_hertz and "hertz_large_a" not in flags[i]:

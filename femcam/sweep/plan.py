@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import _validate
 from ..hertz.conformity import sizing_half_width
 from .options import ContactParams
 
@@ -157,6 +158,38 @@ def family_reference(a, kappa, rho, Rr) -> tuple[float, float]:
     return (Rr / k_ref if k_ref != 0.0 else float("inf")), a_ref
 
 
+def contact_rows(F, rho, contact) -> tuple[np.ndarray, np.ndarray]:
+    """``F`` and ``rho`` per angle as float arrays, checked where ``contact`` is set.
+
+    Parameters
+    ----------
+    F, rho : array_like, shape (n,)
+        Contact force [N] (``>= 0`` at the contact angles) and cam radius of curvature [m]
+        (nonzero, ``inf`` flat); other angles (lift-off) may hold any number or NaN.
+    contact : array_like of bool, shape (n,)
+        Angles with contact.
+
+    Returns
+    -------
+    F, rho : ndarray, shape (n,), float
+        The checked arrays.
+
+    Raises
+    ------
+    InputError
+        Text, ``None``, inf where not allowed, a bad value at a contact angle, or a shape unlike
+        ``contact``'s; the message names the argument.
+    """
+    F = _validate.data_array("F", F, "N")
+    rho = _validate.data_array("rho", rho, "m", inf_ok=True)
+    c = np.asarray(contact, dtype=bool)
+    if F.shape != c.shape or rho.shape != c.shape:
+        raise _validate.fail("F, rho", f"shapes {F.shape}, {rho.shape}", "", f"must match contact {c.shape}")
+    _validate.nonnegative_array("F", F[c], "N")
+    _validate.radius_array("rho", rho[c], "m")
+    return F, rho
+
+
 def plan_families(F, rho, cp: ContactParams, tolerance: float, contact: np.ndarray):
     """Initial (unverified) family id per angle (``-1`` where there is no contact) and references.
 
@@ -182,8 +215,9 @@ def plan_families(F, rho, cp: ContactParams, tolerance: float, contact: np.ndarr
     refs : dict[int, tuple[float, float]]
         ``refs[fid] = (rho_ref (m), a_ref (m))``.
     """
-    F = np.asarray(F, float)
-    rho = np.asarray(rho, float)
+    F, rho = contact_rows(F, rho, contact)
+    tolerance = _validate.positive("tolerance", tolerance, "")
+    _validate.record("cp", cp, "a ContactParams (femcam.sweep.options.contact_params)", "Rr", "length")
     fam = np.full(F.shape, -1, dtype=int)
     refs: dict[int, tuple[float, float]] = {}
     idx = np.flatnonzero(contact)

@@ -83,7 +83,7 @@ def worst_surface_profile(table: dict, method: str, cp: ContactParams, families:
         r, out["fe_model"] = _fe_solve(table, i, cp, families, options, cache, scene)
         out.update(x_fe=np.asarray(r.x_surface, float), sx_fe=np.asarray(r.sx, float),
                    sz_fe=np.asarray(r.sz, float), txz_fe=np.asarray(r.txz, float),
-                   p0_fe=float(r.p0))
+                   p0_fe=float(r.p0_nodal))
     return out
 
 

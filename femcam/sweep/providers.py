@@ -139,7 +139,8 @@ ASSESS_TEXT = ("assess_regime", "assess_flags", "assess_source")
 FE_SLICE = (("hs_fe_F", "fe_slice_F_N", 1.0), ("hs_fe_a", "fe_slice_a_um", 1e6),
             ("hs_fe_p0", "fe_slice_p0_MPa", 1e-6), ("hs_fe_vm_max", "fe_slice_vm_max_MPa", 1e-6),
             ("hs_fe_tau1_max", "fe_slice_tau1_max_MPa", 1e-6),
-            ("hs_fe_txz_absmax", "fe_slice_txz_absmax_MPa", 1e-6))
+            ("hs_fe_surf_txz_absmax", "fe_slice_surf_txz_absmax_MPa", 1e-6),
+            ("hs_fe_txz_range_max", "fe_slice_txz_range_max_MPa", 1e-6))
 HALFSPACE = tuple((f"hs_{k}", csv, f) for k, (csv, f) in HS_COLUMNS.items()) + FE_SLICE
 RING = tuple((f"ring_{k}", csv, f) for k, (csv, f) in RING_COLUMNS.items() if k != "theta")
 CAM_DISK = tuple((f"camdisk_{k}", csv, f) for k, (csv, f) in CAM_CSV_COLUMNS.items())
@@ -201,9 +202,10 @@ def _fe_slice(task, rows, out) -> None:
         if not r.converged:
             out["fe_load_basis"][i] = f"w_max*length: not converged ({r.iterations} iterations)"
             continue
-        for si, v in (("hs_fe_F", F), ("hs_fe_a", r.a), ("hs_fe_p0", r.p0),
+        for si, v in (("hs_fe_F", F), ("hs_fe_a", r.a), ("hs_fe_p0", r.p0_nodal),
                       ("hs_fe_vm_max", r.von_mises_max.value), ("hs_fe_tau1_max", r.tau1_max.value),
-                      ("hs_fe_txz_absmax", float(np.abs(r.txz).max()) if r.txz.size else np.nan)):
+                      ("hs_fe_surf_txz_absmax", float(np.abs(r.txz).max()) if r.txz.size else np.nan),
+                      ("hs_fe_txz_range_max", r.txz_range.value if r.txz_range.inside else np.nan)):
             out[si][i] = v
         out["fe_load_basis"][i] = "w_max*length"
 
@@ -220,12 +222,12 @@ def _solve_slice(task, cp, cache, i: int, F: float, rho: float):
 
 
 def halfspace_rows(scene, theta) -> dict:
-    """The half-space columns at ``theta`` (rad, one sweep chunk): the chunk's angles in order,
-    the first from a cold start and each next one warm-started from the previous angle's
-    pressure (:func:`femcam.halfspace.rows.finite_length_rows`, kernel FFTs cached per process).
-    The chunk boundaries are fixed by the angle list and ``chunk_size`` (not by the worker count
-    or by resuming), so the rows do not depend on how many processes run the chunks; a different
-    ``chunk_size`` moves them within the solver tolerance (1e-5 relative pressure change).
+    """The half-space columns at ``theta`` (rad, one sweep chunk), each angle warm-started from
+    the cold solution at its nearest anchor angle (``start="anchor"`` of
+    :func:`femcam.halfspace.rows.finite_length_rows`; kernel FFTs and anchors cached per process):
+    a row depends on its own angle alone, so the columns are bit-identical whatever the chunk
+    size or a resume (a warm start from the chunk's previous angle moved the rows by up to 4e-5
+    relative with the chunk boundaries).
 
     Parameters
     ----------
@@ -241,7 +243,7 @@ def halfspace_rows(scene, theta) -> dict:
         (Pa, m, N/m; counts and 0/1 flags as float), and ``hs_flags`` (object, the strip flags
         of each angle joined by ``;``).
     """
-    r = finite_length_rows(scene, np.asarray(theta, float), strip=strip_model(scene))
+    r = finite_length_rows(scene, np.asarray(theta, float), strip=strip_model(scene), start="anchor")
     out = {f"hs_{k}": np.asarray(r[k], float) for k in HS_COLUMNS}
     out["hs_flags"] = np.array([";".join(f) for f in r["flags"]], dtype=object)
     return out
@@ -295,12 +297,12 @@ def assess_chunk(task, rows) -> dict:
         columns ``assess_regime``, ``assess_flags``, ``assess_source``.
     """
     table = {"a_fe": rows["a_fe"], "p0_fe": rows["p0_fe"], "tau1_max": rows["tau1_max"],
-             "txz_absmax": rows["txz_absmax"]}
+             "txz_range_max": rows["txz_range_max"]}
     axial = "hs_p_axial_peak" in rows
     if axial:  # finite length: the most loaded slice, Hertz shape factors at its p0
         a, p0 = axial_contact(rows)
         table = {"a_fe": a, "p0_fe": p0, "tau1_max": rows["hs_fe_tau1_max"],
-                 "txz_absmax": rows["hs_fe_txz_absmax"]}
+                 "txz_range_max": rows["hs_fe_txz_range_max"]}
     n = task.theta.size
     idx = np.flatnonzero(np.asarray(rows["status"]).astype(str) != "undercut")
     out = {assess_name(si): np.full(n, np.nan) for si, _, _ in ASSESS_COLUMNS if si not in ASSESS_SKIP}

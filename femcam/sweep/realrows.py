@@ -22,6 +22,7 @@ from ..fe.followers import check_face
 from ..hertz.conformity import shape_factors
 from ..mesh import MeshOptions
 from ..profile import KnifeEdgeFollower, RollerFollower
+from .headline import edge_flags
 from .realcam import traction_args
 
 #: geometric bin ratio (half-width and cam radius) of the flat-faced models
@@ -32,11 +33,15 @@ FLAT_BIN_RATIO = 1.25
 RATIO_STEPS = 100
 
 
-def fe_fill(rows, i, r: ContactResult):
+def fe_fill(rows, i, r: ContactResult) -> list[str]:
     """Copy one :class:`femcam.fe.ContactResult` into row ``i``.
 
-    Maxima are over both bodies (``StressMax.value``, depth ``z`` below that body's surface);
-    surface extremes are on the cam surface of the FE model's stress window.
+    ``p0_fe`` is the peak of the solved pressure (its largest nodal value), ``p0_fit`` and
+    ``a_fe`` the Hertz ellipse fitted to it (:mod:`femcam.sweep.table`). Maxima are over both
+    bodies (``StressMax.value``, depth ``z`` below that body's surface), and so is the range of
+    ``txz`` over one pass (the larger body's; NaN where the stress window cuts the pass,
+    ``ShearRange.inside`` False); the ``surf_*`` extremes are on the cam surface of the FE
+    model's stress window.
 
     Parameters
     ----------
@@ -46,25 +51,34 @@ def fe_fill(rows, i, r: ContactResult):
         Row index.
     r : femcam.fe.ContactResult
         The solved load case (a, depths in m; p0, stresses in Pa; Q in N).
+
+    Returns
+    -------
+    list of str
+        The row's flags from this solve (:func:`edge_flags`).
     """
     rows["a_fe"][i] = r.a
-    rows["p0_fe"][i] = r.p0
+    rows["p0_fe"][i] = r.p0_nodal   # the peak of the solved pressure, not the fit
+    rows["p0_fit"][i] = r.p0
     rows["vm_max"][i] = r.von_mises_max.value
     rows["vm_depth"][i] = r.von_mises_max.z
     rows["tau1_max"][i] = r.tau1_max.value
     rows["tau1_depth"][i] = r.tau1_max.z
+    tr = r.txz_range
+    rows["txz_range_max"][i] = tr.value if tr.inside else np.nan
+    rows["txz_range_depth"][i] = tr.z if tr.inside else np.nan
     if r.sx.size:
-        rows["sx_min"][i] = r.sx.min()
-        rows["sx_max"][i] = r.sx.max()
-        rows["sz_min"][i] = r.sz.min()
-        rows["txz_absmax"][i] = np.abs(r.txz).max()
+        rows["surf_sx_min"][i] = r.sx.min()
+        rows["surf_sx_max"][i] = r.sx.max()
+        rows["surf_sz_min"][i] = r.sz.min()
+        rows["surf_txz_absmax"][i] = np.abs(r.txz).max()
     rows["iterations"][i] = r.iterations
     rows["residual"][i] = r.residual
     rows["n_dofs"][i] = r.n_dofs
-    rows["p0_nodal"][i] = r.p0_nodal
     rows["Q"][i] = r.Q
     rows["stick_width"][i] = r.stick_width
     rows["slip_state"][i] = r.slip_state
+    return edge_flags(r)
 
 
 def hertz_stress(rows, idx, cp, p0, a, ratio=None) -> None:
@@ -104,7 +118,9 @@ def hertz_stress(rows, idx, cp, p0, a, ratio=None) -> None:
         rows["vm_depth"][j] = k["von_mises"][1] * b
         rows["tau1_max"][j] = k["tau1"][0] * p
         rows["tau1_depth"][j] = k["tau1"][1] * b
-        for name in ("sx_min", "sx_max", "sz_min", "txz_absmax"):
+        rows["txz_range_max"][j] = k["txz_range"][0] * p
+        rows["txz_range_depth"][j] = k["txz_range"][1] * b
+        for name in ("surf_sx_min", "surf_sx_max", "surf_sz_min", "surf_txz_absmax"):
             rows[name][j] = k[name] * p
 
 
@@ -259,7 +275,7 @@ def hertz_answer(rows, idx, cp, traction, flags) -> None:
         rows["stick_width"][i] = 2 * a * math.sqrt(1 - f) if f < 1 else 0.0
         rows["slip_state"][i] = "none" if Q == 0 else ("sliding" if f >= 1 else "partial slip")
         rows["model"][i] = "hertz"
-        rows["p0_nodal"][i] = np.nan
+        rows["p0_fit"][i] = np.nan
         rows["status"][i] = "ok"
     hertz_stress(rows, idx, cp, rows["p0_hertz"][idx], rows["a_hertz"][idx], ratio)
 
@@ -318,7 +334,7 @@ def _flat_model(cache, scene, cp, options, a: float, rho: float) -> RealCam:
         solver=SolverOptions()))
 
 
-def flat_rows(task, cp, rows, good, cache) -> dict:
+def flat_rows(task, cp, rows, good, cache, flags=None) -> dict:
     """Flat-faced rows ``good``: :func:`femcam.fe.choice.solve_angle` per angle.
 
     Parameters
@@ -333,6 +349,8 @@ def flat_rows(task, cp, rows, good, cache) -> dict:
         Rows the FE answers.
     cache : ModelCache
         Where the binned models are kept.
+    flags : list of list of str, optional
+        Per-row flags (appended to).
 
     Returns
     -------
@@ -360,7 +378,9 @@ def flat_rows(task, cp, rows, good, cache) -> dict:
             hertz_stress(rows, [i], cp, res.p0_hertz, rows["a_hertz"][i])
             rows["fe_time"][i] = 0.0
         else:
-            fe_fill(rows, i, r)
+            row_flags = fe_fill(rows, i, r)
+            if flags is not None:
+                flags[i].extend(row_flags)
             rows["fe_time"][i] = r.timings.get("contact", 0.0) + r.timings.get("recovery", 0.0)
             if task.vtk_mask is not None and task.vtk_mask[i]:
                 vtk[int(i)] = r

@@ -17,6 +17,7 @@ from .. import _validate
 from ..hertz.conformity import roller_does_not_fit
 from ..io import provenance
 from ..scene import load_scene
+from ..scene.digest import physics_hash, physics_parts
 from .cache import default_cache
 from .extras import extras_provenance
 from .families import FamilyRecord, verify_families
@@ -183,6 +184,9 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
                       families=[r.to_dict() for r in run.records] if fe else None,
                       wear=run.wear.to_dict())
     prov["extras"] = extras_provenance(run.scene, table, tolerance=run.opts.tolerance)
+    # what an assessment of this folder checks its scene against (femcam.assess.sweep_table)
+    prov["scene_physics_parts"] = physics_parts(run.scene)
+    prov["scene_physics_sha256"] = physics_hash(run.scene)
     timings = {"analytic": t_analytic, "verify": t_verify, "compute": t_compute}
     result = SweepResult(table=table, method=run.opts.method, provenance=prov, paths={},
                          timings=timings, n_chunks_computed=len(tasks),

@@ -35,8 +35,8 @@ from .result import NUMERIC, TEXT_COLUMNS, extra_keys
 
 MANIFEST = "manifest.json"
 PLAN = "plan.json"
-FORMAT_VERSION = 4  # 2: wear and build-time columns, plan.json; 3: scene hash in each chunk;
-#                     4: extra provider columns (femcam.sweep.extras)
+FORMAT_VERSION = 5  # 2: wear and build-time columns, plan.json; 3: scene hash in each chunk;
+#                     4: extra provider columns (femcam.sweep.extras); 5: txz_range_* columns
 LOCK = ".femcam.lock"
 #: a sweep into an output directory with at least this many angles keeps its table on disk
 #: (:class:`StoredTable`) instead of in memory

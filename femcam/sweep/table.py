@@ -18,12 +18,36 @@ Per-angle ``status``:
 * ``"edge_contact"`` -- flat-faced follower: the contact runs past the end of the face
   (``[follower] face_length_mm``); not modelled (never Hertz), ``message`` gives the angle range.
 
+Column names say where a value is taken (one rule, also in docs/sweep.md):
+
+* ``p0_hertz``, ``a_hertz``: Hertz line contact at ``Fc / length`` and ``rho`` (the reference);
+* ``p0_fe``: the peak of the solved contact pressure, its largest nodal value (the peak of the
+  P1 pressure interpolant, ``ContactResult.p0_nodal``), from the model the row's ``model``
+  names;
+* ``p0_fit``: the peak of the Hertz ellipse fitted to the solved pressure (nodes above 20 % of
+  the peak) -- a fit; ``a_fe``: that ellipse's half-width (where it reaches 0), a fit too, not
+  the extent of the active set;
+* ``err_p0``, ``err_a``: ``p0_fe / p0_hertz - 1`` (the solved peak against Hertz),
+  ``a_fe / a_hertz - 1``;
+* ``vm_max`` + ``vm_depth``, ``tau1_max`` + ``tau1_depth``: the largest value over the stress
+  windows of both bodies (subsurface) and its depth below that body's surface;
+* ``surf_sx_min``, ``surf_sx_max``, ``surf_sz_min``, ``surf_txz_absmax``: on the cam's contact
+  surface (z = 0), over the FE stress window or the Hertz surface field (Johnson 1985 §7.1,
+  seed 002 eqs. 5-7).
+
+On a row whose ``model`` is ``hertz`` every contact column is Hertz's (``p0_fe``, ``p0_fit``
+and ``a_fe`` NaN, the stresses from the Hertz shape factors); on ``fe_arc``/``fe_exact`` rows
+they come from that solve. Why the peak and not the fit: near a curvature jump the pressure is
+no ellipse; over the junction scene's 21 exact-gap rows the peak agrees with an independent
+exact-gap half-space solve within 0.15 %, the fit is off by up to 1.5 % (docs/sweep.md, "Which
+column answers what").
+
 Real-cam columns (:mod:`femcam.sweep.realcam`): ``model`` (``hertz``, ``fe_arc``, ``fe_exact``:
 which model answered), ``est_err_arc_pct``/``est_err_hertz_pct`` (estimated p0 error of the
 cheaper models), ``curvature_jump`` (1 inside a curvature jump's straddle span),
-``exact_vs_arc_p0_pct`` (p0 of the arc-gap FE vs the exact-gap FE, jump rows), ``p0_nodal_MPa``
-(largest nodal pressure: near a jump the pressure is not a Hertz ellipse), ``Q_N`` (tangential
-force on the cam along local x), ``Q_over_muFc``, ``stick_width_um``, ``slip_state``.
+``exact_vs_arc_p0_pct`` (peak p0 of the arc-gap FE vs the exact-gap FE, jump rows), ``Q_N``
+(tangential force on the cam along local x), ``Q_over_muFc``, ``stick_width_um``,
+``slip_state``.
 
 ``flags`` is a ``;``-separated list of remarks on ``ok`` rows:
 
@@ -37,6 +61,24 @@ force on the cam along local x), ``Q_over_muFc``, ``stick_width_um``, ``slip_sta
   tangential force Q with friction 0: none can be carried, Q is set to 0;
 * ``rebuilt`` -- the model of the angle's family did not cover it (``model.covers``) and a
   model was built for this angle alone (its reuse error is 0).
+* ``surf_edge_dominated:<column>`` -- an FE surface extreme (``surf_*``) sits within one
+  element of the contact edge and exceeds the value the contact can carry there by more than the
+  FE's surface error (:data:`femcam.sweep.headline.SURF_EDGE_TOL` p0): a value of the
+  discretisation's edge singularity, not a result (:func:`femcam.sweep.headline.edge_flags`);
+* ``headline_omits_coating``, ``headline_solid_roller``, ``headline_solid_cam``,
+  ``headline_2d_mean_load`` -- the scene holds physics the headline contact model leaves out
+  (:func:`femcam.sweep.headline.omitted_physics`): a coating, a ring on a pin or needles (the
+  ring's own contact is ``ring_p0_MPa``), a cam on its shaft (``cam_bore_*``), a finite length
+  (the most loaded slice is ``p_axial_peak_MPa``, ``fe_slice_*``).
+
+Subsurface orthogonal shear: ``txz_range_max`` is the largest range of ``txz`` over one pass,
+``max_z [max_x txz(x, z) - min_x txz(x, z)]`` (Johnson 1985 §9.2; the stress cycle of
+subsurface rolling-contact fatigue, fed to the assessment's ``dtau_orth``), at the depth
+``txz_range_depth`` below the surface of the body where it is larger. FE rows: from the FE
+subsurface field on rows of equal depth through the stress window, the contact-surface layer
+left out (:attr:`femcam.fe.ContactResult.txz_range`; NaN where the window cuts the pass);
+Hertz rows: McEwen's field with the row's traction ratio (:func:`femcam.hertz.max_shear_range`;
+0.5 p0 at z = 0.5 a for mu up to ~0.5). It is not twice ``surf_txz_absmax``, which is a surface value.
 
 Wear: ``wear_source`` says which pressure the ``wear_depth`` column used (``fe``, ``hertz`` or
 ``none``), see :mod:`femcam.sweep.wear`.
@@ -73,15 +115,17 @@ COLUMNS: tuple[tuple[str, str, float], ...] = (
     ("vm_depth", "vm_depth_um", 1e6),
     ("tau1_max", "tau1_max_MPa", 1e-6),
     ("tau1_depth", "tau1_depth_um", 1e6),
-    ("sx_min", "sx_min_MPa", 1e-6),
-    ("sx_max", "sx_max_MPa", 1e-6),
-    ("sz_min", "sz_min_MPa", 1e-6),
-    ("txz_absmax", "txz_absmax_MPa", 1e-6),
+    ("txz_range_max", "txz_range_max_MPa", 1e-6),
+    ("txz_range_depth", "txz_range_depth_um", 1e6),
+    ("surf_sx_min", "surf_sx_min_MPa", 1e-6),
+    ("surf_sx_max", "surf_sx_max_MPa", 1e-6),
+    ("surf_sz_min", "surf_sz_min_MPa", 1e-6),
+    ("surf_txz_absmax", "surf_txz_absmax_MPa", 1e-6),
     ("v_slip", "v_slip_m_s", 1.0),
     ("V_cam", "V_cam_m_s", 1.0),
     ("wear_depth", "wear_depth_per_rev_nm", 1e9),
     # FE on the real cam (femcam.sweep.realcam): model choice, curvature jumps, traction
-    ("p0_nodal", "p0_nodal_MPa", 1e-6),
+    ("p0_fit", "p0_fit_MPa", 1e-6),
     ("curvature_jump", "curvature_jump", 1.0),
     ("exact_vs_arc_p0", "exact_vs_arc_p0_pct", 100.0),
     ("est_err_hertz", "est_err_hertz_pct", 100.0),

@@ -32,10 +32,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .. import _validate
 from ..errors import FemcamError
 from .cache import ModelCache, default_cache
 from .options import ContactParams, SweepOptions
-from .plan import curvature_ratio, family_reference, hertz_half_width, initial_groups
+from .plan import contact_rows, curvature_ratio, family_reference, hertz_half_width, initial_groups
 from .realcam import traction_args
 
 __all__ = ["ESTIMATE_MARGIN", "MAX_SCAN", "N_CHECKS", "FamilyRecord", "check_angles",
@@ -260,9 +261,9 @@ def verify_families(F, rho, theta, cp: ContactParams, options: SweepOptions,
         One per family, ids in order.
     """
     cache = default_cache() if cache is None else cache
-    F = np.asarray(F, float)
-    rho = np.asarray(rho, float)
-    theta = np.asarray(theta, float)
+    F, rho = contact_rows(F, rho, contact)
+    theta = _validate.finite_array("theta", theta, "rad")
+    n_checks = _validate.integer("n_checks", n_checks, 1, "checks")
     fam = np.full(F.shape, -1, dtype=int)
     idx = np.flatnonzero(contact)
     if idx.size == 0:
@@ -383,7 +384,7 @@ def _scan_family(cache, model, cp, rec, rows, a, kap, F, rho, traction=None) -> 
         t_solves.append(r.timings.get("contact", np.nan) + r.timings.get("recovery", 0.0))
         rec.n_scanned += 1
         if np.isfinite(r.hertz_p0) and r.hertz_p0 > 0:
-            e_h[j] = r.p0 / r.hertz_p0 - 1.0
+            e_h[j] = r.p0_nodal / r.hertz_p0 - 1.0
     rec.solve_time = float(np.nanmedian(t_solves)) if t_solves else float("nan")
     return e_h, failed
 
@@ -426,4 +427,4 @@ def _reuse_error(cache, model, cp, options, F, rho, a, same: bool, load=(None, N
     if same:
         return 0.0
     p0_fresh = cache.fresh_p0(cp, rho, a, options, F, load)
-    return float(r.p0 / p0_fresh - 1.0) if math.isfinite(p0_fresh) else math.nan
+    return float(r.p0_nodal / p0_fresh - 1.0) if math.isfinite(p0_fresh) else math.nan

@@ -18,7 +18,7 @@ hardness; default K = 1e-8, H = 2000 N/mm^2 as seed 000); the slip model's keys 
 same checked table through :func:`femcam.wear.options.slip_kwargs`, as in ``femcam wear map``.
 
 The per-pass depth depends on the pressure only through ``w = int p dx``; with the FE source it is
-the elliptic fit's ``pi a_fe p0_fe / 2``, which differs from the FE's exact ``F/l`` by about
+the elliptic fit's ``pi a_fe p0_fit / 2``, which differs from the FE's exact ``F/l`` by about
 ``err_a + err_p0`` (~1 % at a_over_h = 10), the same convention as ``femcam wear map --source fe``.
 """
 
@@ -197,12 +197,12 @@ def fill_wear(rows, slip, k: float, method: str) -> None:
     rows["v_slip"][:] = slip.v_slip
     rows["V_cam"][:] = slip.V_cam
     status = np.asarray(rows["status"]).astype(str)
-    fe_ok = (status == "ok") & np.isfinite(rows["p0_fe"]) & np.isfinite(rows["a_fe"]) \
+    fe_ok = (status == "ok") & np.isfinite(rows["p0_fit"]) & np.isfinite(rows["a_fe"]) \
         if method == "fe" else np.zeros(n, bool)
     hz = (status == "ok") | (status == "failed")
     hz &= ~fe_ok & np.isfinite(rows["p0_hertz"]) & np.isfinite(rows["a_hertz"]) & (rows["Fc"] > 0)
     a = np.where(fe_ok, rows["a_fe"], np.where(hz, rows["a_hertz"], 0.0))
-    p0 = np.where(fe_ok, rows["p0_fe"], np.where(hz, rows["p0_hertz"], 0.0))
+    p0 = np.where(fe_ok, rows["p0_fit"], np.where(hz, rows["p0_hertz"], 0.0))  # the fit's pair
     F = np.where(fe_ok | hz, rows["Fc"], 0.0)
     depth = np.asarray(wear_depth_per_angle(rows["theta"], a, p0, F, slip, k), dtype=float)
     lost = ~(fe_ok | hz) & (status != "liftoff")  # contact but no pressure: unknown, not zero

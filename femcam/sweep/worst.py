@@ -5,6 +5,8 @@ a provider (:mod:`femcam.sweep.extras`) can change the answer (the axial peak of
 roller, the needle loads of a needle roller). :func:`worst_lines` writes its worst values as
 sentences for the CLI summary and ``report.md``; each value is the column's largest (or
 smallest, for margins) over the ``ok`` rows, the same number as the CSV column's extreme.
+:func:`refusals` writes the providers refused at run time the same way (part, reason, the scene
+keys to change).
 """
 
 from __future__ import annotations
@@ -24,7 +26,8 @@ ITEMS = {
                                   ("ring_needle_Q_on", "worst needle load", "N", 1.0, "max"))),
     "cam_disk": ("cam disk", (("camdisk_hoop_max", "bore hoop stress", "MPa", 1e-6, "max"),
                               ("camdisk_shaft_p0", "shaft pressure", "MPa", 1e-6, "max"))),
-    "layers": ("layers", (("layer_interface_utilisation", "interface utilisation", "", 1.0, "max"),
+    "layers": ("layers", (("layer_interface_tau_max", "interface shear", "MPa", 1e-6, "max"),
+                          ("layer_interface_utilisation", "interface utilisation", "", 1.0, "max"),
                           ("layer_case_margin", "smallest case margin", "", 1.0, "min"))),
 }
 
@@ -104,3 +107,49 @@ def worst_lines(names, table, extras: dict | None = None) -> list[str]:
     if n is not None and math.isfinite(n):
         lines.append(f"coating: worn through after {n:.4g} revolutions at the deepest wear rate")
     return lines
+
+
+def refusals(table, keys: dict[str, str], column: str = "extras_error") -> list[dict]:
+    """The providers refused at run time (the text column ``column``), one record per provider:
+    a part the scene asks for that answered nothing at some angles.
+
+    Parameters
+    ----------
+    table : Mapping[str, ndarray]
+        The sweep table (``column``: ``"<provider>: <error>: <reason>"`` per row, several joined
+        by ``" | "``).
+    keys : dict[str, str]
+        Provider name -> the scene keys that ask for it, in run order
+        (:data:`femcam.sweep.extras.PROVIDERS`).
+    column : str, optional
+        The text column of the refusals (:data:`femcam.sweep.extras.ERROR_COLUMN`).
+
+    Returns
+    -------
+    list of dict
+        ``{"part", "reason", "angles", "keys", "line"}`` per refused provider, in run order:
+        ``reason`` the first refusal's ``"<error>: <message>"`` (with how many other reasons the
+        column holds), ``angles`` the number of rows refused, ``keys`` the scene keys that ask
+        for the part, ``line`` one sentence naming all of it (CLI, ``report.md``).
+    """
+    cells = np.asarray(table.get(column, [])).astype(str)
+    reasons: dict[str, list[str]] = {}
+    rows: dict[str, int] = {}
+    for cell in cells:
+        parts = set()
+        for e in (cell.split(" | ") if cell else ()):
+            part, _, reason = e.partition(": ")
+            if reason not in reasons.setdefault(part, []):
+                reasons[part].append(reason)
+            parts.add(part)
+        for part in parts:
+            rows[part] = rows.get(part, 0) + 1
+    out = []
+    for part in [q for q in keys if q in reasons] + [q for q in reasons if q not in keys]:
+        first, n = reasons[part], rows[part]
+        reason = first[0] + (f" (and {len(first) - 1} other reason(s) in {column})"
+                             if len(first) > 1 else "")
+        line = (f"{part} refused at {n} of {cells.size} angle(s), its columns are NaN there: {reason}"
+                + (f"; change the scene keys {keys[part]}" if keys.get(part) else ""))
+        out.append({"part": part, "reason": reason, "angles": n, "keys": keys.get(part, ""), "line": line})
+    return out

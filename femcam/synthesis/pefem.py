@@ -119,7 +119,8 @@ def pressure_angle_exact(Rb, s, s1):
     >>> round(float(np.degrees(pressure_angle_exact(1.0, 0.0, 1.0))), 6)
     45.0
     """
-    return np.arctan2(s1, Rb + s)
+    Rb = _validate.positive_array("Rb", Rb, "m")
+    return np.arctan2(_validate.finite_array("s1", s1, "m/rad"), Rb + _validate.finite_array("s", s, "m"))
 
 
 def synthesize_knife_edge(program, *, Rb, options: SynthesisOptions | None = None,
@@ -159,7 +160,7 @@ def synthesize_knife_edge(program, *, Rb, options: SynthesisOptions | None = Non
     """
     opt = options or SynthesisOptions()
     Rb = _validate.positive("Rb", Rb, "m")
-    _validate.positive("samples_per_element", samples_per_element, "")
+    _validate.integer("samples_per_element", samples_per_element, 1)
     law_m = as_law(program)
     # refuse hopeless geometry before any iteration: exact phi on a fine grid
     th = np.linspace(0.0, 2 * np.pi, 20001)

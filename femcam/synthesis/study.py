@@ -95,6 +95,7 @@ def direct_profile(program, Rb: float, theta):
     phi : ndarray
         Pressure angle (rad), from :func:`femcam.profile.cam_profile` (Norton eq. 8.31).
     """
+    _validate.record("program", program, "a femcam.kinematics.CamProgram", "derivatives")
     s, s1, s2 = derivatives(program, theta)
     p = cam_profile(KnifeEdgeFollower(Rb=Rb), theta, s, s1, s2, allow_undercut=True)
     return np.hypot(p.x, p.y), p.phi
@@ -146,10 +147,13 @@ def compare_direct(result: SynthesisResult, program, *, n_dense: int = 72001) ->
     Comparison
         Deviations (m, rad) and times (s).
     """
+    n_dense = _validate.integer("n_dense", n_dense, 2, "points")
+    _validate.instance("result", result, SynthesisResult, "a SynthesisResult (synthesize_knife_edge)")
+    _validate.record("program", program, "a femcam.kinematics.CamProgram", "derivatives")
     t0 = time.perf_counter()
     r_d, phi_d = direct_profile(program, result.Rb, result.theta)
     t_direct = time.perf_counter() - t0
-    th = np.linspace(0.0, 2 * np.pi, int(n_dense))
+    th = np.linspace(0.0, 2 * np.pi, n_dense)
     phi_dense = direct_profile(program, result.Rb, th)[1]
     dev = result.r - r_d
     return Comparison(
@@ -242,7 +246,9 @@ def study_k(program, *, Rb: float, ks, mu: float = 1.0,
         One per k; a failed solve is a row with ``converged = False``.
     """
     base = options or SynthesisOptions()
-    return [_row(program, Rb, replace(base, k=float(k), mu=float(mu))) for k in ks]
+    ks = _validate.positive_array("ks", ks, "")
+    mu = _validate.positive("mu", mu, "")
+    return [_row(program, Rb, replace(base, k=float(k), mu=mu)) for k in np.ravel(ks)]
 
 
 def study_k_over_mu(program, *, Rb: float, ratios, k: float = 1.0e6,
@@ -271,8 +277,9 @@ def study_k_over_mu(program, *, Rb: float, ratios, k: float = 1.0e6,
         One per ratio; a failed solve is a row with ``converged = False``.
     """
     base = options or SynthesisOptions()
-    return [_row(program, Rb, replace(base, k=float(k), mu=float(k) / float(q)))
-            for q in ratios]
+    ratios = _validate.positive_array("ratios", ratios, "")
+    k = _validate.positive("k", k, "")
+    return [_row(program, Rb, replace(base, k=k, mu=k / float(q))) for q in np.ravel(ratios)]
 
 
 def format_table(rows, *, key: str = "k") -> str:

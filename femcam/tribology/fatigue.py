@@ -46,7 +46,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import _validate
-from ..hertz import max_shear, unit_stresses
+from ..hertz import max_shear, max_shear_range, unit_stresses
 
 #: ISO 6336-2 Z_NT slope (see the module docstring) and its reference cycles
 SN_EXPONENT_ISO6336 = math.log(5e7 / 1e5) / math.log(1.6)
@@ -220,18 +220,14 @@ def shakedown_limit(mu: float = 0.0, hardening: str = "perfectly_plastic") -> fl
     return _shakedown(mu)[0] if hardening == "perfectly_plastic" else 1.0 / _kinematic(mu)
 
 
-@lru_cache(maxsize=64)
-def _orth(mu: float) -> tuple[float, float]:
-    _, t, Z = _fields(mu)
-    rng = np.max(t, axis=1) - np.min(t, axis=1)
-    i = int(np.argmax(rng[1:])) + 1                       # below the surface (z > 0)
-    return float(rng[i]), float(Z[i])
-
-
 def orthogonal_shear_range(mu: float = 0.0) -> tuple[float, float]:
-    r"""``(dtau/p0, z/a)``: the largest range of ``txz`` over one pass, and its depth (z > 0).
+    r"""``(dtau/p0, z/a)``: the largest range of ``txz`` over one pass, and its depth.
 
     .. math:: \Delta\tau = \max_z\left[\max_x\tau_{xz} - \min_x\tau_{xz}\right]
+
+    The McEwen field's :func:`femcam.hertz.max_shear_range` (the sweep's Hertz rows use the same
+    function, so a Hertz-fed and a Hertz-row-fed assessment agree): ``0.5`` at ``z = 0.5 a`` for
+    ``mu`` up to about 0.5, then the surface range ``mu``.
 
     Parameters
     ----------
@@ -249,7 +245,8 @@ def orthogonal_shear_range(mu: float = 0.0) -> tuple[float, float]:
     >>> [round(v, 3) for v in orthogonal_shear_range(0.0)]
     [0.5, 0.5]
     """
-    return _orth(_validate.nonnegative("mu", mu, ""))
+    m = max_shear_range(_validate.nonnegative("mu", mu, ""))
+    return m.value, m.z
 
 
 def sn_cycles(p0, strength, *, N_ref=SN_CYCLES_ISO6336, m=SN_EXPONENT_ISO6336):
@@ -278,7 +275,9 @@ def sn_cycles(p0, strength, *, N_ref=SN_CYCLES_ISO6336, m=SN_EXPONENT_ISO6336):
     >>> f"{float(sn_cycles(1.6e9, 1.0e9)):.3g}"      # Z_NT = 1.6 at 1e5 cycles
     '1e+05'
     """
-    p0 = np.asarray(p0, float)
+    p0 = _validate.nonnegative_array("p0", p0, "Pa")
     strength = _validate.positive("strength", strength, "Pa")
+    N_ref = _validate.positive("N_ref", N_ref, "")
+    m = _validate.positive("m", m, "")
     with np.errstate(divide="ignore"):
         return np.where(p0 > 0, N_ref * (strength / np.where(p0 > 0, p0, 1.0)) ** m, np.inf)

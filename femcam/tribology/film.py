@@ -92,6 +92,14 @@ def dimensionless_groups(U, w, R, E_star, eta0, alpha):
     >>> [float(f"{x:.4g}") for x in dimensionless_groups(1.0, 1e5, 0.01, 115.4e9, 0.01, 2e-8)]
     [4.333e-12, 4616.0, 4.333e-05]
     """
+    return _groups(_validate.finite_array("U", U, "m/s"), _validate.nonnegative_array("w", w, "N/m"),
+                   _validate.positive_array("R", R, "m"), _validate.positive_array("E_star", E_star, "Pa"),
+                   _validate.positive_array("eta0", eta0, "Pa s"),
+                   _validate.positive_array("alpha", alpha, "1/Pa"))
+
+
+def _groups(U, w, R, E_star, eta0, alpha):
+    """:func:`dimensionless_groups` without the input checks."""
     E_red = 2.0 * np.asarray(E_star, float)
     ER = E_red * np.asarray(R, float)
     return (np.asarray(eta0, float) * np.asarray(U, float) / ER, np.asarray(alpha, float) * E_red,
@@ -230,6 +238,11 @@ def lubrication_regime(lam):
     >>> lubrication_regime([0.5, 1.0, 2.9, 3.0]).tolist()
     [0, 1, 1, 2]
     """
+    return _regime(_validate.nonnegative_array("lam", lam, ""))
+
+
+def _regime(lam):
+    """:func:`lubrication_regime` without the input checks."""
     lam = np.asarray(lam, float)
     return np.where(lam < LAMBDA_MIXED, 0, np.where(lam < LAMBDA_FULL, 1, 2))
 
@@ -262,9 +275,13 @@ def film_thickness(*, U, w, R, E_star, eta0, alpha, sigma=None) -> dict:
     if np.any(eta0 <= 0) or np.any(alpha <= 0):
         bad = ("eta0", eta0, "Pa s") if np.any(eta0 <= 0) else ("alpha", alpha, "1/Pa")
         raise _validate.fail(bad[0], float(np.min(bad[1])), bad[2], "must be > 0")
-    R = np.asarray(R, float)
+    U = _validate.finite_array("U", U, "m/s")
+    w = _validate.nonnegative_array("w", w, "N/m")
+    R = _validate.radius_array("R", R, "m")             # inf (flat on flat) gives a flagged 0 film
+    if np.any(R < 0.0):
+        raise _validate.fail("R", float(R[R < 0.0].flat[0]), "m", "must be > 0 (inf: flat)")
     finite_R = np.isfinite(R) & (R > 0)
-    Ud, G, W = dimensionless_groups(U, w, np.where(finite_R, R, 1.0), E_star, eta0, alpha)
+    Ud, G, W = _groups(U, w, np.where(finite_R, R, 1.0), E_star, eta0, alpha)
     Rs = np.where(finite_R, R, 0.0)
     out = {"Ud": Ud, "G": G, "W": W,
            "h_min": Rs * pan_hamrock_min(Ud, G, W), "h_c": Rs * pan_hamrock_central(Ud, G, W)}
@@ -275,5 +292,5 @@ def film_thickness(*, U, w, R, E_star, eta0, alpha, sigma=None) -> dict:
     if sigma is not None:
         sigma = _validate.positive("sigma", sigma, "m")
         out["lam"] = out["h_min"] / sigma
-        out["regime"] = lubrication_regime(out["lam"])
+        out["regime"] = _regime(out["lam"])
     return out

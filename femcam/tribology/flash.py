@@ -105,8 +105,10 @@ def peclet(u, a, kappa):
     >>> round(float(peclet(2.0, 1e-4, 1.25e-5)), 6)
     8.0
     """
+    u = _validate.finite_array("u", u, "m/s")
+    a = _validate.nonnegative_array("a", a, "m")
     kappa = _validate.positive("kappa", kappa, "m^2/s")
-    return np.abs(np.asarray(u, float)) * np.asarray(a, float) / (2.0 * kappa)
+    return np.abs(u) * a / (2.0 * kappa)
 
 
 def flash_temperature(mu, w, a, u1, u2, beta1, beta2, *, C=C_BLOK):
@@ -122,9 +124,9 @@ def flash_temperature(mu, w, a, u1, u2, beta1, beta2, *, C=C_BLOK):
     mu : float
         Friction coefficient, ``>= 0`` [-].
     w : float or ndarray
-        Load per unit length [N/m].
+        Load per unit length [N/m], ``>= 0``.
     a : float or ndarray
-        Hertz contact half-width [m].
+        Hertz contact half-width [m], ``>= 0``.
     u1, u2 : float or ndarray
         Speeds of the two surfaces relative to the contact [m/s].
     beta1, beta2 : float
@@ -143,10 +145,13 @@ def flash_temperature(mu, w, a, u1, u2, beta1, beta2, *, C=C_BLOK):
     44.19
     """
     mu = _validate.nonnegative("mu", mu, "")
-    w = np.asarray(w, float)
-    a = np.asarray(a, float)
-    u1 = np.asarray(u1, float)
-    u2 = np.asarray(u2, float)
+    w = _validate.nonnegative_array("w", w, "N/m")
+    a = _validate.nonnegative_array("a", a, "m")
+    u1 = _validate.finite_array("u1", u1, "m/s")
+    u2 = _validate.finite_array("u2", u2, "m/s")
+    beta1 = _validate.positive("beta1", beta1, "W s^0.5/(m^2 K)")
+    beta2 = _validate.positive("beta2", beta2, "W s^0.5/(m^2 K)")
+    C = _validate.positive("C", C, "")
     den = np.sqrt(np.where(a > 0, a, 1.0)) * (beta1 * np.sqrt(np.abs(u1)) + beta2 * np.sqrt(np.abs(u2)))
     num = C * mu * w * np.abs(u1 - u2)
     ok = (den > 0) & (a > 0)
@@ -179,7 +184,7 @@ def scuffing_safety(T_scuff, T_bulk, dT_flash):
     >>> float(scuffing_safety(150.0, 90.0, 30.0))
     2.0
     """
-    dT = np.asarray(dT_flash, float)
-    margin = float(T_scuff) - np.asarray(T_bulk, float)
+    dT = _validate.nonnegative_array("dT_flash", dT_flash, "K")
+    margin = _validate.number("T_scuff", T_scuff, "degC") - _validate.finite_array("T_bulk", T_bulk, "degC")
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where(dT > 0, margin / np.where(dT > 0, dT, 1.0), np.inf)

@@ -58,7 +58,7 @@ def plot_p0(result, path) -> str:
     ax = axs[0, 0]
     ax.plot(deg, t["p0_hertz"] / 1e6, "-", color="C0", label="Hertz (Johnson eq. 4.45)")
     if fe:
-        ax.plot(deg, t["p0_fe"] / 1e6, ".", color="C3", ms=3, label="FE")
+        ax.plot(deg, t["p0_fe"] / 1e6, ".", color="C3", ms=3, label="FE (peak of the solved pressure)")
         axs[1, 0].plot(deg, 100 * t["err_p0"], "-", color="C3", lw=1)
         axs[1, 0].axhline(0, color="0.5", lw=0.5)
         axs[1, 0].set_ylabel("FE/Hertz - 1 (%)")
@@ -255,7 +255,7 @@ def plot_junction_p0(result, path, reference=None) -> str:
     fig, axs = plt.subplots(1, len(groups), figsize=(3.2 * len(groups) + 1.5, 3.8), squeeze=False)
     for ax, (rows, x) in zip(axs[0], groups, strict=True):
         i = j[rows]
-        ex = t["p0_nodal"][i]
+        ex = t["p0_fe"][i]
         ax.plot(x, t["p0_hertz"][i] / 1e6, "-", color="C0", label="Hertz (osculating arcs)")
         ax.plot(x, ex * (1.0 + t["exact_vs_arc_p0"][i]) / 1e6, "s", ms=3, color="C1", label="FE, arc gap")
         ax.plot(x, ex / 1e6, "o-", ms=3, lw=1, color="C3", label="FE, exact gap (sweep)")

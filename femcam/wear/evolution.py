@@ -114,7 +114,9 @@ def worn_curvature(kappa, dkappa_ds, h, h1, h2):
     >>> round(float(worn_curvature(1 / 0.02, 0.0, 1e-3, 0.0, 0.0)), 9)   # circle: 1/(rho - h)
     52.631578947
     """
-    kappa, dk, h, h1, h2 = (np.asarray(x, dtype=float) for x in (kappa, dkappa_ds, h, h1, h2))
+    kappa, dk, h, h1, h2 = (_validate.finite_array(n, x, u) for n, x, u in (
+        ("kappa", kappa, "1/m"), ("dkappa_ds", dkappa_ds, "1/m^2"), ("h", h, "m"), ("h1", h1, ""),
+        ("h2", h2, "1/m")))
     q = 1.0 - kappa * h
     return (q * (kappa * q + h2) + h1 * (dk * h + 2.0 * kappa * h1)) / (q * q + h1 * h1) ** 1.5
 
@@ -221,6 +223,7 @@ def evolution_case(scene, theta, *, k: float | None = None) -> EvolutionCase:
     InputError
         A follower other than a roller, or ``k < 0``.
     """
+    _validate.record("scene", scene, "a femcam.scene.Scene", "follower", "analyse")
     kind = type(scene.follower).__name__
     if kind != "RollerFollower":
         raise _validate.fail("follower type", getattr(scene.follower, "kind", kind), "",
@@ -570,7 +573,7 @@ def convergence_table(case: EvolutionCase, cycles: float, max_blocks: int, *,
         Depths and differences [m] and observed orders.
     """
     cycles = _validate.positive("cycles", cycles, "revolutions")
-    counts = block_counts(max_blocks)
+    counts = block_counts(_validate.integer("max_blocks", max_blocks, 1, "blocks"))
     first = evolve(case, cycles, cycles, n_grid=n_grid)       # counts[0] == 1: the linear map
     n_grid = first.x_cam.size
     res = [first] + [evolve(case, cycles, cycles / nb, n_grid=n_grid) for nb in counts[1:]]

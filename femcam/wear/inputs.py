@@ -12,7 +12,9 @@ from .. import _validate
 
 _KEYS = {
     "hertz": (("a_hertz", "a"), ("p0_hertz", "p0")),
-    "fe": (("a_fe", "a"), ("p0_fe", "p0")),
+    # the FE's fitted ellipse (a_fe, p0_fit: pi a p0 / 2 is its load); p0_fe (the solved peak)
+    # for a table without the fit
+    "fe": (("a_fe", "a"), ("p0_fit", "p0_fe", "p0")),
     # finite-length roller, the most loaded slice (femcam.wear.axial): pi a p0 / 2 = w_max
     "axial_peak": (("a_axial", "a"), ("p0_axial", "p0")),
 }
@@ -94,7 +96,8 @@ def contact_columns(source, *, pressure: str = "hertz", missing: str | None = No
                     skipped: list | None = None):
     """``(theta, a, p0, Fc)`` arrays (SI) from a SweepResult-like object or a mapping.
 
-    ``pressure="fe"`` reads ``a_fe``/``p0_fe``, ``"hertz"`` reads ``a_hertz``/``p0_hertz``; both
+    ``pressure="fe"`` reads ``a_fe``/``p0_fit`` (the FE's fitted ellipse; ``p0_fe`` without a
+    ``p0_fit`` column), ``"hertz"`` reads ``a_hertz``/``p0_hertz``; both
     fall back to plain ``a``/``p0``. Angles without contact (``Fc <= 0``) carry no load.
 
     An angle with ``Fc > 0`` but no pressure (``a`` or ``p0`` NaN or <= 0: a failed FE solve, a

@@ -73,7 +73,14 @@ import numpy as np
 from .. import _validate
 from .inputs import MISSING, WearInputWarning, _loaded_have, contact_columns
 from .slip import SlipResult
-from .surface import _ellipse_primitive, depth_per_pass, drift_sum, hertz_load_per_length, surface_depth
+from .surface import (
+    _depth_per_pass,
+    _ellipse_primitive,
+    depth_per_pass,
+    drift_sum,
+    hertz_load_per_length,
+    surface_depth,
+)
 
 __all__ = ["MISSING", "WearInputWarning", "WearMap", "_ellipse_primitive", "contact_columns",
            "depth_per_pass", "drift_sum", "hertz_load_per_length", "surface_depth", "wear_depth_per_angle",
@@ -362,6 +369,8 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
     k = _validate.nonnegative("k", k, "m^3/(N m)")
     length = _validate.positive("length", length, "m")
     cycles = _validate.nonnegative("cycles", cycles, "revolutions")
+    n_grid = _validate.optional(_validate.integer, "n_grid", n_grid, 2, "(grid points)")
+    _validate.instance("slip", slip, SlipResult)
     skipped: list = []
     theta, a, p0, Fc = contact_columns(source, pressure=pressure, missing=missing, skipped=skipped)
     n = theta.size
@@ -376,7 +385,7 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
     omega = slip.omega
     v_wear = slip.v_slip
     if k_factor is not None:  # k(lambda)/k of a lubricated scene (femcam.assess.wear_factor)
-        v_wear = slip.v_slip * _validate.finite_array("k_factor", k_factor, "")
+        v_wear = slip.v_slip * _validate.nonnegative_array("k_factor", k_factor, "")
     # close the revolution: step j runs from theta_j to theta_{j+1} (theta_n = theta_0 + 2 pi)
     thc = np.append(theta, theta[0] + 2 * np.pi)
 
@@ -428,7 +437,7 @@ def wear_map(source, slip: SlipResult, *, k, length, cycles: float = 1.0, pressu
     if pressure == "axial_peak":  # w = w_max by construction: its ratio to Fc / l is physics, not error
         load_err = 0.0
     return WearMap(
-        theta=theta, xi_cam=xi_c[:-1], depth_pass=depth_per_pass(k, w, v_wear, slip.V_cam),
+        theta=theta, xi_cam=xi_c[:-1], depth_pass=_depth_per_pass(k, w, v_wear, slip.V_cam),
         depth_at_theta=np.interp(xi_c[:-1], x_cam, depth_cam, period=perimeter),
         x_cam=x_cam, depth_cam=depth_cam, x_follower=x_f, depth_follower=depth_f, perimeter=perimeter,
         volume_cam=vol_cam, volume_follower=vol_f, volume_archard=vol_archard, conservation_error=cons,
@@ -469,10 +478,14 @@ def wear_depth_per_angle(theta, a, p0, Fc, slip: SlipResult, k, *, missing: str 
         Cam wear depth per pass [m per revolution]; ``inf`` where ``V_cam = 0`` with slip.
     """
     _validate.choice("missing", missing, ("zero", "nan", "raise"))
-    a_in, p_in, F_in = (np.asarray(x, dtype=float) for x in (a, p0, Fc))
+    _validate.finite_array("theta", theta, "rad")
+    k = _validate.nonnegative("k", k, "m^3/(N m)")
+    _validate.instance("slip", slip, SlipResult)
+    a_in, p_in, F_in = (_validate.data_array(n, x, u) for n, x, u in
+                        (("a", a, "m"), ("p0", p0, "Pa"), ("Fc", Fc, "N")))   # NaN: a failed solve
     _, a_, p_, _ = contact_columns({"theta": theta, "a": a_in, "p0": p_in, "Fc": F_in},
                                    missing="raise" if missing == "raise" else "zero")
-    h = depth_per_pass(k, hertz_load_per_length(a_, p_), slip.v_slip, slip.V_cam)
+    h = _depth_per_pass(k, hertz_load_per_length(a_, p_), slip.v_slip, slip.V_cam)
     if missing == "nan":
         loaded, have = _loaded_have(*np.broadcast_arrays(a_in, p_in, F_in))
         h = np.where(loaded & ~have, np.nan, h)

@@ -396,6 +396,8 @@ def roller_inertia(theta, s, s1, s2, Fc, *, Rb, Rr, omega, mu, J, T_drag=0.0, e=
     InputError
         ``theta`` not one uniform revolution of at least 4 angles, or a bad parameter.
     """
+    max_revolutions = _validate.integer("max_revolutions", max_revolutions, 1, "revolutions")
+    tol = _validate.positive("tol", tol, "")
     mu = _validate.nonnegative("mu", mu, "")
     J = _validate.positive("J", J, "kg m^2")
     T_drag = _validate.nonnegative("T_drag", T_drag, "N m")
@@ -557,6 +559,8 @@ def follower_slip(follower, theta, s, s1, s2, *, omega, Fc=None, roller_model: s
         An unknown follower or roller model, a ``tip_radius`` on another follower, or ``Fc``
         missing for the inertia model.
     """
+    srr = _validate.in_range("srr", srr, -2.0, 2.0, "", lo_open=True, hi_open=True)
+    mu = _validate.nonnegative("mu", mu, "")
     kind = type(follower).__name__
     e = float(getattr(follower, "e", 0.0))
     if kind == "KnifeEdgeFollower":

@@ -65,7 +65,13 @@ def depth_per_pass(k, w, v_slip, V_transport):
     >>> float(depth_per_pass(1e-17, 1e5, 0.2, 1.0))     # k w (slip per rolled length)
     2e-13
     """
-    k = _validate.nonnegative("k", k, "m^3/(N m)")
+    return _depth_per_pass(_validate.nonnegative("k", k, "m^3/(N m)"), _validate.data_array("w", w, "N/m"),
+                           _validate.finite_array("v_slip", v_slip, "m/s"),
+                           _validate.finite_array("V_transport", V_transport, "m/s"))
+
+
+def _depth_per_pass(k, w, v_slip, V_transport):
+    """:func:`depth_per_pass` without the input checks."""
     w = np.clip(np.nan_to_num(np.asarray(w, dtype=float), nan=0.0), 0.0, None)
     v = np.abs(np.asarray(v_slip, dtype=float))
     Vt = np.abs(np.asarray(V_transport, dtype=float))
@@ -116,12 +122,14 @@ def surface_depth(x, xi, a, p0, v_slip, dt, *, k, period=None, chunk: int = 256)
         Wear depth on ``x`` [m].
     """
     k = _validate.nonnegative("k", k, "m^3/(N m)")
-    x = np.asarray(x, dtype=float)
-    xi = np.asarray(xi, dtype=float)
-    a = np.nan_to_num(np.asarray(a, dtype=float), nan=0.0)
-    p0 = np.nan_to_num(np.asarray(p0, dtype=float), nan=0.0)
-    v = np.abs(np.asarray(v_slip, dtype=float))
-    dt = np.asarray(dt, dtype=float)
+    x = _validate.finite_array("x", x, "m")
+    xi = _validate.finite_array("xi", xi, "m")
+    a = np.nan_to_num(_validate.data_array("a", a, "m"), nan=0.0)        # NaN: no load
+    p0 = np.nan_to_num(_validate.data_array("p0", p0, "Pa"), nan=0.0)
+    v = np.abs(_validate.data_array("v_slip", v_slip, "m/s"))
+    dt = _validate.data_array("dt", dt, "s")
+    period = _validate.optional(_validate.positive, "period", period, "m")
+    chunk = _validate.integer("chunk", chunk, 1, "steps")
     live = (a > 0) & (p0 > 0) & (v > 0) & (dt > 0)
     idx = np.flatnonzero(live)
     h = np.zeros_like(x)
@@ -187,7 +195,7 @@ def drift_sum(h, period: float, drift: float, cycles: float) -> np.ndarray:
     >>> drift_sum(h, 4.0, 4.0, 3).round(12).tolist()       # D = period: phase-locked, 3 h
     [3.0, 0.0, 0.0, 0.0]
     """
-    h = np.asarray(h, dtype=float)
+    h = _validate.finite_array("h", h, "m")
     period = _validate.positive("period", period, "m")
     drift = _validate.number("drift", drift, "m")
     cycles = _validate.nonnegative("cycles", cycles, "revolutions")

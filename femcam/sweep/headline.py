@@ -1,0 +1,114 @@
+"""What the sweep's headline columns are, and where they cannot be taken at face value.
+
+The headline contact model of every row is the 2D contact of two homogeneous solid bodies at
+``Fc / length`` (:mod:`femcam.sweep.table`, "which column answers what"). Two things are said
+per row in ``flags``, never left silent:
+
+* :func:`omitted_physics` -- the scene holds physics that model leaves out (a coating, a ring
+  on a pin or needles, a cam on its shaft, a finite contact length); the flag also goes into the
+  summary line and ``report.md`` (``provenance["extras"]["headline"]``);
+* :func:`edge_flags` -- an FE surface extreme (``surf_*``) that is a value of the
+  discretisation's contact-edge singularity, not a result.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..bodies.cam_rows import has_cam_bore
+from ..fe import ContactResult
+from ..halfspace.rows import has_finite_length
+from .providers import has_support
+
+#: FE surface error away from the contact edge, as a fraction of p0: the FE surface sx, sz, txz
+#: of a Hertzian row (a/h = 10, steel, stick and full sliding at mu = 0.1) differ from the Hertz
+#: surface field (Johnson 1985 §7.1) by <= 14 MPa at p0 = 742 MPa (1.9 %) beyond one element
+#: from the edge; within it the edge singularity of the discretisation gives up to 27 MPa of
+#: txz where the contact carries none (docs/sweep.md, "Surface columns at the contact edge")
+SURF_EDGE_TOL = 0.02
+
+
+def edge_flags(r: ContactResult) -> list[str]:
+    """``surf_edge_dominated:<column>`` for each FE surface extreme that lies within one element
+    of the contact edge and exceeds what the contact can carry by more than :data:`SURF_EDGE_TOL`
+    ``p0``: a value of the discretisation's edge singularity, not a result.
+
+    What the contact can carry, from bounds that hold for every slip state: ``|txz| <= max |q|``
+    (the surface traction boundary condition, ``q`` the solved traction), ``sz >= -p0``, and
+    ``sx`` within the Hertz surface field at full sliding (Johnson 1985 §7.1, seed 002 eqs. 5-7;
+    the tensile peak ``2 mu p0`` at the trailing edge bounds the partial-slip one).
+
+    Parameters
+    ----------
+    r : femcam.fe.ContactResult
+        The solved load case (``x``, ``p``, ``q``, ``a``, ``x0`` [m, Pa], cam surface stresses).
+
+    Returns
+    -------
+    list of str
+        The flags (empty when no extreme is edge-dominated).
+    """
+    S = r.surface_by_body.get("cam")
+    if S is None or not S.sx.size or r.x.size < 2 or not r.a > 0:
+        return []
+    p0, h = float(r.p0_nodal), float(np.median(np.diff(r.x)))
+    # Hertz surface field at full sliding (seed 002 eqs. 5-7): sx = -p0 (sqrt(1 - X^2) + 2 mu X)
+    # inside, so min sx = -p0 sqrt(1 + 4 mu^2); the tensile peak is 2 mu p0 at the trailing edge
+    sx_max, sx_min = 2.0 * r.mu * p0, -p0 * math.sqrt(1.0 + 4.0 * r.mu**2)
+    q = float(np.max(np.abs(r.q))) if r.q is not None and np.size(r.q) else 0.0
+    near = np.abs(np.abs(S.x - r.x0) - r.a) <= h
+    tol = SURF_EDGE_TOL * p0
+    out = []
+    for name, v, j, limit in (("surf_sx_max", S.sx, np.argmax(S.sx), sx_max),
+                              ("surf_sx_min", -S.sx, np.argmin(S.sx), -sx_min),
+                              ("surf_sz_min", -S.sz, np.argmin(S.sz), p0),
+                              ("surf_txz_absmax", np.abs(S.txz), np.argmax(np.abs(S.txz)), q)):
+        if near[j] and v[j] > limit + tol:
+            out.append(f"surf_edge_dominated:{name}")
+    return out
+
+
+def omitted_physics(scene) -> tuple[tuple[str, str], ...]:
+    """What the scene holds that the sweep's headline contact model (the 2D two-body contact of
+    homogeneous solid bodies at ``Fc / length``) leaves out: ``(flag, sentence)`` pairs. The
+    flag goes into the ``flags`` of every ``ok`` row, the sentence into the summary line and
+    ``report.md``, so a headline never omits physics silently.
+
+    A hardened case is not listed: it changes no elastic constant, so the headline contact is
+    the case-hardened body's; the case's strength is checked in the ``case_*`` columns.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept.
+
+    Returns
+    -------
+    tuple of (str, str)
+        ``headline_omits_coating``, ``headline_solid_roller``, ``headline_solid_cam``,
+        ``headline_2d_mean_load`` as they apply, each with its sentence.
+    """
+    out = []
+    for body, tabs in (getattr(scene, "layers", None) or {}).items():
+        if "coating" in tabs:
+            c = tabs["coating"]
+            out.append(("headline_omits_coating",
+                        f"headline_omits_coating: the {body}'s {c['thickness'] * 1e6:g} um coating "
+                        f"(E {c['E'] / 1e9:g} GPa) is not in the contact FE that answers a_fe, p0_fe "
+                        "and the stresses (uncoated bodies); its own stresses are the interface_* "
+                        "and coating_* columns"))
+    if has_support(scene):
+        out.append(("headline_solid_roller",
+                    f"headline_solid_roller: the roller runs on {scene.bodies['support']}, the "
+                    "headline contact is the solid roller's; the ring's own contact is ring_p0_MPa"))
+    if has_cam_bore(scene):
+        out.append(("headline_solid_cam",
+                    "headline_solid_cam: the cam sits on its shaft, the headline contact is a solid "
+                    "cam's; the cam disk is in the cam_bore_* and shaft_* columns"))
+    if has_finite_length(scene):
+        out.append(("headline_2d_mean_load",
+                    "headline_2d_mean_load: finite length, the headline is the 2D contact at the mean "
+                    "load Fc / length; the most loaded slice is p_axial_peak_MPa and fe_slice_*"))
+    return tuple(out)
