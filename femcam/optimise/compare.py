@@ -53,6 +53,8 @@ def compare_laws(scene, *, optimum=None, laws=STANDARD_LAWS, constraints=None) -
         largest Archard cam wear depth per revolution at the contact (m; NaN when the scene's
         slip model is not the pointwise slide-to-roll one).
     """
+    if not (hasattr(scene, "program") and hasattr(scene, "with_law")):
+        raise _validate.fail("scene", scene, "", "must be a femcam.scene.Scene")
     lim = dict(constraints or {})
     names = [_validate.choice("laws", n, LAW_NAMES) for n in laws]
     variants = [(n, scene.with_law(n)) for n in names]

@@ -12,11 +12,12 @@ worst angle) when asked.
 from __future__ import annotations
 
 import math
+import os
 
 import numpy as np
 
 from .. import _validate
-from ..errors import FemcamError, InputError
+from ..errors import FemcamError, InputError, SceneError
 from ..scene import load_scene
 from ..sweep import sweep
 from .chain import CONSTRAINT_UNITS, OBJECTIVE_UNITS, OBJECTIVES, constraint_value
@@ -161,7 +162,8 @@ def optimise(scene_or_path, *, objective: str = "p0", variables, constraints=Non
         no feasible point in the bounds (names the constraint that is infeasible on its own, or
         says that only their combination is).
     """
-    scene = scene_or_path if hasattr(scene_or_path, "program") else load_scene(scene_or_path)
+    scene = _scene(scene_or_path)
+    maxiter = _validate.integer("maxiter", maxiter, 1)
     if objective not in OBJECTIVES:
         raise InputError(f"objective = {objective!r}: unknown; use one of {list(OBJECTIVES)}")
     limits = _limits(constraints or {})
@@ -223,6 +225,19 @@ def _result(prob, design, res, fine, start_value, records, iters, rounds, gap, s
                           theta_worst=theta_worst, optimiser="SLSQP", iterations=iters, nfev=prob.nfev,
                           converged=converged, message=msg, starts=tuple(records), spread=spread,
                           exchange_rounds=rounds, grid_gap=gap, fe=fe)
+
+
+def _scene(scene_or_path):
+    """The scene of ``optimise``'s first argument (a Scene or a TOML path)."""
+    if hasattr(scene_or_path, "program") and hasattr(scene_or_path, "follower"):
+        return scene_or_path
+    if not isinstance(scene_or_path, (str, os.PathLike)):
+        raise _validate.fail("scene_or_path", scene_or_path, "",
+                             "must be a femcam.scene.Scene or a scene file path")
+    try:
+        return load_scene(scene_or_path)
+    except SceneError as exc:
+        raise InputError(f"scene_or_path = {scene_or_path!r}: {exc}") from None
 
 
 def _fmt_limit(name: str, value: float) -> str:
