@@ -18,7 +18,8 @@ from ..io import provenance
 from ..optimise import OBJECTIVES, BezierRise, compare_laws, optimise
 from ..optimise.outputs import parse_vary, write_outputs
 from ..scene import load_scene
-from ._common import add_scene_out, out_dir, plain
+from ._common import add_overwrite, add_scene_out, out_dir, plain, refuse_non_empty
+from ._flags import Range, add_number
 
 
 def register(subparsers) -> None:
@@ -36,23 +37,34 @@ def register(subparsers) -> None:
     p.add_argument("--vary", action="append", required=True, metavar="NAME=LO:HI",
                    help="design variable and bounds: base_radius_mm, roller_radius_mm, rise_angle_deg, "
                         "control_point_<i> or control_points (every free Bezier ordinate); repeatable")
-    p.add_argument("--phi-max-deg", type=float, default=30.0, help="pressure-angle limit (deg, default 30)")
-    p.add_argument("--rho-min-mm", type=float, default=0.0,
-                   help="smallest convex cam radius (mm; default 0 = no undercut)")
-    p.add_argument("--liftoff-rpm", type=float, default=None, help="no lift-off up to this speed (rpm)")
-    p.add_argument("--safety-min", type=float, default=None,
-                   help="smallest safety factor of every assessment criterion (needs the scene's data)")
-    p.add_argument("--lambda-min", type=float, default=None, help="smallest film ratio lambda (assessment)")
-    p.add_argument("--degree", type=int, default=9, help="Bezier degree when control points vary (default 9)")
-    p.add_argument("--zero-derivatives", type=int, default=2,
-                   help="derivatives that vanish at each end of the Bezier rise (default 2: v, a)")
-    p.add_argument("--starts", type=int, default=3, help="SLSQP starts (default 3)")
+    add_number(p, "--phi-max-deg", Range("deg", 0.0, 90.0, lo_open=True, hi_open=True,
+                                         why="a pressure angle of 90 deg jams the follower"),
+               default=30.0, help="pressure-angle limit (default 30)")
+    add_number(p, "--rho-min-mm", Range("mm", 0.0, 1000.0, why="the scene's radius range"), default=0.0,
+               help="smallest convex cam radius (default 0 = no undercut)")
+    add_number(p, "--liftoff-rpm", Range("rpm", 0.0, 1e5, lo_open=True, why="the scene's speed range"),
+               default=None, help="no lift-off up to this speed")
+    add_number(p, "--safety-min", Range("", 0.0, 100.0, lo_open=True, why="a safety factor > 0"),
+               default=None, help="smallest safety factor of every assessment criterion (needs the "
+                                  "scene's data)")
+    add_number(p, "--lambda-min", Range("", 0.0, 100.0, lo_open=True, why="a film ratio > 0"),
+               default=None, help="smallest film ratio lambda (assessment)")
+    add_number(p, "--degree", Range("(Bezier degree)", 3, 30, whole=True,
+                                    why="the rise's continuity needs >= 3; above 30 the basis is "
+                                        "ill-conditioned"),
+               default=9, help="Bezier degree when control points vary (default 9)")
+    add_number(p, "--zero-derivatives", Range("(derivatives)", 0, 4, whole=True, why="v, a, j, snap at most"),
+               default=2, help="derivatives that vanish at each end of the Bezier rise (default 2: v, a)")
+    add_number(p, "--starts", Range("(starts)", 1, 50, whole=True, why="each start costs one SLSQP run"),
+               default=3, help="SLSQP starts (default 3)")
     p.add_argument("--no-fe", action="store_true", help="skip the FE check of the optimum")
+    add_overwrite(p)
     p.set_defaults(func=_run)
 
 
 def _run(args) -> int:
     out_dir(args.out, create=False)  # checked before any work, created below
+    refuse_non_empty(args.out, args.overwrite)  # the rule of every subcommand, before the work
     scene = load_scene(args.scene)
     bez = BezierRise(degree=args.degree, zero_derivatives=args.zero_derivatives)
     variables = [v for spec in args.vary for v in parse_vary(spec, bez.free)]
