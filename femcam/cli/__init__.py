@@ -19,7 +19,7 @@ from ..errors import FemcamError
 from ._common import os_error_line
 
 #: subcommand modules, in the order they appear in ``femcam --help``
-SUBCOMMANDS = ("run", "sweep", "wear", "synth", "dynamics", "assess")
+SUBCOMMANDS = ("run", "sweep", "wear", "synth", "dynamics", "assess", "study")
 
 
 def _versions() -> str:

@@ -64,7 +64,7 @@ def _probe(raw: dict, spec: StudySpec, path: str) -> None:
                 _v.build_scene(_v.apply(raw, {var.key: val}), source_path=path, label=f"{var.key}={val}")
             except SceneError as exc:
                 raise InputError(f"vary {var.key}={val}: refused by the scene checker with the other keys "
-                                 f"at the base scene's values: {exc}".replace("\n", "; ")) from None
+                                 f"at the base scene's values: {' '.join(str(exc).split())}") from None
 
 
 def _batches(items: list, workers: int, batch_size: int | None) -> list:
@@ -168,7 +168,7 @@ def run_study(scene, spec: StudySpec, *, constraints: Constraints | None = None,
         try:
             scenes[h] = _v.build_scene(rv, source_path=path, label=f"variant {i}")
         except SceneError as exc:
-            refused[h] = str(exc).replace("\n", "; ")
+            refused[h] = " ".join(str(exc).split())
     todo = [(h, s) for h, s in scenes.items()]
     n_reused = len(first) - len(todo) - len(refused)
     kw = _where(scheduler, workers)
