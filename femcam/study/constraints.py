@@ -119,7 +119,7 @@ def margins(rec: dict, c: Constraints, jump_factor_hi: float) -> dict:
         m["p0"] = 1.0 - rec["p0_max"] / c.p0_limit
     if rec.get("has_train"):
         jump = rec["rpm_jump"] if math.isfinite(rec["rpm_jump"]) else jump_factor_hi * rec["rpm"]
-        if not rec.get("reason"):
+        if "jump speed not computed" not in rec.get("reason", ""):
             m["jump"] = jump / (c.jump_factor * rec["rpm"]) - 1.0
     return m
 

@@ -8,7 +8,9 @@ undercut check is the scene's own dense check on 7200 angles):
   and ``tau1_max`` (Pa) from the Hertz shape factors (:func:`femcam.hertz.conformity.shape_factors`:
   the maxima scale with p0, Johnson 1985 section 7.1);
 * ``phi_max`` (rad, max ``|phi|``), ``rho_min`` (m, the smallest convex cam radius of
-  curvature), ``undercut`` (1/0), ``Fc_min`` (N, < 0: lift-off), ``cam_radius_max`` (m, the
+  curvature), ``undercut`` (1/0; also 1 where a concave cam radius is smaller than the
+  roller's, ``1/R1 + 1/R2 <= 0``: the roller does not fit, and those angles get no Hertz
+  values), ``Fc_min`` (N, < 0: lift-off), ``cam_radius_max`` (m, the
   largest distance of the cam surface from its axis: the cam's size, ``Rb + h`` for an in-line
   roller);
 * ``sf_min`` (the assessment's smallest safety factor, :func:`femcam.assess.assess`) and
@@ -140,12 +142,19 @@ def evaluate(scene, options: EvalOptions) -> dict:
                    Fc_min=float(np.min(st.Fc)), Fc_max=float(np.max(st.Fc)), rpm=float(scene.rpm),
                    rho_min=float(np.min(convex)) if convex.size else math.inf,
                    cam_radius_max=float(np.max(np.hypot(st.profile.x, st.profile.y))))
-        on = st.Fc > 0
+        R2 = _contact_radius(scene)
+        with np.errstate(divide="ignore"):
+            conformal = (1.0 / rho + 1.0 / R2) <= 0.0  # a concave cam tighter than the roller
+        if np.any(conformal):  # the roller does not fit: an undercut in the concave sense
+            rec["undercut"] = 1.0
+            rec["reason"] = (f"no Hertz contact at {int(conformal.sum())} angles: the concave cam radius "
+                             "is smaller than the follower's (1/R1 + 1/R2 <= 0)")
+        on = (st.Fc > 0) & ~conformal
         if not np.any(on):
-            raise FemcamError("the follower is off the cam at every angle")
+            raise FemcamError("no contact angle: the follower is off the cam or does not fit at every angle")
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", HertzValidityWarning)  # a/R flagged, not refused
-            hc = LineContact(F=st.Fc[on], length=scene.length, R1=rho[on], R2=_contact_radius(scene),
+            hc = LineContact(F=st.Fc[on], length=scene.length, R1=rho[on], R2=R2,
                              cam=scene.cam, roller=scene.roller, mu=scene.mu, plane=scene.plane)
             p0 = np.asarray(hc.p0, float) * np.ones(int(on.sum()))
             i = int(np.argmax(p0))
@@ -156,7 +165,8 @@ def evaluate(scene, options: EvalOptions) -> dict:
                        von_mises_max=float(p0[i] * f["von_mises"][0]), tau1_max=float(p0[i] * f["tau1"][0]))
         if not rec["undercut"]:
             rec["sf_min"], rec["lambda_min"] = _assessment(scene, theta)
-        rec["rpm_jump"], rec["reason"] = _jump(scene, options.jump_factor_hi)
+        rec["rpm_jump"], note = _jump(scene, options.jump_factor_hi)
+        rec["reason"] = "; ".join(t for t in (rec["reason"], note) if t)
     except FemcamError as exc:
         rec.update(status="failed", reason=f"{type(exc).__name__}: {exc}".replace("\n", " "))
     return rec

@@ -127,7 +127,8 @@ def apply(raw: dict, values: dict) -> dict:
 
 
 def content_hash(raw: dict, options: dict) -> str:
-    """SHA-256 of a variant: its scene mapping and the evaluation options (canonical JSON).
+    """SHA-256 of a variant: its scene mapping and the evaluation options (canonical JSON,
+    integers as floats).
 
     Parameters
     ----------
@@ -142,8 +143,19 @@ def content_hash(raw: dict, options: dict) -> str:
         Hex digest.
     """
     body = {k: v for k, v in raw.items() if k not in ("name", "description", "source")}
-    text = json.dumps({"scene": body, "options": options}, sort_keys=True, default=str)
+    text = json.dumps({"scene": _canonical(body), "options": options}, sort_keys=True, default=str)
     return hashlib.sha256(text.encode()).hexdigest()
+
+
+def _canonical(v):
+    """Numbers as floats (``10`` mm and ``10.0`` mm are one variant), recursively."""
+    if isinstance(v, dict):
+        return {k: _canonical(x) for k, x in v.items()}
+    if isinstance(v, list):
+        return [_canonical(x) for x in v]
+    if isinstance(v, int) and not isinstance(v, bool):
+        return float(v)
+    return v
 
 
 def _value(v) -> str:
