@@ -91,6 +91,8 @@ def _contact_radius(scene) -> float:
 
 def _assessment(scene, theta) -> tuple:
     """(smallest safety factor, smallest lambda) of the assessment, NaN where not available."""
+    if not scene.tribology:  # no assessment data: nothing to assess (a third of the time saved)
+        return math.nan, math.nan
     lub = bool(scene.tribology.get("lubricant"))
     try:
         A = assess(scene, theta, lubricated=lub)

@@ -12,6 +12,7 @@ from __future__ import annotations
 import hashlib
 import json
 import math
+import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -156,19 +157,8 @@ def run_study(scene, spec: StudySpec, *, constraints: Constraints | None = None,
 
     combos = spec.variants()
     hashes, first, scenes, refused = [], {}, {}, {}
-    for i, vals in enumerate(combos):
-        rv = _v.apply(raw, vals)
-        h = _v.content_hash(rv, opt)
-        hashes.append(h)
-        if h in first:
-            continue
-        first[h] = i
-        if store.get(h) is not None:
-            continue
-        try:
-            scenes[h] = _v.build_scene(rv, source_path=path, label=f"variant {i}")
-        except SceneError as exc:
-            refused[h] = " ".join(str(exc).split())
+    with tempfile.TemporaryDirectory(prefix="femcam-study-") as tmp:  # the client's, not a worker's
+        _variants(raw, combos, opt, store, path, tmp, hashes, first, scenes, refused)
     todo = [(h, s) for h, s in scenes.items()]
     n_reused = len(first) - len(todo) - len(refused)
     kw = _where(scheduler, workers)
@@ -198,6 +188,23 @@ def run_study(scene, spec: StudySpec, *, constraints: Constraints | None = None,
         return res
     paths = write_outputs(res, out, scene_toml=text, plots=plots)
     return StudyResult(**{**res.__dict__, "paths": paths})
+
+
+def _variants(raw, combos, opt, store, path, tmp, hashes, first, scenes, refused) -> None:
+    """Hash every variant; load the distinct ones not in the store (a refusal is recorded)."""
+    for i, vals in enumerate(combos):
+        rv = _v.apply(raw, vals)
+        h = _v.content_hash(rv, opt)
+        hashes.append(h)
+        if h in first:
+            continue
+        first[h] = i
+        if store.get(h) is not None:
+            continue
+        try:
+            scenes[h] = _v.build_scene(rv, source_path=path, label=f"variant {i}", tmpdir=tmp)
+        except SceneError as exc:
+            refused[h] = " ".join(str(exc).split())
 
 
 def _table(spec, combos, hashes, first, store, refused, constraints, options) -> dict:

@@ -221,7 +221,7 @@ def to_toml(raw: dict) -> str:
     return "\n".join(lines) + "\n"
 
 
-def build_scene(raw: dict, *, source_path: str = "", label: str = "variant"):
+def build_scene(raw: dict, *, source_path: str = "", label: str = "variant", tmpdir=None):
     """Load a variant's mapping with the public scene loader (all scene checks).
 
     Parameters
@@ -232,6 +232,9 @@ def build_scene(raw: dict, *, source_path: str = "", label: str = "variant"):
         The base scene file (kept as the scene's ``source_path``).
     label : str
         Names the variant in a loader message instead of the temporary file.
+    tmpdir : str or Path, optional
+        A directory of the client for the temporary TOML (reused across variants: a study
+        makes one); default: a fresh temporary directory.
 
     Returns
     -------
@@ -243,11 +246,15 @@ def build_scene(raw: dict, *, source_path: str = "", label: str = "variant"):
     SceneError
         The loader's message (every problem, dotted key, value and unit) for this variant.
     """
-    with tempfile.TemporaryDirectory(prefix="femcam-study-") as tmp:
-        path = Path(tmp) / "variant.toml"
-        path.write_text(to_toml(raw), encoding="utf-8")
-        try:
-            scene = load_scene(path)
-        except SceneError as exc:
-            raise SceneError(str(exc).replace(str(path), label)) from None
+    if tmpdir is None:
+        with tempfile.TemporaryDirectory(prefix="femcam-study-") as tmp:
+            return build_scene(raw, source_path=source_path, label=label, tmpdir=tmp)
+    path = Path(tmpdir) / "variant.toml"
+    path.write_text(to_toml(raw), encoding="utf-8")
+    try:
+        scene = load_scene(path)
+    except SceneError as exc:
+        raise SceneError(str(exc).replace(str(path), label)) from None
+    finally:
+        path.unlink(missing_ok=True)
     return dataclasses.replace(scene, source_path=str(source_path))
