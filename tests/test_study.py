@@ -194,6 +194,14 @@ def test_cli_study(tmp_path, capsys):
     assert main(["study", str(SEED002), "--vary", "follower.base_radius_mm=9:12:1", "--out", str(out)]) == 1
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "--resume" in err[0]
+    # a bad key or flag is refused before anything is written: the directory is not created
+    bad = tmp_path / "n"
+    assert main(["study", str(SEED002), "--vary", "follower.base_radus_mm=9,10", "--out", str(bad)]) == 1
+    assert main(["study", str(SEED002), "--vary", "follower.base_radius_mm=9,10", "--angles-per-rev", "5",
+                 "--out", str(tmp_path / "n")]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert "did you mean follower.base_radius_mm" in err[0] and "--angles-per-rev = 5" in err[1]
+    assert not (tmp_path / "n").exists()
 
 
 @pytest.mark.slow

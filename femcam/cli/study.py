@@ -61,7 +61,8 @@ def register(subparsers) -> None:
     p.add_argument("--angles-per-rev", type=int, default=720, help="cam angles per revolution (default 720)")
     p.add_argument("--objective", choices=tuple(_OBJECTIVE), default="p0", help="ranks the FE candidates")
     p.add_argument("--fe-top", type=int, default=0, metavar="K", help="FE sweep of the K best feasible")
-    p.add_argument("--fe-select", choices=("objective", "pareto"), default="objective")
+    p.add_argument("--fe-select", choices=("objective", "pareto"), default="objective",
+                   help="FE candidates: the best feasible by --objective (default) or the Pareto set")
     p.add_argument("--fe-angles-deg", default="-2,-1,0,1,2", metavar="D1,D2,...",
                    help="FE angles around each candidate's Hertz worst angle (deg)")
     p.add_argument("--resume", action="store_true", help="continue the study in --out")
@@ -100,13 +101,20 @@ def _run(args) -> int:
     workers = _validate.workers("--workers", args.workers)
     workers = os.cpu_count() or 1 if workers == "auto" else workers
     _validate.positive("--phi-max-deg", args.phi_max_deg, "deg")
+    for flag, unit in (("sf_min", ""), ("jump_factor", "x operating speed"), ("lambda_min", ""),
+                       ("p0_max_MPa", "MPa")):
+        if getattr(args, flag) is not None:
+            _validate.positive("--" + flag.replace("_", "-"), getattr(args, flag), unit)
+    _validate.nonnegative("--rho-min-mm", args.rho_min_mm, "mm")
+    _validate.integer("--angles-per-rev", args.angles_per_rev, 36, "angles")
+    _validate.integer("--fe-top", args.fe_top, 0, "variants")
     if args.phi_max_deg >= 90.0:
         raise _validate.fail("--phi-max-deg", args.phi_max_deg, "deg", "must be < 90")
     cons = Constraints(phi_limit=math.radians(args.phi_max_deg), rho_limit=args.rho_min_mm * 1e-3,
                        liftoff=not args.allow_liftoff, sf_limit=args.sf_min, lambda_limit=args.lambda_min,
                        p0_limit=None if args.p0_max_MPa is None else args.p0_max_MPa * 1e6,
                        jump_factor=args.jump_factor)
-    out = out_dir(args.out)
+    out = out_dir(args.out, create=False)  # checked now, created once the keys and values pass
     fe = FEOptions(top=args.fe_top, select=args.fe_select, offsets=_offsets(args.fe_angles_deg))
     opts = EvalOptions(n_angles=args.angles_per_rev)
     res = run_study(args.scene, spec, constraints=cons, options=opts, fe=fe,

@@ -39,6 +39,7 @@ class RecordStore:
             return
         if Path(root).exists() and not Path(root).is_dir():
             raise InputError(f"out = {root}: exists and is not a directory")
+        Path(root).mkdir(parents=True, exist_ok=True)
         if self.dir.exists() and any(self.dir.iterdir()):
             if overwrite:
                 shutil.rmtree(self.dir)
