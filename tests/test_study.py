@@ -73,6 +73,16 @@ def test_grid_and_lhs_variants():
                                 lhs=n, seed=3).variants()
 
 
+def test_control_points_reproduce_the_named_bezier_laws():
+    """Bernstein control points [0,0,0,1,1,1] and [0,0,0,0,1,1,1,1] are the laws bezier5 and
+    bezier7 (seed 002 eq. 12): a control-point study gives the named-law rows exactly."""
+    cp = run_study(SEED002, StudySpec.parse(["program.law=null",
+                                             "program.control_points=[0,0,0,1,1,1];[0,0,0,0,1,1,1,1]"]))
+    named = run_study(SEED002, StudySpec.parse(["program.law=bezier5,bezier7"]))
+    for k in ("p0_max", "phi_max", "rho_min", "Fc_min"):
+        np.testing.assert_allclose(cp.table[k], named.table[k], rtol=1e-12, err_msg=k)
+
+
 def test_toml_round_trip_of_every_example():
     """The variant writer gives back exactly what tomllib parsed (every example scene)."""
     for f in sorted((ROOT / "examples").glob("*.toml")):

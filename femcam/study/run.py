@@ -1,6 +1,7 @@
 """``run_study``: the phases of a design study.
 
-prepare (base scene, keys, each value checked alone by the scene loader: refused up front) ->
+prepare (base scene, keys, each value checked by the scene loader with the other varied keys at
+their first values: refused up front) ->
 variants (mapping, content hash, loaded scene; a combination the loader refuses is a
 ``refused`` row) -> evaluate the distinct variants not in the store (Hertz chain, in batches,
 serially, in local processes or on Dask; records stored atomically as they arrive) -> table
@@ -53,7 +54,10 @@ def _base(scene):
 
 
 def _probe(raw: dict, spec: StudySpec, path: str) -> None:
-    """Each value of each key, alone on the base scene, through the loader: refused up front."""
+    """Each value of each key, with the other varied keys at their first values (so coupled
+    keys such as ``program.law=bezier`` and its control points are probed together), through
+    the loader: a value refused there is refused up front."""
+    firsts = {v.key: v.first() for v in spec.vary}
     for var in spec.vary:
         _v.check_key(raw, var.key)
         probes = var.probes()
@@ -62,10 +66,11 @@ def _probe(raw: dict, spec: StudySpec, path: str) -> None:
             probes = tuple(probes[i] for i in pick)
         for val in probes:
             try:
-                _v.build_scene(_v.apply(raw, {var.key: val}), source_path=path, label=f"{var.key}={val}")
+                _v.build_scene(_v.apply(raw, {**firsts, var.key: val}), source_path=path,
+                               label=f"{var.key}={val}")
             except SceneError as exc:
-                raise InputError(f"vary {var.key}={val}: refused by the scene checker with the other keys "
-                                 f"at the base scene's values: {' '.join(str(exc).split())}") from None
+                raise InputError(f"vary {var.key}={val}: refused by the scene checker with the other varied "
+                                 f"keys at their first values: {' '.join(str(exc).split())}") from None
 
 
 def _batches(items: list, workers: int, batch_size: int | None) -> list:
@@ -91,7 +96,8 @@ def _value_column(vals: list):
     """A varied key's column: float when every value is a number, else text (lists as JSON)."""
     if all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in vals):
         return np.asarray(vals, float), True
-    return np.array([json.dumps(v) if isinstance(v, list) else str(v) for v in vals], dtype=str), False
+    text = [json.dumps(v) if isinstance(v, list) or v is None else str(v) for v in vals]
+    return np.array(text, dtype=str), False
 
 
 def run_study(scene, spec: StudySpec, *, constraints: Constraints | None = None,

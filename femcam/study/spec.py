@@ -12,6 +12,8 @@ VALUES syntax (one ``--vary`` each):
 ``20:40``                   Latin hypercube only (``--lhs N``): the range sampled
 ``bezier5,bezier7,9.5``     a list (numbers where they parse, else text: law names)
 ``[0,0,0,1,1,1];[0,0,1,1]`` a list of lists (JSON, ``;``-separated): whole control-point lists
+``null``                    (in a list) the key is removed: ``program.law=null`` with
+                            ``program.control_points=...`` (the scene takes one or the other)
 =========================== ====================================================================
 """
 
@@ -84,6 +86,8 @@ class Variable:
 def _number(text: str):
     """``text`` as an int or float when it parses, else the stripped text."""
     t = text.strip()
+    if t == "null":  # remove the key from the variant (law=null with control_points=[...])
+        return None
     try:
         v = float(t)
     except ValueError:

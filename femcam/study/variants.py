@@ -97,7 +97,7 @@ def apply(raw: dict, values: dict) -> dict:
     raw : dict
         The parsed base scene file.
     values : dict
-        ``{dotted key: value}`` in the scene file's units.
+        ``{dotted key: value}`` in the scene file's units; None removes the key.
 
     Returns
     -------
@@ -112,6 +112,8 @@ def apply(raw: dict, values: dict) -> dict:
             node = _child(node, p)
         if isinstance(node, list):
             node[int(leaf)] = val
+        elif val is None:  # "null": the variant has no such key
+            node.pop(leaf, None)
         else:
             node[leaf] = val
     varied = {int(m.group(1)) for k in values if (m := _BETA.match(k))}
