@@ -59,6 +59,8 @@ def register(subparsers) -> None:
     p.add_argument("--jump-factor", type=float, default=1.0,
                    help="jump speed must exceed this multiple of the operating speed (default 1)")
     p.add_argument("--angles-per-rev", type=int, default=720, help="cam angles per revolution (default 720)")
+    p.add_argument("--wear", action="store_true",
+                   help="also the Archard cam wear depth per revolution (about 0.15 s per variant)")
     p.add_argument("--objective", choices=tuple(_OBJECTIVE), default="p0", help="ranks the FE candidates")
     p.add_argument("--fe-top", type=int, default=0, metavar="K", help="FE sweep of the K best feasible")
     p.add_argument("--fe-select", choices=("objective", "pareto"), default="objective",
@@ -91,8 +93,9 @@ def _command_line(args) -> str:
                  "fe_angles_deg"):
         if getattr(args, flag) is not None:
             parts += ["--" + flag.replace("_", "-"), str(getattr(args, flag))]
-    parts += [f for f, on in (("--allow-liftoff", args.allow_liftoff), ("--resume", args.resume),
-                              ("--overwrite", args.overwrite), ("--no-plots", args.no_plots)) if on]
+    parts += [f for f, on in (("--allow-liftoff", args.allow_liftoff), ("--wear", args.wear),
+                              ("--resume", args.resume), ("--overwrite", args.overwrite),
+                              ("--no-plots", args.no_plots)) if on]
     return shlex.join(parts)
 
 
@@ -116,7 +119,7 @@ def _run(args) -> int:
                        jump_factor=args.jump_factor)
     out = out_dir(args.out, create=False)  # checked now, created once the keys and values pass
     fe = FEOptions(top=args.fe_top, select=args.fe_select, offsets=_offsets(args.fe_angles_deg))
-    opts = EvalOptions(n_angles=args.angles_per_rev)
+    opts = EvalOptions(n_angles=args.angles_per_rev, wear=args.wear)
     res = run_study(args.scene, spec, constraints=cons, options=opts, fe=fe,
                     objective=_OBJECTIVE[args.objective], out=out, resume=args.resume,
                     overwrite=args.overwrite, scheduler=args.scheduler, workers=workers,

@@ -16,7 +16,9 @@ undercut check is the scene's own dense check on 7200 angles):
 * ``sf_min`` (the assessment's smallest safety factor, :func:`femcam.assess.assess`) and
   ``lambda_min`` where the scene has the data (NaN otherwise);
 * ``rpm_jump`` (rpm, NaN: none up to ``jump_factor_hi`` x the operating speed) where the scene
-  has an elastic follower train (:func:`femcam.dynamics.jump_speed`).
+  has an elastic follower train (:func:`femcam.dynamics.jump_speed`);
+* ``wear_depth_per_rev`` (m, the largest Archard cam wear depth after one revolution, Hertz
+  pressure; :func:`femcam.wear.scene.scene_wear`) when ``EvalOptions(wear=True)``.
 
 Only documented femcam errors become a ``failed`` record with the reason; programming errors
 propagate.
@@ -35,11 +37,12 @@ from ..dynamics import jump_speed
 from ..errors import FemcamError, InputError
 from ..hertz import HertzValidityWarning, LineContact
 from ..hertz.conformity import shape_factors
+from ..wear.scene import scene_wear
 
 #: the metrics of a record (SI), in table order
 METRICS = ("theta", "p0_max", "Fc_at_p0", "a_at_p0", "R_at_p0", "von_mises_max", "tau1_max",
            "phi_max", "rho_min", "undercut", "Fc_min", "Fc_max", "cam_radius_max", "sf_min",
-           "lambda_min", "rpm", "has_train", "rpm_jump")
+           "lambda_min", "rpm", "has_train", "rpm_jump", "wear_depth_per_rev")
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -52,10 +55,14 @@ class EvalOptions:
         Cam angles over one revolution (>= 36).
     jump_factor_hi : float
         The jump-speed search runs up to this multiple of the operating speed (> 1).
+    wear : bool
+        Also compute the Archard wear map (:func:`femcam.wear.scene.scene_wear`, Hertz
+        pressure): about 0.15 s per variant, 30 times the rest, so off by default.
     """
 
     n_angles: int = 720
     jump_factor_hi: float = 2.0
+    wear: bool = False
 
     def __post_init__(self):
         if int(self.n_angles) != self.n_angles or self.n_angles < 36:
@@ -71,9 +78,10 @@ class EvalOptions:
         Returns
         -------
         dict
-            ``{"n_angles": ..., "jump_factor_hi": ...}``.
+            ``{"n_angles": ..., "jump_factor_hi": ..., "wear": ...}``.
         """
-        return {"n_angles": int(self.n_angles), "jump_factor_hi": float(self.jump_factor_hi)}
+        return {"n_angles": int(self.n_angles), "jump_factor_hi": float(self.jump_factor_hi),
+                "wear": bool(self.wear)}
 
 
 def _contact_radius(scene) -> float:
@@ -115,6 +123,15 @@ def _jump(scene, factor_hi: float) -> tuple:
     except FemcamError as exc:
         return math.nan, f"jump speed not computed: {exc}".replace("\n", " ")
     return float(r.rpm_jump), ""
+
+
+def _wear(scene, theta) -> tuple:
+    """(largest cam wear depth after one revolution in m, note) of the Archard map."""
+    try:
+        wm = scene_wear(scene, theta, cycles=1.0)[0]
+    except FemcamError as exc:
+        return math.nan, f"wear not computed: {exc}".replace("\n", " ")
+    return float(wm.max_depth), ""
 
 
 def evaluate(scene, options: EvalOptions) -> dict:
@@ -168,7 +185,8 @@ def evaluate(scene, options: EvalOptions) -> dict:
         if not rec["undercut"]:
             rec["sf_min"], rec["lambda_min"] = _assessment(scene, theta)
         rec["rpm_jump"], note = _jump(scene, options.jump_factor_hi)
-        rec["reason"] = "; ".join(t for t in (rec["reason"], note) if t)
+        rec["wear_depth_per_rev"], wnote = _wear(scene, theta) if options.wear else (math.nan, "")
+        rec["reason"] = "; ".join(t for t in (rec["reason"], note, wnote) if t)
     except FemcamError as exc:
         rec.update(status="failed", reason=f"{type(exc).__name__}: {exc}".replace("\n", " "))
     return rec

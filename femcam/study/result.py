@@ -41,6 +41,7 @@ RESULT_COLUMNS = (
     ("lambda_min", "lambda_min", 1.0),
     ("rpm", "rpm", 1.0),
     ("rpm_jump", "rpm_jump", 1.0),
+    ("wear_depth_per_rev", "wear_depth_per_rev_nm", 1e9),
 ) + tuple((f"margin_{k}", f"margin_{k}", 1.0) for k in NAMES) + (
     ("feasible", "feasible", 1.0),
     ("pareto", "pareto", 1.0),
