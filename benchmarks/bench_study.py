@@ -12,8 +12,10 @@ and prints variants/s, variants/s per worker, the speed-up from 1 to 2 workers a
 machine's load average before and after each run (a shared machine: the load says how many
 cores the run really had).
 
-Run:  python benchmarks/bench_study.py [--n 1000] [--figure docs/img/study_pareto_seed002.png]
-(the figure: the README's seed 002 Pareto plot, from a 9 x 4 grid of base radius and law.)
+Run:  python benchmarks/bench_study.py [--n 1000] [--figures docs/img]   (--n 0: figures only)
+(the figures: the README's seed 002 Pareto plot, from a 9 x 4 grid of base radius and law,
+study_pareto_seed002.png; the constraint map over base and roller radius with rho >= 3 mm,
+study_constraint_map_seed002.png.)
 """
 
 from __future__ import annotations
@@ -81,30 +83,37 @@ def bench(n: int) -> None:
               f"{(base / dt if 'Dask' in name else float('nan')):9.2f} {l0:8.2f} / {l1:6.2f}")
 
 
-def figure(path: str) -> None:
-    """The README's seed 002 Pareto plot: base radius 6..22 mm x four laws, phi <= 30 deg."""
+def figures(folder: str) -> None:
+    """The README's seed 002 Pareto plot (base radius 6..22 mm x four laws, phi <= 30 deg) and
+    a constraint map (base radius 4..14 mm x roller radius 4..20 mm, rho >= 3 mm, lift-off
+    allowed)."""
     import shutil
     import tempfile
 
-    spec = StudySpec.parse(["follower.base_radius_mm=6:22:2",
-                            "program.law=bezier5,bezier7,bezier9,cycloidal"])
-    with tempfile.TemporaryDirectory(prefix="femcam-study-figure-") as tmp:
-        res = run_study(SCENE, spec, out=tmp, plots=True)
-        shutil.copyfile(res.paths["pareto"], path)
-    print(res.summary())
-    print(f"figure: {path}")
+    runs = ((["follower.base_radius_mm=6:22:2", "program.law=bezier5,bezier7,bezier9,cycloidal"],
+             Constraints(), "pareto", "study_pareto_seed002.png"),
+            (["follower.base_radius_mm=4:14:1", "follower.roller_radius_mm=4:20:2"],
+             Constraints(rho_limit=3e-3, liftoff=False), "constraint_map",
+             "study_constraint_map_seed002.png"))
+    for vary, cons, kind, name in runs:
+        with tempfile.TemporaryDirectory(prefix="femcam-study-figure-") as tmp:
+            res = run_study(SCENE, StudySpec.parse(vary), constraints=cons, out=tmp, plots=True)
+            shutil.copyfile(res.paths[kind], os.path.join(folder, name))
+        print(res.summary())
+        print(f"figure: {os.path.join(folder, name)}")
 
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, default=1000)
-    ap.add_argument("--figure", default=None)
+    ap.add_argument("--figures", default=None, metavar="DIR")
     args = ap.parse_args()
     t0 = time.perf_counter()
     print(f"check: smallest feasible grid Rb - min_base_radius = {check() * 1e3:.4f} mm (in [0, 0.25))")
-    bench(args.n)
-    if args.figure:
-        figure(args.figure)
+    if args.n > 0:
+        bench(args.n)
+    if args.figures:
+        figures(args.figures)
     load = os.getloadavg()
     print(f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} CPUs (shared), load "
           f"average {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}; total script {time.perf_counter() - t0:.1f} s")
