@@ -49,11 +49,17 @@ def check() -> float:
     return grid - exact
 
 
-def _timed(spec, **kw):
-    l0 = os.getloadavg()[0]
+def _cpu(client) -> float:
+    """CPU seconds of this process plus (with a Dask client) all its workers."""
+    own = time.process_time()
+    return own if client is None else own + sum(client.run(time.process_time).values())
+
+
+def _timed(spec, client=None):
+    l0, c0 = os.getloadavg()[0], _cpu(client)
     t = time.perf_counter()
-    res = run_study(SCENE, spec, **kw)
-    return res, time.perf_counter() - t, l0, os.getloadavg()[0]
+    res = run_study(SCENE, spec, scheduler=client)
+    return res, time.perf_counter() - t, _cpu(client) - c0, l0, os.getloadavg()[0]
 
 
 def bench(n: int) -> None:
@@ -61,26 +67,29 @@ def bench(n: int) -> None:
 
     spec = StudySpec.parse(LHS, lhs=n, seed=1)
     rows = []
-    ref, dt, l0, l1 = _timed(spec)
-    rows.append(("serial (this process)", 1, dt, l0, l1))
+    ref, dt, cpu, l0, l1 = _timed(spec)
+    rows.append(("serial (this process)", 1, dt, cpu, l0, l1))
     for w in (1, 2):
         with LocalCluster(n_workers=w, threads_per_worker=1, processes=True, dashboard_address=None) as lc, \
                 Client(lc) as client:
             client.run(lambda: __import__("femcam.study"))  # warm the workers' imports (not timed)
-            res, dt, l0, l1 = _timed(spec, scheduler=client)
+            res, dt, cpu, l0, l1 = _timed(spec, client)
         if w == 2:  # correctness of the distributed run: the serial table, bit for bit
             for k, v in ref.table.items():
                 assert np.array_equal(np.asarray(v), np.asarray(res.table[k]), equal_nan=True) \
                     if np.asarray(v).dtype.kind == "f" else list(v) == list(res.table[k]), k
-        rows.append((f"Dask LocalCluster, {w} worker{'s' * (w > 1)}", w, dt, l0, l1))
+        rows.append((f"Dask LocalCluster, {w} worker{'s' * (w > 1)}", w, dt, cpu, l0, l1))
     print(f"\n{n} variants (Latin hypercube, 4 keys), Hertz chain on 720 angles per variant; "
           f"{ref.n_feasible} feasible, {int(ref.table['pareto'].sum())} on the Pareto front")
     print(f"{'where':34s} {'workers':>7s} {'time s':>8s} {'variants/s':>11s} {'per worker':>11s} "
-          f"{'speed-up':>9s} {'load before/after':>18s}")
+          f"{'speed-up':>9s} {'CPU s':>7s} {'ms CPU/variant':>15s} {'load before/after':>18s}")
     base = rows[1][2]
-    for name, w, dt, l0, l1 in rows:
+    for name, w, dt, cpu, l0, l1 in rows:
         print(f"{name:34s} {w:7d} {dt:8.2f} {n / dt:11.1f} {n / dt / w:11.1f} "
-              f"{(base / dt if 'Dask' in name else float('nan')):9.2f} {l0:8.2f} / {l1:6.2f}")
+              f"{(base / dt if 'Dask' in name else float('nan')):9.2f} {cpu:7.2f} {cpu / n * 1e3:15.2f} "
+              f"{l0:8.2f} / {l1:6.2f}")
+    print("(CPU s: this process plus the workers; with the wall time and the load it says how much of "
+          "the machine the run had)")
 
 
 def figures(folder: str) -> None:
