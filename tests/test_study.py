@@ -3,6 +3,7 @@ resume, dedup and bad input. Hertz-only studies of a few dozen variants (well un
 each); the Dask study of >= 1000 variants and the FE candidates are marked slow."""
 
 import math
+import pickle
 from pathlib import Path
 
 import numpy as np
@@ -109,6 +110,7 @@ def test_reproducible_with_one_and_two_workers(tmp_path):
     b = run_study(SEED002, spec)
     c = run_study(SEED002, spec, scheduler="processes", workers=2, batch_size=2)
     _same_tables(a.table, b.table)
+    _same_tables(a.table, pickle.loads(pickle.dumps(c)).table)  # results pickle (cross Dask)
     _same_tables(a.table, c.table)
 
 
