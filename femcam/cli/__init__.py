@@ -20,7 +20,7 @@ from ._common import os_error_line
 from ._flags import FlagError
 
 #: subcommand modules, in the order they appear in ``femcam --help``
-SUBCOMMANDS = ("run", "sweep", "wear", "synth", "dynamics", "assess", "optimise")
+SUBCOMMANDS = ("run", "sweep", "wear", "synth", "dynamics", "assess", "optimise", "study")
 
 
 def _versions() -> str:
