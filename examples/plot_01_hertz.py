@@ -44,7 +44,7 @@ assert np.isclose(hc.a, a_hand, rtol=1e-12) and np.isclose(hc.p0, p0_hand, rtol=
 # that starts surface cracks when the roller slides.
 x = np.linspace(-2.0, 2.0, 801) * hc.a
 sx, sz, txz = hc.surface_stress(x)
-fig, ax = plt.subplots(figsize=(6.4, 3.6))
+fig, ax = plt.subplots(figsize=(6.4, 3.6), constrained_layout=True)
 ax.plot(x / hc.a, sx / hc.p0, label=r"$\sigma_x$")
 ax.plot(x / hc.a, sz / hc.p0, label=r"$\sigma_z = -p$")
 ax.plot(x / hc.a, txz / hc.p0, label=r"$\tau_{xz} = -\mu p$")
@@ -64,7 +64,7 @@ assert np.isclose(sx.max(), 2 * hc.mu * hc.p0, rtol=2e-3)
 X, Z = np.meshgrid(np.linspace(-2.0, 2.0, 241), np.linspace(0.0, 2.0, 121))
 field = hc.stress(X * hc.a, Z * hc.a)
 fig, axes = plt.subplots(1, 2, figsize=(9.6, 3.6), sharey=True, constrained_layout=True)
-for ax, values, name in zip(axes, (field.tau1, field.von_mises), (r"$\tau_1$", "von Mises")):
+for ax, values, name in zip(axes, (field.tau1, field.von_mises), (r"$\tau_1$", "von Mises"), strict=True):
     cs = ax.contourf(X, Z, values / hc.p0, levels=20, cmap="viridis")
     fig.colorbar(cs, ax=ax, label=f"{name} / p0")
     ax.set(xlabel="x / a", title=name)
@@ -83,7 +83,7 @@ for name, m in (("tau1", t1), ("von Mises", vm)):
 for m, values in ((t1, field.tau1), (vm, field.von_mises)):
     assert values.max() <= m.value * (1 + 1e-9)
     assert values.max() >= m.value * (1 - 2e-3)
-for ax, m in zip(axes, (t1, vm)):
+for ax, m in zip(axes, (t1, vm), strict=True):
     ax.plot(m.x / hc.a, m.z / hc.a, "r+", ms=12, mew=2)
 
 # %%
