@@ -28,7 +28,7 @@ import pyvista as pv
 
 import femcam
 
-HERE = Path(__file__).resolve().parent
+HERE = Path(__file__).parent if "__file__" in globals() else Path.cwd()  # sphinx-gallery: cwd
 out = Path(os.environ.get("FEMCAM_EXAMPLE_OUT") or tempfile.mkdtemp(prefix="femcam_")) / "sweep"
 res = femcam.sweep(HERE / "seed002_study_model.toml", out=out, vtk_every=30, plots=False)
 t = res.table                                  # SI columns, one entry per angle

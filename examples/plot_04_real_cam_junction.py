@@ -26,7 +26,7 @@ import numpy as np
 
 import femcam
 
-HERE = Path(__file__).resolve().parent
+HERE = Path(__file__).parent if "__file__" in globals() else Path.cwd()  # sphinx-gallery: cwd
 res = femcam.sweep(HERE / "shm_dwell_junction.toml", angles=np.radians(np.arange(80.0, 100.1, 2.0)),
                    plots=False)
 t = res.table

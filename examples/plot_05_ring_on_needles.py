@@ -26,7 +26,7 @@ import numpy as np
 from femcam.bodies import build_for, ring_rows, solve_ring
 from femcam.scene import load_scene
 
-HERE = Path(__file__).resolve().parent
+HERE = Path(__file__).parent if "__file__" in globals() else Path.cwd()  # sphinx-gallery: cwd
 sc = load_scene(HERE / "seed002_needle_roller.toml")
 theta = np.radians(np.arange(0.0, 360.0, 30.0))
 st = sc.analyse(theta)                      # contact force Fc (N) and cam radius rho (m)

@@ -26,7 +26,7 @@ from femcam.halfspace import finite_length_rows
 from femcam.hertz import LineContact
 from femcam.scene import load_scene
 
-HERE = Path(__file__).resolve().parent
+HERE = Path(__file__).parent if "__file__" in globals() else Path.cwd()  # sphinx-gallery: cwd
 sc = load_scene(HERE / "seed002_crowned.toml")
 rows = finite_length_rows(sc, np.radians(np.arange(0.0, 360.0, 30.0)))
 deg = np.degrees(rows["theta"])

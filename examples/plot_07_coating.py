@@ -27,7 +27,7 @@ from femcam.hertz import LineContact
 from femcam.layers import build_coated_model, case_margin, interface_stress, scene_layer_rows, scene_layers
 from femcam.scene import load_scene
 
-HERE = Path(__file__).resolve().parent
+HERE = Path(__file__).parent if "__file__" in globals() else Path.cwd()  # sphinx-gallery: cwd
 sc = load_scene(HERE / "seed002_coated.toml")
 layers = scene_layers(sc)
 coat_body, coating = layers["coating"]

@@ -25,7 +25,7 @@ import numpy as np
 from femcam.dynamics import TrainModel, jump_speed, periodic_response
 from femcam.scene import load_scene
 
-HERE = Path(__file__).resolve().parent
+HERE = Path(__file__).parent if "__file__" in globals() else Path.cwd()  # sphinx-gallery: cwd
 sc = load_scene(HERE / "seed002_dynamic.toml")
 r1 = sc.dynamic_response
 deg = np.degrees(r1.theta)

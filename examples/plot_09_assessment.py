@@ -27,7 +27,7 @@ from femcam.assess import assess
 from femcam.hertz import max_shear
 from femcam.scene import load_scene
 
-HERE = Path(__file__).resolve().parent
+HERE = Path(__file__).parent if "__file__" in globals() else Path.cwd()  # sphinx-gallery: cwd
 sc = load_scene(HERE / "seed002_assess.toml")
 res = assess(sc)
 r = res.rows

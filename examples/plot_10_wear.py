@@ -30,7 +30,7 @@ from femcam.scene import load_scene
 from femcam.wear import format_table3, seed000_table
 from femcam.wear.scene import scene_wear
 
-HERE = Path(__file__).resolve().parent
+HERE = Path(__file__).parent if "__file__" in globals() else Path.cwd()  # sphinx-gallery: cwd
 sc = load_scene(HERE / "seed002_study_model.toml")
 theta = np.radians(np.arange(0.0, 360.0, 0.5))
 fig, ax = plt.subplots(figsize=(6.4, 3.8), constrained_layout=True)
