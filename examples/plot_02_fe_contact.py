@@ -69,7 +69,7 @@ ax.legend()
 # The mesh
 # --------
 # Both bodies are slices of their cylinders, clamped far from the contact. The elements grow
-# from ``h`` in the contact zone (``fine_half_width`` = 2.5 a either side, ``fine_depth``
+# from ``h`` in the contact zone (``fine_half_width`` = 2.5 a either side, ``fine_depth`` = 0.6 a
 # below) to a fraction of the body size: most of the DOFs sit where the stresses vary.
 m = r.model.mesh
 fig, axes = plt.subplots(1, 2, figsize=(9.6, 4.2), constrained_layout=True)

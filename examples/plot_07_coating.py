@@ -16,8 +16,8 @@ the same depth.
 # ------------------------------------
 # ``scene_layers`` turns the scene's ``[materials.roller.coating]`` and ``[materials.cam.case]``
 # tables into ``Coating`` and ``Case`` records (SI). ``build_coated_model`` meshes the coating
-# band with elements a few tenths of its thickness across; after the build each solve takes a
-# few milliseconds.
+# as its own band, at least four elements through its thickness; after the build each solve
+# takes a few milliseconds.
 from pathlib import Path
 
 import matplotlib.pyplot as plt
