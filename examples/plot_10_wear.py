@@ -69,8 +69,9 @@ for row in tab.rows:
 assert abs(next(r for r in tab.rows if r.law == "shm").I_closed - np.pi**2 / 8) < 1e-12
 
 # %%
-# The ratio to SHM ranks the laws. femcam's recomputation finds uniform velocity lowest and
-# cycloidal highest, the reverse of the values printed in seed 000 for SHM and cycloidal;
+# The ratio to SHM ranks the laws. From the exact laws uniform velocity comes out lowest and
+# cycloidal highest: the reverse of the ranking printed in seed 000, whose v_rms for SHM and
+# cycloidal differ from the exact integrals (its uniform-velocity value agrees).
 # ``femcam wear seed000`` prints both side by side.
 fig, ax = plt.subplots(figsize=(6.4, 3.4), constrained_layout=True)
 names = [r.law for r in tab.rows]
