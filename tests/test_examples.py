@@ -10,6 +10,8 @@ found by globbing and run with the slow tests until they are measured and listed
 
 from __future__ import annotations
 
+import ast
+import importlib
 from pathlib import Path
 
 import matplotlib
@@ -51,3 +53,14 @@ def test_example_runs(path, tmp_path, monkeypatch, capsys):
         plt.close("all")
     assert capsys.readouterr().out.strip(), f"{path.name} prints its key numbers"
     assert sorted(EXAMPLES.rglob("*")) == before, "examples write nothing into the repository"
+
+
+@pytest.mark.parametrize("path", SCRIPTS, ids=[p.name for p in SCRIPTS])
+def test_example_uses_the_public_api(path):
+    """Every name an example imports from femcam is in that module's ``__all__``."""
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.ImportFrom) and (node.module or "").startswith("femcam"):
+            public = getattr(importlib.import_module(node.module), "__all__", None)
+            if public is not None:
+                missing = [a.name for a in node.names if a.name not in public]
+                assert not missing, f"{path.name}: {missing} not in {node.module}.__all__"
