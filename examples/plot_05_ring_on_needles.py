@@ -12,12 +12,12 @@ calculation says. This example builds the ring-on-needles model of
 """
 
 # %%
-# Build the model once, solve the peak load
-# -----------------------------------------
+# Build the model once, solve the most loaded angle
+# -------------------------------------------------
 # ``build_for`` meshes the ring, the stud and the cam's contact zone once, graded for the
 # largest contact force of the angles given; each load case after that is a condensed solve of
-# about 10 ms. Twelve angles (every 30 deg) keep the example short; the sweep does every angle
-# with the same model.
+# about 10 ms. Twelve angles (every 30 deg) keep the example short, and the most loaded of
+# them is solved in detail; the sweep does every angle with the same model.
 from pathlib import Path
 
 import matplotlib.pyplot as plt
