@@ -1,0 +1,295 @@
+"""The sweep's report as one self-contained HTML page (``DIR/report.html``, written beside
+``report.md`` by :func:`femcam.sweep.sweep` with an output directory).
+
+One file a designer can send: the plots are embedded as base64 PNG ``data:`` URIs, the style is
+inline, and the only links are relative ones to the files beside it (``sweep.pvd``,
+``sweep.csv`` ...). It reads what the sweep computed (:class:`~femcam.sweep.result.SweepResult`,
+the files in its folder) and never calls a solver: :func:`report_html` of
+``SweepResult.load(DIR)`` rebuilds the page of a finished sweep.
+
+Order of the page: a refused part first ("Not a complete answer"), then the title (scene name,
+description, source), the run (date, versions, command line), what the headline omits, the
+worst angle of each quantity (:func:`femcam.sweep.worst.peak_rows`), the models that answered,
+the validation against Hertz, the plots, the scene (inputs with units, the TOML text) and the
+files.
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+import math
+from pathlib import Path
+
+import numpy as np
+
+try:  # Python >= 3.11
+    import tomllib
+except ModuleNotFoundError:  # pragma: no cover - Python 3.10 (as femcam.scene.load)
+    import tomli as tomllib
+
+from ..viz.sweep import plot_caption
+from .result import SweepResult, families_text, hertz_check_text
+from .worst import peak_rows
+
+__all__ = ["report_html", "scene_inputs"]
+
+#: how each value of the ``model`` column was chosen (docs/sweep.md, "Model per angle")
+MODEL_REASONS = {
+    "hertz": "Hertz line contact: method hertz, or (method auto) the estimated error of Hertz "
+             "is within the tolerance",
+    "fe_arc": "FE contact with the osculating-arc gap: the estimated error of the arc gap is "
+              "within the tolerance",
+    "fe_exact": "FE contact with the exact cam gap: a curvature jump, or the arc-gap estimate "
+                "exceeds the tolerance",
+    "": "no model (no contact, or the row was not solved; see status)",
+}
+
+#: scene-key suffix -> unit shown (longest first: ``_mm3_per_N_m`` before ``_m``)
+UNITS = (("_mm3_per_N_m", "mm^3/(N m)"), ("_m3_per_N_m", "m^3/(N m)"), ("_mm2_per_s", "mm^2/s"),
+         ("_W_per_m_K", "W/(m K)"), ("_kg_per_m3", "kg/m^3"), ("_N_per_m", "N/m"),
+         ("_s_per_m", "s/m"), ("_per_GPa", "1/GPa"), ("_per_K", "1/K"), ("_kg_m2", "kg m^2"),
+         ("_mm", "mm"), ("_um", "µm"), ("_nm", "nm"), ("_GPa", "GPa"), ("_MPa", "MPa"),
+         ("_Pa", "Pa"), ("_deg", "deg"), ("_kg", "kg"), ("_HV", "HV"), ("_N", "N"), ("_C", "°C"),
+         ("_s", "s"), ("_m2", "m^2"), ("_m", "m"))
+
+_CSS = """body{font-family:system-ui,sans-serif;max-width:62rem;margin:1.5rem auto;padding:0 1rem;
+color:#222;line-height:1.4}h1{margin-bottom:.2rem}h2{border-bottom:1px solid #ccc;margin-top:2rem}
+table{border-collapse:collapse;margin:.5rem 0}td,th{border:1px solid #ccc;padding:.2rem .5rem;
+text-align:left;vertical-align:top}td.num{text-align:right;font-variant-numeric:tabular-nums}
+pre{background:#f6f6f6;padding:.6rem;overflow-x:auto;font-size:.85rem}
+.refused{border:3px solid #b00;background:#fee;padding:.6rem 1rem;margin:1rem 0}
+.refused h2{border:0;margin:0;color:#b00}.omits{background:#fff7e0;padding:.4rem 1rem}
+figure{margin:1rem 0}figure img{max-width:100%;border:1px solid #ddd}figcaption{font-size:.9rem}
+.muted{color:#666;font-size:.9rem}"""
+
+_e = html.escape
+
+
+def _num(x: float, spec: str = ".4g") -> str:
+    return "-" if x is None or not math.isfinite(float(x)) else format(float(x), spec)
+
+
+def _table(head, rows, num=()) -> str:
+    """An HTML table; ``rows`` hold already escaped HTML; columns in ``num`` are right-aligned."""
+    h = "".join(f"<th>{_e(c)}</th>" for c in head)
+    body = "".join("<tr>" + "".join(f"<td{' class=num' if j in num else ''}>{c}</td>"
+                                    for j, c in enumerate(r)) + "</tr>" for r in rows)
+    return f"<table><thead><tr>{h}</tr></thead><tbody>{body}</tbody></table>"
+
+
+def scene_inputs(text: str) -> list[tuple[str, str, str]]:
+    """The scene's inputs as ``(key, value, unit)`` rows, the unit read from the key's suffix
+    (scene keys carry their unit: ``roller_radius_mm``).
+
+    Parameters
+    ----------
+    text : str
+        The scene's TOML text.
+
+    Returns
+    -------
+    list of (str, str, str)
+        ``("follower.roller_radius", "10", "mm")``; tables of tables are dotted, arrays of tables
+        numbered from 1 (``program.segment[2].beta``). ``name``, ``description`` and ``source``
+        are left out (the title shows them); empty for a text that does not parse.
+    """
+    try:
+        data = tomllib.loads(text)
+    except (tomllib.TOMLDecodeError, TypeError):
+        return []
+    rows = []
+
+    def walk(prefix, d):
+        for k, v in d.items():
+            if isinstance(v, dict):
+                walk(f"{prefix}{k}.", v)
+            elif isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
+                for i, x in enumerate(v, 1):
+                    walk(f"{prefix}{k}[{i}].", x)
+            elif prefix or k not in ("name", "description", "source"):
+                unit = "rpm" if k == "rpm" else next((u for s, u in UNITS if k.endswith(s)), "")
+                key = k[: len(k) - len(next(s for s, u in UNITS if u == unit))] \
+                    if unit and unit != "rpm" else k
+                val = ", ".join(map(str, v)) if isinstance(v, list) else str(v)
+                rows.append((prefix + key, val, unit))
+
+    walk("", data)
+    return rows
+
+
+def _png(path: Path) -> str:
+    return "data:image/png;base64," + base64.b64encode(path.read_bytes()).decode("ascii")
+
+
+def _refused(ex: dict) -> str:
+    refused = ex.get("refused") or [{"line": e} for e in ex.get("errors", ())]
+    if not refused:
+        return ""
+    items = "".join(f"<li>{_e(r['line'])}</li>" for r in refused)
+    return (f"<div class=refused id=refused><h2>Not a complete answer: {len(refused)} part(s) the "
+            "scene asks for were refused</h2><p>Their columns are NaN at the angles listed; "
+            f"everything else below was computed (<code>femcam sweep</code> exits 1).</p>"
+            f"<ul>{items}</ul></div>")
+
+
+def _title(p: dict, text: str) -> str:
+    try:
+        head = tomllib.loads(text) if text else {}
+    except tomllib.TOMLDecodeError:
+        head = {}
+    name = head.get("name") or Path(str(p.get("scene", "scene built in code"))).stem
+    out = [f"<h1>{_e(str(name))}</h1>"]
+    if head.get("description"):
+        out.append(f"<p>{_e(str(head['description']))}</p>")
+    if head.get("source"):
+        out.append(f"<p class=muted>Source: {_e(str(head['source']))}</p>")
+    return "".join(out)
+
+
+def _run(result: SweepResult, s: dict) -> str:
+    p, v = result.provenance, result.provenance.get("versions", {})
+    vers = ", ".join(f"{k} {v[k]}" for k in ("femcam", "gmsh", "scikit-fem", "numpy", "scipy", "python")
+                     if k in v)
+    st = np.asarray(result.status).astype(str)
+    counts = ", ".join(f"{k} {int(np.count_nonzero(st == k))}" for k in dict.fromkeys(st))
+    rows = [("date (UTC)", p.get("date", "")), ("versions", vers), ("machine", p.get("machine", "")),
+            ("scene file", f"{p.get('scene', '(in memory)')} (sha256 {str(p.get('scene_sha256', ''))[:16]})"),
+            ("method", f"{result.method}; {result.n_angles} angles ({counts})")]
+    out = _table(("run", ""), [(_e(a), _e(str(b))) for a, b in rows])
+    return out + f"<p>Command line:</p><pre>{_e(str(p.get('command', '')))}</pre>"
+
+
+def _omits(ex: dict) -> str:
+    lines = list(ex.get("headline", ())) + list(ex.get("flags", ()))
+    if not lines:
+        return ""
+    return ("<div class=omits><p><b>What the headline omits</b> (the headline is the 2D contact of "
+            "two homogeneous solid bodies at Fc / length):</p><ul>"
+            + "".join(f"<li>{_e(t)}</li>" for t in lines) + "</ul></div>")
+
+
+def _worst(result: SweepResult) -> str:
+    ex = result.provenance.get("extras", {})
+    rows = peak_rows(result.table, ex.get("providers", ()))
+    body = "".join(
+        f"<tr data-column={_e(r['column'])}><td>{_e(r['what'])}</td><td class=num>{_num(r['value'])}</td>"
+        f"<td>{_e(r['unit'].replace('um', 'µm'))}</td><td class=num>{_num(r['theta_deg'], '.1f')}</td>"
+        f"<td class=num>{_num(r['depth_um'], '.4g')}</td><td><code>{_e(r['csv'] or r['column'])}</code>"
+        f"</td><td>{_e(r['source'])}</td></tr>" for r in rows)
+    out = ("<p>Each quantity's worst value over the angles with contact (status ok) and the cam "
+           "angle where it occurs; depths are below the surface of the body where the maximum lies.</p>"
+           "<table id=worst><thead><tr><th>quantity</th><th>worst value</th><th>unit</th>"
+           "<th>at cam angle (deg)</th><th>depth (µm)</th><th>column</th><th>from</th></tr></thead>"
+           f"<tbody>{body}</tbody></table>")
+    if ex.get("assess"):
+        out += "<h3>Assessment (worst per criterion, SI units)</h3>" + _table(
+            ("criterion", "worst value", "at cam angle (deg)"),
+            [(_e(c), _num(w["value"]), _num(w["theta_deg"], ".1f")) for c, w in ex["assess"].items()],
+            num=(1, 2))
+    extra = [t for t in ex.get("notes", ())]
+    n = ex.get("coating_wear", {}).get("revolutions_through")
+    if n is not None and math.isfinite(n):
+        extra.insert(0, f"coating: worn through after {n:.4g} revolutions at the deepest wear rate")
+    return out + "".join(f"<p>{_e(t)}</p>" for t in extra)
+
+
+def _models(result: SweepResult, s: dict) -> str:
+    model = np.asarray(result.table.get("model", np.full(result.n_angles, ""))).astype(str)
+    rows = [(f"<code>{_e(m or '(none)')}</code>", str(int(np.count_nonzero(model == m))),
+             _e(MODEL_REASONS.get(m, "")))
+            for m in dict.fromkeys(model)]
+    out = _table(("model", "angles", "why"), rows, num=(1,))
+    if result.method != "hertz":
+        out += f"<p>{_e(families_text(s['n_families'], s['reuse_error_max'], s['n_binned']))}.</p>"
+    return out
+
+
+def _validation(result: SweepResult, s: dict) -> str:
+    tol = result.provenance.get("options", {}).get("tolerance")
+    if result.method == "hertz":
+        return "<p>Method hertz: every row is Hertz's line contact, there is no FE answer to check.</p>"
+    out = [f"<p>p0 FE against Hertz: {_e(hertz_check_text(s))}.</p>"]
+    if math.isfinite(s.get("err_a_absmax", math.nan)):
+        out.append(f"<p>Largest |a_fe/a_hertz - 1|: {100 * s['err_a_absmax']:.3f} %.</p>")
+    fams = result.families
+    if fams:
+        rows = [(str(f.get("id", "")), str(f.get("n_angles", "")),
+                 _num(1e3 * float(f.get("rho_ref", math.nan))), _num(1e6 * float(f.get("a_ref", math.nan))),
+                 str(len(f.get("checks", ()))), _num(100 * float(f.get("reuse_error", math.nan)), ".3f"))
+                for f in fams]
+        out.append("<p>Model families (one FE model reused over neighbouring angles), each checked "
+                   "against a model built for the checked angle"
+                   + (f", tolerance {100 * float(tol):g} %" if tol is not None else "") + ":</p>")
+        out.append(_table(("family", "angles", "rho_ref (mm)", "a_ref (µm)", "checked angles",
+                           "reuse error (%)"), rows, num=(1, 2, 3, 4, 5)))
+    return "".join(out)
+
+
+def _plots(result: SweepResult, out: Path) -> str:
+    # in the order the sweep drew them, then any other plot in the folder
+    drawn = [Path(v).name for k, v in result.paths.items() if k.startswith("plot_")]
+    names = list(dict.fromkeys(drawn + sorted(p.name for p in (out / "plots").glob("*.png"))))
+    figs = []
+    for png in (out / "plots" / n for n in names if (out / "plots" / n).is_file()):
+        figs.append(f"<figure><img src=\"{_png(png)}\" alt=\"{_e(png.name)}\"><figcaption>"
+                    f"{_e(plot_caption(png.name))} <span class=muted>(plots/{_e(png.name)})</span>"
+                    "</figcaption></figure>")
+    return "".join(figs) or "<p>No plots were written (<code>--no-plots</code>).</p>"
+
+
+def _scene(text: str) -> str:
+    if not text:
+        return "<p>The scene was built in code: no TOML text (its repr is in sweep.npz).</p>"
+    rows = [(f"<code>{_e(k)}</code>", _e(v), _e(u)) for k, v, u in scene_inputs(text)]
+    return _table(("input", "value", "unit"), rows) + f"<pre>{_e(text)}</pre>"
+
+
+#: files linked from the report when present, with what they hold
+FILES = (("sweep.pvd", "VTK series of the stress fields (ParaView, pyvista)"),
+         ("sweep.csv", "the table, one row per cam angle, units in the column names"),
+         ("sweep.npz", "the table in SI units and the provenance (numpy)"),
+         ("scene.toml", "the scene swept"), ("report.md", "this report as Markdown"),
+         ("animation.gif", "animation of the VTK series"),
+         ("camdisk.pvd", "VTK series of the cam disk on its shaft"))
+
+
+def _files(out: Path) -> str:
+    rows = [(f"<a href=\"{_e(name)}\">{_e(name)}</a>", _e(what)) for name, what in FILES
+            if (out / name).is_file()]
+    return _table(("file", "what it holds"), rows) if rows else "<p>No files.</p>"
+
+
+def report_html(result: SweepResult, out) -> str:
+    """The sweep's report as one self-contained HTML page (plots embedded as base64 PNG, inline
+    style, relative links to the files in ``out`` only).
+
+    Parameters
+    ----------
+    result : SweepResult
+        A computed or loaded sweep.
+    out : str or Path
+        Its output directory: the plots (``plots/*.png``), ``scene.toml`` and the linked files
+        are read from there.
+
+    Returns
+    -------
+    str
+        The HTML text (``DIR/report.html``).
+    """
+    out = Path(out)
+    s, ex = result.summary(), result.provenance.get("extras", {})
+    scene = out / "scene.toml"
+    text = scene.read_text(encoding="utf-8") if scene.is_file() else ""
+    title = _title(result.provenance, text)
+    name = html.unescape(title.split("</h1>")[0][4:])
+    sections = [("The run", _run(result, s)), ("Worst values and where they occur", _worst(result)),
+                ("Models used", _models(result, s)), ("Validation against Hertz", _validation(result, s)),
+                ("Plots", _plots(result, out)), ("The scene", _scene(text)), ("Files", _files(out))]
+    body = _refused(ex) + title + _omits(ex) + "".join(
+        f"<h2>{_e(h)}</h2>{c}" for h, c in sections)
+    version = str(result.provenance.get("versions", {}).get("femcam", ""))
+    return ("<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8>"
+            f"<title>femcam sweep report: {_e(name)}</title><style>{_CSS}</style></head>"
+            f"<body>{body}<p class=muted>Written by femcam {_e(version)}; every number is from "
+            "sweep.npz in this folder.</p></body></html>\n")
