@@ -28,7 +28,7 @@ try:  # Python >= 3.11
 except ModuleNotFoundError:  # pragma: no cover - Python 3.10 (as femcam.scene.load)
     import tomli as tomllib
 
-from ..viz.sweep import plot_caption
+from ..viz.sweep import PLOT_CAPTIONS, plot_caption
 from .result import SweepResult, families_text, hertz_check_text
 from .worst import peak_rows
 
@@ -226,10 +226,10 @@ def _validation(result: SweepResult, s: dict) -> str:
     return "".join(out)
 
 
-def _plots(result: SweepResult, out: Path) -> str:
-    # in the order the sweep drew them, then any other plot in the folder
-    drawn = [Path(v).name for k, v in result.paths.items() if k.startswith("plot_")]
-    names = list(dict.fromkeys(drawn + sorted(p.name for p in (out / "plots").glob("*.png"))))
+def _plots(out: Path) -> str:
+    # every PNG in DIR/plots: the sweep's own in the order of their captions, then the others
+    found = sorted(p.name for p in (out / "plots").glob("*.png"))
+    names = [n for n in PLOT_CAPTIONS if n in found] + [n for n in found if n not in PLOT_CAPTIONS]
     figs = []
     for png in (out / "plots" / n for n in names if (out / "plots" / n).is_file()):
         figs.append(f"<figure><img src=\"{_png(png)}\" alt=\"{_e(png.name)}\"><figcaption>"
@@ -285,7 +285,7 @@ def report_html(result: SweepResult, out) -> str:
     name = html.unescape(title.split("</h1>")[0][4:])
     sections = [("The run", _run(result, s)), ("Worst values and where they occur", _worst(result)),
                 ("Models used", _models(result, s)), ("Validation against Hertz", _validation(result, s)),
-                ("Plots", _plots(result, out)), ("The scene", _scene(text)), ("Files", _files(out))]
+                ("Plots", _plots(out)), ("The scene", _scene(text)), ("Files", _files(out))]
     body = _refused(ex) + title + _omits(ex) + "".join(
         f"<h2>{_e(h)}</h2>{c}" for h, c in sections)
     version = str(result.provenance.get("versions", {}).get("femcam", ""))
