@@ -24,6 +24,7 @@ from femcam.sweep import SweepResult, sweep
 from femcam.sweep.report import report_html, scene_inputs
 from femcam.sweep.table import COLUMNS
 from femcam.sweep.worst import PEAKS
+from femcam.viz.html import markdown_page, png_data_uri
 
 EXAMPLE = "examples/seed002_study_model.toml"
 PNG = b"\x89PNG\r\n\x1a\n"
@@ -214,3 +215,15 @@ def test_fe_validation_figures_match_the_npz(tmp_path):
     assert rows["p0_fe"][1] == f"{z['p0_fe'][i] * 1e-6:.4g}"
     assert rows["p0_fe"][3] == f"{math.degrees(z['theta'][i]):.1f}"
     assert len(page.imgs) == len(list((out / "plots").glob("*.png")))
+
+
+def test_markdown_page_embeds_images_and_reads_tables(run):
+    # the page `femcam assess` writes beside its report.md
+    _, out, _ = run
+    md = ("# The title\n\nSome `code` and **bold**.\n\n| a | b |\n|---|---|\n| 1 | x \\| y |\n\n"
+          "- one\n- two\n\n![the p0 plot](plots/p0_vs_angle.png)\n")
+    text = markdown_page(md, out)
+    page = Page(text)
+    assert [i["src"] for i in page.imgs] == [png_data_uri(out / "plots" / "p0_vs_angle.png")]
+    assert "<title>The title</title>" in text and "<code>code</code>" in text and "<b>bold</b>" in text
+    assert "<td>1</td><td>x | y</td>" in text and "<li>one</li><li>two</li>" in text

@@ -2,8 +2,9 @@
 shakedown, contact fatigue, scuffing and the lubrication regime at every cam angle.
 
 Writes ``DIR/assessment.csv`` (units in the column names, provenance header), ``DIR/summary.json``
-(worst angle per criterion, skipped criteria, flags), ``DIR/report.md`` (one page with the plots)
-and ``DIR/plots/assess_*.png``. ``--sweep SWEEP_DIR`` takes the angles, the FE ``a``/``p0``, the FE
+(worst angle per criterion, skipped criteria, flags), ``DIR/report.md`` (one page with the plots;
+``DIR/report.html``: the same page with the plots embedded) and ``DIR/plots/assess_*.png``.
+``--sweep SWEEP_DIR`` takes the angles, the FE ``a``/``p0``, the FE
 ``tau1_max`` and the FE range of ``txz`` over one pass (``txz_range_max``) of a finished sweep
 (``SWEEP_DIR/sweep.npz``) instead of Hertz; a sweep written without ``txz_range_max`` keeps
 Hertz's range at the FE ``p0`` and says so.
@@ -23,6 +24,7 @@ from ..assess import assess, csv_columns, sweep_table
 from ..io import atomic_write_text, csv_text, provenance
 from ..scene import load_scene
 from ..viz.assess import plot_assessment, report_markdown
+from ..viz.html import markdown_page
 from ._common import add_no_plots, add_scene_out, out_dir, plain
 
 
@@ -85,11 +87,14 @@ def _run(args) -> int:
 
         plots = plot_assessment(res, out / "plots")
 
-    (out / "report.md").write_text(report_markdown(res, plots, provenance=f"Scene `{args.scene}`, "
-                                                   f"{len(theta)} cam angles; {prov['date']}.", base=out))
+    md = report_markdown(res, plots, provenance=f"Scene `{args.scene}`, {len(theta)} cam angles; "
+                         f"{prov['date']}.", base=out)
+    atomic_write_text(out / "report.md", md)
+    atomic_write_text(out / "report.html", markdown_page(md, out))   # plots embedded: one file to send
     for crit, (v, t, _) in res.worst.items():
         print(f"{crit:>22s}: worst {v:.4g} at {math.degrees(t):6.1f} deg")
     for n in res.notes:
         print(f"note: {n}")
-    print(f"wrote {out / 'assessment.csv'}, {out / 'summary.json'}, {out / 'report.md'}")
+    print(f"wrote {out / 'assessment.csv'}, {out / 'summary.json'}, {out / 'report.md'}, "
+          f"{out / 'report.html'}")
     return 0

@@ -16,7 +16,6 @@ files.
 
 from __future__ import annotations
 
-import base64
 import html
 import math
 from pathlib import Path
@@ -28,6 +27,7 @@ try:  # Python >= 3.11
 except ModuleNotFoundError:  # pragma: no cover - Python 3.10 (as femcam.scene.load)
     import tomli as tomllib
 
+from ..viz.html import html_table, page_html, png_data_uri
 from ..viz.sweep import PLOT_CAPTIONS, plot_caption
 from .result import SweepResult, families_text, hertz_check_text
 from .worst import peak_rows
@@ -53,29 +53,11 @@ UNITS = (("_mm3_per_N_m", "mm^3/(N m)"), ("_m3_per_N_m", "m^3/(N m)"), ("_mm2_pe
          ("_Pa", "Pa"), ("_deg", "deg"), ("_kg", "kg"), ("_HV", "HV"), ("_N", "N"), ("_C", "°C"),
          ("_s", "s"), ("_m2", "m^2"), ("_m", "m"))
 
-_CSS = """body{font-family:system-ui,sans-serif;max-width:62rem;margin:1.5rem auto;padding:0 1rem;
-color:#222;line-height:1.4}h1{margin-bottom:.2rem}h2{border-bottom:1px solid #ccc;margin-top:2rem}
-table{border-collapse:collapse;margin:.5rem 0}td,th{border:1px solid #ccc;padding:.2rem .5rem;
-text-align:left;vertical-align:top}td.num{text-align:right;font-variant-numeric:tabular-nums}
-pre{background:#f6f6f6;padding:.6rem;overflow-x:auto;font-size:.85rem}
-.refused{border:3px solid #b00;background:#fee;padding:.6rem 1rem;margin:1rem 0}
-.refused h2{border:0;margin:0;color:#b00}.omits{background:#fff7e0;padding:.4rem 1rem}
-figure{margin:1rem 0}figure img{max-width:100%;border:1px solid #ddd}figcaption{font-size:.9rem}
-.muted{color:#666;font-size:.9rem}"""
-
 _e = html.escape
 
 
 def _num(x: float, spec: str = ".4g") -> str:
     return "-" if x is None or not math.isfinite(float(x)) else format(float(x), spec)
-
-
-def _table(head, rows, num=()) -> str:
-    """An HTML table; ``rows`` hold already escaped HTML; columns in ``num`` are right-aligned."""
-    h = "".join(f"<th>{_e(c)}</th>" for c in head)
-    body = "".join("<tr>" + "".join(f"<td{' class=num' if j in num else ''}>{c}</td>"
-                                    for j, c in enumerate(r)) + "</tr>" for r in rows)
-    return f"<table><thead><tr>{h}</tr></thead><tbody>{body}</tbody></table>"
 
 
 def scene_inputs(text: str) -> list[tuple[str, str, str]]:
@@ -118,10 +100,6 @@ def scene_inputs(text: str) -> list[tuple[str, str, str]]:
     return rows
 
 
-def _png(path: Path) -> str:
-    return "data:image/png;base64," + base64.b64encode(path.read_bytes()).decode("ascii")
-
-
 def _refused(ex: dict) -> str:
     refused = ex.get("refused") or [{"line": e} for e in ex.get("errors", ())]
     if not refused:
@@ -133,7 +111,8 @@ def _refused(ex: dict) -> str:
             f"<ul>{items}</ul></div>")
 
 
-def _title(p: dict, text: str) -> str:
+def _title(p: dict, text: str) -> tuple[str, str]:
+    """The scene's name, and the title block (name, description, source) as HTML."""
     try:
         head = tomllib.loads(text) if text else {}
     except tomllib.TOMLDecodeError:
@@ -144,7 +123,7 @@ def _title(p: dict, text: str) -> str:
         out.append(f"<p>{_e(str(head['description']))}</p>")
     if head.get("source"):
         out.append(f"<p class=muted>Source: {_e(str(head['source']))}</p>")
-    return "".join(out)
+    return str(name), "".join(out)
 
 
 def _run(result: SweepResult, s: dict) -> str:
@@ -156,7 +135,7 @@ def _run(result: SweepResult, s: dict) -> str:
     rows = [("date (UTC)", p.get("date", "")), ("versions", vers), ("machine", p.get("machine", "")),
             ("scene file", f"{p.get('scene', '(in memory)')} (sha256 {str(p.get('scene_sha256', ''))[:16]})"),
             ("method", f"{result.method}; {result.n_angles} angles ({counts})")]
-    out = _table(("run", ""), [(_e(a), _e(str(b))) for a, b in rows])
+    out = html_table(("run", ""), [(_e(a), _e(str(b))) for a, b in rows])
     return out + f"<p>Command line:</p><pre>{_e(str(p.get('command', '')))}</pre>"
 
 
@@ -183,7 +162,7 @@ def _worst(result: SweepResult) -> str:
            "<th>at cam angle (deg)</th><th>depth (µm)</th><th>column</th><th>from</th></tr></thead>"
            f"<tbody>{body}</tbody></table>")
     if ex.get("assess"):
-        out += "<h3>Assessment (worst per criterion, SI units)</h3>" + _table(
+        out += "<h3>Assessment (worst per criterion, SI units)</h3>" + html_table(
             ("criterion", "worst value", "at cam angle (deg)"),
             [(_e(c), _num(w["value"]), _num(w["theta_deg"], ".1f")) for c, w in ex["assess"].items()],
             num=(1, 2))
@@ -199,7 +178,7 @@ def _models(result: SweepResult, s: dict) -> str:
     rows = [(f"<code>{_e(m or '(none)')}</code>", str(int(np.count_nonzero(model == m))),
              _e(MODEL_REASONS.get(m, "")))
             for m in dict.fromkeys(model)]
-    out = _table(("model", "angles", "why"), rows, num=(1,))
+    out = html_table(("model", "angles", "why"), rows, num=(1,))
     if result.method != "hertz":
         out += f"<p>{_e(families_text(s['n_families'], s['reuse_error_max'], s['n_binned']))}.</p>"
     return out
@@ -221,7 +200,7 @@ def _validation(result: SweepResult, s: dict) -> str:
         out.append("<p>Model families (one FE model reused over neighbouring angles), each checked "
                    "against a model built for the checked angle"
                    + (f", tolerance {100 * float(tol):g} %" if tol is not None else "") + ":</p>")
-        out.append(_table(("family", "angles", "rho_ref (mm)", "a_ref (µm)", "checked angles",
+        out.append(html_table(("family", "angles", "rho_ref (mm)", "a_ref (µm)", "checked angles",
                            "reuse error (%)"), rows, num=(1, 2, 3, 4, 5)))
     return "".join(out)
 
@@ -232,7 +211,7 @@ def _plots(out: Path) -> str:
     names = [n for n in PLOT_CAPTIONS if n in found] + [n for n in found if n not in PLOT_CAPTIONS]
     figs = []
     for png in (out / "plots" / n for n in names if (out / "plots" / n).is_file()):
-        figs.append(f"<figure><img src=\"{_png(png)}\" alt=\"{_e(png.name)}\"><figcaption>"
+        figs.append(f"<figure><img src=\"{png_data_uri(png)}\" alt=\"{_e(png.name)}\"><figcaption>"
                     f"{_e(plot_caption(png.name))} <span class=muted>(plots/{_e(png.name)})</span>"
                     "</figcaption></figure>")
     return "".join(figs) or "<p>No plots were written (<code>--no-plots</code>).</p>"
@@ -242,7 +221,7 @@ def _scene(text: str) -> str:
     if not text:
         return "<p>The scene was built in code: no TOML text (its repr is in sweep.npz).</p>"
     rows = [(f"<code>{_e(k)}</code>", _e(v), _e(u)) for k, v, u in scene_inputs(text)]
-    return _table(("input", "value", "unit"), rows) + f"<pre>{_e(text)}</pre>"
+    return html_table(("input", "value", "unit"), rows) + f"<pre>{_e(text)}</pre>"
 
 
 #: files linked from the report when present, with what they hold
@@ -257,7 +236,7 @@ FILES = (("sweep.pvd", "VTK series of the stress fields (ParaView, pyvista)"),
 def _files(out: Path) -> str:
     rows = [(f"<a href=\"{_e(name)}\">{_e(name)}</a>", _e(what)) for name, what in FILES
             if (out / name).is_file()]
-    return _table(("file", "what it holds"), rows) if rows else "<p>No files.</p>"
+    return html_table(("file", "what it holds"), rows) if rows else "<p>No files.</p>"
 
 
 def report_html(result: SweepResult, out) -> str:
@@ -281,15 +260,12 @@ def report_html(result: SweepResult, out) -> str:
     s, ex = result.summary(), result.provenance.get("extras", {})
     scene = out / "scene.toml"
     text = scene.read_text(encoding="utf-8") if scene.is_file() else ""
-    title = _title(result.provenance, text)
-    name = html.unescape(title.split("</h1>")[0][4:])
+    name, title = _title(result.provenance, text)
     sections = [("The run", _run(result, s)), ("Worst values and where they occur", _worst(result)),
                 ("Models used", _models(result, s)), ("Validation against Hertz", _validation(result, s)),
                 ("Plots", _plots(out)), ("The scene", _scene(text)), ("Files", _files(out))]
     body = _refused(ex) + title + _omits(ex) + "".join(
         f"<h2>{_e(h)}</h2>{c}" for h, c in sections)
     version = str(result.provenance.get("versions", {}).get("femcam", ""))
-    return ("<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8>"
-            f"<title>femcam sweep report: {_e(name)}</title><style>{_CSS}</style></head>"
-            f"<body>{body}<p class=muted>Written by femcam {_e(version)}; every number is from "
-            "sweep.npz in this folder.</p></body></html>\n")
+    return page_html(f"femcam sweep report: {name}", f"{body}<p class=muted>Written by femcam "
+                     f"{_e(version)}; every number is from sweep.npz in this folder.</p>")
