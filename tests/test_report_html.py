@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import base64
 import dataclasses
+import html
 import math
 import re
 from html.parser import HTMLParser
@@ -23,7 +24,7 @@ import pytest
 from femcam.sweep import SweepResult, sweep
 from femcam.sweep.report import report_html, scene_inputs
 from femcam.sweep.table import COLUMNS
-from femcam.sweep.worst import PEAKS
+from femcam.sweep.worst import ITEMS, PEAKS
 from femcam.viz.html import markdown_page, png_data_uri
 
 EXAMPLE = "examples/seed002_study_model.toml"
@@ -110,34 +111,66 @@ def test_every_plot_the_run_wrote_is_embedded_once(run):
     assert sorted(found) == sorted(files), "one <img> per plot file"
 
 
-def test_worst_values_are_the_npz_columns_at_the_stated_angle(run):
-    _, out, page = run
+def _check_worst(out, page):
+    """Every row of the worst-values table against ``sweep.npz``: the value at the printed
+    angle to the printed precision, that angle the column's extreme over the ok rows, the depth."""
     z = _npz(out)
     ok = z["status"].astype(str) == "ok"
     theta_deg = np.degrees(z["theta"])
+    # column -> (factor SI -> unit shown, which extreme, depth column)
+    spec = {c: (f, how, "") for _, items in ITEMS.values() for c, _, _, f, how in items}
     factor = {si: f for si, _, f in COLUMNS}
-    how = {c: h for c, _, _, h, _ in PEAKS}
-    depth = {c: d for c, *_, d in PEAKS}
-    rows = {r["column"]: r["cells"] for r in page.worst}
-    for must in ("Fc", "phi", "p0_hertz", "vm_max", "tau1_max", "txz_range_max", "surf_sz_min",
-                 "wear_depth"):
-        assert must in rows, f"{must} is not in the worst-values table"
-    for col, (_, value, unit, angle, dep, csv, *_) in rows.items():
-        v = np.asarray(z[col], float) * factor[col]
+    spec.update({c: (factor[c], how, d) for c, _, _, how, d in PEAKS})
+    for row in page.worst:
+        col, (_, value, unit, angle, dep, csv, *_) = row["column"], row["cells"]
+        f, how, depth = spec[col]
+        v = np.asarray(z[col], float) * f
         # the printed angle names one ok row, where the column has the printed value
         at = np.flatnonzero(ok & (np.round(theta_deg, 1) == float(angle)))
         assert at.size == 1, f"{col}: no single ok row at {angle} deg"
         i = at[0]
         assert value == f"{v[i]:.4g}", f"{col}: printed {value}, sweep.npz has {v[i]:.6g} at {angle} deg"
         # and that row is the column's extreme over the ok rows
-        key = np.abs(v) if how[col] == "absmax" else (-v if how[col] == "min" else v)
+        key = np.abs(v) if how == "absmax" else (-v if how == "min" else v)
         assert key[i] == np.nanmax(np.where(ok, key, np.nan)), f"{col}: {angle} deg is not the worst angle"
-        if depth[col]:
-            assert dep == f"{z[depth[col]][i] * 1e6:.4g}", f"{col}: depth {dep} um"
-        else:
-            assert dep == "-"
-        # the unit is the CSV column's (its name ends with it)
-        assert csv.endswith("_" + unit.replace("µm", "um").replace("/", "_")), (csv, unit)
+        assert dep == (f"{z[depth][i] * 1e6:.4g}" if depth else "-"), f"{col}: depth {dep} um"
+        if col in factor:    # the unit is the CSV column's (its name ends with it)
+            assert csv.endswith("_" + unit.replace("µm", "um").replace("/", "_")), (csv, unit)
+    return {r["column"] for r in page.worst}
+
+
+def test_worst_values_are_the_npz_columns_at_the_stated_angle(run):
+    _, out, page = run
+    shown = _check_worst(out, page)
+    for must in ("Fc", "phi", "p0_hertz", "vm_max", "tau1_max", "txz_range_max", "surf_sz_min",
+                 "wear_depth"):
+        assert must in shown, f"{must} is not in the worst-values table"
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("example, provider", [("seed002_coated.toml", "layers"),
+                                               ("seed002_assess.toml", None)])
+def test_provider_worst_values_match_the_npz(tmp_path, example, provider):
+    out = tmp_path / "out"
+    sweep(f"examples/{example}", angles=np.radians([0.0, 90.0, 180.0, 270.0]), method="hertz",
+          workers=1, out=out, plots=False, vtk_every=0, progress=False)
+    text = (out / "report.html").read_text(encoding="utf-8")
+    page = Page(text)
+    shown = _check_worst(out, page)
+    if provider:
+        assert {c for c, *_ in ITEMS[provider][1]} & shown, f"no {provider} row"
+        for line in SweepResult.load(out).provenance["extras"]["headline"]:   # what it omits
+            assert html.escape(line) in text
+    else:        # the assessment's worst angle per criterion, from the npz columns
+        z = _npz(out)
+        ok = z["status"].astype(str) == "ok"
+        rows = re.findall(r"<tr><td>([^<]+)</td><td class=num>([^<]+)</td><td>[^<]*</td><td class=num>"
+                          r"([^<]+)</td><td><code>(assess_\w+)</code>", text)
+        assert len(rows) >= 5, rows
+        for crit, value, angle, col in rows:
+            v = np.where(ok, z[col], np.nan)
+            i = int(np.nanargmin(v) if crit != "contact temperature" else np.nanargmax(v))
+            assert (value, angle) == (f"{v[i]:.4g}", f"{np.degrees(z['theta'][i]):.1f}"), crit
 
 
 def test_links_resolve_in_the_folder_and_nothing_points_outside(run):

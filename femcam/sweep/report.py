@@ -27,6 +27,7 @@ try:  # Python >= 3.11
 except ModuleNotFoundError:  # pragma: no cover - Python 3.10 (as femcam.scene.load)
     import tomli as tomllib
 
+from ..assess.core import WORST as ASSESS_WORST
 from ..viz.html import html_table, page_html, png_data_uri
 from ..viz.sweep import PLOT_CAPTIONS, plot_caption
 from .result import SweepResult, families_text, hertz_check_text
@@ -44,6 +45,9 @@ MODEL_REASONS = {
                 "exceeds the tolerance",
     "": "no model (no contact, or the row was not solved; see status)",
 }
+
+#: unit of the assessment's worst values (the others are safety factors, ratios)
+ASSESS_UNITS = {"contact temperature": "°C", "pitting life": "cycles"}
 
 #: scene-key suffix -> unit shown (longest first: ``_mm3_per_N_m`` before ``_m``)
 UNITS = (("_mm3_per_N_m", "mm^3/(N m)"), ("_m3_per_N_m", "m^3/(N m)"), ("_mm2_per_s", "mm^2/s"),
@@ -162,10 +166,11 @@ def _worst(result: SweepResult) -> str:
            "<th>at cam angle (deg)</th><th>depth (µm)</th><th>column</th><th>from</th></tr></thead>"
            f"<tbody>{body}</tbody></table>")
     if ex.get("assess"):
-        out += "<h3>Assessment (worst per criterion, SI units)</h3>" + html_table(
-            ("criterion", "worst value", "at cam angle (deg)"),
-            [(_e(c), _num(w["value"]), _num(w["theta_deg"], ".1f")) for c, w in ex["assess"].items()],
-            num=(1, 2))
+        out += "<h3>Assessment: the worst angle per criterion</h3>" + html_table(
+            ("criterion", "worst value", "unit", "at cam angle (deg)", "column"),
+            [(_e(c), _num(w["value"]), ASSESS_UNITS.get(c, ""), _num(w["theta_deg"], ".1f"),
+              f"<code>assess_{_e(ASSESS_WORST[c][0])}</code>" if c in ASSESS_WORST else "")
+             for c, w in ex["assess"].items()], num=(1, 3), attrs="id=assess")
     extra = [t for t in ex.get("notes", ())]
     n = ex.get("coating_wear", {}).get("revolutions_through")
     if n is not None and math.isfinite(n):
