@@ -50,7 +50,8 @@ MODEL_REASONS = {
 ASSESS_UNITS = {"contact temperature": "°C", "pitting life": "cycles"}
 
 #: scene-key suffix -> unit shown (longest first: ``_mm3_per_N_m`` before ``_m``)
-UNITS = (("_mm3_per_N_m", "mm^3/(N m)"), ("_m3_per_N_m", "m^3/(N m)"), ("_mm2_per_s", "mm^2/s"),
+UNITS = (("_J_per_kg_K", "J/(kg K)"), ("_N_s_per_m", "N s/m"), ("_rad_s", "rad/s"),
+         ("_mm3_per_N_m", "mm^3/(N m)"), ("_m3_per_N_m", "m^3/(N m)"), ("_mm2_per_s", "mm^2/s"),
          ("_W_per_m_K", "W/(m K)"), ("_kg_per_m3", "kg/m^3"), ("_N_per_m", "N/m"),
          ("_s_per_m", "s/m"), ("_per_GPa", "1/GPa"), ("_per_K", "1/K"), ("_kg_m2", "kg m^2"),
          ("_mm", "mm"), ("_um", "µm"), ("_nm", "nm"), ("_GPa", "GPa"), ("_MPa", "MPa"),
@@ -94,9 +95,8 @@ def scene_inputs(text: str) -> list[tuple[str, str, str]]:
                 for i, x in enumerate(v, 1):
                     walk(f"{prefix}{k}[{i}].", x)
             elif prefix or k not in ("name", "description", "source"):
-                unit = "rpm" if k == "rpm" else next((u for s, u in UNITS if k.endswith(s)), "")
-                key = k[: len(k) - len(next(s for s, u in UNITS if u == unit))] \
-                    if unit and unit != "rpm" else k
+                suffix, unit = next(((s, u) for s, u in UNITS if k.endswith(s)), ("", ""))
+                key, unit = (k, "rpm") if k == "rpm" else (k[: len(k) - len(suffix)], unit)
                 val = ", ".join(map(str, v)) if isinstance(v, list) else str(v)
                 rows.append((prefix + key, val, unit))
 
