@@ -31,7 +31,7 @@ from ..assess.core import WORST as ASSESS_WORST
 from ..viz.html import html_table, page_html, png_data_uri
 from ..viz.sweep import PLOT_CAPTIONS, plot_caption
 from .result import SweepResult, families_text, hertz_check_text
-from .worst import peak_rows
+from .worst import angle_text, peak_rows
 
 __all__ = ["report_html", "scene_inputs"]
 
@@ -157,18 +157,19 @@ def _worst(result: SweepResult) -> str:
     rows = peak_rows(result.table, ex.get("providers", ()))
     body = "".join(
         f"<tr data-column={_e(r['column'])}><td>{_e(r['what'])}</td><td class=num>{_num(r['value'])}</td>"
-        f"<td>{_e(r['unit'].replace('um', 'µm'))}</td><td class=num>{_num(r['theta_deg'], '.1f')}</td>"
+        f"<td>{_e(r['unit'].replace('um', 'µm'))}</td><td class=num>{angle_text(r['theta_deg'])}</td>"
         f"<td class=num>{_num(r['depth_um'], '.4g')}</td><td><code>{_e(r['csv'] or r['column'])}</code>"
-        f"</td><td>{_e(r['source'])}</td></tr>" for r in rows)
+        f"</td><td>{_e(r['source'])}</td><td>{_e(r['note'])}</td></tr>" for r in rows)
     out = ("<p>Each quantity's worst value over the angles with contact (status ok) and the cam "
            "angle where it occurs; depths are below the surface of the body where the maximum lies.</p>"
            "<table id=worst><thead><tr><th>quantity</th><th>worst value</th><th>unit</th>"
-           "<th>at cam angle (deg)</th><th>depth (µm)</th><th>column</th><th>from</th></tr></thead>"
+           "<th>at cam angle (deg)</th><th>depth (µm)</th><th>column</th><th>from</th><th>note</th>"
+           "</tr></thead>"
            f"<tbody>{body}</tbody></table>")
     if ex.get("assess"):
         out += "<h3>Assessment: the worst angle per criterion</h3>" + html_table(
             ("criterion", "worst value", "unit", "at cam angle (deg)", "column"),
-            [(_e(c), _num(w["value"]), ASSESS_UNITS.get(c, ""), _num(w["theta_deg"], ".1f"),
+            [(_e(c), _num(w["value"]), ASSESS_UNITS.get(c, ""), angle_text(w["theta_deg"]),
               f"<code>assess_{_e(ASSESS_WORST[c][0])}</code>" if c in ASSESS_WORST else "")
              for c, w in ex["assess"].items()], num=(1, 3), attrs="id=assess")
     extra = [t for t in ex.get("notes", ())]

@@ -31,7 +31,7 @@ from .table import (
     extra_keys,
     worst_row,
 )
-from .worst import peak_rows
+from .worst import angle_text, peak_rows
 
 __all__ = ["COLUMNS", "EXTRA_COLUMNS", "INTEGER_COLUMNS", "NUMERIC", "PROFILE_PREFIX", "STATUSES",
            "TEXT_COLUMNS", "WALL_CLOCK", "SweepResult", "TableBuilder", "concat_rows", "empty_rows",
@@ -360,10 +360,10 @@ def report_markdown(result: SweepResult) -> str:
     if result.method == "fe":
         lines.append(f"- {families_text(s['n_families'], s['reuse_error_max'], s['n_binned'])} (tolerance "
                      f"{100 * float(o.get('tolerance', float('nan'))):g} %)")
-    lines += ["", "| quantity | worst value | unit | at cam angle (deg) | depth (um) |",
-              "|---|---|---|---|---|"]
-    lines += [f"| {r['what']} | {r['value']:.4g} | {r['unit']} | {r['theta_deg']:.1f} | "
-              f"{_fmt(r['depth_um'], 1.0, 4, 'g')} |"
+    lines += ["", "| quantity | worst value | unit | at cam angle (deg) | depth (um) | note |",
+              "|---|---|---|---|---|---|"]
+    lines += [f"| {r['what']} | {r['value']:.4g} | {r['unit']} | {angle_text(r['theta_deg'])} | "
+              f"{_fmt(r['depth_um'], 1.0, 4, 'g')} | {r['note']} |"
               for r in peak_rows(result.table)]   # the providers' worst values: _extras_lines
     lines += ["", f"- p0 FE vs Hertz: {hertz_check_text(s)}"]
     lines += [f"- {t}" for t in p.get("extras", {}).get("headline", ())]   # what the headline omits

@@ -38,6 +38,30 @@ PEAKS = (("Fc", "contact force Fc", "N", "max", ""),
          ("v_slip", "slip speed v_slip (largest magnitude)", "m/s", "absmax", ""),
          ("wear_depth", "wear depth per revolution", "nm", "max", ""))
 
+#: the note of a worst value flagged ``surf_edge_dominated:<column>`` at its angle
+EDGE_NOTE = ("edge-dominated at this angle: a value of the FE contact edge's singularity, "
+             "not a result (flags)")
+
+
+def angle_text(theta_deg: float) -> str:
+    """A cam angle for the reports: up to 3 decimals, at least one (``"240.0"``, ``"100.05"``),
+    so the refined angles around a curvature jump stay distinct.
+
+    Parameters
+    ----------
+    theta_deg : float
+        Cam angle [deg].
+
+    Returns
+    -------
+    str
+        E.g. ``"74.125"``; ``"-"`` for NaN.
+    """
+    if not math.isfinite(theta_deg):
+        return "-"
+    s = f"{theta_deg:.3f}".rstrip("0")
+    return s + "0" if s.endswith(".") else s
+
 #: provider -> its label and items (SI column, what, unit shown, factor SI -> unit, "max"|"min")
 ITEMS = {
     "halfspace": ("finite length", (("hs_p_axial_peak", "axial peak", "MPa", 1e-6, "max"),
@@ -84,7 +108,9 @@ def peak_rows(table, names=()) -> list[dict]:
         "source"}`` per column with a finite ``ok`` value: ``column`` the SI name (a
         ``sweep.npz`` key), ``csv`` its ``sweep.csv`` name ("" for a provider's column), ``value``
         in ``unit`` (the factor of the CSV), ``depth_um`` NaN without a depth column, ``source``
-        ``"headline"`` or the provider's label.
+        ``"headline"`` or the provider's label, ``note`` :data:`EDGE_NOTE` where the row's
+        ``flags`` say this surface value is the contact edge's discretisation singularity
+        (``surf_edge_dominated:<column>``, :func:`femcam.sweep.headline.edge_flags`), else "".
     """
     ok = np.asarray(table["status"]).astype(str) == "ok"
     csv = {c[0]: (c[1], c[2]) for c in COLUMNS}
@@ -92,14 +118,17 @@ def peak_rows(table, names=()) -> list[dict]:
              for c, what, unit, how, depth in PEAKS]
     items += [(c, what, unit, f, how, "", label, "") for name in names if name in ITEMS
               for label, its in [ITEMS[name]] for c, what, unit, f, how in its]
+    flags = np.asarray(table["flags"]).astype(str) if "flags" in table else None
     rows = []
     for c, what, unit, f, how, depth, source, csv_name in items:
         e = _extreme(table, c, ok, how)
         if e is None:
             continue
         d = float(np.asarray(table[depth], float)[e[2]]) * 1e6 if depth and depth in table else math.nan
+        edge = f"surf_edge_dominated:{c}" in str(flags[e[2]]).split(";") if flags is not None else False
         rows.append({"column": c, "csv": csv_name, "what": what, "unit": unit, "value": e[0] * f,
-                     "theta_deg": e[1], "depth_um": d, "index": e[2], "source": source})
+                     "theta_deg": e[1], "depth_um": d, "index": e[2], "source": source,
+                     "note": EDGE_NOTE if edge else ""})
     return rows
 
 
