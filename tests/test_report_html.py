@@ -221,6 +221,14 @@ def test_report_of_the_reloaded_sweep_is_the_same_page(run):
     assert report_html(SweepResult.load(out), out) == (out / "report.html").read_text(encoding="utf-8")
 
 
+def test_only_the_plots_of_this_run_are_embedded(run):
+    # a rerun with --overwrite --no-plots leaves the earlier PNGs in plots/: not this run's
+    r, out, _ = run
+    assert Page(report_html(r, out, plots=[])).imgs == []
+    one = out / "plots" / "p0_vs_angle.png"
+    assert [i["src"] for i in Page(report_html(r, out, plots=[one])).imgs] == [png_data_uri(one)]
+
+
 def test_refused_part_is_the_first_thing_on_the_page(run):
     r, out, _ = run
     line = "bodies refused at 8 of 8 angle(s), its columns are NaN there: ConvergenceError: ..."

@@ -236,7 +236,8 @@ def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None
         paths["animation"] = animate_pvd(paths["pvd"], out / "animation.gif")
     atomic_write_text(out / "report.md", report_markdown(result))
     paths["report"] = str(out / "report.md")
-    atomic_write_text(out / "report.html", report_html(result, out))  # one file to send
+    drawn = [v for k, v in paths.items() if k.startswith("plot_")]   # not an earlier run's PNGs
+    atomic_write_text(out / "report.html", report_html(result, out, plots=drawn))  # one file to send
     paths["report_html"] = str(out / "report.html")
     return result
 

@@ -211,16 +211,17 @@ def _validation(result: SweepResult, s: dict) -> str:
     return "".join(out)
 
 
-def _plots(out: Path) -> str:
-    # every PNG in DIR/plots: the sweep's own in the order of their captions, then the others
-    found = sorted(p.name for p in (out / "plots").glob("*.png"))
+def _plots(out: Path, plots) -> str:
+    # the sweep's own in the order of their captions, then the others
+    found = sorted(p.name for p in (out / "plots").glob("*.png")) if plots is None \
+        else sorted(Path(p).name for p in plots)
     names = [n for n in PLOT_CAPTIONS if n in found] + [n for n in found if n not in PLOT_CAPTIONS]
     figs = []
     for png in (out / "plots" / n for n in names if (out / "plots" / n).is_file()):
         figs.append(f"<figure><img src=\"{png_data_uri(png)}\" alt=\"{_e(png.name)}\"><figcaption>"
                     f"{_e(plot_caption(png.name))} <span class=muted>(plots/{_e(png.name)})</span>"
                     "</figcaption></figure>")
-    return "".join(figs) or "<p>No plots were written (<code>--no-plots</code>).</p>"
+    return "".join(figs) or "<p>This run wrote no plots (<code>--no-plots</code>).</p>"
 
 
 def _scene(text: str) -> str:
@@ -245,7 +246,7 @@ def _files(out: Path) -> str:
     return html_table(("file", "what it holds"), rows) if rows else "<p>No files.</p>"
 
 
-def report_html(result: SweepResult, out) -> str:
+def report_html(result: SweepResult, out, plots=None) -> str:
     """The sweep's report as one self-contained HTML page (plots embedded as base64 PNG, inline
     style, relative links to the files in ``out`` only).
 
@@ -256,6 +257,10 @@ def report_html(result: SweepResult, out) -> str:
     out : str or Path
         Its output directory: the plots (``plots/*.png``), ``scene.toml`` and the linked files
         are read from there.
+    plots : sequence of str or Path, optional
+        The plots this run wrote (files in ``out/plots``; :func:`femcam.sweep.sweep` passes them,
+        so a plot left in the folder by an earlier run is not shown as this run's). None: every
+        ``out/plots/*.png`` (a reloaded sweep).
 
     Returns
     -------
@@ -269,7 +274,7 @@ def report_html(result: SweepResult, out) -> str:
     name, title = _title(result.provenance, text)
     sections = [("The run", _run(result, s)), ("Worst values and where they occur", _worst(result)),
                 ("Models used", _models(result, s)), ("Validation against Hertz", _validation(result, s)),
-                ("Plots", _plots(out)), ("The scene", _scene(text)), ("Files", _files(out))]
+                ("Plots", _plots(out, plots)), ("The scene", _scene(text)), ("Files", _files(out))]
     body = _refused(ex) + title + _omits(ex) + "".join(
         f"<h2>{_e(h)}</h2>{c}" for h, c in sections)
     version = str(result.provenance.get("versions", {}).get("femcam", ""))
