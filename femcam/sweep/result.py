@@ -365,7 +365,7 @@ def report_markdown(result: SweepResult) -> str:
     lines += [f"| {r['what']} | {r['value']:.4g} | {r['unit']} | {angle_text(r['theta_deg'])} | "
               f"{_fmt(r['depth_um'], 1.0, 4, 'g')} | {r['note']} |"
               for r in peak_rows(result.table)]   # the providers' worst values: _extras_lines
-    lines += ["", f"- p0 FE vs Hertz: {hertz_check_text(s)}"]
+    lines += [f"| p0 FE vs Hertz | {hertz_check_text(s)} | | | | |"]
     lines += [f"- {t}" for t in p.get("extras", {}).get("headline", ())]   # what the headline omits
     lines += _extras_lines(p.get("extras", {}))
     plots = {k: f"plots/{Path(v).name}" for k, v in result.paths.items() if k.startswith("plot_")}
