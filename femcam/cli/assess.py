@@ -2,9 +2,8 @@
 shakedown, contact fatigue, scuffing and the lubrication regime at every cam angle.
 
 Writes ``DIR/assessment.csv`` (units in the column names, provenance header), ``DIR/summary.json``
-(worst angle per criterion, skipped criteria, flags), ``DIR/report.md`` (one page with the plots;
-``DIR/report.html``: the same page with the plots embedded) and ``DIR/plots/assess_*.png``.
-``--sweep SWEEP_DIR`` takes the angles, the FE ``a``/``p0``, the FE
+(worst angle per criterion, skipped criteria, flags), ``DIR/report.md`` (one page with the plots)
+and ``DIR/plots/assess_*.png``. ``--sweep SWEEP_DIR`` takes the angles, the FE ``a``/``p0``, the FE
 ``tau1_max`` and the FE range of ``txz`` over one pass (``txz_range_max``) of a finished sweep
 (``SWEEP_DIR/sweep.npz``) instead of Hertz; a sweep written without ``txz_range_max`` keeps
 Hertz's range at the FE ``p0`` and says so.
