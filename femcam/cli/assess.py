@@ -23,6 +23,7 @@ from ..assess import assess, csv_columns, sweep_table
 from ..io import atomic_write_text, csv_text, provenance
 from ..scene import load_scene
 from ..viz.assess import plot_assessment, report_markdown
+from ..viz.html import markdown_page
 from ._common import add_no_plots, add_overwrite, add_scene_out, out_dir, plain, refuse_non_empty
 
 
@@ -87,11 +88,14 @@ def _run(args) -> int:
 
         plots = plot_assessment(res, out / "plots")
 
-    (out / "report.md").write_text(report_markdown(res, plots, provenance=f"Scene `{args.scene}`, "
-                                                   f"{len(theta)} cam angles; {prov['date']}.", base=out))
+    md = report_markdown(res, plots, provenance=f"Scene `{args.scene}`, {len(theta)} cam angles; "
+                         f"{prov['date']}.", base=out)
+    atomic_write_text(out / "report.md", md)
+    atomic_write_text(out / "report.html", markdown_page(md, out))   # plots embedded: one file to send
     for crit, (v, t, _) in res.worst.items():
         print(f"{crit:>22s}: worst {v:.4g} at {math.degrees(t):6.1f} deg")
     for n in res.notes:
         print(f"note: {n}")
-    print(f"wrote {out / 'assessment.csv'}, {out / 'summary.json'}, {out / 'report.md'}")
+    print(f"wrote {out / 'assessment.csv'}, {out / 'summary.json'}, {out / 'report.md'}, "
+          f"{out / 'report.html'}")
     return 0
