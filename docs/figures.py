@@ -131,7 +131,8 @@ FIGURES = (
     Figure("sweep_svaj_loads.png", _SWEEP + "svaj_loads.png", (STUDY,), ("analysis", STUDY)),
     Figure("sweep_bezier.png", "benchmarks/bench_sweep.py (writes docs/img/sweep_bezier.png)",
            (STUDY, "benchmarks/bench_sweep.py"), ("hertz_laws", STUDY)),
-    Figure("sweep_junction_p0.png", _REAL, ("examples/shm_dwell_junction.toml", "benchmarks/bench_real_cam.py"),
+    Figure("sweep_junction_p0.png", _REAL,
+           ("examples/shm_dwell_junction.toml", "benchmarks/bench_real_cam.py"),
            ("hertz", "examples/shm_dwell_junction.toml")),
     Figure("fe_junction_p0.png", _REAL, ("examples/shm_dwell_junction.toml", "benchmarks/bench_real_cam.py"),
            ("hertz", "examples/shm_dwell_junction.toml")),
@@ -143,7 +144,8 @@ FIGURES = (
            ("examples/seed003_knife_edge.toml", "benchmarks/bench_real_cam.py"),
            ("analysis", "examples/seed003_knife_edge.toml")),
     Figure("sweep_flat_faced_p0.png", "benchmarks/bench_real_cam.py (sweep_follower_plots)",
-           ("examples/flat_faced.toml", "benchmarks/bench_real_cam.py"), ("analysis", "examples/flat_faced.toml")),
+           ("examples/flat_faced.toml", "benchmarks/bench_real_cam.py"),
+           ("analysis", "examples/flat_faced.toml")),
     Figure("speed_error.png", "benchmarks/bench_speed_error.py --plot docs/img/speed_error.png",
            (STUDY, "benchmarks/bench_speed_error.py"), ("hertz_pair",)),
     Figure("bodies_wall_study.png", "benchmarks/figures_bodies.py",
@@ -159,8 +161,10 @@ FIGURES = (
            ("examples/seed002_cam_on_shaft.toml", "benchmarks/figures_cam_disk.py"),
            ("analysis", "examples/seed002_cam_on_shaft.toml")),
     Figure("layers_seed002.png", "benchmarks/fig_layers.py",
-           ("examples/seed002_coated.toml", "benchmarks/fig_layers.py"), ("hertz", "examples/seed002_coated.toml")),
-    Figure("layers_reference.png", "benchmarks/fig_layers.py (FE vs tests/test_layers.py's layered half-space)",
+           ("examples/seed002_coated.toml", "benchmarks/fig_layers.py"),
+           ("hertz", "examples/seed002_coated.toml")),
+    Figure("layers_reference.png",
+           "benchmarks/fig_layers.py (FE vs tests/test_layers.py's layered half-space)",
            ("benchmarks/fig_layers.py", "tests/test_layers.py")),
     Figure("halfspace_crowns.png", "benchmarks/bench_halfspace.py",
            ("examples/seed002_crowned.toml", "benchmarks/bench_halfspace.py"), ("hertz", STUDY)),
@@ -170,9 +174,11 @@ FIGURES = (
            ("examples/seed002_crowned.toml", "benchmarks/bench_halfspace.py"), ("hertz", STUDY)),
     Figure("extras_assess.png", "femcam sweep examples/seed002_assess.toml: DIR/plots/extras_assess.png",
            ("examples/seed002_assess.toml",), ("hertz", "examples/seed002_assess.toml")),
-    Figure("extras_halfspace.png", "femcam sweep examples/seed002_crowned.toml: DIR/plots/extras_halfspace.png",
+    Figure("extras_halfspace.png",
+           "femcam sweep examples/seed002_crowned.toml: DIR/plots/extras_halfspace.png",
            ("examples/seed002_crowned.toml",), ("hertz", "examples/seed002_crowned.toml")),
-    Figure("extras_bodies.png", "femcam sweep examples/seed002_needle_roller.toml: DIR/plots/extras_bodies.png",
+    Figure("extras_bodies.png",
+           "femcam sweep examples/seed002_needle_roller.toml: DIR/plots/extras_bodies.png",
            ("examples/seed002_needle_roller.toml",), ("hertz", "examples/seed002_needle_roller.toml")),
     Figure("extras_layers.png", "femcam sweep examples/seed002_coated.toml: DIR/plots/extras_layers.png",
            ("examples/seed002_coated.toml",), ("hertz", "examples/seed002_coated.toml")),
@@ -184,7 +190,8 @@ FIGURES = (
            ("dynamics", "examples/seed002_dynamic.toml")),
     *(Figure(f"assess_{k}.png", "benchmarks/bench_assess.py --figures docs/img (femcam.viz.assess)",
              ("examples/seed002_assess.toml", "benchmarks/bench_assess.py"),
-             ("hertz", "examples/seed002_assess.toml")) for k in ("lambda", "temperature", "safety", "outline")),
+             ("hertz", "examples/seed002_assess.toml"))
+      for k in ("lambda", "temperature", "safety", "outline")),
     Figure("assess_flat_lambda.png", "benchmarks/bench_assess.py --figures docs/img",
            ("benchmarks/bench_assess.py",)),
     Figure("wear_laws.png", "femcam wear seed000 --out DIR: DIR/wear_laws.png", (), ("seed000",)),
@@ -252,7 +259,8 @@ def main(argv=None) -> int:
     if "--record" in argv:
         RECORD.write_text(json.dumps(now, indent=1, sort_keys=True) + "\n", encoding="utf-8")
         PAGE.write_text(page(now), encoding="utf-8")
-        print(f"recorded {len(now)} fingerprints in {RECORD.relative_to(ROOT)}; wrote {PAGE.relative_to(ROOT)}")
+        print(f"recorded {len(now)} fingerprints in {RECORD.relative_to(ROOT)}; "
+              f"wrote {PAGE.relative_to(ROOT)}")
         return 0
     old = json.loads(RECORD.read_text(encoding="utf-8")) if RECORD.exists() else {}
     stale = sorted(n for n in now if old.get(n) != now[n])

@@ -25,7 +25,8 @@ def test_every_figure_has_a_producer_and_every_entry_a_figure():
     on_disk = {p.name for p in (ROOT / "docs" / "img").glob("*.png")}
     listed = [f.name for f in figures.FIGURES]
     assert len(listed) == len(set(listed)), "a figure is listed twice in docs/figures.py"
-    assert not on_disk - set(listed), f"figures without a producer in docs/figures.py: {sorted(on_disk - set(listed))}"
+    missing = sorted(on_disk - set(listed))
+    assert not missing, f"figures without a producer in docs/figures.py: {missing}"
     assert not set(listed) - on_disk, f"listed but not in docs/img: {sorted(set(listed) - on_disk)}"
 
 
