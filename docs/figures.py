@@ -199,6 +199,11 @@ FIGURES = (
            (STUDY,), ("hertz", STUDY)),
     Figure("wear_polar_bezier5.png", f"femcam wear map {STUDY} --out DIR: DIR/wear_bezier5_polar.png",
            (STUDY,), ("hertz", STUDY)),
+    Figure("optimise_svaj.png", "benchmarks/fig_optimise.py", (STUDY, "benchmarks/fig_optimise.py"),
+           ("analysis", STUDY)),
+    *(Figure(f"study_{k}_seed002.png", "benchmarks/bench_study.py --n 0 --figures docs/img",
+             (STUDY, "benchmarks/bench_study.py"), ("analysis", STUDY))
+      for k in ("pareto", "constraint_map")),
     *(Figure(f"{n}.png", f"femcam synth --case seed003 --out DIR --study: DIR/{n}.png",
              ("examples/seed003_knife_edge.toml",), ("analysis", "examples/seed003_knife_edge.toml"))
       for n in ("synth_curve", "synth_error_phi", "synth_study_k", "synth_study_k_mu")),
