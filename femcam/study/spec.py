@@ -39,6 +39,22 @@ def whole(name: str, value, lo: int, hi: int, unit: str = "") -> int:
     """A whole number in ``[lo, hi]`` (an integral float such as ``720.0`` too), else an
     :class:`~femcam.errors.InputError` naming ``name``.
 
+    Parameters
+    ----------
+    name : str
+        The parameter, named in the error.
+    value : int or float
+        The value given.
+    lo, hi : int
+        Bounds (inclusive).
+    unit : str
+        Unit shown after the value.
+
+    Returns
+    -------
+    int
+        The value.
+
     >>> whole("lhs", 8.0, 1, 10, "samples")
     8
     """
