@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .. import _validate
 from .constraints import NAMES
 
 _DEG = 180.0 / math.pi
@@ -75,7 +76,11 @@ def pareto_mask(f1, f2, candidates) -> np.ndarray:
     >>> pareto_mask([3, 2, 1, 2], [1, 2, 3, 3], [True] * 4).tolist()
     [True, True, True, False]
     """
-    f1, f2 = np.asarray(f1, float), np.asarray(f2, float)
+    f1 = _validate.data_array("f1", f1, inf_ok=True)
+    f2 = _validate.data_array("f2", f2, inf_ok=True)
+    if f1.shape != f2.shape or np.shape(candidates) != f1.shape:
+        raise _validate.fail("f2", f"shape {f2.shape}", "", f"f1, f2 and candidates must have one shape "
+                             f"(f1 {f1.shape}, candidates {np.shape(candidates)})")
     ok = np.asarray(candidates, bool) & np.isfinite(f1) & np.isfinite(f2)
     idx = np.flatnonzero(ok)
     out = np.zeros(f1.shape, bool)
