@@ -13,6 +13,7 @@ from femcam.cli import main
 from femcam.errors import InputError, SceneError
 from femcam.scene import load_scene
 from femcam.scene.digest import physics_parts
+from femcam.viz.html import png_data_uri
 
 EXAMPLE = "examples/seed002_assess.toml"
 OMEGA = 20 * math.pi                         # 600 rpm
@@ -228,6 +229,8 @@ def test_cli_assess_writes_csv_summary_report(tmp_path):
                          encoding="utf-8")
     assert data.size == 72
     assert "Worst angle per criterion" in (out / "report.md").read_text()
+    page = (out / "report.html").read_text()               # the same report as one page
+    assert "<h2>Worst angle per criterion</h2>" in page and "<img" not in page
 
 
 @pytest.mark.slow
@@ -235,6 +238,9 @@ def test_cli_assess_plots(tmp_path):
     out = tmp_path / "a"
     assert main(["assess", EXAMPLE, "--out", str(out), "--angles-deg", "0:360:5"]) == 0
     assert "plots/assess_lambda.png" in (out / "report.md").read_text()
+    page = (out / "report.html").read_text()               # every plot embedded in the page
+    for png in (out / "plots").glob("*.png"):
+        assert png_data_uri(png) in page, png.name
     for png in ("assess_lambda", "assess_temperature", "assess_safety", "assess_outline"):
         assert (out / "plots" / f"{png}.png").stat().st_size > 1000
 

@@ -89,6 +89,9 @@ def test_refused_part_is_said_and_fails_the_run(tmp_path, capsys, case):
     report = (out / "report.md").read_text()
     assert "Not a complete answer: 1 part(s) the scene asks for were refused" in report
     assert f"- refused: {part} refused at 2 of 2 angle(s)" in report
+    page = (out / "report.html").read_text()                         # first, above the title
+    assert page.index("<div class=refused") < page.index("<h1>") and "Not a complete answer" in page
+    assert f"{part} refused at 2 of 2 angle(s)" in page
     # the API: the reloaded result and a fresh in-memory sweep carry the refusal
     refused = SweepResult.load(out).refused
     assert [p for p, _ in refused] == [part] and words in refused[0][1]

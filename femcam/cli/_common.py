@@ -44,6 +44,20 @@ def add_scene_out(p, scene_help: str = "scene file", *, out_help: str = "output 
     p.add_argument("--out", required=out_required, default=None, metavar="DIR", help=out_help)
 
 
+def add_overwrite(p) -> None:
+    """Add ``--overwrite`` (``args.overwrite``): every subcommand refuses a non-empty ``--out``
+    without it (:func:`refuse_non_empty`), so a second run never mixes or silently replaces
+    the files of the first.
+
+    Parameters
+    ----------
+    p : argparse.ArgumentParser
+        The subcommand's parser.
+    """
+    p.add_argument("--overwrite", action="store_true",
+                   help="write into a non-empty DIR, replacing its files (refused otherwise)")
+
+
 def add_law_override(p) -> None:
     """Add ``--law NAME``, overriding the scene's rise/fall motion law (:data:`NAMED_LAWS`).
 
@@ -91,6 +105,8 @@ def out_dir(path, flag: str = "--out", *, create: bool = True) -> Path:
         Naming ``flag`` and the path when ``path`` is an existing file, lies under a file, or
         cannot be created or written.
     """
+    if not str(path).strip():  # Path("") is the current directory: never meant
+        raise _validate.fail(flag, str(path), "", "must name a directory (it is empty)")
     p = Path(path)
     for q in (p, *p.parents):  # the first existing component must be a directory
         if q.exists() or q.is_symlink():
@@ -136,7 +152,7 @@ def cap_workers(requested: int, n_tasks: int, tasks: str) -> tuple:
     return cap, f"--workers {requested} capped at {cap} (the useful number: {cores} CPU cores, {tasks})"
 
 
-def refuse_non_empty(path, overwrite: bool, *, resume: bool | None = None) -> None:
+def refuse_non_empty(path, overwrite: bool, *, resume: bool | None = None, what: str = "sweep") -> None:
     """Refuse a non-empty output directory unless ``--overwrite`` (or ``--resume``) is given:
     the rule of ``femcam sweep``, worded with the flags.
 
@@ -148,6 +164,8 @@ def refuse_non_empty(path, overwrite: bool, *, resume: bool | None = None) -> No
         ``--overwrite`` given.
     resume : bool or None, optional
         ``--resume`` given; None: the command has no ``--resume`` (not offered in the message).
+    what : str
+        What ``--resume`` continues, as the message names it (``"sweep"``, ``"study"``).
 
     Raises
     ------
@@ -157,7 +175,7 @@ def refuse_non_empty(path, overwrite: bool, *, resume: bool | None = None) -> No
     p = Path(path)  # the sweep's lock file (femcam.sweep.store.LOCK) is not content
     if overwrite or resume or not p.is_dir() or not any(q.name != LOCK for q in p.iterdir()):
         return
-    hint = "--resume to continue the sweep in it, --overwrite to replace its results" \
+    hint = f"--resume to continue the {what} in it, --overwrite to replace its results" \
         if resume is not None else "--overwrite to replace its files"
     raise _validate.fail("--out", str(p), "", f"the directory is not empty; pass {hint}, or choose "
                          "another --out")

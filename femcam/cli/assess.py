@@ -23,7 +23,8 @@ from ..assess import assess, csv_columns, sweep_table
 from ..io import atomic_write_text, csv_text, provenance
 from ..scene import load_scene
 from ..viz.assess import plot_assessment, report_markdown
-from ._common import add_no_plots, add_scene_out, out_dir, plain
+from ..viz.html import markdown_page
+from ._common import add_no_plots, add_overwrite, add_scene_out, out_dir, plain, refuse_non_empty
 
 
 def register(subparsers) -> None:
@@ -42,13 +43,14 @@ def register(subparsers) -> None:
     p.add_argument("--sweep", default=None, metavar="SWEEP_DIR",
                    help="use the angles and FE a/p0 of a finished sweep (SWEEP_DIR/sweep.npz)")
     add_no_plots(p)
+    add_overwrite(p)
     p.set_defaults(func=_run)
 
 
 def _sweep_table(path, scene):
     """The sweep's columns the assessment uses (the subsurface ``txz_range_max``, never a
-    surface value); a sweep of another scene or a corrupted folder is refused by the library
-    (:func:`femcam.assess.sweep_table`)."""
+    surface value); a sweep of another scene, a corrupted folder or a ``sweep.npz`` that is not
+    a regular file is refused by the library (:func:`femcam.assess.sweep_table`)."""
     z = sweep_table(path, scene)
     return {k: z[k] for k in ("theta", "a_fe", "p0_fe", "tau1_max", "txz_range_max") if k in z}
 
@@ -69,6 +71,7 @@ def _run(args) -> int:
     scene = load_scene(args.scene)
     table = _sweep_table(args.sweep, scene) if args.sweep else None
     theta = table["theta"] if table is not None else _validate.angles_deg("--angles-deg", args.angles_deg)
+    refuse_non_empty(args.out, args.overwrite)  # the rule of every subcommand, before the work
     res = assess(scene, theta, table=table)
     out = out_dir(args.out)
     prov = provenance(scene_path=args.scene, command=shlex.join(["femcam", "assess", *sys.argv[2:]]))
@@ -85,11 +88,14 @@ def _run(args) -> int:
 
         plots = plot_assessment(res, out / "plots")
 
-    (out / "report.md").write_text(report_markdown(res, plots, provenance=f"Scene `{args.scene}`, "
-                                                   f"{len(theta)} cam angles; {prov['date']}.", base=out))
+    md = report_markdown(res, plots, provenance=f"Scene `{args.scene}`, {len(theta)} cam angles; "
+                         f"{prov['date']}.", base=out)
+    atomic_write_text(out / "report.md", md)
+    atomic_write_text(out / "report.html", markdown_page(md, out))   # plots embedded: one file to send
     for crit, (v, t, _) in res.worst.items():
         print(f"{crit:>22s}: worst {v:.4g} at {math.degrees(t):6.1f} deg")
     for n in res.notes:
         print(f"note: {n}")
-    print(f"wrote {out / 'assessment.csv'}, {out / 'summary.json'}, {out / 'report.md'}")
+    print(f"wrote {out / 'assessment.csv'}, {out / 'summary.json'}, {out / 'report.md'}, "
+          f"{out / 'report.html'}")
     return 0

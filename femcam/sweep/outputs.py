@@ -1,5 +1,5 @@
 """The state of one sweep call and the files it writes: ``scene.toml``, ``sweep.csv``,
-``sweep.npz``, ``sweep.pvd``, the plots, ``report.md`` (:func:`write_outputs`, called by
+``sweep.npz``, ``sweep.pvd``, the plots, ``report.md``, ``report.html`` (:func:`write_outputs`, called by
 :func:`femcam.sweep.sweep` with an output directory).
 """
 
@@ -21,6 +21,7 @@ from .cache import default_cache
 from .extras import extra_columns, extras_files, plot_extras
 from .options import SweepOptions, contact_params
 from .profile import worst_surface_profile
+from .report import report_html
 from .result import (
     COLUMNS,
     INTEGER_COLUMNS,
@@ -235,6 +236,9 @@ def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None
         paths["animation"] = animate_pvd(paths["pvd"], out / "animation.gif")
     atomic_write_text(out / "report.md", report_markdown(result))
     paths["report"] = str(out / "report.md")
+    drawn = [v for k, v in paths.items() if k.startswith("plot_")]   # not an earlier run's PNGs
+    atomic_write_text(out / "report.html", report_html(result, out, plots=drawn))  # one file to send
+    paths["report_html"] = str(out / "report.html")
     return result
 
 

@@ -14,6 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
+from ..viz.sweep import plot_caption
 from .realrows import FLAT_BIN_RATIO
 from .table import (
     COLUMNS,
@@ -30,6 +31,7 @@ from .table import (
     extra_keys,
     worst_row,
 )
+from .worst import angle_text, peak_rows
 
 __all__ = ["COLUMNS", "EXTRA_COLUMNS", "INTEGER_COLUMNS", "NUMERIC", "PROFILE_PREFIX", "STATUSES",
            "TEXT_COLUMNS", "WALL_CLOCK", "SweepResult", "TableBuilder", "concat_rows", "empty_rows",
@@ -241,7 +243,7 @@ class SweepResult:
             hf = json.loads(str(z["hertz_factors_json"])) if "hertz_factors_json" in z.files else None
         method = prov.get("options", {}).get("method", "fe")
         names = {"csv": "sweep.csv", "npz": "sweep.npz", "pvd": "sweep.pvd",
-                 "scene": "scene.toml", "report": "report.md"}
+                 "scene": "scene.toml", "report": "report.md", "report_html": "report.html"}
         paths = {k: str(d / f) for k, f in names.items() if (d / f).exists()}
         return cls(table=table, method=method, provenance=prov, paths=paths,
                    surface_profile=profile or None, hertz_factors=hf)
@@ -334,7 +336,9 @@ def hertz_check_text(s: dict) -> str:
 
 
 def report_markdown(result: SweepResult) -> str:
-    """The sweep's summary as Markdown (written to ``DIR/report.md`` beside the CSV).
+    """The sweep's summary as Markdown (``DIR/report.md``): each headline quantity's worst value,
+    unit, cam angle and depth (:func:`femcam.sweep.worst.peak_rows`), the plots as ``plots/*.png``
+    images (``DIR/report.html`` embeds them: :func:`femcam.sweep.report.report_html`).
 
     Parameters
     ----------
@@ -356,18 +360,22 @@ def report_markdown(result: SweepResult) -> str:
     if result.method == "fe":
         lines.append(f"- {families_text(s['n_families'], s['reuse_error_max'], s['n_binned'])} (tolerance "
                      f"{100 * float(o.get('tolerance', float('nan'))):g} %)")
-    lines += ["", "| quantity | peak over the cycle |", "|---|---|",
-              f"| Fc (N) | {_fmt(s['Fc_max'])} |",
-              f"| p0 Hertz (MPa) | {_fmt(s['p0_hertz_max'], 1e-6)} |",
-              f"| p0 FE, peak of the solved pressure (MPa) | {_fmt(s['p0_fe_max'], 1e-6)} |",
-              f"| p0 FE vs Hertz | {hertz_check_text(s)} |",
-              f"| von Mises (MPa) | {_fmt(s['vm_max'], 1e-6)} |",
-              f"| tau1 (MPa) | {_fmt(s['tau1_max'], 1e-6)} |",
-              f"| wear depth per revolution (nm) | {_fmt(s['wear_depth_max'], 1e9, 3, 'g')} |",
-              ]
+    lines += ["", "| quantity | worst value | unit | at cam angle (deg) | depth (um) | note |",
+              "|---|---|---|---|---|---|"]
+    lines += [f"| {r['what']} | {r['value']:.4g} | {r['unit']} | {angle_text(r['theta_deg'])} | "
+              f"{_fmt(r['depth_um'], 1.0, 4, 'g')} | {r['note']} |"
+              for r in peak_rows(result.table)]   # the providers' worst values: _extras_lines
+    lines += [f"| p0 FE vs Hertz | {hertz_check_text(s)} | | | | |"]
     lines += [f"- {t}" for t in p.get("extras", {}).get("headline", ())]   # what the headline omits
     lines += _extras_lines(p.get("extras", {}))
-    lines += ["", "Files: " + ", ".join(f"`{Path(v).name}`" for v in result.paths.values()), ""]
+    plots = {k: f"plots/{Path(v).name}" for k, v in result.paths.items() if k.startswith("plot_")}
+    if plots:
+        lines += ["", "## Plots", ""]
+        lines += [f"![{plot_caption(Path(v).name)}]({v})\n\n*{plot_caption(Path(v).name)}* (`{v}`)\n"
+                  for v in plots.values()]
+    lines += ["", "Files: " + ", ".join(f"`{plots.get(k, Path(v).name)}`" for k, v in result.paths.items())
+              + (", `report.html` (this report with the plots embedded: one file to send)"
+                 if result.paths else ""), ""]
     return "\n".join(lines)
 
 

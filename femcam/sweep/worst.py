@@ -1,4 +1,5 @@
-"""One sentence per extra column provider: its worst values over the sweep, with units and angles.
+"""The worst values of a sweep, with units and angles: one row per headline column
+(:func:`peak_rows`, the reports' table) and one sentence per extra column provider.
 
 The sweep's headline (p0 FE/Hertz, von Mises, tau1) is the 2D line contact at the mean load;
 a provider (:mod:`femcam.sweep.extras`) can change the answer (the axial peak of a crowned
@@ -16,6 +17,50 @@ import math
 import numpy as np
 
 from ..assess.core import column_extreme
+from .table import COLUMNS
+
+#: the headline columns' worst values (SI column, what, unit shown, "max"|"min"|"absmax", depth
+#: column or ""); the factor SI -> unit is the CSV's (:data:`femcam.sweep.table.COLUMNS`)
+PEAKS = (("Fc", "contact force Fc", "N", "max", ""),
+         ("phi", "pressure angle phi (largest magnitude)", "deg", "absmax", ""),
+         ("p0_hertz", "p0 Hertz", "MPa", "max", ""),
+         ("p0_fe", "p0 FE (peak of the solved pressure)", "MPa", "max", ""),
+         ("a_hertz", "half-width a, Hertz", "um", "max", ""),
+         ("a_fe", "half-width a, FE (fitted ellipse)", "um", "max", ""),
+         ("vm_max", "von Mises maximum", "MPa", "max", "vm_depth"),
+         ("tau1_max", "max shear tau1 maximum", "MPa", "max", "tau1_depth"),
+         ("txz_range_max", "orthogonal shear range txz (one pass)", "MPa", "max", "txz_range_depth"),
+         ("surf_sx_min", "surface sx, most compressive", "MPa", "min", ""),
+         ("surf_sx_max", "surface sx, most tensile", "MPa", "max", ""),
+         ("surf_sz_min", "surface sz, most compressive", "MPa", "min", ""),
+         ("surf_txz_absmax", "surface txz (largest magnitude)", "MPa", "max", ""),
+         ("Q", "tangential force Q (largest magnitude)", "N", "absmax", ""),
+         ("v_slip", "slip speed v_slip (largest magnitude)", "m/s", "absmax", ""),
+         ("wear_depth", "wear depth per revolution", "nm", "max", ""))
+
+#: the note of a worst value flagged ``surf_edge_dominated:<column>`` at its angle
+EDGE_NOTE = ("edge-dominated at this angle: a value of the FE contact edge's singularity, "
+             "not a result (flags)")
+
+
+def angle_text(theta_deg: float) -> str:
+    """A cam angle for the reports: up to 3 decimals, at least one (``"240.0"``, ``"100.05"``),
+    so the refined angles around a curvature jump stay distinct.
+
+    Parameters
+    ----------
+    theta_deg : float
+        Cam angle [deg].
+
+    Returns
+    -------
+    str
+        E.g. ``"74.125"``; ``"-"`` for NaN.
+    """
+    if not math.isfinite(theta_deg):
+        return "-"
+    s = f"{theta_deg:.3f}".rstrip("0")
+    return s + "0" if s.endswith(".") else s
 
 #: provider -> its label and items (SI column, what, unit shown, factor SI -> unit, "max"|"min")
 ITEMS = {
@@ -33,11 +78,58 @@ ITEMS = {
 
 
 def _extreme(table, name, ok, how):
-    """``(value, theta_deg, index)`` of the largest/smallest finite ``ok`` value, or None."""
-    e = column_extreme(table[name], ok, how) if name in table else None
+    """``(value, theta_deg, index)`` of the largest/smallest (``"absmax"``: largest in magnitude,
+    returned with its sign) finite ``ok`` value, or None."""
+    if name not in table:
+        return None
+    v = np.asarray(table[name], float)
+    e = column_extreme(np.abs(v) if how == "absmax" else v, ok, "max" if how == "absmax" else how)
     if e is None:
         return None
-    return e[0], math.degrees(float(np.asarray(table["theta"], float)[e[1]])), e[1]
+    return float(v[e[1]]), math.degrees(float(np.asarray(table["theta"], float)[e[1]])), e[1]
+
+
+def peak_rows(table, names=()) -> list[dict]:
+    """The worst value of each headline column (:data:`PEAKS`) and of each extra provider's
+    column (:data:`ITEMS`, for the providers in ``names``) over the ``ok`` rows, with its cam
+    angle and, for a subsurface maximum, its depth: the rows of the reports' worst-angle table.
+
+    Parameters
+    ----------
+    table : Mapping[str, ndarray]
+        The sweep table (SI columns, ``theta`` [rad], ``status``).
+    names : sequence of str, optional
+        The providers that ran (``provenance["extras"]["providers"]``).
+
+    Returns
+    -------
+    list of dict
+        ``{"column", "csv", "what", "unit", "value", "theta_deg", "depth_um", "index",
+        "source"}`` per column with a finite ``ok`` value: ``column`` the SI name (a
+        ``sweep.npz`` key), ``csv`` its ``sweep.csv`` name ("" for a provider's column), ``value``
+        in ``unit`` (the factor of the CSV), ``depth_um`` NaN without a depth column, ``source``
+        ``"headline"`` or the provider's label, ``note`` :data:`EDGE_NOTE` where the row's
+        ``flags`` say this surface value is the contact edge's discretisation singularity
+        (``surf_edge_dominated:<column>``, :func:`femcam.sweep.headline.edge_flags`), else "".
+    """
+    ok = np.asarray(table["status"]).astype(str) == "ok"
+    csv = {c[0]: (c[1], c[2]) for c in COLUMNS}
+    items = [(c, what, unit, csv[c][1], how, depth, "headline", csv[c][0])
+             for c, what, unit, how, depth in PEAKS]
+    items += [(c, what, unit, f, how, "", label, "") for name in names if name in ITEMS
+              for label, its in [ITEMS[name]] for c, what, unit, f, how in its]
+    flags = np.asarray(table["flags"]).astype(str) if "flags" in table else None
+    rows = []
+    for c, what, unit, f, how, depth, source, csv_name in items:
+        e = _extreme(table, c, ok, how)
+        if e is None:
+            continue
+        d = float(np.asarray(table[depth], float)[e[2]]) * 1e6 if depth and depth in table else math.nan
+        edge = f"surf_edge_dominated:{c}" in str(flags[e[2]]).split(";") if flags is not None else False
+        rows.append({"column": c, "csv": csv_name, "what": what, "unit": unit, "value": e[0] * f,
+                     "theta_deg": e[1], "depth_um": d, "index": e[2], "source": source,
+                     "note": EDGE_NOTE if edge else ""})
+    return rows
 
 
 def _halfspace_tail(table, found) -> str:

@@ -272,6 +272,40 @@ def plot_junction_p0(result, path, reference=None) -> str:
     return _save(fig, path)
 
 
+#: caption of each plot the sweep writes (``plots/<file>``); ``extras_<provider>.png`` get theirs
+#: from the provider's name
+PLOT_CAPTIONS = {
+    "p0_vs_angle.png": "Peak contact pressure p0 over the cam cycle: Hertz and, where it answered, FE.",
+    "maxima_vs_angle.png": "Subsurface stress maxima (von Mises, tau1) over the cam cycle.",
+    "svaj_loads.png": "Follower motion (s, v, a, j), radius of curvature, contact force and "
+                      "pressure angle over the cam cycle.",
+    "wear_vs_angle.png": "Archard wear depth per revolution at the contact point, and the sliding speed.",
+    "surface_stress_worst.png": "Surface stresses of the cam at the worst angle (largest p0).",
+    "p0_curvature_jumps.png": "Peak pressure across the curvature jumps: Hertz, arc-gap FE and "
+                              "exact-gap FE.",
+}
+
+
+def plot_caption(name: str) -> str:
+    """The caption of a sweep plot, for the reports.
+
+    Parameters
+    ----------
+    name : str
+        The plot's file name in ``DIR/plots`` (``p0_vs_angle.png``, ``extras_<provider>.png``).
+
+    Returns
+    -------
+    str
+        One sentence saying what the plot shows (the file name for an unknown plot).
+    """
+    if name in PLOT_CAPTIONS:
+        return PLOT_CAPTIONS[name]
+    if name.startswith("extras_") and name.endswith(".png"):
+        return f"The {name[7:-4]} columns over the cam cycle (extra column provider)."
+    return name
+
+
 def plot_sweep(result, out) -> dict[str, str]:
     """All sweep plots into ``out/plots``.
 
