@@ -2,7 +2,8 @@
 
 ``femcam synth [SCENE.toml | --case seed003] --out DIR [--elements N] [--k K] [--mu MU]
 [--base-radius-mm auto|RB_MM] [--max-iter N] [--study]`` writes ``DIR/synth_curve.csv``
-(theta_deg, r_mm, x_mm, y_mm, error_mm, phi_deg, phi_exact_deg; provenance in the sidecar ``synth_curve.csv-metadata.json``),
+(theta_deg, r_mm, x_mm, y_mm, error_mm, phi_deg, phi_exact_deg; provenance in
+``DIR/synth_curve.csv-metadata.json``),
 ``DIR/synth_curve.png``, ``DIR/synth_error_phi.png`` and, with ``--study``,
 ``DIR/synth_study_k.{md,csv,png}`` and ``DIR/synth_study_k_mu.{md,csv,png}``.
 

@@ -275,7 +275,8 @@ def _write_summary(path, head, cycles, k, k_where, results, source, scene_law="s
               f"{wm.max_depth_follower * 1e6:>13.4g}{wm.x_max_follower * 1e3:>9.3f}")
         if wm.skipped:
             print(f"  {label}: skipped {len(wm.skipped)} angle(s) with a failed FE solve: {skipped} deg")
-    write_rows(path, header, rows, head, title="femcam wear map: one row per motion law")
+    write_rows(path, header, rows, head, title="femcam wear map: one row per motion law",
+               text=("law", "skipped_angles_deg", "pressure", "slip_model"))
 
 
 def _plots(scene, results, out) -> None:

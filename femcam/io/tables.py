@@ -147,11 +147,11 @@ def write_table(path, columns: dict, prov: dict | None = None, *, title: str = "
 
 
 def write_rows(path, header: Sequence[str], rows, prov: dict | None = None, *,
-               title: str = "") -> Path:
+               title: str = "", text: Sequence[str] = ()) -> Path:
     """:func:`write_table` of a table given as rows (``header`` and one list per row).
 
     A column whose fields all read as numbers (an empty field counts as NaN) is written as
-    numbers, any other as text.
+    numbers, any other (and those named in ``text``) as text.
 
     Parameters
     ----------
@@ -165,6 +165,8 @@ def write_rows(path, header: Sequence[str], rows, prov: dict | None = None, *,
         Provenance for the sidecar JSON.
     title : str
         The sidecar's ``dc:title``.
+    text : sequence of str
+        Columns always written as text (an empty field is :data:`CSV_EMPTY`).
 
     Returns
     -------
@@ -176,6 +178,8 @@ def write_rows(path, header: Sequence[str], rows, prov: dict | None = None, *,
     for j, name in enumerate(header):
         vals = [r[j] for r in rows]
         try:
+            if name in text:
+                raise ValueError(name)
             cols[name] = np.array([np.nan if v == "" else float(v) for v in vals], dtype=float)
         except (TypeError, ValueError):
             cols[name] = np.array([str(v) for v in vals], dtype=str)
