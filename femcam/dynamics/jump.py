@@ -32,6 +32,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr, span
 from ..errors import InputError
 from ..kinematics import CamProgram
 from .model import TrainModel
@@ -212,6 +213,16 @@ class RpmSweep:
     max_error: np.ndarray
     dwell_vibration: np.ndarray
     messages: list = field(default_factory=list)
+
+    def __repr__(self) -> str:
+        """The speeds and the lift-off count (a compact line)."""
+        return compact_repr(self, [
+            f"{np.size(self.rpm)} speeds {span(self.rpm, 1.0, 'rpm')}",
+            f"Fc {span(self.Fc_min, 1.0, 'N')} (min)",
+            f"lift-off at {int(np.count_nonzero(self.liftoff))} speeds",
+            f"converged {int(np.count_nonzero(self.converged))}/{np.size(self.rpm)}",
+        ])
+
 
 
 _KEYS = ("Fc_max", "Fc_min", "Fc_rigid_max", "Fc_rigid_min", "liftoff", "converged", "cycles",

@@ -35,6 +35,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr, span
 from ..errors import InputError
 from ..kinematics import CamProgram
 from ..loads import LoadResult
@@ -119,6 +120,17 @@ class DynamicsResult:
     n_events: int
     message: str = ""
     params: dict = field(default_factory=dict)
+
+    def __repr__(self) -> str:
+        """Model, speed, convergence and the Fc range (a compact line)."""
+        return compact_repr(self, [
+            self.model,
+            f"{self.omega * 30 / np.pi:.6g} rpm",
+            f"{self.steps_per_rev} steps/rev",
+            f"Fc {span(self.Fc_axial, 1.0, 'N')}",
+            f"converged {self.converged}",
+            f"lift-off {int(np.count_nonzero(~np.asarray(self.contact, bool)))} steps",
+        ])
 
     @property
     def rpm(self) -> float:
