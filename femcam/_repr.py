@@ -76,7 +76,7 @@ def compact_repr(obj, facts=()) -> str:
                 shapes.setdefault(v.shape, []).append(f.name)
         parts += [f"arrays {shape}: " + " ".join(names) for shape, names in shapes.items()]
     text = f"{type(obj).__name__}({'; '.join(parts)})"
-    return text if len(text) <= MAX_REPR else text[:MAX_REPR - 4] + " ...)"
+    return text if len(text) <= MAX_REPR else text[:MAX_REPR - 5] + " ...)"
 
 
 def dataframe(columns: dict, owner: str = "to_dataframe"):

@@ -84,26 +84,15 @@ def _prov(scene, **extra):
 
 
 def _write_response(out: Path, scene, r):
-    cols = {"theta_deg": np.degrees(r.theta[:-1]), "s_mm": r.s[:-1] * 1e3,
-            "Fc_rigid_N": r.Fc_rigid_axial[:-1], "Fc_N": r.Fc_axial[:-1],
-            "liftoff": ~np.asarray(r.contact[:-1], bool)}
-    cols.update({f"error_mass{i + 1}_um": r.e[:-1, i] * 1e6 for i in range(r.e.shape[1])})
     prov = _prov(scene, model=r.model, rpm=float(r.rpm), steps_per_rev=int(r.steps_per_rev),
                  cycles=int(r.cycles), residual=float(r.residual), converged=bool(r.converged),
                  message=r.message)
-    return write_table(out / "dynamics.csv", cols, prov,
+    return write_table(out / "dynamics.csv", r.csv_columns(), prov,
                        title="femcam dynamics: periodic response, one row per cam angle")
 
 
 def _write_sweep(out: Path, scene, sw):
-    cols = {"rpm": sw.rpm, "Fc_max_N": sw.Fc_max, "Fc_min_N": sw.Fc_min,
-            "Fc_rigid_max_N": sw.Fc_rigid_max, "Fc_rigid_min_N": sw.Fc_rigid_min,
-            "liftoff": np.asarray(sw.liftoff, bool), "converged": np.asarray(sw.converged, bool),
-            "cycles": np.asarray(sw.cycles, int), "residual": sw.residual,
-            "max_error_um": np.asarray(sw.max_error) * 1e6,
-            "dwell_vibration_um": np.asarray(sw.dwell_vibration) * 1e6,
-            "message": np.asarray(sw.messages, dtype=str)}
-    return write_table(out / "rpm_sweep.csv", cols, _prov(scene),
+    return write_table(out / "rpm_sweep.csv", sw.csv_columns(), _prov(scene),
                        title="femcam dynamics --rpm-sweep: one row per cam speed")
 
 
