@@ -43,16 +43,41 @@ def span(values, scale: float = 1.0, unit: str = "", fmt: str = ".4g") -> str:
     return f"{v.min():{fmt}}..{v.max():{fmt}}" + (f" {unit}" if unit else "")
 
 
-def compact_repr(obj, facts=()) -> str:
-    """``ClassName(fact, ..., arrays (n,): a b c)``: the facts given, then the array fields of a
-    dataclass grouped by shape; at most :data:`MAX_REPR` characters.
+def _items(obj):
+    """``(name, value)`` of the fields of a dataclass, else of the public attributes."""
+    if dataclasses.is_dataclass(obj):
+        return [(f.name, getattr(obj, f.name, None)) for f in dataclasses.fields(obj) if f.repr]
+    return [(k, v) for k, v in vars(obj).items() if not k.startswith("_")] \
+        if hasattr(obj, "__dict__") else []
+
+
+def _scalar(v) -> str | None:
+    """A number, flag or short text as written in a repr; None for anything else."""
+    if isinstance(v, (bool, np.bool_)):
+        return str(bool(v))
+    if isinstance(v, (int, np.integer)):
+        return str(int(v))
+    if isinstance(v, (float, np.floating)):
+        return f"{float(v):.6g}"
+    if isinstance(v, str) and len(v) <= 60:
+        return repr(v)
+    if isinstance(v, np.ndarray) and v.ndim == 0 and v.dtype.kind in "biuf":
+        return f"{v.item():.6g}"
+    return None
+
+
+def compact_repr(obj, facts=None) -> str:
+    """``ClassName(fact, ..., arrays (n,): a b c)``: the facts given (by default the scalar
+    fields, ``name=value``), then the array fields grouped by shape; at most :data:`MAX_REPR`
+    characters.
 
     Parameters
     ----------
     obj : object
-        The object (its class name; its fields when it is a dataclass).
-    facts : iterable of str
-        Key facts with their units, e.g. ``"720 angles"``, ``"Fc 1491..1516 N"``.
+        The object (its class name; its fields when it is a dataclass, else its attributes).
+    facts : iterable of str, optional
+        Key facts with their units, e.g. ``"720 angles"``, ``"Fc 1491..1516 N"``; None: the
+        object's scalar fields.
 
     Returns
     -------
@@ -64,17 +89,22 @@ def compact_repr(obj, facts=()) -> str:
     ... class R:
     ...     theta: np.ndarray
     ...     s: np.ndarray
+    ...     ok: bool = True
     >>> compact_repr(R(np.zeros(3), np.zeros(3)), ["3 angles"])
     'R(3 angles; arrays (3,): theta s)'
+    >>> compact_repr(R(np.zeros(3), np.zeros((3, 2))))
+    'R(ok=True; arrays (3,): theta; arrays (3, 2): s)'
     """
-    parts = [str(f) for f in facts]
-    if dataclasses.is_dataclass(obj):
-        shapes: dict[tuple, list[str]] = {}
-        for f in dataclasses.fields(obj):
-            v = getattr(obj, f.name, None)
-            if isinstance(v, np.ndarray) and v.ndim:
-                shapes.setdefault(v.shape, []).append(f.name)
-        parts += [f"arrays {shape}: " + " ".join(names) for shape, names in shapes.items()]
+    items = _items(obj)
+    if facts is None:
+        parts = [f"{k}={t}" for k, v in items if (t := _scalar(v)) is not None]
+    else:
+        parts = [str(f) for f in facts]
+    shapes: dict[tuple, list[str]] = {}
+    for k, v in items:
+        if isinstance(v, np.ndarray) and v.ndim:
+            shapes.setdefault(v.shape, []).append(k)
+    parts += [f"arrays {shape}: " + " ".join(names) for shape, names in shapes.items()]
     text = f"{type(obj).__name__}({'; '.join(parts)})"
     return text if len(text) <= MAX_REPR else text[:MAX_REPR - 5] + " ...)"
 

@@ -144,3 +144,21 @@ def test_to_dataframe_without_pandas_says_how_to_install(monkeypatch, hertz_dir)
     monkeypatch.setitem(sys.modules, "pandas", None)     # import pandas -> ImportError
     with pytest.raises(ImportError, match=r"SweepResult.to_dataframe\(\) needs pandas.*pip install pandas"):
         SweepResult.load(hertz_dir).to_dataframe()
+
+
+def test_wear_map_slip_stress_field_and_svaj_reprs():
+    """The other result records print their scalars and the arrays' shapes, not the values."""
+    from femcam.hertz import LineContact
+    from femcam.materials import STEEL
+    from femcam.wear.axial import scene_wear_map
+
+    sc = load_scene(STUDY)
+    wm, _st, slip = scene_wear_map(sc, np.radians(np.arange(0.0, 360.0, 10.0)), cycles=1000)
+    _short(repr(wm), r"^WearMap\(36 angles", "nm", r"mm\^3", "1000 cycles")
+    _short(repr(slip), r"^SlipResult\(", r"arrays \(36,\): theta v_slip V_cam")
+    svaj = sc.program.svaj(np.radians(np.arange(0.0, 360.0, 0.01)), omega=sc.omega)
+    _short(repr(svaj), r"^SVAJ\(omega=62.8319; arrays \(36000,\): theta s v a j\)$")
+    x = np.linspace(-1e-4, 1e-4, 20_001)
+    hc = LineContact(F=1000.0, length=0.01, R1=0.01, R2=0.01, cam=STEEL, roller=STEEL)
+    field = hc.stress(x, 5e-5 + 0 * x)
+    _short(repr(field), r"^StressField\(", r"arrays \(20001,\): sx sz txz")

@@ -86,6 +86,11 @@ class JumpResult:
     steps_per_rev: int
     message: str = ""
 
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
+
+
 
 def _first_root(fun, x, y, xtol):
     """First sign change of y = fun(x) on the scan refined by brentq: (root, iterations)."""

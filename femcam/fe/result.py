@@ -98,6 +98,11 @@ class SurfaceStress:
     sy: np.ndarray
     body: str
 
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
+
+
 
 @dataclass(frozen=True, eq=False)
 class ContactResult:
