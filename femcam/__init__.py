@@ -8,6 +8,11 @@ degrees, rpm, mm and MPa appear only at the edges (CLI, scene files, plot labels
 that use them.
 """
 
+# first: on the command line, Ctrl-C / SIGTERM during the imports below is one line and exit
+# 130 / 143, not a traceback (importing femcam._interrupt installs its handler when this process
+# is the command line; stdlib only, and nothing for a program that imports femcam)
+from . import _interrupt  # noqa: F401, I001
+
 __version__ = "0.1.0"
 
 from . import sweep  # noqa: E402  (a callable package: femcam.sweep(scene, angles=...))

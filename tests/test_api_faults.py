@@ -379,6 +379,15 @@ CASES: dict[str, Case] = {
         {"s": REAL, "s2": REAL, "Rb": POS}),
     "femcam.profile.make_follower": Case(kw(kind="roller", Rb=0.01, Rr=0.01),
                                          {"Rb": POS, "Rr": POS, "e": REAL}),
+    "femcam.optimise.optimise": Case(
+        lazy(lambda: dict(scene_or_path=scene(), objective="size", variables={"base_radius": (0.005, 0.02)},
+                          constraints={"phi_max": 0.5}, verify_fe=False)),
+        {"starts": INT_POS, "n_motion": INT_POS, "maxiter": INT_POS}),
+    "femcam.optimise.Variable": Case(lazy(lambda: dict(name="base_radius", lower=0.005, upper=0.02)),
+                                     {"lower": REAL, "upper": REAL, "start": opt(REAL)}),
+    "femcam.optimise.BezierRise": Case(lazy(lambda: dict(degree=9, zero_derivatives=2)),
+                                       {"degree": INT_POS, "zero_derivatives": INT_POS}),
+    "femcam.optimise.compare_laws": Case(lazy(lambda: dict(scene=scene(), laws=("bezier5",))), {}),
     "femcam.profile.min_base_radius": Case(
         lazy(lambda: dict(kind="roller", program=program(), Rr=0.01, n_theta=360)),
         {"phi_max": POS + (1.6,), "Rr": NONNEG, "e": REAL, "rho_min": NONNEG,
@@ -601,6 +610,7 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.kinematics.Derivatives", "femcam.kinematics.Junction",
         "femcam.layers.CaseMargin", "femcam.layers.InterfaceStress", "femcam.mesh.BodyLayout",
         "femcam.mesh.BodyMesh", "femcam.mesh.ContactMesh", "femcam.mesh.PhysicalGroup",
+        "femcam.optimise.OptimiseResult", "femcam.optimise.StartRecord", "femcam.optimise.FECheck",
         "femcam.profile.BaseRadiusResult", "femcam.profile.CamProfile", "femcam.scene.Scene",
         "femcam.scene.SceneState", "femcam.sweep.SweepResult",
         "femcam.synthesis.SynthesisResult", "femcam.synthesis.Comparison",
@@ -627,6 +637,8 @@ NOT_AN_INPUT: dict[str, str] = {
     "femcam.scene.roller_support_problems": "the scene's support check (h4-scene's femcam/scene); the "
                                             "API entry with argument checks is bodies.bearing_problems",
     "femcam.mesh.gmsh_session": "a context manager named by a string",
+    "femcam.optimise.Design": "the map from a design vector to a scene variant; built by optimise "
+                              "from checked Variables and a BezierRise",
     "femcam.scene.load_scene": "reads a file; scene faults are tests/test_scene*.py (h4-scene)",
     "femcam.scene.study_problem": "returns the problem text of one [fe]/[sweep] value",
     "femcam.scene.wear_table": "the scene loader's [wear] table reader (scene faults)",

@@ -142,7 +142,8 @@ def test_full_disk_leaves_no_part_file(tmp_path, monkeypatch):
 
 
 @pytest.mark.parametrize("flag, value, why", [
-    ("--print-every-deg", "0", "must be > 0"), ("--print-every-deg", "-1", "must be > 0"),
+    ("--print-every-deg", "0", "must be in [0.001, 360]"),
+    ("--print-every-deg", "-1", "must be in [0.001, 360]"),
     ("--print-every-deg", "nan", "must be finite"), ("--phi-limit-deg", "nan", "must be finite"),
     ("--phi-limit-deg", "-5", "must be in (0, 90)"), ("--phi-limit-deg", "95", "must be in (0, 90)")])
 def test_run_flags_are_checked(flag, value, why, tmp_path, capsys):
@@ -315,12 +316,16 @@ def test_broken_pipe_ends_quietly():
 
 
 @pytest.mark.parametrize("argv, want", [
-    (["wear", "map", SCENE, "--cycles", "-3"], "--cycles = -3 revolutions: must be > 0"),
+    (["wear", "map", SCENE, "--cycles", "-3"], "--cycles = -3 revolutions: must be in (0, 1e+12] "
+     "(1e12 revolutions is 3,000 years at 600 rpm)"),
     (["synth", "--case", "seed003", "--elements", "0"],
-     "--elements = 0 elements around the cam: must be an integer >= 3"),
-    (["synth", "--case", "seed003", "--k", "-1"], "--k = -1 (penalty constant, dimensionless): must be > 0"),
+     "--elements = 0 elements around the cam: must be a whole number in [3, 20000] "
+     "(femcam.synthesis.options.MAX_ELEMENTS: time and memory)"),
+    (["synth", "--case", "seed003", "--k", "-1"], "--k = -1 (penalty constant, dimensionless): must be "
+     "in (0, 1e+14] (the studies span 1e2-1e10; beyond 1e14 the tangent is singular in double precision)"),
     (["synth", "--case", "seed003", "--mu", "0"],
-     "--mu = 0 (stabilisation parameter, dimensionless): must be > 0"),
+     "--mu = 0 (stabilisation parameter, dimensionless): must be in (0, 1e+14] (the studies span "
+     "1e2-1e10; beyond 1e14 the tangent is singular in double precision)"),
 ])
 def test_bad_flag_is_named_before_any_output(argv, want, tmp_path, capsys):
     out = tmp_path / "o"

@@ -4,7 +4,7 @@ provenance (femcam.io: one writer, one layout).
 Each CLI subcommand that writes CSVs runs once on a small case (Hertz method, few angles, no
 plots); the output folders are globbed, so a CSV added later is covered, and it must have an entry
 in ``EXPECTED`` (its leading columns and row count, known from the command line, not from the
-file itself).
+file itself). ``femcam optimise`` (seconds) is checked the same way in tests/test_optimise.py.
 """
 
 from __future__ import annotations
@@ -40,6 +40,7 @@ EXPECTED = {
     "wear_summary.csv": (["law", "cycles", "max_depth_um"], 1),
     "seed000.csv": (["law", "int_v2_du"], 3),                                # the paper's 3 laws
     "synth_curve.csv": (["theta_deg", "r_mm", "x_mm", "y_mm"], None),
+    "study.csv": (["variant", "follower.base_radius_mm"], 2),              # --vary ...=10,12
 }
 
 
@@ -58,6 +59,7 @@ def outputs(tmp_path_factory):
         "wear": ["wear", "map", study, "--step-deg", "10", "--cycles", "1000", "--no-plots",
                  "--evolve-blocks", "2"],
         "synth": ["synth", "--case", "seed003", "--elements", "12"],
+        "study": ["study", study, "--vary", "follower.base_radius_mm=10,12", "--no-plots"],
     }
     for name, argv in cmds.items():
         assert main([*argv, "--out", str(d / name)]) == 0, name
@@ -155,3 +157,16 @@ def test_read_csv_keeps_reading_an_old_results_folder(tmp_path):
 
     with pytest.raises(InputError, match="no sidecar sweep.csv-metadata.json"):
         read_meta(p)
+
+
+def test_study_result_dataframe_and_repr_match_study_csv(outputs):
+    """The study's result object gives the CSV's table (same names and units) and a short repr."""
+    from femcam.study import StudySpec, run_study
+
+    res = run_study(EX / "seed002_study_model.toml", StudySpec.parse(["follower.base_radius_mm=10,12"]))
+    df, csv = res.to_dataframe(), pd.read_csv(outputs / "study" / "study.csv")
+    assert list(df.columns) == list(csv.columns) and len(df) == 2
+    np.testing.assert_allclose(df["p0_max_MPa"], csv["p0_max_MPa"], rtol=1e-9)
+    assert df["follower.base_radius_mm"].tolist() == [10.0, 12.0]
+    r = repr(res)
+    assert len(r) <= 1000 and r.startswith("StudyResult(2 variants") and "MPa" in r

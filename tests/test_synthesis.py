@@ -455,7 +455,13 @@ def test_cli_base_radius_rejects_bad_values(tmp_path, capsys, value):
                  f"--base-radius-mm={value}"]) == 1
     err = capsys.readouterr().err.strip()
     assert "\n" not in err
-    assert f"--base-radius-mm = {value!r} mm: must be 'auto' or a" in err
+    # the flag's stated range (femcam.cli._flags): a number is shown as one, text quoted
+    try:
+        shown = f"{float(value):g}"
+    except ValueError:
+        shown = repr(value)
+    assert err.startswith(f"femcam synth: error: --base-radius-mm = {shown} mm: must be ")
+    assert "must be in (0, 1000] or auto" in err or "must be finite" in err or "must be a number" in err
     assert not (tmp_path / "b").exists()
 
 

@@ -197,7 +197,8 @@ def test_cli_evolve_blocks(tmp_path, capsys):
     assert "evolution" in capsys.readouterr().out
     assert main(["wear", "map", STUDY, "--out", str(tmp_path),
                  "--evolve-blocks", "0"]) == 1
-    assert "--evolve-blocks = 0 (number of blocks): must be an integer >= 1" in capsys.readouterr().err
+    assert "--evolve-blocks = 0 (number of blocks): must be a whole number in [1, 4096]" \
+        in capsys.readouterr().err
 
 
 def test_bad_grid_and_cli_source_refused(tmp_path, capsys):

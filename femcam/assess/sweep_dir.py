@@ -19,11 +19,14 @@ from pathlib import Path
 
 import numpy as np
 
+from .._files import check_regular
 from ..errors import FemcamError, InputError
 from ..scene import load_scene
 from ..scene.digest import differing_parts, physics_hash, physics_parts
 
 #: what reading a damaged ``sweep.npz`` raises (numpy, zipfile, zlib, json)
+#: largest sweep.npz read (bytes): 360,000 angles of ~150 columns are ~0.4 GB
+MAX_SWEEP_BYTES = 2_000_000_000
 _READ_ERRORS = (OSError, ValueError, KeyError, EOFError, zipfile.BadZipFile, zlib.error)
 
 
@@ -34,6 +37,7 @@ def _read(directory: Path) -> tuple[dict, dict]:
         what = "" if directory.is_dir() else " (not a directory)"
         raise InputError(f"sweep folder = {directory}: no sweep.npz there{what} (run femcam sweep "
                          f"SCENE.toml --out {directory} first; an interrupted sweep finishes with --resume)")
+    check_regular(f, f"sweep folder = {directory}:", MAX_SWEEP_BYTES)   # never a FIFO or a device
     try:
         with np.load(f, allow_pickle=False) as z:
             arrays = {k: np.asarray(z[k]) for k in z.files}

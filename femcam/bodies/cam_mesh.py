@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 
-from ..errors import FemcamError
+from ..errors import FemcamError, InputError
 from ..mesh import BodyMesh, _ccw, surface_height
 from .mesh import _circle_arcs, _extract, _size_field, _snap_circle, gmsh_session
 
@@ -39,6 +39,62 @@ def _fine_arcs(geo, rho, xs, lc):
         return p, [geo.addLine(p[i], p[i + 1]) for i in range(len(p) - 1)]
     c = geo.addPoint(0.0, -rho, 0.0, lc)
     return p, [geo.addCircleArc(p[i], c, p[i + 1]) for i in range(len(p) - 1)]
+
+
+#: most triangles of a cam disk mesh (global or fully refined model). The global model of seed
+#: 002 (6 mm bore, 4 mm web) has ~4,000; a 0.01 mm bore caps the element size at half the bore
+#: radius over the whole disk (~6e7 elements, hours and tens of GB): refused before gmsh
+MAX_DISK_ELEMENTS = 300_000
+
+
+def estimate_disk_elements(*, outline: np.ndarray, bore: float, h_max: float, h_bore: float,
+                           growth: float, fine_h: float = 0.0, fine_xf: float = 0.0,
+                           fine_depth: float = 0.0) -> float:
+    r"""Estimated triangles of :func:`mesh_cam_disk` (area over the triangle area, per zone).
+
+    .. math::
+
+        N \approx \frac{A - \pi R_b^2}{c\, h_{max}^2}
+          + \frac{2 \pi R_b}{c\, g\, h_b} + \frac{2\pi}{c\, g^2}\ln\frac{h_{max}}{h_b}
+          + \frac{2 x_f d}{c\, h^2} + \frac{2 x_f}{c\, g\, h}
+
+    with ``c = sqrt(3)/4`` (equilateral triangles): the disk at the largest size, the band
+    graded from the bore spacing ``h_b`` with slope ``g``, and the fine contact zone.
+
+    Parameters
+    ----------
+    outline : ndarray, shape (2, N)
+        The cam outline (m).
+    bore : float
+        Bore radius (m).
+    h_max, h_bore : float
+        Largest element size and bore spacing (m).
+    growth : float
+        Size growth slope (-).
+    fine_h, fine_xf, fine_depth : float, optional
+        Fine contact zone: size, half-length and depth (m); 0: none.
+
+    Returns
+    -------
+    float
+        The estimate (-).
+
+    Examples
+    --------
+    >>> t = np.linspace(0, 2 * np.pi, 361)[:-1]
+    >>> round(estimate_disk_elements(outline=0.01 * np.array([np.cos(t), np.sin(t)]),
+    ...       bore=0.005, h_max=1e-3, h_bore=5e-4, growth=0.3))
+    1140
+    """
+    c = math.sqrt(3.0) / 4.0
+    x, y = np.asarray(outline, float)
+    area = 0.5 * abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+    n = max(area - math.pi * bore**2, 0.0) / (c * h_max**2)
+    n += 2 * math.pi * bore / (c * growth * h_bore) \
+        + 2 * math.pi / (c * growth**2) * math.log(max(h_max / h_bore, 1.0))
+    if fine_h > 0:
+        n += 2 * fine_xf * fine_depth / (c * fine_h**2) + 2 * fine_xf / (c * growth * fine_h)
+    return n
 
 
 def mesh_cam_disk(*, outline: np.ndarray, centre: tuple, bore: float, n_bore: int, h_max: float,
@@ -93,6 +149,7 @@ def mesh_cam_disk(*, outline: np.ndarray, centre: tuple, bore: float, n_bore: in
     """
     cx, cy = centre
     fine = contact_x is not None
+    _check_size(outline, bore, h_max, h_bore, growth, contact_x, fine_depth)
     with gmsh_session() as gmsh:
         gmsh.model.add("cam_disk")
         geo = gmsh.model.geo
@@ -139,3 +196,21 @@ def mesh_cam_disk(*, outline: np.ndarray, centre: tuple, bore: float, n_bore: in
                     contact=contact, contact_x=cxs, surface=sets["outer"], L=float(np.hypot(cx, cy)),
                     R=float(rho))
     return body, bnodes, theta
+
+
+def _check_size(outline, bore, h_max, h_bore, growth, contact_x, fine_depth) -> None:
+    """Refuse a disk mesh estimated above :data:`MAX_DISK_ELEMENTS`, before gmsh, naming the
+    bore radius (what sets the sizes) and why."""
+    fine = contact_x is not None and len(contact_x) > 1
+    n = estimate_disk_elements(
+        outline=outline, bore=bore, h_max=h_max, h_bore=h_bore, growth=growth,
+        fine_h=float(contact_x[1] - contact_x[0]) if fine else 0.0,
+        fine_xf=float(contact_x[-1]) if fine else 0.0, fine_depth=fine_depth)
+    if n > MAX_DISK_ELEMENTS:
+        raise InputError(
+            f"[cam] bore_mm = {bore * 1e3:.4g} mm (bore radius): the cam disk mesh would have "
+            f"~{n:.3g} elements (largest element {h_max * 1e6:.3g} um, bore spacing "
+            f"{h_bore * 1e6:.3g} um; the element size is at most half the bore radius and a "
+            f"fraction of the web), above the cap of {MAX_DISK_ELEMENTS:,} "
+            "(femcam.bodies.cam_mesh.MAX_DISK_ELEMENTS); a bore this small or a web this thin "
+            "is not a cam on a shaft: use a bore radius of a few mm, or leave out [cam] bore_mm")

@@ -14,12 +14,13 @@ import importlib
 import os
 import sys
 
-from .. import __version__
+from .. import __version__, _interrupt
 from ..errors import FemcamError
 from ._common import os_error_line
+from ._flags import FlagError
 
 #: subcommand modules, in the order they appear in ``femcam --help``
-SUBCOMMANDS = ("run", "sweep", "wear", "synth", "dynamics", "assess")
+SUBCOMMANDS = ("run", "sweep", "wear", "synth", "dynamics", "assess", "optimise", "study")
 
 
 def _versions() -> str:
@@ -78,21 +79,43 @@ def main(argv=None) -> int:
     Returns
     -------
     int
-        Exit code: 0 success, 1 a :class:`~femcam.errors.FemcamError` or an ``OSError`` (a
-        file that cannot be read or written, a full disk), printed as one line
+        Exit code: 0 success; 130 Ctrl-C (SIGINT), 143 SIGTERM, with one line on stderr,
+        from the first instruction (:mod:`femcam._interrupt`); 1 a
+        :class:`~femcam.errors.FemcamError` or an ``OSError`` (a file that cannot be read or
+        written, a full disk), printed as one line
         ``femcam <command>: error: ...`` naming the path, never a traceback; 2 usage. A reader
         that closes the pipe early (``femcam wear seed000 --all-laws | head -2``) ends the
         command quietly with 1 (no message).
     """
+    previous = _interrupt.starting()  # imports of the subcommands: one line, exit at once
+    try:
+        return _main(argv)
+    finally:
+        _interrupt.restore(previous)
+
+
+def _main(argv) -> int:
+    """:func:`main` inside the interruption handlers (:mod:`femcam._interrupt`)."""
     parser = build_parser()
-    args = parser.parse_args(_join_negative(sys.argv[1:] if argv is None else list(argv)))
+    try:  # a numeric flag out of its range is refused while parsing (femcam.cli._flags)
+        args = parser.parse_args(_join_negative(sys.argv[1:] if argv is None else list(argv)))
+    except FlagError as exc:
+        print(f"{exc.prog}: error: {exc}", file=sys.stderr)
+        return 1
     if not getattr(args, "func", None):
         parser.print_help()
         return 2
+    _interrupt.working()  # from here Ctrl-C / SIGTERM raise, so the cleanups of the work run
     try:
         code = int(args.func(args) or 0)
         sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's final flush
+        if code == 130 and _interrupt.last_signal is not None:  # the sweep's own Ctrl-C line
+            code = _interrupt.EXIT_CODES[_interrupt.last_signal]
         return code
+    except KeyboardInterrupt as exc:  # Ctrl-C or SIGTERM (femcam._interrupt.Terminated)
+        nl = "\n" if sys.stderr.isatty() else ""  # end a progress bar's line
+        print(f"{nl}femcam {args.command}: {str(exc) or 'interrupted'}", file=sys.stderr)
+        return _interrupt.exit_code(exc)
     except BrokenPipeError:  # the reader closed early (femcam ... | head): quiet, as cat would be
         return _quiet_broken_pipe()
     except FemcamError as exc:

@@ -44,6 +44,20 @@ def add_scene_out(p, scene_help: str = "scene file", *, out_help: str = "output 
     p.add_argument("--out", required=out_required, default=None, metavar="DIR", help=out_help)
 
 
+def add_overwrite(p) -> None:
+    """Add ``--overwrite`` (``args.overwrite``): every subcommand refuses a non-empty ``--out``
+    without it (:func:`refuse_non_empty`), so a second run never mixes or silently replaces
+    the files of the first.
+
+    Parameters
+    ----------
+    p : argparse.ArgumentParser
+        The subcommand's parser.
+    """
+    p.add_argument("--overwrite", action="store_true",
+                   help="write into a non-empty DIR, replacing its files (refused otherwise)")
+
+
 def add_law_override(p) -> None:
     """Add ``--law NAME``, overriding the scene's rise/fall motion law (:data:`NAMED_LAWS`).
 
@@ -91,6 +105,8 @@ def out_dir(path, flag: str = "--out", *, create: bool = True) -> Path:
         Naming ``flag`` and the path when ``path`` is an existing file, lies under a file, or
         cannot be created or written.
     """
+    if not str(path).strip():  # Path("") is the current directory: never meant
+        raise _validate.fail(flag, str(path), "", "must name a directory (it is empty)")
     p = Path(path)
     for q in (p, *p.parents):  # the first existing component must be a directory
         if q.exists() or q.is_symlink():

@@ -22,7 +22,7 @@ from ..assess import assess, csv_columns, sweep_table
 from ..io import provenance, write_table
 from ..scene import load_scene
 from ..viz.assess import plot_assessment, report_markdown
-from ._common import add_no_plots, add_scene_out, out_dir, plain
+from ._common import add_no_plots, add_overwrite, add_scene_out, out_dir, plain, refuse_non_empty
 
 
 def register(subparsers) -> None:
@@ -41,13 +41,14 @@ def register(subparsers) -> None:
     p.add_argument("--sweep", default=None, metavar="SWEEP_DIR",
                    help="use the angles and FE a/p0 of a finished sweep (SWEEP_DIR/sweep.npz)")
     add_no_plots(p)
+    add_overwrite(p)
     p.set_defaults(func=_run)
 
 
 def _sweep_table(path, scene):
     """The sweep's columns the assessment uses (the subsurface ``txz_range_max``, never a
-    surface value); a sweep of another scene or a corrupted folder is refused by the library
-    (:func:`femcam.assess.sweep_table`)."""
+    surface value); a sweep of another scene, a corrupted folder or a ``sweep.npz`` that is not
+    a regular file is refused by the library (:func:`femcam.assess.sweep_table`)."""
     z = sweep_table(path, scene)
     return {k: z[k] for k in ("theta", "a_fe", "p0_fe", "tau1_max", "txz_range_max") if k in z}
 
@@ -57,6 +58,7 @@ def _run(args) -> int:
     scene = load_scene(args.scene)
     table = _sweep_table(args.sweep, scene) if args.sweep else None
     theta = table["theta"] if table is not None else _validate.angles_deg("--angles-deg", args.angles_deg)
+    refuse_non_empty(args.out, args.overwrite)  # the rule of every subcommand, before the work
     res = assess(scene, theta, table=table)
     out = out_dir(args.out)
     prov = provenance(scene_path=args.scene, command=shlex.join(["femcam", "assess", *sys.argv[2:]]))

@@ -19,11 +19,13 @@ import numpy as np
 
 from .. import _validate
 from ..dynamics import jump_speed, rpm_sweep
+from ..dynamics.jump import MAX_SPEEDS, speeds_problem
 from ..errors import InputError
 from ..io import provenance, write_table
 from ..scene import load_scene
 from ..viz.dynamics import plot_force, plot_rpm_sweep
-from ._common import add_no_plots, add_scene_out, cap_workers, out_dir, plain, refuse_non_empty
+from ._common import add_no_plots, add_overwrite, add_scene_out, cap_workers, out_dir, plain, refuse_non_empty
+from ._flags import Range, add_number
 
 
 def register(subparsers) -> None:
@@ -39,12 +41,11 @@ def register(subparsers) -> None:
     add_scene_out(p, "scene with [dynamics] model = one_dof or two_dof")
     p.add_argument("--rpm-sweep", metavar="START:STOP:STEP", default=None,
                    help="also sweep the cam speed (rpm, stop inclusive) and find the jump speed")
-    p.add_argument("--workers", type=int, default=1, metavar="N",
-                   help="processes for the rpm sweep (default 1; capped at the CPU cores and "
-                        "the number of speeds)")
+    add_number(p, "--workers", Range("processes", 1, 1024, whole=True), default=1, metavar="N",
+               help="processes for the rpm sweep (default 1; capped at the CPU cores and "
+                    "the number of speeds)")
     add_no_plots(p)
-    p.add_argument("--overwrite", action="store_true",
-                   help="write into a non-empty DIR, replacing its files (refused otherwise)")
+    add_overwrite(p)
     p.set_defaults(func=run)
 
 
@@ -72,9 +73,11 @@ def _rpm_range(text: str):
         a, b, c = (float(x) for x in text.split(":"))
     except ValueError:
         raise InputError(f"--rpm-sweep = {text!r}: must be START:STOP:STEP in rpm") from None
-    if not (0 < a < b and c > 0):
-        raise InputError(f"--rpm-sweep = {text!r}: need 0 < START < STOP and STEP > 0 (rpm)")
-    n = int(math.floor((b - a) / c + 1e-9)) + 1
+    if not all(map(math.isfinite, (a, b, c))) or not (0 < a < b and c > 0):
+        raise InputError(f"--rpm-sweep = {text!r} rpm: need finite 0 < START < STOP and STEP > 0")
+    n = math.floor((b - a) / c + 1e-9) + 1
+    if n > MAX_SPEEDS:  # refused before the speeds are even listed
+        raise InputError(f"--rpm-sweep = {text!r} rpm: {speeds_problem(n)}")
     return a + c * np.arange(n)
 
 

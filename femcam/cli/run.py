@@ -21,7 +21,17 @@ from ..io import provenance, write_table
 from ..scene import load_scene
 from ..sweep.result import COLUMNS as SWEEP_COLUMNS
 from ..viz.analytic import plot_all
-from ._common import add_law_override, add_no_plots, add_scene_out, check_law, out_dir, plain
+from ._common import (
+    add_law_override,
+    add_no_plots,
+    add_overwrite,
+    add_scene_out,
+    check_law,
+    out_dir,
+    plain,
+    refuse_non_empty,
+)
+from ._flags import Range, add_number
 
 #: the analytic chain's columns, named and scaled as in the sweep table (one copy of each
 #: column's unit: :data:`femcam.sweep.result.COLUMNS`)
@@ -33,6 +43,12 @@ _SWEEP_COLUMNS = {si: (name, f) for si, name, f in SWEEP_COLUMNS}
 COLUMNS = (*((_SWEEP_COLUMNS[a][0], a, _SWEEP_COLUMNS[a][1]) for a in _ANALYTIC),
            ("contact_x_mm", "contact_x", 1e3), ("contact_y_mm", "contact_y", 1e3),
            ("liftoff", "liftoff", 1), ("undercut", "undercut", 1))
+
+
+#: ranges of the numeric flags (femcam.cli._flags)
+PRINT_STEP = Range("deg", 1e-3, 360.0, why="a step below 0.001 deg prints every computed angle anyway")
+PHI_LIMIT = Range("deg", 0.0, 90.0, lo_open=True, hi_open=True,
+                  why="a pressure angle of 90 deg or more transmits no lift")
 
 
 def register(subparsers) -> None:
@@ -50,14 +66,15 @@ def register(subparsers) -> None:
                   out_help="output directory (default: femcam-out/<scene name>)")
     p.add_argument("--angles-deg", default="0:360:0.5", metavar="START:STOP:STEP",
                    help="cam angles in degrees, stop exclusive (default 0:360:0.5)")
-    p.add_argument("--print-every-deg", type=float, default=10.0, metavar="STEP",
-                   help="angle step of the printed table in degrees (default 10); the CSV has all")
+    add_number(p, "--print-every-deg", PRINT_STEP, default=10.0, metavar="STEP",
+               help="angle step of the printed table in degrees (default 10); the CSV has all")
     add_law_override(p)
-    p.add_argument("--phi-limit-deg", type=float, default=30.0, metavar="DEG",
-                   help="pressure-angle limit drawn and checked in the summary (default 30)")
+    add_number(p, "--phi-limit-deg", PHI_LIMIT, default=30.0, metavar="DEG",
+               help="pressure-angle limit drawn and checked in the summary (default 30)")
     p.add_argument("--allow-undercut", action="store_true",
                    help="report an undercut profile as a warning instead of an error")
     add_no_plots(p)
+    add_overwrite(p)
     p.set_defaults(func=_run)
 
 
@@ -162,30 +179,20 @@ def write_csv(path, scene, st, command: str) -> Path:
     return write_table(path, cols, prov, title="femcam run: the analytic chain, one row per cam angle")
 
 
-def _check_args(args) -> None:
-    """The numeric flags, refused with the flag's name, value and unit."""
-    step = _validate.number("--print-every-deg", args.print_every_deg, "deg")
-    if step <= 0:
-        raise _validate.fail("--print-every-deg", args.print_every_deg, "deg",
-                             "must be > 0 (the angle step of the printed table)")
-    lim = _validate.number("--phi-limit-deg", args.phi_limit_deg, "deg")
-    if not 0 < lim < 90:
-        raise _validate.fail("--phi-limit-deg", args.phi_limit_deg, "deg",
-                             "must be in (0, 90): a pressure angle of 90 deg or more transmits no lift")
-
-
 def _run(args) -> int:
-    if args.out:
+    if args.out is not None:
         out_dir(args.out, create=False)  # checked before any work (same words as the others)
-    _check_args(args)
-    if args.law:
+    if args.law is not None:
         check_law("--law", args.law)
     theta = _validate.angles_deg("--angles-deg", args.angles_deg)
     scene = load_scene(args.scene)
-    if args.law:
+    if args.law is not None:
         scene = scene.with_law(args.law)
+    out = args.out if args.out is not None else Path("femcam-out") / scene.name
+    out_dir(out, create=False)
+    refuse_non_empty(out, args.overwrite)  # before any work (the rule of every subcommand)
     st = scene.analyse(theta, allow_undercut=args.allow_undercut)
-    out = out_dir(args.out if args.out else Path("femcam-out") / scene.name)
+    out = out_dir(out)
     # rebuilt from the parsed options (sys.argv is not ours when main() is called in-process)
     opts = ["--out", str(out), "--angles-deg", args.angles_deg]
     opts += ["--law", args.law] if args.law else []

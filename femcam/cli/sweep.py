@@ -17,13 +17,24 @@ import shlex
 import sys
 
 from .. import _validate
+from ..mesh import MeshOptions
+from ..mesh.estimate import check_contact_elements
 from ..scene import load_scene, study_problem
-from ..scene.schema import STUDY_UNITS
+from ..scene.schema import STUDY_RANGES, STUDY_UNITS, STUDY_WHOLE
 from ..sweep import parse_angles_deg, sweep
 from ..sweep.options import TOLERANCE_FLOOR
 from ..sweep.result import families_text, hertz_check_text
 from ..sweep.worst import assess_line
-from ._common import add_law_override, add_scene_out, cap_workers, check_law, out_dir, plain, refuse_non_empty
+from ._common import (
+    add_law_override,
+    add_scene_out,
+    cap_workers,
+    check_law,
+    out_dir,
+    plain,
+    refuse_non_empty,
+)
+from ._flags import Range, add_number
 
 
 def register(subparsers) -> None:
@@ -42,13 +53,14 @@ def register(subparsers) -> None:
     p.add_argument("--angles-deg", default=None, metavar="START:STOP:STEP",
                    help="cam angles in degrees, stop exclusive " + _default_text("angles_deg")
                    + "; a negative start is accepted (--angles-deg -360:0:30)")
-    p.add_argument("--workers", default="auto", metavar="N|auto",
-                   help="local worker processes; 1 = serial in this process; auto (default) = "
-                        "processes only when the expected saving beats the pool start-up: the "
-                        "model families are built and verified before the chunks run, so the "
-                        "chunks are only ~1-2 ms contact solves per angle: a sweep without VTK "
-                        "usually runs serially, while writing many VTU files pays on 2 "
-                        "processes; capped at the useful number (CPU cores, chunks)")
+    add_number(p, "--workers", Range("processes", 1, 1024, whole=True, words=("auto",)),
+               default="auto", metavar="N|auto",
+               help="local worker processes; 1 = serial in this process; auto (default) = "
+                    "processes only when the expected saving beats the pool start-up: the "
+                    "model families are built and verified before the chunks run, so the "
+                    "chunks are only ~1-2 ms contact solves per angle: a sweep without VTK "
+                    "usually runs serially, while writing many VTU files pays on 2 "
+                    "processes; capped at the useful number (CPU cores, chunks)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="Dask scheduler address, e.g. tcp://host:8786 (needs femcam[dask])")
     p.add_argument("--resume", action="store_true",
@@ -57,10 +69,10 @@ def register(subparsers) -> None:
                    help="replace the results in a non-empty DIR (refused otherwise)")
     p.add_argument("--animate", action="store_true",
                    help="also write DIR/animation.gif: von Mises over cam angle (the VTK series)")
-    for flag, typ, metavar, text, extra in _SCENE_FLAGS:
+    for flag, rng, metavar, text, extra in _SCENE_FLAGS:
         dest = flag[2:].replace("-", "_")
-        p.add_argument(flag, type=typ, default=None, metavar=metavar,
-                       help=f"{text} {_default_text(dest, extra)}")
+        add_number(p, flag, rng, default=None, metavar=metavar,
+                   help=f"{text} {_default_text(dest, extra)}")
     p.add_argument("--method", choices=("fe", "hertz", "auto"), default=None,
                    help="fe: FE contact solve; hertz: analytic only; auto: the cheapest of Hertz, "
                         "FE arc gap, FE exact gap within --tolerance per angle "
@@ -73,7 +85,7 @@ def register(subparsers) -> None:
                    help="progress bar on stderr (auto: only on a terminal)")
     # a test aid (not shown in --help): sleep after each chunk, so that a test can kill the
     # sweep between chunks deterministically
-    p.add_argument("--chunk-delay-s", type=float, default=0.0, help=argparse.SUPPRESS)
+    add_number(p, "--chunk-delay-s", Range("s", 0.0, 60.0), default=0.0, help=argparse.SUPPRESS)
     p.set_defaults(func=_run)
 
 
@@ -84,15 +96,37 @@ SETTINGS = {"angles_deg": ("sweep", "angles_deg", "0:360:1"), "mesh_size": ("fe"
             "vtk_every": ("sweep", "vtk_every", 10), "method": ("sweep", "method", "fe"),
             "plots": ("sweep", "plots", True)}
 
-#: the numeric flags a scene can set: (flag, type, metavar, help, note after the default)
+def _study(key: str, whole: bool = False, hi: float | None = None) -> Range:
+    """The flag's range: the scene's (femcam.scene.schema.study_problem, one copy, with the
+    hint of :data:`_FLAG_CHECKS`), capped at ``hi`` where the scene has no upper bound."""
+    lo, top = STUDY_RANGES.get(key, (STUDY_WHOLE.get(key, 0), hi))
+    dest = {v[1]: k for k, v in SETTINGS.items()}[key]
+    return Range(STUDY_UNITS[key], lo, top, whole=whole, check=lambda x: _study_problem(dest, x))
+
+
+def _study_problem(dest: str, x: float) -> str | None:
+    """:func:`study_problem` of a flag's setting in the flag's words, with its hint."""
+    problem = study_problem(SETTINGS[dest][1], x)
+    if not problem:
+        return None
+    hint = _FLAG_CHECKS[dest][1]
+    problem = problem.replace("a_over_h", "--mesh-size")
+    return f"{problem}; {hint}" if hint else problem
+
+
+#: the numeric flags a scene can set: (flag, range, metavar, help, note after the default);
+#: chunk_size and vtk_every are capped at 1e6 angles (a revolution at 0.001 deg is 360,000)
 _SCENE_FLAGS = (
-    ("--mesh-size", float, "A_OVER_H", "FE element size in the contact zone, h = a / A_OVER_H", ""),
-    ("--tolerance", float, "TOL",
+    ("--mesh-size", _study("a_over_h"), "A_OVER_H",
+     "FE element size in the contact zone, h = a / A_OVER_H", ""),
+    ("--tolerance", _study("tolerance"), "TOL",
      "bound on the relative p0 difference between an angle solved with its family's shared model "
      "and with a model built for it alone; checked with fresh models at each family's worst "
      "angles, families are split until it holds", f">= {TOLERANCE_FLOOR:g}"),
-    ("--chunk-size", int, "N", "angles per chunk on disk / per parallel task", ""),
-    ("--vtk-every", int, "K", "write a .vtu (both bodies, ~1 MB) every K angles plus sweep.pvd",
+    ("--chunk-size", _study("chunk_size", True, 1e6), "N",
+     "angles per chunk on disk / per parallel task", ""),
+    ("--vtk-every", _study("vtk_every", True, 1e6), "K",
+     "write a .vtu (both bodies, ~1 MB) every K angles plus sweep.pvd",
      "1 = every angle; 0 = none"),
 )
 
@@ -175,12 +209,13 @@ def _check_args(args) -> None:
     The condition is :func:`femcam.scene.schema.study_problem`'s, with the scene key
     ``a_over_h`` it may mention written as its flag ``--mesh-size``.
     """
-    for dest, (unit, hint) in _FLAG_CHECKS.items():
+    for dest, (unit, _hint) in _FLAG_CHECKS.items():
         flag, value = "--" + dest.replace("_", "-"), getattr(args, dest)
-        problem = study_problem(SETTINGS[dest][1], _validate.number(flag, value, unit))
+        problem = _study_problem(dest, _validate.number(flag, value, unit))
         if problem:
-            problem = problem.replace("a_over_h", "--mesh-size")
-            raise _validate.fail(flag, value, unit, f"{problem}; {hint}" if hint else problem)
+            raise _validate.fail(flag, value, unit, problem)
+    if args.method != "hertz":  # the FE mesh's size, estimated before any work (the library's cap)
+        check_contact_elements(MeshOptions(a_over_h=args.mesh_size), "--mesh-size")
     args.workers = _validate.workers("--workers", args.workers)
 
 
@@ -207,7 +242,7 @@ def _command_line(args) -> str:
 
 def _run(args) -> int:
     out_dir(args.out, create=False)
-    if args.law:
+    if args.law is not None:
         check_law("--law", args.law)
     scene = load_scene(args.scene)
     from_scene = resolve_settings(args, scene)
@@ -219,7 +254,7 @@ def _run(args) -> int:
         print("femcam sweep: settings from the scene file: " + ", ".join(from_scene))
     if note:
         print(f"femcam sweep: note: {note}", file=sys.stderr)
-    if args.law:
+    if args.law is not None:
         scene = scene.with_law(args.law)
     progress = {"auto": None, "on": True, "off": False}[args.progress]
     try:

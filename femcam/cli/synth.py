@@ -21,12 +21,13 @@ import sys
 
 import numpy as np
 
-from .. import _validate, io
+from .. import io
 from ..errors import ConvergenceError, InputError
 from ..kinematics import LAW_NAMES
 from ..profile import KnifeEdgeFollower, min_base_radius
 from ..scene import load_scene
 from ..synthesis import SynthesisOptions, compare_direct, synthesize_knife_edge
+from ..synthesis.options import MAX_ELEMENTS
 from ..synthesis.study import (
     SEED003_RB,
     format_table,
@@ -36,12 +37,24 @@ from ..synthesis.study import (
     study_k_over_mu,
 )
 from ..viz import synthesis as vz
-from ._common import out_dir, plain
+from ._common import add_overwrite, out_dir, plain, refuse_non_empty
+from ._flags import Range, add_number
 
 #: design limit used by ``--base-radius-mm auto`` (seed 003 section 5: phi <= 30 deg)
 AUTO_PHI_MAX_DEG = 30.0
 #: residuals shown when Newton fails
 N_RESIDUALS_SHOWN = 5
+
+
+#: ranges of the numeric flags (femcam.cli._flags); the element cap is the library's
+ELEMENTS = Range("elements around the cam", 3, MAX_ELEMENTS, whole=True,
+                 why="femcam.synthesis.options.MAX_ELEMENTS: time and memory")
+_WHY = "the studies span 1e2-1e10; beyond 1e14 the tangent is singular in double precision"
+PENALTY = Range("(penalty constant, dimensionless)", 0.0, 1e14, lo_open=True, why=_WHY)
+STABILISATION = Range("(stabilisation parameter, dimensionless)", 0.0, 1e14, lo_open=True, why=_WHY)
+BASE_RADIUS = Range("mm", 0.0, 1000.0, lo_open=True, words=("auto",),
+                    why="a base circle of more than 1 m is not a cam")
+MAX_ITER = Range("iterations", 1, 10_000, whole=True)
 
 
 def register(subparsers) -> None:
@@ -61,20 +74,21 @@ def register(subparsers) -> None:
                    help="built-in case instead of a scene: seed 003's in-line knife edge, "
                         "poly345 rise 120 deg to 3 mm, dwell 90, fall 90, dwell 60, Rb = 5 mm")
     p.add_argument("--out", required=True, metavar="DIR", help="output directory")
-    p.add_argument("--elements", type=int, default=180, metavar="N",
-                   help="quadratic elements around the cam (default 180)")
-    p.add_argument("--k", type=float, default=1e6, metavar="K",
-                   help="penalty constant k (dimensionless; default 1e6)")
-    p.add_argument("--mu", type=float, default=1.0, metavar="MU",
-                   help="stabilisation parameter mu (dimensionless; default 1)")
-    p.add_argument("--base-radius-mm", default=None, metavar="auto|RB_MM",
-                   help="base circle radius in mm, or 'auto': the smallest one with max "
-                        "pressure angle <= 30 deg (femcam.profile.min_base_radius); default: "
-                        "the case's 5 mm or the scene's Rb")
-    p.add_argument("--max-iter", type=int, default=50, metavar="N",
-                   help="Newton iterations per k stage before giving up (default 50)")
+    add_number(p, "--elements", ELEMENTS, default=180, metavar="N",
+               help="quadratic elements around the cam (default 180)")
+    add_number(p, "--k", PENALTY, default=1e6, metavar="K",
+               help="penalty constant k (dimensionless; default 1e6)")
+    add_number(p, "--mu", STABILISATION, default=1.0, metavar="MU",
+               help="stabilisation parameter mu (dimensionless; default 1)")
+    add_number(p, "--base-radius-mm", BASE_RADIUS, default=None, metavar="auto|RB_MM",
+               help="base circle radius in mm, or 'auto': the smallest one with max "
+                    "pressure angle <= 30 deg (femcam.profile.min_base_radius); default: "
+                    "the case's 5 mm or the scene's Rb")
+    add_number(p, "--max-iter", MAX_ITER, default=50, metavar="N",
+               help="Newton iterations per k stage before giving up (default 50)")
     p.add_argument("--study", action="store_true",
                    help="also run the k and k/mu studies (tables .md/.csv and plots; off by default)")
+    add_overwrite(p)
     p.set_defaults(func=run)
 
 
@@ -99,11 +113,7 @@ def _base_radius(value, Rb_default, program, default_source):
         br = min_base_radius("knife_edge", program, phi_max=math.radians(AUTO_PHI_MAX_DEG))
         return br.Rb, (f"auto: min_base_radius, exact max phi = {AUTO_PHI_MAX_DEG:g} deg at "
                        f"theta = {math.degrees(br.theta_critical):.2f} deg")
-    try:
-        return _validate.positive("--base-radius-mm", value, "mm") * 1e-3, "given"
-    except InputError:
-        raise _validate.fail("--base-radius-mm", value, "mm",
-                     "must be 'auto' or a finite number > 0") from None
+    return BASE_RADIUS.parse("--base-radius-mm", value) * 1e-3, "given"
 
 
 def _residual_tail(history, n=N_RESIDUALS_SHOWN) -> str:
@@ -129,13 +139,14 @@ def run(args) -> int:
         Exit code 0 (errors are raised as :class:`~femcam.errors.FemcamError`).
     """
     out_dir(args.out, create=False)  # checked before any work, created below
-    _validate.integer("--elements", args.elements, 3, "elements around the cam")
-    _validate.positive("--k", args.k, "(penalty constant, dimensionless)")
-    _validate.positive("--mu", args.mu, "(stabilisation parameter, dimensionless)")
+    refuse_non_empty(args.out, args.overwrite)  # the rule of every subcommand
+    ELEMENTS.parse("--elements", args.elements)   # the flags' ranges (also for main(...) values)
+    PENALTY.parse("--k", args.k)
+    STABILISATION.parse("--mu", args.mu)
     name, program, Rb = _case(args)
     Rb, rb_source = _base_radius(args.base_radius_mm, Rb, program,
                                  "seed 003 case" if args.case else "scene")
-    _validate.integer("--max-iter", args.max_iter, 1, "iterations")
+    MAX_ITER.parse("--max-iter", args.max_iter)
     opt = SynthesisOptions(n_elements=args.elements, k=args.k, mu=args.mu, max_iter=args.max_iter)
     try:
         res = synthesize_knife_edge(program, Rb=Rb, options=opt)

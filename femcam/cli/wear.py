@@ -39,11 +39,21 @@ from ..scene import load_scene
 from ..sweep import sweep
 from ..viz.wear import plot_evolution, plot_wear_comparison, plot_wear_map, plot_wear_polar
 from ..wear.axial import scene_wear_map
-from ..wear.evolution import convergence_table, evolution_case
+from ..wear.evolution import convergence_table, evolution_case, evolution_problem
 from ..wear.options import describe_k, wear_coefficient_info, wear_options
 from ..wear.scene import scene_tip_radius, tip_scene
 from ..wear.seed000 import PAPER_LAWS, format_table3, seed000_table, table_rows_for_csv
-from ._common import NAMED_LAWS, add_scene_out, check_law, out_dir, plain, refuse_non_empty
+from ._common import NAMED_LAWS, add_overwrite, add_scene_out, check_law, out_dir, plain, refuse_non_empty
+from ._flags import Range, add_number
+
+#: ranges of the numeric flags of ``wear map`` (femcam.cli._flags)
+CYCLES = Range("revolutions", 0.0, 1e12, lo_open=True,
+               why="1e12 revolutions is 3,000 years at 600 rpm")
+STEP = Range("deg", 0.01, 10.0, why="36,000 angles at most (~2 min of wear map); above 10 deg the "
+             "contact path is not resolved")
+TIP = Range("mm", 0.0, 100.0, lo_open=True, why="a tip radius above 100 mm is a flat face")
+BLOCKS = Range("(number of blocks)", 1, 4096, whole=True,
+               why="with the angle step also capped at MAX_ANGLE_SOLVES of femcam.wear.evolution")
 
 
 def register(subparsers) -> None:
@@ -75,23 +85,22 @@ def register(subparsers) -> None:
                        "roller_model = srr|inertia, srr, J_kg_m2, T_drag_N_m, tip_radius_mm, "
                        "cycles.")
     add_scene_out(m, "scene file (see examples/)")
-    m.add_argument("--cycles", type=float, default=None, metavar="N",
-                   help="number of cam revolutions (default: scene [wear] cycles or 1e6)")
+    add_number(m, "--cycles", CYCLES, default=None, metavar="N",
+               help="number of cam revolutions (default: scene [wear] cycles or 1e6)")
     m.add_argument("--source", choices=("hertz", "fe"), default="hertz",
                    help="contact pressure from Hertz (default) or the FE sweep (slow)")
     m.add_argument("--laws", default=None, metavar="A,B,C",
                    help="compare motion laws (comma-separated; default: the scene's): "
                         + ", ".join(LAW_NAMES))
-    m.add_argument("--step-deg", type=float, default=0.5, metavar="DEG", help="cam angle step (default 0.5)")
-    m.add_argument("--tip-radius-mm", type=float, default=None, metavar="R",
-                   help="knife-edge followers: tip radius in mm (default: scene [follower] tip_radius_mm); "
-                        "a sharp tip has no contact width, so the wear map needs one")
-    m.add_argument("--evolve-blocks", type=int, default=None, metavar="K",
-                   help="roller followers: also evolve the profile (wear -> geometry -> pressure -> wear) "
-                        "in 1, 2, 4, ... K blocks of cycles and write the convergence table")
+    add_number(m, "--step-deg", STEP, default=0.5, metavar="DEG", help="cam angle step (default 0.5)")
+    add_number(m, "--tip-radius-mm", TIP, default=None, metavar="R",
+               help="knife-edge followers: tip radius in mm (default: scene [follower] tip_radius_mm); "
+                    "a sharp tip has no contact width, so the wear map needs one")
+    add_number(m, "--evolve-blocks", BLOCKS, default=None, metavar="K",
+               help="roller followers: also evolve the profile (wear -> geometry -> pressure -> wear) "
+                    "in 1, 2, 4, ... K blocks of cycles and write the convergence table")
     m.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
-    m.add_argument("--overwrite", action="store_true",
-                   help="write into a non-empty DIR, replacing its files (refused otherwise)")
+    add_overwrite(m)
     m.set_defaults(func=_map)
     p.set_defaults(func=lambda args: (p.print_help(), 2)[1])
 
@@ -125,19 +134,17 @@ def _follower_coordinate(scene) -> tuple[str, str, str]:
 
 def _check_map_args(args) -> tuple[float, float | None]:
     """``(step (deg), tip radius (m) or None)`` from the flags, checked."""
-    step = float(args.step_deg)
-    if not (0 < step <= 10):
-        raise InputError(f"--step-deg = {step:g} deg: must be in (0, 10]")
+    step = STEP.parse("--step-deg", args.step_deg)  # the flags' ranges (also for main(...) values)
     tip = None
     if args.tip_radius_mm is not None:
-        if not (math.isfinite(args.tip_radius_mm) and args.tip_radius_mm > 0):
-            raise InputError(f"--tip-radius-mm = {args.tip_radius_mm:g} mm: must be > 0")
-        tip = args.tip_radius_mm * 1e-3
+        tip = TIP.parse("--tip-radius-mm", args.tip_radius_mm) * 1e-3
     if args.cycles is not None:
-        _validate.positive("--cycles", args.cycles, "revolutions")
-    if args.evolve_blocks is not None and args.evolve_blocks < 1:
-        raise InputError(f"--evolve-blocks = {args.evolve_blocks} (number of blocks): "
-                         "must be an integer >= 1")
+        CYCLES.parse("--cycles", args.cycles)
+    if args.evolve_blocks is not None:
+        why = evolution_problem(round(360.0 / step), BLOCKS.parse("--evolve-blocks", args.evolve_blocks))
+        if why:
+            raise _validate.fail("--evolve-blocks", args.evolve_blocks, "(number of blocks)",
+                                 why.replace("coarser angle step", "coarser angle step (--step-deg)"))
     if args.evolve_blocks is not None and args.source != "hertz":
         raise InputError(f"--source = {args.source}: --evolve-blocks uses Hertz pressure (--source hertz)")
     return step, tip
@@ -146,7 +153,8 @@ def _check_map_args(args) -> tuple[float, float | None]:
 def _map(args) -> int:
     out_dir(args.out, create=False)  # checked before any work, created below
     step, tip = _check_map_args(args)
-    laws = [check_law("--laws", x.strip()) for x in args.laws.split(",")] if args.laws else [None]
+    laws = [check_law("--laws", x.strip()) for x in args.laws.split(",")] \
+        if args.laws is not None else [None]
     refuse_non_empty(args.out, args.overwrite)  # the rule of femcam sweep
     scene = load_scene(args.scene)
     opts = wear_options(scene)

@@ -26,6 +26,7 @@ rpm_rigid  same for the rigid eq. 11 force              rpm    seed 002 eq. 11
 from __future__ import annotations
 
 import math
+import signal
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
@@ -276,6 +277,39 @@ def _one(args):
             r.message)
 
 
+#: most speeds of one rpm sweep: ~10 ms each at 3,600 steps per revolution (101 speeds of
+#: seed 002's one_dof train in ~1 s on one core), so the cap is a few minutes; more steps per
+#: revolution at high speed take longer
+MAX_SPEEDS = 20_000
+#: measured seconds per speed of an rpm sweep, for the refusal's time estimate
+SECONDS_PER_SPEED = 0.01
+
+
+def speeds_problem(n: int) -> str:
+    """Why an rpm sweep of ``n`` speeds is refused (the estimate, the cap, what to change).
+
+    Parameters
+    ----------
+    n : int
+        Number of speeds (-).
+
+    Returns
+    -------
+    str
+        The condition, for an error message.
+    """
+    return (f"{n:,} speeds would take ~{n * SECONDS_PER_SPEED / 3600:.3g} h at ~"
+            f"{SECONDS_PER_SPEED * 1e3:g} ms per speed, above the cap of {MAX_SPEEDS:,} speeds "
+            "(femcam.dynamics.jump.MAX_SPEEDS); use a larger STEP or a narrower range")
+
+
+def _worker_init() -> None:
+    """A pool worker leaves Ctrl-C to the parent (one line, exit 130) and ends at once on the
+    SIGTERM with which the pool stops it (a forked worker inherits the command line's handlers)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
 def rpm_sweep(train: TrainModel, program: CamProgram, rpm, *, steps_per_rev=None,
               max_cycles: int = 400, workers: int = 1) -> RpmSweep:
     """Periodic response at each speed of ``rpm`` (rpm); ``workers`` > 1 runs the speeds in
@@ -304,9 +338,12 @@ def rpm_sweep(train: TrainModel, program: CamProgram, rpm, *, steps_per_rev=None
     Raises
     ------
     InputError
-        Non-finite or non-positive speeds, or ``workers`` or ``max_cycles`` not a whole
-        number >= 1.
+        Non-finite or non-positive speeds, more than :data:`MAX_SPEEDS`, or ``workers`` or
+        ``max_cycles`` not a whole number >= 1.
     """
+    n = np.size(rpm)
+    if n > MAX_SPEEDS:  # before any work (or any copy of the array)
+        raise _validate.fail("rpm", f"<{n} speeds>", "", speeds_problem(n))
     rpm = np.atleast_1d(_validate.finite_array("rpm", rpm, "rpm"))
     _validate.instance("train", train, TrainModel)
     _validate.record("program", program, "a femcam.kinematics.CamProgram", "derivatives")
@@ -320,7 +357,7 @@ def rpm_sweep(train: TrainModel, program: CamProgram, rpm, *, steps_per_rev=None
     if workers == 1:
         rows = [_one(j) for j in jobs]
     else:
-        with ProcessPoolExecutor(max_workers=workers) as ex:
+        with ProcessPoolExecutor(max_workers=workers, initializer=_worker_init) as ex:
             rows = list(ex.map(_one, jobs, chunksize=max(1, len(jobs) // (4 * workers))))
     cols = list(zip(*rows, strict=True))
     out = {k: np.array(c) for k, c in zip(_KEYS, cols[:-1], strict=True)}

@@ -44,8 +44,11 @@ from .model import Mode, TrainModel, check_resolution, march
 
 #: default (and least) number of time steps per revolution
 DEFAULT_STEPS = 3600
-#: most steps per revolution chosen automatically before the problem is refused
+#: most steps per revolution, chosen automatically or given, before the problem is refused
 MAX_STEPS = 400_000
+#: memory of a periodic response per time step (bytes): peak 138 MB at 100,000 and 197 MB at
+#: 400,000 steps per revolution (one_dof, seed 002), ~200 B per step; MAX_STEPS is ~80 MB
+BYTES_PER_STEP = 200
 
 
 @dataclass(frozen=True)
@@ -293,11 +296,19 @@ def choose_steps(train: TrainModel, omega: float, steps_per_rev=None) -> int:
     Raises
     ------
     InputError
-        The requested count is not a whole number ``>= 16`` or does not resolve the train, or
-        more than ``MAX_STEPS`` would be needed.
+        The requested count is not a whole number ``>= 16``, exceeds ``MAX_STEPS`` (the
+        message gives the memory it would need) or does not resolve the train, or more than
+        ``MAX_STEPS`` would be needed.
     """
     if steps_per_rev is not None:
         N = _steps_per_rev(steps_per_rev)
+        if N > MAX_STEPS:  # refused before any array is allocated
+            raise _validate.fail("steps_per_rev", steps_per_rev, "(time steps per revolution)",
+                                 f"needs ~{N * BYTES_PER_STEP / 1e9:.3g} GB of per-step arrays "
+                                 f"(~{BYTES_PER_STEP} B per step), above the cap of {MAX_STEPS:,} "
+                                 f"steps (~{MAX_STEPS * BYTES_PER_STEP / 1e6:.0f} MB, "
+                                 "femcam.dynamics.periodic.MAX_STEPS); give fewer steps "
+                                 "([dynamics] steps_per_rev) or leave it unset")
         why = check_resolution(train, omega, N)
         if why:
             raise InputError(why + "; give more steps or leave steps_per_rev unset")

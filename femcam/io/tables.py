@@ -187,8 +187,7 @@ def write_rows(path, header: Sequence[str], rows, prov: dict | None = None, *,
 
 
 def write_csv(path, table: dict, prov: dict | None = None, *, columns: Sequence[Column],
-              text_columns: Sequence[str] = (), title: str = "femcam sweep: one row per cam angle"
-              ) -> Path:
+              text_columns: Sequence[str] = (), title: str = "") -> Path:
     """Write an SI table as CSV through a column list (unit-suffixed names) plus the sidecar JSON.
 
     Parameters

@@ -14,6 +14,7 @@ from .. import _validate
 from ..errors import InputError
 from ..hertz.conformity import roller_does_not_fit
 from .coating import mesh_coated_body
+from .estimate import check_contact_elements
 from .geometry import BodyLayout, body_layout, body_size, outline, size_field
 from .nodes import extract, finish_body, mirror
 from .options import BodyMesh, ContactMesh, MeshOptions
@@ -112,8 +113,9 @@ def build_contact_mesh(*, Rr: float, rho: float, a_ref: float,
     Raises
     ------
     InputError
-        A bad radius or half-width, or a concave cam the roller does not fit
-        (``|rho| <= Rr``).
+        A bad radius or half-width, a concave cam the roller does not fit
+        (``|rho| <= Rr``), or a mesh estimated above
+        :data:`~femcam.mesh.estimate.MAX_CONTACT_ELEMENTS` elements (refused before gmsh).
     FemcamError
         gmsh failed to mesh the contact region.
     """
@@ -136,6 +138,7 @@ def build_contact_mesh(*, Rr: float, rho: float, a_ref: float,
     cap = None if opts.domain_over_a is None else opts.domain_over_a * a_ref
     L_roller = body_size(Rr, cap, math.inf)
     L_cam = body_size(rho, cap, Rr)
+    check_contact_elements(opts, "a_over_h", max(L_roller, L_cam) / a_ref)  # before gmsh
     with gmsh_session("the contact region") as gmsh:
         cam = mesh_body(gmsh, "cam", rho, L_cam, a_ref, opts)
         roller = mirror(mesh_body(gmsh, "roller", Rr, L_roller, a_ref, opts))

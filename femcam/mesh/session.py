@@ -3,6 +3,7 @@ is imported; used by the contact mesh and by :mod:`femcam.bodies`)."""
 
 from __future__ import annotations
 
+import signal
 import threading
 from contextlib import contextmanager
 
@@ -44,7 +45,9 @@ def gmsh_session(what: str):
             # interruptible=False: gmsh would install its own SIGINT handler (which ends the
             # process silently on Ctrl-C, and which Python allows only in the main thread, while
             # Dask runs tasks in worker threads); Python's KeyboardInterrupt stays in charge
+            kept = _python_handlers()
             gmsh.initialize(["-nopopup"], readConfigFiles=False, interruptible=False)
+            _reinstall(kept)  # gmsh resets SIGTERM to its default (the process dies silently)
         try:
             gmsh.option.setNumber("General.Terminal", 0)
             gmsh.option.setNumber("General.Verbosity", 1)
@@ -56,3 +59,19 @@ def gmsh_session(what: str):
         finally:
             if init_here:
                 gmsh.finalize()
+
+
+def _python_handlers() -> dict:
+    """The Python handlers of SIGINT and SIGTERM ({} off the main thread, where Python can
+    install none)."""
+    if threading.current_thread() is not threading.main_thread():
+        return {}
+    return {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
+
+
+def _reinstall(handlers: dict) -> None:
+    """Install ``handlers`` again: ``gmsh.initialize`` replaces the C-level SIGTERM handler, so
+    the command line's one-line exit 143 (femcam._interrupt) would be lost."""
+    for s, h in handlers.items():
+        if h is not None:
+            signal.signal(s, h)

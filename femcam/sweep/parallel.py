@@ -162,6 +162,9 @@ def _worker_init(parent_pid: int | None = None):
     limit_blas_threads(1)
     # Ctrl-C is the parent's to handle (one line, exit 130); the parent stops the pool
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    # a forked worker inherits the command line's SIGTERM handler (femcam._interrupt); the pool
+    # ends its workers with SIGTERM, which must end them at once
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
     if parent_pid is not None:
         threading.Thread(target=_exit_with_parent, args=(parent_pid,), daemon=True,
                          name="femcam-parent-watch").start()

@@ -16,6 +16,8 @@ import numpy as np
 from .. import _validate
 from ..hertz.conformity import roller_does_not_fit
 from ..io import provenance
+from ..mesh import MeshOptions
+from ..mesh.estimate import check_contact_elements
 from ..scene import load_scene
 from ..scene.digest import physics_hash, physics_parts
 from .cache import default_cache
@@ -214,6 +216,8 @@ def _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume
         vtk_every = DEFAULT_VTK_EVERY
     opts = SweepOptions(method=method, a_over_h=a_over_h, tolerance=tolerance,
                         chunk_size=chunk_size, vtk_every=vtk_every if out is not None else 0)
+    if opts.method != "hertz":  # refused before any work: a mesh too large for time and memory
+        check_contact_elements(MeshOptions(a_over_h=opts.a_over_h))
     if resume and out is None:
         raise _validate.fail("resume", resume, "", "needs an output directory (out)")
     delay = _validate.nonnegative("chunk_delay_s", chunk_delay_s, "s")

@@ -24,6 +24,8 @@ from pathlib import Path
 
 import numpy as np
 
+from .._files import read_regular
+
 try:
     import fcntl
 except ImportError:  # pragma: no cover - Windows: no directory lock
@@ -43,6 +45,9 @@ LOCK = ".femcam.lock"
 STREAM_ANGLES = 20_000
 #: name of the scene hash stored in each chunk file (not a column)
 CHUNK_SCENE_KEY = "_scene_sha256"
+
+#: largest manifest / plan JSON read from a sweep's store (bytes); both are a few kB
+MAX_JSON_BYTES = 50_000_000
 
 
 def array_hash(arr) -> str:
@@ -106,7 +111,7 @@ class ChunkStore:
             tmp.unlink(missing_ok=True)
         if resume and mpath.exists():
             try:
-                old = json.loads(mpath.read_text())
+                old = json.loads(read_regular(mpath, "sweep manifest", MAX_JSON_BYTES))  # no FIFO
             except (OSError, ValueError):
                 old = None
             if old is not None and old != json.loads(json.dumps(self._manifest(), sort_keys=True)):
@@ -161,8 +166,8 @@ class ChunkStore:
             The plan as saved by :meth:`save_plan`; None when none is stored or it is unreadable.
         """
         try:
-            return json.loads((self.root / PLAN).read_text())
-        except (OSError, ValueError):
+            return json.loads(read_regular(self.root / PLAN, "sweep plan", MAX_JSON_BYTES))
+        except (OSError, ValueError, InputError):  # (a FIFO or a huge file: not read)
             return None
 
     # -- chunks -------------------------------------------------------------------------
@@ -183,7 +188,7 @@ class ChunkStore:
 
     def _readable(self, i: int) -> bool:
         p = self.path(i)
-        if not p.exists():
+        if not p.is_file():  # missing, or not a regular file (a FIFO would block np.load)
             return False
         try:
             rows = self.load(i)

@@ -18,6 +18,11 @@ class PressureAngleError(PhysicsError):
     """The requested lift law needs a pressure angle too close to 90 deg on this base circle."""
 
 
+#: most quadratic elements around the cam: the Newton solve is sparse; seed 003 with 4,000
+#: elements took ~4 s and with 20,000 ~22 s and 0.23 GB (one core); 1e9 was killed for memory
+MAX_ELEMENTS = 20_000
+
+
 @dataclass(frozen=True, kw_only=True)
 class SynthesisOptions:
     """Discretisation and Newton-Raphson settings (all keyword-only, validated).
@@ -76,6 +81,10 @@ class SynthesisOptions:
 
     def __post_init__(self):
         _validate.integer("n_elements", self.n_elements, 3)
+        if self.n_elements > MAX_ELEMENTS:  # refused before any array is allocated
+            raise _validate.fail("n_elements", self.n_elements, "", f"must be <= {MAX_ELEMENTS:,} "
+                                 "(femcam.synthesis.options.MAX_ELEMENTS): 20,000 take ~22 s "
+                                 "and the curve converges long before (seed 003 uses 180)")
         q = self.quad_points
         if isinstance(q, bool) or not isinstance(q, (int, np.integer)) or not 2 <= q <= 5:
             raise _validate.fail("quad_points", q, "", "must be an integer in [2, 5]")

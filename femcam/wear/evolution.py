@@ -542,6 +542,39 @@ class ConvergenceTable:
         return head, out
 
 
+#: most block solves x cam angles of one convergence table: one block re-solves the pressure at
+#: every angle, ~1.1 ms per angle (seed 002, 720 angles: 4 blocks in 8 s, 32 in 54 s, i.e.
+#: ~0.8 s per block); 400,000 is ~7 min, e.g. 256 blocks (511 block solves) at 0.5 deg
+MAX_ANGLE_SOLVES = 400_000
+#: measured seconds per angle per block solve, for the refusal's time estimate
+SECONDS_PER_ANGLE_SOLVE = 1.1e-3
+
+
+def evolution_problem(n_angles: int, max_blocks: int) -> str | None:
+    """Why a convergence table of ``max_blocks`` at ``n_angles`` cam angles is refused, or None.
+
+    Parameters
+    ----------
+    n_angles : int
+        Cam angles per revolution (-).
+    max_blocks : int
+        Largest block count (-); 1, 2, 4, ... ``max_blocks`` blocks are run, ``~2 max_blocks``
+        block solves in all.
+
+    Returns
+    -------
+    str or None
+        The estimate, the cap and what to change; None when it fits.
+    """
+    solves = sum(block_counts(max_blocks)) * int(n_angles)
+    if solves <= MAX_ANGLE_SOLVES:
+        return None
+    return (f"{sum(block_counts(max_blocks)):,} block solves of {n_angles} angles would take "
+            f"~{solves * SECONDS_PER_ANGLE_SOLVE / 60:.3g} min (~{SECONDS_PER_ANGLE_SOLVE * 1e3:g} ms "
+            f"per angle per block), above the cap of {MAX_ANGLE_SOLVES:,} angle solves "
+            "(femcam.wear.evolution.MAX_ANGLE_SOLVES); use fewer blocks or a coarser angle step")
+
+
 def block_counts(max_blocks: int) -> list:
     """1, 2, 4, ... (powers of two <= ``max_blocks``), then ``max_blocks`` if it is not one.
 
@@ -588,6 +621,9 @@ def convergence_table(case: EvolutionCase, cycles: float, max_blocks: int, *,
     """
     cycles = _validate.positive("cycles", cycles, "revolutions")
     counts = block_counts(_validate.integer("max_blocks", max_blocks, 1, "blocks"))
+    why = evolution_problem(np.size(case.theta), max_blocks)   # before any block is run
+    if why:
+        raise _validate.fail("max_blocks", max_blocks, "(number of blocks)", why)
     first = evolve(case, cycles, cycles, n_grid=n_grid)       # counts[0] == 1: the linear map
     n_grid = first.x_cam.size
     res = [first] + [evolve(case, cycles, cycles / nb, n_grid=n_grid) for nb in counts[1:]]
