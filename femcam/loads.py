@@ -37,6 +37,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import _validate
+from ._repr import compact_repr, span
 from .errors import InputError, LiftOffError
 from .profile import bool_intervals
 
@@ -153,6 +154,14 @@ class LoadResult:
     liftoff: np.ndarray
     liftoff_angles: np.ndarray
     liftoff_intervals: list = field(default_factory=list)
+
+    def __repr__(self) -> str:
+        """The angles, the Fc range and the lift-off count (a compact line)."""
+        return compact_repr(self, [
+            f"{self.theta.size} angles",
+            f"Fc {span(self.Fc, 1.0, 'N')}",
+            f"lift-off {int(np.count_nonzero(self.liftoff))}",
+        ])
 
     @property
     def any_liftoff(self) -> bool:

@@ -670,7 +670,9 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.io.atomic_write_bytes", "femcam.io.atomic_write_text", "femcam.io.versions",
         "femcam.io.provenance", "femcam.io.csv_text", "femcam.io.write_csv",
         "femcam.io.read_csv", "femcam.io.write_npz", "femcam.io.write_pvd",
-        "femcam.io.write_vtu", "femcam.io.write_fe_vtu", "femcam.synthesis.write_study_csv")},
+        "femcam.io.write_vtu", "femcam.io.write_fe_vtu", "femcam.synthesis.study_columns",
+        "femcam.io.header_dict", "femcam.io.meta_path", "femcam.io.read_meta", "femcam.io.write_rows",
+        "femcam.io.write_table")},
     "femcam.mesh.mesh_body": "takes an open gmsh session; its numbers are checked by body_layout",
     "femcam.scene.roller_support_problems": "the scene's support check (h4-scene's femcam/scene); the "
                                             "API entry with argument checks is bodies.bearing_problems",

@@ -6,7 +6,8 @@ Hertz chain over a full revolution (worst p0, von Mises, tau1, max |phi|, min rh
 lift-off, assessment safety factors and lambda, jump speed) and given one margin per
 constraint; --fe-top K adds an FE sweep around the worst angle of the K best feasible variants.
 
-Writes DIR/study.csv (one row per variant, units in the column names, provenance header),
+Writes DIR/study.csv (one row per variant, units in the column names; provenance in
+DIR/study.csv-metadata.json),
 DIR/study.npz (SI), DIR/variants/ (one record per content hash: --resume continues a killed
 study and a duplicate variant is computed once) and DIR/pareto.png, DIR/constraint_map.png.
 Keys: dotted scene keys with their unit (follower.base_radius_mm, program.segment.0.beta_deg,

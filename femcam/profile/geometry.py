@@ -52,6 +52,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr, span
 from ..errors import InputError, UndercutError
 
 FOLLOWER_KINDS = ("roller", "knife_edge", "flat_faced")
@@ -279,6 +280,15 @@ class CamProfile:
     face_offset: np.ndarray
     face_width_min: float
     undercut_intervals: list = field(default_factory=list)
+
+    def __repr__(self) -> str:
+        """The follower kind, angles, rho range and undercut count (a compact line)."""
+        return compact_repr(self, [
+            type(self.follower).__name__,
+            f"{self.theta.size} angles",
+            f"rho {span(self.rho, 1e3, 'mm')}",
+            f"undercut {int(np.count_nonzero(self.undercut))}",
+        ])
 
     @property
     def cusp(self) -> bool:

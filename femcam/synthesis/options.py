@@ -8,6 +8,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr
 from ..errors import PhysicsError
 
 STABILIZATIONS = ("sauer", "eq12")
@@ -161,6 +162,10 @@ class SynthesisResult:
     condition_estimate: float
     solve_time: float
     extras: dict = field(default_factory=dict)
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
 
     @property
     def max_error(self) -> float:
