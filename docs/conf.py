@@ -44,7 +44,6 @@ root_doc = "index"
 templates_path = ["_templates"]
 exclude_patterns = [
     "_build",
-    "readme",  # internal drafts, not part of the published site
     "sg_execution_times.rst",  # sphinx-gallery's timing page, if an older build left one
 ]
 
