@@ -198,7 +198,7 @@ class DynamicsResult:
 
     @property
     def max_error(self) -> float:
-        """Largest |x - s| of the last mass (m): the displacement error against the rigid lift."""
+        """Largest ``|x - s|`` of the last mass (m): the displacement error against the rigid lift."""
         return float(np.max(np.abs(self.e[:, -1])))
 
     @property

@@ -297,12 +297,12 @@ class CamProfile:
 
     @property
     def phi_max(self) -> float:
-        """Largest |phi| (rad)."""
+        """Largest ``|phi|`` (rad)."""
         return float(np.max(np.abs(self.phi))) if self.phi.size else 0.0
 
     @property
     def rho_min(self) -> float:
-        """Smallest |rho| over the samples (m); concave and convex alike."""
+        """Smallest ``|rho|`` over the samples (m); concave and convex alike."""
         return float(np.min(np.abs(self.rho))) if self.rho.size else math.inf
 
 

@@ -169,10 +169,10 @@ class SynthesisResult:
 
     @property
     def max_error(self) -> float:
-        """max |y - y_o| over the sampled curve (m)."""
+        """max ``|y - y_o|`` over the sampled curve (m)."""
         return float(np.max(np.abs(self.error)))
 
     @property
     def phi_max(self) -> float:
-        """max |phi| of the FE curve over the samples (rad)."""
+        """max ``|phi|`` of the FE curve over the samples (rad)."""
         return float(np.max(np.abs(self.phi)))

@@ -108,11 +108,11 @@ class Comparison:
     max_radius_deviation, rms_radius_deviation : float
         max and rms of ``|r_FE - r_direct|`` (m).
     phi_max_fe : float
-        max |phi| of the FE curve (rad).
+        max ``|phi|`` of the FE curve (rad).
     phi_max_direct : float
-        max |phi| of the direct profile on a dense grid (rad).
+        max ``|phi|`` of the direct profile on a dense grid (rad).
     max_phi_deviation : float
-        max |phi_FE - phi_direct| at the same angles (rad).
+        max ``|phi_FE - phi_direct|`` at the same angles (rad).
     time_fe : float
         FE Newton solve (s).
     time_direct : float
@@ -138,7 +138,7 @@ def compare_direct(result: SynthesisResult, program, *, n_dense: int = 72001) ->
     program : femcam.kinematics.CamProgram
         The program it was synthesised for.
     n_dense : int
-        Grid points over one revolution for the direct max |phi|.
+        Grid points over one revolution for the direct max ``|phi|``.
 
     Returns
     -------
@@ -173,11 +173,11 @@ class StudyRow:
     n_elements : int
         Quadratic elements.
     max_error : float
-        max |y - y_o| over the sampled curve (m; NaN if not converged).
+        max ``|y - y_o|`` over the sampled curve (m; NaN if not converged).
     node_error : float
-        max |y - y_o| at the nodes (m; NaN if not converged).
+        max ``|y - y_o|`` at the nodes (m; NaN if not converged).
     phi_max : float
-        max |phi| of the FE curve (rad).
+        max ``|phi|`` of the FE curve (rad).
     iterations : int
         Newton iterations (those done before the failure if not converged).
     condition : float
