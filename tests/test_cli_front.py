@@ -36,3 +36,23 @@ def test_listed_help_matches_each_subcommand():
     sub = next(a for a in build_parser()._actions if a.__class__.__name__ == "_SubParsersAction")
     shown = {c.dest: c.help for c in sub._choices_actions}
     assert shown == SUBCOMMANDS
+
+
+EX = __import__("pathlib").Path(__file__).resolve().parents[1] / "examples"
+SCENE = str(EX / "seed002_study_model.toml")
+
+
+def test_sweep_off_a_terminal_prints_plain_progress_and_quiet_removes_it(tmp_path, capsys):
+    from femcam import _progress
+    from femcam.cli import main
+
+    cmd = ["sweep", SCENE, "--method", "hertz", "--angles-deg", "0:40:10", "--no-plots",
+           "--vtk-every", "0"]
+    assert main(["-v", *cmd, "--out", str(tmp_path / "a")]) == 0
+    cap = capsys.readouterr()
+    assert "femcam: solves 4/4 angles (100 %)" in cap.err, cap.err
+    assert "femcam sweep: 4 angles" in cap.out
+    assert main([*cmd, "-q", "--out", str(tmp_path / "b")]) == 0
+    cap = capsys.readouterr()
+    assert cap.out == "" and "femcam: " not in cap.err, cap
+    assert _progress.LEVEL is None          # the command line's level does not outlive it

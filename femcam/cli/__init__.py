@@ -7,19 +7,23 @@ subcommand given: ``femcam --version`` reads the versions from the package metad
 ``femcam --help`` lists the subcommands from :data:`SUBCOMMANDS`, so neither imports numpy's
 solvers, the scene machinery, gmsh, scikit-fem, pyvista, matplotlib or dask.
 
-Console conventions (every subcommand): ``-q/--quiet`` prints only errors and the final
-``wrote ...`` lines; ``-v/--verbose`` adds one log line per phase; progress of the long phases
-goes to stderr (:mod:`femcam.cli._progress`: a bar on a terminal, plain lines elsewhere).
+Console conventions (every subcommand): ``-q/--quiet`` prints nothing but errors and warnings
+(stderr; the exit code says the rest); ``-v/--verbose`` logs every phase, however short;
+progress of the long phases goes to stderr (:mod:`femcam._progress`: a bar on a terminal,
+plain lines elsewhere).
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
 import os
 import sys
+from importlib import metadata
 
-from .. import __version__, _interrupt
+from .. import __version__, _interrupt, _progress
+from .._files import os_error_line
 from ..errors import FemcamError
 from ._flags import FlagError
 
@@ -43,8 +47,6 @@ VERSIONED = (("scikit-fem", "scikit-fem"), ("gmsh", "gmsh"), ("numpy", "numpy"))
 def _versions() -> str:
     """``femcam X, scikit-fem Y, gmsh Z, numpy W`` from the installed package metadata (no
     import of those packages)."""
-    from importlib import metadata
-
     parts = [f"femcam {__version__}"]
     for dist, shown in VERSIONED:
         try:
@@ -77,9 +79,9 @@ def add_verbosity(p, default=None) -> None:
     """
     g = p.add_mutually_exclusive_group()
     g.add_argument("-q", "--quiet", dest="verbosity", action="store_const", const=-1,
-                   default=default, help="print only errors and the final 'wrote ...' lines")
+                   default=default, help="print nothing but errors and warnings (stderr), no progress")
     g.add_argument("-v", "--verbose", dest="verbosity", action="store_const", const=1,
-                   default=default, help="also print one log line per phase")
+                   default=default, help="log every phase on stderr, however short")
 
 
 def build_parser(only: str | None = "") -> argparse.ArgumentParser:
@@ -171,8 +173,12 @@ def _main(argv) -> int:
         parser.print_help()
         return 2
     _interrupt.working()  # from here Ctrl-C / SIGTERM raise, so the cleanups of the work run
+    _progress.set_level(args.verbosity)
+    sink = open(os.devnull, "w") if args.verbosity < 0 else None  # noqa: SIM115 - closed below
+    quiet = contextlib.redirect_stdout(sink) if sink else contextlib.nullcontext()
     try:
-        code = int(args.func(args) or 0)
+        with quiet:  # --quiet: errors and warnings only (stderr), no summary, no progress
+            code = int(args.func(args) or 0)
         sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's final flush
         if code == 130 and _interrupt.last_signal is not None:  # the sweep's own Ctrl-C line
             code = _interrupt.EXIT_CODES[_interrupt.last_signal]
@@ -187,10 +193,12 @@ def _main(argv) -> int:
         print(f"femcam {args.command}: error: {_capped(str(exc))}", file=sys.stderr)
         return 1
     except OSError as exc:  # the disk, not femcam: say which file and why
-        from ._common import os_error_line  # the shared helpers import the library
-
         print(f"femcam {args.command}: error: {os_error_line(exc)}", file=sys.stderr)
         return 1
+    finally:
+        _progress.set_level(None)
+        if sink is not None:
+            sink.close()
 
 
 def _quiet_broken_pipe() -> int:

@@ -82,7 +82,8 @@ def register(subparsers) -> None:
                    help="write the PNG plots " + _default_text("plots"))
     p.add_argument("--no-plots", dest="plots", action="store_false", help="skip the PNG plots")
     p.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
-                   help="progress bar on stderr (auto: only on a terminal)")
+                   help="progress on stderr: a bar on a terminal, plain lines elsewhere (auto: on unless "
+                        "-q; off: none)")
     # a test aid (not shown in --help): sleep after each chunk, so that a test can kill the
     # sweep between chunks deterministically
     add_number(p, "--chunk-delay-s", Range("s", 0.0, 60.0), default=0.0, help=argparse.SUPPRESS)
