@@ -56,3 +56,23 @@ def test_sweep_off_a_terminal_prints_plain_progress_and_quiet_removes_it(tmp_pat
     cap = capsys.readouterr()
     assert cap.out == "" and "femcam: " not in cap.err, cap
     assert _progress.LEVEL is None          # the command line's level does not outlive it
+
+
+def test_copied_scene_reproduces_a_law_override(tmp_path, capsys):
+    """``--law`` is written into DIR/scene.toml: sweeping the copy gives the same rows."""
+    import numpy as np
+
+    from femcam.cli import main
+    from femcam.sweep import SweepResult
+
+    cmd = ["--method", "hertz", "--angles-deg", "0:360:30", "--no-plots", "--vtk-every", "0"]
+    assert main(["sweep", SCENE, *cmd, "--law", "cycloidal", "--out", str(tmp_path / "a")]) == 0
+    copy = (tmp_path / "a" / "scene.toml").read_text()
+    assert 'law = "cycloidal"  # set on the command line (the file had: "bezier5")' in copy
+    assert main(["sweep", str(tmp_path / "a" / "scene.toml"), *cmd, "--out", str(tmp_path / "b")]) == 0
+    assert main(["sweep", SCENE, *cmd, "--out", str(tmp_path / "c")]) == 0
+    capsys.readouterr()
+    a, b, c = (SweepResult.load(tmp_path / d).table for d in "abc")
+    for k in ("Fc", "p0_hertz"):
+        np.testing.assert_array_equal(a[k], b[k], err_msg=k)
+    assert not np.array_equal(a["Fc"], c["Fc"])   # the law matters: the test can fail
