@@ -76,3 +76,36 @@ def test_copied_scene_reproduces_a_law_override(tmp_path, capsys):
     for k in ("Fc", "p0_hertz"):
         np.testing.assert_array_equal(a[k], b[k], err_msg=k)
     assert not np.array_equal(a["Fc"], c["Fc"])   # the law matters: the test can fail
+
+
+def test_check_init_examples(tmp_path, capsys):
+    """check: OK summary, exit 0; init: a template that loads and passes check, refused twice;
+    examples: copies every scene, --list names them, a non-empty DIR is refused."""
+    from femcam.cli import main
+    from femcam.scene import load_scene
+    from femcam.start import example_scenes, key_comment
+
+    assert main(["check", SCENE]) == 0
+    out = capsys.readouterr().out
+    assert "max pressure angle" in out and "min radius of curvature" in out and "OK" in out
+    bad = tmp_path / "bad.toml"
+    bad.write_text((EX / "seed002_study_model.toml").read_text().replace("rpm = 600.0", "rpm = -5.0"))
+    assert main(["check", str(bad)]) == 1
+    assert "operating.rpm" in capsys.readouterr().err
+
+    path = tmp_path / "scene.toml"
+    assert main(["init", str(path)]) == 0
+    text = path.read_text()
+    assert load_scene(path).name == "my_cam"
+    assert f"# {key_comment('follower', 'base_radius_mm')}" in text   # generated, not hand-written
+    assert main(["check", str(path)]) == 0
+    assert main(["init", str(path)]) == 1
+    assert "--overwrite" in capsys.readouterr().err
+    assert main(["init", str(path), "--overwrite"]) == 0
+
+    dest = tmp_path / "ex"
+    assert main(["examples", str(dest)]) == 0
+    assert sorted(p.name for p in dest.glob("*.toml")) == sorted(example_scenes())
+    assert main(["examples", str(dest)]) == 1
+    assert main(["examples", "--list"]) == 0
+    assert "seed002_study_model.toml: " in capsys.readouterr().out

@@ -38,6 +38,9 @@ SUBCOMMANDS = {
     "assess": "will it fail? film, flash temperature, fatigue, safety factors",
     "optimise": "minimise peak p0 (or size, wear, ...) over the cam design",
     "study": "design study over scene keys (grid or Latin hypercube)",
+    "check": "validate a scene file without running it (no FE)",
+    "init": "write a commented scene template",
+    "examples": "copy the example scenes into a directory",
 }
 
 #: packages whose versions ``--version`` prints: (distribution, shown as)
