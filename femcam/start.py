@@ -78,7 +78,14 @@ class SceneCheck:
         return not self.undercut and not self.liftoff
 
     def lines(self) -> list:
-        """The summary as text lines (degrees and mm)."""
+        """The summary as text lines.
+
+        Returns
+        -------
+        list of str
+            Name, follower, segments, pressure angle, radius of curvature (deg, mm), undercut
+            and lift-off.
+        """
         deg = math.degrees
         out = [f"{self.name}: {self.follower} follower, {self.n_segments} segments",
                f"  max pressure angle {deg(self.phi_max):.2f} deg at {deg(self.phi_max_theta):.2f} deg",

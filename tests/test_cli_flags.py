@@ -22,7 +22,8 @@ DYN = str(EX / "seed002_dynamic.toml")
 #: the smallest valid command of each subcommand path (the flag under test is appended)
 BASE = {("run",): ["run", SCENE], ("sweep",): ["sweep", SCENE], ("wear", "map"): ["wear", "map", SCENE],
         ("synth",): ["synth", "--case", "seed003"], ("dynamics",): ["dynamics", DYN],
-        ("assess",): ["assess", SCENE]}
+        ("assess",): ["assess", SCENE], ("check",): ["check", SCENE], ("init",): ["init"],
+        ("examples",): ["examples", "--list"], ("info",): ["info", "."], ("plot",): ["plot", "."]}
 
 
 def _walk(parser, path=()):

@@ -109,3 +109,24 @@ def test_check_init_examples(tmp_path, capsys):
     assert main(["examples", str(dest)]) == 1
     assert main(["examples", "--list"]) == 0
     assert "seed002_study_model.toml: " in capsys.readouterr().out
+
+
+def test_info_and_plot_of_a_sweep_folder(tmp_path, capsys):
+    from femcam.cli import main
+
+    out = tmp_path / "s"
+    assert main(["sweep", SCENE, "--method", "hertz", "--angles-deg", "0:360:30", "--vtk-every", "0",
+                 "--out", str(out)]) == 0
+    capsys.readouterr()
+    assert main(["info", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "written by: femcam sweep" in text and "angles: 12, 0 to 330 deg, step 30 deg" in text
+    assert "worst p0 Hertz: " in text and " MPa at " in text and "sweep.csv" in text
+    for png in (out / "plots").glob("*.png"):
+        png.unlink()
+    assert main(["plot", str(out)]) == 0
+    assert (out / "plots" / "p0_vs_angle.png").is_file()
+    assert main(["plot", str(out)]) == 0            # plots are derived data: replaced
+    assert main(["info", str(tmp_path)]) == 1
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("femcam info: error: DIR = ") and len(err.splitlines()) == 1

@@ -41,6 +41,8 @@ SUBCOMMANDS = {
     "check": "validate a scene file without running it (no FE)",
     "init": "write a commented scene template",
     "examples": "copy the example scenes into a directory",
+    "info": "what a results folder holds (scene, angles, worst values, files)",
+    "plot": "redraw the plots of a sweep's results folder",
 }
 
 #: packages whose versions ``--version`` prints: (distribution, shown as)
