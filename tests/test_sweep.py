@@ -90,7 +90,7 @@ def hertz_ref(F, rho, sc):
 # ------------------------------------------------------------------------------------ angles
 def test_parse_angles_deg():
     np.testing.assert_allclose(np.degrees(parse_angles_deg("0:360:1")), np.arange(360.0), atol=1e-12)
-    np.testing.assert_allclose(np.degrees(parse_angles_deg("10:20:2.5")), [10, 12.5, 15, 17.5],
+    np.testing.assert_allclose(np.degrees(parse_angles_deg("10:20:2.5")), [10, 12.5, 15, 17.5, 20],
                                atol=1e-12)
 
 

@@ -4,7 +4,7 @@
 scene with ``[dynamics] model = "one_dof"`` or ``"two_dof"``. It writes ``DIR/dynamics.csv``
 (theta_deg, s_mm, Fc_rigid_N, Fc_N (axial), liftoff, error_um per mass; provenance header)
 and ``DIR/dynamics_force.png``; with ``--rpm-sweep`` also ``DIR/rpm_sweep.csv``,
-``DIR/rpm_sweep.png`` and the jump speed within the range (rpm, stop inclusive).
+``DIR/rpm_sweep.png`` and the jump speed within the range (rpm, stop included when on the grid).
 """
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ from ..errors import InputError
 from ..scene import load_scene
 from ..viz.dynamics import plot_force, plot_rpm_sweep
 from ._common import add_no_plots, add_overwrite, add_scene_out, cap_workers, out_dir, plain, refuse_non_empty
-from ._flags import Range, add_number
+from ._flags import RANGE_RULE, Range, add_number
 
 
 def register(subparsers) -> None:
@@ -39,7 +39,8 @@ def register(subparsers) -> None:
                               description=plain(__doc__))
     add_scene_out(p, "scene with [dynamics] model = one_dof or two_dof")
     p.add_argument("--rpm-sweep", metavar="START:STOP:STEP", default=None,
-                   help="also sweep the cam speed (rpm, stop inclusive) and find the jump speed")
+                   help="also sweep the cam speed (rpm) and find the jump speed; "
+                        f"{RANGE_RULE}: 4200:4600:200 is 4200, 4400, 4600 rpm")
     add_number(p, "--workers", Range("processes", 1, 1024, whole=True), default=1, metavar="N",
                help="processes for the rpm sweep (default 1; capped at the CPU cores and "
                     "the number of speeds)")

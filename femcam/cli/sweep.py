@@ -34,7 +34,7 @@ from ._common import (
     plain,
     refuse_non_empty,
 )
-from ._flags import Range, add_number
+from ._flags import RANGE_RULE, Range, add_number
 
 
 def register(subparsers) -> None:
@@ -51,7 +51,8 @@ def register(subparsers) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter)
     add_scene_out(p)
     p.add_argument("--angles-deg", default=None, metavar="START:STOP:STEP",
-                   help="cam angles in degrees, stop exclusive " + _default_text("angles_deg")
+                   help=f"cam angles in degrees, {RANGE_RULE}: 0:360:1 is 0 to 359, 0:90:30 is 0 to 90 "
+                   + _default_text("angles_deg")
                    + "; a negative start is accepted (--angles-deg -360:0:30)")
     add_number(p, "--workers", Range("processes", 1, 1024, whole=True, words=("auto",)),
                default="auto", metavar="N|auto",
