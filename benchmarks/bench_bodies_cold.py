@@ -7,7 +7,7 @@ Each run is a new Python process (imports included) that loads
 and solves that angle at both cage positions. Correctness is checked before any time is
 reported: the needle loads balance the cam force (statics, 1e-9) and the cam-contact p0 is the
 solid roller's Hertz p0 within 1.5 % (Johnson 1985 eq. 4.45, computed here; the 3 mm wall
-changes it by < 0.1 %, docs/readme/15.md). Times are wall-clock on a shared machine: the load
+changes it by < 0.1 %, docs/bodies.md). Times are wall-clock on a shared machine: the load
 average is printed with each run.
 """
 

@@ -1,4 +1,4 @@
-"""Figures of docs/readme/20.md: interface shear and case-core margin vs cam angle on
+"""Figures of docs/layers.md: interface shear and case-core margin vs cam angle on
 examples/seed002_coated.toml (DLC roller, nitrided cam), and the layered-solid comparison
 (FE vs the Fourier layered half-space reference of tests/test_layers.py).
 

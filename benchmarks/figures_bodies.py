@@ -1,4 +1,4 @@
-"""Figures of docs/bodies.md and docs/readme/15.md (PNG in docs/img/), with the numbers printed.
+"""Figures of docs/bodies.md (PNG in docs/img/), with the numbers printed.
 
     PYTHONPATH=. python benchmarks/figures_bodies.py
 

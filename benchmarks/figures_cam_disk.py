@@ -1,4 +1,4 @@
-"""Figures and table of the cam disk on its shaft (docs/bodies.md, docs/readme/15.md).
+"""Figures and table of the cam disk on its shaft (docs/bodies.md).
 
     PYTHONPATH=. python benchmarks/figures_cam_disk.py
 

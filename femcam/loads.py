@@ -8,18 +8,18 @@ pressure angle ``phi`` from the axis, so the normal contact force is that divide
 
 Symbols
 -------
-======  =================================================  ======  =======================
-symbol  meaning                                            unit    source
-======  =================================================  ======  =======================
-m       effective mass of the follower train               kg      seed 002 Table 1 (tracker)
-k       spring rate ("equivalent rigidity")                N/m     seed 002 Table 1
-Fpl     spring preload at s = 0                            N       seed 002 Table 1
-c       viscous damping coefficient                        N s/m   seed 002 Table 1
-zeta    damping ratio, c = zeta c_c, c_c = 2 sqrt(k m)     -       seed 002 Table 1 ("0.06 c_c")
-s,v,a   follower lift, velocity, acceleration              m, m/s, m/s^2
-phi     pressure angle                                     rad     femcam.profile
-Fc      normal contact force (> 0 pushes)                  N       seed 002 eq. 11
-======  =================================================  ======  =======================
+======  =================================================  =============  =======================
+symbol  meaning                                            unit           source
+======  =================================================  =============  =======================
+m       effective mass of the follower train               kg             seed 002 Table 1 (tracker)
+k       spring rate ("equivalent rigidity")                N/m            seed 002 Table 1
+Fpl     spring preload at s = 0                            N              seed 002 Table 1
+c       viscous damping coefficient                        N s/m          seed 002 Table 1
+zeta    damping ratio, c = zeta c_c, c_c = 2 sqrt(k m)     -              seed 002 Table 1 ("0.06 c_c")
+s,v,a   follower lift, velocity, acceleration              m, m/s, m/s^2  femcam.kinematics
+phi     pressure angle                                     rad            femcam.profile
+Fc      normal contact force (> 0 pushes)                  N              seed 002 eq. 11
+======  =================================================  =============  =======================
 
 This is the rigid follower (scene ``[dynamics] model = "rigid"``, the default). An elastic
 follower train (one_dof / two_dof, with contact loss and re-impact) is in
@@ -37,6 +37,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import _validate
+from ._repr import compact_repr, span
 from .errors import InputError, LiftOffError
 from .profile import bool_intervals
 
@@ -154,6 +155,14 @@ class LoadResult:
     liftoff_angles: np.ndarray
     liftoff_intervals: list = field(default_factory=list)
 
+    def __repr__(self) -> str:
+        """The angles, the Fc range and the lift-off count (a compact line)."""
+        return compact_repr(self, [
+            f"{self.theta.size} angles",
+            f"Fc {span(self.Fc, 1.0, 'N')}",
+            f"lift-off {int(np.count_nonzero(self.liftoff))}",
+        ])
+
     @property
     def any_liftoff(self) -> bool:
         """True if the follower lifts off at any angle (``Fc <= 0`` somewhere)."""
@@ -179,7 +188,7 @@ def contact_force(dyn: FollowerDynamics, theta, s, v, a, phi, *,
 
     .. math:: F_c = \frac{m a + c v + k s + F_{pl}}{\cos\varphi}
 
-    ``theta`` (rad), ``s`` (m), ``v`` (m/s), ``a`` (m/s^2) and ``phi`` (rad, |phi| < 90 deg)
+    ``theta`` (rad), ``s`` (m), ``v`` (m/s), ``a`` (m/s^2) and ``phi`` (rad, ``|phi|`` < 90 deg)
     broadcast together. Lift-off (``Fc <= 0``) is flagged in the result
     (``on_liftoff="flag"``, the default) or, with ``on_liftoff="raise"``, raises
     :class:`~femcam.errors.LiftOffError` listing the lift-off intervals in degrees and the
@@ -198,7 +207,7 @@ def contact_force(dyn: FollowerDynamics, theta, s, v, a, phi, *,
     a : float or ndarray
         Follower acceleration [m/s^2].
     phi : float or ndarray
-        Pressure angle [rad], |phi| < pi/2.
+        Pressure angle [rad], ``|phi|`` < pi/2.
     on_liftoff : {"flag", "raise"}, optional
         Flag lift-off in the result (default) or raise :class:`~femcam.errors.LiftOffError`.
 
@@ -210,7 +219,7 @@ def contact_force(dyn: FollowerDynamics, theta, s, v, a, phi, *,
     Raises
     ------
     InputError
-        Non-finite input, |phi| >= 90 deg, or shapes that do not broadcast.
+        Non-finite input, ``|phi|`` >= 90 deg, or shapes that do not broadcast.
     LiftOffError
         ``Fc <= 0`` somewhere with ``on_liftoff="raise"``.
 

@@ -170,6 +170,24 @@ def synthesis_result_stub():
     return bare(SynthesisResult)
 
 
+def study_var():
+    from femcam.study import Variable
+
+    return Variable(key="follower.base_radius_mm", values=(10.0, 12.0))
+
+
+def study_options():
+    from femcam.study import EvalOptions
+
+    return EvalOptions(n_angles=72)
+
+
+def StudySpec_(**kwargs):  # noqa: N802 - the class it builds
+    from femcam.study import StudySpec
+
+    return StudySpec(**kwargs)
+
+
 ARR = np.array([1e-3, 2e-3, 3e-3])
 A12 = np.full(12, 1e-4)
 P12 = np.full(12, 1e9)
@@ -388,6 +406,27 @@ CASES: dict[str, Case] = {
     "femcam.optimise.BezierRise": Case(lazy(lambda: dict(degree=9, zero_derivatives=2)),
                                        {"degree": INT_POS, "zero_derivatives": INT_POS}),
     "femcam.optimise.compare_laws": Case(lazy(lambda: dict(scene=scene(), laws=("bezier5",))), {}),
+    # femcam.study
+    "femcam.study.Constraints": Case(kw(phi_limit=0.5, rho_limit=0.0, sf_limit=1.0, lambda_limit=1.0,
+                                        p0_limit=1.5e9, jump_factor=1.0),
+                                     {"phi_limit": POS + (2.0,), "rho_limit": NONNEG, "sf_limit": POS,
+                                      "lambda_limit": opt(POS), "p0_limit": opt(POS), "jump_factor": POS}),
+    "femcam.study.EvalOptions": Case(kw(n_angles=72, jump_factor_hi=2.0),
+                                     {"n_angles": INT_POS + (35.0, 1e9), "jump_factor_hi": POS + (1.0,)}),
+    "femcam.study.FEOptions": Case(kw(top=1, offsets=(0.0, 0.01), a_over_h=10.0, tolerance=2e-3),
+                                   {"top": INT_NONNEG, "offsets": REAL, "a_over_h": POS, "tolerance": POS}),
+    "femcam.study.Variable": Case(kw(key="follower.base_radius_mm", lo=10.0, hi=12.0),
+                                  {"lo": REAL, "hi": REAL}),
+    "femcam.study.StudySpec": Case(lazy(lambda: dict(vary=(study_var(),), lhs=4, seed=0)),
+                                   {"lhs": opt(INT_POS) + (2e6,), "seed": INT_NONNEG}),
+    "femcam.study.parse_vary": Case(kw(text="follower.base_radius_mm=10:12:1"), {}),
+    "femcam.study.evaluate": Case(lazy(lambda: dict(scene=scene(), options=study_options())), {}),
+    "femcam.study.pareto_mask": Case(kw(f1=[3.0, 2.0, 1.0], f2=[1.0, 2.0, 3.0], candidates=[True] * 3),
+                                     {"f1": ("str", "none", "strlist"), "f2": ("str", "none", "strlist")}),
+    "femcam.study.run_study": Case(
+        lazy(lambda: dict(scene=str(EXAMPLES / "seed002_study_model.toml"),
+                          spec=StudySpec_(vary=(study_var(),)))),
+        {"workers": INT_POS, "batch_size": opt(INT_POS)}),
     "femcam.profile.min_base_radius": Case(
         lazy(lambda: dict(kind="roller", program=program(), Rr=0.01, n_theta=360)),
         {"phi_max": POS + (1.6,), "Rr": NONNEG, "e": REAL, "rho_min": NONNEG,
@@ -611,6 +650,7 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.layers.CaseMargin", "femcam.layers.InterfaceStress", "femcam.mesh.BodyLayout",
         "femcam.mesh.BodyMesh", "femcam.mesh.ContactMesh", "femcam.mesh.PhysicalGroup",
         "femcam.optimise.OptimiseResult", "femcam.optimise.StartRecord", "femcam.optimise.FECheck",
+        "femcam.study.StudyResult",
         "femcam.profile.BaseRadiusResult", "femcam.profile.CamProfile", "femcam.scene.Scene",
         "femcam.scene.SceneState", "femcam.sweep.SweepResult",
         "femcam.synthesis.SynthesisResult", "femcam.synthesis.Comparison",
@@ -630,7 +670,9 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.io.atomic_write_bytes", "femcam.io.atomic_write_text", "femcam.io.versions",
         "femcam.io.provenance", "femcam.io.csv_text", "femcam.io.write_csv",
         "femcam.io.read_csv", "femcam.io.write_npz", "femcam.io.write_pvd",
-        "femcam.io.write_vtu", "femcam.io.write_fe_vtu", "femcam.synthesis.write_study_csv")},
+        "femcam.io.write_vtu", "femcam.io.write_fe_vtu", "femcam.synthesis.study_columns",
+        "femcam.io.header_dict", "femcam.io.meta_path", "femcam.io.read_meta", "femcam.io.write_rows",
+        "femcam.io.write_table")},
     "femcam.mesh.mesh_body": "takes an open gmsh session; its numbers are checked by body_layout",
     "femcam.scene.roller_support_problems": "the scene's support check (h4-scene's femcam/scene); the "
                                             "API entry with argument checks is bodies.bearing_problems",

@@ -28,7 +28,9 @@ LAZY_OK = {"gmsh", "pyvista", "matplotlib", "dask",
            "scipy",
            # skfem: ~0.03-0.09 s on top of scipy (0.3-0.6 s alone), but ``import femcam`` stays
            # numpy/scipy only (tests/test_imports.py): loaded when an FE body is assembled
-           "skfem"}
+           "skfem",
+           # pandas: optional (the [test] extra), only the to_dataframe() methods of results use it
+           "pandas"}
 
 
 def layer_order() -> list[str]:

@@ -11,6 +11,7 @@ import pytest
 from femcam.assess import assess, assess_rows
 from femcam.cli import main
 from femcam.errors import InputError, SceneError
+from femcam.io import read_meta
 from femcam.scene import load_scene
 from femcam.scene.digest import physics_parts
 from femcam.viz.html import png_data_uri
@@ -224,8 +225,8 @@ def test_cli_assess_writes_csv_summary_report(tmp_path):
     for col in ("theta_deg", "h_min_um", "lambda", "dT_flash_K", "T_contact_C", "sf_shakedown", "regime",
                 "flags"):
         assert col in names
-    assert head[1].startswith("# femcam assess")
-    data = np.genfromtxt(out / "assessment.csv", delimiter=",", names=True, comments="#", dtype=None,
+    assert read_meta(out / "assessment.csv")["dc:title"].startswith("femcam assess")
+    data = np.genfromtxt(out / "assessment.csv", delimiter=",", names=True, dtype=None,
                          encoding="utf-8")
     assert data.size == 72
     assert "Worst angle per criterion" in (out / "report.md").read_text()

@@ -22,8 +22,11 @@ DYN = str(EX / "seed002_dynamic.toml")
 #: the smallest valid command of each subcommand path (the flag under test is appended)
 BASE = {("run",): ["run", SCENE], ("sweep",): ["sweep", SCENE], ("wear", "map"): ["wear", "map", SCENE],
         ("synth",): ["synth", "--case", "seed003"], ("dynamics",): ["dynamics", DYN],
-        ("assess",): ["assess", SCENE], ("check",): ["check", SCENE], ("init",): ["init"],
-        ("examples",): ["examples", "--list"], ("info",): ["info", "."], ("plot",): ["plot", "."]}
+        ("assess",): ["assess", SCENE],
+        ("optimise",): ["optimise", SCENE, "--vary", "base_radius_mm=15:40", "--no-fe"],
+        ("study",): ["study", SCENE, "--vary", "follower.base_radius_mm=10,12", "--no-plots"],
+        ("check",): ["check", SCENE], ("init",): ["init"], ("examples",): ["examples", "--list"],
+        ("info",): ["info", "."], ("plot",): ["plot", "."]}
 
 
 def _walk(parser, path=()):
@@ -38,6 +41,24 @@ def _walk(parser, path=()):
 
 ACTIONS = list(_walk(build_parser()))
 NUMERIC = [(p, a) for p, a in ACTIONS if isinstance(a, NumberAction)]
+#: every subcommand path that writes an --out directory (the generated cases need its BASE command)
+COMMANDS = sorted({p for p, a in ACTIONS if "--out" in a.option_strings})
+
+
+def _base(path):
+    """The BASE command of ``path``, or a failure naming what to add (not a KeyError)."""
+    if path not in BASE:
+        pytest.fail(f"femcam {' '.join(path)}: no smallest valid command in BASE (tests/test_cli_flags.py); "
+                    "add one so its flags and --out policy are checked")
+    return BASE[path]
+
+
+def test_every_subcommand_has_a_base_command():
+    """A new subcommand is covered by the generated cases without anyone remembering to."""
+    missing = [" ".join(p) for p in COMMANDS if p not in BASE]
+    assert not missing, f"subcommands without a smallest valid command in BASE: {missing}"
+    missing = sorted({p[0] for p in COMMANDS} - set(SCENE_AT) - NO_SCENE)
+    assert not missing, f"subcommands without an entry in SCENE_AT (or NO_SCENE): {missing}"
 
 
 def _one_line(capsys, cmd):
@@ -56,7 +77,7 @@ def test_every_numeric_flag_has_a_range():
     assert bare == [], f"numeric flags without a stated range (use femcam.cli._flags.add_number): {bare}"
     assert len(NUMERIC) >= 15      # the flags known today (run 2, sweep 5, wear 4, synth 5, dynamics 1)
     for p, a in NUMERIC:
-        assert p in BASE, f"{p}: add its smallest valid command to BASE"
+        _base(p)
         assert a.help == argparse.SUPPRESS or "range " in a.help, (p, a.option_strings)
 
 
@@ -70,12 +91,13 @@ def _nonsense(a):
 
 
 CASES = [(p, a.option_strings[-1], v) for p, a in NUMERIC for v in _nonsense(a)]
+PATHS = sorted(set(BASE) | set(COMMANDS))
 
 
 @pytest.mark.parametrize("path, flag, value", CASES, ids=[f"{' '.join(p)} {f}={v}" for p, f, v in CASES])
 def test_numeric_flag_nonsense_is_one_line(path, flag, value, tmp_path, capsys):
     out = tmp_path / "o"
-    assert main([*BASE[path], "--out", str(out), f"{flag}={value}"]) == 1
+    assert main([*_base(path), "--out", str(out), f"{flag}={value}"]) == 1
     err, stdout = _one_line(capsys, path[0])
     assert f"{flag} = " in err
     assert stdout == "" and not out.exists()       # refused before any work
@@ -100,20 +122,20 @@ def test_issue_flag_cases(argv, want, tmp_path, capsys):
     assert want in err
 
 
-@pytest.mark.parametrize("path", list(BASE))
+@pytest.mark.parametrize("path", PATHS)
 def test_empty_out_is_refused(path, capsys):
     """``--out ""`` named the current directory (Path("") is ".")."""
-    assert main([*BASE[path], "--out", ""]) == 1
+    assert main([*_base(path), "--out", ""]) == 1
     err, _ = _one_line(capsys, path[0])
     assert "--out = '': must name a directory" in err
 
 
-@pytest.mark.parametrize("path", list(BASE))
+@pytest.mark.parametrize("path", PATHS)
 def test_non_empty_out_needs_overwrite(path, tmp_path, capsys):
     """One --out policy: a non-empty directory is refused unless --overwrite (run, assess and
     synth overwrote it silently)."""
     (tmp_path / "keep.txt").write_text("x")
-    assert main([*BASE[path], "--out", str(tmp_path)]) == 1
+    assert main([*_base(path), "--out", str(tmp_path)]) == 1
     err, _ = _one_line(capsys, path[0])
     assert "the directory is not empty; pass" in err and "--overwrite" in err
     assert (tmp_path / "keep.txt").read_text() == "x"
@@ -142,7 +164,11 @@ def _huge(tmp_path):
 
 SCENE_AT = {"run": lambda s: ["run", s], "sweep": lambda s: ["sweep", s],
             "wear": lambda s: ["wear", "map", s], "synth": lambda s: ["synth", s],
-            "dynamics": lambda s: ["dynamics", s], "assess": lambda s: ["assess", s]}
+            "dynamics": lambda s: ["dynamics", s], "assess": lambda s: ["assess", s],
+            "optimise": lambda s: ["optimise", s, "--vary", "base_radius_mm=15:40", "--no-fe"],
+            "study": lambda s: ["study", s, "--vary", "follower.base_radius_mm=10,12", "--no-plots"]}
+#: subcommands that read no scene file (none today)
+NO_SCENE: set = set()
 
 
 @pytest.mark.parametrize("cmd", list(SCENE_AT))

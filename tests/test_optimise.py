@@ -18,7 +18,7 @@ import pytest
 
 from femcam.cli import main
 from femcam.errors import InputError
-from femcam.io import read_csv
+from femcam.io import read_csv, read_meta
 from femcam.optimise import BezierRise, Variable, compare_laws, optimise
 from femcam.profile import min_base_radius
 from femcam.scene import load_scene
@@ -140,6 +140,12 @@ def test_cli_optimise_writes_optimum_and_table(tmp_path):
     # the degree-9 family (v = a = 0 at the ends) contains seed 002's degree 5, 7 and 9 laws
     assert all(p0["optimum"] <= p0[k] for k in ("bezier5", "bezier7", "bezier9"))
     assert (out / "optimum.json").is_file()
+    # a plain CSV (pandas reads it as it is) with its provenance in the sidecar JSON
+    pd = pytest.importorskip("pandas", reason="pandas is in femcam's [test] extra")
+    df = pd.read_csv(out / "compare.csv")
+    assert df["law"].tolist() == laws and np.allclose(df["p0_max_MPa"], cols["p0_max_MPa"])
+    meta = read_meta(out / "compare.csv")
+    assert meta["rows"] == len(laws) and "femcam optimise" in meta["provenance"]["command"]
     assert main(["optimise", str(SCENE), "--vary", "base_radius_mm=20:10", "--out", str(out)]) != 0
 
 

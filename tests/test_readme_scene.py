@@ -1,6 +1,6 @@
-"""The README's scene snippet (proposed in docs/readme/13b.md, pasted into README.md) is a
-complete scene that loads, and it is the seed 002 study model of examples/: reference = the
-example file, loaded independently, compared at every whole degree."""
+"""The complete scene printed in the docs (docs/scene.md; the README prints a shorter excerpt) is
+a scene that loads, and it is the seed 002 study model of examples/: reference = the example
+file, loaded independently, compared at every whole degree."""
 
 import re
 from pathlib import Path
@@ -14,11 +14,11 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def _scene_blocks():
-    """```toml blocks with a ``name =`` line (whole scenes) in the README and its proposals."""
+    """```toml blocks that start with a ``name =`` line (whole scenes) in the README and the docs pages."""
     blocks = []
-    for md in [ROOT / "README.md", *sorted((ROOT / "docs" / "readme").glob("13*.md"))]:
+    for md in [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]:
         for b in re.findall(r"```toml\n(.*?)```", md.read_text(encoding="utf-8"), re.S):
-            if re.search(r"^name\s*=", b, re.M):
+            if re.match(r"(\s*#.*\n)*\s*name\s*=", b):  # a whole scene starts with its name
                 blocks.append(pytest.param(b, id=f"{md.name}:{len(blocks)}"))
     return blocks
 

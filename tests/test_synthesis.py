@@ -9,7 +9,6 @@ the leading-order penalty error of a uniformly stretched "membrane" (``penalty_e
 from __future__ import annotations
 
 import csv
-import json
 import math
 import re
 
@@ -18,6 +17,7 @@ import pytest
 from scipy.optimize import brentq
 
 from femcam.errors import ConvergenceError, InputError
+from femcam.io import read_meta, write_table
 from femcam.synthesis import (
     PressureAngleError,
     SynthesisOptions,
@@ -29,9 +29,9 @@ from femcam.synthesis import pefem as P  # noqa: N812
 from femcam.synthesis.study import (
     STUDY_CSV_COLUMNS,
     format_table,
+    study_columns,
     study_k,
     study_k_over_mu,
-    write_study_csv,
 )
 
 H, RB = 3e-3, 5e-3
@@ -377,15 +377,16 @@ def test_format_table_csv_and_plot_with_failed_row(study_rows, tmp_path):
     err_md = [float(line.split("|")[5]) for line in md[2:4]]
     assert err_md == pytest.approx([r.max_error * 1e3 for r in study_rows[0]], rel=1e-3)
 
-    p = write_study_csv(rows, tmp_path / "s.csv", comments=["provenance line"])
-    assert p.read_text().startswith("# provenance line\n")
+    p = write_table(tmp_path / "s.csv", study_columns(rows), {"note": "provenance"}, title="study")
+    assert p.read_text().startswith(",".join(STUDY_CSV_COLUMNS) + "\n")
+    assert read_meta(p)["provenance"] == {"note": "provenance"}
     data = _read_csv(p)
     assert tuple(data[0]) == STUDY_CSV_COLUMNS
     for c in STUDY_CSV_COLUMNS:     # units in the names
         assert c in ("n_elements", "newton_iterations", "converged", "message") or \
             c.rsplit("_", 1)[1] in ("nondim", "mm", "deg", "s"), c
     assert [float(d["k_nondim"]) for d in data] == [1e2, 1e3, 1e4]
-    assert [d["converged"] for d in data] == ["True", "True", "False"]
+    assert [d["converged"] for d in data] == ["1", "1", "0"]
     assert float(data[0]["max_error_mm"]) == pytest.approx(penalty_error_coeff() * 1e3 / 1e2,
                                                            rel=0.06)
     assert math.isnan(float(data[2]["max_error_mm"])) and "did not converge" in data[2]["message"]
@@ -407,7 +408,7 @@ def test_cli_study_writes_md_csv_png(tmp_path):
         assert len(md) == 2 + n and md[0].startswith("| k | mu | k/mu |")
         png = (out / f"{stem}.png").read_bytes()
         assert png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 5000
-        assert (out / f"{stem}.csv").read_text().startswith("# femcam synth study")
+        assert read_meta(out / f"{stem}.csv")["dc:title"].startswith("femcam synth study")
     k = _read_csv(out / "synth_study_k.csv")
     q = _read_csv(out / "synth_study_k_mu.csv")
     assert [float(d["k_nondim"]) for d in k] == [10.0**p for p in range(2, 11)]
@@ -420,7 +421,7 @@ def test_cli_study_writes_md_csv_png(tmp_path):
     for d in k[:7]:
         e = by_q[round(math.log10(float(d["k_nondim"])))]
         assert e["converged"] == d["converged"]
-        if d["converged"] == "True":
+        if d["converged"] == "1":
             for c in ("max_error_mm", "max_node_error_mm", "phi_max_deg"):
                 assert float(e[c]) == pytest.approx(float(d[c]), rel=1e-8), c
 
@@ -434,8 +435,7 @@ def test_cli_base_radius_auto_and_given(tmp_path, capsys):
                  "--base-radius-mm", "auto"]) == 0
     m = re.search(r"Rb = ([\d.]+) mm \(auto: min_base_radius", capsys.readouterr().out)
     assert m and float(m.group(1)) == pytest.approx(Rb30 * 1e3, abs=1e-5)
-    with open(out / "synth_curve.csv") as f:
-        prov = json.loads(f.readlines()[1][2:])
+    prov = read_meta(out / "synth_curve.csv")["provenance"]
     assert prov["options"]["Rb_mm"] == pytest.approx(Rb30 * 1e3, abs=1e-9)
     data = np.array([[float(v) for v in d.values()] for d in _read_csv(out / "synth_curve.csv")])
     s = law345(np.radians(data[:, 0]))[0] * 1e3

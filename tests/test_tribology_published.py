@@ -3,11 +3,12 @@
 No printed line-contact EHL film-thickness worked example and no AGMA 925-A03 annex D (or other
 published Blok flash-temperature) worked example could be retrieved from the stored sources: the
 searches, the closest hits and why they fall short are listed in docs/assess.md ("Validation
-sources") and docs/readme/17.md. This file holds the closest published numerical reference that
-*was* retrievable with its inputs and printed answers: the reduced radius and reduced modulus of
-Stachowiak & Batchelor's EHL-chapter example, i.e. the two inputs of the film formula whose
-conventions (``1/R = 1/R1 + 1/R2``, ``E' = 2 E*``) decide the film thickness (a factor-2 slip in
-``E'`` changes Pan-Hamrock's ``h_c`` by 3.8 % and the dimensionless ``W`` and ``Ud`` by 2).
+sources", "Search record for the two missing worked examples"). This file holds the closest
+published numerical reference that *was* retrievable with its inputs and printed answers: the
+reduced radius and reduced modulus of Stachowiak & Batchelor's EHL-chapter example, i.e. the two
+inputs of the film formula whose conventions (``1/R = 1/R1 + 1/R2``, ``E' = 2 E*``) decide the film
+thickness (a factor-2 slip in ``E'`` changes Pan-Hamrock's ``h_c`` by 3.8 % and the dimensionless
+``W`` and ``Ud`` by 2).
 """
 
 from __future__ import annotations

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from femcam.errors import InputError
+from femcam.io import read_meta
 from femcam.wear import evolution as ev
 from femcam.wear import slip as wslip
 
@@ -189,9 +190,9 @@ def test_cli_evolve_blocks(tmp_path, capsys):
                "--evolve-blocks", "4"])
     assert rc == 0
     rows = (tmp_path / "wear_scene_evolution.csv").read_text().splitlines()
-    assert rows[0].startswith("# femcam wear map")
-    assert rows[1].split(",")[:3] == ["blocks", "block_revolutions", "max_depth_um"]
-    assert [r.split(",")[0] for r in rows[2:]] == ["1", "2", "4"]
+    assert read_meta(tmp_path / "wear_scene_evolution.csv")["dc:title"].startswith("femcam wear map")
+    assert rows[0].split(",")[:3] == ["blocks", "block_revolutions", "max_depth_um"]
+    assert [r.split(",")[0] for r in rows[1:]] == ["1", "2", "4"]
     assert (tmp_path / "wear_scene_evolution.png").stat().st_size > 1000
     assert "evolution" in capsys.readouterr().out
     assert main(["wear", "map", STUDY, "--out", str(tmp_path),

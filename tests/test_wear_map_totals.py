@@ -159,7 +159,7 @@ def test_cli_wear_map_writes_the_coated_totals(tmp_path, capsys):
                  "--no-plots"]) == 0
     capsys.readouterr()
     summ = (out / "wear_summary.csv").read_text().splitlines()
-    vals = dict(zip(summ[1].split(","), summ[2].split(","), strict=True))
+    vals = dict(zip(summ[0].split(","), summ[1].split(","), strict=True))
     S, V_s = None, float(vals["volume_archard_mm3"]) * 1e-9 / N
     surf = [row.split(",") for row in (out / "wear_scene_surface.csv").read_text().splitlines()
             if row[:1].isdigit() or row[:1] == "-"]

@@ -121,7 +121,7 @@ def test_cli_csv_jerk_columns(tmp_path):
     from femcam.cli import main
 
     assert main(["wear", "seed000", "--csv", str(tmp_path / "t.csv")]) == 0
-    lines = (tmp_path / "t.csv").read_text().splitlines()[1:]
+    lines = (tmp_path / "t.csv").read_text().splitlines()
     rows = {r["law"]: r for r in csv.DictReader(lines)}
     assert float(rows["uniform_velocity"]["interior_peak_jerk_mm_s3"]) == 0.0
     assert float(rows["uniform_velocity"]["peak_jerk_with_dwells_mm_s3"]) == math.inf
@@ -141,7 +141,7 @@ def test_cli_all_laws(tmp_path, capsys):
 
     assert main(["wear", "seed000", "--all-laws", "--csv", str(tmp_path / "all.csv")]) == 0
     out = capsys.readouterr().out
-    lines = (tmp_path / "all.csv").read_text().splitlines()[1:]
+    lines = (tmp_path / "all.csv").read_text().splitlines()
     rows = {r["law"]: r for r in csv.DictReader(lines)}
     assert set(rows) == set(ALL_LAWS)
     assert len(ALL_LAWS) == 10

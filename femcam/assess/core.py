@@ -28,6 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr, dataframe
 from ..errors import InputError
 from ..hertz import HertzValidityWarning, LineContact
 from ..profile import RollerFollower
@@ -298,6 +299,29 @@ class Assessment:
     inputs: AssessInputs
     worst: dict
     notes: tuple
+
+    def __repr__(self) -> str:
+        """Scene, angles, the worst angle per criterion and the skipped count (a compact line)."""
+        theta = np.asarray(self.rows.get("theta", ()), float)
+        worst = [f"{c} {v:.4g} at {math.degrees(t):.1f} deg" for c, (v, t, _) in self.worst.items()]
+        return compact_repr(self, [repr(self.scene_name), f"{theta.size} angles", *worst,
+                                   f"{len(self.notes)} criteria skipped"])
+
+    def to_dataframe(self):
+        """The per-angle rows as a ``pandas.DataFrame`` with the columns of ``assessment.csv``
+        (:func:`csv_columns`: names with units, values in those units; text columns as ``str``).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per cam angle.
+
+        Raises
+        ------
+        ImportError
+            pandas is not installed (femcam does not require it).
+        """
+        return dataframe(csv_columns(self.rows), "Assessment.to_dataframe")
 
 
 def column_extreme(values, mask, how: str):

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from .._repr import compact_repr
 from ..errors import InputError, SceneError
 from ..scene.schema import SI_NAMES
 from ..tribology.film import RQ_PER_RA
@@ -58,6 +59,10 @@ class AssessInputs:
     cam: dict
     roller: dict
     skipped: dict = field(default_factory=dict)
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
 
     def has(self, criterion: str) -> bool:
         """Whether ``criterion`` (a key of :data:`CRITERIA`) has its data.

@@ -30,6 +30,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from .. import _validate
+from .._repr import compact_repr
 from ..fe.elasticity import assemble_body
 from .cam_geometry import CamDisk
 from .cam_mesh import mesh_cam_disk
@@ -154,6 +155,10 @@ class CamGlobalModel:
     bore_nodes: np.ndarray
     loads: dict
     cache: dict = dataclasses.field(default_factory=dict)
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
 
     @classmethod
     def build(cls, *, disk: CamDisk, length: float, cam_mesh: CamMeshOptions | None = None,

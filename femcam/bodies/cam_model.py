@@ -29,6 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr
 from ..fe.contact import load_matrix, trapezoid_weights
 from ..fe.elasticity import assemble_body
 from ..fe.model import _radius
@@ -313,6 +314,10 @@ class CamDiskModel:
     loads: dict
     timings: dict
     n_dofs: int
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
 
     @property
     def nc(self) -> int:

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr
 from ..errors import PhysicsError
 from ..fe.recovery import fit_half_width
 from ..hertz.conformity import roller_does_not_fit
@@ -88,6 +89,10 @@ class CamDiskResult:
     iterations: int
     residual: float
     converged: bool
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
 
     @property
     def dp0(self) -> float:

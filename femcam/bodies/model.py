@@ -31,6 +31,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from .. import _validate
+from .._repr import compact_repr
 from .._threads import single_threaded_blas
 from ..fe.contact import load_matrix, trapezoid_weights
 from ..fe.elasticity import CHUNK, assemble_body, stress_operator
@@ -187,6 +188,10 @@ class RingModel:
     loads: dict
     timings: dict
     n_dofs: int
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
 
     @property
     def nc(self) -> int:

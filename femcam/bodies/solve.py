@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr
 from ..errors import ConvergenceError, PhysicsError
 from ..fe.recovery import fit_half_width
 from ..materials import effective_modulus
@@ -102,6 +103,10 @@ class RingResult:
     iterations: int
     residual: float
     converged: bool
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
 
     @property
     def needle_Q_max(self) -> float:

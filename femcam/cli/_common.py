@@ -152,7 +152,7 @@ def cap_workers(requested: int, n_tasks: int, tasks: str) -> tuple:
     return cap, f"--workers {requested} capped at {cap} (the useful number: {cores} CPU cores, {tasks})"
 
 
-def refuse_non_empty(path, overwrite: bool, *, resume: bool | None = None) -> None:
+def refuse_non_empty(path, overwrite: bool, *, resume: bool | None = None, what: str = "sweep") -> None:
     """Refuse a non-empty output directory unless ``--overwrite`` (or ``--resume``) is given:
     the rule of ``femcam sweep``, worded with the flags.
 
@@ -164,6 +164,8 @@ def refuse_non_empty(path, overwrite: bool, *, resume: bool | None = None) -> No
         ``--overwrite`` given.
     resume : bool or None, optional
         ``--resume`` given; None: the command has no ``--resume`` (not offered in the message).
+    what : str
+        What ``--resume`` continues, as the message names it (``"sweep"``, ``"study"``).
 
     Raises
     ------
@@ -173,7 +175,7 @@ def refuse_non_empty(path, overwrite: bool, *, resume: bool | None = None) -> No
     p = Path(path)  # the sweep's lock file (femcam.sweep.store.LOCK) is not content
     if overwrite or resume or not p.is_dir() or not any(q.name != LOCK for q in p.iterdir()):
         return
-    hint = "--resume to continue the sweep in it, --overwrite to replace its results" \
+    hint = f"--resume to continue the {what} in it, --overwrite to replace its results" \
         if resume is not None else "--overwrite to replace its files"
     raise _validate.fail("--out", str(p), "", f"the directory is not empty; pass {hint}, or choose "
                          "another --out")

@@ -1,7 +1,8 @@
 """``femcam assess SCENE.toml --out DIR``: will it fail? Film, flash temperature, yield,
 shakedown, contact fatigue, scuffing and the lubrication regime at every cam angle.
 
-Writes ``DIR/assessment.csv`` (units in the column names, provenance header), ``DIR/summary.json``
+Writes ``DIR/assessment.csv`` (units in the column names; provenance in the sidecar
+``DIR/assessment.csv-metadata.json``), ``DIR/summary.json``
 (worst angle per criterion, skipped criteria, flags), ``DIR/report.md`` (one page with the plots)
 and ``DIR/plots/assess_*.png``. ``--sweep SWEEP_DIR`` takes the angles, the FE ``a``/``p0``, the FE
 ``tau1_max`` and the FE range of ``txz`` over one pass (``txz_range_max``) of a finished sweep
@@ -16,11 +17,9 @@ import math
 import shlex
 import sys
 
-import numpy as np
-
 from .. import _validate
 from ..assess import assess, csv_columns, sweep_table
-from ..io import atomic_write_text, csv_text, provenance
+from ..io import atomic_write_text, provenance, write_table
 from ..scene import load_scene
 from ..viz.assess import plot_assessment, report_markdown
 from ..viz.html import markdown_page
@@ -57,17 +56,6 @@ def _sweep_table(path, scene):
     return {k: z[k] for k in ("theta", "a_fe", "p0_fe", "tau1_max", "txz_range_max") if k in z}
 
 
-def _write_csv(path, cols: dict, header: list[str]) -> None:
-
-
-    names = list(cols)
-    lines = [",".join(names)] + ["# " + h for h in header]
-    arrs = [np.asarray(cols[n]) for n in names]
-    for i in range(len(arrs[0])):
-        lines.append(",".join(f"{a[i]:.8g}" if a.dtype.kind == "f" else csv_text(a[i]) for a in arrs))
-    atomic_write_text(path, "\n".join(lines) + "\n")
-
-
 def _run(args) -> int:
     out_dir(args.out, create=False)  # checked before any work, created below
     scene = load_scene(args.scene)
@@ -77,10 +65,8 @@ def _run(args) -> int:
     res = assess(scene, theta, table=table)
     out = out_dir(args.out)
     prov = provenance(scene_path=args.scene, command=shlex.join(["femcam", "assess", *sys.argv[2:]]))
-    head = ["femcam assess results (units in the column names)", f"scene: {args.scene}",
-            f"command: {prov['command']}", f"date: {prov['date']}",
-            "versions: " + ", ".join(f"{k} {v}" for k, v in prov["versions"].items())]
-    _write_csv(out / "assessment.csv", csv_columns(res.rows), head)
+    write_table(out / "assessment.csv", csv_columns(res.rows), prov,
+                title="femcam assess: one row per cam angle")
     summary = {"scene": scene.name, "n_angles": int(len(theta)),
                "worst": {c: {"value": v, "theta_deg": math.degrees(t)} for c, (v, t, _) in res.worst.items()},
                "skipped": list(res.notes), "provenance": prov}

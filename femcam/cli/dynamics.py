@@ -2,14 +2,14 @@
 
 ``femcam dynamics SCENE.toml --out DIR [--rpm-sweep START:STOP:STEP] [--workers N]`` needs a
 scene with ``[dynamics] model = "one_dof"`` or ``"two_dof"``. It writes ``DIR/dynamics.csv``
-(theta_deg, s_mm, Fc_rigid_N, Fc_N (axial), liftoff, error_um per mass; provenance header)
+(theta_deg, s_mm, Fc_rigid_N, Fc_N (axial), liftoff, error_um per mass; provenance in the sidecar
+``DIR/dynamics.csv-metadata.json``)
 and ``DIR/dynamics_force.png``; with ``--rpm-sweep`` also ``DIR/rpm_sweep.csv``,
 ``DIR/rpm_sweep.png`` and the jump speed within the range (rpm, stop included when on the grid).
 """
 
 from __future__ import annotations
 
-import csv
 import math
 import shlex
 import sys
@@ -17,10 +17,11 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import __version__, _validate
+from .. import _validate
 from ..dynamics import jump_speed, rpm_sweep
 from ..dynamics.jump import MAX_SPEEDS, speeds_problem
 from ..errors import InputError
+from ..io import provenance, write_table
 from ..scene import load_scene
 from ..viz.dynamics import plot_force, plot_rpm_sweep
 from ._common import add_no_plots, add_overwrite, add_scene_out, cap_workers, out_dir, plain, refuse_non_empty
@@ -81,41 +82,22 @@ def _rpm_range(text: str):
     return a + c * np.arange(n)
 
 
-def _header(fh, scene):
-    fh.write(f"# femcam dynamics results (units in the column names), femcam {__version__}\n")
-    fh.write(f"# scene: {scene.source_path}\n# command: femcam {shlex.join(sys.argv[1:])}\n")
+def _prov(scene, **extra):
+    return provenance(scene_path=scene.source_path,
+                      command="femcam " + shlex.join(sys.argv[1:]), **extra)
 
 
 def _write_response(out: Path, scene, r):
-    path = out / "dynamics.csv"
-    with open(path, "w", newline="") as fh:
-        _header(fh, scene)
-        fh.write(f"# model {r.model}, {r.rpm:g} rpm, {r.steps_per_rev} steps/rev, cycles {r.cycles}, "
-                 f"residual {r.residual:.3g}, converged {r.converged}: {r.message}\n")
-        w = csv.writer(fh)
-        w.writerow(["theta_deg", "s_mm", "Fc_rigid_N", "Fc_N", "liftoff"]
-                   + [f"error_mass{i + 1}_um" for i in range(r.e.shape[1])])
-        for i in range(r.theta.size - 1):
-            w.writerow([f"{math.degrees(r.theta[i]):.6g}", f"{r.s[i] * 1e3:.9g}",
-                        f"{r.Fc_rigid_axial[i]:.9g}", f"{r.Fc_axial[i]:.9g}", int(not r.contact[i])]
-                       + [f"{x * 1e6:.6g}" for x in r.e[i]])
-    return path
+    prov = _prov(scene, model=r.model, rpm=float(r.rpm), steps_per_rev=int(r.steps_per_rev),
+                 cycles=int(r.cycles), residual=float(r.residual), converged=bool(r.converged),
+                 message=r.message)
+    return write_table(out / "dynamics.csv", r.csv_columns(), prov,
+                       title="femcam dynamics: periodic response, one row per cam angle")
 
 
 def _write_sweep(out: Path, scene, sw):
-    path = out / "rpm_sweep.csv"
-    with open(path, "w", newline="") as fh:
-        _header(fh, scene)
-        w = csv.writer(fh)
-        w.writerow(["rpm", "Fc_max_N", "Fc_min_N", "Fc_rigid_max_N", "Fc_rigid_min_N", "liftoff",
-                    "converged", "cycles", "residual", "max_error_um", "dwell_vibration_um", "message"])
-        for i, rpm in enumerate(sw.rpm):
-            w.writerow([f"{rpm:g}", f"{sw.Fc_max[i]:.6g}", f"{sw.Fc_min[i]:.6g}",
-                        f"{sw.Fc_rigid_max[i]:.6g}", f"{sw.Fc_rigid_min[i]:.6g}", int(sw.liftoff[i]),
-                        int(sw.converged[i]), int(sw.cycles[i]), f"{sw.residual[i]:.3g}",
-                        f"{sw.max_error[i] * 1e6:.6g}", f"{sw.dwell_vibration[i] * 1e6:.6g}",
-                        sw.messages[i]])
-    return path
+    return write_table(out / "rpm_sweep.csv", sw.csv_columns(), _prov(scene),
+                       title="femcam dynamics --rpm-sweep: one row per cam speed")
 
 
 def run(args) -> int:

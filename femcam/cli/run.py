@@ -2,13 +2,13 @@
 
 Prints the cam program with its junction report, a table of s, v, a, j, phi, rho and Fc
 against cam angle, and a summary (max phi, min rho, max Fc, lift-off intervals). Writes
-``DIR/analytic.csv`` (every angle; units in the column names; provenance header),
+``DIR/analytic.csv`` (every angle; units in the column names; provenance in
+``DIR/analytic.csv-metadata.json``),
 ``DIR/summary.txt`` and, unless ``--no-plots``, PNG plots ``DIR/{svaj,phi,rho,fc,cam}.png``.
 """
 
 from __future__ import annotations
 
-import csv
 import math
 import shlex
 import sys
@@ -16,7 +16,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import __version__, _validate
+from .. import _validate
+from ..io import provenance, write_table
 from ..scene import load_scene
 from ..sweep.result import COLUMNS as SWEEP_COLUMNS
 from ..viz.analytic import plot_all
@@ -151,37 +152,32 @@ def _table(st, every_deg: float) -> str:
 
 
 def write_csv(path, scene, st, command: str) -> Path:
-    """Write the analytic chain at all angles as CSV (:data:`COLUMNS`, units in the names).
+    """Write the analytic chain at all angles as CSV (:data:`COLUMNS`, units in the names) and
+    its sidecar JSON (:func:`femcam.io.write_table`).
 
     Parameters
     ----------
     path : str or os.PathLike
         Output file.
     scene : femcam.scene.Scene
-        The scene (provenance header: file, name, rpm, follower).
+        The scene (provenance: file, name, rpm, follower).
     st : femcam.scene.SceneState
         The chain (SI, rad; converted to the column units).
     command : str
-        The command line, written in the ``#`` provenance header.
+        The command line, written in the sidecar JSON's provenance.
 
     Returns
     -------
     pathlib.Path
         The path written.
     """
-    path = Path(path)
-    cols = [(n, np.asarray(getattr(st, a), float) * f) for n, a, f in COLUMNS]
-    with open(path, "w", newline="") as fh:
-        fh.write(f"# femcam {__version__} analytic chain (units in the column names)\n")
-        fh.write(f"# scene: {scene.source_path} ({scene.name})\n")
-        fh.write(f"# command: {command}\n")
-        fh.write(f"# omega = {scene.omega:.9g} rad/s ({scene.rpm:.6g} rpm); follower {scene.follower!r}\n")
-        w = csv.writer(fh)
-        w.writerow([n for n, _ in cols])
-        for i in range(st.theta.size):
-            w.writerow([f"{c[i]:.10g}" if n not in ("liftoff", "undercut") else int(c[i])
-                        for n, c in cols])
-    return path
+    cols = {n: np.asarray(getattr(st, a), float) * f for n, a, f in COLUMNS}
+    cols["liftoff"] = cols["liftoff"].astype(int)
+    cols["undercut"] = cols["undercut"].astype(int)
+    prov = provenance(scene_path=scene.source_path, command=command, scene_name=scene.name,
+                      omega_rad_s=float(scene.omega), rpm=float(scene.rpm),
+                      follower=repr(scene.follower))
+    return write_table(path, cols, prov, title="femcam run: the analytic chain, one row per cam angle")
 
 
 def _run(args) -> int:

@@ -2,7 +2,8 @@
 
 ``femcam synth [SCENE.toml | --case seed003] --out DIR [--elements N] [--k K] [--mu MU]
 [--base-radius-mm auto|RB_MM] [--max-iter N] [--study]`` writes ``DIR/synth_curve.csv``
-(theta_deg, r_mm, x_mm, y_mm, error_mm, phi_deg, phi_exact_deg; provenance header),
+(theta_deg, r_mm, x_mm, y_mm, error_mm, phi_deg, phi_exact_deg; provenance in
+``DIR/synth_curve.csv-metadata.json``),
 ``DIR/synth_curve.png``, ``DIR/synth_error_phi.png`` and, with ``--study``,
 ``DIR/synth_study_k.{md,csv,png}`` and ``DIR/synth_study_k_mu.{md,csv,png}``.
 
@@ -14,11 +15,11 @@ ends with the last residuals of the history.
 
 from __future__ import annotations
 
-import csv
-import json
 import math
 import shlex
 import sys
+
+import numpy as np
 
 from .. import io
 from ..errors import ConvergenceError, InputError
@@ -31,9 +32,9 @@ from ..synthesis.study import (
     SEED003_RB,
     format_table,
     seed003_program,
+    study_columns,
     study_k,
     study_k_over_mu,
-    write_study_csv,
 )
 from ..viz import synthesis as vz
 from ._common import add_overwrite, out_dir, plain, refuse_non_empty
@@ -158,15 +159,12 @@ def run(args) -> int:
                          options={"n_elements": opt.n_elements, "k": opt.k, "mu": opt.mu,
                                   "max_iter": opt.max_iter, "Rb_mm": Rb * 1e3,
                                   "Rb_source": rb_source})
-    with open(out / "synth_curve.csv", "w", newline="") as f:
-        f.write(f"# femcam synth (seed 003 potential-energy FE), case {name}\n")
-        f.write("# " + json.dumps(prov, sort_keys=True) + "\n")
-        w = csv.writer(f, lineterminator="\n")
-        w.writerow(["theta_deg", "r_mm", "x_mm", "y_mm", "error_mm", "phi_deg", "phi_exact_deg"])
-        for row in zip(res.theta, res.r, res.x, res.y, res.error, res.phi, res.phi_exact,
-                       strict=True):
-            w.writerow([f"{math.degrees(row[0]):.10g}", *(f"{v * 1e3:.10g}" for v in row[1:5]),
-                        f"{math.degrees(row[5]):.10g}", f"{math.degrees(row[6]):.10g}"])
+    io.write_table(out / "synth_curve.csv",
+                   {"theta_deg": np.degrees(res.theta), "r_mm": res.r * 1e3, "x_mm": res.x * 1e3,
+                    "y_mm": res.y * 1e3, "error_mm": res.error * 1e3,
+                    "phi_deg": np.degrees(res.phi), "phi_exact_deg": np.degrees(res.phi_exact)},
+                   dict(prov, case=name),
+                   title="femcam synth (seed 003 potential-energy FE): the synthesised cam curve")
     vz.plot_curve(res, out / "synth_curve.png", direct_r=res.Rb + (res.r - res.Rb - res.error))
     vz.plot_error_phi(res, out / "synth_error_phi.png")
     print(f"femcam synth: {name}, Rb = {Rb * 1e3:.6g} mm ({rb_source}), {opt.n_elements} "
@@ -183,12 +181,11 @@ def run(args) -> int:
                                 options=opt)
         (out / "synth_study_k.md").write_text(format_table(rows) + "\n")
         (out / "synth_study_k_mu.md").write_text(format_table(rows2) + "\n")
-        head = [f"femcam synth study (seed 003), case {name}, Rb = {Rb * 1e3:.6g} mm",
-                json.dumps(prov, sort_keys=True)]
-        write_study_csv(rows, out / "synth_study_k.csv",
-                        comments=[head[0] + ", mu = 1, k varied", head[1]])
-        write_study_csv(rows2, out / "synth_study_k_mu.csv",
-                        comments=[head[0] + ", k = 1e6, mu = k/(k/mu)", head[1]])
+        title = f"femcam synth study (seed 003), case {name}, Rb = {Rb * 1e3:.6g} mm"
+        io.write_table(out / "synth_study_k.csv", study_columns(rows), dict(prov, case=name),
+                       title=title + ", mu = 1, k varied")
+        io.write_table(out / "synth_study_k_mu.csv", study_columns(rows2), dict(prov, case=name),
+                       title=title + ", k = 1e6, mu = k/(k/mu)")
         vz.plot_study(rows, out / "synth_study_k.png", x="k")
         vz.plot_study(rows2, out / "synth_study_k_mu.png", x="k/mu")
         print(format_table(rows))

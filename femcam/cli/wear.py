@@ -20,7 +20,6 @@ cam's ``hardness_MPa``) or ``k_mm3_per_N_m``; ``roller_model = "srr"|"inertia"``
 
 from __future__ import annotations
 
-import csv
 import dataclasses
 import math
 import shlex
@@ -33,6 +32,7 @@ from .. import _validate
 from ..assess import wear_factor
 from ..errors import InputError
 from ..halfspace.rows import has_finite_length
+from ..io import provenance, write_rows, write_table
 from ..kinematics import LAW_NAMES
 from ..profile import FlatFacedFollower, KnifeEdgeFollower, RollerFollower
 from ..scene import load_scene
@@ -115,11 +115,8 @@ def _seed000(args) -> int:
         header, rows = table_rows_for_csv(t)
         path = Path(args.csv)
         out_dir(path.parent, "--csv (its directory)")
-        with path.open("w", newline="") as fh:
-            fh.write(f"# femcam wear seed000; command: {shlex.join(sys.argv)}\n")
-            w = csv.writer(fh)
-            w.writerow(header)
-            w.writerows(rows)
+        write_rows(path, header, rows, provenance(command=shlex.join(sys.argv)),
+                   title="femcam wear seed000: seed 000's Table 3 recomputed, one row per law")
         print(f"\nwrote {path}")
     return 0
 
@@ -166,7 +163,9 @@ def _map(args) -> int:
     k, k_where = wear_coefficient_info(scene)
     print(describe_k(k, k_where))
     out = out_dir(args.out)
-    head = f"# femcam wear map; scene: {args.scene}; command: {shlex.join(sys.argv)}\n"
+    head = provenance(scene_path=args.scene, command=shlex.join(sys.argv), cycles=cycles,
+                      source=args.source, wear_coefficient=describe_k(k, k_where),
+                      k_m3_per_N_m=float(k))
     results = {}
     for name in laws:
         sc = scene.with_law(name) if name else scene
@@ -206,48 +205,37 @@ def _fe_scene(scene, tip):
 
 def _write_angle_csv(path, head, theta, cycles, wm, st, slip) -> None:
     """Per cam angle: lift, force, slip, arc, depth per pass / revolution / ``cycles``."""
-    with path.open("w", newline="") as fh:
-        fh.write(head)
-        w = csv.writer(fh)
-        w.writerow(["theta_deg", "s_mm", "Fc_N", "v_slip_m_s", "V_cam_m_s", "arc_mm",
-                    "depth_pass_closed_nm", "depth_per_rev_nm", f"depth_{cycles:g}_cycles_um"])
-        # depth after ``cycles`` at the contact point of each angle (coating included)
-        total = np.interp(wm.xi_cam, wm.x_cam, wm.depth_cam_total, period=wm.perimeter)
-        for i in range(theta.size):
-            w.writerow([f"{math.degrees(theta[i]):.4f}", f"{st.s[i] * 1e3:.6g}", f"{st.Fc[i]:.6g}",
-                        f"{slip.v_slip[i]:.6g}", f"{slip.V_cam[i]:.6g}", f"{wm.xi_cam[i] * 1e3:.6g}",
-                        f"{wm.depth_pass[i] * 1e9:.6g}", f"{wm.depth_at_theta[i] * 1e9:.6g}",
-                        f"{total[i] * 1e6:.6g}"])
+    # depth after ``cycles`` at the contact point of each angle (coating included)
+    total = np.interp(wm.xi_cam, wm.x_cam, wm.depth_cam_total, period=wm.perimeter)
+    cols = {"theta_deg": np.degrees(theta), "s_mm": np.asarray(st.s) * 1e3, "Fc_N": st.Fc,
+            "v_slip_m_s": slip.v_slip, "V_cam_m_s": slip.V_cam, "arc_mm": wm.xi_cam * 1e3,
+            "depth_pass_closed_nm": wm.depth_pass * 1e9, "depth_per_rev_nm": wm.depth_at_theta * 1e9,
+            f"depth_{cycles:g}_cycles_um": total * 1e6}
+    write_table(path, cols, head, title="femcam wear map: one row per cam angle")
 
 
 def _write_surface_csv(path, head, cycles, wm) -> None:
     """Depth on the cam arc-length grid."""
-    with path.open("w", newline="") as fh:
-        fh.write(head)
-        w = csv.writer(fh)
-        w.writerow(["arc_mm", "depth_per_rev_nm", f"depth_{cycles:g}_cycles_um"])
-        for x, h, hN in zip(wm.x_cam, wm.depth_cam, wm.depth_cam_total, strict=True):
-            w.writerow([f"{x * 1e3:.6g}", f"{h * 1e9:.6g}", f"{hN * 1e6:.6g}"])
+    cols = {"arc_mm": wm.x_cam * 1e3, "depth_per_rev_nm": wm.depth_cam * 1e9,
+            f"depth_{cycles:g}_cycles_um": wm.depth_cam_total * 1e6}
+    write_table(path, cols, head, title="femcam wear map: depth along the cam surface")
 
 
 def _write_follower_csv(path, head, cycles, wm, slip, scene) -> None:
     """Depth on the follower surface grid (with the roller's drift per revolution)."""
     col, words, _short = _follower_coordinate(scene)
-    with path.open("w", newline="") as fh:
-        fh.write(head)
-        drift = ""
-        if wm.follower_period is not None:
-            drift = (f"; the contact advances {wm.follower_drift * 1e3:.6g} mm of the "
-                     f"{wm.follower_period * 1e3:.6g} mm roller circumference per cam revolution: "
-                     f"depth_{cycles:g}_cycles sums the revolutions with that drift, "
-                     f"depth_{cycles:g}_cycles_no_drift is {cycles:g} x depth_per_rev "
-                     "(phase-locked bound)")
-        fh.write(f"# {col}: {words}; {slip.model}{drift}\n")
-        w = csv.writer(fh)
-        w.writerow([col, "depth_per_rev_nm", f"depth_{cycles:g}_cycles_um",
-                    f"depth_{cycles:g}_cycles_no_drift_um"])
-        for x, h, hN in zip(wm.x_follower, wm.depth_follower, wm.depth_follower_total, strict=True):
-            w.writerow([f"{x * 1e3:.6g}", f"{h * 1e9:.6g}", f"{hN * 1e6:.6g}", f"{h * cycles * 1e6:.6g}"])
+    note = f"{col}: {words}; {slip.model}"
+    if wm.follower_period is not None:
+        note += (f"; the contact advances {wm.follower_drift * 1e3:.6g} mm of the "
+                 f"{wm.follower_period * 1e3:.6g} mm roller circumference per cam revolution: "
+                 f"depth_{cycles:g}_cycles sums the revolutions with that drift, "
+                 f"depth_{cycles:g}_cycles_no_drift is {cycles:g} x depth_per_rev "
+                 "(phase-locked bound)")
+    cols = {col: wm.x_follower * 1e3, "depth_per_rev_nm": wm.depth_follower * 1e9,
+            f"depth_{cycles:g}_cycles_um": wm.depth_follower_total * 1e6,
+            f"depth_{cycles:g}_cycles_no_drift_um": wm.depth_follower * cycles * 1e6}
+    write_table(path, cols, dict(head, columns_note=note),
+                title="femcam wear map: depth on the follower surface")
 
 
 def scene_law_label(scene) -> str:
@@ -271,32 +259,32 @@ def scene_law_label(scene) -> str:
 def _write_summary(path, head, cycles, k, k_where, results, source, scene_law="scene") -> None:
     """One row per law (CSV) and the printed table; the scene's own law (file label ``scene``)
     is shown as ``scene_law``."""
-    with path.open("w", newline="") as fh:
-        fh.write(f"{head.rstrip()}; {describe_k(k, k_where)}\n")
-        w = csv.writer(fh)
-        w.writerow(["law", "cycles", "max_depth_um", "theta_at_max_deg", "arc_at_max_mm", "volume_cam_mm3",
-                    "volume_follower_mm3", "volume_archard_mm3", "conservation_error",
-                    "max_depth_follower_um", "follower_x_at_max_mm", "max_depth_follower_no_drift_um",
-                    "follower_drift_mm_per_rev", "load_error", "skipped_angles_deg", "k_m3_per_N_m",
-                    "pressure", "slip_model"])
-        print(f"{'law':<20}{'max depth um':>14}{'at theta deg':>14}{'arc mm':>9}{'V cam mm^3':>13}"
-              f"{'follower um':>13}{'at mm':>9}  (after {cycles:g} revolutions)")
-        for key, (wm, _st, slip) in results.items():
-            label = scene_law if key == "scene" else key
-            skipped = " ".join(f"{math.degrees(wm.theta[i]):g}" for i in wm.skipped)
-            w.writerow([label, f"{cycles:g}", f"{wm.max_depth * 1e6:.6g}",
-                        f"{math.degrees(wm.theta_max):.3f}",
-                        f"{wm.x_max * 1e3:.5g}", f"{wm.volume_cam_total * 1e9:.6g}",
-                        f"{wm.volume_follower_total * 1e9:.6g}", f"{wm.volume_archard * cycles * 1e9:.6g}",
-                        f"{wm.conservation_error:.2e}", f"{wm.max_depth_follower * 1e6:.6g}",
-                        f"{wm.x_max_follower * 1e3:.5g}", f"{wm.max_depth_follower_locked * 1e6:.6g}",
-                        f"{wm.follower_drift * 1e3:.6g}", f"{wm.load_error:.2e}", skipped, f"{wm.k:.6g}",
-                        source, slip.model])
-            print(f"{label:<20}{wm.max_depth * 1e6:>14.4g}{math.degrees(wm.theta_max):>14.2f}"
-                  f"{wm.x_max * 1e3:>9.3f}{wm.volume_cam_total * 1e9:>13.4g}"
-                  f"{wm.max_depth_follower * 1e6:>13.4g}{wm.x_max_follower * 1e3:>9.3f}")
-            if wm.skipped:
-                print(f"  {label}: skipped {len(wm.skipped)} angle(s) with a failed FE solve: {skipped} deg")
+    rows = []
+    header = ["law", "cycles", "max_depth_um", "theta_at_max_deg", "arc_at_max_mm", "volume_cam_mm3",
+                "volume_follower_mm3", "volume_archard_mm3", "conservation_error",
+                "max_depth_follower_um", "follower_x_at_max_mm", "max_depth_follower_no_drift_um",
+                "follower_drift_mm_per_rev", "load_error", "skipped_angles_deg", "k_m3_per_N_m",
+                "pressure", "slip_model"]
+    print(f"{'law':<20}{'max depth um':>14}{'at theta deg':>14}{'arc mm':>9}{'V cam mm^3':>13}"
+          f"{'follower um':>13}{'at mm':>9}  (after {cycles:g} revolutions)")
+    for key, (wm, _st, slip) in results.items():
+        label = scene_law if key == "scene" else key
+        skipped = " ".join(f"{math.degrees(wm.theta[i]):g}" for i in wm.skipped)
+        rows.append([label, f"{cycles:g}", f"{wm.max_depth * 1e6:.6g}",
+                    f"{math.degrees(wm.theta_max):.3f}",
+                    f"{wm.x_max * 1e3:.5g}", f"{wm.volume_cam_total * 1e9:.6g}",
+                    f"{wm.volume_follower_total * 1e9:.6g}", f"{wm.volume_archard * cycles * 1e9:.6g}",
+                    f"{wm.conservation_error:.2e}", f"{wm.max_depth_follower * 1e6:.6g}",
+                    f"{wm.x_max_follower * 1e3:.5g}", f"{wm.max_depth_follower_locked * 1e6:.6g}",
+                    f"{wm.follower_drift * 1e3:.6g}", f"{wm.load_error:.2e}", skipped, f"{wm.k:.6g}",
+                    source, slip.model])
+        print(f"{label:<20}{wm.max_depth * 1e6:>14.4g}{math.degrees(wm.theta_max):>14.2f}"
+              f"{wm.x_max * 1e3:>9.3f}{wm.volume_cam_total * 1e9:>13.4g}"
+              f"{wm.max_depth_follower * 1e6:>13.4g}{wm.x_max_follower * 1e3:>9.3f}")
+        if wm.skipped:
+            print(f"  {label}: skipped {len(wm.skipped)} angle(s) with a failed FE solve: {skipped} deg")
+    write_rows(path, header, rows, head, title="femcam wear map: one row per motion law",
+               text=("law", "skipped_angles_deg", "pressure", "slip_model"))
 
 
 def _plots(scene, results, out) -> None:
@@ -316,13 +304,10 @@ def _evolution(scene, label, theta, cycles, args, out, head) -> None:
     ct = convergence_table(evolution_case(scene, theta), cycles, args.evolve_blocks)
     header, rows = ct.rows()
     fin = ct.finest
-    with (out / f"wear_{label}_evolution.csv").open("w", newline="") as fh:
-        fh.write(f"{head.rstrip()}; profile evolution in blocks (explicit Euler), {cycles:g} revolutions, "
-                 f"linear max depth {ct.linear_max_depth * 1e6:.10g} um, largest Hertz a/R "
-                 f"{fin.a_over_R_max:.3g}\n")
-        w = csv.writer(fh)
-        w.writerow(header)
-        w.writerows(rows)
+    write_rows(out / f"wear_{label}_evolution.csv", header, rows,
+               dict(head, evolution="profile evolution in blocks (explicit Euler)",
+                    linear_max_depth_um=ct.linear_max_depth * 1e6, a_over_R_max=fin.a_over_R_max),
+               title="femcam wear map --evolve-blocks: convergence, one row per block count")
     print(f"{label}: profile evolution over {cycles:g} revolutions (max cam depth, um; difference to "
           f"{ct.blocks[-1]} blocks, nm; observed order)")
     for r in rows:

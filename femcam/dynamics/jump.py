@@ -33,6 +33,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr, dataframe, span
 from ..errors import InputError
 from ..kinematics import CamProgram
 from .model import TrainModel
@@ -85,6 +86,11 @@ class JumpResult:
     xtol_rpm: float
     steps_per_rev: int
     message: str = ""
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
+
 
 
 def _first_root(fun, x, y, xtol):
@@ -213,6 +219,47 @@ class RpmSweep:
     max_error: np.ndarray
     dwell_vibration: np.ndarray
     messages: list = field(default_factory=list)
+
+    def csv_columns(self) -> dict:
+        """One row per speed, as the columns of ``rpm_sweep.csv`` (forces in N, ``max_error_um``
+        and ``dwell_vibration_um`` in um, flags as bool, the solver's message as text).
+
+        Returns
+        -------
+        dict[str, ndarray]
+            Column name (unit in the name) -> values, shape (n_speeds,).
+        """
+        return {"rpm": np.asarray(self.rpm, float), "Fc_max_N": self.Fc_max, "Fc_min_N": self.Fc_min,
+                "Fc_rigid_max_N": self.Fc_rigid_max, "Fc_rigid_min_N": self.Fc_rigid_min,
+                "liftoff": np.asarray(self.liftoff, bool), "converged": np.asarray(self.converged, bool),
+                "cycles": np.asarray(self.cycles, int), "residual": np.asarray(self.residual, float),
+                "max_error_um": np.asarray(self.max_error) * 1e6,
+                "dwell_vibration_um": np.asarray(self.dwell_vibration) * 1e6,
+                "message": np.asarray(self.messages, dtype=str)}
+
+    def to_dataframe(self):
+        """:meth:`csv_columns` as a ``pandas.DataFrame`` (one row per speed).
+
+        Returns
+        -------
+        pandas.DataFrame
+
+        Raises
+        ------
+        ImportError
+            pandas is not installed (femcam does not require it).
+        """
+        return dataframe(self.csv_columns(), "RpmSweep.to_dataframe")
+
+    def __repr__(self) -> str:
+        """The speeds and the lift-off count (a compact line)."""
+        return compact_repr(self, [
+            f"{np.size(self.rpm)} speeds {span(self.rpm, 1.0, 'rpm')}",
+            f"Fc {span(self.Fc_min, 1.0, 'N')} (min)",
+            f"lift-off at {int(np.count_nonzero(self.liftoff))} speeds",
+            f"converged {int(np.count_nonzero(self.converged))}/{np.size(self.rpm)}",
+        ])
+
 
 
 _KEYS = ("Fc_max", "Fc_min", "Fc_rigid_max", "Fc_rigid_min", "liftoff", "converged", "cycles",

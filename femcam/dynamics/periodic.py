@@ -35,6 +35,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr, dataframe, span
 from ..errors import InputError
 from ..kinematics import CamProgram
 from ..loads import LoadResult
@@ -123,6 +124,48 @@ class DynamicsResult:
     message: str = ""
     params: dict = field(default_factory=dict)
 
+    def csv_columns(self) -> dict:
+        """The response per time step of one revolution as the columns of ``dynamics.csv``:
+        ``theta_deg``, ``s_mm``, ``Fc_rigid_N``, ``Fc_N`` (axial), ``liftoff`` (bool) and
+        ``error_mass<i>_um`` (``x_i - s``) per mass; the closing step (theta = 2 pi) is left out.
+
+        Returns
+        -------
+        dict[str, ndarray]
+            Column name (unit in the name) -> values, shape (steps_per_rev,).
+        """
+        n = self.theta.size - 1
+        cols = {"theta_deg": np.degrees(self.theta[:n]), "s_mm": self.s[:n] * 1e3,
+                "Fc_rigid_N": self.Fc_rigid_axial[:n], "Fc_N": self.Fc_axial[:n],
+                "liftoff": ~np.asarray(self.contact[:n], bool)}
+        cols.update({f"error_mass{i + 1}_um": self.e[:n, i] * 1e6 for i in range(self.e.shape[1])})
+        return cols
+
+    def to_dataframe(self):
+        """:meth:`csv_columns` as a ``pandas.DataFrame`` (one row per time step).
+
+        Returns
+        -------
+        pandas.DataFrame
+
+        Raises
+        ------
+        ImportError
+            pandas is not installed (femcam does not require it).
+        """
+        return dataframe(self.csv_columns(), "DynamicsResult.to_dataframe")
+
+    def __repr__(self) -> str:
+        """Model, speed, convergence and the Fc range (a compact line)."""
+        return compact_repr(self, [
+            self.model,
+            f"{self.omega * 30 / np.pi:.6g} rpm",
+            f"{self.steps_per_rev} steps/rev",
+            f"Fc {span(self.Fc_axial, 1.0, 'N')}",
+            f"converged {self.converged}",
+            f"lift-off {int(np.count_nonzero(~np.asarray(self.contact, bool)))} steps",
+        ])
+
     @property
     def rpm(self) -> float:
         """Cam speed (rpm)."""
@@ -155,7 +198,7 @@ class DynamicsResult:
 
     @property
     def max_error(self) -> float:
-        """Largest |x - s| of the last mass (m): the displacement error against the rigid lift."""
+        """Largest ``|x - s|`` of the last mass (m): the displacement error against the rigid lift."""
         return float(np.max(np.abs(self.e[:, -1])))
 
     @property

@@ -29,6 +29,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from .. import _validate
+from .._repr import compact_repr
 from .._threads import single_threaded_blas
 from ..errors import PhysicsError
 from ..hertz.conformity import roller_does_not_fit
@@ -233,6 +234,10 @@ class ContactModel:
     #: per-body full-field stress operators, built on the first :meth:`full_field` (they were
     #: rebuilt for every written .vtu: 1.44 s -> 0.41 s CPU for the 36 files of README command 1)
     _field_ops: dict = field(default_factory=dict, repr=False)
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
 
     @classmethod
     def build(cls, *, Rr: float, rho_ref: float, cam: Material, roller: Material, length: float,

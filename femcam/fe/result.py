@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr
 from .export import write_vtu
 from .passrange import ShearRange, pass_shear_range
 from .recovery import derived
@@ -96,6 +97,11 @@ class SurfaceStress:
     txz: np.ndarray
     sy: np.ndarray
     body: str
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
+
 
 
 @dataclass(frozen=True, eq=False)
@@ -223,6 +229,21 @@ class ContactResult:
     sx = _cam_surface("sx")
     sz = _cam_surface("sz")
     txz = _cam_surface("txz")
+
+    def __repr__(self) -> str:
+        """Load, p0, a, convergence and size of the solve (a compact line)."""
+        return compact_repr(self, [
+            f"F {self.F:.6g} N",
+            f"rho {self.rho * 1e3:.6g} mm",
+            f"mu {self.mu:g}",
+            f"p0 {self.p0 * 1e-6:.6g} MPa",
+            f"a {self.a * 1e6:.5g} um",
+            f"p0 Hertz {self.hertz_p0 * 1e-6:.6g} MPa",
+            f"force error {self.force_error:.2e}",
+            f"converged {self.converged} in {self.iterations} iterations",
+            f"{self.n_dofs} dofs",
+            f"slip {self.slip_state}",
+        ])
 
     def __getstate__(self):
         # a pickled result is independent of its model (the factorisation is large and bound

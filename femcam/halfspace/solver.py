@@ -30,6 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr
 from .influence import dcfft_kernel
 
 
@@ -78,6 +79,11 @@ class ContactSolution:
     converged: bool
     history: np.ndarray = field(repr=False)
     message: str = ""
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
+
 
 
 class HalfSpace:

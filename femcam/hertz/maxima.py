@@ -37,6 +37,7 @@ from functools import lru_cache
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr
 from ..materials import PLANES
 from .subsurface import StressField, _unit_stresses
 
@@ -102,6 +103,11 @@ class ScaledMaximum:
     x: object
     z: object
     unit: StressMaximum
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
+
 
 
 def _measure(quantity, X, Z, mu, nu, plane):

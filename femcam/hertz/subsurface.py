@@ -49,6 +49,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr
 from ..materials import PLANES
 
 
@@ -160,6 +161,10 @@ class StressField:
     sz: np.ndarray
     txz: np.ndarray
     sy: np.ndarray
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
 
     @property
     def tau1(self):

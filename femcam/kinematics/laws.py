@@ -273,17 +273,17 @@ class MotionLaw:
 
     @cached_property
     def Cv(self) -> float:
-        """Peak |ds/du| on [0, 1]."""
+        """Peak ``|ds/du|`` on [0, 1]."""
         return self._peak(1)
 
     @cached_property
     def Ca(self) -> float:
-        """Peak |d^2 s/du^2| on [0, 1] (delta functions at the ends are *not* included)."""
+        """Peak ``|d^2 s/du^2|`` on [0, 1] (delta functions at the ends are *not* included)."""
         return self._peak(2)
 
     @cached_property
     def Cj(self) -> float:
-        """Peak |d^3 s/du^3| on [0, 1] (delta functions at the ends are *not* included)."""
+        """Peak ``|d^3 s/du^3|`` on [0, 1] (delta functions at the ends are *not* included)."""
         return self._peak(3)
 
     @cached_property

@@ -42,6 +42,7 @@ from math import degrees, pi
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr
 from ..errors import InputError
 from .laws import MotionLaw, law
 
@@ -217,6 +218,10 @@ class Derivatives:
     s2: np.ndarray
     s3: np.ndarray
 
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
+
     def __getitem__(self, key):
         return getattr(self, key)
 
@@ -249,6 +254,10 @@ class SVAJ:
     a: np.ndarray
     j: np.ndarray
     omega: float = float("nan")
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
 
     def __getitem__(self, key):
         return getattr(self, key)

@@ -34,6 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr
 
 CASE_LAWS = ("exponential", "linear")
 #: 1 HV (kgf/mm^2) in Pa
@@ -202,6 +203,11 @@ class CaseMargin:
     u_max: float
     z_at_max: float
     margin: float
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
+
 
 
 def case_margin(case: Case, z, tau) -> CaseMargin:

@@ -27,6 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr
 from ..errors import InputError
 from .case import Case, case_margin
 from .coating import Coating
@@ -59,6 +60,11 @@ class InterfaceStress:
     x_tau_max: float
     sigma_n_min: float
     sigma_n_max: float
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
+
 
 
 def _coated(model, body: str):

@@ -11,6 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr
 
 #: physical names written into the gmsh model (one set per body)
 PHYSICAL_NAMES = ("roller_contact", "cam_contact", "roller_fixed", "cam_fixed", "roller", "cam")
@@ -147,6 +148,11 @@ class BodyMesh:
     R: float
     groups: dict = field(default_factory=dict)
     coating: np.ndarray | None = None
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
+
 
 
 @dataclass(frozen=True)

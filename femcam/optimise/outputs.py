@@ -130,5 +130,6 @@ def write_outputs(out, res, table: dict, prov: dict) -> list:
     j = out / "optimum.json"
     atomic_write_text(j, json.dumps({"provenance": _json(prov), **result_dict(res)}, indent=2) + "\n")
     rows = {**table, "theta": np.zeros(len(table["law"]))}  # io.write_csv counts the rows by "theta"
-    c = write_csv(out / "compare.csv", rows, prov, columns=COMPARE_COLUMNS, text_columns=("law",))
+    c = write_csv(out / "compare.csv", rows, prov, columns=COMPARE_COLUMNS, text_columns=("law",),
+                  title="femcam optimise: the motion laws compared, one row per law")
     return [j, c]

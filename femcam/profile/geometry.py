@@ -52,6 +52,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr, span
 from ..errors import InputError, UndercutError
 
 FOLLOWER_KINDS = ("roller", "knife_edge", "flat_faced")
@@ -280,6 +281,15 @@ class CamProfile:
     face_width_min: float
     undercut_intervals: list = field(default_factory=list)
 
+    def __repr__(self) -> str:
+        """The follower kind, angles, rho range and undercut count (a compact line)."""
+        return compact_repr(self, [
+            type(self.follower).__name__,
+            f"{self.theta.size} angles",
+            f"rho {span(self.rho, 1e3, 'mm')}",
+            f"undercut {int(np.count_nonzero(self.undercut))}",
+        ])
+
     @property
     def cusp(self) -> bool:
         """True when any sample is undercut (the envelope folds over itself)."""
@@ -287,12 +297,12 @@ class CamProfile:
 
     @property
     def phi_max(self) -> float:
-        """Largest |phi| (rad)."""
+        """Largest ``|phi|`` (rad)."""
         return float(np.max(np.abs(self.phi))) if self.phi.size else 0.0
 
     @property
     def rho_min(self) -> float:
-        """Smallest |rho| over the samples (m); concave and convex alike."""
+        """Smallest ``|rho|`` over the samples (m); concave and convex alike."""
         return float(np.min(np.abs(self.rho))) if self.rho.size else math.inf
 
 

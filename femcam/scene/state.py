@@ -15,6 +15,7 @@ from functools import cached_property
 import numpy as np
 from scipy.optimize import minimize_scalar
 
+from .._repr import compact_repr, span
 from ..dynamics import TrainModel, periodic_response
 from ..errors import ConvergenceError, InputError, UndercutError
 from ..kinematics import CamProgram, law
@@ -86,6 +87,17 @@ class SceneState:
     profile: CamProfile
     loads: LoadResult
     undercut_intervals: list = field(default_factory=list)
+
+    def __repr__(self) -> str:
+        """The angles, the ranges of phi, rho and Fc, lift-off and undercut counts (a compact line)."""
+        return compact_repr(self, [
+            f"{self.theta.size} angles {span(self.theta, 180 / np.pi, 'deg', '.5g')}",
+            f"phi {span(self.phi, 180 / np.pi, 'deg')}",
+            f"rho {span(self.rho, 1e3, 'mm')}",
+            f"Fc {span(self.Fc, 1.0, 'N')}",
+            f"lift-off {int(np.count_nonzero(self.liftoff))}",
+            f"undercut {int(np.count_nonzero(self.undercut))}",
+        ])
 
     @property
     def undercut(self) -> np.ndarray:

@@ -32,12 +32,18 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import _validate
 from ..assess import assess
 from ..dynamics import jump_speed
 from ..errors import FemcamError, InputError
 from ..hertz import HertzValidityWarning, LineContact
 from ..hertz.conformity import shape_factors
 from ..wear.scene import scene_wear
+from .spec import whole
+
+#: angles per revolution: 36 resolves a program's segments; above 1e5 a variant's arrays and
+#: time grow without changing its worst values
+MIN_ANGLES, MAX_ANGLES = 36, 100_000
 
 #: the metrics of a record (SI), in table order
 METRICS = ("theta", "p0_max", "Fc_at_p0", "a_at_p0", "R_at_p0", "von_mises_max", "tau1_max",
@@ -65,10 +71,8 @@ class EvalOptions:
     wear: bool = False
 
     def __post_init__(self):
-        if int(self.n_angles) != self.n_angles or self.n_angles < 36:
-            raise InputError(
-                f"n_angles = {self.n_angles!r} (angles per revolution): must be a whole number >= 36")
-        if not (math.isfinite(self.jump_factor_hi) and self.jump_factor_hi > 1.0):
+        whole("n_angles", self.n_angles, MIN_ANGLES, MAX_ANGLES, "angles per revolution")
+        if _validate.number("jump_factor_hi", self.jump_factor_hi, "x operating speed") <= 1.0:
             raise InputError(
                 f"jump_factor_hi = {self.jump_factor_hi!r} (x operating speed): must be > 1")
 
@@ -150,6 +154,8 @@ def evaluate(scene, options: EvalOptions) -> dict:
         ``status`` ("ok" or "failed"), ``reason`` (text), ``model`` ("hertz") and the
         :data:`METRICS` (SI; NaN where not computed).
     """
+    _validate.record("scene", scene, "a femcam Scene (a study variant)", "analyse", "train", "rpm")
+    _validate.instance("options", options, EvalOptions)
     rec = {m: math.nan for m in METRICS}
     rec.update(status="ok", reason="", model="hertz", has_train=float(scene.train is not None))
     theta = np.linspace(0.0, 2.0 * math.pi, int(options.n_angles), endpoint=False)

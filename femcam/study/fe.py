@@ -10,8 +10,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import _validate
 from ..errors import FemcamError, InputError
 from ..sweep import sweep
+from .spec import MAX_VARIANTS, whole
 
 #: what chooses the FE candidates
 SELECT = ("objective", "pareto")
@@ -43,12 +45,15 @@ class FEOptions:
     tolerance: float = 2e-3
 
     def __post_init__(self):
-        if int(self.top) != self.top or self.top < 0:
-            raise InputError(f"fe_top = {self.top!r} (variants): must be a whole number >= 0")
+        whole("top", self.top, 0, MAX_VARIANTS, "variants")
         if self.select not in SELECT:
             raise InputError(f"fe_select = {self.select!r}: must be one of {', '.join(SELECT)}")
-        if not self.offsets or not all(math.isfinite(float(o)) for o in self.offsets):
-            raise InputError(f"fe_angles = {self.offsets!r} (rad): give finite angle offsets")
+        off = None if isinstance(self.offsets, str | bytes) else \
+            _validate.finite_array("offsets", self.offsets, "rad")
+        if off is None or off.ndim != 1 or not off.size:
+            raise _validate.fail("offsets", self.offsets, "rad", "give finite angle offsets")
+        _validate.positive("a_over_h", self.a_over_h, "(contact half-width / element size)")
+        _validate.positive("tolerance", self.tolerance, "(relative p0)")
 
     def as_dict(self) -> dict:
         """JSON-able options (the FE records' content key).

@@ -66,7 +66,8 @@ def write_outputs(res, out, *, scene_toml: str = "", plots: bool = False) -> dic
     """
     out = Path(out)
     paths = {"csv": str(write_csv(out / "study.csv", res.table, res.provenance, columns=res.columns,
-                                  text_columns=res.text_columns)),
+                                  text_columns=res.text_columns,
+                                  title="femcam study: one row per variant")),
              "npz": str(write_npz(out / "study.npz", res.table, res.provenance,
                                   numeric=[c[0] for c in res.columns], text_columns=res.text_columns,
                                   integer_columns=INTEGER_COLUMNS, scene_toml=scene_toml))}

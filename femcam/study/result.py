@@ -18,6 +18,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .. import _validate
+from .._repr import compact_repr, dataframe
 from .constraints import NAMES
 
 _DEG = 180.0 / math.pi
@@ -75,7 +77,11 @@ def pareto_mask(f1, f2, candidates) -> np.ndarray:
     >>> pareto_mask([3, 2, 1, 2], [1, 2, 3, 3], [True] * 4).tolist()
     [True, True, True, False]
     """
-    f1, f2 = np.asarray(f1, float), np.asarray(f2, float)
+    f1 = _validate.data_array("f1", f1, inf_ok=True)
+    f2 = _validate.data_array("f2", f2, inf_ok=True)
+    if f1.shape != f2.shape or np.shape(candidates) != f1.shape:
+        raise _validate.fail("f2", f"shape {f2.shape}", "", f"f1, f2 and candidates must have one shape "
+                             f"(f1 {f1.shape}, candidates {np.shape(candidates)})")
     ok = np.asarray(candidates, bool) & np.isfinite(f1) & np.isfinite(f2)
     idx = np.flatnonzero(ok)
     out = np.zeros(f1.shape, bool)
@@ -130,6 +136,35 @@ class StudyResult:
     fe: dict = field(default_factory=dict)
     provenance: dict = field(default_factory=dict)
     paths: dict = field(default_factory=dict)
+
+    def __repr__(self) -> str:
+        """Counts, the varied keys and the lowest feasible p0 (a compact line)."""
+        facts = [f"{self.n_variants} variants ({self.n_unique} distinct)", f"{self.n_feasible} feasible",
+                 "keys: " + " ".join(self.keys)]
+        b = self.best()
+        if b is not None:
+            facts.append(f"lowest feasible p0 {self.table['p0_max'][b] * 1e-6:.5g} MPa (variant {b})")
+        if self.paths:
+            facts.append("files: " + " ".join(sorted(self.paths)))
+        return compact_repr(self, facts)
+
+    def to_dataframe(self):
+        """The table as a ``pandas.DataFrame`` with the columns of ``study.csv`` (names with
+        units, values in those units: ``columns`` then ``text_columns``; text as ``str``).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per variant.
+
+        Raises
+        ------
+        ImportError
+            pandas is not installed (femcam does not require it).
+        """
+        cols = {csv: np.asarray(self.table[si], dtype=float) * f for si, csv, f in self.columns}
+        cols.update({k: np.asarray(self.table[k]).astype(str) for k in self.text_columns})
+        return dataframe(cols, "StudyResult.to_dataframe")
 
     def best(self, objective: str = "p0_max") -> int | None:
         """Row of the feasible variant with the smallest ``objective``.

@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .. import _validate
 from ..errors import InputError, SceneError
 from ..io import provenance
 from ..scene import Scene, load_scene
@@ -29,7 +30,7 @@ from .fe import FEOptions, candidates, fe_check
 from .outputs import columns as _columns
 from .outputs import write_outputs
 from .result import StudyResult, pareto_mask
-from .spec import StudySpec
+from .spec import MAX_VARIANTS, StudySpec, whole
 from .store import RecordStore
 
 #: up-front checks of one key: at most this many of its values are loaded alone
@@ -151,9 +152,14 @@ def run_study(scene, spec: StudySpec, *, constraints: Constraints | None = None,
         Unknown key (did-you-mean), empty values, a value the scene checker refuses on its own,
         an unknown objective, ``out`` holding another study without ``resume``/``overwrite``.
     """
-    constraints = constraints or Constraints()
-    options = options or EvalOptions()
-    fe = fe or FEOptions()
+    _validate.instance("spec", spec, StudySpec)
+    constraints = Constraints() if constraints is None else _validate.instance("constraints", constraints,
+                                                                               Constraints)
+    options = EvalOptions() if options is None else _validate.instance("options", options, EvalOptions)
+    fe = FEOptions() if fe is None else _validate.instance("fe", fe, FEOptions)
+    whole("workers", workers, 1, 1024, "processes")
+    if batch_size is not None:
+        whole("batch_size", batch_size, 1, MAX_VARIANTS, "variants per task")
     if objective not in OBJECTIVES:
         raise InputError(f"objective = {objective!r}: must be one of {', '.join(OBJECTIVES)}")
     raw, path, text = _base(scene)

@@ -26,10 +26,42 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import _validate
 from ..errors import InputError
 
 #: the largest number of variants a study accepts (a typo like ``0:1000:0.001`` is refused)
 MAX_VARIANTS = 1_000_000
+#: the largest Latin-hypercube seed (a whole number exact as a float)
+MAX_SEED = 2**53
+
+
+def whole(name: str, value, lo: int, hi: int, unit: str = "") -> int:
+    """A whole number in ``[lo, hi]`` (an integral float such as ``720.0`` too), else an
+    :class:`~femcam.errors.InputError` naming ``name``.
+
+    Parameters
+    ----------
+    name : str
+        The parameter, named in the error.
+    value : int or float
+        The value given.
+    lo, hi : int
+        Bounds (inclusive).
+    unit : str
+        Unit shown after the value.
+
+    Returns
+    -------
+    int
+        The value.
+
+    >>> whole("lhs", 8.0, 1, 10, "samples")
+    8
+    """
+    x = _validate.number(name, value, unit)
+    if x != math.floor(x) or not lo <= x <= hi:
+        raise _validate.fail(name, value, unit, f"must be a whole number in [{lo:g}, {hi:g}]")
+    return int(x)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -55,7 +87,10 @@ class Variable:
         if not self.key or not isinstance(self.key, str):
             raise InputError(f"vary: key {self.key!r} must be a dotted scene key (follower.base_radius_mm)")
         if not self.values and (self.lo is None or self.hi is None):
-            raise InputError(f"vary {self.key}: empty set of values")
+            raise InputError(f"vary {self.key}: empty set of values (give values, or a range lo:hi)")
+        if self.lo is not None or self.hi is not None:
+            _validate.number("lo", self.lo, "(the key's unit)")
+            _validate.number("hi", self.hi, "(the key's unit)")
         if self.lo is not None and not (math.isfinite(self.lo) and math.isfinite(self.hi)
                                         and self.lo < self.hi):
             raise InputError(f"vary {self.key}: range {self.lo:g}:{self.hi:g} is empty "
@@ -196,9 +231,11 @@ class StudySpec:
         dup = sorted({k for k in keys if keys.count(k) > 1})
         if dup:
             raise InputError(f"vary: key {dup[0]} given twice; give each key once")
+        for v in self.vary:
+            _validate.instance("vary", v, Variable, "a tuple of Variable (parse_vary)")
+        whole("seed", self.seed, 0, MAX_SEED)
         if self.lhs is not None:
-            if int(self.lhs) != self.lhs or self.lhs < 1 or self.lhs > MAX_VARIANTS:
-                raise InputError(f"lhs = {self.lhs!r} (samples): must be a whole number in 1..{MAX_VARIANTS}")
+            whole("lhs", self.lhs, 1, MAX_VARIANTS, "samples")
         else:
             rng = [v.key for v in self.vary if not v.values]
             if rng:

@@ -335,6 +335,7 @@ def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
         return out
     cols, text = extra_columns(scene)
     out["columns"] = [c[0] for c in cols] + list(text)   # SI names (SweepResult.load reads them)
+    out["csv_columns"] = [list(c) for c in cols]   # (SI, CSV name, factor): SweepResult.to_dataframe
     errs = sorted({e for e in np.asarray(table.get(ERROR_COLUMN, [])).astype(str) if e})
     if errs:
         out["errors"] = errs

@@ -21,7 +21,7 @@ __all__ = ["METHODS", "TOLERANCE_FLOOR", "ContactParams", "SweepOptions", "conta
 
 @dataclass(frozen=True, kw_only=True)
 class SweepOptions:
-    """Numerical options of a sweep (recorded in the manifest and the provenance header).
+    """Numerical options of a sweep (recorded in the manifest and the provenance).
 
     Parameters
     ----------

@@ -215,7 +215,8 @@ def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None
         result = with_plot_data(result, run)
     xcols, xtext = extra_columns(run.scene)  # extra column providers (femcam.sweep.extras)
     paths.update(csv=str(write_csv(out / "sweep.csv", result.table, prov, columns=COLUMNS + xcols,
-                                   text_columns=TEXT_COLUMNS + xtext)),
+                                   text_columns=TEXT_COLUMNS + xtext,
+                                   title="femcam sweep: one row per cam angle")),
                  npz=str(write_npz(out / "sweep.npz", result.table, prov,
                                    numeric=NUMERIC + tuple(c[0] for c in xcols),
                                    text_columns=TEXT_COLUMNS + xtext, integer_columns=INTEGER_COLUMNS,

@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .._repr import compact_repr, dataframe, span
 from ..errors import InputError
 from ..viz.sweep import plot_caption
 from .realrows import FLAT_BIN_RATIO
@@ -86,6 +87,72 @@ class SweepResult:
 
     def __getitem__(self, name):
         return self.table[name]
+
+    def __repr__(self) -> str:
+        """Method, angles, status counts and the peaks with units (a compact line)."""
+        t = self.table
+        status = np.asarray(t["status"]).astype(str)
+        counts = ", ".join(f"{k} {int(np.count_nonzero(status == k))}" for k in STATUSES
+                           if np.any(status == k))
+        facts = [f"method {self.method!r}", f"{self.n_angles} angles "
+                 f"{span(t['theta'], 180 / np.pi, 'deg', '.5g')}", counts or "no rows"]
+        if self.n_angles:
+            s = self.summary()
+            facts += [f"{label} {s[key] * scale:.5g} {unit}" for label, key, scale, unit in (
+                ("Fc max", "Fc_max", 1.0, "N"), ("p0 Hertz max", "p0_hertz_max", 1e-6, "MPa"),
+                ("p0 FE max", "p0_fe_max", 1e-6, "MPa"), ("von Mises max", "vm_max", 1e-6, "MPa"))
+                if np.isfinite(s[key])]
+            facts.append(f"{s['n_families']} families")
+        facts.append(f"{len(t)} columns")
+        if self.paths:
+            facts.append("files: " + " ".join(sorted(self.paths)))
+        return compact_repr(self, facts)
+
+    def csv_layout(self) -> tuple[list, list]:
+        """The columns of ``sweep.csv``: ``(numeric, text)``, as written by the sweep.
+
+        Returns
+        -------
+        numeric : list of (str, str, float)
+            ``(SI name, CSV name, factor SI -> CSV unit)``: :data:`COLUMNS` then the extra
+            column providers' (from ``provenance["extras"]``; a sweep stored before their CSV
+            names were recorded keeps its SI names, factor 1).
+        text : list of str
+            :data:`TEXT_COLUMNS` then the providers' text columns.
+        """
+        ex = self.provenance.get("extras", {})
+        numeric = list(COLUMNS) + [tuple(c) for c in ex.get("csv_columns", ())]
+        known = {c[0] for c in numeric}
+        text = list(TEXT_COLUMNS)
+        for name in ex.get("columns", ()):
+            if name in known or name not in self.table:
+                continue
+            if np.asarray(self.table[name]).dtype.kind in "USO":
+                text.append(name)
+            else:
+                numeric.append((name, name, 1.0))
+        return numeric, text
+
+    def to_dataframe(self):
+        """The table as a ``pandas.DataFrame`` with the columns of ``sweep.csv``: the same names
+        (unit in the name: ``theta_deg``, ``p0_fe_MPa``, ...) and units (:meth:`csv_layout`),
+        text columns as ``str`` (the exact text; the CSV replaces ``,``, ``#``, quotes, line
+        breaks and writes an empty field as ``-``, see :func:`femcam.io.csv_text`).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per cam angle.
+
+        Raises
+        ------
+        ImportError
+            pandas is not installed (femcam does not require it).
+        """
+        numeric, text = self.csv_layout()
+        cols = {csv: np.asarray(self.table[si], dtype=float) * f for si, csv, f in numeric}
+        cols.update({k: np.asarray(self.table[k]).astype(str) for k in text})
+        return dataframe(cols, "SweepResult.to_dataframe")
 
     @property
     def theta(self) -> np.ndarray:

@@ -28,9 +28,9 @@ from .study import (
     compare_direct,
     direct_profile,
     seed003_program,
+    study_columns,
     study_k,
     study_k_over_mu,
-    write_study_csv,
 )
 
 __all__ = [
@@ -47,5 +47,5 @@ __all__ = [
     "seed003_program",
     "study_k",
     "study_k_over_mu",
-    "write_study_csv",
+    "study_columns",
 ]

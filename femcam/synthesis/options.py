@@ -8,6 +8,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr
 from ..errors import PhysicsError
 
 STABILIZATIONS = ("sauer", "eq12")
@@ -162,12 +163,16 @@ class SynthesisResult:
     solve_time: float
     extras: dict = field(default_factory=dict)
 
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
+
     @property
     def max_error(self) -> float:
-        """max |y - y_o| over the sampled curve (m)."""
+        """max ``|y - y_o|`` over the sampled curve (m)."""
         return float(np.max(np.abs(self.error)))
 
     @property
     def phi_max(self) -> float:
-        """max |phi| of the FE curve over the samples (rad)."""
+        """max ``|phi|`` of the FE curve over the samples (rad)."""
         return float(np.max(np.abs(self.phi)))

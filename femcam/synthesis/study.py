@@ -9,7 +9,7 @@ segment ends), base circle 5 mm.
   knife edge: polar radius ``Rb + s(theta)``, ``phi = atan(s'/(Rb + s))``).
 * :func:`compare_direct` measures the FE curve against it at the same polar angles.
 * :func:`study_k` and :func:`study_k_over_mu` sweep k and k/mu (seed 003 Figs. 6-9);
-  :func:`format_table` (Markdown) and :func:`write_study_csv` (CSV, units in the column
+  :func:`format_table` (Markdown) and :func:`study_columns` (CSV columns, units in the column
   names) write them.
 
 Only numpy/scipy (and femcam's analytic chain) are imported.
@@ -17,11 +17,9 @@ Only numpy/scipy (and femcam's analytic chain) are imported.
 
 from __future__ import annotations
 
-import csv
 import math
 import time
 from dataclasses import dataclass, replace
-from pathlib import Path
 
 import numpy as np
 
@@ -110,11 +108,11 @@ class Comparison:
     max_radius_deviation, rms_radius_deviation : float
         max and rms of ``|r_FE - r_direct|`` (m).
     phi_max_fe : float
-        max |phi| of the FE curve (rad).
+        max ``|phi|`` of the FE curve (rad).
     phi_max_direct : float
-        max |phi| of the direct profile on a dense grid (rad).
+        max ``|phi|`` of the direct profile on a dense grid (rad).
     max_phi_deviation : float
-        max |phi_FE - phi_direct| at the same angles (rad).
+        max ``|phi_FE - phi_direct|`` at the same angles (rad).
     time_fe : float
         FE Newton solve (s).
     time_direct : float
@@ -140,7 +138,7 @@ def compare_direct(result: SynthesisResult, program, *, n_dense: int = 72001) ->
     program : femcam.kinematics.CamProgram
         The program it was synthesised for.
     n_dense : int
-        Grid points over one revolution for the direct max |phi|.
+        Grid points over one revolution for the direct max ``|phi|``.
 
     Returns
     -------
@@ -175,11 +173,11 @@ class StudyRow:
     n_elements : int
         Quadratic elements.
     max_error : float
-        max |y - y_o| over the sampled curve (m; NaN if not converged).
+        max ``|y - y_o|`` over the sampled curve (m; NaN if not converged).
     node_error : float
-        max |y - y_o| at the nodes (m; NaN if not converged).
+        max ``|y - y_o|`` at the nodes (m; NaN if not converged).
     phi_max : float
-        max |phi| of the FE curve (rad).
+        max ``|phi|`` of the FE curve (rad).
     iterations : int
         Newton iterations (those done before the failure if not converged).
     condition : float
@@ -312,14 +310,15 @@ def format_table(rows, *, key: str = "k") -> str:
     return "\n".join(lines)
 
 
-#: columns of :func:`write_study_csv` (unit after the last underscore; ``nondim``: dimensionless)
+#: columns of :func:`study_columns` (unit after the last underscore; ``nondim``: dimensionless)
 STUDY_CSV_COLUMNS = ("k_nondim", "mu_nondim", "k_over_mu_nondim", "n_elements", "max_error_mm",
                      "max_node_error_mm", "phi_max_deg", "newton_iterations", "cond_est_nondim",
                      "solve_time_s", "converged", "message")
 
 
-def write_study_csv(rows, path, *, comments=()) -> Path:
-    """Write a study as CSV with :data:`STUDY_CSV_COLUMNS` (errors in mm, angles in deg).
+def study_columns(rows) -> dict:
+    """A study as table columns :data:`STUDY_CSV_COLUMNS` (errors in mm, angles in deg), for
+    :func:`femcam.io.write_table` (``femcam synth --study`` writes them as CSV).
 
     A row whose solve raised :class:`ConvergenceError` has ``converged = False``, ``nan``
     results and the error message.
@@ -328,36 +327,28 @@ def write_study_csv(rows, path, *, comments=()) -> Path:
     ----------
     rows : iterable of StudyRow
         The study.
-    path : str or os.PathLike
-        Output file.
-    comments : iterable of str
-        Written first as ``# ...`` lines (provenance).
 
     Returns
     -------
-    pathlib.Path
-        The path written.
+    dict[str, ndarray]
+        Column name -> values, in :data:`STUDY_CSV_COLUMNS` order.
 
-    >>> import io, tempfile, os
     >>> row = StudyRow(k=1e3, mu=1.0, n_elements=30, max_error=5e-6, node_error=4e-6,
     ...                phi_max=0.5, iterations=10, condition=1e5, time=0.02, converged=True)
-    >>> with tempfile.TemporaryDirectory() as d:
-    ...     p = write_study_csv([row], os.path.join(d, "s.csv"))
-    ...     print(p.read_text().splitlines()[1])
-    1000,1,1000,30,0.005,0.004,28.64788976,10,100000,0.02,True,
+    >>> c = study_columns([row])
+    >>> float(c["max_error_mm"][0]), round(float(c["phi_max_deg"][0]), 6), bool(c["converged"][0])
+    (0.005, 28.64789, True)
     """
-    path = Path(path)
-    with open(path, "w", newline="") as f:
-        for c in comments:
-            f.write(f"# {c}\n")
-        w = csv.writer(f, lineterminator="\n")
-        w.writerow(STUDY_CSV_COLUMNS)
-        for r in rows:
-            ok = r.converged
-            w.writerow([f"{r.k:.10g}", f"{r.mu:.10g}", f"{r.k_over_mu:.10g}", r.n_elements,
-                        f"{r.max_error * 1e3:.10g}" if ok else "nan",
-                        f"{r.node_error * 1e3:.10g}" if ok else "nan",
-                        f"{math.degrees(r.phi_max):.10g}" if ok else "nan", r.iterations,
-                        f"{r.condition:.6g}" if ok else "nan",
-                        f"{r.time:.6g}" if ok else "nan", ok, "" if ok else r.message])
-    return path
+    rows = list(rows)
+    nan = float("nan")
+
+    def col(f, ok_only=True):
+        return np.array([f(r) if (r.converged or not ok_only) else nan for r in rows], dtype=float)
+
+    vals = (col(lambda r: r.k, False), col(lambda r: r.mu, False), col(lambda r: r.k_over_mu, False),
+            np.array([r.n_elements for r in rows], dtype=int), col(lambda r: r.max_error * 1e3),
+            col(lambda r: r.node_error * 1e3), col(lambda r: math.degrees(r.phi_max)),
+            np.array([r.iterations for r in rows], dtype=int), col(lambda r: r.condition),
+            col(lambda r: r.time), np.array([bool(r.converged) for r in rows], dtype=bool),
+            np.array(["" if r.converged else str(r.message) for r in rows], dtype=str))
+    return dict(zip(STUDY_CSV_COLUMNS, vals, strict=True))

@@ -74,6 +74,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr
 from ..hertz import LineContact
 from ..loads import contact_force
 from .map import WearMap, drift_sum, wear_map
@@ -196,6 +197,11 @@ class EvolutionCase:
     k: float
     name: str = ""
 
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
+
+
 
 def evolution_case(scene, theta, *, k: float | None = None) -> EvolutionCase:
     """The :class:`EvolutionCase` of a roller-follower scene at angles ``theta`` (rad).
@@ -317,6 +323,10 @@ class EvolutionResult:
     volume_archard: float
     a_over_R_max: float
     maps: list = field(default_factory=list, repr=False)
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
 
     @property
     def max_depth(self) -> float:
@@ -502,6 +512,10 @@ class ConvergenceTable:
     diff_next: np.ndarray
     order: np.ndarray
     linear_max_depth: float
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
 
     @property
     def finest(self) -> EvolutionResult:

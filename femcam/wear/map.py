@@ -71,6 +71,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr, span
 from .inputs import MISSING, WearInputWarning, _loaded_have, contact_columns
 from .slip import SlipResult
 from .surface import (
@@ -202,6 +203,17 @@ class WearMap:
     #: revolutions_through, source); None: uncoated
     depth_cam_cycles: np.ndarray | None = None
     coating: dict | None = None
+
+    def __repr__(self) -> str:
+        """Angles, the largest depth, the volumes and k (a compact line)."""
+        return compact_repr(self, [
+            f"{self.theta.size} angles",
+            f"cam depth/rev {span(self.depth_cam, 1e9, 'nm')}",
+            f"cam volume/rev {self.volume_cam * 1e9:.4g} mm^3",
+            f"k {self.k:.3g} m^3/(N m)",
+            f"{self.cycles:g} cycles",
+            self.model,
+        ])
 
     @property
     def depth_cam_total(self) -> np.ndarray:

@@ -63,6 +63,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _validate
+from .._repr import compact_repr
 from ..errors import ConvergenceError, UndercutError
 from ..profile import pressure_angle
 
@@ -124,6 +125,10 @@ class SlipResult:
     #: from the follower axis (``s1 - e``); radiused knife-edge tip, arc ``r_tip phi`` from the
     #: tip's axis point; roller 0 (the roller coordinate starts at the point in contact at theta[0])
     follower_origin: float = 0.0
+
+    def __repr__(self) -> str:
+        """The scalar fields and the arrays' shapes, never their values (a compact line)."""
+        return compact_repr(self)
 
     @property
     def slip_per_rolled_length(self) -> np.ndarray:

@@ -1,0 +1,45 @@
+"""Writers: result tables (plain CSV with a sidecar JSON, NPZ), VTU fields, PVD series, and the
+atomic file writes every other writer (the sweep's chunk store included) goes through.
+
+This package knows no sweep: a table is a dict of arrays written through a column list
+``[(internal SI name, CSV column name, factor SI -> CSV unit), ...]`` that the caller owns
+(:data:`femcam.sweep.result.COLUMNS` for a sweep), so the writers sit below the sweep in the
+layer order (docs/architecture.md).
+
+* CSV (:func:`write_csv`, :func:`write_table`): line 1 holds the column names, whose names carry
+  the unit (``theta_deg``, ``p0_fe_MPa``, ...); then one row per line, nothing else, so
+  ``pandas.read_csv(path)`` and ``numpy.genfromtxt(path, delimiter=",", names=True, dtype=None,
+  encoding="utf-8")`` read it as it is. Text fields never contain ``,``, ``#``, quotes or line
+  breaks (replaced by ``;``, ``No.``, ``'`` and spaces; the NPZ keeps the exact text).
+* Sidecar JSON (:func:`meta_path`: ``X.csv`` -> ``X.csv-metadata.json``): the provenance
+  (femcam/gmsh/scikit-fem/numpy versions, scene file and SHA-256, command line, date, machine,
+  options, model families, wear, ...), the column names and datatypes and the row count; one
+  layout for every CSV.
+* NPZ: the same table in SI (the internal column names) plus ``provenance_json``,
+  ``scene_toml`` (the scene file's text, "" if the scene was built in code) and ``scene_repr``
+  (the parsed scene as the sweep used it, e.g. after ``--law``).
+* PVD: a ParaView collection; each ``DataSet`` is one ``.vtu`` whose ``timestep`` is the cam
+  angle in degrees, so ParaView and pyvista play the sweep as an animation.
+"""
+
+from .atomic import atomic_write_bytes, atomic_write_text
+from .provenance import header_dict, provenance, versions
+from .tables import (
+    CSV_EMPTY,
+    META_SUFFIX,
+    Column,
+    csv_text,
+    meta_path,
+    read_csv,
+    read_meta,
+    write_csv,
+    write_npz,
+    write_rows,
+    write_table,
+)
+from .vtk import vtu_name, write_fe_vtu, write_hertz_vtu, write_pvd, write_vtu
+
+__all__ = ["CSV_EMPTY", "META_SUFFIX", "Column", "atomic_write_bytes", "atomic_write_text",
+           "csv_text", "header_dict", "meta_path", "provenance", "read_csv", "read_meta",
+           "versions", "vtu_name", "write_csv", "write_fe_vtu", "write_hertz_vtu", "write_npz",
+           "write_pvd", "write_rows", "write_table", "write_vtu"]
