@@ -46,7 +46,7 @@ def test_sweep_off_a_terminal_prints_plain_progress_and_quiet_removes_it(tmp_pat
     from femcam import _progress
     from femcam.cli import main
 
-    cmd = ["sweep", SCENE, "--method", "hertz", "--angles-deg", "0:40:10", "--no-plots",
+    cmd = ["sweep", SCENE, "--method", "hertz", "--angles-deg", "0:30:10", "--no-plots",
            "--vtk-every", "0"]
     assert main(["-v", *cmd, "--out", str(tmp_path / "a")]) == 0
     cap = capsys.readouterr()
@@ -130,3 +130,40 @@ def test_info_and_plot_of_a_sweep_folder(tmp_path, capsys):
     assert main(["info", str(tmp_path)]) == 1
     err = capsys.readouterr().err.strip()
     assert err.startswith("femcam info: error: DIR = ") and len(err.splitlines()) == 1
+
+
+def test_one_rule_for_start_stop_step_flags():
+    """--angles-deg and --rpm-sweep: the stop is included when it falls on the grid; an angle
+    range of whole turns drops its stop (the same cam position as its start)."""
+    import numpy as np
+
+    from femcam.cli._flags import RANGE_RULE
+    from femcam.cli.dynamics import _rpm_range
+    from femcam.sweep import parse_angles_deg
+
+    assert np.degrees(parse_angles_deg("0:90:30")).round(9).tolist() == [0, 30, 60, 90]
+    assert _rpm_range("4200:4600:200").tolist() == [4200, 4400, 4600]
+    assert np.degrees(parse_angles_deg("0:100:30")).round(9).tolist() == [0, 30, 60, 90]
+    assert _rpm_range("4200:4700:200").tolist() == [4200, 4400, 4600]
+    full = np.degrees(parse_angles_deg("0:360:1"))
+    assert full.size == 360 and full[-1] == 359          # 360 deg is 0 deg: not twice
+    assert parse_angles_deg("-360:0:30").size == 12 and parse_angles_deg("0:720:90").size == 8
+    for flag in ("--angles-deg", "--rpm-sweep"):
+        sub = "sweep" if flag == "--angles-deg" else "dynamics"
+        help_text = next(a.help for a in build_parser(sub)._subparsers._group_actions[0]
+                         .choices[sub]._actions if flag in a.option_strings)
+        assert RANGE_RULE in help_text, flag
+
+
+def test_cli_page_reference_is_the_parser():
+    """docs/cli.md's reference section is what docs/cli_reference.py generates from the parser
+    (every subcommand, flag and range): regenerate it after a flag changes."""
+    import re
+    import runpy
+    from pathlib import Path
+
+    page = Path(__file__).resolve().parents[1] / "docs" / "cli.md"
+    gen = runpy.run_path(str(page.parent / "cli_reference.py"))
+    text = page.read_text(encoding="utf-8")
+    m = re.search(re.escape(gen["BEGIN"]) + r"\n\n(.*)\n" + re.escape(gen["END"]), text, re.S)
+    assert m and m.group(1) == gen["reference"](), "run python docs/cli_reference.py"
