@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import _validate
+from .._progress import phase
 from ..dynamics import jump_speed, rpm_sweep
 from ..dynamics.jump import MAX_SPEEDS, speeds_problem
 from ..errors import InputError
@@ -138,8 +139,9 @@ def run(args) -> int:
         workers, note = _useful_workers(workers, rpm.size)
         if note:
             print(f"  {note}")
-        sw = rpm_sweep(scene.train, scene.program, rpm, steps_per_rev=scene.steps_per_rev,
-                       workers=workers)
+        with phase(f"dynamics: rpm sweep over {rpm.size} speeds"):
+            sw = rpm_sweep(scene.train, scene.program, rpm, steps_per_rev=scene.steps_per_rev,
+                           workers=workers)
         j = jump_speed(scene.train, scene.program, rpm[0], rpm[-1],
                        steps_per_rev=scene.steps_per_rev)
         print(f"  rpm sweep {rpm[0]:g}..{rpm[-1]:g} rpm ({rpm.size} speeds): {j.message}; rigid "
