@@ -24,9 +24,7 @@ BASE = {("run",): ["run", SCENE], ("sweep",): ["sweep", SCENE], ("wear", "map"):
         ("synth",): ["synth", "--case", "seed003"], ("dynamics",): ["dynamics", DYN],
         ("assess",): ["assess", SCENE],
         ("optimise",): ["optimise", SCENE, "--vary", "base_radius_mm=15:40", "--no-fe"],
-        ("study",): ["study", SCENE, "--vary", "follower.base_radius_mm=10,12", "--no-plots"],
-        ("check",): ["check", SCENE], ("init",): ["init"], ("examples",): ["examples", "--list"],
-        ("info",): ["info", "."], ("plot",): ["plot", "."]}
+        ("study",): ["study", SCENE, "--vary", "follower.base_radius_mm=10,12", "--no-plots"]}
 
 
 def _walk(parser, path=()):
