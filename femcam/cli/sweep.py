@@ -1,9 +1,9 @@
 """``femcam sweep SCENE.toml --out DIR``: the FE (or Hertz) sweep over cam angle.
 
 Writes DIR/sweep.csv (units in the column names; provenance in DIR/sweep.csv-metadata.json),
-DIR/sweep.npz (SI, plus the scene file's text), DIR/scene.toml (a copy of the scene file),
-DIR/chunks/ (the resumable store), DIR/sweep.pvd + DIR/vtk/*.vtu (every 10th angle by default;
---vtk-every K) and PNG plots in DIR/plots/ (unless --no-plots).
+DIR/sweep.npz (SI, plus the scene file's text), DIR/scene.toml (a copy of the scene file with
+--law written into it), DIR/chunks/ (the resumable store), DIR/sweep.pvd + DIR/vtk/*.vtu
+(every 10th angle by default; --vtk-every K) and PNG plots in DIR/plots/ (unless --no-plots).
 
 Settings: a flag given on the command line wins; else the scene's [fe] a_over_h, tolerance and
 [sweep] method, angles_deg, chunk_size, vtk_every, plots; else the defaults shown below.
