@@ -167,3 +167,22 @@ def test_cli_page_reference_is_the_parser():
     text = page.read_text(encoding="utf-8")
     m = re.search(re.escape(gen["BEGIN"]) + r"\n\n(.*)\n" + re.escape(gen["END"]), text, re.S)
     assert m and m.group(1) == gen["reference"](), "run python docs/cli_reference.py"
+
+
+def test_example_scenes_are_package_data():
+    """The wheel ships examples/ as femcam/_examples (pyproject force-include); at run time the
+    installed copy is used, else the repository's examples/ (an editable install)."""
+    from pathlib import Path
+
+    try:
+        import tomllib
+    except ModuleNotFoundError:  # pragma: no cover - Python 3.10
+        import tomli as tomllib
+
+    from femcam.start import example_scenes, examples_dir
+
+    root = Path(__file__).resolve().parents[1]
+    cfg = tomllib.loads((root / "pyproject.toml").read_text())
+    assert cfg["tool"]["hatch"]["build"]["targets"]["wheel"]["force-include"]["examples"] == "femcam/_examples"
+    assert (examples_dir() / "seed002_study_model.toml").is_file()
+    assert len(example_scenes()) == len(list((root / "examples").glob("*.toml")))
