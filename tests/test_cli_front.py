@@ -183,6 +183,7 @@ def test_example_scenes_are_package_data():
 
     root = Path(__file__).resolve().parents[1]
     cfg = tomllib.loads((root / "pyproject.toml").read_text())
-    assert cfg["tool"]["hatch"]["build"]["targets"]["wheel"]["force-include"]["examples"] == "femcam/_examples"
+    wheel = cfg["tool"]["hatch"]["build"]["targets"]["wheel"]
+    assert wheel["force-include"]["examples"] == "femcam/_examples"
     assert (examples_dir() / "seed002_study_model.toml").is_file()
     assert len(example_scenes()) == len(list((root / "examples").glob("*.toml")))
