@@ -161,11 +161,12 @@ def _interrupt_message(run: SweepRun) -> str:
 
 
 def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) -> SweepResult:
-    _analytic(run)
+    talk = Progress(0, enabled=progress)
+    with talk.phase(f"analytic chain ({run.angles.size} angles)"):
+        _analytic(run)
     t_analytic = time.perf_counter() - t_start
     _open_store(run)
     t0 = time.perf_counter()
-    talk = Progress(0, enabled=progress)
     with talk.phase("model families: build and verify"):
         _plan(run)
     t_verify = time.perf_counter() - t0
