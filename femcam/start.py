@@ -36,6 +36,9 @@ from .scene.ranges import RANGES, group_of, span
 #: the example the template is made from (a roller follower, every common table)
 TEMPLATE_BASE = "seed002_study_model.toml"
 
+#: the pressure-angle limit the summary compares with (``femcam run --phi-limit-deg`` default)
+PHI_LIMIT_DEG = 30.0
+
 #: cam angles of the check's analytic pass [deg] (the undercut and pressure-angle checks of the
 #: scene use their own dense grids)
 CHECK_STEP_DEG = 0.5
@@ -88,7 +91,9 @@ class SceneCheck:
         """
         deg = math.degrees
         out = [f"{self.name}: {self.follower} follower, {self.n_segments} segments",
-               f"  max pressure angle {deg(self.phi_max):.2f} deg at {deg(self.phi_max_theta):.2f} deg",
+               f"  max pressure angle {deg(self.phi_max):.2f} deg at {deg(self.phi_max_theta):.2f} deg "
+               f"({'OK' if deg(self.phi_max) <= PHI_LIMIT_DEG else 'EXCEEDS'} the usual limit "
+               f"{PHI_LIMIT_DEG:g} deg, as femcam run)",
                f"  min radius of curvature {self.rho_min * 1e3:.3f} mm at {deg(self.rho_min_theta):.2f} deg"]
         out.append("  undercut: " + (", ".join(f"{deg(a):.2f}-{deg(b):.2f} deg" for a, b in self.undercut)
                                      or "none"))
