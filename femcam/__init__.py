@@ -13,9 +13,10 @@ that use them.
 # is the command line; stdlib only, and nothing for a program that imports femcam)
 from . import _interrupt  # noqa: F401, I001
 
+import importlib  # noqa: E402  (femcam.sweep on first use: __getattr__ below)
+
 __version__ = "0.1.0"
 
-from . import sweep  # noqa: E402  (a callable package: femcam.sweep(scene, angles=...))
 from .errors import (
     ConvergenceError,
     FemcamError,
@@ -43,3 +44,11 @@ __all__ = [
     "effective_modulus",
     "sweep",
 ]
+
+
+def __getattr__(name):
+    """``femcam.sweep`` (a callable package) on first use: ``import femcam`` and
+    ``femcam --version`` stay free of scipy's solvers and the scene machinery (PEP 562)."""
+    if name == "sweep":
+        return importlib.import_module(".sweep", __name__)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -9,6 +9,7 @@ that grows while read is refused too).
 
 from __future__ import annotations
 
+import errno
 import os
 import stat
 
@@ -116,3 +117,23 @@ def read_regular(path, what: str, max_bytes: int, error=InputError) -> bytes:
         raise error(f"{what} {path}: cannot be read ({exc.strerror or exc})") from None
     finally:
         os.close(fd)
+
+
+def os_error_line(exc: OSError) -> str:
+    """The reason and the path(s) of an ``OSError`` on one line.
+
+    Parameters
+    ----------
+    exc : OSError
+        The error (``strerror``, ``filename``, ``filename2``).
+
+    Returns
+    -------
+    str
+        e.g. ``"No space left on device: 'DIR/sweep.csv'"`` (with a hint on a full disk).
+    """
+    why = exc.strerror or str(exc) or type(exc).__name__
+    if exc.errno == errno.ENOSPC:
+        why += " (free some space, then rerun; a sweep can continue with --resume)"
+    names = [repr(str(f)) for f in (exc.filename, exc.filename2) if f is not None]
+    return f"{why}: {' -> '.join(names)}" if names else why

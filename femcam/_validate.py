@@ -244,7 +244,9 @@ def workers(name: str, value) -> int | str:
 
 
 def angles_deg(name: str, spec, max_angles: int = 10_000_000) -> np.ndarray:
-    """``"start:stop:step"`` in degrees (stop exclusive, like ``numpy.arange``) -> radians.
+    """``"start:stop:step"`` in degrees -> radians; the stop is included when it falls on the
+    grid (to 1e-9 of a step), except that a range of whole turns (``stop - start`` a multiple
+    of 360 deg) drops it: the same cam position as ``start``, not computed twice.
 
     Parameters
     ----------
@@ -261,7 +263,9 @@ def angles_deg(name: str, spec, max_angles: int = 10_000_000) -> np.ndarray:
         The angles (rad).
 
     >>> np.degrees(angles_deg("--angles-deg", "0:90:30")).round(6).tolist()
-    [0.0, 30.0, 60.0]
+    [0.0, 30.0, 60.0, 90.0]
+    >>> angles_deg("--angles-deg", "0:360:1").size  # a full turn: 0 to 359 deg
+    360
     """
     parts = str(spec).split(":")
     if len(parts) != 3:
@@ -276,7 +280,10 @@ def angles_deg(name: str, spec, max_angles: int = 10_000_000) -> np.ndarray:
         raise fail(name, spec, "deg", "step must be > 0")
     if stop <= start:
         raise fail(name, spec, "deg", "stop must be > start")
-    n = int(np.ceil((stop - start) / step - 1e-9))
+    n = int(np.floor((stop - start) / step + 1e-9)) + 1
+    turns = (stop - start) / 360.0
+    if abs(turns - round(turns)) < 1e-12 and abs(start + (n - 1) * step - stop) <= 1e-9 * step:
+        n -= 1  # whole turns: the stop is the start's cam position
     if n > max_angles:
         raise fail(name, spec, "deg", f"gives more than {max_angles:.0e} angles")
     return np.radians(start + step * np.arange(n))

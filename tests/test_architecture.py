@@ -20,6 +20,8 @@ PKG = ROOT / "femcam"
 LAZY_OK = {"gmsh", "pyvista", "matplotlib", "dask",
            # meshio: ~0.4-0.6 s to import (its format plugins); only the .vtu/.msh writers need it
            "meshio",
+           # rich: the progress bar, drawn only when stderr is a terminal (femcam._progress)
+           "rich",
            # scipy submodules beyond linalg/sparse, imported where a path needs them: signal
            # (~0.5-0.7 s), optimize/special/fft/spatial/integrate (0.08-0.12 s together, not
            # needed by README command 1; docs/architecture.md)

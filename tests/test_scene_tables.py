@@ -113,7 +113,7 @@ def captured(monkeypatch):
     return calls
 
 
-SETTINGS = ("[fe]\na_over_h = 20\ntolerance = 1e-3\n[sweep]\nmethod = \"hertz\"\nangles_deg = \"0:40:10\"\n"
+SETTINGS = ("[fe]\na_over_h = 20\ntolerance = 1e-3\n[sweep]\nmethod = \"hertz\"\nangles_deg = \"0:30:10\"\n"
             "chunk_size = 2\nvtk_every = 0\nplots = false\n")
 
 
@@ -124,11 +124,11 @@ def test_sweep_takes_settings_from_the_scene(tmp_path, captured, capsys):
     assert (kw["a_over_h"], kw["tolerance"], kw["method"], kw["chunk_size"], kw["vtk_every"], kw["plots"]) \
         == (20.0, 1e-3, "hertz", 2, 0, False)
     out = capsys.readouterr().out
-    assert "settings from the scene file: [sweep] angles_deg = \"0:40:10\", [fe] a_over_h = 20" in out
+    assert "settings from the scene file: [sweep] angles_deg = \"0:30:10\", [fe] a_over_h = 20" in out
 
 
 def test_flags_override_the_scene(tmp_path, captured):
-    args = ["sweep", str(_scene(tmp_path, SETTINGS)), "--out", str(tmp_path / "o"), "--angles-deg", "0:20:10",
+    args = ["sweep", str(_scene(tmp_path, SETTINGS)), "--out", str(tmp_path / "o"), "--angles-deg", "0:10:10",
             "--mesh-size", "8", "--tolerance", "0.01", "--method", "fe", "--chunk-size", "5",
             "--vtk-every", "3", "--plots"]
     assert main(args) == 0
@@ -136,7 +136,7 @@ def test_flags_override_the_scene(tmp_path, captured):
     assert np.degrees(kw["angles"]) == pytest.approx([0, 10])
     assert (kw["a_over_h"], kw["tolerance"], kw["method"], kw["chunk_size"], kw["vtk_every"], kw["plots"]) \
         == (8.0, 0.01, "fe", 5, 3, True)
-    assert "--angles-deg 0:20:10" in kw["command"] and "--no-plots" not in kw["command"]
+    assert "--angles-deg 0:10:10" in kw["command"] and "--no-plots" not in kw["command"]
 
 
 def test_defaults_without_scene_settings(tmp_path, captured):

@@ -90,7 +90,7 @@ def hertz_ref(F, rho, sc):
 # ------------------------------------------------------------------------------------ angles
 def test_parse_angles_deg():
     np.testing.assert_allclose(np.degrees(parse_angles_deg("0:360:1")), np.arange(360.0), atol=1e-12)
-    np.testing.assert_allclose(np.degrees(parse_angles_deg("10:20:2.5")), [10, 12.5, 15, 17.5],
+    np.testing.assert_allclose(np.degrees(parse_angles_deg("10:20:2.5")), [10, 12.5, 15, 17.5, 20],
                                atol=1e-12)
 
 
@@ -610,7 +610,9 @@ def test_cli_in_process(tmp_path, capsys):
         assert rc == 1 and words in err and "a_over_h" not in err, (flag, err)
 
 
-def test_progress_bar_only_on_tty():
+def test_progress_bar_on_tty_plain_lines_elsewhere():
+    """A library call: progress only on a terminal (a rich bar); enabled off a terminal (the
+    command line's default): plain lines, one per 10 %."""
     import io
 
     from femcam.sweep import Progress
@@ -626,7 +628,14 @@ def test_progress_bar_only_on_tty():
         p.update(5)
         p.close()
     assert quiet.getvalue() == ""
-    assert "10/10 angles" in loud.getvalue()
+    assert "10/10" in loud.getvalue() and "angles" in loud.getvalue()
+    plain = io.StringIO()
+    p = Progress(10, stream=plain, enabled=True, label="solves")
+    for _ in range(10):
+        p.update(1)
+    p.close()
+    lines = plain.getvalue().splitlines()
+    assert len(lines) == 10 and lines[-1].startswith("femcam: solves 10/10 angles (100 %) ")
 
 
 def test_sharp_knife_edge_scene_is_refused_clearly():

@@ -60,7 +60,7 @@ AT_LOAD = [
 def test_part_the_scene_cannot_have_is_refused_at_load(tmp_path, capsys, case):
     _, example, changes, key = case
     scene = _variant(tmp_path, example, changes)
-    rc = main(["sweep", str(scene), "--out", str(tmp_path / "out"), "--angles-deg", "0:180:90",
+    rc = main(["sweep", str(scene), "--out", str(tmp_path / "out"), "--angles-deg", "0:90:90",
                "--method", "hertz", "--no-plots", "--vtk-every", "0", "--workers", "1", "--progress", "off"])
     err = capsys.readouterr().err
     assert rc == 1 and "Traceback" not in err, err
@@ -73,7 +73,7 @@ def test_refused_part_is_said_and_fails_the_run(tmp_path, capsys, case):
     _, example, changes, part, words, key = case
     scene = _variant(tmp_path, example, changes)
     out = tmp_path / "out"
-    rc = main(["sweep", str(scene), "--out", str(out), "--angles-deg", "0:180:90", "--method", "hertz",
+    rc = main(["sweep", str(scene), "--out", str(out), "--angles-deg", "0:90:90", "--method", "hertz",
                "--no-plots", "--vtk-every", "0", "--workers", "1", "--progress", "off"])
     err = capsys.readouterr().err
     assert rc == 1, err
@@ -101,7 +101,7 @@ def test_refused_part_is_said_and_fails_the_run(tmp_path, capsys, case):
 
 def test_a_sweep_whose_parts_all_answer_refuses_nothing(tmp_path, capsys):
     rc = main(["sweep", str(EX / "seed002_assess.toml"), "--out", str(tmp_path / "out"), "--angles-deg",
-               "0:180:90", "--method", "hertz", "--no-plots", "--vtk-every", "0", "--workers", "1",
+               "0:90:90", "--method", "hertz", "--no-plots", "--vtk-every", "0", "--workers", "1",
                "--progress", "off"])
     err = capsys.readouterr().err
     assert rc == 0 and "refused" not in err

@@ -2,70 +2,141 @@
 
 Each subcommand lives in its own module in this package and exposes
 ``register(subparsers) -> None``, which adds an argparse sub-parser and sets
-``func=<callable(args) -> int>`` as its default. Nothing heavy is imported at import time;
-the subcommand modules import the library at module level (``import femcam`` is numpy/scipy
-only; gmsh, pyvista, matplotlib and dask stay lazy inside the library).
+``func=<callable(args) -> int>`` as its default. :func:`main` imports only the module of the
+subcommand given: ``femcam --version`` reads the versions from the package metadata and
+``femcam --help`` lists the subcommands from :data:`SUBCOMMANDS`, so neither imports numpy's
+solvers, the scene machinery, gmsh, scikit-fem, pyvista, matplotlib or dask.
+
+Console conventions (every subcommand): ``-q/--quiet`` prints nothing but errors and warnings
+(stderr; the exit code says the rest); ``-v/--verbose`` logs every phase, however short;
+progress of the long phases goes to stderr (:mod:`femcam._progress`: a bar on a terminal,
+plain lines elsewhere).
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
 import os
 import sys
+from importlib import metadata
 
-from .. import __version__, _interrupt
+from .. import __version__, _interrupt, _progress
+from .._files import os_error_line
 from ..errors import FemcamError
-from ._common import os_error_line
 from ._flags import FlagError
 
-#: subcommand modules, in the order they appear in ``femcam --help``
-SUBCOMMANDS = ("run", "sweep", "wear", "synth", "dynamics", "assess", "optimise", "study")
+#: subcommand -> its one-line help, in the order of ``femcam --help`` (the module
+#: ``femcam.cli.<name>`` registers it; ``tests/test_cli_front.py`` checks the texts agree)
+SUBCOMMANDS = {
+    "run": "kinematics, profile and load tables of a scene, with PNG plots",
+    "sweep": "FE contact sweep over cam angle (CSV/NPZ, VTK series, plots)",
+    "wear": "Archard wear: seed 000's table, or a wear map of a scene",
+    "synth": "knife-edge cam curve by potential-energy FE (seed 003)",
+    "dynamics": "follower-train dynamics: contact force, jump speed",
+    "assess": "will it fail? film, flash temperature, fatigue, safety factors",
+    "optimise": "minimise peak p0 (or size, wear, ...) over the cam design",
+    "study": "design study over scene keys (grid or Latin hypercube)",
+    "check": "validate a scene file without running it (no FE)",
+    "init": "write a commented scene template",
+    "examples": "copy the example scenes into a directory",
+    "info": "what a results folder holds (scene, angles, worst values, files)",
+    "plot": "redraw the plots of a sweep's results folder",
+}
+
+#: packages whose versions ``--version`` prints: (distribution, shown as)
+VERSIONED = (("scikit-fem", "scikit-fem"), ("gmsh", "gmsh"), ("numpy", "numpy"))
 
 
 def _versions() -> str:
+    """``femcam X, scikit-fem Y, gmsh Z, numpy W`` from the installed package metadata (no
+    import of those packages)."""
     parts = [f"femcam {__version__}"]
-    for mod, attr in (("skfem", "__version__"), ("gmsh", "__version__"), ("numpy", "__version__")):
+    for dist, shown in VERSIONED:
         try:
-            m = importlib.import_module(mod)
-            parts.append(f"{'scikit-fem' if mod == 'skfem' else mod} {getattr(m, attr, '?')}")
-        except Exception:  # pragma: no cover - a missing optional dependency
-            parts.append(f"{mod} (not installed)")
+            parts.append(f"{shown} {metadata.version(dist)}")
+        except metadata.PackageNotFoundError:  # pragma: no cover - a missing dependency
+            parts.append(f"{shown} (not installed)")
     return ", ".join(parts)
 
 
 class _VersionAction(argparse.Action):
     def __init__(self, option_strings, dest, **kw):
-        super().__init__(option_strings, dest, nargs=0, help="print femcam, scikit-fem and gmsh versions")
+        super().__init__(option_strings, dest, nargs=0,
+                         help="print the versions of femcam, scikit-fem, gmsh and numpy")
 
     def __call__(self, parser, namespace, values, option_string=None):
         print(_versions())
         parser.exit()
 
 
-def build_parser() -> argparse.ArgumentParser:
-    """The ``femcam`` parser with one sub-parser per module of :data:`SUBCOMMANDS`.
+def add_verbosity(p, default=None) -> None:
+    """Add ``-q/--quiet`` and ``-v/--verbose`` (``args.verbosity``: -1, 0 or 1).
+
+    Parameters
+    ----------
+    p : argparse.ArgumentParser
+        The top-level parser (``default=0``) or a subcommand's (``argparse.SUPPRESS``, so
+        ``femcam -q sweep`` and ``femcam sweep -q`` both work).
+    default : object
+        The default of ``args.verbosity``.
+    """
+    g = p.add_mutually_exclusive_group()
+    g.add_argument("-q", "--quiet", dest="verbosity", action="store_const", const=-1,
+                   default=default, help="print nothing but errors and warnings (stderr), no progress")
+    g.add_argument("-v", "--verbose", dest="verbosity", action="store_const", const=1,
+                   default=default, help="log every phase on stderr, however short")
+
+
+def build_parser(only: str | None = "") -> argparse.ArgumentParser:
+    """The ``femcam`` parser with one sub-parser per entry of :data:`SUBCOMMANDS`.
+
+    Parameters
+    ----------
+    only : str or None
+        ``""`` (default): every subcommand, each module imported; a name: only that
+        subcommand is built (the others are listed by name and help); None: none is built
+        (``femcam --help``).
 
     Returns
     -------
     argparse.ArgumentParser
-        The parser; a subcommand module that does not exist yet is skipped.
+        The parser.
     """
     parser = argparse.ArgumentParser(
         prog="femcam",
         description="Finite-element contact-stress analysis of cam-follower mechanisms.",
     )
     parser.add_argument("--version", action=_VersionAction)
+    add_verbosity(parser, default=0)
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
-    for name in SUBCOMMANDS:
-        try:
-            mod = importlib.import_module(f".{name}", __name__)
-        except ModuleNotFoundError as exc:
-            if exc.name == f"{__name__}.{name}":
-                continue  # subcommand not implemented yet
-            raise
-        mod.register(sub)
+    for name, text in SUBCOMMANDS.items():
+        if only is None or (only and name != only):
+            sub.add_parser(name, help=text)  # listed in --help, not built
+            continue
+        importlib.import_module(f".{name}", __name__).register(sub)
+        _add_verbosity_below(sub.choices[name])
     return parser
+
+
+def _add_verbosity_below(p) -> None:
+    """:func:`add_verbosity` on ``p`` and on its own sub-parsers (``femcam wear map -q``)."""
+    add_verbosity(p, default=argparse.SUPPRESS)
+    for a in p._actions:
+        if isinstance(a, argparse._SubParsersAction):
+            for q in a.choices.values():
+                _add_verbosity_below(q)
+
+
+def _command(argv: list) -> str | None:
+    """The subcommand named in ``argv`` (the first word that is not a flag), or None."""
+    for a in argv:
+        if a in ("--version", "-h", "--help"):
+            return None  # a top-level flag before any subcommand
+        if not a.startswith("-"):
+            return a if a in SUBCOMMANDS else None
+    return None
 
 
 def main(argv=None) -> int:
@@ -96,9 +167,10 @@ def main(argv=None) -> int:
 
 def _main(argv) -> int:
     """:func:`main` inside the interruption handlers (:mod:`femcam._interrupt`)."""
-    parser = build_parser()
+    argv = _join_negative(sys.argv[1:] if argv is None else list(argv))
+    parser = build_parser(_command(argv))
     try:  # a numeric flag out of its range is refused while parsing (femcam.cli._flags)
-        args = parser.parse_args(_join_negative(sys.argv[1:] if argv is None else list(argv)))
+        args = parser.parse_args(argv)
     except FlagError as exc:
         print(f"{exc.prog}: error: {exc}", file=sys.stderr)
         return 1
@@ -106,8 +178,12 @@ def _main(argv) -> int:
         parser.print_help()
         return 2
     _interrupt.working()  # from here Ctrl-C / SIGTERM raise, so the cleanups of the work run
+    _progress.set_level(args.verbosity)
+    sink = open(os.devnull, "w") if args.verbosity < 0 else None  # noqa: SIM115 - closed below
+    quiet = contextlib.redirect_stdout(sink) if sink else contextlib.nullcontext()
     try:
-        code = int(args.func(args) or 0)
+        with quiet:  # --quiet: errors and warnings only (stderr), no summary, no progress
+            code = int(args.func(args) or 0)
         sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's final flush
         if code == 130 and _interrupt.last_signal is not None:  # the sweep's own Ctrl-C line
             code = _interrupt.EXIT_CODES[_interrupt.last_signal]
@@ -124,6 +200,10 @@ def _main(argv) -> int:
     except OSError as exc:  # the disk, not femcam: say which file and why
         print(f"femcam {args.command}: error: {os_error_line(exc)}", file=sys.stderr)
         return 1
+    finally:
+        _progress.set_level(None)
+        if sink is not None:
+            sink.close()
 
 
 def _quiet_broken_pipe() -> int:

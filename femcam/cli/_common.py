@@ -11,12 +11,12 @@ path, not a traceback after minutes of computing. :func:`os_error_line` is the t
 from __future__ import annotations
 
 import difflib
-import errno
 import os
 import re
 from pathlib import Path
 
 from .. import _validate
+from .._files import os_error_line  # noqa: F401  (re-exported for the subcommands)
 from ..errors import InputError
 from ..kinematics import LAW_NAMES
 from ..sweep.store import LOCK
@@ -179,26 +179,6 @@ def refuse_non_empty(path, overwrite: bool, *, resume: bool | None = None, what:
         if resume is not None else "--overwrite to replace its files"
     raise _validate.fail("--out", str(p), "", f"the directory is not empty; pass {hint}, or choose "
                          "another --out")
-
-
-def os_error_line(exc: OSError) -> str:
-    """The reason and the path(s) of an ``OSError`` on one line.
-
-    Parameters
-    ----------
-    exc : OSError
-        The error (``strerror``, ``filename``, ``filename2``).
-
-    Returns
-    -------
-    str
-        e.g. ``"No space left on device: 'DIR/sweep.csv'"`` (with a hint on a full disk).
-    """
-    why = exc.strerror or str(exc) or type(exc).__name__
-    if exc.errno == errno.ENOSPC:
-        why += " (free some space, then rerun; a sweep can continue with --resume)"
-    names = [repr(str(f)) for f in (exc.filename, exc.filename2) if f is not None]
-    return f"{why}: {' -> '.join(names)}" if names else why
 
 
 def plain(doc: str, paragraphs: int = 1) -> str:

@@ -20,6 +20,12 @@ from dataclasses import dataclass
 from .. import _validate
 from ..errors import InputError
 
+#: the one rule of every START:STOP:STEP flag (--angles-deg, --rpm-sweep, study --vary): the
+#: stop is included when it falls on the grid (to 1e-9 of a step); an angle range spanning whole
+#: turns drops its stop, the same cam position as its start (femcam._validate.angles_deg)
+RANGE_RULE = ("START:STOP:STEP, stop included when it falls on the grid (an angle range of "
+              "whole turns drops it: the same cam position as START)")
+
 
 class FlagError(InputError):
     """A flag value out of its range, raised while parsing; ``prog`` is ``femcam <command>``."""

@@ -24,6 +24,7 @@ from ..scene import load_scene
 from ..viz.assess import plot_assessment, report_markdown
 from ..viz.html import markdown_page
 from ._common import add_no_plots, add_overwrite, add_scene_out, out_dir, plain, refuse_non_empty
+from ._flags import RANGE_RULE
 
 
 def register(subparsers) -> None:
@@ -38,7 +39,8 @@ def register(subparsers) -> None:
                               description=plain(__doc__))
     add_scene_out(p, "scene file (with [lubricant], [surface], ...)")
     p.add_argument("--angles-deg", default="0:360:1", metavar="START:STOP:STEP",
-                   help="cam angles in degrees, stop exclusive (default 0:360:1)")
+                   help=f"cam angles in degrees, {RANGE_RULE}: 0:360:1 is 0 to 359, 0:90:30 is 0 to 90 "
+                        "(default 0:360:1)")
     p.add_argument("--sweep", default=None, metavar="SWEEP_DIR",
                    help="use the angles and FE a/p0 of a finished sweep (SWEEP_DIR/sweep.npz)")
     add_no_plots(p)

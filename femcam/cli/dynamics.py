@@ -5,7 +5,7 @@ scene with ``[dynamics] model = "one_dof"`` or ``"two_dof"``. It writes ``DIR/dy
 (theta_deg, s_mm, Fc_rigid_N, Fc_N (axial), liftoff, error_um per mass; provenance in the sidecar
 ``DIR/dynamics.csv-metadata.json``)
 and ``DIR/dynamics_force.png``; with ``--rpm-sweep`` also ``DIR/rpm_sweep.csv``,
-``DIR/rpm_sweep.png`` and the jump speed within the range (rpm, stop inclusive).
+``DIR/rpm_sweep.png`` and the jump speed within the range (rpm, stop included when on the grid).
 """
 
 from __future__ import annotations
@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import _validate
+from .._progress import phase
 from ..dynamics import jump_speed, rpm_sweep
 from ..dynamics.jump import MAX_SPEEDS, speeds_problem
 from ..errors import InputError
@@ -25,7 +26,7 @@ from ..io import provenance, write_table
 from ..scene import load_scene
 from ..viz.dynamics import plot_force, plot_rpm_sweep
 from ._common import add_no_plots, add_overwrite, add_scene_out, cap_workers, out_dir, plain, refuse_non_empty
-from ._flags import Range, add_number
+from ._flags import RANGE_RULE, Range, add_number
 
 
 def register(subparsers) -> None:
@@ -40,7 +41,8 @@ def register(subparsers) -> None:
                               description=plain(__doc__))
     add_scene_out(p, "scene with [dynamics] model = one_dof or two_dof")
     p.add_argument("--rpm-sweep", metavar="START:STOP:STEP", default=None,
-                   help="also sweep the cam speed (rpm, stop inclusive) and find the jump speed")
+                   help="also sweep the cam speed (rpm) and find the jump speed; "
+                        f"{RANGE_RULE}: 4200:4600:200 is 4200, 4400, 4600 rpm")
     add_number(p, "--workers", Range("processes", 1, 1024, whole=True), default=1, metavar="N",
                help="processes for the rpm sweep (default 1; capped at the CPU cores and "
                     "the number of speeds)")
@@ -137,8 +139,9 @@ def run(args) -> int:
         workers, note = _useful_workers(workers, rpm.size)
         if note:
             print(f"  {note}")
-        sw = rpm_sweep(scene.train, scene.program, rpm, steps_per_rev=scene.steps_per_rev,
-                       workers=workers)
+        with phase(f"dynamics: rpm sweep over {rpm.size} speeds"):
+            sw = rpm_sweep(scene.train, scene.program, rpm, steps_per_rev=scene.steps_per_rev,
+                           workers=workers)
         j = jump_speed(scene.train, scene.program, rpm[0], rpm[-1],
                        steps_per_rev=scene.steps_per_rev)
         print(f"  rpm sweep {rpm[0]:g}..{rpm[-1]:g} rpm ({rpm.size} speeds): {j.message}; rigid "

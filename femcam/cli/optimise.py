@@ -14,6 +14,7 @@ import math
 import shlex
 import sys
 
+from .._progress import phase
 from ..io import provenance
 from ..optimise import OBJECTIVES, BezierRise, compare_laws, optimise
 from ..optimise.outputs import parse_vary, write_outputs
@@ -74,8 +75,9 @@ def _run(args) -> int:
             cons[key] = getattr(args, key)
     if args.liftoff_rpm is not None:
         cons["liftoff_omega"] = args.liftoff_rpm * math.pi / 30.0
-    res = optimise(scene, objective=args.objective, variables=variables, constraints=cons, starts=args.starts,
-                   bezier=bez, verify_fe=not args.no_fe)
+    with phase("optimise: starts"):
+        res = optimise(scene, objective=args.objective, variables=variables, constraints=cons,
+                       starts=args.starts, bezier=bez, verify_fe=not args.no_fe)
     table = compare_laws(scene, optimum=res, constraints=cons)
     out = out_dir(args.out)
     prov = provenance(scene_path=args.scene, command=shlex.join(["femcam", "optimise", *sys.argv[2:]]))

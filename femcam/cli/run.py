@@ -31,7 +31,7 @@ from ._common import (
     plain,
     refuse_non_empty,
 )
-from ._flags import Range, add_number
+from ._flags import RANGE_RULE, Range, add_number
 
 #: the analytic chain's columns, named and scaled as in the sweep table (one copy of each
 #: column's unit: :data:`femcam.sweep.result.COLUMNS`)
@@ -65,7 +65,8 @@ def register(subparsers) -> None:
     add_scene_out(p, "scene file (see examples/)", out_required=False,
                   out_help="output directory (default: femcam-out/<scene name>)")
     p.add_argument("--angles-deg", default="0:360:0.5", metavar="START:STOP:STEP",
-                   help="cam angles in degrees, stop exclusive (default 0:360:0.5)")
+                   help=f"cam angles in degrees, {RANGE_RULE}: 0:360:1 is 0 to 359, 0:90:30 is 0 to 90 "
+                        "(default 0:360:0.5)")
     add_number(p, "--print-every-deg", PRINT_STEP, default=10.0, metavar="STEP",
                help="angle step of the printed table in degrees (default 10); the CSV has all")
     add_law_override(p)

@@ -23,6 +23,7 @@ import os
 import shlex
 
 from .. import _validate
+from .._progress import phase
 from ..study import OBJECTIVES, Constraints, EvalOptions, FEOptions, StudySpec, run_study
 from ..study.spec import MAX_VARIANTS
 from ._common import add_overwrite, add_scene_out, out_dir, plain, refuse_non_empty
@@ -133,10 +134,11 @@ def _run(args) -> int:
     refuse_non_empty(out, args.overwrite, resume=args.resume, what="study")  # every subcommand's rule
     fe = FEOptions(top=args.fe_top, select=args.fe_select, offsets=_offsets(args.fe_angles_deg))
     opts = EvalOptions(n_angles=args.angles_per_rev, wear=args.wear)
-    res = run_study(args.scene, spec, constraints=cons, options=opts, fe=fe,
-                    objective=_OBJECTIVE[args.objective], out=out, resume=args.resume,
-                    overwrite=args.overwrite, scheduler=args.scheduler, workers=workers,
-                    plots=not args.no_plots, command=_command_line(args))
+    with phase("study: variants"):
+        res = run_study(args.scene, spec, constraints=cons, options=opts, fe=fe,
+                        objective=_OBJECTIVE[args.objective], out=out, resume=args.resume,
+                        overwrite=args.overwrite, scheduler=args.scheduler, workers=workers,
+                        plots=not args.no_plots, command=_command_line(args))
     print(res.summary())
     for kind, path in res.paths.items():
         print(f"{kind}: {path}")

@@ -1,9 +1,9 @@
 """``femcam sweep SCENE.toml --out DIR``: the FE (or Hertz) sweep over cam angle.
 
 Writes DIR/sweep.csv (units in the column names; provenance in DIR/sweep.csv-metadata.json),
-DIR/sweep.npz (SI, plus the scene file's text), DIR/scene.toml (a copy of the scene file),
-DIR/chunks/ (the resumable store), DIR/sweep.pvd + DIR/vtk/*.vtu (every 10th angle by default;
---vtk-every K) and PNG plots in DIR/plots/ (unless --no-plots).
+DIR/sweep.npz (SI, plus the scene file's text), DIR/scene.toml (a copy of the scene file with
+--law written into it), DIR/chunks/ (the resumable store), DIR/sweep.pvd + DIR/vtk/*.vtu
+(every 10th angle by default; --vtk-every K) and PNG plots in DIR/plots/ (unless --no-plots).
 
 Settings: a flag given on the command line wins; else the scene's [fe] a_over_h, tolerance and
 [sweep] method, angles_deg, chunk_size, vtk_every, plots; else the defaults shown below.
@@ -34,7 +34,7 @@ from ._common import (
     plain,
     refuse_non_empty,
 )
-from ._flags import Range, add_number
+from ._flags import RANGE_RULE, Range, add_number
 
 
 def register(subparsers) -> None:
@@ -51,7 +51,8 @@ def register(subparsers) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter)
     add_scene_out(p)
     p.add_argument("--angles-deg", default=None, metavar="START:STOP:STEP",
-                   help="cam angles in degrees, stop exclusive " + _default_text("angles_deg")
+                   help=f"cam angles in degrees, {RANGE_RULE}: 0:360:1 is 0 to 359, 0:90:30 is 0 to 90 "
+                   + _default_text("angles_deg")
                    + "; a negative start is accepted (--angles-deg -360:0:30)")
     add_number(p, "--workers", Range("processes", 1, 1024, whole=True, words=("auto",)),
                default="auto", metavar="N|auto",
@@ -82,7 +83,8 @@ def register(subparsers) -> None:
                    help="write the PNG plots " + _default_text("plots"))
     p.add_argument("--no-plots", dest="plots", action="store_false", help="skip the PNG plots")
     p.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
-                   help="progress bar on stderr (auto: only on a terminal)")
+                   help="progress on stderr: a bar on a terminal, plain lines elsewhere (auto: on unless "
+                        "-q; off: none)")
     # a test aid (not shown in --help): sleep after each chunk, so that a test can kill the
     # sweep between chunks deterministically
     add_number(p, "--chunk-delay-s", Range("s", 0.0, 60.0), default=0.0, help=argparse.SUPPRESS)

@@ -22,6 +22,7 @@ import sys
 import numpy as np
 
 from .. import io
+from .._progress import phase
 from ..errors import ConvergenceError, InputError
 from ..kinematics import LAW_NAMES
 from ..profile import KnifeEdgeFollower, min_base_radius
@@ -149,7 +150,8 @@ def run(args) -> int:
     MAX_ITER.parse("--max-iter", args.max_iter)
     opt = SynthesisOptions(n_elements=args.elements, k=args.k, mu=args.mu, max_iter=args.max_iter)
     try:
-        res = synthesize_knife_edge(program, Rb=Rb, options=opt)
+        with phase("synth: potential-energy FE"):
+            res = synthesize_knife_edge(program, Rb=Rb, options=opt)
     except ConvergenceError as exc:   # one message, ending with the last residuals
         raise ConvergenceError(f"{exc} (Rb = {Rb * 1e3:.6g} mm); {_residual_tail(exc.history)}",
                                exc.history) from None

@@ -29,6 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import _validate
+from .._progress import phase
 from ..assess import wear_factor
 from ..errors import InputError
 from ..halfspace.rows import has_finite_length
@@ -175,8 +176,9 @@ def _map(args) -> int:
             fe = sweep(_fe_scene(sc, tip), angles=theta, method="fe",
                        progress=None, **sc.fe)  # the scene's [fe] settings; progress on a terminal
         k_factor, regime = wear_factor(sc, theta, fe.table if fe is not None else None, tip)
-        wm, st, slip = scene_wear_map(sc, theta, cycles=cycles, tip_radius=tip, fe=fe,
-                                      k_factor=k_factor, regime=regime)  # the axial peak if crowned
+        with phase(f"wear map: {label}"):
+            wm, st, slip = scene_wear_map(sc, theta, cycles=cycles, tip_radius=tip, fe=fe,
+                                          k_factor=k_factor, regime=regime)  # axial peak if crowned
         results[label] = (wm, st, slip)
         _write_angle_csv(out / f"wear_{label}.csv", head, theta, cycles, wm, st, slip)
         _write_surface_csv(out / f"wear_{label}_surface.csv", head, cycles, wm)
@@ -301,7 +303,8 @@ def _plots(scene, results, out) -> None:
 
 def _evolution(scene, label, theta, cycles, args, out, head) -> None:
     """``--evolve-blocks K``: convergence table CSV and evolved-vs-linear PNG of one law."""
-    ct = convergence_table(evolution_case(scene, theta), cycles, args.evolve_blocks)
+    with phase("wear map: profile evolution"):
+        ct = convergence_table(evolution_case(scene, theta), cycles, args.evolve_blocks)
     header, rows = ct.rows()
     fin = ct.finest
     write_rows(out / f"wear_{label}_evolution.csv", header, rows,

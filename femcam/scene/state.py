@@ -201,6 +201,9 @@ class Scene:
     sweep: dict = field(default_factory=dict)
     tip_radius: float | None = None
     face_length: float | None = None
+    #: what the program was changed to after loading (:meth:`with_law`): ``{"law": name, **params}``,
+    #: written into the copy of the scene file a sweep keeps (femcam.scene.override)
+    overrides: dict = field(default_factory=dict, repr=False, compare=False)
 
     @property
     def rpm(self) -> float:
@@ -359,4 +362,5 @@ class Scene:
         """
         lw = law(name, **params)
         segs = [s if s.law is None else dataclasses.replace(s, law=lw) for s in self.program.segments]
-        return dataclasses.replace(self, program=CamProgram(segs))
+        return dataclasses.replace(self, program=CamProgram(segs),
+                                   overrides={**self.overrides, "law": name, **params})

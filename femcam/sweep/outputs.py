@@ -15,6 +15,7 @@ from ..errors import FemcamError, InputError
 from ..hertz.conformity import shape_factors
 from ..io import atomic_write_text, vtu_name, write_csv, write_npz, write_pvd
 from ..scene import Scene
+from ..scene.override import with_overrides
 from ..viz.animate import animate_pvd
 from ..viz.sweep import plot_sweep
 from .cache import default_cache
@@ -79,9 +80,13 @@ def scene_source(scene, scene_path):
     for p in (scene_path, scene.source_path):
         if p and Path(p).is_file():
             try:
-                return Path(p), Path(p).read_text(encoding="utf-8")
+                text = Path(p).read_text(encoding="utf-8")
             except (OSError, UnicodeDecodeError):
                 return Path(p), ""
+            ov = dict(scene.overrides)  # e.g. --law: the copy must reproduce the run
+            if ov.get("law"):
+                text = with_overrides(text, {}, law=ov.pop("law"), control_points=ov.get("control_points"))
+            return Path(p), text
     return None, ""
 
 
@@ -203,9 +208,8 @@ def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None
         if not (copy.exists() and copy.resolve() == Path(src_path).resolve()):
             atomic_write_text(copy, src_text)
         paths["scene"] = str(copy)
-        prov["scene_copy"] = (f"{copy.name} (copy of {src_path}; the sweep used the parsed scene "
-                              "recorded as scene_repr in sweep.npz, which differs from the file "
-                              "only if it was changed in code, e.g. --law)")
+        prov["scene_copy"] = (f"{copy.name} (copy of {src_path} with the overrides of the run, e.g. "
+                              "--law, written into it: sweeping it again reproduces the run)")
     result = replace(result, provenance=prov)
     if plots:
         result = with_plot_data(result, run)

@@ -19,7 +19,6 @@ expected work.
 
 from __future__ import annotations
 
-import contextlib
 import dataclasses
 import multiprocessing
 import os
@@ -33,6 +32,7 @@ from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
 from .. import _validate
+from .._progress import Progress  # noqa: F401  (re-exported: femcam.sweep.Progress)
 from .._threads import limit_blas_threads
 from ..errors import InputError
 from ..io import atomic_write_bytes
@@ -256,106 +256,3 @@ def _write_back(task, files: dict) -> None:
     root.mkdir(parents=True, exist_ok=True)
     for name, data in files.items():
         atomic_write_bytes(root / name, lambda f, d=data: f.write(d))
-
-
-class Progress:
-    """A one-line progress bar on stderr, shown only when stderr is a TTY (no tqdm needed).
-
-    :meth:`phase` shows the elapsed time of a phase without a count (model families, output
-    files, plots) once it has lasted ``delay_s`` (1 s): short phases stay silent.
-
-    Parameters
-    ----------
-    total : int
-        Number of angles of the whole bar (0: no bar).
-    label : str
-        Text before the bar.
-    enabled : bool, optional
-        Show the bar and the phases; default: only when ``stream`` is a TTY.
-    stream : file-like, optional
-        Where to write (default ``sys.stderr``).
-    delay_s : float
-        How long a phase lasts before it is shown [s].
-    """
-
-    def __init__(self, total: int, label: str = "sweep", enabled: bool | None = None,
-                 stream=None, delay_s: float = 1.0):
-        total = _validate.integer("total", total, 0, "steps")
-        delay_s = _validate.nonnegative("delay_s", delay_s, "s")
-        self.stream = stream or sys.stderr
-        if enabled is None:
-            enabled = bool(getattr(self.stream, "isatty", lambda: False)())
-        self.on = bool(enabled)
-        self.delay_s = float(delay_s)
-        self.enabled = enabled and total > 0
-        self.total, self.done, self.label = total, 0, label
-        self.t0 = time.perf_counter()
-
-    def update(self, n: int) -> None:
-        """``n`` more angles are done: redraw the bar.
-
-        Parameters
-        ----------
-        n : int
-            Angles finished since the last update.
-        """
-        self.done += n
-        if not self.enabled:
-            return
-        frac = min(1.0, self.done / self.total)
-        width = 30
-        bar = "#" * int(round(frac * width))
-        el = time.perf_counter() - self.t0
-        eta = el / frac - el if frac > 0 else float("nan")
-        self.stream.write(f"\r{self.label} [{bar:<{width}}] {self.done}/{self.total} angles "
-                          f"{el:5.1f} s, eta {eta:5.1f} s")
-        self.stream.flush()
-
-    def close(self) -> None:
-        """End the bar's line."""
-        if self.enabled:
-            self.stream.write("\n")
-            self.stream.flush()
-
-    @contextlib.contextmanager
-    def phase(self, label: str, period_s: float = 0.25):
-        """Context manager: ``label ... 3.2 s`` redrawn every ``period_s`` once the phase has
-        lasted ``delay_s``, then ``label: 4.1 s`` on its own line (nothing for a short phase).
-
-        Parameters
-        ----------
-        label : str
-            Name of the phase.
-        period_s : float
-            Redraw period [s].
-
-        Yields
-        ------
-        None
-            The body of the ``with`` block runs while the timer is shown.
-        """
-        if not self.on:
-            yield
-            return
-        stop, shown, t0 = threading.Event(), [False], time.perf_counter()
-
-        def tick():
-            if stop.wait(self.delay_s):
-                return
-            while True:
-                shown[0] = True
-                self.stream.write(f"\r{label} ... {time.perf_counter() - t0:5.1f} s")
-                self.stream.flush()
-                if stop.wait(period_s):
-                    return
-
-        th = threading.Thread(target=tick, daemon=True, name="femcam-progress")
-        th.start()
-        try:
-            yield
-        finally:
-            stop.set()
-            th.join()
-            if shown[0]:
-                self.stream.write(f"\r{label}: {time.perf_counter() - t0:5.1f} s\n")
-                self.stream.flush()

@@ -39,8 +39,9 @@ ANALYTIC_BLOCK = 20_000  # angles per Scene.analyse call in the analytic phase (
 
 
 def parse_angles_deg(spec: str) -> np.ndarray:
-    """``"start:stop:step"`` in degrees (stop exclusive, like ``numpy.arange``) -> radians
-    (:func:`femcam._validate.angles_deg` for the flag ``--angles-deg``).
+    """``"start:stop:step"`` in degrees -> radians: the stop included when it falls on the
+    grid, dropped for a range of whole turns (:func:`femcam._validate.angles_deg` for the flag
+    ``--angles-deg``).
 
     Parameters
     ----------
@@ -53,7 +54,7 @@ def parse_angles_deg(spec: str) -> np.ndarray:
         Cam angles (rad).
 
     >>> np.degrees(parse_angles_deg("0:90:30")).round(6).tolist()
-    [0.0, 30.0, 60.0]
+    [0.0, 30.0, 60.0, 90.0]
     """
     return _validate.angles_deg("--angles-deg", spec)
 
@@ -160,11 +161,12 @@ def _interrupt_message(run: SweepRun) -> str:
 
 
 def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) -> SweepResult:
-    _analytic(run)
+    talk = Progress(0, enabled=progress)
+    with talk.phase(f"analytic chain ({run.angles.size} angles)"):
+        _analytic(run)
     t_analytic = time.perf_counter() - t_start
     _open_store(run)
     t0 = time.perf_counter()
-    talk = Progress(0, enabled=progress)
     with talk.phase("model families: build and verify"):
         _plan(run)
     t_verify = time.perf_counter() - t0
