@@ -67,7 +67,7 @@ def _run(args) -> int:
                 title="femcam assess: one row per cam angle")
     summary = {"scene": scene.name, "n_angles": int(len(theta)),
                "worst": {c: {"value": v, "theta_deg": math.degrees(t)} for c, (v, t, _) in res.worst.items()},
-               "skipped": list(res.notes), "provenance": prov}
+               "skipped": list(res.notes), "omitted": list(res.omitted), "provenance": prov}
     (out / "summary.json").write_text(json.dumps(summary, indent=1, default=str))
     plots = {}
     if not args.no_plots:
@@ -82,6 +82,8 @@ def _run(args) -> int:
         print(f"{crit:>22s}: worst {v:.4g} at {math.degrees(t):6.1f} deg")
     for n in res.notes:
         print(f"note: {n}")
+    for o in res.omitted:
+        print(f"note: {o}")
     print(f"wrote {out / 'assessment.csv'}, {out / 'summary.json'}, {out / 'report.md'}, "
           f"{out / 'report.html'}")
     return 0

@@ -218,6 +218,8 @@ def report_markdown(assessment, plots: dict, *, title: str = "", provenance: str
             flags[name] = flags.get(name, 0) + 1
     lines += ["", "Flags (angles computed outside a formula's range of validity): "
               + (", ".join(f"{k} at {v} angles" for k, v in flags.items()) or "none") + "."]
+    for o in getattr(a, "omitted", ()):
+        lines += ["", f"**Not modelled:** {o}."]
     if a.notes:
         lines += ["", "Skipped: " + "; ".join(a.notes) + "."]
     lines += [""]
