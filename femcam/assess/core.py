@@ -410,6 +410,10 @@ def assess(scene, theta=None, *, table=None, lubricated: bool = True) -> Assessm
     rows = assess_rows(scene, theta, table, inputs=inp)
     notes = tuple(f"{crit}: skipped, needs {', '.join(keys)}" for crit, keys in inp.skipped.items())
     fe_rows = np.asarray(rows["source"]) == "fe"
+    if table is not None and not np.all(fe_rows):
+        notes += (f"contact: {int(np.sum(~fe_rows))} of {fe_rows.size} angles fall back to Hertz (the sweep "
+                  "table has no finite positive a_fe, p0_fe there: a Hertz-method sweep, or rows the FE "
+                  "did not answer); the source column says which",)
     if np.any(fe_rows) and "txz_range_max" not in getattr(table, "table", table):
         notes += ("subsurface fatigue: the sweep table has no txz_range_max (a sweep written before "
                   "femcam computed the FE range of txz over one pass): dtau_orth is Hertz's range "

@@ -218,6 +218,10 @@ def report_markdown(assessment, plots: dict, *, title: str = "", provenance: str
             flags[name] = flags.get(name, 0) + 1
     lines += ["", "Flags (angles computed outside a formula's range of validity): "
               + (", ".join(f"{k} at {v} angles" for k, v in flags.items()) or "none") + "."]
+    src, nsrc = np.unique(np.asarray(r.get("source", ())).astype(str), return_counts=True)
+    if src.size:
+        lines += ["", "Contact source (source column): "
+                  + ", ".join(f"{g} at {c} angles" for g, c in zip(src, nsrc, strict=True)) + "."]
     for o in getattr(a, "omitted", ()):
         lines += ["", f"**Not modelled:** {o}."]
     if a.notes:
