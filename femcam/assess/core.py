@@ -245,7 +245,8 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
     inp = inputs or assessment_inputs(scene, lubricated=lubricated)
     table = getattr(table, "table", table)                   # a SweepResult or its table mapping
     theta = np.atleast_1d(_validate.finite_array("theta", theta, "rad"))
-    n = theta.size
+    n = _validate.angle_count("theta", f"{theta.size} angles", theta.size, 3600.0, "the assessment",
+                              _validate.MAX_ASSESS_ANGLES)
     sc, R2, tip = _geometry(scene)
     st = sc.analyse(theta)
     Fc, a, p0, w, R, E_star, valid, source = _contact(sc, st, R2, table, n)

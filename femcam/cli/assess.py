@@ -59,6 +59,9 @@ def _run(args) -> int:
     scene = load_scene(args.scene)
     table = _sweep_table(args.sweep, scene) if args.sweep else None
     theta = table["theta"] if table is not None else _validate.angles_deg("--angles-deg", args.angles_deg)
+    _validate.angle_count("--sweep" if table is not None else "--angles-deg",
+                          args.sweep if table is not None else args.angles_deg, theta.size, 3600.0,
+                          "femcam assess", _validate.MAX_ASSESS_ANGLES)
     refuse_non_empty(args.out, args.overwrite)  # the rule of every subcommand, before the work
     res = assess(scene, theta, table=table)
     out = out_dir(args.out)
