@@ -277,8 +277,10 @@ def _verify_fe(scene, theta_worst: float) -> FECheck:
     try:
         r = sweep(scene, angles=theta, method="fe", workers=1, progress=False, plots=False)
     except FemcamError as exc:
+        reason = " ".join(str(exc).split())       # the mesher's/solver's own text, on one line
         return FECheck(theta=tuple(theta), p0_hertz=(), p0_fe=(), rel_diff=math.nan, status=(),
-                       message=f"FE sweep failed: {exc}")
+                       message=f"the FE check of the optimum failed: the FE model of the optimal design "
+                       f"could not be built or solved ({type(exc).__name__}: {reason})")
     ph = np.asarray(r.table["p0_hertz"], float)
     pf = np.asarray(r.table["p0_fe"], float)
     rel = float(np.nanmax(np.abs(pf / ph - 1.0))) if np.any(np.isfinite(pf)) else math.nan
