@@ -179,6 +179,21 @@ def radius_array(name: str, value, unit: str = "m") -> np.ndarray:
     return arr
 
 
+def broadcast(**named) -> tuple:
+    """The arrays ``named`` (name -> ndarray) broadcast against each other, or an InputError
+    naming the parameters and their shapes (never numpy's "operands could not be broadcast").
+
+    >>> [a.shape for a in broadcast(s=np.zeros(3), Rb=np.asarray(0.01))]
+    [(3,), (3,)]
+    """
+    try:
+        return tuple(np.broadcast_arrays(*named.values()))
+    except ValueError:
+        shapes = ", ".join(f"{k} has shape {np.shape(v)}" for k, v in named.items())
+        raise InputError(f"{', '.join(named)}: {shapes}: they do not broadcast (give one value, or one "
+                         "per element of the others)") from None
+
+
 def radius(name: str, value, unit: str = "m") -> float:
     """One signed radius of curvature (see :func:`radius_array`) as a ``float``."""
     arr = radius_array(name, value, unit)
