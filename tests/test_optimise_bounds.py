@@ -55,3 +55,21 @@ def test_a_failed_fe_check_is_one_line_and_not_a_success(tmp_path, capsys, monke
     rb = float(cap.out.split("  base_radius_mm = ")[1].split()[0])
     assert 10.0 <= rb <= 30.0
     assert json.loads((out / "optimum.json").read_text())                       # still written
+
+
+def test_a_failed_fe_row_is_said_in_one_line(tmp_path, capsys, monkeypatch):
+    import numpy as np
+
+    class Failed:   # a sweep whose middle row the mesher refused (as a sweep reports it)
+        table = {"p0_hertz": np.array([1e9, 1e9, 1e9]), "p0_fe": np.array([1e9, np.nan, 1e9]),
+                 "status": np.array(["ok", "failed", "ok"]),
+                 "message": np.array(["", "MeshError: Circle or ellipse arc 1\ngreater than Pi", ""])}
+
+    monkeypatch.setattr(solve, "sweep", lambda *a, **k: Failed())
+    out = tmp_path / "o"
+    rc = main(["optimise", str(SCENE), "--vary", "base_radius_mm=10:30", "--starts", "1", "--out", str(out)])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert rc == 1 and len(err) == 1, err
+    assert "the FE check of the optimum failed at 1 of 3 angles" in err[0]
+    assert "Circle or ellipse arc 1 greater than Pi" in err[0]
+    assert (out / "optimum.json").is_file()
