@@ -225,7 +225,7 @@ def report_markdown(assessment, plots: dict, *, title: str = "", provenance: str
     for o in getattr(a, "omitted", ()):
         lines += ["", f"**Not modelled:** {o}."]
     if a.notes:
-        lines += ["", "Skipped: " + "; ".join(a.notes) + "."]
+        lines += ["", "Notes (criteria skipped, fallbacks): " + "; ".join(a.notes) + "."]
     lines += [""]
     for name, path in plots.items():
         link = os.path.relpath(path, base) if base is not None else str(path)
