@@ -179,6 +179,21 @@ def radius_array(name: str, value, unit: str = "m") -> np.ndarray:
     return arr
 
 
+def broadcast(**named) -> tuple:
+    """The arrays ``named`` (name -> ndarray) broadcast against each other, or an InputError
+    naming the parameters and their shapes (never numpy's "operands could not be broadcast").
+
+    >>> [a.shape for a in broadcast(s=np.zeros(3), Rb=np.asarray(0.01))]
+    [(3,), (3,)]
+    """
+    try:
+        return tuple(np.broadcast_arrays(*named.values()))
+    except ValueError:
+        shapes = ", ".join(f"{k} has shape {np.shape(v)}" for k, v in named.items())
+        raise InputError(f"{', '.join(named)}: {shapes}: they do not broadcast (give one value, or one "
+                         "per element of the others)") from None
+
+
 def radius(name: str, value, unit: str = "m") -> float:
     """One signed radius of curvature (see :func:`radius_array`) as a ``float``."""
     arr = radius_array(name, value, unit)
@@ -241,6 +256,51 @@ def workers(name: str, value) -> int | str:
     if w < 1 or w != int(w):
         raise fail(name, value, "processes", "must be an integer >= 1 or 'auto'")
     return int(w)
+
+
+#: most cam angles one call of Scene.analyse / femcam run computes at once (the sweep analyses in
+#: blocks and is not bound by it); bytes per angle measured at 1e5 angles (seed002_assess.toml):
+#: Scene.analyse 241 B peak (tracemalloc), `femcam run` ~0.8 kB of process memory (RSS growth
+#: from 1e4 to 1e5 angles, tables and plots included)
+MAX_ANGLES = 1_000_000
+#: most angles of one assessment: ~3.6 kB per angle of process memory for `femcam assess`
+#: (RSS growth 1e4 -> 1e5 angles: per-angle text flags, CSV), 633 B peak in assess() itself
+MAX_ASSESS_ANGLES = 400_000
+
+
+def angle_count(name: str, value, n: int, bytes_per_angle: float, what: str,
+                cap: int = MAX_ANGLES) -> int:
+    """Refuse ``n`` angles above ``cap`` before any work, with the memory estimate.
+
+    Parameters
+    ----------
+    name : str
+        Parameter or flag for the message (``"theta"``, ``"--angles-deg"``).
+    value : object
+        The value as the user gave it (the ``START:STOP:STEP`` text, or ``"N angles"``).
+    n : int
+        Number of angles asked for.
+    bytes_per_angle : float
+        Measured memory per angle of ``what`` [B].
+    what : str
+        The computation (``"femcam run"``, ``"Scene.analyse"``).
+    cap : int
+        Largest accepted number of angles.
+
+    Returns
+    -------
+    int
+        ``n``.
+
+    >>> angle_count("theta", "10 angles", 10, 241.0, "Scene.analyse")
+    10
+    """
+    if n > cap:
+        raise fail(name, value, "deg" if name.endswith("-deg") else "",
+                   f"{n:,} angles, more than the {cap:,} that {what} computes at once: it would need "
+                   f"~{n * bytes_per_angle / 1e9:.2g} GB ({bytes_per_angle:g} B per angle, measured at "
+                   "1e5 angles); use a coarser step (0:360:0.001 is 360,000 angles)")
+    return n
 
 
 def angles_deg(name: str, spec, max_angles: int = 10_000_000) -> np.ndarray:

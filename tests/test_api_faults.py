@@ -52,6 +52,12 @@ MISSING = ("str", "none", "strlist", "inf")  # data where NaN documents a missin
 INT = ("str", "none", "strlist", "nan", "inf", 2.5)
 INT_POS = INT + ("neg", "zero")
 INT_NONNEG = INT + ("neg",)
+#: "numlist": a list of two valid numbers, given where the call's other arguments are arrays of
+#: another length (or the parameter is a scalar): numpy would raise its own TypeError or broadcast
+#: ValueError ("can't multiply sequence", "operands could not be broadcast") unless the function
+#: converts and broadcasts its inputs itself (issue 29 review: the kinds above never held a list
+#: of numbers, so half_width(1e5, [0.005, 0.01], ...) and flat_face_radius(..., Rb=[...]) slipped)
+NUMLIST = ("numlist",)
 
 
 def opt(kinds):
@@ -322,9 +328,10 @@ CASES: dict[str, Case] = {
         lazy(lambda: dict(F=1500.0, length=0.01, R1=0.02, R2=0.01, cam=steel(),
                           roller=steel(), mu=0.1)),
         {"F": NONNEG, "length": POS, "R1": RADIUS, "R2": RADIUS, "mu": NONNEG}),
-    "femcam.hertz.effective_radius": Case(kw(R1=0.02, R2=0.01), {"R1": RADIUS, "R2": RADIUS}),
-    "femcam.hertz.half_width": Case(kw(w=1.5e5, R=0.0067, E_star=1.15e11),
-                                    {"w": NONNEG, "R": POS, "E_star": POS}),
+    # R2 = -R1: equal and opposite radii, a conformal contact with no Hertz answer
+    "femcam.hertz.effective_radius": Case(kw(R1=0.02, R2=0.01), {"R1": RADIUS, "R2": RADIUS + (-0.02,)}),
+    "femcam.hertz.half_width": Case(kw(w=ARR * 1.5e8, R=0.0067, E_star=1.15e11),
+                                    {"w": NONNEG, "R": POS + NUMLIST, "E_star": POS + NUMLIST}),
     "femcam.hertz.hertz_pressure": Case(kw(x=ARR, a=1e-4, p0=1e9),
                                         {"x": REAL, "a": NONNEG, "p0": NONNEG}),
     "femcam.hertz.max_orthogonal_shear": Case(kw(mu=0.1), {"mu": NONNEG}),
@@ -394,7 +401,7 @@ CASES: dict[str, Case] = {
         {"theta": REAL, "s": REAL, "s1": REAL, "s2": REAL}),
     "femcam.profile.flat_face_radius": Case(
         lazy(lambda: dict(s=state().s, s2=state().s2, Rb=0.02)),
-        {"s": REAL, "s2": REAL, "Rb": POS}),
+        {"s": REAL, "s2": REAL, "Rb": POS + NUMLIST}),
     "femcam.profile.make_follower": Case(kw(kind="roller", Rb=0.01, Rr=0.01),
                                          {"Rb": POS, "Rr": POS, "e": REAL}),
     "femcam.optimise.optimise": Case(
@@ -507,19 +514,19 @@ CASES: dict[str, Case] = {
         kw(mu=0.1, w=1.5e5, a=1e-4, u1=1.0, u2=0.9, beta1=1.2e4, beta2=1.2e4),
         {"mu": NONNEG, "w": NONNEG, "a": NONNEG, "u1": REAL, "u2": REAL, "beta1": POS,
          "beta2": POS, "C": POS}),
-    "femcam.tribology.greenwood_tripp": Case(kw(n=2.5, lam=1.0), {"lam": REAL, "n": NONNEG}),
+    "femcam.tribology.greenwood_tripp": Case(kw(n=2.5, lam=1.0), {"lam": NONNEG, "n": NONNEG}),
     "femcam.tribology.lubrication_regime": Case(kw(lam=ARR * 1e3), {"lam": NONNEG}),
     "femcam.tribology.orthogonal_shear_range": Case(kw(mu=0.1), {"mu": NONNEG}),
     "femcam.tribology.peclet": Case(kw(u=1.0, a=1e-4, kappa=1.2e-5),
                                     {"u": REAL, "a": NONNEG, "kappa": POS}),
     "femcam.tribology.scuffing_safety": Case(kw(T_scuff=300.0, T_bulk=80.0, dT_flash=50.0),
-                                             {"T_scuff": REAL, "T_bulk": REAL,
+                                             {"T_scuff": REAL + ("neg",), "T_bulk": REAL,
                                               "dT_flash": NONNEG}),
     "femcam.tribology.shakedown_limit": Case(kw(mu=0.1), {"mu": NONNEG}),
     "femcam.tribology.sn_cycles": Case(kw(p0=1.5e9, strength=1.5e9),
                                        {"p0": NONNEG, "strength": POS, "N_ref": POS, "m": POS}),
     "femcam.tribology.wear_coefficient": Case(kw(k0=1e-15, lam=ARR * 1e3),
-                                              {"k0": NONNEG, "lam": REAL}),  # lam < 0 clips to 0
+                                              {"k0": NONNEG, "lam": NONNEG}),   # a film ratio >= 0
     # femcam.wear
     "femcam.wear.archard_volume": Case(kw(k=1e-15, L=500.0, S=1.0),
                                        {"k": NONNEG, "L": NONNEG, "S": NONNEG}),
@@ -753,6 +760,9 @@ def bad_value(kind, good):
         return None
     if kind == "strlist":
         return ["a", "b"]
+    if kind == "numlist":
+        g = float(np.ravel(np.asarray(good, dtype=float))[0]) if good is not None else 1.0
+        return [g, 1.5 * g]
     if isinstance(kind, float):
         return kind
     special = {"nan": math.nan, "inf": math.inf, "neg": -1.0, "zero": 0.0}[kind]

@@ -104,11 +104,11 @@ def test_small_hole_in_a_brazilian_disk_matches_kirsch():
 
 
 def test_bore_geometry_problems_are_refused_with_numbers():
-    with pytest.raises(InputError, match=r"Rb.*does not fit.*20 mm"):
+    with pytest.raises(InputError, match=r"^\[cam\] bore_mm = 21 mm: the bore does not fit.*20 mm"):
         CamDisk(outline=circle(0.02), Rb=0.021)
-    with pytest.raises(InputError, match=r"clearance"):
+    with pytest.raises(InputError, match=r"^\[cam\] shaft_clearance_um = 1000 um: the radial clearance"):
         CamDisk(outline=circle(0.02), Rb=0.01, Rs=0.009)
-    with pytest.raises(InputError, match=r"bonded.*Rs == Rb"):
+    with pytest.raises(InputError, match=r"^\[cam\] shaft_clearance_um = 10 um: a bonded fit"):
         CamDisk(outline=circle(0.02), Rb=0.01, Rs=0.00999, fit="bonded")
     thin = CamDisk(outline=circle(0.02), Rb=0.0195)      # 0.5 mm web
     need = 4 * math.ceil(2 * math.pi * 19.5 / (0.5 * 0.5) / 4)   # bore spacing <= web / 2: 492

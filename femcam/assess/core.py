@@ -15,7 +15,8 @@ Columns (:data:`COLUMNS`: SI name, CSV name, factor) are returned by :func:`asse
 columns are ``regime`` and ``flags`` (``;``-separated: ``liftoff``, ``no_entrainment``,
 ``W_range``, ``U_range``, ``low_peclet``, ``hertz_validity``, ``dtau_hertz``: an FE row with
 FE stresses but no finite ``txz_range_max``, so its orthogonal-shear range is Hertz's shape
-factor at the FE ``p0``).
+factor at the FE ``p0``; ``omits_coating``: a contact row of a coated scene, assessed as if the
+coated body were homogeneous, :func:`omitted_physics`).
 """
 
 from __future__ import annotations
@@ -31,6 +32,7 @@ from .. import _validate
 from .._repr import compact_repr, dataframe
 from ..errors import InputError
 from ..hertz import HertzValidityWarning, LineContact
+from ..layers.from_scene import coating_phrase, scene_coatings
 from ..profile import RollerFollower
 from ..tribology import fatigue, film, flash
 from ..tribology.regime import wear_coefficient
@@ -243,7 +245,8 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
     inp = inputs or assessment_inputs(scene, lubricated=lubricated)
     table = getattr(table, "table", table)                   # a SweepResult or its table mapping
     theta = np.atleast_1d(_validate.finite_array("theta", theta, "rad"))
-    n = theta.size
+    n = _validate.angle_count("theta", f"{theta.size} angles", theta.size, 3600.0, "the assessment",
+                              _validate.MAX_ASSESS_ANGLES)
     sc, R2, tip = _geometry(scene)
     st = sc.analyse(theta)
     Fc, a, p0, w, R, E_star, valid, source = _contact(sc, st, R2, table, n)
@@ -253,6 +256,8 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
     out.update(R=R, a=a, p0=p0, u_cam=u1, u_follower=u2, U=0.5 * (u1 + u2),
                v_slide=np.abs(u1 - u2))
     flags = [("liftoff", np.asarray(st.liftoff, bool)), ("hertz_validity", ~np.asarray(valid, bool))]
+    if omitted_physics(scene):
+        flags.append(("omits_coating", Fc > 0))
     k0 = wear_coefficient_info(scene)[0]
     regime = np.full(n, "dry", dtype=object)
     if inp.lubricant is not None:
@@ -292,6 +297,9 @@ class Assessment:
         Criterion -> ``(value in the column's SI unit, theta [rad], index)``, see :func:`worst_angles`.
     notes : tuple of str
         Criteria skipped and the keys that would enable them.
+    omitted : tuple of str
+        What the scene holds that the assessment leaves out (:func:`omitted_physics`: a coating),
+        one sentence each; said on the console and in the report.
     """
 
     scene_name: str
@@ -299,6 +307,7 @@ class Assessment:
     inputs: AssessInputs
     worst: dict
     notes: tuple
+    omitted: tuple = ()
 
     def __repr__(self) -> str:
         """Scene, angles, the worst angle per criterion and the skipped count (a compact line)."""
@@ -402,11 +411,39 @@ def assess(scene, theta=None, *, table=None, lubricated: bool = True) -> Assessm
     rows = assess_rows(scene, theta, table, inputs=inp)
     notes = tuple(f"{crit}: skipped, needs {', '.join(keys)}" for crit, keys in inp.skipped.items())
     fe_rows = np.asarray(rows["source"]) == "fe"
+    if table is not None and not np.all(fe_rows):
+        notes += (f"contact: {int(np.sum(~fe_rows))} of {fe_rows.size} angles fall back to Hertz (the sweep "
+                  "table has no finite positive a_fe, p0_fe there: a Hertz-method sweep, or rows the FE "
+                  "did not answer); the source column says which",)
     if np.any(fe_rows) and "txz_range_max" not in getattr(table, "table", table):
         notes += ("subsurface fatigue: the sweep table has no txz_range_max (a sweep written before "
                   "femcam computed the FE range of txz over one pass): dtau_orth is Hertz's range "
                   "(McEwen) at the FE p0 on every FE row; re-run the sweep for the FE field",)
-    return Assessment(scene_name=scene.name, rows=rows, inputs=inp, worst=worst_angles(rows), notes=notes)
+    return Assessment(scene_name=scene.name, rows=rows, inputs=inp, worst=worst_angles(rows), notes=notes,
+                      omitted=omitted_physics(scene))
+
+
+def omitted_physics(scene) -> tuple[str, ...]:
+    """What ``scene`` holds that the assessment leaves out, one sentence each: a coating (the
+    scene test of :func:`femcam.layers.from_scene.scene_coatings`, the one the sweep's
+    ``headline_omits_coating`` uses). The contact (Hertz or the sweep's headline FE, both of
+    homogeneous bodies), the film, the flash temperature and the strength and fatigue data are
+    the substrate's; every contact row carries the flag ``omits_coating``.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene assessed.
+
+    Returns
+    -------
+    tuple of str
+        Empty for an uncoated scene.
+    """
+    return tuple(f"the assessment treats the coated body as homogeneous: {coating_phrase(body, c)} is "
+                 "not in its contact, stresses or fatigue data (the substrate's are used; flag "
+                 "omits_coating); the coating's own stresses are the coating_* and interface_* columns "
+                 "of femcam sweep" for body, c in scene_coatings(scene))
 
 
 def csv_columns(rows: dict) -> dict:

@@ -116,4 +116,31 @@ def sweep_table(directory, scene) -> dict[str, np.ndarray]:
             f"(femcam sweep {scene.source_path or 'SCENE.toml'} --out NEW_DIR) or assess the folder's own "
             f"scene ({d / 'scene.toml'})")
     n = arrays["theta"].size
+    _check_columns(d, arrays, n)
     return {k: v for k, v in arrays.items() if v.ndim == 1 and v.size == n}
+
+
+#: per-angle columns an assessment reads: required (every sweep writes them, NaN where the FE did
+#: not answer) and optional (a sweep written before femcam computed them)
+REQUIRED_COLUMNS = ("a_fe", "p0_fe")
+OPTIONAL_COLUMNS = ("tau1_max", "txz_range_max")
+
+
+def _check_columns(d: Path, arrays: dict, n: int) -> None:
+    """Refuse a damaged table: a required column missing, or a column the assessment reads that
+    is not one number per angle (a table cut or edited by hand would otherwise be dropped and
+    every row fall back to Hertz with no word)."""
+    for k in REQUIRED_COLUMNS:
+        if k not in arrays:
+            raise InputError(f"sweep folder = {d}: sweep.npz has no column {k} (every femcam sweep "
+                             "writes it): a damaged or edited results folder; sweep again "
+                             f"(femcam sweep SCENE.toml --out {d} --overwrite)")
+    for k in (*REQUIRED_COLUMNS, *OPTIONAL_COLUMNS):
+        v = arrays.get(k)
+        if v is None:
+            continue
+        if v.ndim != 1 or v.size != n or v.dtype.kind not in "fiu":
+            raise InputError(f"sweep folder = {d}: sweep.npz column {k} has shape {v.shape} "
+                             f"({v.dtype}), not one number per angle ({n} angles in theta): a damaged "
+                             f"or edited results folder; sweep again (femcam sweep SCENE.toml --out {d} "
+                             "--overwrite)")

@@ -31,10 +31,29 @@ from ..materials import STEEL, Material
 from ..mesh import surface_height
 from ..scene.bodies import SHAFT_CLEARANCE_MAX
 
-#: the scene key a message names for the bore radius Rb (not the base radius)
-_BORE = "Rb (bore radius, [cam] bore_mm)"
-#: the scene keys a message names for the shaft radius Rs
-_SHAFT = "Rs (shaft radius, [cam] bore_mm - shaft_clearance_um)"
+
+def bore_error(Rb: float, condition: str) -> InputError:
+    """The refusal of a bore, led by the scene key the user wrote in its own unit:
+    ``[cam] bore_mm = 9.99 mm: ...`` (the bore radius ``Rb``, not the base radius).
+
+    Parameters
+    ----------
+    Rb : float
+        Bore radius [m].
+    condition : str
+        What it breaks, and what to change.
+
+    Returns
+    -------
+    InputError
+        The error (the caller raises it).
+    """
+    return InputError(f"[cam] bore_mm = {Rb * 1e3:.6g} mm: {condition}")
+
+
+def _clearance_error(c: float, condition: str) -> InputError:
+    """``[cam] shaft_clearance_um = ... um: ...`` (the radial clearance ``Rb - Rs``)."""
+    return InputError(f"[cam] shaft_clearance_um = {c * 1e6:.6g} um: {condition}")
 
 FITS = ("contact", "bonded")
 
@@ -94,15 +113,16 @@ class CamDisk:
         object.__setattr__(self, "Rs", float(Rs))
         r_min = self.r_min
         if self.Rb >= r_min:
-            raise _validate.fail(_BORE, self.Rb, "m", f"the bore does not fit: the smallest outline "
-                                 f"radius is {r_min * 1e3:.4g} mm (bore {self.Rb * 1e3:.4g} mm)")
+            raise bore_error(self.Rb, f"the bore does not fit: the smallest outline radius of the cam "
+                                      f"is {r_min * 1e3:.4g} mm (bore radius {self.Rb * 1e3:.4g} mm)")
         c = self.Rb - Rs
         if c < 0 or c > SHAFT_CLEARANCE_MAX * self.Rb:
             c_max = SHAFT_CLEARANCE_MAX * self.Rb
-            raise _validate.fail(_SHAFT, Rs, "m", f"the clearance Rb - Rs = {c * 1e6:.4g} um must be in "
-                                 f"[0, {SHAFT_CLEARANCE_MAX:g} Rb = {c_max * 1e6:.4g} um] (linearised gap)")
+            raise _clearance_error(c, f"the radial clearance bore - shaft must be in [0, "
+                                      f"{SHAFT_CLEARANCE_MAX:g} x bore radius = {c_max * 1e6:.4g} um] "
+                                      "(linearised gap)")
         if self.fit == "bonded" and c != 0.0:
-            raise _validate.fail(_SHAFT, Rs, "m", "a bonded fit needs Rs == Rb (no clearance)")
+            raise _clearance_error(c, "a bonded fit (shaft_fit = \"bonded\") needs no clearance")
         if self.cam_yield is not None:
             _validate.positive("cam_yield", self.cam_yield, "Pa")
 

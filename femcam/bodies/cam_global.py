@@ -32,7 +32,7 @@ import scipy.sparse as sp
 from .. import _validate
 from .._repr import compact_repr
 from ..fe.elasticity import assemble_body
-from .cam_geometry import CamDisk
+from .cam_geometry import CamDisk, bore_error
 from .cam_mesh import mesh_cam_disk
 from .cam_model import (
     CamMeshOptions,
@@ -45,9 +45,6 @@ from .cam_model import (
 )
 from .contact import arc_load_matrix, arc_weights, radial_measure
 from .model import _condense, _hoop_rows
-
-#: the scene key a message names for the bore radius Rb (not the base radius)
-_BORE = "Rb (bore radius, [cam] bore_mm)"
 
 #: default mesh of the global model: largest element 0.1 x web (at least 0.07 r_min), growth 0.1
 #: from the bore. Measured (bore hoop stress under a 2 kN contact, 6 mm bore): with the refined
@@ -83,8 +80,8 @@ def global_mesh_for(disk: CamDisk) -> CamMeshOptions:
     """
     need = bore_vertices_for(disk)
     if need > N_BORE_MAX:
-        raise _validate.fail(_BORE, disk.Rb, "m", f"the web r_min - Rb = {disk.web * 1e3:.3g} mm is too thin "
-                             f"for the disk model ({need} bore vertices needed, at most {N_BORE_MAX}); "
+        raise bore_error(disk.Rb, f"the web r_min - Rb = {disk.web * 1e3:.3g} mm is too thin for the "
+                             f"disk model ({need} bore vertices needed, at most {N_BORE_MAX}); "
                              "such a hub is a thin ring: model it as one")
     return dataclasses.replace(GLOBAL_MESH, n_bore=max(GLOBAL_MESH.n_bore, need))
 

@@ -35,14 +35,11 @@ from ..fe.elasticity import assemble_body
 from ..fe.model import _radius
 from ..materials import Material
 from ..mesh import MeshOptions, _mesh_body
-from .cam_geometry import CamDisk, outline_without_arc
+from .cam_geometry import CamDisk, bore_error, outline_without_arc
 from .cam_mesh import mesh_cam_disk
 from .contact import arc_load_matrix, arc_weights, radial_measure
 from .mesh import gmsh_session, mesh_disk
 from .model import _condense, _hoop_rows, check_bore_mesh
-
-#: the scene key a message names for the bore radius Rb (not the base radius)
-_BORE = "Rb (bore radius, [cam] bore_mm)"
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -386,8 +383,8 @@ class CamDiskModel:
         pts, centre = outline_without_arc(disk, np.asarray(C, float), np.asarray(n, float), rho, W)
         gap = math.hypot(*centre) - disk.Rb
         if gap < 2 * W:
-            raise _validate.fail(_BORE, disk.Rb, "m", f"the bore comes within {gap * 1e3:.3g} mm of the "
-                                 f"contact: the fine contact zone needs {2 * W * 1e3:.3g} mm")
+            raise bore_error(disk.Rb, f"the bore comes within {gap * 1e3:.3g} mm of the contact: the fine "
+                                      f"contact zone needs {2 * W * 1e3:.3g} mm (a smaller bore_mm)")
         hb = 2 * math.pi * disk.Rb / cm.n_bore
         h_max = h_max_for(disk, cm)
         cam_geo, bore, theta = mesh_cam_disk(outline=pts, centre=centre, bore=disk.Rb, n_bore=cm.n_bore,

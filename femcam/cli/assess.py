@@ -61,6 +61,9 @@ def _run(args) -> int:
     scene = load_scene(args.scene)
     table = _sweep_table(args.sweep, scene) if args.sweep else None
     theta = table["theta"] if table is not None else _validate.angles_deg("--angles-deg", args.angles_deg)
+    _validate.angle_count("--sweep" if table is not None else "--angles-deg",
+                          args.sweep if table is not None else args.angles_deg, theta.size, 3600.0,
+                          "femcam assess", _validate.MAX_ASSESS_ANGLES)
     refuse_non_empty(args.out, args.overwrite)  # the rule of every subcommand, before the work
     res = assess(scene, theta, table=table)
     out = out_dir(args.out)
@@ -69,7 +72,7 @@ def _run(args) -> int:
                 title="femcam assess: one row per cam angle")
     summary = {"scene": scene.name, "n_angles": int(len(theta)),
                "worst": {c: {"value": v, "theta_deg": math.degrees(t)} for c, (v, t, _) in res.worst.items()},
-               "skipped": list(res.notes), "provenance": prov}
+               "skipped": list(res.notes), "omitted": list(res.omitted), "provenance": prov}
     (out / "summary.json").write_text(json.dumps(summary, indent=1, default=str))
     plots = {}
     if not args.no_plots:
@@ -84,6 +87,8 @@ def _run(args) -> int:
         print(f"{crit:>22s}: worst {v:.4g} at {math.degrees(t):6.1f} deg")
     for n in res.notes:
         print(f"note: {n}")
+    for o in res.omitted:
+        print(f"note: {o}")
     print(f"wrote {out / 'assessment.csv'}, {out / 'summary.json'}, {out / 'report.md'}, "
           f"{out / 'report.html'}")
     return 0

@@ -17,7 +17,7 @@ import sys
 from .._progress import phase
 from ..io import provenance
 from ..optimise import OBJECTIVES, BezierRise, compare_laws, optimise
-from ..optimise.outputs import parse_vary, write_outputs
+from ..optimise.outputs import EDGE_UNITS, parse_vary, write_outputs
 from ..scene import load_scene
 from ._common import add_overwrite, add_scene_out, out_dir, plain, refuse_non_empty
 from ._flags import Range, add_number
@@ -85,9 +85,15 @@ def _run(args) -> int:
     print(f"{res.objective}: {res.value:.6g} {res.unit} (start {res.start_value:.6g}); "
           f"converged {res.converged}")
     print(res.message)
+    edge = {si: (flag, f) for flag, (si, f) in EDGE_UNITS.items()}
     for n, v in res.design().items():
-        print(f"  {n} = {v:.6g}")
+        flag, f = edge.get(n, (n, 1.0))               # as --vary takes it: mm, deg
+        print(f"  {flag} = {v / f:.6g}")
+    print("wrote " + ", ".join(str(f) for f in files))
+    if res.fe is not None and not res.fe.ok:           # asked for and not delivered: not a success
+        print(f"femcam optimise: error: {res.fe.message} (the optimum is written; rerun with --no-fe "
+              "to skip the check)", file=sys.stderr)
+        return 1
     if res.fe is not None:
         print(res.fe.message)
-    print("wrote " + ", ".join(str(f) for f in files))
     return 0

@@ -186,6 +186,7 @@ def _run(args) -> int:
     if args.law is not None:
         check_law("--law", args.law)
     theta = _validate.angles_deg("--angles-deg", args.angles_deg)
+    _validate.angle_count("--angles-deg", args.angles_deg, theta.size, 800.0, "femcam run")
     scene = load_scene(args.scene)
     if args.law is not None:
         scene = scene.with_law(args.law)

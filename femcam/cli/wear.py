@@ -106,15 +106,29 @@ def register(subparsers) -> None:
     p.set_defaults(func=lambda args: (p.print_help(), 2)[1])
 
 
+def _csv_path(value) -> Path:
+    """The ``--csv`` file, checked before any work: not empty, not a directory, in a directory
+    that can be written (one line naming the flag each)."""
+    if not str(value).strip():
+        raise InputError(f"--csv = {value!r}: must name a file (it is empty), e.g. --csv table3.csv")
+    path = Path(value)
+    if path.is_dir() or str(value).endswith(("/", "\\")):
+        raise InputError(f"--csv = {value!r}: is a directory, not a file; give a file path, e.g. "
+                         f"--csv {path / 'table3.csv'}")
+    out_dir(path.parent, "--csv (its directory)", create=False)
+    return path
+
+
 def _seed000(args) -> int:
+    csv = _csv_path(args.csv) if args.csv is not None else None   # before the work
     laws = PAPER_LAWS
     if args.all_laws:
         laws = NAMED_LAWS
     t = seed000_table(laws)
     print(format_table3(t))
-    if args.csv:
+    if csv is not None:
         header, rows = table_rows_for_csv(t)
-        path = Path(args.csv)
+        path = csv
         out_dir(path.parent, "--csv (its directory)")
         write_rows(path, header, rows, provenance(command=shlex.join(sys.argv)),
                    title="femcam wear seed000: seed 000's Table 3 recomputed, one row per law")

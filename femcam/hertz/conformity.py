@@ -25,7 +25,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .contact import effective_radius, half_width
+from .contact import _effective_radius, half_width
 from .maxima import max_shear, max_shear_range, max_von_mises
 from .surface import surface_stress
 
@@ -156,7 +156,7 @@ def sizing_half_width(F, length: float, rho, Rr: float, E_star: float) -> np.nda
     >>> round(float(sizing_half_width(1e3, 0.01, np.inf, 0.01, 1e11)) * 1e6, 3)   # um
     112.838
     """
-    R = np.minimum(np.abs(effective_radius(rho, Rr)), SIZING_R_CAP * Rr)
+    R = np.minimum(np.abs(_effective_radius(rho, Rr)), SIZING_R_CAP * Rr)   # conformal: capped
     return half_width(np.maximum(F, 0.0) / length, R, E_star)
 
 

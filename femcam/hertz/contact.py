@@ -49,9 +49,9 @@ class HertzValidityWarning(UserWarning):
 
 
 def effective_radius(R1, R2):
-    r"""Effective radius of two cylinders (m): ``inf`` when ``1/R = 0`` (flat on flat, or the
-    exactly conformal ``R1 = -R2``), ``< 0`` if non-Hertzian. Validity is judged on the curvature
-    ``1/R <= 0`` by :class:`LineContact`, which tells the two ``inf`` cases apart.
+    r"""Effective radius of two cylinders (m): ``inf`` for flat on flat, ``< 0`` if non-Hertzian;
+    the exactly conformal ``R1 = -R2`` (finite) is refused. Validity is judged on the curvature
+    ``1/R <= 0`` by :class:`LineContact`.
 
     .. math:: \frac{1}{R} = \frac{1}{R_1} + \frac{1}{R_2}
 
@@ -66,7 +66,14 @@ def effective_radius(R1, R2):
     Returns
     -------
     ndarray
-        Effective radius ``R`` [m], float, the broadcast shape (``inf`` if ``1/R = 0``).
+        Effective radius ``R`` [m], float, the broadcast shape (``inf`` for flat on flat).
+
+    Raises
+    ------
+    HertzValidityError
+        Equal and opposite finite radii (a conformal contact, ``1/R = 0``).
+    InputError
+        A radius that is zero, NaN or not a number; shapes that do not broadcast.
 
     Examples
     --------
@@ -75,8 +82,12 @@ def effective_radius(R1, R2):
     >>> round(float(effective_radius(-0.03, 0.01)), 12)
     0.015
     """
-    _validate.radius_array("R1", R1)
-    _validate.radius_array("R2", R2)
+    R1, R2 = _validate.broadcast(R1=_validate.radius_array("R1", R1), R2=_validate.radius_array("R2", R2))
+    conformal = np.isfinite(R1) & (R1 == -R2)
+    if conformal.any():   # 1/R = 0 of two curved surfaces: no Hertz contact (flat on flat stays inf)
+        i = int(np.flatnonzero(conformal)[0])
+        raise HertzValidityError(f"R1 = {R1.flat[i]:g} m, R2 = {R2.flat[i]:g} m: equal and opposite radii "
+                                 "are a conformal contact (1/R = 0) with no Hertz answer")
     return _effective_radius(R1, R2)
 
 
@@ -115,9 +126,9 @@ def half_width(w, R, E_star):
     >>> round(float(half_width(1.5e5, 0.005, 115.3846e9)) * 1e6, 2)   # um
     90.97
     """
-    _validate.nonnegative_array("w", w, "N/m")
-    _validate.positive_array("R", R, "m")
-    _validate.positive_array("E_star", E_star, "Pa")
+    w, R, E_star = _validate.broadcast(w=_validate.nonnegative_array("w", w, "N/m"),
+                                       R=_validate.positive_array("R", R, "m"),
+                                       E_star=_validate.positive_array("E_star", E_star, "Pa"))
     return _half_width(w, R, E_star)
 
 

@@ -19,6 +19,44 @@ from .coating import Coating, build_coated_model
 from .interface import layer_rows
 
 
+def scene_coatings(scene) -> tuple[tuple[str, dict], ...]:
+    """The coated bodies of ``scene``: ``(body, coating table)`` pairs (SI values under SI names:
+    ``thickness`` [m], ``E`` [Pa], ...). The one scene test of "is a body coated" used by the
+    sweep's headline flag (:func:`femcam.sweep.headline.omitted_physics`) and by the assessment
+    (:func:`femcam.assess.assess_rows`, ``omits_coating``), whose contact models are homogeneous.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A loaded scene.
+
+    Returns
+    -------
+    tuple of (str, dict)
+        One pair per ``[materials.<body>.coating]`` table (empty for an uncoated scene).
+    """
+    return tuple((body, tabs["coating"]) for body, tabs in (getattr(scene, "layers", None) or {}).items()
+                 if "coating" in tabs)
+
+
+def coating_phrase(body: str, c: dict) -> str:
+    """``"the roller's 2.5 um coating (E 170 GPa)"``: a coating as the flags' sentences name it.
+
+    Parameters
+    ----------
+    body : str
+        The coated body (``cam`` or ``roller``).
+    c : dict
+        Its coating table (SI: ``thickness`` [m], ``E`` [Pa]).
+
+    Returns
+    -------
+    str
+        The phrase (thickness in um, E in GPa).
+    """
+    return f"the {body}'s {c['thickness'] * 1e6:g} um coating (E {c['E'] / 1e9:g} GPa)"
+
+
 def scene_layers(scene) -> dict:
     """Coating and case of ``scene`` from its ``[materials.<body>.coating|case]`` tables.
 

@@ -136,11 +136,13 @@ def body_layout(name: str, R: float, L: float, a_ref: float, opts: MeshOptions) 
     xf = 0.5 * n_fine * h  # exact multiple of h
     W = 0.9 * L
     if W <= xf * 1.5:
-        raise InputError(f"body size L = {L * 1e3:.4g} mm ({name}; its radius of curvature here, set by "
-                         "[follower] base_radius_mm, roller_radius_mm and [program]) is too small for the "
-                         f"fine zone |x| <= {xf * 1e3:.4g} mm around a contact half-width of "
-                         f"{a_ref * 1e3:.4g} mm (from the force, [materials.*] E_GPa and face_width_mm); "
-                         "in code: increase MeshOptions.domain_over_a or reduce fine_half_width")
+        raise InputError(f"[follower] base_radius_mm, roller_radius_mm and [program] give the {name} a "
+                         f"radius of curvature (body size) of {L * 1e3:.4g} mm here: too small for the fine "
+                         f"mesh zone |x| <= {xf * 1e3:.4g} mm around a contact half-width of "
+                         f"{a_ref * 1e3:.4g} mm (set by the contact force, [materials.*] E_GPa, nu and "
+                         "[follower] face_width_mm); give a larger base_radius_mm or roller_radius_mm, a "
+                         "longer beta_deg or smaller lift_mm, a wider face_width_mm or a lighter load "
+                         "([dynamics] preload_N, spring_N_per_m) (API: MeshOptions.fine_half_width)")
     return BodyLayout(name=name, R=R, L=L, a_ref=a_ref, h=h, n_fine=n_fine, xf=xf, W=W,
                       lc=L * opts.max_size_fraction)
 

@@ -47,13 +47,12 @@ from .. import _validate
 from ..errors import InputError
 from ..kinematics import CamProgram, law
 from ..profile import FlatFacedFollower, RollerFollower
+from .bounds import check_scene_range
 
 __all__ = ["Variable", "BezierRise", "Design", "VARIABLE_UNITS"]
 
 #: scalar variables and their SI unit (control points: ``control_point_<i>``, dimensionless)
 VARIABLE_UNITS = {"base_radius": "m", "roller_radius": "m", "rise_angle": "rad"}
-
-
 @dataclass(frozen=True, kw_only=True)
 class Variable:
     """One continuous design variable (SI) and its bounds.
@@ -191,6 +190,8 @@ class Design:
             raise InputError("variables = []: give at least one design variable")
         if len(set(names)) != len(names):
             raise InputError(f"variables = {names}: a variable is given twice")
+        for v in self.variables:
+            check_scene_range(v)   # femcam.optimise.bounds
         f = self.scene.follower
         if isinstance(f, FlatFacedFollower):
             raise InputError("follower type = flat_faced: femcam.optimise handles roller and knife-edge "

@@ -7,6 +7,8 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
+import numpy as np
+
 __all__ = ["OptimiseResult", "StartRecord", "FECheck"]
 
 
@@ -61,6 +63,12 @@ class FECheck:
     rel_diff: float
     status: tuple
     message: str
+
+    @property
+    def ok(self) -> bool:
+        """True when the FE answered at every angle (``status`` all ``ok``, a finite FE ``p0``)."""
+        return bool(self.status) and all(s == "ok" for s in self.status) and bool(
+            np.all(np.isfinite(np.asarray(self.p0_fe, float))))
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -277,12 +277,21 @@ def _verify_fe(scene, theta_worst: float) -> FECheck:
     try:
         r = sweep(scene, angles=theta, method="fe", workers=1, progress=False, plots=False)
     except FemcamError as exc:
+        reason = " ".join(str(exc).split())       # the mesher's/solver's own text, on one line
         return FECheck(theta=tuple(theta), p0_hertz=(), p0_fe=(), rel_diff=math.nan, status=(),
-                       message=f"FE sweep failed: {exc}")
+                       message=f"the FE check of the optimum failed: the FE model of the optimal design "
+                       f"could not be built or solved ({type(exc).__name__}: {reason})")
     ph = np.asarray(r.table["p0_hertz"], float)
     pf = np.asarray(r.table["p0_fe"], float)
     rel = float(np.nanmax(np.abs(pf / ph - 1.0))) if np.any(np.isfinite(pf)) else math.nan
     status = tuple(str(s) for s in r.table["status"])
+    bad = [i for i, s in enumerate(status) if s != "ok" or not np.isfinite(pf[i])]
+    if bad:   # asked for and not delivered: one line with the first row's reason, wrapped
+        why = " ".join(str(np.asarray(r.table.get("message", [""] * len(status)))[bad[0]]).split())
+        msg = (f"the FE check of the optimum failed at {len(bad)} of {len(status)} angles (statuses "
+               f"{', '.join(status)}; at {math.degrees(theta[bad[0]]):.1f} deg: {why or 'no FE p0'})")
+    else:
+        msg = (f"FE peak p0 within {100 * rel:.3g} % of Hertz at the worst angle and +-2 deg (statuses "
+               f"{', '.join(status)})")
     return FECheck(theta=tuple(float(t) for t in theta), p0_hertz=tuple(ph), p0_fe=tuple(pf), rel_diff=rel,
-                   status=status, message=f"FE peak p0 within {100 * rel:.3g} % of Hertz at the worst angle "
-                   f"and +-2 deg (statuses {', '.join(status)})")
+                   status=status, message=msg)

@@ -421,8 +421,10 @@ def flat_face_radius(s, s2, Rb):
     >>> float(flat_face_radius(0.001, -0.002, 0.01))
     0.009
     """
-    return (_validate.positive_array("Rb", Rb, "m") + _validate.finite_array("s", s, "m")
-            + _validate.finite_array("s2", s2, "m/rad^2"))
+    Rb, s, s2 = _validate.broadcast(Rb=_validate.positive_array("Rb", Rb, "m"),
+                                    s=_validate.finite_array("s", s, "m"),
+                                    s2=_validate.finite_array("s2", s2, "m/rad^2"))
+    return Rb + s + s2
 
 
 def _rot(theta, x, y):

@@ -15,6 +15,7 @@ from functools import cached_property
 import numpy as np
 from scipy.optimize import minimize_scalar
 
+from .. import _validate
 from .._repr import compact_repr, span
 from ..dynamics import TrainModel, periodic_response
 from ..errors import ConvergenceError, InputError, UndercutError
@@ -323,7 +324,11 @@ class Scene:
             An undercut cam (angle ranges in degrees), unless ``allow_undercut=True``.
         ConvergenceError
             A train response that is not one-periodic.
+        InputError
+            More than :data:`femcam._validate.MAX_ANGLES` angles (memory, estimate in the message).
         """
+        _validate.angle_count("theta", f"{np.size(theta)} angles", int(np.size(theta)), 241.0,
+                              "Scene.analyse")   # before any work: bounded memory
         d = self.program.derivatives(theta)
         w = self.omega
         v, a, j = w * d.s1, w**2 * d.s2, w**3 * d.s3

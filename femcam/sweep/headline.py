@@ -20,6 +20,7 @@ import numpy as np
 from ..bodies.cam_rows import has_cam_bore
 from ..fe import ContactResult
 from ..halfspace.rows import has_finite_length
+from ..layers.from_scene import coating_phrase, scene_coatings
 from .providers import has_support
 
 #: FE surface error away from the contact edge, as a fraction of p0: the FE surface sx, sz, txz
@@ -91,14 +92,11 @@ def omitted_physics(scene) -> tuple[tuple[str, str], ...]:
         ``headline_2d_mean_load`` as they apply, each with its sentence.
     """
     out = []
-    for body, tabs in (getattr(scene, "layers", None) or {}).items():
-        if "coating" in tabs:
-            c = tabs["coating"]
-            out.append(("headline_omits_coating",
-                        f"headline_omits_coating: the {body}'s {c['thickness'] * 1e6:g} um coating "
-                        f"(E {c['E'] / 1e9:g} GPa) is not in the contact FE that answers a_fe, p0_fe "
-                        "and the stresses (uncoated bodies); its own stresses are the interface_* "
-                        "and coating_* columns"))
+    for body, c in scene_coatings(scene):
+        out.append(("headline_omits_coating",
+                    f"headline_omits_coating: {coating_phrase(body, c)} is not in the contact FE "
+                    "that answers a_fe, p0_fe and the stresses (uncoated bodies); its own stresses "
+                    "are the interface_* and coating_* columns"))
     if has_support(scene):
         out.append(("headline_solid_roller",
                     f"headline_solid_roller: the roller runs on {scene.bodies['support']}, the "

@@ -185,6 +185,9 @@ def scuffing_safety(T_scuff, T_bulk, dT_flash):
     2.0
     """
     dT = _validate.nonnegative_array("dT_flash", dT_flash, "K")
-    margin = _validate.number("T_scuff", T_scuff, "degC") - _validate.finite_array("T_bulk", T_bulk, "degC")
+    # the scene key's range ([materials.*] scuffing_temperature_C, femcam.scene.ranges): a
+    # negative scuffing temperature would give a negative "safety factor"
+    T_s = _validate.in_range("T_scuff", T_scuff, 0.0, 1000.0, "degC")
+    margin = T_s - _validate.finite_array("T_bulk", T_bulk, "degC")
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where(dT > 0, margin / np.where(dT > 0, dT, 1.0), np.inf)

@@ -62,7 +62,7 @@ def greenwood_tripp(n, lam):
     >>> round(float(greenwood_tripp(2.5, 0.0)), 6)     # 2^(3/4) Gamma(7/4) / sqrt(2 pi)
     0.616634
     """
-    lam = _validate.finite_array("lam", lam, "")
+    lam = _validate.nonnegative_array("lam", lam, "")   # a film ratio h / sigma is >= 0
     n = _validate.nonnegative("n", n, "")
     from scipy.special import gamma, pbdv  # lazy: scipy.special, ~0.04 s to import
 
@@ -71,8 +71,8 @@ def greenwood_tripp(n, lam):
 
 
 def wear_coefficient(k0, lam):
-    r"""Wear coefficient ``k(lam) = k0 F_{5/2}(lam)/F_{5/2}(0)`` (units of ``k0``); ``lam`` is
-    clipped at 0.
+    r"""Wear coefficient ``k(lam) = k0 F_{5/2}(lam)/F_{5/2}(0)`` (units of ``k0``); ``lam >= 0``
+    (a film ratio; a negative one is refused).
 
     .. math:: k(\lambda) = k_0\,F_{5/2}(\lambda)/F_{5/2}(0)
 
@@ -94,5 +94,5 @@ def wear_coefficient(k0, lam):
     [1.0, 0.1306]
     """
     k0 = _validate.nonnegative("k0", k0, "m^3/(N m)")
-    lam = np.clip(_validate.finite_array("lam", lam, ""), 0.0, None)
+    lam = _validate.nonnegative_array("lam", lam, "")   # a film ratio h / sigma is >= 0
     return k0 * greenwood_tripp(2.5, lam) / greenwood_tripp(2.5, 0.0)

@@ -218,8 +218,14 @@ def report_markdown(assessment, plots: dict, *, title: str = "", provenance: str
             flags[name] = flags.get(name, 0) + 1
     lines += ["", "Flags (angles computed outside a formula's range of validity): "
               + (", ".join(f"{k} at {v} angles" for k, v in flags.items()) or "none") + "."]
+    src, nsrc = np.unique(np.asarray(r.get("source", ())).astype(str), return_counts=True)
+    if src.size:
+        lines += ["", "Contact source (source column): "
+                  + ", ".join(f"{g} at {c} angles" for g, c in zip(src, nsrc, strict=True)) + "."]
+    for o in getattr(a, "omitted", ()):
+        lines += ["", f"**Not modelled:** {o}."]
     if a.notes:
-        lines += ["", "Skipped: " + "; ".join(a.notes) + "."]
+        lines += ["", "Notes (criteria skipped, fallbacks): " + "; ".join(a.notes) + "."]
     lines += [""]
     for name, path in plots.items():
         link = os.path.relpath(path, base) if base is not None else str(path)
