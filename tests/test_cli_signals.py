@@ -43,7 +43,8 @@ LINE = re.compile(r"^femcam( [a-z]+)?: (interrupted|terminated)")
 
 def _signal_run(argv, delay_s, signum, out):
     env = {**os.environ, "PYTHONPATH": str(ROOT)}
-    p = subprocess.Popen([sys.executable, "-m", "femcam", *argv, "--out", str(out)],
+    # -q: only errors on stderr (progress lines off a terminal would otherwise precede the one line)
+    p = subprocess.Popen([sys.executable, "-m", "femcam", "-q", *argv, "--out", str(out)],
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, cwd=ROOT)
     _wait_for_numpy(p.pid)
     time.sleep(delay_s)
