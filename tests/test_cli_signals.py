@@ -24,9 +24,11 @@ ROOT = Path(__file__).resolve().parents[1]
 EX = ROOT / "examples"
 
 #: arguments of each subcommand that keep it computing for well over 10 s (killed before then)
+#: commands that run for several seconds, each within its angle cap (femcam run <= 1e6 angles,
+#: femcam assess <= 4e5: femcam._validate.angle_count)
 LONG = {
-    "run": ["run", str(EX / "seed002_cam_on_shaft.toml"), "--angles-deg", "0:360:0.0002", "--no-plots"],
-    "assess": ["assess", str(EX / "seed002_assess.toml"), "--angles-deg", "0:360:0.0005", "--no-plots"],
+    "run": ["run", str(EX / "seed002_cam_on_shaft.toml"), "--angles-deg", "0:360:0.00037", "--no-plots"],
+    "assess": ["assess", str(EX / "seed002_assess.toml"), "--angles-deg", "0:360:0.0009", "--no-plots"],
     "dynamics": ["dynamics", str(EX / "seed002_dynamic.toml"), "--rpm-sweep", "100:20000:1",
                  "--no-plots"],
     "wear": ["wear", "map", str(EX / "seed002_cam_on_shaft.toml"), "--step-deg", "0.5",
