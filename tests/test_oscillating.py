@@ -5,11 +5,13 @@ power balance and the refusals (docs/oscillating.md)."""
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
+import tomllib
 
-from femcam.errors import InputError, UndercutError
+from femcam.errors import InputError, SceneError, UndercutError
 from femcam.kinematics import CamProgram, dwell, fall, rise
 from femcam.loads import ArmDynamics, FollowerDynamics, arm_contact_force, contact_force
 from femcam.profile import (
@@ -20,6 +22,8 @@ from femcam.profile import (
     min_base_radius_oscillating,
     oscillating_profile,
 )
+from femcam.scene import load as scene_load
+from femcam.scene import load_scene
 
 Rb, Rr = 0.020, 0.008
 TH = np.linspace(0.0, 2.0 * math.pi, 721)
@@ -140,3 +144,77 @@ def test_refusals_name_the_value():
     f = OscillatingRollerFollower(Rb=0.015, Rr=0.008, a=0.05, L=0.035)
     with pytest.raises(UndercutError, match=r"undercut .*Rr = 8 mm"):
         oscillating_profile(f, TH, d.s, d.s1, d.s2)
+
+
+# ---------------------------------------------------------------------------- the scene
+EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "rff_valve_train.toml"
+
+
+@pytest.fixture
+def load_raw(monkeypatch):
+    """Load a parsed scene dict (the example, changed) through load_scene."""
+    def load(change):
+        raw = tomllib.loads(EXAMPLE.read_text(encoding="utf-8"))
+        change(raw)
+        monkeypatch.setattr(scene_load, "_read_toml", lambda path: raw)
+        return load_scene("osc.toml")
+    return load
+
+
+def _set(table, **kw):
+    return lambda raw: raw[table].update(kw)
+
+
+def _lift(deg):
+    def change(raw):
+        for sg in raw["program"]["segment"]:
+            if "lift_deg" in sg:
+                sg["lift_deg"] = deg
+    return change
+
+
+def _fold(raw):
+    """Pivot 20 mm from the cam centre, 15 mm arm: the base-circle arm angle is ~100 deg, so an
+    85 deg swing passes 180 deg (the arm folds over the line pivot-cam centre)."""
+    raw["follower"].update(pivot_distance_mm=20.0, arm_length_mm=15.0)
+    _lift(85.0)(raw)
+
+
+@pytest.mark.parametrize("change, pattern", [
+    (_set("follower", pivot_distance_mm=15.0), r"pivot_distance_mm = 15.0 mm: the pivot lies inside"),
+    (_set("follower", arm_length_mm=5.0), r"follower.arm_length_mm = 5.0 mm: the arm cannot put the roller"),
+    (_lift(150.0), r"program.segment\[0\].lift_deg = 150.0 deg: must be in \(0, 90\]"),
+    (_fold, r"program.segment.lift_deg = 85 deg .*folds the arm past the line pivot-cam centre"),
+    (_set("dynamics", model="one_dof"), r"dynamics.model = 'one_dof': .*oscillating arm is not modelled"),
+    (_set("dynamics", mass_kg=0.1), r"dynamics.mass_kg = 0.1 kg: a translating follower's key"),
+    (_set("follower", offset_mm=2.0), r"follower.offset_mm = 2.0 mm: not a key of an oscillating follower"),
+])
+def test_scene_refusals_name_key_value_and_unit(load_raw, change, pattern):
+    with pytest.raises(SceneError, match=pattern):
+        load_raw(change)
+
+
+def test_scene_undercut_is_refused_at_analyse(load_raw):
+    """A 40 deg swing over 30 deg of cam on this RFF: the nose is sharper than the 9 mm roller."""
+    def change(raw):
+        segs = raw["program"]["segment"]
+        segs[0].update(beta_deg=30.0, lift_deg=40.0)
+        segs[2].update(beta_deg=30.0, lift_deg=40.0)
+        segs[3]["beta_deg"] = 290.0
+    sc = load_raw(change)
+    with pytest.raises(UndercutError, match=r"undercut .*base radius Rb \(now 18 mm\)"):
+        sc.analyse(np.radians([0.0]))
+
+
+def test_example_scene_state_is_the_arm_model():
+    """Scene.analyse of the example: Fc from the moment balance, phi and rho of the arm geometry."""
+    sc = load_scene(EXAMPLE)
+    th = np.radians(np.arange(0.0, 360.0, 1.0))
+    st = sc.analyse(th)
+    d = sc.program.derivatives(th)
+    g = arm_geometry(sc.follower, d.s, d.s1, d.s2)
+    w, dyn = sc.omega, sc.dynamics
+    M = dyn.I * w**2 * d.s2 + dyn.k_t * d.s + dyn.M_pl + dyn.c_t * w * d.s1
+    np.testing.assert_allclose(st.Fc, M / g.lever, rtol=1e-12)  # the same formula, one division apart
+    np.testing.assert_allclose(st.phi, g.phi, rtol=0, atol=1e-15)
+    assert not st.liftoff.any() and not st.undercut_intervals

@@ -128,6 +128,25 @@ class OscillatingRollerFollower:
         """Largest arm lift before the arm folds past the line pivot-cam centre (rad): pi - beta0."""
         return math.pi - self.beta0
 
+    def cam_profile(self, theta, s, s1, s2, *, allow_undercut: bool = False) -> CamProfile:
+        """:func:`oscillating_profile` of this follower (``s, s1, s2``: the arm angle psi and its
+        theta-derivatives, rad); :func:`femcam.profile.cam_profile` hands an oscillating follower
+        here, so the scene's profile, undercut and pressure-angle checks need no dispatch.
+
+        Parameters
+        ----------
+        theta, s, s1, s2 : float or array_like
+            Cam angle [rad], arm angle [rad] and its theta-derivatives.
+        allow_undercut : bool, optional
+            Return an undercut profile with its flags instead of raising. Default False.
+
+        Returns
+        -------
+        CamProfile
+            The profile at ``theta``.
+        """
+        return oscillating_profile(self, theta, s, s1, s2, allow_undercut=allow_undercut)
+
 
 @dataclass(frozen=True)
 class ArmGeometry:
@@ -147,6 +166,9 @@ class ArmGeometry:
         Pressure angle (rad).
     lever : ndarray
         Moment arm of a unit contact force about the pivot in the psi sense, ``L cos(phi)`` (m).
+    pitch_speed : ndarray
+        ``|T|``: speed of the roller centre over the cam (cam frame) per unit cam angle (m/rad);
+        the contact point moves over the cam surface at ``omega |T| (1 - Rr kappa)``.
     """
 
     Bx: np.ndarray
@@ -158,6 +180,7 @@ class ArmGeometry:
     kappa: np.ndarray
     phi: np.ndarray
     lever: np.ndarray
+    pitch_speed: np.ndarray
 
 
 def arm_geometry(f: OscillatingRollerFollower, psi, psi1, psi2) -> ArmGeometry:
@@ -220,7 +243,8 @@ def arm_geometry(f: OscillatingRollerFollower, psi, psi1, psi2) -> ArmGeometry:
     nx, ny = -Ty / nT, Tx / nT
     phi = sg * np.arctan2(ux * ny - uy * nx, ux * nx + uy * ny)
     lever = L * (ux * nx + uy * ny)
-    return ArmGeometry(Bx=Bx, By=By, ux=ux, uy=uy, nx=nx, ny=ny, kappa=kappa, phi=phi, lever=lever)
+    return ArmGeometry(Bx=Bx, By=By, ux=ux, uy=uy, nx=nx, ny=ny, kappa=kappa, phi=phi, lever=lever,
+                       pitch_speed=nT)
 
 
 def oscillating_profile(f: OscillatingRollerFollower, theta, psi, psi1, psi2, *,

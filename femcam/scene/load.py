@@ -15,7 +15,7 @@ from .checker import _Checker
 from .contact import _contact, _layers, _tribology
 from .cross import cross_key_problems
 from .dynamics import _dynamics
-from .follower import _finite_length, _follower
+from .follower import _finite_length, _follower, arm_fold
 from .materials import _materials
 from .program import _program
 from .schema import _OPERATING, _TABLES, _TOP
@@ -59,6 +59,7 @@ def load_scene(path) -> Scene:
     omega = _operating(ck, raw)
     program = _program(ck, raw)
     fo, follower = _follower(ck, raw)
+    arm_fold(ck, program, follower)
     dyn, train, steps_per_rev = _dynamics(ck, raw)
     mats = _materials(ck, raw)
     tribo = _tribology(ck, raw, mats)
