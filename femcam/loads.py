@@ -296,6 +296,17 @@ class ArmDynamics:
     M_pl: float
     c_t: float = 0.0
 
+    def describe(self) -> str:
+        """One line of the arm dynamics (``femcam run`` prints it).
+
+        Returns
+        -------
+        str
+            Inertia, spring rate, preload moment and damping with their units.
+        """
+        return (f"I = {self.I:g} kg m^2, k_t = {self.k_t:g} N m/rad, M_pl = {self.M_pl:g} N m, "
+                f"c_t = {self.c_t:g} N m s/rad")
+
     def __post_init__(self):
         for name, unit in (("I", "kg m^2"), ("k_t", "N m/rad"), ("M_pl", "N m"), ("c_t", "N m s/rad")):
             object.__setattr__(self, name, _validate.nonnegative(name, getattr(self, name), unit))

@@ -211,10 +211,12 @@ def test_example_scene_state_is_the_arm_model():
     sc = load_scene(EXAMPLE)
     th = np.radians(np.arange(0.0, 360.0, 1.0))
     st = sc.analyse(th)
-    d = sc.program.derivatives(th)
-    g = arm_geometry(sc.follower, d.s, d.s1, d.s2)
+    d, L = sc.program.derivatives(th), sc.follower.L
+    psi, psi1, psi2 = d.s / L, d.s1 / L, d.s2 / L  # the scene program holds the arc travel L psi
+    assert np.max(psi) == pytest.approx(math.radians(10.0), rel=1e-12)  # lift_deg = 10
+    g = arm_geometry(sc.follower, psi, psi1, psi2)
     w, dyn = sc.omega, sc.dynamics
-    M = dyn.I * w**2 * d.s2 + dyn.k_t * d.s + dyn.M_pl + dyn.c_t * w * d.s1
+    M = dyn.I * w**2 * psi2 + dyn.k_t * psi + dyn.M_pl + dyn.c_t * w * psi1
     np.testing.assert_allclose(st.Fc, M / g.lever, rtol=1e-12)  # the same formula, one division apart
     np.testing.assert_allclose(st.phi, g.phi, rtol=0, atol=1e-15)
     assert not st.liftoff.any() and not st.undercut_intervals

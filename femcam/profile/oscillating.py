@@ -1,8 +1,10 @@
 r"""Oscillating roller follower: the arm geometry, the cam profile by the envelope of the roller,
 pressure angle, radius of curvature, undercut and the smallest base circle.
 
-The motion laws are reused unchanged: the cam program's "lift" is the arm angle ``psi`` (rad),
-``psi(theta) = lift * s_normalised``, with ``psi1 = dpsi/dtheta`` and ``psi2 = d2psi/dtheta2``.
+The motion laws are reused unchanged: the arm angle is ``psi(theta) = lift * s_normalised`` (rad),
+with ``psi1 = dpsi/dtheta`` and ``psi2 = d2psi/dtheta2``. The functions here take ``psi``; a
+scene's cam program holds the roller centre's arc travel ``L psi`` (m), so that every lift,
+velocity and acceleration column keeps its unit (:meth:`OscillatingRollerFollower.cam_profile`).
 
 Frames and sign conventions
 ---------------------------
@@ -128,24 +130,42 @@ class OscillatingRollerFollower:
         """Largest arm lift before the arm folds past the line pivot-cam centre (rad): pi - beta0."""
         return math.pi - self.beta0
 
+    def describe(self) -> str:
+        """One line of the geometry in mm and deg (``femcam run`` prints it).
+
+        Returns
+        -------
+        str
+            Radii, pivot distance, arm length, direction, base-circle arm angle.
+        """
+        side = "away_from_pivot" if self.sigma == 1 else "toward_pivot"
+        return (f"Rb = {self.Rb * 1e3:g} mm, Rr = {self.Rr * 1e3:g} mm, pivot {self.a * 1e3:g} mm, arm "
+                f"{self.L * 1e3:g} mm, {side}, base-circle arm angle {math.degrees(self.beta0):.4g} deg")
+
     def cam_profile(self, theta, s, s1, s2, *, allow_undercut: bool = False) -> CamProfile:
-        """:func:`oscillating_profile` of this follower (``s, s1, s2``: the arm angle psi and its
-        theta-derivatives, rad); :func:`femcam.profile.cam_profile` hands an oscillating follower
-        here, so the scene's profile, undercut and pressure-angle checks need no dispatch.
+        """:func:`oscillating_profile` at the roller-centre arc travel ``s = L psi`` (m) of a scene
+        program; :func:`femcam.profile.cam_profile` hands an oscillating follower here, so the
+        scene's profile, undercut and pressure-angle checks need no dispatch. (A scene program of
+        an oscillating follower holds ``L psi`` in m, so ``s_mm``, ``v``, ``a`` of every table are
+        the roller centre's travel along its arc, in their stated units.)
 
         Parameters
         ----------
-        theta, s, s1, s2 : float or array_like
-            Cam angle [rad], arm angle [rad] and its theta-derivatives.
+        theta : float or array_like
+            Cam angle [rad].
+        s, s1, s2 : float or array_like
+            Arc travel of the roller centre ``L psi`` [m] and its theta-derivatives [m/rad^k].
         allow_undercut : bool, optional
             Return an undercut profile with its flags instead of raising. Default False.
 
         Returns
         -------
         CamProfile
-            The profile at ``theta``.
+            The profile at ``theta`` (``CamProfile.s``: psi in rad).
         """
-        return oscillating_profile(self, theta, s, s1, s2, allow_undercut=allow_undercut)
+        L = self.L
+        return oscillating_profile(self, theta, np.asarray(s, float) / L, np.asarray(s1, float) / L,
+                                   np.asarray(s2, float) / L, allow_undercut=allow_undercut)
 
 
 @dataclass(frozen=True)

@@ -6,10 +6,12 @@ Lengths are given in mm (``_mm``) and um (``_um``), angles in deg; the checked v
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 from ..errors import InputError
 from ..halfspace.crown import RollerProfile
+from ..kinematics import CamProgram
 from ..profile import DIRECTIONS, OscillatingRollerFollower, make_follower
 from .checker import _Checker, _fmt
 from .schema import _ARM, _CAM, _FINITE, _FINITE_SI, _FOLLOWER, _FOLLOWER_ONLY
@@ -94,6 +96,28 @@ def _oscillating(ck: _Checker, g: dict, fo: dict, ftype):
                                      sigma=DIRECTIONS[fo.get("direction", "away_from_pivot")])
 
 
+def arm_program(program, follower):
+    """The scene program of an oscillating follower: each lift (rad, from ``lift_deg``) times the
+    arm length, the roller centre's arc travel ``L psi`` (m); other programs unchanged.
+
+    Parameters
+    ----------
+    program : femcam.kinematics.CamProgram or None
+        The checked program (lifts of an oscillating follower in rad).
+    follower : object
+        The checked follower.
+
+    Returns
+    -------
+    femcam.kinematics.CamProgram or None
+        The program in m.
+    """
+    if not isinstance(follower, OscillatingRollerFollower) or program is None:
+        return program
+    L = follower.L
+    return CamProgram([dataclasses.replace(sg, h=sg.h * L) if sg.h else sg for sg in program.segments])
+
+
 def arm_fold(ck: _Checker, program, follower) -> None:
     """Refuse a program whose largest arm lift folds the arm past the line pivot-cam centre.
 
@@ -108,7 +132,7 @@ def arm_fold(ck: _Checker, program, follower) -> None:
     """
     if not isinstance(follower, OscillatingRollerFollower) or program is None:
         return
-    top = program.h_max
+    top = program.h_max  # rad: checked before arm_program scales it
     if top >= follower.psi_fold:
         ck.add("program.segment.lift_deg", f"= {math.degrees(top):g} deg (the largest arm lift of the "
                f"program): folds the arm past the line pivot-cam centre; must be < "

@@ -51,9 +51,9 @@ class SceneState:
         Cam angles (rad).
     s, v, a, j : ndarray, shape (n,), float
         Lift (m), velocity (m/s), acceleration (m/s^2), jerk (m/s^3) at ``omega``; for an
-        oscillating follower the arm angle psi (rad) and its rates (rad/s^k).
+        oscillating follower the roller centre's travel along its arc, ``L psi`` and its rates.
     s1, s2 : ndarray, shape (n,), float
-        ds/dtheta (m/rad), d2s/dtheta2 (m/rad^2) (rad/rad^k for an oscillating follower).
+        ds/dtheta (m/rad), d2s/dtheta2 (m/rad^2).
     phi : ndarray, shape (n,), float
         Pressure angle (rad).
     rho : ndarray, shape (n,), float
@@ -332,8 +332,9 @@ class Scene:
             raise UndercutError(f"{self._dense_undercut[1]} (found by the dense check on "
                                 f"{UNDERCUT_CHECK_N} angles over one revolution and "
                                 f"{SEGMENT_CHECK_N} in each segment; the analysed angles miss it)")
-        if isinstance(self.dynamics, ArmDynamics):  # oscillating arm: s, v, a are psi and its rates
-            r = arm_contact_force(self.dynamics, d.theta, d.s, v, a, self.follower.L, p.phi)
+        if isinstance(self.dynamics, ArmDynamics):  # oscillating arm: s, v, a are L psi and its rates
+            L = self.follower.L
+            r = arm_contact_force(self.dynamics, d.theta, d.s / L, v / L, a / L, L, p.phi)
         elif self.train is None:
             r = contact_force(self.dynamics, d.theta, d.s, v, a, p.phi)
         else:  # the dynamic contact force of the periodic train response, at theta

@@ -632,7 +632,9 @@ def follower_slip(follower, theta, s, s1, s2, *, omega, Fc=None, roller_model: s
         if roller_model != "srr":
             raise _validate.fail("roller_model", roller_model, "", "an oscillating roller has the "
                                  "slide-to-roll ratio model only ('srr'; srr = 0: pure rolling)")
-        return oscillating_roller_srr(theta, s, s1, s2, follower=follower, omega=omega, srr=srr)
+        L = follower.L  # a scene's s is the roller centre's arc travel L psi (m)
+        return oscillating_roller_srr(theta, np.asarray(s, float) / L, np.asarray(s1, float) / L,
+                                      np.asarray(s2, float) / L, follower=follower, omega=omega, srr=srr)
     if kind != "RollerFollower":
         raise _validate.fail("follower", kind, "",
                       "must be a RollerFollower, KnifeEdgeFollower, FlatFacedFollower or "
