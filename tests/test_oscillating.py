@@ -220,3 +220,21 @@ def test_example_scene_state_is_the_arm_model():
     np.testing.assert_allclose(st.Fc, M / g.lever, rtol=1e-12)  # the same formula, one division apart
     np.testing.assert_allclose(st.phi, g.phi, rtol=0, atol=1e-15)
     assert not st.liftoff.any() and not st.undercut_intervals
+
+
+@pytest.mark.parametrize("sigma", [1, -1])
+def test_a_rise_adds_a_positive_pressure_angle_on_either_side(sigma):
+    """Sign convention (docs/oscillating.md): phi - phi(base circle) has the sign of psi' while the
+    arm swings, on both sides of the pivot; the side only changes the base-circle value, whose
+    size is the angle between the roller path u and the radius OB (cosine rule reference)."""
+    f = OscillatingRollerFollower(Rb=Rb, Rr=Rr, a=0.05, L=0.035, sigma=sigma)
+    th = np.linspace(0.2, 1.4, 7)  # inside the rise
+    d = _program(0.2).derivatives(th)
+    rise_part = arm_geometry(f, d.s, d.s1, d.s2).phi - arm_geometry(f, d.s, 0.0 * d.s1, 0.0).phi
+    assert np.all(rise_part > 0.0)
+    base = float(arm_geometry(f, 0.0, 0.0, 0.0).phi)
+    # at B0: |OB| = Rp; the angle at B between B->O and the arm is gamma, cos gamma by the cosine
+    # rule; u is perpendicular to the arm, so |phi_base| = |90 deg - gamma|
+    cos_g = (f.Rp**2 + f.L**2 - f.a**2) / (2 * f.Rp * f.L)
+    assert abs(base) == pytest.approx(abs(0.5 * math.pi - math.acos(cos_g)), abs=1e-14)
+    assert math.copysign(1.0, base) == -sigma  # this geometry: the path leans away from O on +1

@@ -40,7 +40,7 @@ sigma      side of the roller (+1 away_from_pivot, -1 toward)   -
 T, U       dP/dtheta, d2P/dtheta2 written in the fixed frame    m        Chen (1982) ch. 4
 u          unit velocity direction of B, dB/dbeta / L           -
 n          outward unit normal of the cam at the contact        -
-phi        pressure angle, signed angle from u to n (x sigma)   rad      Norton ch. 8
+phi        pressure angle, signed angle from u to n            rad      Norton ch. 8
 kappa      pitch-curve curvature (> 0 convex)                   1/m
 rho        cam surface radius of curvature 1/kappa - Rr         m        > 0 convex, < 0 concave
 =========  ==================================================  =======  ===========================
@@ -261,7 +261,9 @@ def arm_geometry(f: OscillatingRollerFollower, psi, psi1, psi2) -> ArmGeometry:
     nT = np.hypot(Tx, Ty)
     kappa = -(Tx * Uy - Ty * Ux) / nT**3
     nx, ny = -Ty / nT, Tx / nT
-    phi = sg * np.arctan2(ux * ny - uy * nx, ux * nx + uy * ny)
+    # no sigma factor: a rise turns the normal the same way on both sides (as s' - e does for a
+    # translating roller); the side shows in the base-circle value, like an offset
+    phi = np.arctan2(ux * ny - uy * nx, ux * nx + uy * ny)
     lever = L * (ux * nx + uy * ny)
     return ArmGeometry(Bx=Bx, By=By, ux=ux, uy=uy, nx=nx, ny=ny, kappa=kappa, phi=phi, lever=lever,
                        pitch_speed=nT)
