@@ -238,3 +238,36 @@ def test_a_rise_adds_a_positive_pressure_angle_on_either_side(sigma):
     cos_g = (f.Rp**2 + f.L**2 - f.a**2) / (2 * f.Rp * f.L)
     assert abs(base) == pytest.approx(abs(0.5 * math.pi - math.acos(cos_g)), abs=1e-14)
     assert math.copysign(1.0, base) == -sigma  # this geometry: the path leans away from O on +1
+
+
+def test_surface_speed_on_the_base_circle_and_a_dwell():
+    """On a dwell the roller centre stands still, so the cam surface passes the contact at
+    omega x (cam radius there): omega Rb on the base circle, omega (|B| - Rr) on the top dwell."""
+    from femcam.wear.slip import follower_slip
+
+    sc = load_scene(EXAMPLE)
+    th = np.radians([70.0, 200.0])  # the top dwell (65-75 deg) and the base circle
+    d = sc.program.derivatives(th)
+    r = follower_slip(sc.follower, th, d.s, d.s1, d.s2, omega=sc.omega, roller_model="srr", srr=0.0)
+    f, psi = sc.follower, math.radians(10.0)
+    R_top = math.sqrt(f.a**2 + f.L**2 - 2 * f.a * f.L * math.cos(f.beta0 + psi)) - f.Rr
+    # round-off of the arm geometry (a few products of 1e-2 m numbers)
+    np.testing.assert_allclose(r.V_cam, sc.omega * np.array([R_top, f.Rb]), rtol=1e-12)
+    assert np.all(r.v_slip == 0.0)  # srr = 0: pure rolling
+
+
+def test_assessment_columns_of_an_arm(load_raw):
+    """The assessment (film, fatigue) runs on the arm's state: the cam surface speed on the base
+    circle is omega Rb, and the safety factors are numbers."""
+    from femcam.sweep import sweep
+
+    assess = tomllib.loads((EXAMPLE.parent / "seed002_assess.toml").read_text(encoding="utf-8"))
+
+    def change(raw):
+        raw["operating"]["oil_temperature_C"] = 90.0
+        for k in ("materials", "lubricant", "surface"):
+            raw[k] = assess[k]
+    sc = load_raw(change)
+    t = sweep(sc, angles=np.radians([20.0, 200.0]), method="hertz").table
+    assert t["assess_u_cam"][1] == pytest.approx(sc.omega * sc.follower.Rb, rel=1e-12)
+    assert np.all(np.isfinite(t["assess_sf_yield"])) and np.all(np.isfinite(t["assess_h_c"]))
