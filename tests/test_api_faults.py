@@ -214,6 +214,12 @@ CASES: dict[str, Case] = {
         lazy(lambda: dict(dyn=scene().dynamics, theta=TH, s=state().s, v=state().v,
                           a=state().a, phi=state().phi)),
         {"theta": REAL, "s": REAL, "v": REAL, "a": REAL, "phi": REAL + (2.0,)}),
+    "femcam.loads.ArmDynamics": Case(kw(I=1e-5, k_t=20.0, M_pl=5.0, c_t=0.01),
+                                     {"I": NONNEG, "k_t": NONNEG, "M_pl": NONNEG, "c_t": NONNEG}),
+    "femcam.loads.arm_contact_force": Case(
+        lazy(lambda: dict(dyn=_arm_dyn(), theta=TH, psi=0.1 + 0 * TH, psi_dot=0 * TH, psi_ddot=TH,
+                          L=0.035, phi=0.1 + 0 * TH)),
+        {"theta": REAL, "psi": REAL, "psi_dot": REAL, "psi_ddot": REAL, "L": POS, "phi": REAL + (2.0,)}),
     # femcam.io
     "femcam.io.vtu_name": Case(kw(theta=0.5), {"theta": REAL}),
     "femcam.io.write_hertz_vtu": Case(
@@ -395,6 +401,18 @@ CASES: dict[str, Case] = {
     "femcam.profile.KnifeEdgeFollower": Case(kw(Rb=0.02, e=0.0), {"Rb": POS, "e": REAL}),
     "femcam.profile.RollerFollower": Case(kw(Rb=0.01, Rr=0.01, e=0.0),
                                           {"Rb": POS, "Rr": POS, "e": REAL}),
+    "femcam.profile.OscillatingRollerFollower": Case(
+        kw(Rb=0.02, Rr=0.008, a=0.05, L=0.035, sigma=1),
+        {"Rb": POS, "Rr": POS, "a": POS, "L": POS, "sigma": ("str", "none", "nan", 2.5)}),
+    "femcam.profile.arm_geometry": Case(lazy(lambda: dict(f=_osc(), psi=0.1 + 0 * TH, psi1=0 * TH,
+                                                          psi2=0 * TH)),
+                                        {"psi": REAL, "psi1": REAL, "psi2": REAL}),
+    "femcam.profile.oscillating_profile": Case(
+        lazy(lambda: dict(f=_osc(), theta=TH, psi=0.1 + 0 * TH, psi1=0 * TH, psi2=0 * TH)),
+        {"theta": REAL, "psi": REAL, "psi1": REAL, "psi2": REAL}),
+    "femcam.profile.min_base_radius_oscillating": Case(
+        lazy(lambda: dict(program=_osc_program(), Rr=0.008, a=0.05, L=0.035, n_theta=360)),
+        {"Rr": POS, "a": POS, "L": POS, "phi_max": POS + (1.6,), "n_theta": INT_POS}),
     "femcam.profile.bool_intervals": Case(kw(theta=TH, mask=TH > 1.0), {"theta": REAL}),
     "femcam.profile.cam_profile": Case(
         lazy(lambda: dict(f=follower(), theta=TH, s=state().s, s1=state().s1, s2=state().s2)),
@@ -639,6 +657,24 @@ def _synth_options():
     return SynthesisOptions(n_elements=36)
 
 
+def _osc():
+    from femcam.profile import OscillatingRollerFollower
+
+    return OscillatingRollerFollower(Rb=0.02, Rr=0.008, a=0.05, L=0.035)
+
+
+def _osc_program():
+    from femcam.kinematics import CamProgram, dwell, fall, rise
+
+    return CamProgram([rise(1.6, 0.2), dwell(0.8), fall(1.6, 0.2), dwell(2 * math.pi - 4.0)])
+
+
+def _arm_dyn():
+    from femcam.loads import ArmDynamics
+
+    return ArmDynamics(I=1e-5, k_t=20.0, M_pl=5.0)
+
+
 # Public callables that take no physical number of their own, with the reason. Records a
 # function returns (results, built models, mesh records) are made by femcam, not by a user.
 RESULT = "a result or built-model record femcam returns (its inputs are checked where it is made)"
@@ -658,7 +694,8 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.mesh.BodyMesh", "femcam.mesh.ContactMesh", "femcam.mesh.PhysicalGroup",
         "femcam.optimise.OptimiseResult", "femcam.optimise.StartRecord", "femcam.optimise.FECheck",
         "femcam.study.StudyResult",
-        "femcam.profile.BaseRadiusResult", "femcam.profile.CamProfile", "femcam.scene.Scene",
+        "femcam.profile.BaseRadiusResult", "femcam.profile.ArmGeometry", "femcam.profile.CamProfile",
+        "femcam.scene.Scene",
         "femcam.scene.SceneState", "femcam.sweep.SweepResult",
         "femcam.synthesis.SynthesisResult", "femcam.synthesis.Comparison",
         "femcam.synthesis.StudyRow", "femcam.wear.ConvergenceTable", "femcam.wear.EvolutionCase",

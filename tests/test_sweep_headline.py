@@ -35,7 +35,7 @@ from femcam.fe.angles import curvature_jumps
 from femcam.hertz.surface import surface_stress
 from femcam.io import vtu_name
 from femcam.materials import Material
-from femcam.profile import RollerFollower
+from femcam.profile import OscillatingRollerFollower, RollerFollower
 from femcam.scene import load_scene
 from femcam.sweep import sweep
 from femcam.sweep.headline import SURF_EDGE_TOL, edge_flags, omitted_physics
@@ -45,6 +45,9 @@ EX = Path(__file__).resolve().parents[1] / "examples"
 HEAVY = {"seed002_cam_on_shaft": "the fully refined cam disk model, ~4 s",
          "seed002_needle_roller": "the ring and needle model, ~3 s"}
 A_OVER_H = 6.0  # coarse: the consistency checks are exact identities, not accuracy
+
+#: the followers that carry a roller (radius Rr): on a slide or on an arm
+ROLLERS = (RollerFollower, OscillatingRollerFollower)
 
 
 def _e_star(cam, roller, plane):
@@ -88,7 +91,7 @@ def _angles(sc) -> np.ndarray:
     grid = np.radians(np.arange(0.0, 360.0, 2.0))
     Fc = np.asarray(sc.analyse(grid).Fc, float)
     th = [float(grid[int(np.argmax(np.where(Fc > 0, Fc, -np.inf)))])]
-    if isinstance(sc.follower, RollerFollower):   # curvature_jumps takes a roller follower
+    if isinstance(sc.follower, ROLLERS):   # curvature_jumps takes a roller follower
         jumps = curvature_jumps(sc.program, sc.follower)
         if jumps:
             th.append(float(jumps[0].theta))
@@ -105,7 +108,7 @@ def check_headline(sc, path, r, out) -> int:
     Returns the number of rows checked."""
     E_star = _e_star(sc.cam, sc.roller, sc.plane)
     # the second radius: the roller's, a knife-edge's tip radius, or none (flat face)
-    Rr = sc.follower.Rr if isinstance(sc.follower, RollerFollower) else (sc.tip_radius or math.inf)
+    Rr = sc.follower.Rr if isinstance(sc.follower, ROLLERS) else (sc.tip_radius or math.inf)
     omitted = _omitted_from_toml(path)
     ok = np.flatnonzero(r.status == "ok")
     assert ok.size, f"{path.name}: no ok row"

@@ -201,15 +201,17 @@ def _run(args) -> int:
     opts += ["--allow-undercut"] if args.allow_undercut else []
     command = shlex.join(["femcam", "run", str(args.scene), *opts])
 
-    fo = scene.follower
-    geo = f"Rb = {fo.Rb * 1e3:g} mm" + (f", Rr = {fo.Rr * 1e3:g} mm" if fo.kind == "roller" else "") \
-        + f", e = {fo.e * 1e3:g} mm"
+    fo, dy = scene.follower, scene.dynamics
+    # a follower or dynamics record that describes itself (the oscillating arm) says so
+    geo = fo.describe() if hasattr(fo, "describe") else (
+        f"Rb = {fo.Rb * 1e3:g} mm" + (f", Rr = {fo.Rr * 1e3:g} mm" if fo.kind == "roller" else "")
+        + f", e = {fo.e * 1e3:g} mm")
+    dyn = dy.describe() if hasattr(dy, "describe") else (
+        f"m = {dy.m:g} kg, k = {dy.k:g} N/m, Fpl = {dy.Fpl:g} N, c = {dy.c:.4g} N s/m")
     print(f"femcam run: {scene.name}  ({scene.source_path})")
     if scene.description:
         print(f"  {scene.description}")
-    print(f"  {fo.kind} follower, {geo}; omega = {scene.omega:.6g} rad/s ({scene.rpm:.6g} rpm); "
-          f"m = {scene.dynamics.m:g} kg, k = {scene.dynamics.k:g} N/m, Fpl = {scene.dynamics.Fpl:g} N, "
-          f"c = {scene.dynamics.c:.4g} N s/m")
+    print(f"  {fo.kind} follower, {geo}; omega = {scene.omega:.6g} rad/s ({scene.rpm:.6g} rpm); {dyn}")
     print()
     print(scene.program.table(omega=scene.omega))  # junction jumps in m/s, m/s^2, m/s^3
     print()
@@ -230,7 +232,7 @@ def _run(args) -> int:
                                                 "Summary:", *summ]) + "\n")
     files.append(out / "summary.txt")
     if not args.no_plots:
-        files += plot_all(st, out, "", Rr=fo.Rr if fo.kind == "roller" else 0.0,
+        files += plot_all(st, out, "", Rr=fo.Rr if fo.kind in ("roller", "oscillating_roller") else 0.0,
                           limit_deg=args.phi_limit_deg, title=scene.name)
     print()
     print("Wrote: " + ", ".join(str(f) for f in files))

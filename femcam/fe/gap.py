@@ -52,7 +52,13 @@ import numpy as np
 from .. import _validate
 from ..errors import PhysicsError
 from ..mesh import surface_height
-from ..profile import FlatFacedFollower, KnifeEdgeFollower, RollerFollower, cam_profile
+from ..profile import (
+    FlatFacedFollower,
+    KnifeEdgeFollower,
+    OscillatingRollerFollower,
+    RollerFollower,
+    cam_profile,
+)
 
 GAP_KINDS = ("normal", "vertical")
 #: cam surface samples per local window (linear interpolation error ~ (window/N)^2 / (8 rho))
@@ -112,7 +118,7 @@ def contact_geometry(follower, tip_radius: float | None = None):
     InputError
         A knife-edge follower without ``tip_radius``, or not a follower.
     """
-    if isinstance(follower, RollerFollower):
+    if isinstance(follower, RollerFollower | OscillatingRollerFollower):  # a roller on a slide or an arm
         return follower, follower.Rr
     if isinstance(follower, KnifeEdgeFollower):
         if tip_radius is None:

@@ -1,7 +1,8 @@
 """Follower geometry: cam surface, pressure angle, radius of curvature, smallest base circle.
 
 Modules: ``geometry`` (the followers, :func:`cam_profile` and the pure formulas, with the frames,
-sign conventions and the symbol table) and ``base_radius`` (:func:`min_base_radius`).
+sign conventions and the symbol table) and ``base_radius`` (:func:`min_base_radius`)
+and ``oscillating`` (the oscillating roller follower).
 """
 
 from .base_radius import RB_MARGIN, BaseRadiusResult, min_base_radius
@@ -19,7 +20,17 @@ from .geometry import (
     pitch_curvature,
     pressure_angle,
 )
+from .oscillating import (
+    DIRECTIONS,
+    ArmGeometry,
+    OscillatingRollerFollower,
+    arm_geometry,
+    min_base_radius_oscillating,
+    oscillating_profile,
+)
 
-__all__ = ["FOLLOWER_KINDS", "RB_MARGIN", "BaseRadiusResult", "CamProfile", "FlatFacedFollower", "Follower",
-           "KnifeEdgeFollower", "RollerFollower", "bool_intervals", "cam_profile", "flat_face_radius",
-           "make_follower", "min_base_radius", "pitch_curvature", "pressure_angle"]
+__all__ = ["DIRECTIONS", "FOLLOWER_KINDS", "RB_MARGIN", "ArmGeometry", "BaseRadiusResult",
+           "CamProfile", "FlatFacedFollower", "Follower", "KnifeEdgeFollower",
+           "OscillatingRollerFollower", "RollerFollower", "arm_geometry", "bool_intervals",
+           "cam_profile", "flat_face_radius", "make_follower", "min_base_radius",
+           "min_base_radius_oscillating", "oscillating_profile", "pitch_curvature", "pressure_angle"]

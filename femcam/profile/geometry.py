@@ -514,9 +514,12 @@ def cam_profile(f: Follower, theta, s, s1, s2, *, allow_undercut: bool = False) 
         Not a follower, non-finite or non-broadcasting inputs, or a pitch point through the
         cam centre (``s <= -sqrt(Rp^2 - e^2)``).
     """
+    own = getattr(type(f), "cam_profile", None)
+    if own is not None:  # a follower that owns its profile (femcam.profile.oscillating)
+        return own(f, theta, s, s1, s2, allow_undercut=allow_undercut)
     if not isinstance(f, RollerFollower | KnifeEdgeFollower | FlatFacedFollower):
-        raise InputError(f"follower = {f!r}: must be a RollerFollower, KnifeEdgeFollower or "
-                         "FlatFacedFollower")
+        raise InputError(f"follower = {f!r}: must be a RollerFollower, KnifeEdgeFollower, "
+                         "FlatFacedFollower or OscillatingRollerFollower")
     theta = _validate.finite_array("theta", theta, "rad")
     s = _validate.finite_array("s", s, "m")
     s1 = _validate.finite_array("s1", s1, "m/rad")

@@ -8,9 +8,13 @@ from __future__ import annotations
 
 from ..dynamics import TrainModel
 from ..errors import InputError
-from ..loads import FollowerDynamics
+from ..loads import ArmDynamics, FollowerDynamics
 from .checker import _Checker, _fmt
-from .schema import _DYNAMICS, _TRAIN
+from .follower import is_oscillating
+from .schema import _ARM_DYNAMICS, _DYNAMICS, _TRAIN
+
+#: the keys of a translating follower's [dynamics] that an oscillating arm replaces
+_TRANSLATING = ("mass_kg", "spring_N_per_m", "preload_N", "damping_N_s_per_m", "damping_ratio")
 
 
 def _dynamics(ck: _Checker, raw: dict) -> tuple:
@@ -20,9 +24,40 @@ def _dynamics(ck: _Checker, raw: dict) -> tuple:
     dy = ck.table(g, "dynamics", _DYNAMICS)
     if not (isinstance(g, dict) and "dynamics" in raw):
         return None, None, None
+    if is_oscillating(raw):
+        return _arm_dynamics(ck, g, dy), None, None
+    for k in _ARM_DYNAMICS:
+        if k in g:
+            ck.add(f"dynamics.{k}", f"= {_fmt(g[k])}: only an oscillating follower (motion = 'oscillating') "
+                   "has this key")
+    for k in ("mass_kg", "spring_N_per_m", "preload_N"):
+        if k not in g:
+            ck.add(f"dynamics.{k}", f"missing required key (unit: {_DYNAMICS[k][0]})")
     dyn = _follower_dynamics(ck, g, dy)
     steps = int(dy["steps_per_rev"]) if "steps_per_rev" in dy else None
     return dyn, _train(ck, g, dy, dyn), steps
+
+
+def _arm_dynamics(ck: _Checker, g: dict, dy: dict) -> ArmDynamics | None:
+    """The rigid arm of an oscillating follower: moment balance about the pivot
+    (femcam.loads.arm_contact_force); the elastic train is not modelled for an arm."""
+    for k in _TRANSLATING:
+        if k in g:
+            ck.add(f"dynamics.{k}", f"= {_fmt(g[k])} {_DYNAMICS[k][0]}: a translating follower's key; an "
+                   "oscillating arm takes arm_inertia_kg_m2, spring_rate_N_m_per_rad, preload_N_m, "
+                   "damping_N_m_s_per_rad")
+    if g.get("model", "rigid") != "rigid" or any(k.startswith(("train_", "second_", "steps_")) for k in g):
+        ck.add("dynamics.model", f"= {_fmt(g.get('model', 'rigid'))}: the elastic follower train (one_dof, "
+               "two_dof) of an oscillating arm is not modelled; use model = 'rigid' (the moment balance "
+               "about the pivot)")
+    for k in ("arm_inertia_kg_m2", "spring_rate_N_m_per_rad", "preload_N_m"):
+        if k not in g:
+            ck.add(f"dynamics.{k}", f"missing required key for an oscillating follower (unit: "
+                   f"{_ARM_DYNAMICS[k][0]})")
+    if not all(k in dy for k in ("arm_inertia_kg_m2", "spring_rate_N_m_per_rad", "preload_N_m")):
+        return None
+    return ArmDynamics(I=dy["arm_inertia_kg_m2"], k_t=dy["spring_rate_N_m_per_rad"], M_pl=dy["preload_N_m"],
+                       c_t=dy.get("damping_N_m_s_per_rad", 0.0))
 
 
 def _follower_dynamics(ck: _Checker, g: dict, dy: dict) -> FollowerDynamics | None:

@@ -6,11 +6,32 @@ Lengths are given in mm (``_mm``) and um (``_um``), angles in deg; the checked v
 
 from __future__ import annotations
 
+import dataclasses
+import math
+
 from ..errors import InputError
 from ..halfspace.crown import RollerProfile
-from ..profile import make_follower
+from ..kinematics import CamProgram
+from ..profile import DIRECTIONS, OscillatingRollerFollower, make_follower
 from .checker import _Checker, _fmt
-from .schema import _CAM, _FINITE, _FINITE_SI, _FOLLOWER, _FOLLOWER_ONLY
+from .schema import _ARM, _CAM, _FINITE, _FINITE_SI, _FOLLOWER, _FOLLOWER_ONLY
+
+
+def is_oscillating(raw: dict) -> bool:
+    """True when the parsed scene's ``[follower] motion`` is ``"oscillating"``.
+
+    Parameters
+    ----------
+    raw : dict
+        The parsed scene file.
+
+    Returns
+    -------
+    bool
+        ``[follower] motion == "oscillating"``.
+    """
+    g = raw.get("follower")
+    return isinstance(g, dict) and g.get("motion") == "oscillating"
 
 
 def _follower(ck: _Checker, raw: dict):
@@ -19,7 +40,13 @@ def _follower(ck: _Checker, raw: dict):
     fo = ck.table(g, "follower", _FOLLOWER)
     ftype = fo.get("type")
     follower = None
-    if ftype == "roller" and "roller_radius_mm" not in g:
+    if is_oscillating(raw):
+        return fo, _oscillating(ck, g, fo, ftype)
+    arm = [k for k in _ARM if isinstance(g, dict) and k in g and k != "motion"]
+    if arm:
+        ck.add(f"follower.{arm[0]}", f"= {_fmt(g[arm[0]])}: only an oscillating follower (motion = "
+               "'oscillating') has this key")
+    elif ftype == "roller" and "roller_radius_mm" not in g:
         ck.add("follower.roller_radius_mm", "missing required key for a roller follower (unit: mm)")
     elif _follower_only_keys(ck, g, ftype):
         pass
@@ -36,6 +63,81 @@ def _follower(ck: _Checker, raw: dict):
             ck.add("follower.offset_mm", f"= {_fmt(g['offset_mm'])} mm: must satisfy "
                    f"|offset| < prime-circle radius {Rp_mm:g} mm")
     return fo, follower
+
+
+def _oscillating(ck: _Checker, g: dict, fo: dict, ftype):
+    """The OscillatingRollerFollower of ``motion = "oscillating"`` (None on a problem)."""
+    if ftype not in (None, "roller"):
+        ck.add("follower.type", f"= {_fmt(ftype)}: an oscillating follower is a roller (type = 'roller'); "
+               "knife-edge and flat-faced (pad) arms are not modelled")
+        return None
+    bad = [k for k in ("offset_mm", *_FOLLOWER_ONLY) if k in g]
+    for k in bad:
+        unit = f" {_FOLLOWER[k][0]}" if _FOLLOWER[k][0] else ""
+        ck.add(f"follower.{k}", f"= {_fmt(g[k])}{unit}: not a key of an oscillating follower (the arm "
+               "geometry is pivot_distance_mm, arm_length_mm, direction)")
+    for k, unit in (("roller_radius_mm", "mm"), ("pivot_distance_mm", "mm"), ("arm_length_mm", "mm")):
+        if k not in g:
+            ck.add(f"follower.{k}", f"missing required key for an oscillating follower (unit: {unit})")
+    need = ("base_radius_mm", "roller_radius_mm", "pivot_distance_mm", "arm_length_mm")
+    if bad or not all(k in fo for k in need) or ("direction" in g and "direction" not in fo):
+        return None
+    Rb, Rr, a, L = (fo[k] for k in need)
+    if a <= Rb:
+        ck.add("follower.pivot_distance_mm", f"= {_fmt(g['pivot_distance_mm'])} mm: the pivot lies inside "
+               f"the base circle: must be > base_radius_mm = {_fmt(g['base_radius_mm'])} mm")
+        return None
+    if not abs(a - L) < Rb + Rr < a + L:
+        ck.add("follower.arm_length_mm", f"= {_fmt(g['arm_length_mm'])} mm: the arm cannot put the roller "
+               f"on the base circle: need |pivot_distance_mm - arm_length_mm| < base_radius_mm + "
+               f"roller_radius_mm = {(Rb + Rr) * 1e3:g} mm < pivot_distance_mm + arm_length_mm")
+        return None
+    return OscillatingRollerFollower(Rb=Rb, Rr=Rr, a=a, L=L,
+                                     sigma=DIRECTIONS[fo.get("direction", "away_from_pivot")])
+
+
+def arm_program(program, follower):
+    """The scene program of an oscillating follower: each lift (rad, from ``lift_deg``) times the
+    arm length, the roller centre's arc travel ``L psi`` (m); other programs unchanged.
+
+    Parameters
+    ----------
+    program : femcam.kinematics.CamProgram or None
+        The checked program (lifts of an oscillating follower in rad).
+    follower : object
+        The checked follower.
+
+    Returns
+    -------
+    femcam.kinematics.CamProgram or None
+        The program in m.
+    """
+    if not isinstance(follower, OscillatingRollerFollower) or program is None:
+        return program
+    L = follower.L
+    return CamProgram([dataclasses.replace(sg, h=sg.h * L) if sg.h else sg for sg in program.segments])
+
+
+def arm_fold(ck: _Checker, program, follower) -> None:
+    """Refuse a program whose largest arm lift folds the arm past the line pivot-cam centre.
+
+    Parameters
+    ----------
+    ck : _Checker
+        Collects the problem.
+    program : femcam.kinematics.CamProgram or None
+        The checked program (lifts in rad for an oscillating follower).
+    follower : object
+        The checked follower (only an OscillatingRollerFollower is checked).
+    """
+    if not isinstance(follower, OscillatingRollerFollower) or program is None:
+        return
+    top = program.h_max  # rad: checked before arm_program scales it
+    if top >= follower.psi_fold:
+        ck.add("program.segment.lift_deg", f"= {math.degrees(top):g} deg (the largest arm lift of the "
+               f"program): folds the arm past the line pivot-cam centre; must be < "
+               f"{math.degrees(follower.psi_fold):.4g} deg (180 deg - the base-circle arm angle "
+               f"{math.degrees(follower.beta0):.4g} deg)")
 
 
 def _follower_only_keys(ck: _Checker, raw, ftype) -> bool:

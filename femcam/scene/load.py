@@ -15,7 +15,7 @@ from .checker import _Checker
 from .contact import _contact, _layers, _tribology
 from .cross import cross_key_problems
 from .dynamics import _dynamics
-from .follower import _finite_length, _follower
+from .follower import _finite_length, _follower, arm_fold, arm_program
 from .materials import _materials
 from .program import _program
 from .schema import _OPERATING, _TABLES, _TOP
@@ -59,6 +59,7 @@ def load_scene(path) -> Scene:
     omega = _operating(ck, raw)
     program = _program(ck, raw)
     fo, follower = _follower(ck, raw)
+    arm_fold(ck, program, follower)
     dyn, train, steps_per_rev = _dynamics(ck, raw)
     mats = _materials(ck, raw)
     tribo = _tribology(ck, raw, mats)
@@ -70,6 +71,7 @@ def load_scene(path) -> Scene:
     _scene_wear(ck, raw, mats)
     cross_key_problems(ck, raw)
     ck.raise_if_any()
+    program = arm_program(program, follower)  # an arm's lifts (rad) -> roller-centre arc travel (m)
 
     return Scene(name=top["name"], description=top.get("description", ""), source=top.get("source", ""),
                  program=program, follower=follower, dynamics=dyn, omega=omega, cam=mats["cam"],

@@ -76,7 +76,9 @@ RANGES: dict[str, dict[str, Range]] = {
         "beta_deg": Range(0.0, 360.0, "physical: one revolution; a short segment is checked for undercut "
                           "and pressure angle at its own points"),
         "lift_mm": Range(0.0, 1000.0, "femcam: 1 m; machine cams lift at most a few hundred mm ("
-                         + _NORTON[10:] + ")")},
+                         + _NORTON[10:] + ")"),
+        "lift_deg": Range(0.0, 90.0, "femcam: an arm swings less than a quarter turn (valve-train rocker "
+                          "and finger followers swing ~10-25 deg, " + _NORTON[10:] + ")")},
     "follower": {
         "base_radius_mm": Range(0.1, 1000.0, _LEN),
         "roller_radius_mm": Range(0.1, 1000.0, _LEN),
@@ -98,7 +100,9 @@ RANGES: dict[str, dict[str, Range]] = {
                                   "1 mm is no fit"),
         "needle_count": Range(1.0, 500.0, "femcam: one contact a needle in the ring solve; at least 3 "
                               "hold the ring"),
-        "needle_radius_mm": Range(0.05, 100.0, _LEN)},
+        "needle_radius_mm": Range(0.05, 100.0, _LEN),
+        "pivot_distance_mm": Range(0.1, 2000.0, _LEN + "; and > base_radius_mm"),
+        "arm_length_mm": Range(0.1, 2000.0, _LEN + "; and the arm puts the roller on the base circle")},
     "cam": {
         "face_width_mm": Range(0.1, 1000.0, _LEN),
         "bore_mm": Range(0.05, 1000.0, _LEN + "; and < base_radius_mm"),
@@ -118,7 +122,13 @@ RANGES: dict[str, dict[str, Range]] = {
         "second_mass_kg": Range(0.0, 1e4, _MASS),
         "second_stiffness_N_per_m": Range(0.0, 1e10, _K),
         "second_damping_ratio": Range(0.0, 10.0, _DAMP),
-        "second_damping_N_s_per_m": Range(0.0, 1e6, _C)},
+        "second_damping_N_s_per_m": Range(0.0, 1e6, _C),
+        "arm_inertia_kg_m2": Range(0.0, 1e3, "physical: a 1 t arm 1 m long is ~3e2 kg m^2; valve-train "
+                                   "finger followers ~1e-5 kg m^2 (" + _NORTON[10:] + ")"),
+        "spring_rate_N_m_per_rad": Range(0.0, 1e8, "physical: a 1e10 N/m spring on a 0.1 m lever is 1e8 "
+                                         "N m/rad"),
+        "preload_N_m": Range(0.0, 1e6, "physical: 1e7 N on a 0.1 m lever, beyond any cam press"),
+        "damping_N_m_s_per_rad": Range(0.0, 1e4, "femcam: 1e6 N s/m on a 0.1 m lever")},
     "materials.*": {
         "E_GPa": Range(1e-4, 2000.0, _E),
         "nu": Range(-1.0, 0.5, "physical: a stable isotropic solid", open_=True),

@@ -46,6 +46,8 @@ _PROGRAM = {"law": ("", None, "str", False), "control_points": ("", None, "list"
             "segment": ("", None, "seglist", True)}
 _SEGMENT = {"kind": ("", None, "str", True), "beta_deg": ("deg", _DEG, "pos", True),
             "lift_mm": ("mm", 1e-3, "pos", False), "law": ("", None, "str", False),
+            # the angular lift of an oscillating arm (femcam.profile.oscillating): lift_deg, not lift_mm
+            "lift_deg": ("deg", _DEG, "pos", False),
             "control_points": ("", None, "list", False)}
 
 # ---- [follower] and [cam] ----------------------------------------------------------------------
@@ -54,6 +56,10 @@ _FOLLOWER = {"type": ("", None, "str", True), "base_radius_mm": ("mm", 1e-3, "po
              "face_width_mm": ("mm", 1e-3, "pos", True),
              # FE contact of the non-roller followers (femcam.fe.followers)
              "tip_radius_mm": ("mm", 1e-3, "pos", False), "face_length_mm": ("mm", 1e-3, "pos", False)}
+# the oscillating roller follower (femcam.profile.oscillating; docs/oscillating.md)
+_ARM = {"motion": ("", None, "str", False), "pivot_distance_mm": ("mm", 1e-3, "pos", False),
+        "arm_length_mm": ("mm", 1e-3, "pos", False), "direction": ("", None, "str", False)}
+_FOLLOWER.update(_ARM)
 #: keys only one follower type has
 _FOLLOWER_ONLY = {"tip_radius_mm": "knife_edge", "face_length_mm": "flat_faced"}
 # finite-length contact (femcam.halfspace; docs/halfspace.md): follower.face_width_mm stays the
@@ -87,8 +93,9 @@ _CAM = {"face_width_mm": ("mm", 1e-3, "pos", False),
         "shaft_fit": ("", None, "str", False), "shaft_clearance_um": ("um", 1e-6, "nonneg", False)}
 
 # ---- [dynamics] ----------------------------------------------------------------------------------
-_DYNAMICS = {"mass_kg": ("kg", 1.0, "nonneg", True), "spring_N_per_m": ("N/m", 1.0, "nonneg", True),
-             "preload_N": ("N", 1.0, "nonneg", True),
+# mass_kg, spring_N_per_m, preload_N: required for a translating follower (femcam.scene.dynamics)
+_DYNAMICS = {"mass_kg": ("kg", 1.0, "nonneg", False), "spring_N_per_m": ("N/m", 1.0, "nonneg", False),
+             "preload_N": ("N", 1.0, "nonneg", False),
              "damping_N_s_per_m": ("N s/m", 1.0, "nonneg", False),
              "damping_ratio": ("(dimensionless)", 1.0, "nonneg", False)}
 # follower-train dynamics (femcam.dynamics): model = "rigid" (eq. 11, default) | one_dof | two_dof
@@ -100,6 +107,12 @@ _TRAIN = {"model": ("", None, "str", False), "steps_per_rev": ("(count)", 1.0, "
           "second_damping_ratio": ("(dimensionless)", 1.0, "nonneg", False),
           "second_damping_N_s_per_m": ("N s/m", 1.0, "nonneg", False)}
 _DYNAMICS.update(_TRAIN)
+# the oscillating arm about its pivot (femcam.loads.ArmDynamics): required for motion = oscillating
+_ARM_DYNAMICS = {"arm_inertia_kg_m2": ("kg m^2", 1.0, "nonneg", False),
+                 "spring_rate_N_m_per_rad": ("N m/rad", 1.0, "nonneg", False),
+                 "preload_N_m": ("N m", 1.0, "nonneg", False),
+                 "damping_N_m_s_per_rad": ("N m s/rad", 1.0, "nonneg", False)}
+_DYNAMICS.update(_ARM_DYNAMICS)
 
 # ---- [materials.<body>] (cam, roller alias follower, pin, shaft) ---------------------------------
 _MATERIAL = {"E_GPa": ("GPa", 1e9, "pos", True), "nu": ("(dimensionless)", 1.0, "nu", True),
@@ -259,7 +272,8 @@ _CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", 
             "crown": ("none", "circular", "logarithmic"),
             "method": METHODS, "roller_model": ("srr", "inertia"),
             "roller_support": ("solid", "pin", "needles"), "shaft_fit": ("contact", "bonded"),
-            "hardness_law": ("exponential", "linear")}
+            "hardness_law": ("exponential", "linear"), "motion": ("translating", "oscillating"),
+            "direction": ("away_from_pivot", "toward_pivot")}
 
 #: every key table by its table group (``*``: any body; the segment index dropped): the one
 #: list the range table (:data:`femcam.scene.ranges.RANGES`), the scene reference

@@ -20,7 +20,7 @@ from .._repr import compact_repr, span
 from ..dynamics import TrainModel, periodic_response
 from ..errors import ConvergenceError, InputError, UndercutError
 from ..kinematics import CamProgram, law
-from ..loads import FollowerDynamics, LoadResult, contact_force
+from ..loads import ArmDynamics, FollowerDynamics, LoadResult, arm_contact_force, contact_force
 from ..materials import Material
 from ..profile import CamProfile, bool_intervals, cam_profile
 
@@ -51,7 +51,8 @@ class SceneState:
     theta : ndarray, shape (n,), float
         Cam angles (rad).
     s, v, a, j : ndarray, shape (n,), float
-        Lift (m), velocity (m/s), acceleration (m/s^2), jerk (m/s^3) at ``omega``.
+        Lift (m), velocity (m/s), acceleration (m/s^2), jerk (m/s^3) at ``omega``; for an
+        oscillating follower the roller centre's travel along its arc, ``L psi`` and its rates.
     s1, s2 : ndarray, shape (n,), float
         ds/dtheta (m/rad), d2s/dtheta2 (m/rad^2).
     phi : ndarray, shape (n,), float
@@ -339,7 +340,10 @@ class Scene:
             raise UndercutError(f"{self._dense_undercut[1]} (found by the dense check on "
                                 f"{UNDERCUT_CHECK_N} angles over one revolution and "
                                 f"{SEGMENT_CHECK_N} in each segment; the analysed angles miss it)")
-        if self.train is None:
+        if isinstance(self.dynamics, ArmDynamics):  # oscillating arm: s, v, a are L psi and its rates
+            L = self.follower.L
+            r = arm_contact_force(self.dynamics, d.theta, d.s / L, v / L, a / L, L, p.phi)
+        elif self.train is None:
             r = contact_force(self.dynamics, d.theta, d.s, v, a, p.phi)
         else:  # the dynamic contact force of the periodic train response, at theta
             res = self.dynamic_response

@@ -51,7 +51,13 @@ from ..fe.choice import MODELS, mechanism_Q
 from ..fe.followers import rolling_direction, sliding_sign
 from ..fe.gap import contact_geometry
 from ..materials import effective_modulus
-from ..profile import FlatFacedFollower, KnifeEdgeFollower, RollerFollower, cam_profile
+from ..profile import (
+    FlatFacedFollower,
+    KnifeEdgeFollower,
+    OscillatingRollerFollower,
+    RollerFollower,
+    cam_profile,
+)
 from ..wear.options import follower_tip_radius, slip_kwargs
 from ..wear.scene import tip_scene
 from ..wear.slip import roller_inertia
@@ -228,6 +234,9 @@ def scene_traction(scene, theta) -> Traction:
         s = -1 if str(scene.sliding).strip() == "-x" else 1
         return Traction(np.full(n, np.nan), np.full(n, s, int), f"[contact] sliding = {scene.sliding}")
     f = scene.follower
+    if isinstance(f, OscillatingRollerFollower):  # the roller slip models are translating only
+        return Traction(np.zeros(n), np.ones(n, int), "oscillating roller: pure rolling, no traction "
+                        "(the roller inertia slip model is not built for an arm)")
     if not isinstance(f, RollerFollower):
         sg = sliding_sign(scene.program, f, theta, tip_radius=_tip(scene))
         return Traction(np.full(n, np.nan), sg.astype(int), "full sliding, sign of the sliding velocity")

@@ -65,7 +65,7 @@ import numpy as np
 from .. import _validate
 from .._repr import compact_repr
 from ..errors import ConvergenceError, UndercutError
-from ..profile import pressure_angle
+from ..profile import OscillatingRollerFollower, arm_geometry, pressure_angle
 
 
 @dataclass(frozen=True)
@@ -297,6 +297,56 @@ def _roller_kinematics(theta, s, s1, s2, Rb, Rr, e, omega):
     V_cam = V_p * np.where(np.isfinite(rho_p), rho / rho_p, 1.0)
     Omega_req = omega - V_p / Rr
     return theta, s, omega, Rr, V_p, V_cam, Omega_req
+
+
+def oscillating_roller_srr(theta, psi, psi1, psi2, *, follower, omega, srr=0.0) -> SlipResult:
+    r"""Roller on an oscillating arm with a prescribed slide-to-roll ratio (``srr = 0``: rolling).
+
+    .. math:: V_{cam} = \omega\,|T|\,(1 - R_r \kappa), \quad U = \frac{2 V_{cam}}{2 + SRR}, \quad
+              v_{slip} = |SRR|\,U
+
+    ``|T|`` and ``kappa`` from :func:`femcam.profile.arm_geometry`: the contact point moves over
+    the cam surface at ``V_cam`` (the envelope's arc-length rate, docs/oscillating.md); the roller
+    surface speeds follow as in :func:`roller_srr`. ``Omega_req = V_cam / Rr`` is the roller's
+    rolling speed relative to the arm.
+
+    Parameters
+    ----------
+    theta : array_like, shape (n,)
+        Cam angles [rad].
+    psi, psi1, psi2 : array_like, shape (n,)
+        Arm angle [rad] and its theta-derivatives.
+    follower : OscillatingRollerFollower
+        The follower.
+    omega : float
+        Cam speed, ``> 0`` [rad/s].
+    srr : float, optional
+        Slide-to-roll ratio, ``-2 < srr < 2`` [-]. Default 0.
+
+    Returns
+    -------
+    SlipResult
+        Speeds per angle, shape (n,) [m/s].
+
+    Raises
+    ------
+    UndercutError
+        Cam radius of curvature ``<= 0`` (``Rr kappa >= 1``) somewhere.
+    """
+    srr = _validate.in_range("srr", srr, -2.0, 2.0, "", lo_open=True, hi_open=True)
+    f = _validate.instance("follower", follower, OscillatingRollerFollower)
+    omega = _validate.positive("omega", omega, "rad/s")
+    theta = np.ravel(_validate.finite_array("theta", theta, "rad"))
+    g = arm_geometry(f, np.ravel(psi), np.ravel(psi1), np.ravel(psi2))
+    fac = 1.0 - f.Rr * g.kappa
+    if np.any(fac <= 0.0):
+        raise UndercutError("oscillating roller: cam radius of curvature <= 0 (undercut) at theta = "
+                            f"{np.degrees(theta[fac <= 0.0][0]):.2f} deg")
+    V_cam = omega * g.pitch_speed * fac
+    U = 2.0 * V_cam / (2.0 + srr)
+    return SlipResult(theta=theta, v_slip=abs(srr) * U, V_cam=V_cam, V_follower=V_cam * (2 - srr) / (2 + srr),
+                      omega=omega, model=f"oscillating roller: slide-to-roll ratio {srr:g}",
+                      Omega_req=V_cam / f.Rr, follower_period=2 * np.pi * f.Rr)
 
 
 def roller_srr(theta, s, s1, s2, *, Rb, Rr, omega, srr, e=0.0) -> SlipResult:
@@ -578,9 +628,17 @@ def follower_slip(follower, theta, s, s1, s2, *, omega, Fc=None, roller_model: s
     if kind == "FlatFacedFollower":
         r = flat_faced(theta, s, s1, s2, Rb=follower.Rb, omega=omega)
         return dataclasses.replace(r, follower_origin=r.follower_origin - e)
+    if kind == "OscillatingRollerFollower":
+        if roller_model != "srr":
+            raise _validate.fail("roller_model", roller_model, "", "an oscillating roller has the "
+                                 "slide-to-roll ratio model only ('srr'; srr = 0: pure rolling)")
+        L = follower.L  # a scene's s is the roller centre's arc travel L psi (m)
+        return oscillating_roller_srr(theta, np.asarray(s, float) / L, np.asarray(s1, float) / L,
+                                      np.asarray(s2, float) / L, follower=follower, omega=omega, srr=srr)
     if kind != "RollerFollower":
         raise _validate.fail("follower", kind, "",
-                      "must be a RollerFollower, KnifeEdgeFollower or FlatFacedFollower")
+                      "must be a RollerFollower, KnifeEdgeFollower, FlatFacedFollower or "
+                      "OscillatingRollerFollower")
     _validate.choice("roller_model", roller_model, ROLLER_MODELS)
     if roller_model == "srr":
         return roller_srr(theta, s, s1, s2, Rb=follower.Rb, Rr=follower.Rr, omega=omega, srr=srr, e=e)
