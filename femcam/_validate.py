@@ -340,9 +340,11 @@ def angles_deg(name: str, spec, max_angles: int = 10_000_000) -> np.ndarray:
         raise fail(name, spec, "deg", "step must be > 0")
     if stop <= start:
         raise fail(name, spec, "deg", "stop must be > start")
-    n = int(np.floor((stop - start) / step + 1e-9)) + 1
+    k = (stop - start) / step                        # steps from start to stop
+    on_grid = abs(k - round(k)) <= 1e-9 * max(1.0, round(k))   # relative: 0:360:0.00004 is on it
+    n = (round(k) if on_grid else int(np.floor(k))) + 1
     turns = (stop - start) / 360.0
-    if abs(turns - round(turns)) < 1e-12 and abs(start + (n - 1) * step - stop) <= 1e-9 * step:
+    if on_grid and abs(turns - round(turns)) < 1e-12:
         n -= 1  # whole turns: the stop is the start's cam position
     if n > max_angles:
         raise fail(name, spec, "deg", f"gives more than {max_angles:.0e} angles")

@@ -50,7 +50,7 @@ def test_the_assessment_of_a_coated_scene_flags_every_contact_row(tmp_path):
 
 def test_the_cli_says_it_on_the_console_and_in_the_report(tmp_path, capsys):
     out = tmp_path / "o"
-    rc = main(["assess", str(_coated(tmp_path)), "--angles-deg", "0:120:60", "--out", str(out),
+    rc = main(["assess", str(_coated(tmp_path)), "--angles-deg", "0:60:60", "--out", str(out),
                "--no-plots"])
     assert rc == 0
     console = capsys.readouterr().out
