@@ -153,6 +153,7 @@ def test_run_flags_are_checked(flag, value, why, tmp_path, capsys):
     assert not (tmp_path / "analytic.csv").exists()  # refused before any work
 
 
+@pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_long_lists_are_capped(capsys, tmp_path):
     # 50 intervals: the message lists 20 of them and counts the rest
     iv = [(math.radians(i), math.radians(i + 0.5)) for i in range(50)]

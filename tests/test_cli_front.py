@@ -111,6 +111,7 @@ def test_check_init_examples(tmp_path, capsys):
     assert "seed002_study_model.toml: " in capsys.readouterr().out
 
 
+@pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_info_and_plot_of_a_sweep_folder(tmp_path, capsys):
     from femcam.cli import main
 

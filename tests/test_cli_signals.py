@@ -86,6 +86,7 @@ def test_signal_during_imports_is_one_line(signum, tmp_path):
     _check(code, err, signum)
 
 
+@pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_sigint_while_computing_is_one_line(tmp_path):
     """``femcam run`` printed a 40-line traceback on Ctrl-C before the common handler."""
     code, err = _signal_run(LONG["run"], 1.5, signal.SIGINT, tmp_path / "o")

@@ -432,7 +432,7 @@ def test_huge_load_flagged():
 
 def test_load_too_large_refused():
     with pytest.raises(InputError, match=r"^\[materials\.\*\] E_GPa, nu, \[follower\] roller_radius_mm = .* "
-                                         "Hertz contact half-width of"):
+                                         "Hertz contact half-width \\(a_ref\\) of"):
         solve_contact(2e6, rho, Rr, STEEL, STEEL, l, mesh=COARSE)
 
 

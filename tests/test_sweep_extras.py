@@ -333,6 +333,7 @@ def test_sweep_wear_column_uses_the_coating_k(tmp_path, monkeypatch):
                                                        rel=1e-12)
 
 
+@pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_plots_of_the_extra_columns(tmp_path):
     scene = load_scene(EX + "seed002_assess.toml")
     r = sweep(scene, angles=TH8, method="hertz", workers=1, out=tmp_path, plots=True, vtk_every=0)

@@ -222,6 +222,7 @@ def _interrupt(tmp_path, *extra):
     return proc.returncode, err.decode().strip(), out
 
 
+@pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_ctrl_c_before_any_gmsh_mesh_one_line_and_130(tmp_path):
     """Hertz method: gmsh is never initialised."""
     rc, err, out = _interrupt(tmp_path, "--method", "hertz")

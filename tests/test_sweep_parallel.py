@@ -111,6 +111,7 @@ def _kill_after(proc, chunks: Path, n: int) -> None:
     assert proc.returncode == -signal.SIGKILL
 
 
+@pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_killed_subprocess_resumes_in_process(tmp_path):
     """The fast version (default suite): one interpreter start, SIGKILL after the first chunk,
     then ``resume`` through the API in this process. Hertz method, so that the subprocess

@@ -487,6 +487,7 @@ def test_tip_radius_refused_for_a_roller():
         wslip.follower_slip(prof.RollerFollower(Rb=0.02, Rr=0.01), TH, z, z, z, omega=10.0, tip_radius=1e-3)
 
 
+@pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_knife_edge_wear_map_needs_tip_radius():
     sc_mod = pytest.importorskip("femcam.scene")
     from femcam.wear.scene import scene_wear
@@ -570,6 +571,7 @@ def test_cli_map_checks_wear_keys_and_knife_edge(tmp_path, capsys):
     assert "tip radius 0.5 mm" in note
 
 
+@pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_cli_map_fe_source(tmp_path):
     """``--source fe`` on a coarse grid (36 angles): same wear as ``--source hertz`` within the
     FE's a/p0 accuracy (2.3 %, see test_fe_pressure_wear_matches_hertz_within_fe_accuracy)."""

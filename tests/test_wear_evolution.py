@@ -72,6 +72,7 @@ def test_ring_blocks_are_explicit_euler_of_the_hand_ode():
         np.testing.assert_allclose(r.Fc_blocks, (FPL - KS * Hb)[:, None] * np.ones(64), rtol=1e-7)
 
 
+@pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_convergence_first_order_against_exact_and_halvings():
     """(2) Errors against the exact ODE solution H = FPL/KS (1 - exp(-c1 KS N)) halve with the block
     size (first order), and so do the differences between successive halvings."""
@@ -183,6 +184,7 @@ def test_knife_edge_and_bad_block_count_refused():
         ev.block_counts(0)
 
 
+@pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_cli_evolve_blocks(tmp_path, capsys):
     from femcam.cli import main
 
