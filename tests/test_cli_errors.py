@@ -298,6 +298,7 @@ def test_sweep_flag_ranges_name_the_flag(flag, value, expected, tmp_path, capsys
     assert "a_over_h" not in err
 
 
+@pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_broken_pipe_ends_quietly():
     """``femcam wear seed000 --all-laws | head``: the reader closes the pipe before femcam
     writes; femcam ends with Python's EPIPE code 1 and writes nothing on stderr (reference: the

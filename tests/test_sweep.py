@@ -472,6 +472,7 @@ def test_bezier_5_7_9_peak_p0_ordering_and_ratios(scene):
 
 
 # ------------------------------------------------------------------------------------ outputs
+@pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_outputs_provenance_and_pvd(scene, tmp_path):
     import os
 
@@ -554,6 +555,7 @@ def test_store_refuses_a_different_sweep_and_ignores_partial_files(tmp_path):
         ChunkStore(tmp_path, {"scene_sha256": "y", "n": 3}, [(0, 2), (2, 3)]).open(True)
 
 
+@pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_fe_resume_reuses_the_stored_family_plan(scene, tmp_path):
     th = np.radians([0.0, 30.0, 60.0, 90.0])
     full = sweep(scene, angles=th, out=tmp_path, chunk_size=2, vtk_every=0, plots=False)
@@ -644,6 +646,7 @@ def test_sharp_knife_edge_scene_is_refused_clearly():
         sweep(dataclasses.replace(sc, tip_radius=None), angles=[0.0], method="hertz")
 
 
+@pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_package_is_callable_and_hertz_vtk_series(scene, tmp_path):
     pv = pytest.importorskip("pyvista")
     import femcam.sweep

@@ -548,6 +548,7 @@ def test_wear_table_keys_and_k_source():
     assert opts == {"tip_radius": pytest.approx(5e-4), "cycles": 10.0}  # SI name, m
 
 
+@pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_cli_map_checks_wear_keys_and_knife_edge(tmp_path, capsys):
     from femcam.cli import main
 
