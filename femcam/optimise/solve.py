@@ -20,7 +20,14 @@ from .. import _validate
 from ..errors import FemcamError, InputError, SceneError
 from ..scene import load_scene
 from ..sweep import sweep
-from .chain import CONSTRAINT_UNITS, OBJECTIVE_UNITS, OBJECTIVES, SCALAR_OBJECTIVES, check_objective, constraint_value
+from .chain import (
+    CONSTRAINT_UNITS,
+    OBJECTIVE_UNITS,
+    OBJECTIVES,
+    SCALAR_OBJECTIVES,
+    check_objective,
+    constraint_value,
+)
 from .design import BezierRise, Design, Variable
 from .problem import FEAS_TOL, Problem
 from .result import FECheck, OptimiseResult, StartRecord
@@ -132,8 +139,8 @@ def optimise(scene_or_path, *, objective: str = "p0", variables, constraints=Non
         maximises the smallest safety factor), ``"lambda"`` (largest 1/lambda of the assessment's
         film ratio: maximises the smallest lambda; needs [lubricant]), ``"residual_vibration"``
         (m: largest |x - s - e_static| of the follower in the dwell after each rise, periodic
-        steady state of the scene's elastic train at its speed) or ``"wear"`` (largest Archard cam wear depth per revolution at
-        the contact, m; slide-to-roll roller model).
+        steady state of the scene's elastic train at its speed) or ``"wear"`` (largest Archard
+        cam wear depth per revolution at the contact, m; slide-to-roll roller model).
     variables : dict or sequence of Variable
         ``{name: (lower, upper)}`` in SI, or :class:`Variable` objects: ``base_radius`` (m),
         ``roller_radius`` (m), ``rise_angle`` (rad), ``control_point_<i>`` (free Bezier
