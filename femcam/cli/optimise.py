@@ -84,6 +84,9 @@ def _run(args) -> int:
     files = write_outputs(out, res, table, prov)
     print(f"{res.objective}: {res.value:.6g} {res.unit} (start {res.start_value:.6g}); "
           f"converged {res.converged}")
+    if res.objective == "lambda":                     # the objective minimised is 1/lambda_min
+        print(f"smallest film parameter lambda_min = {1.0 / res.value:.6g} "
+              f"(start {1.0 / res.start_value:.6g})")
     print(res.message)
     edge = {si: (flag, f) for flag, (si, f) in EDGE_UNITS.items()}
     for n, v in res.design().items():

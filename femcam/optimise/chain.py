@@ -35,6 +35,7 @@ import warnings
 import numpy as np
 
 from ..assess import assess
+from ..dynamics import periodic_response
 from ..errors import InputError, PhysicsError
 from ..hertz import LineContact
 from ..hertz.conformity import shape_factors
@@ -49,7 +50,9 @@ __all__ = ["OBJECTIVES", "OBJECTIVE_UNITS", "CONSTRAINT_UNITS", "angle_grid", "e
 #: per-angle objectives (the maximum over the revolution is minimised) and their SI units;
 #: ``"wear"``: the Archard cam wear depth per revolution at the contact (femcam.wear)
 OBJECTIVE_UNITS = {"p0": "Pa", "von_mises": "Pa", "tau1": "Pa", "acceleration": "m/s^2", "size": "m",
-                   "wear": "m", "utilisation": "-"}
+                   "wear": "m", "utilisation": "-", "lambda": "-", "residual_vibration": "m"}
+#: objectives that are one number per design, not one per angle (no exchange over angles)
+SCALAR_OBJECTIVES = ("residual_vibration",)
 OBJECTIVES = tuple(OBJECTIVE_UNITS)
 #: constraint names and the unit of their limit
 CONSTRAINT_UNITS = {"phi_max": "rad", "rho_min": "m", "liftoff_omega": "rad/s", "safety_min": "-",
@@ -161,7 +164,9 @@ def evaluate(scene, theta, objective: str, *, phi_max: float | None, rho_min: fl
         out["objective"] = np.abs(a)
     elif objective == "size":
         out["objective"] = np.hypot(p.x, p.y)
-    if objective == "utilisation" or safety_min is not None or lambda_min is not None:
+    elif objective == "residual_vibration":
+        out["objective"], out["theta_worst"] = residual_vibration(scene)
+    if objective in ("utilisation", "lambda") or safety_min is not None or lambda_min is not None:
         out.update(_assessment(scene, d.theta, objective, safety_min, lambda_min))
     if phi_max is not None:
         out["phi_max"] = 1.0 - (p.phi / phi_max) ** 2
@@ -193,6 +198,83 @@ def _wear(scene, d, Fc, a, p0) -> np.ndarray:
     return wear_depth_per_angle(d.theta, a, p0, Fc, slip, k)
 
 
+def check_objective(scene, objective: str) -> None:
+    """Refuse an objective the scene has no data for (before any work).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The base scene.
+    objective : str
+        One of :data:`OBJECTIVES`.
+
+    Raises
+    ------
+    InputError
+        ``"lambda"`` without ``[lubricant]`` data; ``"residual_vibration"`` with a rigid train.
+    """
+    if objective == "lambda" and "lubricant" not in (scene.tribology or {}):
+        raise InputError("objective = 'lambda': the film parameter needs the scene's lubricant data "
+                         "([lubricant], [surface] roughness and oil_temperature_C, femcam.assess); "
+                         "this scene has no [lubricant] table")
+    if objective == "residual_vibration" and scene.train is None:
+        raise InputError("objective = 'residual_vibration': needs an elastic follower train "
+                         "([dynamics] model = 'one_dof' or 'two_dof' with train_stiffness_N_per_m); "
+                         "this scene's [dynamics] model is 'rigid' (no vibration to minimise)")
+
+
+def residual_vibration(scene) -> tuple[np.ndarray, float]:
+    r"""Residual vibration of the follower in the dwell after each rise (m) and where it peaks.
+
+    .. math:: r = \max_{\theta \in \text{dwell after a rise}} |e(\theta) - e_{st}|,
+       \quad e = x - s,\quad e_{st} = -K^{-1} g\,(k\,s_{dwell} + F_{pl})
+
+    ``e`` is the last mass's error of the periodic steady state (femcam.dynamics) at the scene's
+    speed and its own step count; ``e_st`` is the static compression of the train under the
+    spring and preload at the dwell lift (the level ``e`` decays to). Subtracting it keeps the
+    measure a vibration amplitude: the static compression (``(F_pl + k h)/k_t`` ~ 0.75 mm for
+    seed002_dynamic) is the same for every law of the same lift and would swamp the ~1 um ringing.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A scene with an elastic train (``scene.train``).
+
+    Returns
+    -------
+    value : ndarray, shape (1,)
+        The residual vibration (m).
+    theta_worst : float
+        Cam angle of its maximum (rad).
+
+    Examples
+    --------
+    >>> from femcam.scene import load_scene
+    >>> r, th = residual_vibration(load_scene("examples/seed002_dynamic.toml"))
+    >>> 1e-7 < float(r[0]) < 1e-5
+    True
+    """
+    tr, prog = scene.train, scene.program
+    d = periodic_response(tr, prog, scene.omega, steps_per_rev=scene.steps_per_rev)
+    _M, _C, K, g = tr.mck(True)
+    f = tr.follower
+    starts, best, where = prog.theta_starts, 0.0, 0.0
+    segs = prog.segments
+    for k, sg in enumerate(segs):
+        nxt = segs[(k + 1) % len(segs)]
+        if sg.kind != "rise" or nxt.law is not None:
+            continue
+        t0 = starts[(k + 1) % len(segs)]
+        sel = (d.theta >= t0) & (d.theta <= t0 + nxt.beta)
+        s_dw = float(np.mean(d.s[sel]))
+        e_st = -np.linalg.solve(K, g)[-1] * (f.k * s_dw + f.Fpl)
+        dev = np.abs(d.e[sel, -1] - e_st)
+        i = int(np.argmax(dev))
+        if dev[i] > best:
+            best, where = float(dev[i]), float(d.theta[sel][i])
+    return np.array([best]), where
+
+
 def _assessment(scene, theta, objective, safety_min, lambda_min) -> dict:
     """Safety factors ``"sf"`` (5, m) and film ratio ``"lam"`` (m,) of femcam.assess at
     ``theta``, the ``utilisation`` objective 1/sf and the margins; an undercut trial design (the
@@ -208,6 +290,8 @@ def _assessment(scene, theta, objective, safety_min, lambda_min) -> dict:
     out = {"sf": sf, "lam": lam}
     if objective == "utilisation":
         out["objective"] = 1.0 / np.maximum(sf, 1e-3)
+    elif objective == "lambda":  # minimise 1/lambda: maximises the smallest film ratio
+        out["objective"] = 1.0 / np.maximum(lam, 1e-6)
     if safety_min is not None:
         out["safety_min"] = sf / safety_min - 1.0
     if lambda_min is not None:

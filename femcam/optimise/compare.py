@@ -11,7 +11,7 @@ import numpy as np
 from .. import _validate
 from ..errors import InputError
 from ..kinematics import LAW_NAMES
-from .chain import angle_grid, constraint_value, evaluate
+from .chain import angle_grid, constraint_value, evaluate, residual_vibration
 from .solve import DENSE
 
 __all__ = ["STANDARD_LAWS", "COMPARE_COLUMNS", "compare_laws"]
@@ -25,7 +25,8 @@ COMPARE_COLUMNS = (("p0_max", "p0_max_MPa", 1e-6), ("phi_max", "phi_max_deg", 18
                    ("rho_min", "rho_min_mm", 1e3), ("a_max", "a_max_m_per_s2", 1.0),
                    ("margin_phi", "margin_phi_deg", 180.0 / math.pi), ("margin_rho", "margin_rho_mm", 1e3),
                    ("margin_liftoff", "margin_liftoff_Fc_over_Fpl", 1.0),
-                   ("wear_max", "wear_max_m_per_rev", 1.0))
+                   ("wear_max", "wear_max_m_per_rev", 1.0), ("lambda_min", "lambda_min", 1.0),
+                   ("residual_vibration", "residual_vibration_um", 1e6))
 
 
 def compare_laws(scene, *, optimum=None, laws=STANDARD_LAWS, constraints=None) -> dict:
@@ -51,7 +52,10 @@ def compare_laws(scene, *, optimum=None, laws=STANDARD_LAWS, constraints=None) -
         ``|phi|``, rad), ``margin_rho`` (min ``rho`` - limit, m), ``margin_liftoff`` (min
         ``Fc/Fpl`` at the lift-off speed, -); >= 0 means the limit holds; ``wear_max``: the
         largest Archard cam wear depth per revolution at the contact (m; NaN when the scene's
-        slip model is not the pointwise slide-to-roll one).
+        slip model is not the pointwise slide-to-roll one); ``lambda_min``: the assessment's
+        smallest film ratio (-; NaN without [lubricant]); ``residual_vibration``: the follower's
+        vibration in the dwell after the rise (m, :func:`~femcam.optimise.chain.residual_vibration`;
+        NaN for a rigid train).
     """
     if not (hasattr(scene, "program") and hasattr(scene, "with_law")):
         raise _validate.fail("scene", scene, "", "must be a femcam.scene.Scene")
@@ -61,7 +65,8 @@ def compare_laws(scene, *, optimum=None, laws=STANDARD_LAWS, constraints=None) -
     if optimum is not None:
         variants.append(("optimum", optimum.apply(scene)))
     rows = {k: [] for k in ("law", "p0_max", "phi_max", "rho_min", "a_max", "margin_phi", "margin_rho",
-                            "margin_liftoff", "wear_max")}
+                            "margin_liftoff", "wear_max", "lambda_min", "residual_vibration")}
+    lubricated = "lubricant" in (scene.tribology or {})
     for name, sc in variants:
         theta, _ = angle_grid(sc.program, DENSE)
         try:
@@ -70,6 +75,11 @@ def compare_laws(scene, *, optimum=None, laws=STANDARD_LAWS, constraints=None) -
         except InputError:  # the inertia-limited roller: no pointwise wear
             wear = math.nan
         rows["wear_max"].append(wear)
+        rows["residual_vibration"].append(float(residual_vibration(sc)[0][0]) if sc.train is not None
+                                          else math.nan)
+        rows["lambda_min"].append(float(np.min(evaluate(sc, theta, "lambda", phi_max=None, rho_min=None,
+                                                        liftoff_omega=None)["lam"])) if lubricated
+                                  else math.nan)
         r = evaluate(sc, theta, "p0", phi_max=lim.get("phi_max"), rho_min=lim.get("rho_min"),
                      liftoff_omega=lim.get("liftoff_omega"))
         phi = constraint_value("phi_max", r, 0.0)

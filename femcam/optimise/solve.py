@@ -20,7 +20,14 @@ from .. import _validate
 from ..errors import FemcamError, InputError, SceneError
 from ..scene import load_scene
 from ..sweep import sweep
-from .chain import CONSTRAINT_UNITS, OBJECTIVE_UNITS, OBJECTIVES, constraint_value
+from .chain import (
+    CONSTRAINT_UNITS,
+    OBJECTIVE_UNITS,
+    OBJECTIVES,
+    SCALAR_OBJECTIVES,
+    check_objective,
+    constraint_value,
+)
 from .design import BezierRise, Design, Variable
 from .problem import FEAS_TOL, Problem
 from .result import FECheck, OptimiseResult, StartRecord
@@ -90,7 +97,8 @@ def _worst_u(prob: Problem, z) -> tuple[list, float, dict]:
     grid = prob.raw(z)
     q_f, q_g = fine["objective"], grid["objective"]
     gap = float((np.max(q_f) - np.max(q_g)) / max(abs(np.max(q_g)), 1e-300))
-    objective_rows = list(np.atleast_2d(fine["objective"]))
+    # a scalar objective (residual vibration) has no angle to exchange: only the constraints
+    objective_rows = [] if prob.objective in SCALAR_OBJECTIVES else list(np.atleast_2d(fine["objective"]))
     arrays = objective_rows + [row for c in prob.limits for row in -np.atleast_2d(fine[c])]
     for c in prob.limits:
         gap = max(gap, float(np.min(grid[c]) - np.min(fine[c])))
@@ -128,8 +136,11 @@ def optimise(scene_or_path, *, objective: str = "p0", variables, constraints=Non
         ``"p0"`` (peak Hertz pressure, Pa), ``"von_mises"``/``"tau1"`` (Pa; Hertz shape factors
         with the scene's friction), ``"acceleration"`` (peak ``|a|``, m/s^2), ``"size"``
         (largest cam radius, m), ``"utilisation"`` (largest 1/safety factor of the assessment:
-        maximises the smallest safety factor) or ``"wear"`` (largest Archard cam wear depth per revolution at
-        the contact, m; slide-to-roll roller model).
+        maximises the smallest safety factor), ``"lambda"`` (largest 1/lambda of the assessment's
+        film ratio: maximises the smallest lambda; needs [lubricant]), ``"residual_vibration"``
+        (m: largest |x - s - e_static| of the follower in the dwell after each rise, periodic
+        steady state of the scene's elastic train at its speed) or ``"wear"`` (largest Archard
+        cam wear depth per revolution at the contact, m; slide-to-roll roller model).
     variables : dict or sequence of Variable
         ``{name: (lower, upper)}`` in SI, or :class:`Variable` objects: ``base_radius`` (m),
         ``roller_radius`` (m), ``rise_angle`` (rad), ``control_point_<i>`` (free Bezier
@@ -166,6 +177,7 @@ def optimise(scene_or_path, *, objective: str = "p0", variables, constraints=Non
     maxiter = _validate.integer("maxiter", maxiter, 1)
     if objective not in OBJECTIVES:
         raise InputError(f"objective = {objective!r}: unknown; use one of {list(OBJECTIVES)}")
+    check_objective(scene, objective)
     limits = _limits(constraints or {})
     design = Design(scene=scene, variables=_variables(variables), bezier=bezier or BezierRise())
     prob = Problem(design, objective, limits, _validate.integer("n_motion", n_motion, 3))
@@ -213,7 +225,8 @@ def _result(prob, design, res, fine, start_value, records, iters, rounds, gap, s
     msg = (f"SLSQP: {res.message}; {len(records)} start(s), exchange rounds {rounds}, grid gap {gap:.2e}"
            + ("" if feas else "; a constraint is violated on the fine grid"))
     P = design.control_points(x)
-    theta_worst = float(fine["theta"][int(np.argmax(fine["objective"])) % fine["theta"].size])
+    theta_worst = float(fine["theta_worst"] if "theta_worst" in fine
+                        else fine["theta"][int(np.argmax(fine["objective"])) % fine["theta"].size])
     scene = fine["scene"]
     hertz = prob.objective in ("p0", "von_mises", "tau1")
     fe = _verify_fe(scene, theta_worst) if verify_fe and hertz else None
