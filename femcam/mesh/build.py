@@ -129,9 +129,9 @@ def build_contact_mesh(*, Rr: float, rho: float, a_ref: float,
     if opts.fine_half_width * a_ref > 0.5 * Rr:
         # named by the scene keys it comes from: a user of `femcam sweep` wrote those, not a_ref
         raise InputError(f"[materials.*] E_GPa, nu, [follower] roller_radius_mm = {Rr * 1e3:.4g} mm, "
-                         "face_width_mm and the contact force ([dynamics] preload_N, spring_N_per_m) give a "
-                         f"Hertz contact half-width (a_ref) of {a_ref * 1e3:.4g} mm here: it must be <= roller "
-                         f"radius / {2 * opts.fine_half_width:g} = "
+                         "face_width_mm and the contact force ([dynamics] preload_N, spring_N_per_m) give "
+                         f"a Hertz contact half-width (a_ref) of {a_ref * 1e3:.4g} mm here: it must be <= "
+                         f"roller radius / {2 * opts.fine_half_width:g} = "
                          f"{Rr / (2 * opts.fine_half_width) * 1e3:.4g} mm: the contact zone would not be "
                          "small against the roller (far outside Hertz theory and this mesh layout); give "
                          "stiffer materials, a wider face or a lighter load ([dynamics] preload_N, "
