@@ -92,8 +92,8 @@ class SceneCheck:
         deg = math.degrees
         out = [f"{self.name}: {self.follower} follower, {self.n_segments} segments",
                f"  max pressure angle {deg(self.phi_max):.2f} deg at {deg(self.phi_max_theta):.2f} deg "
-               f"({'OK' if deg(self.phi_max) <= PHI_LIMIT_DEG else 'EXCEEDS'} the usual limit "
-               f"{PHI_LIMIT_DEG:g} deg, as femcam run)",
+               f"({'within' if deg(self.phi_max) <= PHI_LIMIT_DEG else 'EXCEEDS'} the usual limit of "
+               f"{PHI_LIMIT_DEG:g} deg for a translating roller)",
                f"  min radius of curvature {self.rho_min * 1e3:.3f} mm at {deg(self.rho_min_theta):.2f} deg"]
         out.append("  undercut: " + (", ".join(f"{deg(a):.2f}-{deg(b):.2f} deg" for a, b in self.undercut)
                                      or "none"))

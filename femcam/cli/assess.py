@@ -48,6 +48,13 @@ def register(subparsers) -> None:
     p.set_defaults(func=_run)
 
 
+#: what the printed worst value of each criterion is (femcam.assess.WORST: its column and unit)
+_MEANING = {"film (lambda)": "(film parameter h_min/sigma: < 1 boundary, 1-3 mixed, > 3 full film)",
+            "contact temperature": "degC", "scuffing": "(safety factor)", "first yield": "(safety factor)",
+            "shakedown": "(safety factor)", "subsurface fatigue": "(safety factor)",
+            "surface fatigue": "(safety factor)", "pitting life": "cycles"}
+
+
 def _sweep_table(path, scene):
     """The sweep's columns the assessment uses (the subsurface ``txz_range_max``, never a
     surface value); a sweep of another scene, a corrupted folder or a ``sweep.npz`` that is not
@@ -84,7 +91,7 @@ def _run(args) -> int:
     atomic_write_text(out / "report.md", md)
     atomic_write_text(out / "report.html", markdown_page(md, out))   # plots embedded: one file to send
     for crit, (v, t, _) in res.worst.items():
-        print(f"{crit:>22s}: worst {v:.4g} at {math.degrees(t):6.1f} deg")
+        print(f"{crit:>22s}: worst {v:.4g} {_MEANING.get(crit, '')} at {math.degrees(t):6.1f} deg")
     for n in res.notes:
         print(f"note: {n}")
     for o in res.omitted:

@@ -117,8 +117,8 @@ def auto_workers(n_tasks: int, n_solves: int, t_solve: float, n_families: int, t
     what = "solves" + (" and VTU files" if t_other > 0 else "")
     if par <= (1.0 - AUTO_MIN_SAVING) * serial:
         return w, f"{w} processes: ~{serial:.2f} s of {what} serially, ~{par:.2f} s expected in parallel"
-    return 1, (f"serial: ~{serial:.2f} s of {what} would take ~{par:.2f} s with {w} processes "
-               "(pool start-up" + ("" if fork else ", rebuilt models") + ")")
+    return 1, (f"serial: ~{serial:.2f} s of {what}; {w} processes would not be faster (~{par:.2f} s "
+               "with the pool start-up" + ("" if fork else " and the rebuilt models") + ")")
 
 
 

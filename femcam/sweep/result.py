@@ -397,8 +397,9 @@ def hertz_check_text(s: dict) -> str:
         parts.append(f"max |p0_fe/p0_hertz - 1| {100 * s['err_p0_absmax_arc']:.3f} % over "
                      f"{s['n_vs_hertz']} arc-gap rows")
     if s.get("n_exact", 0):
-        parts.append(f"{s['n_exact']} exact-gap rows: no Hertz reference (curvature jump; they "
-                     f"depart from Hertz by up to {100 * s['err_p0_absmax_exact']:.1f} %)")
+        parts.append(f"{s['n_exact']} exact-gap rows: no Hertz reference (a join where the cam's "
+                     f"curvature or its rate jumps: the parabolic gap of Hertz does not hold; they "
+                     f"depart from Hertz by up to {100 * s['err_p0_absmax_exact']:.3f} %)")
     return "; ".join(parts) or "no FE row compared with Hertz"
 
 
@@ -432,7 +433,8 @@ def report_markdown(result: SweepResult) -> str:
     lines += [f"| {r['what']} | {r['value']:.4g} | {r['unit']} | {angle_text(r['theta_deg'])} | "
               f"{_fmt(r['depth_um'], 1.0, 4, 'g')} | {r['note']} |"
               for r in peak_rows(result.table)]   # the providers' worst values: _extras_lines
-    lines += [f"| p0 FE vs Hertz | {hertz_check_text(s)} | | | | |"]
+    # the text holds |...|: escaped, or Markdown splits the row at each bar
+    lines += [f"| p0 FE vs Hertz | {hertz_check_text(s).replace('|', chr(92) + '|')} | | | | |"]
     lines += [f"- {t}" for t in p.get("extras", {}).get("headline", ())]   # what the headline omits
     lines += _extras_lines(p.get("extras", {}))
     plots = {k: f"plots/{Path(v).name}" for k, v in result.paths.items() if k.startswith("plot_")}
