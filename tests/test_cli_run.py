@@ -39,6 +39,7 @@ def _omega_from_file(path) -> float:
     return op["rpm"] * 2 * math.pi / 60 if "rpm" in op else op["omega_rad_s"]
 
 
+@pytest.mark.slow  # ~1 s; the default suite keeps its budget (CI runs it in the slow pass)
 @pytest.mark.parametrize("scene", SCENES, ids=lambda p: p.stem)
 def test_run_writes_csv_and_pngs(scene, tmp_path, capsys):
     out = tmp_path / "out"

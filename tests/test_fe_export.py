@@ -33,6 +33,7 @@ def test_vtu_roundtrip(result, tmp_path):
     assert grid.point_data["stress_Pa"][i0, 1] == pytest.approx(-result.p0, rel=2e-2)
 
 
+@pytest.mark.slow  # ~1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_von_mises_png(result, tmp_path):
     pytest.importorskip("pyvista")
     from femcam.viz.fe import plot_von_mises

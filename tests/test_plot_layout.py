@@ -59,6 +59,7 @@ def _check_layout(fig):
                 assert b.x0 >= -1 and b.x1 <= W + 1 and b.y0 >= -1 and b.y1 <= H + 1, t.get_text()
 
 
+@pytest.mark.slow  # ~1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_wear_plots_layout(case, figures, tmp_path):
     sc, st, wm = case
     vw.plot_wear_map(wm, tmp_path / "w.png", title="seed002 (bezier5)", follower_label="roller arc")
@@ -69,6 +70,7 @@ def test_wear_plots_layout(case, figures, tmp_path):
         _check_layout(fig)
 
 
+@pytest.mark.slow  # ~1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_analytic_plots_layout(case, figures, tmp_path):
     sc, st, _ = case
     va.plot_rho(st, tmp_path / "rho.png", Rr=sc.follower.Rr)

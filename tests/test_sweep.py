@@ -298,6 +298,7 @@ def test_failed_angle_is_recorded_and_sweep_continues(scene, monkeypatch):
     default_cache().clear()  # drop the results of the patched solve
 
 
+@pytest.mark.slow  # ~1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_undercut_and_nearly_conformal_rows(scene, monkeypatch):
     """rho = -0.9 Rr: the roller does not fit the concave cam (no solution, status undercut);
     rho = -1.005 Rr: nearly conformal -- the FE answers and the row is flagged."""

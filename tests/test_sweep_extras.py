@@ -104,6 +104,7 @@ def test_assess_uses_fe_contact_of_the_sweep(tmp_path):
 
 
 # ---------------------------------------------------------------------------------------------
+@pytest.mark.slow  # ~1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_halfspace_columns_and_axial_peak_wear(tmp_path):
     scene = load_scene(EX + "seed002_crowned.toml")
     r, cols = _sweep_csv(scene, TH8, tmp_path)

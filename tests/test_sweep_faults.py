@@ -79,6 +79,7 @@ def test_second_writer_is_refused_with_one_line(tmp_path, capsys):
     assert sorted(p.name for p in out.iterdir()) == [".femcam.lock"]  # nothing written
 
 
+@pytest.mark.slow  # ~1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_lock_is_released_when_the_holder_is_killed(tmp_path):
     """SIGKILL leaves no stale lock: the kernel drops a flock with the holder's descriptor."""
     code = ("import sys, time; from femcam.sweep.store import DirLock; "

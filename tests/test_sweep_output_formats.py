@@ -115,6 +115,7 @@ def test_legend_only_with_labelled_artists_and_wear_plot_of_axial_peak_rows(hert
     assert any("axial peak" in s for s in seen["labels"])
 
 
+@pytest.mark.slow  # ~1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_long_sweep_table_stays_on_disk_and_writes_the_same_files(tmp_path, monkeypatch):
     """With at least STREAM_ANGLES angles and an output directory the table is read from the
     chunk files (memory bounded, benchmarks/bench_sweep_memory.py); lowered here to 1 so that a

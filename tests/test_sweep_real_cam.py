@@ -146,6 +146,7 @@ def test_method_auto_answers_with_the_cheapest_model():
     assert sum(m.values()) == r.n_angles and m["hertz"] >= 1
 
 
+@pytest.mark.slow  # ~1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_seed003_knife_edge_sweeps(tmp_path):
     """Knife-edge with [follower] tip_radius_mm = 2: the cam cut for the tip; on the base circle
     (300..360 deg) rho = Rb = 5 mm, Fc = preload 20 N: FE p0 within 0.3 % of Hertz (tip 2 mm on
@@ -177,6 +178,7 @@ def test_seed003_knife_edge_sweeps(tmp_path):
     np.testing.assert_allclose(q, 0.1 * np.abs(p), rtol=1e-9, atol=1e-9 * p.max())
 
 
+@pytest.mark.slow  # ~1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_flat_faced_sweep_and_edge_contact():
     """Flat face (R = inf): on the dwells rho = 20 mm (Fc = 500 N) and 30 mm (700 N): FE p0
     within 0.3 % of Hertz; full sliding with Q = +mu Fc on the base circle (as the knife-edge).

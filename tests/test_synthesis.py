@@ -271,6 +271,7 @@ def test_large_k_converges_and_reports_conditioning():
     assert np.max(np.abs(res.r - RB - law345(res.theta)[0])) < 2.5e-8      # m
 
 
+@pytest.mark.slow  # ~1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_many_elements_converge():
     res = synthesize_knife_edge(seed003_program(), Rb=RB,
                                 options=SynthesisOptions(n_elements=2000, k=1e6))
@@ -426,6 +427,7 @@ def test_cli_study_writes_md_csv_png(tmp_path):
                 assert float(e[c]) == pytest.approx(float(d[c]), rel=1e-8), c
 
 
+@pytest.mark.slow  # ~1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_cli_base_radius_auto_and_given(tmp_path, capsys):
     from femcam.cli import main
 

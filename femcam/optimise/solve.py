@@ -138,7 +138,7 @@ def optimise(scene_or_path, *, objective: str = "p0", variables, constraints=Non
         (largest cam radius, m), ``"utilisation"`` (largest 1/safety factor of the assessment:
         maximises the smallest safety factor), ``"lambda"`` (largest 1/lambda of the assessment's
         film ratio: maximises the smallest lambda; needs [lubricant]), ``"residual_vibration"``
-        (m: largest |x - s - e_static| of the follower in the dwell after each rise, periodic
+        (m: largest ``|x - s - e_static|`` of the follower in the dwell after each rise, periodic
         steady state of the scene's elastic train at its speed) or ``"wear"`` (largest Archard
         cam wear depth per revolution at the contact, m; slide-to-roll roller model).
     variables : dict or sequence of Variable
