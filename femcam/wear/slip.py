@@ -299,6 +299,16 @@ def _roller_kinematics(theta, s, s1, s2, Rb, Rr, e, omega):
     return theta, s, omega, Rr, V_p, V_cam, Omega_req
 
 
+def _srr_result(theta, V_cam, omega, srr, Rr, Omega_req, kind) -> SlipResult:
+    """Roller surface speeds for a prescribed slide-to-roll ratio: ``U = 2 V_cam / (2 + srr)``,
+    ``v_slip = |srr| U``, ``V_follower = V_cam (2 - srr) / (2 + srr)`` (one copy for the
+    translating and the oscillating roller)."""
+    U = 2.0 * V_cam / (2.0 + srr)
+    return SlipResult(theta=theta, v_slip=abs(srr) * U, V_cam=V_cam, V_follower=V_cam * (2 - srr) / (2 + srr),
+                      omega=omega, model=f"{kind}: slide-to-roll ratio {srr:g}", Omega_req=Omega_req,
+                      follower_period=2 * np.pi * Rr)
+
+
 def oscillating_roller_srr(theta, psi, psi1, psi2, *, follower, omega, srr=0.0) -> SlipResult:
     r"""Roller on an oscillating arm with a prescribed slide-to-roll ratio (``srr = 0``: rolling).
 
@@ -343,10 +353,7 @@ def oscillating_roller_srr(theta, psi, psi1, psi2, *, follower, omega, srr=0.0) 
         raise UndercutError("oscillating roller: cam radius of curvature <= 0 (undercut) at theta = "
                             f"{np.degrees(theta[fac <= 0.0][0]):.2f} deg")
     V_cam = omega * g.pitch_speed * fac
-    U = 2.0 * V_cam / (2.0 + srr)
-    return SlipResult(theta=theta, v_slip=abs(srr) * U, V_cam=V_cam, V_follower=V_cam * (2 - srr) / (2 + srr),
-                      omega=omega, model=f"oscillating roller: slide-to-roll ratio {srr:g}",
-                      Omega_req=V_cam / f.Rr, follower_period=2 * np.pi * f.Rr)
+    return _srr_result(theta, V_cam, omega, srr, f.Rr, V_cam / f.Rr, "oscillating roller")
 
 
 def roller_srr(theta, s, s1, s2, *, Rb, Rr, omega, srr, e=0.0) -> SlipResult:
@@ -390,10 +397,7 @@ def roller_srr(theta, s, s1, s2, *, Rb, Rr, omega, srr, e=0.0) -> SlipResult:
     """
     srr = _validate.in_range("srr", srr, -2.0, 2.0, "", lo_open=True, hi_open=True)
     theta, s, omega, Rr, V_p, V_cam, Omega_req = _roller_kinematics(theta, s, s1, s2, Rb, Rr, e, omega)
-    U = 2.0 * V_cam / (2.0 + srr)
-    return SlipResult(theta=theta, v_slip=abs(srr) * U, V_cam=V_cam, V_follower=V_cam * (2 - srr) / (2 + srr),
-                      omega=omega, model=f"roller: slide-to-roll ratio {srr:g}", Omega_req=Omega_req,
-                      follower_period=2 * np.pi * Rr)
+    return _srr_result(theta, V_cam, omega, srr, Rr, Omega_req, "roller")
 
 
 def roller_inertia(theta, s, s1, s2, Fc, *, Rb, Rr, omega, mu, J, T_drag=0.0, e=0.0,
