@@ -340,16 +340,16 @@ class Scene:
             raise UndercutError(f"{self._dense_undercut[1]} (found by the dense check on "
                                 f"{UNDERCUT_CHECK_N} angles over one revolution and "
                                 f"{SEGMENT_CHECK_N} in each segment; the analysed angles miss it)")
-        if isinstance(self.dynamics, ArmDynamics):  # oscillating arm: s, v, a are L psi and its rates
-            L = self.follower.L
-            r = arm_contact_force(self.dynamics, d.theta, d.s / L, v / L, a / L, L, p.phi)
-        elif self.train is None:
-            r = contact_force(self.dynamics, d.theta, d.s, v, a, p.phi)
-        else:  # the dynamic contact force of the periodic train response, at theta
+        if self.train is not None:  # the periodic train response at theta (an arm's: on its arc travel)
             res = self.dynamic_response
             if not res.converged:
                 raise ConvergenceError(f"[dynamics] model = {res.model!r} at {self.rpm:g} rpm: {res.message}")
             r = res.load_result(d.theta, p.phi)
+        elif isinstance(self.dynamics, ArmDynamics):  # oscillating arm: s, v, a are L psi and its rates
+            L = self.follower.L
+            r = arm_contact_force(self.dynamics, d.theta, d.s / L, v / L, a / L, L, p.phi)
+        else:
+            r = contact_force(self.dynamics, d.theta, d.s, v, a, p.phi)
         return SceneState(theta=np.asarray(d.theta, float), s=d.s, v=v, a=a, j=j, s1=d.s1, s2=d.s2,
                           phi=p.phi, rho=p.rho, Fc=r.Fc, liftoff=r.liftoff, contact_x=p.contact_x,
                           contact_y=p.contact_y, profile=p, loads=r, undercut_intervals=intervals)
