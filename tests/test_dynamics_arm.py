@@ -248,3 +248,15 @@ def test_api_refusals():
         lever_spring(40e3, 0.0, 250.0)
     with pytest.raises(InputError, match=r"rpm_hi = 100(\.0)? rpm: must be > rpm_lo"):
         rigid_jump_speed(arm_follower(arm, 0.035), _program(0.001), 200.0, 100.0)
+
+
+def test_femcam_run_prints_the_rigid_arm_jump_speed(tmp_path, capsys):
+    """The example's arm (I = 2.5e-4 kg m^2, 100 N m/rad, 12.5 N m, 10 deg cycloidal rise over
+    65 deg): the summary line against the closed form."""
+    from femcam.cli import main
+
+    assert main(["run", str(EXAMPLE), "--out", str(tmp_path / "run"), "--no-plots"]) == 0
+    line = next(ln for ln in capsys.readouterr().out.splitlines() if "jump speed" in ln)
+    rpm = float(line.split("=")[1].split("rpm")[0])
+    ref = _cycloid_jump_rpm(2.5e-4, 100.0, 12.5, math.radians(10.0), math.radians(65.0))
+    assert abs(rpm / ref - 1) < 0.005, (line, ref)
