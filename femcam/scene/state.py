@@ -120,8 +120,9 @@ class Scene:
         The cam program (segment angles in rad, lifts in m).
     follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
         Follower geometry (m).
-    dynamics : femcam.loads.FollowerDynamics
-        Rigid-follower dynamics of seed 002 eq. 11 (kg, N/m, N, N s/m).
+    dynamics : femcam.loads.FollowerDynamics or femcam.loads.ArmDynamics
+        Rigid-follower dynamics of seed 002 eq. 11 (kg, N/m, N, N s/m), or an oscillating
+        arm's about its pivot (kg m^2, N m/rad, N m, N m s/rad).
     omega : float
         Cam speed (rad/s).
     cam, roller : femcam.materials.Material
@@ -162,8 +163,8 @@ class Scene:
     raw : dict
         The parsed TOML.
     train : femcam.dynamics.TrainModel or None
-        The elastic follower train of ``[dynamics] model = one_dof | two_dof``; None: rigid
-        (eq. 11).
+        The elastic follower train of ``[dynamics] model = one_dof | two_dof`` (an arm's is
+        referred to the roller's arc travel, femcam.dynamics.arm_train); None: rigid.
     steps_per_rev : int or None
         Time steps per revolution of the train response (None: its default).
     bodies : dict
@@ -304,7 +305,8 @@ class Scene:
         dense grid over one revolution (:meth:`undercut_check`).
 
         ``Fc`` is seed 002's eq. 11 (rigid follower) unless ``[dynamics] model`` is one_dof or
-        two_dof: then it is the periodic contact force of the elastic train
+        two_dof (an oscillating arm: its moment balance, or its train referred to the roller
+        path): then it is the periodic contact force of the elastic train
         (:attr:`dynamic_response`, interpolated to ``theta``; free flight is ``liftoff``).
 
         Parameters
