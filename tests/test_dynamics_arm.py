@@ -173,14 +173,16 @@ def test_jump_speed_rigid_and_stiff_elastic_match_the_closed_form():
 def test_lever_spring_is_k_l2_and_the_scene_reads_it(monkeypatch):
     """40 N/mm, 250 N at 50 mm is the example's torsional 100 N m/rad, 12.5 N m: the same forces."""
     assert lever_spring(40e3, 0.05, 250.0) == pytest.approx((100.0, 12.5), rel=1e-15)
+    th = np.radians(np.arange(0.0, 360.0, 5.0))
+    b = load_scene(EXAMPLE).analyse(th).Fc             # before the reader is replaced
     raw = tomllib.loads(EXAMPLE.read_text(encoding="utf-8"))
     for key in ("spring_rate_N_m_per_rad", "preload_N_m"):
         del raw["dynamics"][key]
     raw["dynamics"].update(spring_N_per_m=40e3, preload_N=250.0, spring_lever_mm=50.0)
     monkeypatch.setattr(scene_load, "_read_toml", lambda path: raw)
-    th = np.radians(np.arange(0.0, 360.0, 5.0))
-    a, b = load_scene("lever.toml").analyse(th).Fc, load_scene(EXAMPLE).analyse(th).Fc
-    np.testing.assert_allclose(a, b, rtol=1e-13)
+    sc = load_scene("lever.toml")
+    assert (sc.dynamics.k_t, sc.dynamics.M_pl) == pytest.approx((100.0, 12.5), rel=1e-15)
+    np.testing.assert_allclose(sc.analyse(th).Fc, b, rtol=1e-13)
 
 
 def _elastic(**kw):
@@ -193,12 +195,14 @@ def _elastic(**kw):
 def test_elastic_scene_follows_the_rigid_arm_when_stiff(monkeypatch):
     """The example with a stiff train (1e8 N m/rad): Scene.analyse gives the rigid moment balance
     times k_t/(k_t + k_s) in dwells (the return spring sits at x, docs/dynamics.md) within 1e-4."""
+    th = np.radians(np.arange(0.0, 360.0, 2.0))
+    rig = load_scene(EXAMPLE).analyse(th).Fc           # before the reader is replaced
     raw = tomllib.loads(EXAMPLE.read_text(encoding="utf-8"))
     _elastic(train_stiffness_N_m_per_rad=1e8, train_damping_ratio=0.3)(raw)
     monkeypatch.setattr(scene_load, "_read_toml", lambda path: raw)
-    sc, rig = load_scene("stiff.toml"), load_scene(EXAMPLE)
-    th = np.radians(np.arange(0.0, 360.0, 2.0))
-    np.testing.assert_allclose(sc.analyse(th).Fc, rig.analyse(th).Fc, rtol=1e-4)
+    sc = load_scene("stiff.toml")
+    assert sc.train is not None and sc.train.model == "one_dof"
+    np.testing.assert_allclose(sc.analyse(th).Fc, rig, rtol=1e-4)
 
 
 @pytest.fixture
@@ -260,3 +264,45 @@ def test_femcam_run_prints_the_rigid_arm_jump_speed(tmp_path, capsys):
     rpm = float(line.split("=")[1].split("rpm")[0])
     ref = _cycloid_jump_rpm(2.5e-4, 100.0, 12.5, math.radians(10.0), math.radians(65.0))
     assert abs(rpm / ref - 1) < 0.005, (line, ref)
+
+
+def test_two_dof_stiff_scene_is_the_rigid_arm_with_both_inertias(monkeypatch):
+    """Stiff train and stiff coupling (1e8 N m/rad): the two_dof arm moves as one rigid arm of
+    inertia I + I2 (femcam.loads.arm_contact_force with the sum), within 1e-4 of Fc."""
+    from femcam.loads import arm_contact_force
+
+    raw = tomllib.loads(EXAMPLE.read_text(encoding="utf-8"))
+    _elastic(model="two_dof", train_stiffness_N_m_per_rad=1e8, train_damping_ratio=0.3,
+             second_inertia_kg_m2=2e-5, second_stiffness_N_m_per_rad=1e8, second_damping_ratio=0.3)(raw)
+    monkeypatch.setattr(scene_load, "_read_toml", lambda path: raw)
+    sc = load_scene("two.toml")
+    th = np.radians(np.arange(0.0, 360.0, 2.0))
+    st = sc.analyse(th)
+    L, w = sc.follower.L, sc.omega
+    d = sc.program.derivatives(th)
+    arm = ArmDynamics(I=2.5e-4 + 2e-5, k_t=100.0, M_pl=12.5)
+    ref = arm_contact_force(arm, th, d.s / L, w * d.s1 / L, w**2 * d.s2 / L, L, st.phi).Fc
+    assert sc.train.model == "two_dof"
+    np.testing.assert_allclose(st.Fc, ref, rtol=1e-4)
+
+
+def test_elastic_arm_feeds_the_sweep_and_femcam_dynamics(monkeypatch, tmp_path, capsys):
+    """The Hertz sweep's Fc column is Scene.analyse's dynamic force; `femcam dynamics` prints the
+    arm's natural frequency sqrt((K_t + k_psi)/I)/(2 pi) (closed form of the one_dof arm)."""
+    from femcam.cli import main
+    from femcam.sweep import sweep
+
+    text = EXAMPLE.read_text(encoding="utf-8").replace(
+        "damping_N_m_s_per_rad = 0.0", 'damping_N_m_s_per_rad = 0.0\nmodel = "one_dof"\n'
+        "train_stiffness_N_m_per_rad = 2.0e4\ntrain_damping_ratio = 0.05")
+    path = tmp_path / "elastic.toml"
+    path.write_text(text, encoding="utf-8")
+    sc = load_scene(path)
+    th = np.radians([0.0, 20.0, 60.0, 120.0])
+    r = sweep(sc, angles=th, method="hertz")
+    np.testing.assert_allclose(r.table["Fc"], sc.analyse(th).Fc, rtol=1e-12)
+    assert main(["dynamics", str(path), "--out", str(tmp_path / "dyn"), "--no-plots"]) == 0
+    out = capsys.readouterr().out
+    f_ref = math.sqrt((2.0e4 + 100.0) / 2.5e-4) / (2 * math.pi)        # 1427.08 Hz
+    f_printed = float(out.split("natural frequencies ")[1].split(" Hz")[0])
+    assert abs(f_printed / f_ref - 1) < 1e-4, (f_printed, f_ref)
