@@ -157,8 +157,9 @@ def lever_spring(k: float, lever: float, Fpl: float) -> tuple:
 
     The exact moment of a spring whose end moves along a fixed line perpendicular to the arm
     at ``psi = 0`` is ``(F_pl + k l sin psi) l cos psi``; the linear form is its first-order
-    Taylor term, off by ``F_pl l (1 - cos psi)`` and ``k l^2 (psi - sin psi cos psi)``: a
-    relative ``psi^2/2`` (1.5 % of the preload moment at 10 deg). femcam's arm is linear
+    Taylor term, off by ``F_pl l (1 - cos psi) ~ F_pl l psi^2/2`` and
+    ``k l^2 (psi - sin psi cos psi) ~ (2/3) k l^2 psi^3`` (0.54 N m, 1.8 % of the moment, at the
+    full 10 deg swing of examples/rff_valve_train.toml). femcam's arm is linear
     (:class:`~femcam.loads.ArmDynamics`), so this is what it models.
 
     Parameters
