@@ -7,11 +7,11 @@ speed of the cycloidal law written here from first principles."""
 from __future__ import annotations
 
 import math
-import tomllib
 from pathlib import Path
 
 import numpy as np
 import pytest
+import tomllib
 
 from femcam.dynamics import (
     TrainModel,

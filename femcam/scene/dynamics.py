@@ -89,16 +89,12 @@ def _arm_dynamics(ck: _Checker, g: dict, dy: dict) -> ArmDynamics | None:
                        c_t=dy.get("damping_N_m_s_per_rad", 0.0))
 
 
-def _arm_train(ck: _Checker, g: dict, dy: dict, arm, L):
-    """The elastic train of an arm (model = one_dof | two_dof) in rotational units, referred to
-    the roller's arc travel (femcam.dynamics.arm.arm_train); None for model = "rigid"."""
+def _arm_train_keys(ck: _Checker, g: dict, dy: dict, model: str) -> None:
+    """Report translating train keys, keys the model does not use and a fractional step count."""
     for k, rot in _ARM_TRAIN.items():
         if k in g:
             ck.add(f"dynamics.{k}", f"= {_fmt(g[k])} {_DYNAMICS[k][0]}: a translating train's key; an "
                    f"oscillating arm's train takes {rot} ({_DYNAMICS[rot][0]}) about the pivot")
-    if "model" in g and "model" not in dy:  # a bad model name, reported already
-        return None
-    model = dy.get("model", "rigid")
     allowed = {"rigid": (), "one_dof": ("train_",), "two_dof": ("train_", "second_")}.get(model, ())
     for k in g:
         if (k.startswith(("train_", "second_")) and not k.startswith(allowed) and k not in _ARM_TRAIN
@@ -106,7 +102,15 @@ def _arm_train(ck: _Checker, g: dict, dy: dict, arm, L):
             ck.add(f"dynamics.{k}", f"= {_fmt(g[k])}: not used by model = {model!r}")
     if "steps_per_rev" in dy and dy["steps_per_rev"] != int(dy["steps_per_rev"]):
         ck.add("dynamics.steps_per_rev", f"= {_fmt(g['steps_per_rev'])}: must be a whole number")
-    if model == "rigid":
+
+
+def _arm_train(ck: _Checker, g: dict, dy: dict, arm, L):
+    """The elastic train of an arm (model = one_dof | two_dof) in rotational units, referred to
+    the roller's arc travel (femcam.dynamics.arm.arm_train); None for model = "rigid"."""
+    bad_model = "model" in g and "model" not in dy  # a bad model name, reported already
+    model = dy.get("model", "rigid")
+    _arm_train_keys(ck, g, dy, model)
+    if bad_model or model == "rigid":
         return None
     need = ["train_stiffness_N_m_per_rad"] + (["second_inertia_kg_m2", "second_stiffness_N_m_per_rad"]
                                               if model == "two_dof" else [])
