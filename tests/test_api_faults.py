@@ -287,6 +287,16 @@ CASES: dict[str, Case] = {
         lazy(lambda: dict(train=train(), program=program(), rpm=np.array([600.0]),
                           steps_per_rev=360)),
         {"rpm": POS, "steps_per_rev": opt(INT_POS), "max_cycles": INT_POS}),
+    "femcam.dynamics.arm_follower": Case(lazy(lambda: dict(arm=_arm_dyn(), L=0.035)), {"L": POS}),
+    "femcam.dynamics.arm_train": Case(
+        lazy(lambda: dict(arm=_arm_dyn(), L=0.035, K_t=2e4, zeta_t=0.05, I2=1e-4, K2=3e4, C2=0.1)),
+        {"L": POS, "K_t": POS, "zeta_t": opt(NONNEG), "I2": opt(POS), "C2": opt(NONNEG)}),
+    "femcam.dynamics.lever_spring": Case(kw(k=40e3, lever=0.05, Fpl=250.0),
+                                         {"k": NONNEG, "lever": POS, "Fpl": NONNEG}),
+    "femcam.dynamics.rigid_jump_speed": Case(
+        lazy(lambda: dict(follower=scene().dynamics, program=program(), rpm_lo=500.0, rpm_hi=700.0,
+                          n=360, n_scan=3)),
+        {"rpm_lo": POS, "rpm_hi": POS, "n": INT_POS, "n_scan": INT_POS, "xtol_rpm": POS}),
     # femcam.fe
     "femcam.fe.MeshOptions": Case(kw(), {"a_over_h": POS, "fine_half_width": POS,
                                          "fine_depth": NONNEG + (25.0,), "growth": POS,

@@ -185,7 +185,8 @@ def _fold(raw):
     (_set("follower", arm_length_mm=5.0), r"follower.arm_length_mm = 5.0 mm: the arm cannot put the roller"),
     (_lift(150.0), r"program.segment\[0\].lift_deg = 150.0 deg: must be in \(0, 90\]"),
     (_fold, r"program.segment.lift_deg = 85 deg .*folds the arm past the line pivot-cam centre"),
-    (_set("dynamics", model="one_dof"), r"dynamics.model = 'one_dof': .*oscillating arm is not modelled"),
+    (_set("dynamics", model="one_dof"), r"dynamics.train_stiffness_N_m_per_rad.*missing required key for "
+     r"model = 'one_dof' of an oscillating arm \(unit: N m/rad\)"),
     (_set("dynamics", mass_kg=0.1), r"dynamics.mass_kg = 0.1 kg: a translating follower's key"),
     (_set("follower", offset_mm=2.0), r"follower.offset_mm = 2.0 mm: not a key of an oscillating follower"),
 ])

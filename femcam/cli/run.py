@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import _validate
+from ..dynamics import arm_follower, rigid_jump_speed
 from ..io import provenance, write_table
 from ..scene import load_scene
 from ..sweep.result import COLUMNS as SWEEP_COLUMNS
@@ -129,6 +130,11 @@ def summary_lines(scene, st, phi_limit_deg: float = 30.0) -> list[str]:
         f"undercut       = {_intervals_deg(_undercut_intervals(st))} (whole revolution: 0.05 deg grid and "
         "every segment)",
     ]
+    if scene.follower.kind == "oscillating_roller":  # the arm's rigid lift-off (jump) speed
+        j = rigid_jump_speed(arm_follower(scene.dynamics, scene.follower.L), scene.program,
+                             0.01 * scene.rpm, 10.0 * scene.rpm)
+        lines.append(f"jump speed     = {j:.6g} rpm (rigid arm)" if math.isfinite(j) else
+                     f"jump speed     = none up to {10 * scene.rpm:.6g} rpm (rigid arm)")
     if scene.follower.kind == "flat_faced":
         lines.append(f"min face width = {st.profile.face_width_min * 1e3:.3f} mm (face centred on the axis)")
     return lines

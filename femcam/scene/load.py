@@ -60,7 +60,7 @@ def load_scene(path) -> Scene:
     program = _program(ck, raw)
     fo, follower = _follower(ck, raw)
     arm_fold(ck, program, follower)
-    dyn, train, steps_per_rev = _dynamics(ck, raw)
+    dyn, train, steps_per_rev = _dynamics(ck, raw, follower)
     mats = _materials(ck, raw)
     tribo = _tribology(ck, raw, mats)
     finite = _finite_length(ck, raw, fo, fo.get("type"))

@@ -128,7 +128,17 @@ RANGES: dict[str, dict[str, Range]] = {
         "spring_rate_N_m_per_rad": Range(0.0, 1e8, "physical: a 1e10 N/m spring on a 0.1 m lever is 1e8 "
                                          "N m/rad"),
         "preload_N_m": Range(0.0, 1e6, "physical: 1e7 N on a 0.1 m lever, beyond any cam press"),
-        "damping_N_m_s_per_rad": Range(0.0, 1e4, "femcam: 1e6 N s/m on a 0.1 m lever")},
+        "damping_N_m_s_per_rad": Range(0.0, 1e4, "femcam: 1e6 N s/m on a 0.1 m lever"),
+        "spring_lever_mm": Range(0.1, 2000.0, _LEN),
+        "train_stiffness_N_m_per_rad": Range(0.0, 1e8, "physical: a 1e10 N/m train on a 0.1 m lever "
+                                             "is 1e8 N m/rad (a 2e6 N/m train at a 35 mm finger is "
+                                             "2.45e3 N m/rad)"),
+        "train_damping_N_m_s_per_rad": Range(0.0, 1e4, "femcam: 1e6 N s/m on a 0.1 m lever"),
+        "second_inertia_kg_m2": Range(0.0, 1e3, "physical: as arm_inertia_kg_m2 (a valve of 0.08 kg "
+                                      "at 50 mm is 2e-4 kg m^2)"),
+        "second_stiffness_N_m_per_rad": Range(0.0, 1e8, "physical: a 1e10 N/m valve stem on a 0.1 m "
+                                              "lever is 1e8 N m/rad"),
+        "second_damping_N_m_s_per_rad": Range(0.0, 1e4, "femcam: 1e6 N s/m on a 0.1 m lever")},
     "materials.*": {
         "E_GPa": Range(1e-4, 2000.0, _E),
         "nu": Range(-1.0, 0.5, "physical: a stable isotropic solid", open_=True),

@@ -111,7 +111,15 @@ _DYNAMICS.update(_TRAIN)
 _ARM_DYNAMICS = {"arm_inertia_kg_m2": ("kg m^2", 1.0, "nonneg", False),
                  "spring_rate_N_m_per_rad": ("N m/rad", 1.0, "nonneg", False),
                  "preload_N_m": ("N m", 1.0, "nonneg", False),
-                 "damping_N_m_s_per_rad": ("N m s/rad", 1.0, "nonneg", False)}
+                 "damping_N_m_s_per_rad": ("N m s/rad", 1.0, "nonneg", False),
+                 # a linear spring (spring_N_per_m, preload_N) acting at this lever (femcam.dynamics.arm)
+                 "spring_lever_mm": ("mm", 1e-3, "pos", False),
+                 # the arm's elastic train in rotational units (femcam.dynamics.arm.arm_train)
+                 "train_stiffness_N_m_per_rad": ("N m/rad", 1.0, "pos", False),
+                 "train_damping_N_m_s_per_rad": ("N m s/rad", 1.0, "nonneg", False),
+                 "second_inertia_kg_m2": ("kg m^2", 1.0, "pos", False),
+                 "second_stiffness_N_m_per_rad": ("N m/rad", 1.0, "pos", False),
+                 "second_damping_N_m_s_per_rad": ("N m s/rad", 1.0, "nonneg", False)}
 _DYNAMICS.update(_ARM_DYNAMICS)
 
 # ---- [materials.<body>] (cam, roller alias follower, pin, shaft) ---------------------------------

@@ -120,8 +120,9 @@ class Scene:
         The cam program (segment angles in rad, lifts in m).
     follower : RollerFollower, KnifeEdgeFollower or FlatFacedFollower
         Follower geometry (m).
-    dynamics : femcam.loads.FollowerDynamics
-        Rigid-follower dynamics of seed 002 eq. 11 (kg, N/m, N, N s/m).
+    dynamics : femcam.loads.FollowerDynamics or femcam.loads.ArmDynamics
+        Rigid-follower dynamics of seed 002 eq. 11 (kg, N/m, N, N s/m), or an oscillating
+        arm's about its pivot (kg m^2, N m/rad, N m, N m s/rad).
     omega : float
         Cam speed (rad/s).
     cam, roller : femcam.materials.Material
@@ -162,8 +163,8 @@ class Scene:
     raw : dict
         The parsed TOML.
     train : femcam.dynamics.TrainModel or None
-        The elastic follower train of ``[dynamics] model = one_dof | two_dof``; None: rigid
-        (eq. 11).
+        The elastic follower train of ``[dynamics] model = one_dof | two_dof`` (an arm's is
+        referred to the roller's arc travel, femcam.dynamics.arm_train); None: rigid.
     steps_per_rev : int or None
         Time steps per revolution of the train response (None: its default).
     bodies : dict
@@ -304,7 +305,8 @@ class Scene:
         dense grid over one revolution (:meth:`undercut_check`).
 
         ``Fc`` is seed 002's eq. 11 (rigid follower) unless ``[dynamics] model`` is one_dof or
-        two_dof: then it is the periodic contact force of the elastic train
+        two_dof (an oscillating arm: its moment balance, or its train referred to the roller
+        path): then it is the periodic contact force of the elastic train
         (:attr:`dynamic_response`, interpolated to ``theta``; free flight is ``liftoff``).
 
         Parameters
@@ -340,16 +342,16 @@ class Scene:
             raise UndercutError(f"{self._dense_undercut[1]} (found by the dense check on "
                                 f"{UNDERCUT_CHECK_N} angles over one revolution and "
                                 f"{SEGMENT_CHECK_N} in each segment; the analysed angles miss it)")
-        if isinstance(self.dynamics, ArmDynamics):  # oscillating arm: s, v, a are L psi and its rates
-            L = self.follower.L
-            r = arm_contact_force(self.dynamics, d.theta, d.s / L, v / L, a / L, L, p.phi)
-        elif self.train is None:
-            r = contact_force(self.dynamics, d.theta, d.s, v, a, p.phi)
-        else:  # the dynamic contact force of the periodic train response, at theta
+        if self.train is not None:  # the periodic train response at theta (an arm's: on its arc travel)
             res = self.dynamic_response
             if not res.converged:
                 raise ConvergenceError(f"[dynamics] model = {res.model!r} at {self.rpm:g} rpm: {res.message}")
             r = res.load_result(d.theta, p.phi)
+        elif isinstance(self.dynamics, ArmDynamics):  # oscillating arm: s, v, a are L psi and its rates
+            L = self.follower.L
+            r = arm_contact_force(self.dynamics, d.theta, d.s / L, v / L, a / L, L, p.phi)
+        else:
+            r = contact_force(self.dynamics, d.theta, d.s, v, a, p.phi)
         return SceneState(theta=np.asarray(d.theta, float), s=d.s, v=v, a=a, j=j, s1=d.s1, s2=d.s2,
                           phi=p.phi, rho=p.rho, Fc=r.Fc, liftoff=r.liftoff, contact_x=p.contact_x,
                           contact_y=p.contact_y, profile=p, loads=r, undercut_intervals=intervals)
