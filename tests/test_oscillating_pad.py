@@ -222,7 +222,7 @@ def _drop(key):
     (lambda raw: raw["follower"].update(pad_radius_mm=70.0),
      r"follower.pad_radius_mm = 70.0 mm: the arm cannot put the pad on the base circle"),
     (lambda raw: raw["follower"].update(roller_radius_mm=9.0),
-     r"follower.roller_radius_mm = 9.0 mm: not a key of an oscillating curved_pad follower"),
+     r"follower.roller_radius_mm = 9.0 mm: not a key of an oscillating follower of type 'curved_pad'"),
     (_drop("pad_radius_mm"), r"follower.pad_radius_mm: missing required key .*\(unit: mm\)"),
     (lambda raw: raw["follower"].pop("motion"), r"follower.type = 'curved_pad': a curved pad is modelled "
      r"on an arm only"),

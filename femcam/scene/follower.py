@@ -85,8 +85,8 @@ def _oscillating(ck: _Checker, g: dict, fo: dict, ftype):
     bad = [k for k in ("offset_mm", other, *_FOLLOWER_ONLY) if k in g]
     for k in bad:
         unit = f" {_FOLLOWER[k][0]}" if _FOLLOWER[k][0] else ""
-        ck.add(f"follower.{k}", f"= {_fmt(g[k])}{unit}: not a key of an oscillating {ftype or 'roller'} "
-               f"follower (the arm geometry is pivot_distance_mm, arm_length_mm, direction, {rkey})")
+        ck.add(f"follower.{k}", f"= {_fmt(g[k])}{unit}: not a key of an oscillating follower of type "
+               f"'{ftype or 'roller'}' (its keys: pivot_distance_mm, arm_length_mm, direction, {rkey})")
     for k, unit in ((rkey, "mm"), ("pivot_distance_mm", "mm"), ("arm_length_mm", "mm")):
         if k not in g:
             ck.add(f"follower.{k}", f"missing required key for an oscillating follower (unit: {unit})")
