@@ -129,7 +129,7 @@ def _run(scene: Path, out: Path) -> float:
 def _check_csv(out: Path, name: str) -> float:
     from femcam.io import read_csv
 
-    t = read_csv(out / "sweep.csv")
+    t, _ = read_csv(out / "sweep.csv")
     err = float(np.nanmax(np.abs(np.asarray(t["p0_fe_MPa"]) / np.asarray(t["p0_hertz_MPa"]) - 1.0)))
     assert err < 5e-3, f"{name}: FE p0 off Hertz by {err:.3%}"
     return err
