@@ -240,5 +240,5 @@ def test_pad_too_large_for_the_nose_is_undercut(load_raw):
         segs[2].update(beta_deg=30.0, lift_deg=40.0)
         segs[3]["beta_deg"] = 290.0
     sc = load_raw(change)
-    with pytest.raises(UndercutError, match=r"oscillating_pad cam profile is undercut .*pad radius Rr = 12 mm"):
+    with pytest.raises(UndercutError, match=r"oscillating_pad cam profile is undercut .*pad radius Rr = 12"):
         sc.analyse(np.radians([0.0]))
