@@ -184,11 +184,12 @@ def test_scene_slip_and_hertz_against_closed_forms(load_raw):
     assert r.follower_period is None                # the pad does not turn: an open coordinate
 
 
-def test_exact_gap_in_the_arm_frame_is_the_arc_gap_near_the_contact(load_raw):
-    """The exact gap is taken in the contact frame of the arm (normal through the pad centre):
-    inside |x| <= 0.1 mm it matches the osculating-arc gap x^2/(2R) to the cubic term
-    (a frame turned by the pressure angle gave a gap linear in x and negative)."""
-    sc = load_raw()
+@pytest.mark.parametrize("pad", [True, False])
+def test_exact_gap_in_the_arm_frame_is_the_arc_gap_near_the_contact(load_raw, pad):
+    """The exact gap is taken in the contact frame of the arm (normal through the pad's or the
+    roller's centre): inside |x| <= 0.1 mm it matches the osculating-arc gap x^2/(2R) to the
+    cubic term (a frame turned by the pressure angle gave a gap linear in x and negative)."""
+    sc = load_raw() if pad else load_scene(EXAMPLE)
     x = np.linspace(-1e-4, 1e-4, 9)
     for deg in (0.0, 30.0, 60.0, 90.0):
         th = math.radians(deg)
