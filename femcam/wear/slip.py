@@ -610,7 +610,8 @@ ROLLER_MODELS = ("srr", "inertia")
 def follower_slip(follower, theta, s, s1, s2, *, omega, Fc=None, roller_model: str = "srr",
                   srr: float = 0.02, mu: float = 0.1, J: float | None = None,
                   T_drag: float = 0.0, tip_radius: float | None = None) -> SlipResult:
-    """Dispatch on a :mod:`femcam.profile` follower (roller, knife-edge, flat-faced).
+    """Dispatch on a :mod:`femcam.profile` follower (roller, knife-edge, flat-faced; on an arm:
+    roller, :func:`oscillating_roller_srr`, or curved pad, :func:`oscillating_pad`).
 
     Roller: ``roller_model="srr"`` (slide-to-roll ratio ``srr``, default 2 %) or ``"inertia"``
     (needs ``Fc`` in N, friction ``mu`` and polar inertia ``J`` in kg m^2; ``J=None`` takes a
