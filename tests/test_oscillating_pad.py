@@ -13,6 +13,7 @@ import pytest
 import tomllib
 
 from femcam.errors import SceneError, UndercutError
+from femcam.fe.followers import sliding_sign
 from femcam.fe.gap import arc_gap, exact_gap
 from femcam.kinematics import CamProgram, dwell, fall, rise
 from femcam.profile import OscillatingPadFollower, cam_profile
@@ -130,6 +131,10 @@ def test_sliding_and_entrainment_speeds_against_finite_differences(sigma):
     np.testing.assert_allclose(sp.u_cam, u_cam, rtol=1e-6)
     np.testing.assert_allclose(sp.u_pad, u_pad, rtol=0, atol=1e-6 * scale)
     np.testing.assert_allclose(sp.U, 0.5 * (u_cam + u_pad), rtol=0, atol=1e-6 * scale)
+    # the FE's sliding sign: friction on the cam along the pad's velocity relative to the cam,
+    # projected on the FE local x = (n_y, -n_x) = -tau (femcam.fe.gap): the sign of slide
+    sg = sliding_sign(_program(0.2 * f.L), f, th)   # a scene program holds the arc travel L psi
+    np.testing.assert_array_equal(sg, np.where(slide >= 0.0, 1, -1))
     # base circle (theta = 5 rad, a dwell): the pad stands still, the cam slides at omega Rb
     assert sp.v_slide[-1] == pytest.approx(omega * Rb, rel=1e-12) and abs(sp.u_pad[-1]) < 1e-12
 
