@@ -12,8 +12,9 @@ cleared before each run, alternating the two scenes twice.
 Second part, **whole process** (issue 25's target: within 20 %): ``python -m femcam sweep`` of the
 example against the same translating equivalent written as a scene file (``lift_mm``,
 ``offset_mm``, ``mass_kg``, ...), both at ``--mesh-size 10`` on 72 angles, ``--no-plots``; FE p0
-within 0.5 % of Hertz in both CSVs first, then ``PAIRS`` paired runs (alternating order), the
-median time of each and the median of the paired ratios.
+within 0.5 % of Hertz in both CSVs first, then ``PAIRS`` paired runs (alternating order): the
+median wall and CPU (user + system of the child process) time of each and the medians of the
+paired ratios. On a shared machine the CPU ratio is the steadier figure.
 
 Run:  python benchmarks/bench_oscillating.py [--process-only]
 """
