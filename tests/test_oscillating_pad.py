@@ -5,6 +5,7 @@ gap in the arm's contact frame, and the refusals (docs/oscillating.md, "Curved p
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from pathlib import Path
 
@@ -187,6 +188,26 @@ def test_scene_slip_and_hertz_against_closed_forms(load_raw):
     d = sc.program.derivatives(th)
     r = follower_slip(sc.follower, th, d.s, d.s1, d.s2, omega=sc.omega)
     assert r.follower_period is None                # the pad does not turn: an open coordinate
+
+
+def test_wear_of_both_bodies_is_archard_over_the_sliding_distance(load_raw):
+    """Archard on both bodies: the worn volume per revolution of the cam and of the pad equals
+    k * sum(Fc |v_s| dt), with v_s from the finite differences of the material points (not the
+    class) on the same 1 deg grid; the pad coordinate is open (the contact swings over ~8 mm)."""
+    from femcam.wear.options import wear_coefficient_info
+    from femcam.wear.scene import scene_wear
+
+    sc = load_raw()
+    f, n = sc.follower, 360
+    th = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
+    wm, st, _ = scene_wear(sc, th, cycles=1.0)
+    k, _ = wear_coefficient_info(sc)
+    slide = _fd_speeds(f, CamProgram([dataclasses.replace(sg, h=sg.h / f.L) for sg in sc.program.segments]),
+                       th, sc.omega)[0]
+    V = k * np.sum(st.Fc * np.abs(slide)) * (2 * math.pi / n) / sc.omega
+    # the map's trapezoidal steps against this rectangle sum: a few 1e-4 on a smooth revolution
+    assert wm.volume_cam == pytest.approx(V, rel=1e-3) and wm.volume_follower == pytest.approx(V, rel=1e-3)
+    assert wm.follower_period is None and 5e-3 < np.ptp(wm.x_follower) < 2e-2
 
 
 @pytest.mark.parametrize("pad", [True, False])
