@@ -210,6 +210,28 @@ def test_wear_of_both_bodies_is_archard_over_the_sliding_distance(load_raw):
     assert wm.follower_period is None and 5e-3 < np.ptp(wm.x_follower) < 2e-2
 
 
+def test_assessment_film_uses_the_entrainment_speed(load_raw):
+    """The assessment's film and flash temperature take the pad's surface speeds: U (and the
+    sliding speed) against the finite-difference speeds of the contact's travel over each body."""
+    from femcam.sweep import sweep
+
+    assess = tomllib.loads((EXAMPLE.parent / "seed002_assess.toml").read_text(encoding="utf-8"))
+
+    def change(raw):
+        raw["operating"]["oil_temperature_C"] = 90.0
+        for k in ("materials", "lubricant", "surface"):
+            raw[k] = assess[k]
+    sc = load_raw(change)
+    th = np.radians([20.0, 50.0, 110.0, 200.0])
+    t = sweep(sc, angles=th, method="hertz").table
+    f = sc.follower
+    _, _, u_cam, u_pad = _fd_speeds(
+        f, CamProgram([dataclasses.replace(sg, h=sg.h / f.L) for sg in sc.program.segments]), th, sc.omega)
+    np.testing.assert_allclose(t["assess_U"], 0.5 * (u_cam + u_pad), rtol=1e-6)
+    np.testing.assert_allclose(t["assess_v_slide"], np.abs(u_cam - u_pad), rtol=1e-6)
+    assert np.all(np.isfinite(t["assess_h_c"])) and np.all(np.isfinite(t["assess_dT_flash"]))
+
+
 @pytest.mark.parametrize("pad", [True, False])
 def test_exact_gap_in_the_arm_frame_is_the_arc_gap_near_the_contact(load_raw, pad):
     """The exact gap is taken in the contact frame of the arm (normal through the pad's or the
