@@ -414,6 +414,9 @@ CASES: dict[str, Case] = {
     "femcam.profile.OscillatingRollerFollower": Case(
         kw(Rb=0.02, Rr=0.008, a=0.05, L=0.035, sigma=1),
         {"Rb": POS, "Rr": POS, "a": POS, "L": POS, "sigma": ("str", "none", "nan", 2.5)}),
+    "femcam.profile.OscillatingPadFollower": Case(
+        kw(Rb=0.02, Rr=0.012, a=0.05, L=0.035, sigma=1),
+        {"Rb": POS, "Rr": POS, "a": POS, "L": POS, "sigma": ("str", "none", "nan", 2.5)}),
     "femcam.profile.arm_geometry": Case(lazy(lambda: dict(f=_osc(), psi=0.1 + 0 * TH, psi1=0 * TH,
                                                           psi2=0 * TH)),
                                         {"psi": REAL, "psi1": REAL, "psi2": REAL}),
@@ -705,6 +708,7 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.optimise.OptimiseResult", "femcam.optimise.StartRecord", "femcam.optimise.FECheck",
         "femcam.study.StudyResult",
         "femcam.profile.BaseRadiusResult", "femcam.profile.ArmGeometry", "femcam.profile.CamProfile",
+        "femcam.profile.PadSpeeds",
         "femcam.scene.Scene",
         "femcam.scene.SceneState", "femcam.sweep.SweepResult",
         "femcam.synthesis.SynthesisResult", "femcam.synthesis.Comparison",

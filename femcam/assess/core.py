@@ -83,7 +83,7 @@ WORST = {"film (lambda)": ("lam", "min"), "contact temperature": ("T_contact", "
 def _geometry(scene):
     """``(scene for the kinematics, R2 in m, tip radius or None)`` per follower type."""
     kind = type(scene.follower).__name__
-    if kind in ("RollerFollower", "OscillatingRollerFollower"):  # a roller on a slide or an arm
+    if kind in ("RollerFollower", "OscillatingRollerFollower", "OscillatingPadFollower"):  # R2 = Rr
         return scene, scene.follower.Rr, None
     if kind == "FlatFacedFollower":
         return scene, math.inf, None

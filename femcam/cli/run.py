@@ -238,7 +238,8 @@ def _run(args) -> int:
                                                 "Summary:", *summ]) + "\n")
     files.append(out / "summary.txt")
     if not args.no_plots:
-        files += plot_all(st, out, "", Rr=fo.Rr if fo.kind in ("roller", "oscillating_roller") else 0.0,
+        circle = fo.kind in ("roller", "oscillating_roller", "oscillating_pad")  # drawn follower circle
+        files += plot_all(st, out, "", Rr=fo.Rr if circle else 0.0,
                           limit_deg=args.phi_limit_deg, title=scene.name)
     print()
     print("Wrote: " + ", ".join(str(f) for f in files))

@@ -248,10 +248,15 @@ def _estimates(surf, x, a, R_eff):
     return g_ex, g_arc, 50.0 * e_g, 50.0 * e_g + 100.0 * (a / R_min) ** 2
 
 
+def _rolls(follower) -> bool:
+    """A translating roller, or a follower that says it rolls (the arm's roller; its pad does not)."""
+    return isinstance(follower, RollerFollower) or bool(getattr(follower, "rolls", False))
+
+
 def _traction(rc: RealCam, theta, F, mu, Q):
     """(Q on the cam, rolling, sliding) in the FE frame; the FE frame's x is the physical x,
     but with swapped bodies the traction on the FE cam (the follower) is -Q."""
-    if isinstance(rc.follower, RollerFollower):
+    if _rolls(rc.follower):
         roll = int(rolling_direction(rc.program, rc.follower, [theta])[0])
         return (0.0 if Q is None else float(Q)), roll, 1
     s = int(sliding_sign(rc.program, rc.follower, [theta], tip_radius=rc.tip_radius)[0])
@@ -309,7 +314,7 @@ def solve_angle(rc: RealCam, theta: float, F: float, *, mu: float, Q: float | No
     Q_fe = -Qc if rc.swapped else Qc
     exact = force_exact or curvature_jump
     kw = dict(F=F, rho=math.inf if rc.swapped else surf.rho, mu=mu, check=False)
-    if isinstance(rc.follower, RollerFollower):
+    if _rolls(rc.follower):
         kw.update(Q=Q_fe, rolling=roll)
     else:
         kw.update(sliding=slide)

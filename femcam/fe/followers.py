@@ -14,11 +14,12 @@ r"""All three followers in the FE: which bodies meet, how they slide, where the 
   key ``follower.face_length_mm``) the contact is an edge contact: refused with the angle range
   (:func:`face_edge_intervals`), never answered with Hertz.
 
-Sliding direction (knife-edge, flat-faced): the friction traction on the cam points along the
-follower's velocity relative to the cam surface at the contact, ``sign((v_f - v_c) . t)`` with
-``v_c = omega (-c_y, c_x)`` (counter-clockwise cam), ``v_f = (0, omega s')`` (translating follower)
-and ``t`` the local x axis of :mod:`femcam.fe.gap` (Johnson 1985 §7.1: friction opposes the
-relative slip).
+Sliding direction (knife-edge, flat-faced, the curved pad on an arm): the friction traction on
+the cam points along the follower's velocity relative to the cam surface at the contact,
+``sign((v_f - v_c) . t)`` with ``v_c = omega (-c_y, c_x)`` (counter-clockwise cam),
+``v_f = (0, omega s')`` (translating follower; the pad's own ``program_speeds`` on an arm,
+:mod:`femcam.profile.pad`) and ``t`` the local x axis of :mod:`femcam.fe.gap` (Johnson 1985
+§7.1: friction opposes the relative slip).
 
 References: K. L. Johnson, *Contact Mechanics*, 1985, §7.1, §8.2; R. L. Norton, *Design of
 Machinery*, ch. 8.
@@ -33,7 +34,7 @@ import numpy as np
 from .. import _validate
 from ..errors import PhysicsError
 from ..profile import FlatFacedFollower, KnifeEdgeFollower, RollerFollower, bool_intervals, cam_profile
-from .gap import contact_geometry
+from .gap import _contact_frame, contact_geometry
 
 #: FE body name -> physical body, for a flat-faced follower (the bodies swap roles)
 FLAT_FACE_BODIES = {"cam": "follower", "roller": "cam"}
@@ -81,10 +82,14 @@ def sliding_sign(program, follower, theta, *, tip_radius: float | None = None) -
         +1 or -1 per angle.
     """
     th = _validate.finite_array("theta", theta, "rad")
-    gen, _ = contact_geometry(follower, tip_radius)
+    gen, R = contact_geometry(follower, tip_radius)
     d = program.derivatives(th)
+    own = getattr(gen, "program_speeds", None)
+    if own is not None:  # a follower that owns its sliding velocity (femcam.profile.pad)
+        # its v_slide = (v_c - v_f) . tau with tau = J n = -t: the same sign as (v_f - v_c) . t
+        return np.where(own(d.s, d.s1, d.s2, omega=1.0).v_slide >= 0.0, 1, -1)
     pr = cam_profile(gen, th, d.s, d.s1, d.s2, allow_undercut=True)
-    t = np.stack([np.cos(pr.phi), np.sin(pr.phi)])
+    t, _ = _contact_frame(pr, th, R)
     vc = np.stack([-pr.contact_y, pr.contact_x])  # omega x c, per unit omega
     vf = np.stack([np.zeros_like(d.s1), d.s1])
     rel = np.sum((vf - vc) * t, axis=0)
@@ -113,7 +118,7 @@ def rolling_direction(program, follower, theta, *, tip_radius: float | None = No
         +1 or -1 per angle.
     """
     th = _validate.finite_array("theta", theta, "rad")
-    gen, _ = contact_geometry(follower, tip_radius)
+    gen, R = contact_geometry(follower, tip_radius)
     dth = 1e-6
     both = np.concatenate([th, th + dth])
     d = program.derivatives(both)
@@ -123,7 +128,8 @@ def rolling_direction(program, follower, theta, *, tip_radius: float | None = No
     dx, dy = pr.x[n:] - pr.x[:n], pr.y[n:] - pr.y[:n]
     c, s = np.cos(th), np.sin(th)
     fx, fy = c * dx - s * dy, s * dx + c * dy
-    along = fx * np.cos(pr.phi[:n]) + fy * np.sin(pr.phi[:n])
+    t, _ = _contact_frame(pr, both, R)
+    along = fx * t[0, :n] + fy * t[1, :n]
     return np.where(along > 0.0, -1, 1)
 
 

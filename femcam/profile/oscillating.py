@@ -102,6 +102,10 @@ class OscillatingRollerFollower:
     L: float
     sigma: int = 1
     kind = "oscillating_roller"
+    #: the roller turns on the arm (rolls); a pad (femcam.profile.pad) does not
+    rolls = True
+    #: the follower surface named in messages
+    face = "roller"
 
     def __post_init__(self):
         _set_checked(self, Rb=_validate.positive, Rr=_validate.positive, a=_validate.positive,
@@ -334,11 +338,11 @@ def oscillating_profile(f: OscillatingRollerFollower, theta, psi, psi1, psi2, *,
     if intervals and not allow_undercut:
         worst = float(np.min(rho_pitch[undercut]))
         raise UndercutError(
-            f"oscillating_roller cam profile is undercut (cusped) for theta in "
+            f"{f.kind} cam profile is undercut (cusped) for theta in "
             f"{_fmt_intervals_deg(intervals)}: "
-            f"pitch-curve radius of curvature <= roller radius Rr = {Rr * 1e3:g} mm; smallest radius "
+            f"pitch-curve radius of curvature <= {f.face} radius Rr = {Rr * 1e3:g} mm; smallest radius "
             f"there {worst * 1e3:.4g} mm. Increase the base radius Rb (now {f.Rb * 1e3:g} mm), use a "
-            "smaller roller or a smaller angular lift, or pass allow_undercut=True.")
+            f"smaller {f.face} or a smaller angular lift, or pass allow_undercut=True.")
     z = np.zeros(theta.shape)
     return CamProfile(follower=f, theta=theta, s=psi, phi=np.broadcast_to(g.phi, theta.shape).copy(),
                       rho=rho, rho_pitch=rho_pitch, x=x, y=y, pitch_x=px, pitch_y=py,

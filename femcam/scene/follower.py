@@ -12,7 +12,7 @@ import math
 from ..errors import InputError
 from ..halfspace.crown import RollerProfile
 from ..kinematics import CamProgram
-from ..profile import DIRECTIONS, OscillatingRollerFollower, make_follower
+from ..profile import DIRECTIONS, OscillatingPadFollower, OscillatingRollerFollower, make_follower
 from .checker import _Checker, _fmt
 from .schema import _ARM, _CAM, _FINITE, _FINITE_SI, _FOLLOWER, _FOLLOWER_ONLY
 
@@ -43,7 +43,11 @@ def _follower(ck: _Checker, raw: dict):
     if is_oscillating(raw):
         return fo, _oscillating(ck, g, fo, ftype)
     arm = [k for k in _ARM if isinstance(g, dict) and k in g and k != "motion"]
-    if arm:
+    if ftype == "curved_pad":
+        ck.add("follower.type", "= 'curved_pad': a curved pad is modelled on an arm only (motion = "
+               "'oscillating', pad_radius_mm); a translating curved face is type = 'knife_edge' with "
+               "tip_radius_mm")
+    elif arm:
         ck.add(f"follower.{arm[0]}", f"= {_fmt(g[arm[0]])}: only an oscillating follower (motion = "
                "'oscillating') has this key")
     elif ftype == "roller" and "roller_radius_mm" not in g:
@@ -65,35 +69,43 @@ def _follower(ck: _Checker, raw: dict):
     return fo, follower
 
 
+#: type -> (radius key, its own key that the other type refuses, follower class)
+_ARM_TYPES = {"roller": ("roller_radius_mm", "pad_radius_mm", OscillatingRollerFollower),
+              "curved_pad": ("pad_radius_mm", "roller_radius_mm", OscillatingPadFollower)}
+
+
 def _oscillating(ck: _Checker, g: dict, fo: dict, ftype):
-    """The OscillatingRollerFollower of ``motion = "oscillating"`` (None on a problem)."""
-    if ftype not in (None, "roller"):
-        ck.add("follower.type", f"= {_fmt(ftype)}: an oscillating follower is a roller (type = 'roller'); "
-               "knife-edge and flat-faced (pad) arms are not modelled")
+    """The OscillatingRollerFollower (``type = "roller"``) or OscillatingPadFollower (``type =
+    "curved_pad"``) of ``motion = "oscillating"`` (None on a problem)."""
+    if ftype not in (None, *_ARM_TYPES):
+        ck.add("follower.type", f"= {_fmt(ftype)}: an oscillating follower is a roller (type = 'roller') "
+               "or a curved pad (type = 'curved_pad'); knife-edge and flat-faced arms are not modelled")
         return None
-    bad = [k for k in ("offset_mm", *_FOLLOWER_ONLY) if k in g]
+    rkey, other, cls = _ARM_TYPES[ftype or "roller"]
+    bad = [k for k in ("offset_mm", other, *_FOLLOWER_ONLY) if k in g]
     for k in bad:
         unit = f" {_FOLLOWER[k][0]}" if _FOLLOWER[k][0] else ""
-        ck.add(f"follower.{k}", f"= {_fmt(g[k])}{unit}: not a key of an oscillating follower (the arm "
-               "geometry is pivot_distance_mm, arm_length_mm, direction)")
-    for k, unit in (("roller_radius_mm", "mm"), ("pivot_distance_mm", "mm"), ("arm_length_mm", "mm")):
+        ck.add(f"follower.{k}", f"= {_fmt(g[k])}{unit}: not a key of an oscillating follower of type "
+               f"'{ftype or 'roller'}' (its keys: pivot_distance_mm, arm_length_mm, direction, {rkey})")
+    for k, unit in ((rkey, "mm"), ("pivot_distance_mm", "mm"), ("arm_length_mm", "mm")):
         if k not in g:
             ck.add(f"follower.{k}", f"missing required key for an oscillating follower (unit: {unit})")
-    need = ("base_radius_mm", "roller_radius_mm", "pivot_distance_mm", "arm_length_mm")
+    need = ("base_radius_mm", rkey, "pivot_distance_mm", "arm_length_mm")
     if bad or not all(k in fo for k in need) or ("direction" in g and "direction" not in fo):
         return None
     Rb, Rr, a, L = (fo[k] for k in need)
+    what = rkey[:-len("_radius_mm")]
     if a <= Rb:
         ck.add("follower.pivot_distance_mm", f"= {_fmt(g['pivot_distance_mm'])} mm: the pivot lies inside "
                f"the base circle: must be > base_radius_mm = {_fmt(g['base_radius_mm'])} mm")
         return None
     if not abs(a - L) < Rb + Rr < a + L:
-        ck.add("follower.arm_length_mm", f"= {_fmt(g['arm_length_mm'])} mm: the arm cannot put the roller "
-               f"on the base circle: need |pivot_distance_mm - arm_length_mm| < base_radius_mm + "
-               f"roller_radius_mm = {(Rb + Rr) * 1e3:g} mm < pivot_distance_mm + arm_length_mm")
+        key = rkey if Rb + Rr >= a + L else "arm_length_mm"  # a too large pad or roller names itself
+        ck.add(f"follower.{key}", f"= {_fmt(g[key])} mm: the arm cannot put the {what} on the base "
+               f"circle: need |pivot_distance_mm - arm_length_mm| < base_radius_mm + {rkey} = "
+               f"{(Rb + Rr) * 1e3:g} mm < pivot_distance_mm + arm_length_mm = {(a + L) * 1e3:g} mm")
         return None
-    return OscillatingRollerFollower(Rb=Rb, Rr=Rr, a=a, L=L,
-                                     sigma=DIRECTIONS[fo.get("direction", "away_from_pivot")])
+    return cls(Rb=Rb, Rr=Rr, a=a, L=L, sigma=DIRECTIONS[fo.get("direction", "away_from_pivot")])
 
 
 def arm_program(program, follower):

@@ -102,7 +102,9 @@ RANGES: dict[str, dict[str, Range]] = {
                               "hold the ring"),
         "needle_radius_mm": Range(0.05, 100.0, _LEN),
         "pivot_distance_mm": Range(0.1, 2000.0, _LEN + "; and > base_radius_mm"),
-        "arm_length_mm": Range(0.1, 2000.0, _LEN + "; and the arm puts the roller on the base circle")},
+        "arm_length_mm": Range(0.1, 2000.0, _LEN + "; and the arm puts the roller on the base circle"),
+        "pad_radius_mm": Range(0.1, 1000.0, _LEN + "; convex (a concave pad is not modelled) and the arm "
+                               "puts the pad on the base circle")},
     "cam": {
         "face_width_mm": Range(0.1, 1000.0, _LEN),
         "bore_mm": Range(0.05, 1000.0, _LEN + "; and < base_radius_mm"),

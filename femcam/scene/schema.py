@@ -58,7 +58,9 @@ _FOLLOWER = {"type": ("", None, "str", True), "base_radius_mm": ("mm", 1e-3, "po
              "tip_radius_mm": ("mm", 1e-3, "pos", False), "face_length_mm": ("mm", 1e-3, "pos", False)}
 # the oscillating roller follower (femcam.profile.oscillating; docs/oscillating.md)
 _ARM = {"motion": ("", None, "str", False), "pivot_distance_mm": ("mm", 1e-3, "pos", False),
-        "arm_length_mm": ("mm", 1e-3, "pos", False), "direction": ("", None, "str", False)}
+        "arm_length_mm": ("mm", 1e-3, "pos", False), "direction": ("", None, "str", False),
+        # the curved-pad oscillating follower (type = "curved_pad"; femcam.profile.pad)
+        "pad_radius_mm": ("mm", 1e-3, "num", False)}  # num: a concave (negative) pad gets the range text
 _FOLLOWER.update(_ARM)
 #: keys only one follower type has
 _FOLLOWER_ONLY = {"tip_radius_mm": "knife_edge", "face_length_mm": "flat_faced"}
@@ -274,7 +276,7 @@ _WEAR = {"K": ("(dimensionless)", 1.0, "nonneg", False),
          "tip_radius_mm": ("mm", 1e-3, "pos", False), "cycles": ("revolutions", 1.0, "nonneg", False)}
 
 #: the accepted strings of the ``str`` keys
-_CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", "flat_faced"),
+_CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", "flat_faced", "curved_pad"),
             "plane": ("strain", "stress"), "sliding": ("+x", "-x"),
             "model": ("rigid", "one_dof", "two_dof"),
             "crown": ("none", "circular", "logarithmic"),

@@ -9,9 +9,10 @@ that answers each angle, and the three followers (:mod:`femcam.fe.choice`, docs/
 * **Traction** (:func:`scene_traction`): rollers roll, the tangential force on the cam is what
   the roller's angular acceleration and bearing drag need (:func:`femcam.wear.slip.roller_inertia`
   on a uniform revolution, :func:`femcam.fe.choice.mechanism_Q`), solved as Coulomb partial slip;
-  knife-edge and flat-faced followers slide fully in the direction of the sliding velocity
-  (:func:`femcam.fe.followers.sliding_sign`). The scene's ``[contact] sliding`` is an explicit
-  override: full sliding in that fixed direction (the behaviour before the mechanism was used).
+  knife-edge, flat-faced and curved-pad (on an arm, :mod:`femcam.profile.pad`) followers slide
+  fully in the direction of the sliding velocity (:func:`femcam.fe.followers.sliding_sign`).
+  The scene's ``[contact] sliding`` is an explicit override: full sliding in that fixed
+  direction (the behaviour before the mechanism was used).
 * **Model per angle** (:func:`arc_error_estimate`): the error of the osculating-arc gap is
   estimated without building the exact gap from the curvature gradient along the cam surface,
   ``kappa_1 = d kappa / d s``: the cam surface departs from its osculating circle by
@@ -234,10 +235,10 @@ def scene_traction(scene, theta) -> Traction:
         s = -1 if str(scene.sliding).strip() == "-x" else 1
         return Traction(np.full(n, np.nan), np.full(n, s, int), f"[contact] sliding = {scene.sliding}")
     f = scene.follower
-    if isinstance(f, OscillatingRollerFollower):  # the roller slip models are translating only
+    if isinstance(f, OscillatingRollerFollower) and f.rolls:  # the roller slip models are translating only
         return Traction(np.zeros(n), np.ones(n, int), "oscillating roller: pure rolling, no traction "
                         "(the roller inertia slip model is not built for an arm)")
-    if not isinstance(f, RollerFollower):
+    if not isinstance(f, RollerFollower):  # knife-edge, flat face, the pad on an arm: full sliding
         sg = sliding_sign(scene.program, f, theta, tip_radius=_tip(scene))
         return Traction(np.full(n, np.nan), sg.astype(int), "full sliding, sign of the sliding velocity")
     roll = rolling_direction(scene.program, f, theta)

@@ -17,7 +17,7 @@ import numpy as np
 from .. import _validate
 from ..errors import InputError
 from ..hertz import LineContact
-from ..profile import KnifeEdgeFollower, RollerFollower
+from ..profile import KnifeEdgeFollower, OscillatingRollerFollower, RollerFollower
 from .coating import coating_wear
 from .map import WearMap, wear_map
 from .options import follower_tip_radius, slip_kwargs, wear_coefficient_info, wear_options
@@ -115,7 +115,9 @@ def scene_wear(scene, theta, *, cycles: float = 1e6, tip_radius: float | None = 
     if fe is not None:
         table, pressure = fe, "fe"
     else:
-        R2 = sc.follower.Rr if isinstance(sc.follower, RollerFollower) else math.inf
+        # a roller, the tip's roller, or the roller or pad on an arm: the follower circle's radius
+        circle = isinstance(sc.follower, RollerFollower | OscillatingRollerFollower)
+        R2 = sc.follower.Rr if circle else math.inf
         hc = LineContact(F=Fc, length=sc.length, R1=st.rho, R2=R2, cam=sc.cam, roller=sc.roller)
         table, pressure = {"theta": theta, "a": hc.a, "p0": hc.p0, "Fc": Fc}, "hertz"
     slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **slip_kwargs(scene, opts),

@@ -65,7 +65,7 @@ import numpy as np
 from .. import _validate
 from .._repr import compact_repr
 from ..errors import ConvergenceError, UndercutError
-from ..profile import OscillatingRollerFollower, arm_geometry, pressure_angle
+from ..profile import OscillatingPadFollower, OscillatingRollerFollower, arm_geometry, pressure_angle
 
 
 @dataclass(frozen=True)
@@ -356,6 +356,47 @@ def oscillating_roller_srr(theta, psi, psi1, psi2, *, follower, omega, srr=0.0) 
     return _srr_result(theta, V_cam, omega, srr, f.Rr, V_cam / f.Rr, "oscillating roller")
 
 
+def oscillating_pad(theta, s, s1, s2, *, follower, omega) -> SlipResult:
+    r"""Curved pad on an oscillating arm: full sliding (:mod:`femcam.profile.pad`).
+
+    .. math:: v_{slip} = |u_{cam} - u_{pad}| = \omega\left|\,|T| - R_r(1 + \sigma\psi')\right|
+
+    ``V_cam = u_cam``, ``V_follower = u_pad`` (the pad surface's speed relative to the contact,
+    signed), an open pad coordinate starting at the contact's arc position on the pad at
+    ``theta[0]`` (:meth:`femcam.profile.OscillatingPadFollower.speeds`).
+
+    Parameters
+    ----------
+    theta : array_like, shape (n,)
+        Cam angles [rad].
+    s, s1, s2 : array_like, shape (n,)
+        Arc travel of the pad centre ``L psi`` [m] and its theta-derivatives [m/rad, m/rad^2].
+    follower : OscillatingPadFollower
+        The follower.
+    omega : float
+        Cam speed, ``> 0`` [rad/s].
+
+    Returns
+    -------
+    SlipResult
+        Speeds per angle, shape (n,) [m/s].
+
+    Raises
+    ------
+    UndercutError
+        Cam radius of curvature ``<= 0`` (``Rr kappa >= 1``) somewhere.
+    """
+    f = _validate.instance("follower", follower, OscillatingPadFollower)
+    theta = np.ravel(_validate.finite_array("theta", theta, "rad"))
+    sp = f.program_speeds(np.ravel(s), np.ravel(s1), np.ravel(s2), omega=omega)
+    if np.any(sp.u_cam <= 0.0):
+        raise UndercutError("oscillating pad: cam radius of curvature <= 0 (undercut) at theta = "
+                            f"{np.degrees(theta[sp.u_cam <= 0.0][0]):.2f} deg")
+    return SlipResult(theta=theta, v_slip=np.abs(sp.v_slide), V_cam=sp.u_cam, V_follower=sp.u_pad,
+                      omega=float(omega), model=f"curved pad R = {f.Rr * 1e3:g} mm on an arm: full sliding",
+                      follower_origin=float(sp.xi_pad.flat[0]) if sp.xi_pad.size else 0.0)
+
+
 def roller_srr(theta, s, s1, s2, *, Rb, Rr, omega, srr, e=0.0) -> SlipResult:
     r"""Roller follower with a prescribed slide-to-roll ratio ``srr`` (-2 < srr < 2).
 
@@ -569,7 +610,8 @@ ROLLER_MODELS = ("srr", "inertia")
 def follower_slip(follower, theta, s, s1, s2, *, omega, Fc=None, roller_model: str = "srr",
                   srr: float = 0.02, mu: float = 0.1, J: float | None = None,
                   T_drag: float = 0.0, tip_radius: float | None = None) -> SlipResult:
-    """Dispatch on a :mod:`femcam.profile` follower (roller, knife-edge, flat-faced).
+    """Dispatch on a :mod:`femcam.profile` follower (roller, knife-edge, flat-faced; on an arm:
+    roller, :func:`oscillating_roller_srr`, or curved pad, :func:`oscillating_pad`).
 
     Roller: ``roller_model="srr"`` (slide-to-roll ratio ``srr``, default 2 %) or ``"inertia"``
     (needs ``Fc`` in N, friction ``mu`` and polar inertia ``J`` in kg m^2; ``J=None`` takes a
@@ -632,6 +674,8 @@ def follower_slip(follower, theta, s, s1, s2, *, omega, Fc=None, roller_model: s
     if kind == "FlatFacedFollower":
         r = flat_faced(theta, s, s1, s2, Rb=follower.Rb, omega=omega)
         return dataclasses.replace(r, follower_origin=r.follower_origin - e)
+    if kind == "OscillatingPadFollower":
+        return oscillating_pad(theta, s, s1, s2, follower=follower, omega=omega)
     if kind == "OscillatingRollerFollower":
         if roller_model != "srr":
             raise _validate.fail("roller_model", roller_model, "", "an oscillating roller has the "
@@ -641,8 +685,8 @@ def follower_slip(follower, theta, s, s1, s2, *, omega, Fc=None, roller_model: s
                                       np.asarray(s2, float) / L, follower=follower, omega=omega, srr=srr)
     if kind != "RollerFollower":
         raise _validate.fail("follower", kind, "",
-                      "must be a RollerFollower, KnifeEdgeFollower, FlatFacedFollower or "
-                      "OscillatingRollerFollower")
+                      "must be a RollerFollower, KnifeEdgeFollower, FlatFacedFollower, "
+                      "OscillatingRollerFollower or OscillatingPadFollower")
     _validate.choice("roller_model", roller_model, ROLLER_MODELS)
     if roller_model == "srr":
         return roller_srr(theta, s, s1, s2, Rb=follower.Rb, Rr=follower.Rr, omega=omega, srr=srr, e=e)
