@@ -20,7 +20,7 @@ Breakdown (one extra run of the default job in a driver process, ``--workers 1``
 phase runs in that process and can be timed): interpreter start, imports (femcam.cli and the
 heavy libraries the sweep imports lazily: scikit-fem, gmsh, meshio, matplotlib), scene,
 analytic chain, families + verification (``SweepResult.timings["verify"]``), chunk solves
-(``timings["compute"]`` minus VTU), VTU writing (``femcam.fe.export.write_vtu`` calls),
+(``timings["compute"]`` minus VTU), VTU writing (``femcam.io.write_fe_vtu`` calls),
 CSV/NPZ/PVD, and each plot (``femcam.viz.sweep``), the worst-angle surface plot separately
 (it re-solves one angle).
 """

@@ -226,6 +226,10 @@ CASES: dict[str, Case] = {
         lazy(lambda: dict(path=Path(tempfile.mkdtemp()) / "hertz.vtu", hc=_line_contact(), n=5)),
         {"n": INT_POS}, slow=True,
         fault_base=lazy(lambda: dict(path=Path("unused.vtu"), hc=None, n=5))),
+    "femcam.io.write_global_cam_vtu": Case(
+        None, {"F": POS, "theta": opt(REAL)}, slow=True,
+        fault_base=lazy(lambda: dict(path=Path("unused.vtu"), model=bare(object), C=[0.0, 0.02],
+                                     n=[0.0, 1.0], F=1000.0, theta=0.5))),
     # femcam.assess
     "femcam.assess.assess": Case(lazy(lambda: dict(scene=scene("seed002_assess"), theta=TH)),
                                  {"theta": opt(REAL)}),
@@ -716,7 +720,8 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.io.read_csv", "femcam.io.write_npz", "femcam.io.write_pvd",
         "femcam.io.write_vtu", "femcam.io.write_fe_vtu", "femcam.synthesis.study_columns",
         "femcam.io.header_dict", "femcam.io.meta_path", "femcam.io.read_meta", "femcam.io.write_rows",
-        "femcam.io.write_table")},
+        "femcam.io.write_table", "femcam.io.atomic_write_path", "femcam.io.write_arrays",
+        "femcam.io.write_ring_vtu", "femcam.io.write_cam_vtu", "femcam.io.write_msh")},
     "femcam.mesh.mesh_body": "takes an open gmsh session; its numbers are checked by body_layout",
     "femcam.scene.roller_support_problems": "the scene's support check (h4-scene's femcam/scene); the "
                                             "API entry with argument checks is bodies.bearing_problems",

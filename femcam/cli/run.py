@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import _validate
-from ..io import provenance, write_table
+from ..io import atomic_write_text, provenance, write_table
 from ..scene import load_scene
 from ..sweep.result import COLUMNS as SWEEP_COLUMNS
 from ..viz.analytic import plot_all
@@ -227,9 +227,9 @@ def _run(args) -> int:
               file=sys.stderr)
 
     files = [write_csv(out / "analytic.csv", scene, st, command)]
-    (out / "summary.txt").write_text("\n".join([f"scene: {scene.source_path}",
-                                                scene.program.table(omega=scene.omega),
-                                                "Summary:", *summ]) + "\n")
+    atomic_write_text(out / "summary.txt", "\n".join([f"scene: {scene.source_path}",
+                                                      scene.program.table(omega=scene.omega),
+                                                      "Summary:", *summ]) + "\n")
     files.append(out / "summary.txt")
     if not args.no_plots:
         files += plot_all(st, out, "", Rr=fo.Rr if fo.kind in ("roller", "oscillating_roller") else 0.0,

@@ -35,7 +35,7 @@ from .. import _validate
 from .._progress import Progress  # noqa: F401  (re-exported: femcam.sweep.Progress)
 from .._threads import limit_blas_threads
 from ..errors import InputError
-from ..io import atomic_write_bytes
+from ..io import TEMP_SUFFIX, atomic_write_bytes
 
 #: ``workers="auto"``: use processes only if they are expected to save at least this fraction
 AUTO_MIN_SAVING = 0.25
@@ -244,7 +244,7 @@ def _files_back(fn, task):
     with tempfile.TemporaryDirectory(prefix="femcam-chunk-") as tmp:
         rows = fn(dataclasses.replace(task, vtk_dir=tmp))
         files = {p.name: p.read_bytes() for p in sorted(Path(tmp).iterdir())
-                 if not p.name.endswith(".part.vtu")}
+                 if not p.name.endswith(TEMP_SUFFIX)}
     return rows, files
 
 

@@ -1,0 +1,108 @@
+"""One writer layer (docs/architecture.md, "Style numbers"): every file femcam writes (CSV, NPZ,
+VTU, MSH, JSON, text) goes through :mod:`femcam.io`; a writer anywhere else fails this test.
+
+The calls are read from the source with :mod:`ast` (no femcam import): ``meshio.write``,
+``numpy.save*``/``savetxt``/``tofile``, ``Path.write_text``/``write_bytes``, ``json.dump``/
+``pickle.dump`` to a file, ``csv.writer``, pandas ``to_csv``/``to_parquet``, ``open`` with a
+write/append/create mode and ``os.open`` with a write flag. Plots (``savefig``, pyvista
+``screenshot``) are drawn by :mod:`femcam.viz` and are not table/mesh writers.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+PKG = ROOT / "femcam"
+
+#: writer methods/functions by attribute name (``obj.<name>(...)``)
+WRITER_ATTRS = {"write_text", "write_bytes", "savez", "savez_compressed", "save", "savetxt",
+                "tofile", "to_csv", "to_parquet", "writer", "dump"}
+
+#: the writer calls allowed outside femcam/io, each with its reason:
+#: (module path, text in the call's source) -> why
+ALLOWED = {
+    ("femcam/cli/__init__.py", "os.devnull"): "the sink of --quiet and of a closed stdout, no file",
+    ("femcam/sweep/store.py", "os.open(self.path, os.O_RDWR | os.O_CREAT"): "the output folder's lock file (flock), no result",
+}
+
+
+def _call_name(node: ast.Call) -> str | None:
+    """The writer a call is, or None."""
+    f = node.func
+    if isinstance(f, ast.Name) and f.id == "open":
+        mode = node.args[1] if len(node.args) > 1 else next(
+            (k.value for k in node.keywords if k.arg == "mode"), None)
+        if isinstance(mode, ast.Constant) and isinstance(mode.value, str) \
+                and set(mode.value) & set("wax+"):
+            return "open"
+        return None
+    if not isinstance(f, ast.Attribute):
+        return None
+    base = f.value.id if isinstance(f.value, ast.Name) else ""
+    if f.attr == "write" and base == "meshio":
+        return "meshio.write"
+    if f.attr == "open" and base == "os":
+        flags = ast.unparse(node.args[1]) if len(node.args) > 1 else ""
+        return "os.open" if any(w in flags for w in ("O_WRONLY", "O_RDWR", "O_CREAT")) else None
+    if f.attr in ("dump", "writer") and base not in ("json", "pickle", "csv"):
+        return None   # e.g. a stream's own method of that name
+    if f.attr == "save" and base not in ("np", "numpy"):
+        return None   # e.g. viz._mpl.save (a plot)
+    return f"{base}.{f.attr}" if f.attr in WRITER_ATTRS else None
+
+
+def writers_outside_io(root: Path = ROOT) -> list[str]:
+    """Every writer call outside ``femcam/io`` not in :data:`ALLOWED`, as ``path:line call``.
+
+    Parameters
+    ----------
+    root : Path
+        The repository root.
+
+    Returns
+    -------
+    list of str
+        One entry per call.
+    """
+    out = []
+    for f in sorted((root / "femcam").rglob("*.py")):
+        rel = f.relative_to(root).as_posix()
+        if rel.startswith("femcam/io/"):
+            continue
+        for node in ast.walk(ast.parse(f.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Call) and (name := _call_name(node)):
+                text = ast.unparse(node)
+                if not any(rel == r and t in text for r, t in ALLOWED):
+                    out.append(f"{rel}:{node.lineno} {name}")
+    return out
+
+
+def test_no_writer_outside_io():
+    found = writers_outside_io()
+    assert not found, ("files are written through femcam.io only (atomic, one provenance layout, "
+                       "one write_vtu); found:\n" + "\n".join(found))
+
+
+def test_the_scan_finds_writers(tmp_path):
+    """The scan itself: each kind of writer in a module outside io is found, io is exempt."""
+    (tmp_path / "femcam" / "io").mkdir(parents=True)
+    (tmp_path / "femcam" / "fe").mkdir()
+    src = ("import json, meshio, numpy as np, os\n"
+           "def f(p, m, a, fo):\n"
+           "    meshio.write(p, m)\n"
+           "    np.savez(p, a=a)\n"
+           "    p.write_text('x')\n"
+           "    open(p, 'w')\n"
+           "    open(p, mode='ab')\n"
+           "    json.dump({}, fo)\n"
+           "    os.open(p, os.O_WRONLY | os.O_CREAT)\n"
+           "    open(p)\n"                      # reading: not a writer
+           "    json.dumps({})\n")              # text, not a file: not a writer
+    (tmp_path / "femcam" / "fe" / "bad.py").write_text(src)
+    (tmp_path / "femcam" / "io" / "ok.py").write_text(src)
+    found = writers_outside_io(tmp_path)
+    assert [s.split()[1] for s in found] == ["meshio.write", "np.savez", "p.write_text", "open",
+                                             "open", "json.dump", "os.open"], found
+    assert all(s.startswith("femcam/fe/bad.py:") for s in found)
