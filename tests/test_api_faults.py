@@ -36,6 +36,7 @@ import pytest
 
 import femcam
 from femcam.errors import FemcamError
+from femcam.sweep import run_tasks as _sweep_run_tasks
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 
@@ -470,7 +471,7 @@ CASES: dict[str, Case] = {
     "femcam.sweep.ModelCache": Case(kw(max_models=4), {"max_models": INT_POS}),
     "femcam.sweep.Progress": Case(kw(total=10, enabled=False), {"total": INT_NONNEG,
                                                                "delay_s": NONNEG}),
-    "femcam.sweep.SweepOptions": Case(kw(), {"a_over_h": POS, "tolerance": POS,
+    "femcam.SweepOptions": Case(kw(), {"a_over_h": POS, "tolerance": POS,
                                              "chunk_size": INT_POS, "vtk_every": INT_NONNEG}),
     "femcam.sweep.auto_workers": Case(kw(n_tasks=4, n_solves=100, t_solve=0.01, n_families=2,
                                          t_build=1.0, cpus=2),
@@ -483,8 +484,8 @@ CASES: dict[str, Case] = {
                           contact=np.ones(12, bool))),
         {"F": NONNEG, "rho": RADIUS, "tolerance": POS}),
     "femcam.sweep.run_tasks": Case(kw(fn=abs, tasks=[-1, 2], workers=1), {"workers": opt(INT_POS)},
-                                   call=lambda *a, **k: list(femcam.sweep.run_tasks(*a, **k))),
-    "femcam.sweep.sweep": Case(lazy(lambda: dict(scene=scene(), angles=TH[:2], method="hertz")),
+                                   call=lambda *a, **k: list(_sweep_run_tasks(*a, **k))),
+    "femcam.sweep": Case(lazy(lambda: dict(scene=scene(), angles=TH[:2], method="hertz")),
                                {"a_over_h": POS, "tolerance": POS, "chunk_size": INT_POS,
                                 "angles": opt(REAL)}, slow=True),
     "femcam.sweep.verify_families": Case(
@@ -699,8 +700,8 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.optimise.OptimiseResult", "femcam.optimise.StartRecord", "femcam.optimise.FECheck",
         "femcam.study.StudyResult",
         "femcam.profile.BaseRadiusResult", "femcam.profile.ArmGeometry", "femcam.profile.CamProfile",
-        "femcam.scene.Scene",
-        "femcam.scene.SceneState", "femcam.sweep.SweepResult",
+        "femcam.Scene",
+        "femcam.scene.SceneState", "femcam.SweepResult",
         "femcam.synthesis.SynthesisResult", "femcam.synthesis.Comparison",
         "femcam.synthesis.StudyRow", "femcam.wear.ConvergenceTable", "femcam.wear.EvolutionCase",
         "femcam.wear.EvolutionResult", "femcam.wear.WearMap", "femcam.wear.Seed000Table",
@@ -728,7 +729,7 @@ NOT_AN_INPUT: dict[str, str] = {
     "femcam.mesh.gmsh_session": "a context manager named by a string",
     "femcam.optimise.Design": "the map from a design vector to a scene variant; built by optimise "
                               "from checked Variables and a BezierRise",
-    "femcam.scene.load_scene": "reads a file; scene faults are tests/test_scene*.py (h4-scene)",
+    "femcam.load_scene": "reads a file; scene faults are tests/test_scene*.py (h4-scene)",
     "femcam.scene.study_problem": "returns the problem text of one [fe]/[sweep] value",
     "femcam.scene.wear_table": "the scene loader's [wear] table reader (scene faults)",
     "femcam.sweep.default_cache": "no arguments",

@@ -24,7 +24,8 @@ WRITER_ATTRS = {"write_text", "write_bytes", "savez", "savez_compressed", "save"
 #: (module path, text in the call's source) -> why
 ALLOWED = {
     ("femcam/cli/__init__.py", "os.devnull"): "the sink of --quiet and of a closed stdout, no file",
-    ("femcam/sweep/store.py", "os.open(self.path, os.O_RDWR | os.O_CREAT"): "the output folder's lock file (flock), no result",
+    ("femcam/sweep/store.py", "os.open(self.path, os.O_RDWR | os.O_CREAT"):
+        "the output folder's lock file (flock), no result",
 }
 
 

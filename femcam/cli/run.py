@@ -19,7 +19,7 @@ import numpy as np
 from .. import _validate
 from ..io import atomic_write_text, provenance, write_table
 from ..scene import load_scene
-from ..sweep.result import COLUMNS as SWEEP_COLUMNS
+from ..sweep.table import COLUMNS as SWEEP_COLUMNS
 from ..viz.analytic import plot_all
 from ._common import (
     add_law_override,
@@ -34,7 +34,7 @@ from ._common import (
 from ._flags import RANGE_RULE, Range, add_number
 
 #: the analytic chain's columns, named and scaled as in the sweep table (one copy of each
-#: column's unit: :data:`femcam.sweep.result.COLUMNS`)
+#: column's unit: :data:`femcam.sweep.table.COLUMNS`)
 _ANALYTIC = ("theta", "s", "v", "a", "j", "phi", "rho", "Fc")
 _SWEEP_COLUMNS = {si: (name, f) for si, name, f in SWEEP_COLUMNS}
 

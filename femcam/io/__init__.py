@@ -4,7 +4,7 @@ meshes, and the atomic file writes they all go through. Every file femcam writes
 
 This package knows no sweep: a table is a dict of arrays written through a column list
 ``[(internal SI name, CSV column name, factor SI -> CSV unit), ...]`` that the caller owns
-(:data:`femcam.sweep.result.COLUMNS` for a sweep), so the writers sit below the sweep in the
+(:data:`femcam.sweep.table.COLUMNS` for a sweep), so the writers sit below the sweep in the
 layer order (docs/architecture.md).
 
 * CSV (:func:`write_csv`, :func:`write_table`): line 1 holds the column names, whose names carry

@@ -32,7 +32,6 @@ from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
 from .. import _validate
-from .._progress import Progress  # noqa: F401  (re-exported: femcam.sweep.Progress)
 from .._threads import limit_blas_threads
 from ..errors import InputError
 from ..io import TEMP_SUFFIX, atomic_write_bytes
@@ -64,7 +63,7 @@ def auto_workers(n_tasks: int, n_solves: int, t_solve: float, n_families: int, t
     The chunks' work is ``n_solves`` contact solves of ``t_solve`` each, plus ``t_other`` s of
     other work (writing the ``.vtu`` files): the family models are
     built and verified before the chunks run, in this process, and the verification already
-    solves up to :data:`~femcam.sweep.families.MAX_SCAN` load cases per family (cached; forked
+    solves up to :data:`~femcam.sweep.verify.MAX_SCAN` load cases per family (cached; forked
     workers inherit models and results, spawned ones rebuild the ``n_families`` models at
     ``t_build`` each). Processes are used only when they are expected to save at least
     :data:`AUTO_MIN_SAVING` of that time after the pool's fixed cost

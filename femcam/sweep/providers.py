@@ -31,8 +31,8 @@ from ..layers import scene_layer_rows
 from ..wear.coating import coating_wear
 from ..wear.map import wear_depth_per_angle
 from .cache import default_cache
-from .families import hertz_half_width
 from .options import contact_params
+from .plan import hertz_half_width
 
 #: angles of the revolution on which per-process models are graded (independent of chunking)
 _GRID = np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False)

@@ -33,7 +33,7 @@ except ImportError:  # pragma: no cover - Windows: no directory lock
 
 from ..errors import InputError
 from ..io import atomic_write_text, write_arrays
-from .result import NUMERIC, TEXT_COLUMNS, extra_keys
+from .table import NUMERIC, TEXT_COLUMNS, extra_keys
 
 MANIFEST = "manifest.json"
 PLAN = "plan.json"
