@@ -39,7 +39,7 @@ Modules: :mod:`~femcam.mesh.options` (inputs and result objects), :mod:`~femcam.
 (the gmsh session and its lock), :mod:`~femcam.mesh.geometry` (exact arc, body layout, outline,
 size field), :mod:`~femcam.mesh.nodes` (node extraction, snapping, mirroring),
 :mod:`~femcam.mesh.coating` (the coating band) and :mod:`~femcam.mesh.build` (one body, both
-bodies). Everything importable from ``femcam.mesh`` before the split still is.
+bodies).
 """
 
 from __future__ import annotations

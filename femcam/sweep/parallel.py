@@ -67,10 +67,9 @@ def auto_workers(n_tasks: int, n_solves: int, t_solve: float, n_families: int, t
     workers inherit models and results, spawned ones rebuild the ``n_families`` models at
     ``t_build`` each). Processes are used only when they are expected to save at least
     :data:`AUTO_MIN_SAVING` of that time after the pool's fixed cost
-    :data:`AUTO_POOL_OVERHEAD_S`. For the seed 002 study model (360 angles, ~1 ms per solve,
-    200 of them solved during the verification) serial wins, also with the CLI's default 36
-    ``.vtu`` files now that one takes ~15 ms (whole process 5.4-5.9 s with --workers 1 and
-    5.4-5.6 s with 2, load ~2). Processes pay for long angle lists, fine meshes (slower
+    :data:`AUTO_POOL_OVERHEAD_S`. For the seed 002 study model (360 angles, 200 of them solved
+    during the verification) serial wins, also with the CLI's default 36 ``.vtu`` files
+    (docs/performance.md). Processes pay for long angle lists, fine meshes (slower
     solves), many VTU files and resumed sweeps, which solve everything in the chunks.
 
     Parameters

@@ -11,7 +11,7 @@ that answers each angle, and the three followers (:mod:`femcam.fe.choice`, docs/
   on a uniform revolution, :func:`femcam.fe.choice.mechanism_Q`), solved as Coulomb partial slip;
   knife-edge and flat-faced followers slide fully in the direction of the sliding velocity
   (:func:`femcam.fe.followers.sliding_sign`). The scene's ``[contact] sliding`` is an explicit
-  override: full sliding in that fixed direction (the behaviour before the mechanism was used).
+  override: full sliding in that fixed direction.
 * **Model per angle** (:func:`arc_error_estimate`): the error of the osculating-arc gap is
   estimated without building the exact gap from the curvature gradient along the cam surface,
   ``kappa_1 = d kappa / d s``: the cam surface departs from its osculating circle by
