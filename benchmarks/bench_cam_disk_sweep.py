@@ -70,10 +70,10 @@ def run(label: str, extra: str, angles: str, tmp: Path) -> dict:
 
 def vtu_time(n: int = 10) -> float:
     """Mean time (s) of one global-model VTU of the example (model built first, not timed)."""
-    from femcam.io import write_global_cam_vtu
     from femcam.bodies.cam_geometry import contact_frame
     from femcam.bodies.cam_global import CamGlobalModel
     from femcam.bodies.cam_rows import disk_from_scene
+    from femcam.io import write_global_cam_vtu
     from femcam.scene import load_scene
 
     sc = load_scene(EXAMPLE)

@@ -24,9 +24,9 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from femcam.bodies import solve_ring  # noqa: E402
-from femcam.io import write_ring_vtu  # noqa: E402
 from femcam.bodies.rows import build_for  # noqa: E402
 from femcam.bodies.study import wall_study  # noqa: E402
+from femcam.io import write_ring_vtu  # noqa: E402
 from femcam.scene import load_scene  # noqa: E402
 from femcam.viz.bodies import plot_hoop, plot_wall_study  # noqa: E402
 
