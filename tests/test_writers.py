@@ -120,3 +120,25 @@ def test_no_compat_alias_comes_back():
 
     left = compat_aliases(ROOT)
     assert all(a.endswith("deprecated scene key") for a in left), left
+
+
+def test_a_failed_vtu_write_leaves_the_old_file_and_no_temp_file(tmp_path):
+    """Atomic (temp file + os.replace): a meshio error mid-write keeps the previous file byte
+    for byte and removes the temp file; the file read back has the points and data written."""
+    import meshio
+    import numpy as np
+    import pytest
+
+    from femcam.io import TEMP_SUFFIX, write_vtu
+
+    pts = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])
+    path = write_vtu(tmp_path / "sub" / "t.vtu", pts, [("triangle", np.array([[0, 1, 2]]))],
+                     {"p_Pa": np.array([1.0, 2.0, 3.0])}, field_data={"theta_deg": 12.5})
+    before = path.read_bytes()
+    m = meshio.read(path)
+    np.testing.assert_array_equal(m.points[:, :2], pts)
+    np.testing.assert_array_equal(m.point_data["p_Pa"], [1.0, 2.0, 3.0])
+    with pytest.raises(Exception):  # noqa: B017, PT011 - meshio's own error for a bad cell block
+        write_vtu(path, pts, [("triangle", np.array([[0, 1]]))], {"p_Pa": np.zeros(3)})
+    assert path.read_bytes() == before
+    assert not [p for p in path.parent.iterdir() if p.name.endswith(TEMP_SUFFIX)]
