@@ -70,21 +70,21 @@ def run(label: str, extra: str, angles: str, tmp: Path) -> dict:
 
 def vtu_time(n: int = 10) -> float:
     """Mean time (s) of one global-model VTU of the example (model built first, not timed)."""
-    from femcam.bodies.cam_export import write_global_cam_vtu
     from femcam.bodies.cam_geometry import contact_frame
     from femcam.bodies.cam_global import CamGlobalModel
     from femcam.bodies.cam_rows import disk_from_scene
+    from femcam.io import write_global_cam_vtu
     from femcam.scene import load_scene
 
     sc = load_scene(EXAMPLE)
     g = CamGlobalModel.build(disk=disk_from_scene(sc), length=sc.length, plane=sc.plane)
     with tempfile.TemporaryDirectory() as d:
         C, nn, _, F = contact_frame(sc, 0.0)
-        write_global_cam_vtu(g, C, nn, F, Path(d) / "w.vtu")  # builds the cached stress operator
+        write_global_cam_vtu(Path(d) / "w.vtu", g, C, nn, F)  # builds the cached stress operator
         t0 = time.perf_counter()
         for k in range(n):
             C, nn, _, F = contact_frame(sc, 0.6 * k)
-            write_global_cam_vtu(g, C, nn, F, Path(d) / f"{k}.vtu")
+            write_global_cam_vtu(Path(d) / f"{k}.vtu", g, C, nn, F)
         return (time.perf_counter() - t0) / n
 
 

@@ -20,7 +20,7 @@ Breakdown (one extra run of the default job in a driver process, ``--workers 1``
 phase runs in that process and can be timed): interpreter start, imports (femcam.cli and the
 heavy libraries the sweep imports lazily: scikit-fem, gmsh, meshio, matplotlib), scene,
 analytic chain, families + verification (``SweepResult.timings["verify"]``), chunk solves
-(``timings["compute"]`` minus VTU), VTU writing (``femcam.fe.export.write_vtu`` calls),
+(``timings["compute"]`` minus VTU), VTU writing (``femcam.io.write_fe_vtu`` calls),
 CSV/NPZ/PVD, and each plot (``femcam.viz.sweep``), the worst-angle surface plot separately
 (it re-solves one angle).
 """
@@ -51,7 +51,9 @@ T = {}
 t = time.perf_counter(); import femcam.cli; T["import femcam.cli"] = time.perf_counter() - t
 for mod in ("skfem", "gmsh", "meshio", "matplotlib.pyplot", "femcam.fe", "femcam.sweep"):
     t = time.perf_counter(); __import__(mod); T["import " + mod] = time.perf_counter() - t
-import femcam.scene, femcam.sweep, femcam.sweep.run, femcam.fe.export, femcam.viz.sweep as vs
+import importlib, femcam.scene, femcam.viz.sweep as vs
+from femcam.sweep import pipeline as sw_pipeline, run as sw_run
+sw = importlib.import_module("femcam.sweep")  # the package (femcam.sweep is the function)
 
 C = {}  # CPU seconds of this process (time.process_time) per phase: robust to the load
 
@@ -69,22 +71,21 @@ def timed(mod, name, key, acc=False):
     setattr(mod, name, w)
 
 timed(femcam.scene, "load_scene", "scene")
-import femcam.sweep.pipeline
-timed(femcam.sweep.pipeline, "write_fe_vtu", "VTU", acc=True)
-import femcam.io
-timed(femcam.io, "scene_arrays", "VTU fields (full_field of both bodies)", acc=True)  # as io calls it
-timed(femcam.sweep.run, "write_outputs", "outputs (CSV, NPZ, PVD, plots)")
+timed(sw_pipeline, "write_fe_vtu", "VTU", acc=True)
+import femcam.io.fields
+timed(femcam.io.fields, "scene_arrays", "VTU fields (full_field of both bodies)", acc=True)  # as io calls it
+timed(sw_run, "write_outputs", "outputs (CSV, NPZ, PVD, plots)")
 for name in ("plot_p0", "plot_maxima", "plot_svaj_loads", "plot_wear", "plot_surface_worst"):
     timed(vs, name, "plot " + name[5:])
 res = {}
-f = femcam.sweep.sweep
+f = sw.sweep
 def sweep(*a, **k):
     r = f(*a, **k)
     res["timings"] = dict(r.timings)
     return r
-femcam.sweep.sweep = sweep
-timed(femcam.sweep.run, "verify_families", "verify", acc=True)
-timed(femcam.sweep.run, "run_chunk", "compute", acc=True)  # --workers 1: chunks run here
+sw.sweep = sweep
+timed(sw_run, "verify_families", "verify", acc=True)
+timed(sw_run, "run_chunk", "compute", acc=True)  # --workers 1: chunks run here
 C["imports"] = time.process_time()
 t = time.perf_counter()
 rc = femcam.cli.main(sys.argv[1:])

@@ -160,8 +160,8 @@ def naive(scene, theta, a_over_h=10.0):
     """Fresh model per angle (exact rho and Hertz a), timed per angle; the tangential traction is
     the sweep's (the mechanism's Q, partial slip), so the reuse error compares like with like."""
     from femcam.sweep.cache import build_model
-    from femcam.sweep.families import hertz_half_width
     from femcam.sweep.options import SweepOptions, contact_params
+    from femcam.sweep.plan import hertz_half_width
     from femcam.sweep.realcam import scene_traction, traction_args
 
     cp = contact_params(scene)

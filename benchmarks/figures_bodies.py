@@ -24,9 +24,9 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from femcam.bodies import solve_ring  # noqa: E402
-from femcam.bodies.export import write_ring_vtu  # noqa: E402
 from femcam.bodies.rows import build_for  # noqa: E402
 from femcam.bodies.study import wall_study  # noqa: E402
+from femcam.io import write_ring_vtu  # noqa: E402
 from femcam.scene import load_scene  # noqa: E402
 from femcam.viz.bodies import plot_hoop, plot_wall_study  # noqa: E402
 
@@ -45,7 +45,7 @@ def main() -> int:
     print(f"needle roller, load between needles: bore hoop max {r.hoop_max / 1e6:.1f} MPa at "
           f"{math.degrees(r.hoop_theta) + 90:.1f} deg from the load line; Q_max {r.needle_Q_max:.0f} N")
     with tempfile.TemporaryDirectory() as d:
-        vtu = write_ring_vtu(m, r, Path(d) / "ring.vtu")
+        vtu = write_ring_vtu(Path(d) / "ring.vtu", m, r)
         lim = 1.2 * r.hoop_max / 1e6
         plot_hoop(vtu, img / "bodies_hoop.png", clim=(-lim, lim))
     walls = np.array([1.5, 2.0, 2.5, 3.0, 4.0, 5.0]) * 1e-3

@@ -26,9 +26,9 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from femcam.bodies.cam_export import write_cam_vtu  # noqa: E402
 from femcam.bodies.cam_rows import disk_from_scene  # noqa: E402
 from femcam.bodies.cam_study import peak_angle, refined_at, web_study  # noqa: E402
+from femcam.io import write_cam_vtu  # noqa: E402
 from femcam.scene import load_scene  # noqa: E402
 
 BORES_MM = (2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 8.5)
@@ -110,7 +110,7 @@ def main() -> int:
     disk = disk_from_scene(sc)
     m, res = refined_at(sc, disk, peak_angle(sc))
     with tempfile.TemporaryDirectory() as tmp:
-        vtu = write_cam_vtu(m, res, Path(tmp) / "cam_disk.vtu")
+        vtu = write_cam_vtu(Path(tmp) / "cam_disk.vtu", m, res)
         print("wrote", plot_cam_hoop(vtu, img / "cam_disk_hoop.png"))
     print(f"load average after {os.getloadavg()}")
     return 0

@@ -25,6 +25,7 @@ import numpy as np
 
 from femcam.fe import MeshOptions, solve_contact
 from femcam.hertz import LineContact
+from femcam.io import write_fe_vtu
 from femcam.materials import STEEL
 
 F, rho, Rr, length, mu = 1500.0, 0.020, 0.010, 0.010, 0.1   # N, m, m, m, -
@@ -88,7 +89,7 @@ for ax, span in zip(axes, (None, 4.0 * hc.a), strict=True):
 # The full field goes to a VTU file for ParaView or pyvista; the output directory is
 # ``FEMCAM_EXAMPLE_OUT`` when set, otherwise a temporary one.
 out = Path(os.environ.get("FEMCAM_EXAMPLE_OUT") or tempfile.mkdtemp(prefix="femcam_"))
-r.to_vtu(out / "contact.vtu")
+write_fe_vtu(out / "contact.vtu", r)
 print(f"wrote {out / 'contact.vtu'}")
 
 plt.show()

@@ -17,6 +17,7 @@ import importlib  # noqa: E402  (femcam.sweep on first use: __getattr__ below)
 
 __version__ = "0.1.0"
 
+from . import sweep
 from .errors import (
     ConvergenceError,
     FemcamError,
@@ -28,6 +29,12 @@ from .errors import (
     UndercutError,
 )
 from .materials import STEEL, Material, effective_modulus
+
+# ``femcam.sweep`` is the sweep function, not the package of the same name: the (light) package
+# is imported above, so that importing it later cannot rebind the name, and the binding that
+# import made is removed here; ``__getattr__`` below gives the function on first use. The
+# package's modules are imported by name (``from femcam.sweep.table import COLUMNS``).
+del sweep
 
 __all__ = [
     "__version__",
@@ -42,13 +49,26 @@ __all__ = [
     "Material",
     "STEEL",
     "effective_modulus",
+    "Scene",
+    "SweepOptions",
+    "SweepResult",
+    "load_scene",
     "sweep",
 ]
 
 
+#: the top-level names that load their package on first use: name -> module
+_LAZY = {"sweep": "femcam.sweep.run", "SweepOptions": "femcam.sweep.options",
+         "SweepResult": "femcam.sweep.result", "load_scene": "femcam.scene",
+         "Scene": "femcam.scene"}
+
+
 def __getattr__(name):
-    """``femcam.sweep`` (a callable package) on first use: ``import femcam`` and
-    ``femcam --version`` stay free of scipy's solvers and the scene machinery (PEP 562)."""
-    if name == "sweep":
-        return importlib.import_module(".sweep", __name__)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    """``sweep``, ``SweepOptions``, ``SweepResult``, ``load_scene``, ``Scene`` on first use:
+    ``import femcam`` and ``femcam --version`` stay free of scipy's solvers and the scene
+    machinery (PEP 562)."""
+    if name not in _LAZY:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(_LAZY[name]), name)
+    globals()[name] = value
+    return value

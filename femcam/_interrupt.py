@@ -20,8 +20,7 @@ Two phases, because what an interruption may leave behind differs:
 Built on the C module ``_signal`` (and ``os``/``sys``, loaded with the interpreter): importing
 ``signal`` would first import ``enum`` and ``functools``, tens of milliseconds in which a
 Ctrl-C would still be a traceback. What remains uncovered is the interpreter's own start-up
-before the first statement of ``femcam/__init__.py`` (~20-30 ms), where Python's default
-applies.
+before the first statement of ``femcam/__init__.py``, where Python's default applies.
 """
 
 from __future__ import annotations

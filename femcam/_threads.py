@@ -7,9 +7,8 @@ wheels ship ``scipy_openblas``); with another BLAS, or off Linux, these are no-o
 
 Why one thread: SuperLU's multi-right-hand-side triangular solves (the FE condensation) and the
 worker processes of a sweep call BLAS on small blocks; several BLAS threads per process on a
-shared 2-core machine busy-wait against each other and against other processes (measured: the
-FE condensation at a/h = 20 took 5-8 s with the default threads vs 0.9-1.9 s with one, load
-average ~2; see docs/fe.md). A threaded BLAS may also sum in a different order, so results
+shared 2-core machine busy-wait against each other and against other processes (the
+measurement is in docs/performance.md). A threaded BLAS may also sum in a different order, so results
 would depend on the executor in the last bits.
 
 >>> from femcam._threads import single_threaded_blas
@@ -33,9 +32,9 @@ _found: tuple = (-1, [])  # (len(sys.modules) at the last scan, its libraries)
 def _blas_libs():
     """ctypes handles ``(get, set)`` of the OpenBLAS builds loaded in this process (Linux only).
 
-    The scan of ``/proc/self/maps`` (~3 ms with scipy loaded) is redone only when a module was
-    imported since the last one (a new OpenBLAS comes with a new extension module): every
-    ``Body.solve`` enters :class:`single_threaded_blas`, 0.2 s over README command 1's VTU files.
+    The scan of ``/proc/self/maps`` is redone only when a module was imported since the last
+    one (a new OpenBLAS comes with a new extension module), because every ``Body.solve`` enters
+    :class:`single_threaded_blas`.
     """
     global _found
     if _found[0] != len(sys.modules):
@@ -98,8 +97,8 @@ def limit_blas_threads(n: int = 1) -> list[int]:
     """Best effort: set the thread count of every loaded OpenBLAS; returns the previous counts.
 
     Why: (1) worker processes forked from a parent inherit its BLAS thread pool (one thread per
-    core), and N workers x N BLAS threads on N cores busy-wait against each other (measured 2-4x
-    slower on 2 cores); (2) a threaded BLAS may sum in a different order, so results would
+    core), and N workers x N BLAS threads on N cores busy-wait against each other; (2) a
+    threaded BLAS may sum in a different order, so results would
     depend on the executor in the last bits. Environment variables are read only when the
     library loads, so the running library is told directly (the calls threadpoolctl makes).
     """

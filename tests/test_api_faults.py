@@ -36,6 +36,7 @@ import pytest
 
 import femcam
 from femcam.errors import FemcamError
+from femcam.sweep import run_tasks as _sweep_run_tasks
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 
@@ -226,6 +227,10 @@ CASES: dict[str, Case] = {
         lazy(lambda: dict(path=Path(tempfile.mkdtemp()) / "hertz.vtu", hc=_line_contact(), n=5)),
         {"n": INT_POS}, slow=True,
         fault_base=lazy(lambda: dict(path=Path("unused.vtu"), hc=None, n=5))),
+    "femcam.io.write_global_cam_vtu": Case(
+        None, {"F": POS, "theta": opt(REAL)}, slow=True,
+        fault_base=lazy(lambda: dict(path=Path("unused.vtu"), model=bare(object), C=[0.0, 0.02],
+                                     n=[0.0, 1.0], F=1000.0, theta=0.5))),
     # femcam.assess
     "femcam.assess.assess": Case(lazy(lambda: dict(scene=scene("seed002_assess"), theta=TH)),
                                  {"theta": opt(REAL)}),
@@ -479,7 +484,7 @@ CASES: dict[str, Case] = {
     "femcam.sweep.ModelCache": Case(kw(max_models=4), {"max_models": INT_POS}),
     "femcam.sweep.Progress": Case(kw(total=10, enabled=False), {"total": INT_NONNEG,
                                                                "delay_s": NONNEG}),
-    "femcam.sweep.SweepOptions": Case(kw(), {"a_over_h": POS, "tolerance": POS,
+    "femcam.SweepOptions": Case(kw(), {"a_over_h": POS, "tolerance": POS,
                                              "chunk_size": INT_POS, "vtk_every": INT_NONNEG}),
     "femcam.sweep.auto_workers": Case(kw(n_tasks=4, n_solves=100, t_solve=0.01, n_families=2,
                                          t_build=1.0, cpus=2),
@@ -492,8 +497,8 @@ CASES: dict[str, Case] = {
                           contact=np.ones(12, bool))),
         {"F": NONNEG, "rho": RADIUS, "tolerance": POS}),
     "femcam.sweep.run_tasks": Case(kw(fn=abs, tasks=[-1, 2], workers=1), {"workers": opt(INT_POS)},
-                                   call=lambda *a, **k: list(femcam.sweep.run_tasks(*a, **k))),
-    "femcam.sweep.sweep": Case(lazy(lambda: dict(scene=scene(), angles=TH[:2], method="hertz")),
+                                   call=lambda *a, **k: list(_sweep_run_tasks(*a, **k))),
+    "femcam.sweep": Case(lazy(lambda: dict(scene=scene(), angles=TH[:2], method="hertz")),
                                {"a_over_h": POS, "tolerance": POS, "chunk_size": INT_POS,
                                 "angles": opt(REAL)}, slow=True),
     "femcam.sweep.verify_families": Case(
@@ -709,8 +714,8 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.study.StudyResult",
         "femcam.profile.BaseRadiusResult", "femcam.profile.ArmGeometry", "femcam.profile.CamProfile",
         "femcam.profile.PadSpeeds",
-        "femcam.scene.Scene",
-        "femcam.scene.SceneState", "femcam.sweep.SweepResult",
+        "femcam.Scene",
+        "femcam.scene.SceneState", "femcam.SweepResult",
         "femcam.synthesis.SynthesisResult", "femcam.synthesis.Comparison",
         "femcam.synthesis.StudyRow", "femcam.wear.ConvergenceTable", "femcam.wear.EvolutionCase",
         "femcam.wear.EvolutionResult", "femcam.wear.WearMap", "femcam.wear.Seed000Table",
@@ -730,14 +735,15 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.io.read_csv", "femcam.io.write_npz", "femcam.io.write_pvd",
         "femcam.io.write_vtu", "femcam.io.write_fe_vtu", "femcam.synthesis.study_columns",
         "femcam.io.header_dict", "femcam.io.meta_path", "femcam.io.read_meta", "femcam.io.write_rows",
-        "femcam.io.write_table")},
+        "femcam.io.write_table", "femcam.io.atomic_write_path", "femcam.io.write_arrays",
+        "femcam.io.write_ring_vtu", "femcam.io.write_cam_vtu", "femcam.io.write_msh")},
     "femcam.mesh.mesh_body": "takes an open gmsh session; its numbers are checked by body_layout",
     "femcam.scene.roller_support_problems": "the scene's support check (h4-scene's femcam/scene); the "
                                             "API entry with argument checks is bodies.bearing_problems",
     "femcam.mesh.gmsh_session": "a context manager named by a string",
     "femcam.optimise.Design": "the map from a design vector to a scene variant; built by optimise "
                               "from checked Variables and a BezierRise",
-    "femcam.scene.load_scene": "reads a file; scene faults are tests/test_scene*.py (h4-scene)",
+    "femcam.load_scene": "reads a file; scene faults are tests/test_scene*.py (h4-scene)",
     "femcam.scene.study_problem": "returns the problem text of one [fe]/[sweep] value",
     "femcam.scene.wear_table": "the scene loader's [wear] table reader (scene faults)",
     "femcam.sweep.default_cache": "no arguments",

@@ -81,6 +81,12 @@ def test_sweep_checks_the_local_body_once_and_writes_the_cam_body_vtu(tmp_path, 
         er = xy / np.hypot(xy[:, 0], xy[:, 1])[:, None]
         resultant = np.hypot(*(p[:, None] * er).sum(axis=0)) * 2 * math.pi * 6e-3 / on.sum()
         assert resultant == pytest.approx(float(row["Fc_N"]) / sc.length, rel=0.005)
+        # the field data (angle, force) is in the file (femcam.io.write_vtu inserts the FieldData
+        # that meshio's VTU writer drops): the row's own values
+        pv = pytest.importorskip("pyvista")
+        fd = pv.read(out / "vtk" / name).field_data
+        assert float(fd["theta_deg"][0]) == pytest.approx(deg, abs=1e-9)
+        assert float(fd["Fc_N"][0]) == pytest.approx(float(row["Fc_N"]), rel=1e-9)
 
 
 @pytest.mark.slow

@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 
 from femcam.bodies import RingMeshOptions, RingModel, RollerBearing, solve_ring
-from femcam.bodies.export import write_ring_vtu
+from femcam.io import write_ring_vtu
 from femcam.materials import STEEL
 from femcam.mesh import MeshOptions
 
@@ -27,7 +27,7 @@ def test_ring_vtu_round_trip_carries_the_bore_stress(tmp_path):
     r = solve_ring(m, F=1500.0, rho=0.02)
     back = pickle.loads(pickle.dumps(r))  # results cross process boundaries (no solver inside)
     np.testing.assert_array_equal(back.hoop, r.hoop)
-    path = write_ring_vtu(m, r, tmp_path / "ring.vtu")
+    path = write_ring_vtu(tmp_path / "ring.vtu", m, r)
     mesh = meshio.read(path)
     assert set(np.unique(mesh.cell_data["body"][0])) == {0, 1, 2}
     ring = m.bodies["ring"]

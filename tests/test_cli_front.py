@@ -8,7 +8,10 @@ import pytest
 
 from femcam.cli import SUBCOMMANDS, build_parser
 
-HEAVY = ("gmsh", "skfem", "pyvista", "matplotlib", "scipy.sparse.linalg", "dask", "femcam.sweep")
+#: ``femcam.sweep.run``, the sweep's orchestrator (and everything it imports); the package
+#: ``femcam.sweep`` itself imports nothing until a name is used (``import femcam`` loads it)
+HEAVY = ("gmsh", "skfem", "pyvista", "matplotlib", "scipy.sparse.linalg", "dask", "femcam.sweep.run",
+         "femcam.sweep.pipeline")
 
 PROBE = (
     "import sys\n"

@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 from femcam.fe import MeshOptions, solve_contact
+from femcam.io import write_fe_vtu
 from femcam.materials import STEEL
 
 
@@ -14,7 +15,7 @@ def result():
 
 def test_vtu_roundtrip(result, tmp_path):
     pv = pytest.importorskip("pyvista")
-    path = result.to_vtu(tmp_path / "scene.vtu")
+    path = write_fe_vtu(tmp_path / "scene.vtu", result)
     grid = pv.read(path)
     for name in ("displacement_m", "stress_Pa", "tau1_Pa", "von_mises_Pa", "contact_pressure_Pa"):
         assert name in grid.point_data, name

@@ -23,6 +23,7 @@ import pytest
 
 from femcam.fe import ContactModel, MeshOptions, SolverOptions
 from femcam.fe.traction import solve_partial_slip
+from femcam.io import write_fe_vtu
 from femcam.materials import STEEL, Material, effective_modulus
 
 Rr, rho, F, l, mu = 0.01, 0.02, 1500.0, 0.01, 0.3
@@ -173,7 +174,7 @@ def test_partial_slip_stresses_and_vtu(model, tmp_path):
     ins = np.abs(xs) <= r.x[-1]
     e2 = (fld["txz"][k][ins] + np.interp(xs[ins], r.x, r.q)) / (mu * P0)
     assert float(np.sqrt(np.mean(e2**2))) < 3e-2, "full field carries the partial-slip traction"
-    m = meshio.read(r.to_vtu(tmp_path / "slip.vtu"))
+    m = meshio.read(write_fe_vtu(tmp_path / "slip.vtu", r))
     ct = m.point_data["contact_traction_Pa"]
     assert ct.max() == pytest.approx(float(r.q.max()), rel=1e-6)
     assert ct.min() == pytest.approx(-float(r.q.max()), rel=1e-6), "the roller carries -q"

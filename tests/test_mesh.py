@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from femcam.errors import InputError
+from femcam.io import write_msh
 from femcam.mesh import MeshOptions, build_contact_mesh, surface_height
 
 Rr, a_ref = 0.01, 1e-4
@@ -186,7 +187,7 @@ def test_physical_groups_and_quality(rho, tmp_path):
         lo, hi = min_max_angles(b)
         assert lo > 20.0 and hi < 130.0, f"{b.name}: triangle angles {lo:.1f}-{hi:.1f} deg"
     # the same groups read back by gmsh from the written .msh
-    path = m.write_msh(tmp_path / "contact.msh")
+    path = write_msh(tmp_path / "contact.msh", m)
     gmsh.initialize(["-nopopup"], readConfigFiles=False)
     try:
         gmsh.option.setNumber("General.Terminal", 0)
@@ -204,9 +205,9 @@ def test_physical_groups_and_quality(rho, tmp_path):
 def test_write_msh_bad_path(cm, tmp_path):
     """write_msh names the parameter and value: a path not ending in .msh, or not a path."""
     with pytest.raises(InputError, match=r"path = .*contact\.vtu.*must end in \.msh"):
-        cm.write_msh(tmp_path / "contact.vtu")
+        write_msh(tmp_path / "contact.vtu", cm)
     with pytest.raises(InputError, match=r"path = None: must be a file path"):
-        cm.write_msh(None)
+        write_msh(None, cm)
     assert not (tmp_path / "contact.vtu").exists()
 
 

@@ -57,7 +57,7 @@ def test_readme_python_block_runs(name, tmp_path, monkeypatch, capsys):
     ns: dict = {}
     exec(compile(BLOCKS[name], f"{name} python block", "exec"), ns)  # noqa: S102
     out = capsys.readouterr().out
-    if "r.to_vtu" in BLOCKS[name]:
+    if "write_fe_vtu" in BLOCKS[name]:
         # the tour block: FE p0 and a against Hertz at the worst angle, and a VTU file
         p0_err, a_err = (float(v) for v in out.split()[:2])
         assert abs(p0_err) < 3e-3, "FE p0 vs Hertz (docs/fe.md target 0.3 %)"

@@ -1,4 +1,4 @@
-"""femcam.scene as a package: the names other modules import still resolve, and the scene's
+"""femcam.scene as a package: the public names other modules import resolve, and the scene's
 [fe]/[sweep] checks and SweepOptions accept and refuse the same values (one copy of each
 range check, femcam.scene.schema.study_problem).
 
@@ -18,11 +18,14 @@ from femcam.sweep.options import SweepOptions
 STUDY = (Path(__file__).resolve().parents[1] / "examples" / "seed002_study_model.toml").read_text()
 
 
-def test_names_of_the_former_module_still_resolve():
-    # the names other modules and tests import from femcam.scene (grep of femcam/, tests/)
+def test_public_names_resolve_and_private_ones_are_not_re_exported():
+    # the public names other modules and tests import from femcam.scene (grep of femcam/, tests/);
+    # private helpers are imported from their own modules (scene.checker, scene.schema)
     for name in ("Scene", "SceneState", "load_scene", "wear_table", "roller_support_problems",
-                 "MAX_PROBLEMS", "UNDERCUT_CHECK_N", "_Checker", "_WEAR", "_RANGES"):
+                 "MAX_PROBLEMS", "UNDERCUT_CHECK_N"):
         assert hasattr(scene_pkg, name), name
+    for name in ("_Checker", "_WEAR", "_RANGES"):
+        assert not hasattr(scene_pkg, name), name
     assert scene_pkg.UNDERCUT_CHECK_N == 7200 and scene_pkg.MAX_PROBLEMS == 20
 
 

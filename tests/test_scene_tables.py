@@ -62,7 +62,7 @@ def test_scene_ranges_are_the_sweep_options_ranges():
                {"tolerance": 0.51}):
         with pytest.raises(InputError):
             SweepOptions(**kw)
-    from femcam.scene import _RANGES
+    from femcam.scene.schema import _RANGES
     assert _RANGES == {"a_over_h": (2.0, 400.0), "tolerance": (TOLERANCE_FLOOR, 0.5)}
 
 

@@ -30,8 +30,8 @@ from femcam.scene import Scene, load_scene
 from femcam.sweep import auto_workers, default_cache, parse_angles_deg, sweep
 from femcam.sweep.options import SweepOptions, contact_params
 from femcam.sweep.profile import worst_surface_profile
-from femcam.sweep.result import empty_rows
 from femcam.sweep.store import ChunkStore
+from femcam.sweep.table import empty_rows
 
 ROOT = Path(__file__).resolve().parents[1]
 STUDY = ROOT / "examples" / "seed002_study_model.toml"
@@ -304,7 +304,7 @@ def test_undercut_and_nearly_conformal_rows(scene, monkeypatch):
     rho = -1.005 Rr: nearly conformal -- the FE answers and the row is flagged."""
     # the wrapper's rho is not the cam program's, so the exact gap (built from the program) does
     # not describe these rows: keep the osculating-arc gap (no exact-gap choice)
-    import femcam.sweep.pipeline as pl
+    from femcam.sweep import pipeline as pl
 
     monkeypatch.setattr(pl, "arc_error_estimate", lambda sc, th, a, R: (np.zeros(len(th)),) * 2)
     Rr = scene.follower.Rr
@@ -648,9 +648,9 @@ def test_sharp_knife_edge_scene_is_refused_clearly():
 
 
 @pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
-def test_package_is_callable_and_hertz_vtk_series(scene, tmp_path):
+def test_top_level_sweep_and_hertz_vtk_series(scene, tmp_path):
     pv = pytest.importorskip("pyvista")
-    import femcam.sweep
+    import femcam
 
     th = np.radians([0.0, 90.0, 180.0])
     r = femcam.sweep(scene, angles=th, method="hertz", out=tmp_path, vtk_every=1)

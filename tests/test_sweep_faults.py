@@ -192,7 +192,7 @@ def test_dask_threaded_worker_relative_out_files_come_back(tmp_path, monkeypatch
         assert n_ok > 0 and len(vtus) == n_ok
         assert sorted(Path(f).name for f in _pvd_files(cdir / "rel" / "sweep.pvd")) == vtus
         assert not list(wdir.rglob("*.vtu"))
-        import femcam.sweep.parallel as par
+        from femcam.sweep import parallel as par
 
         monkeypatch.setattr(par, "_write_back", lambda task, files: None)  # files lost
         with pytest.raises(FemcamError, match=".vtu files are missing"):

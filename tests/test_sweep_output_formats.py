@@ -122,7 +122,7 @@ def test_long_sweep_table_stays_on_disk_and_writes_the_same_files(tmp_path, monk
     small sweep takes that path (and the analytic phase runs in blocks of 5 angles, as it does
     from ANALYTIC_BLOCK angles on). Reference: the closed-form Hertz p0 (Johnson 1985 eq. 4.45,
     written out below) at the requested angles, and the in-memory path's files."""
-    import femcam.sweep.run as run
+    from femcam.sweep import run
     from femcam.sweep.store import StoredTable
 
     th = np.radians(np.arange(0.0, 360.0, 7.0))
@@ -156,7 +156,7 @@ def test_analytic_phase_in_blocks_is_exact_with_follower_dynamics(monkeypatch):
     """The blocked analytic phase of long sweeps against one ``Scene.analyse`` call of all the
     angles, on a scene with a one-degree-of-freedom follower train (its periodic response is a
     whole-cycle computation, done once per scene and interpolated): identical arrays."""
-    import femcam.sweep.run as run
+    from femcam.sweep import run
     from femcam.sweep.realcam import contact_scene
 
     sc = contact_scene(load_scene(Path(SCENE).parent / "seed002_dynamic.toml"))

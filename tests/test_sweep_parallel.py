@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 
 from femcam.sweep import default_cache, parse_angles_deg, sweep
-from femcam.sweep.result import WALL_CLOCK
+from femcam.sweep.table import WALL_CLOCK
 
 ROOT = Path(__file__).resolve().parents[1]
 STUDY = ROOT / "examples" / "seed002_study_model.toml"

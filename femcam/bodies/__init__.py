@@ -10,7 +10,8 @@ multi-contact active-set solve), ``model`` (:class:`RingModel`: build once), ``s
 The cam as a disk on its shaft (``[cam] bore_mm``): ``cam_geometry`` (:class:`CamDisk`),
 ``cam_mesh`` (gmsh), ``cam_model`` (:class:`CamDiskModel`, fully refined, one angle),
 ``cam_solve`` (:func:`solve_cam_disk`), ``cam_global`` (:class:`CamGlobalModel`, the whole
-revolution), ``cam_rows`` (:func:`cam_disk_rows`, sweep-facing), ``cam_study``, ``cam_export``.
+revolution), ``cam_rows`` (:func:`cam_disk_rows`, sweep-facing), ``cam_study``, ``cam_export``
+(the arrays of the VTU files :mod:`femcam.io` writes).
 """
 
 from .cam_geometry import CamDisk

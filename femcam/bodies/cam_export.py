@@ -1,6 +1,7 @@
-"""VTU of the complete cam disk (and its shaft): from a solved fully refined cam model
-(:func:`write_cam_vtu`), or from the global model at one cam angle (:func:`write_global_cam_vtu`,
-what ``femcam sweep`` writes beside its own VTUs).
+"""The arrays of the complete cam disk (and its shaft) as VTU point data: from a solved fully
+refined cam model (:func:`cam_arrays`), or from the global model at one cam angle
+(:func:`global_cam_arrays`, what ``femcam sweep`` writes beside its own VTUs); written by
+:func:`femcam.io.write_cam_vtu` and :func:`femcam.io.write_global_cam_vtu`.
 
 Fully refined model: points in the contact frame of the angle (m; contact at the origin, cam below
 ``y = 0``, cam centre ``model.centre``). Point data at the P2 nodes (``triangle6`` cells):
@@ -21,7 +22,6 @@ sweep's own VTU.
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 
@@ -56,8 +56,8 @@ def cam_body_fields(model, result, name: str) -> dict:
     return nodal_fields(model.bodies[name], f, model.centre, model.plane)
 
 
-def write_cam_vtu(model, result, path, bodies=("cam", "shaft")) -> Path:
-    """Write the cam disk (and the shaft, if elastic) to a ``.vtu`` file.
+def cam_arrays(model, result, bodies=("cam", "shaft")):
+    """The cam disk (and the shaft, if elastic) as one point cloud with ``triangle6`` cells.
 
     Parameters
     ----------
@@ -65,25 +65,22 @@ def write_cam_vtu(model, result, path, bodies=("cam", "shaft")) -> Path:
         The solved fully refined model.
     result : CamDiskResult
         Its solution for one load case.
-    path : str or os.PathLike
-        The ``.vtu`` file; its folder is created.
     bodies : tuple of str, optional
-        The bodies to write, of ``"cam"`` and ``"shaft"`` (a missing one is skipped).
+        The bodies, of ``"cam"`` and ``"shaft"`` (a missing one is skipped).
 
     Returns
     -------
-    pathlib.Path
-        The written file.
+    points : ndarray, shape (n, 3)
+        Node coordinates in the contact frame [m] (z = 0).
+    cells : ndarray of int, shape (nel, 6)
+        ``triangle6`` node indices.
+    point_data : dict of str to ndarray
+        ``displacement`` (n, 3) [m]; ``sxx``, ``syy``, ``sxy``, ``hoop``, ``von_mises`` (n,) [Pa].
+    body_ids : ndarray of int, shape (nel,)
+        Body of each cell (:data:`BODY_IDS`: 0 cam, 3 shaft).
     """
-    import meshio  # optional heavy dependency of the export only
-
     fields = {name: cam_body_fields(model, result, name) for name in bodies if name in model.bodies}
-    pts, cells, data, ids = stack_bodies(fields, BODY_IDS)
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    meshio.write(path, meshio.Mesh(pts, [("triangle6", cells)], point_data=data,
-                                   cell_data={"body": [ids]}))
-    return path
+    return stack_bodies(fields, BODY_IDS)
 
 
 def global_cam_fields(model, C, n, F: float) -> dict:
@@ -124,8 +121,8 @@ def global_cam_fields(model, C, n, F: float) -> dict:
     return fl
 
 
-def write_global_cam_vtu(model, C, n, F: float, path, *, theta: float = math.nan) -> Path:
-    """Write the global model's cam at one contact to ``path`` (.vtu; module docstring).
+def global_cam_arrays(model, C, n, F: float, *, theta: float = math.nan):
+    """The global model's cam at one contact as VTU arrays, units in the names (module docstring).
 
     Parameters
     ----------
@@ -134,26 +131,25 @@ def write_global_cam_vtu(model, C, n, F: float, path, *, theta: float = math.nan
         Contact point (m) and outward unit cam normal, cam frame.
     F : float
         Contact force (N, > 0).
-    path : str or Path
-        Output ``.vtu``.
     theta : float
-        The cam angle (rad), recorded as field data ``theta_deg``.
+        The cam angle (rad), returned as field data ``theta_deg``.
 
     Returns
     -------
-    Path
+    points : ndarray, shape (n_nodes, 3)
+        Node coordinates in the cam frame [m] (z = 0).
+    cells : ndarray of int, shape (nel, 6)
+        ``triangle6`` node indices.
+    point_data : dict of str to ndarray
+        ``displacement_um`` (n_nodes, 3) [um]; ``sxx_MPa``, ``syy_MPa``, ``sxy_MPa``, ``hoop_MPa``,
+        ``von_mises_MPa``, ``bore_hoop_MPa``, ``bore_pressure_MPa`` (NaN off the bore) [MPa].
+    field_data : dict of str to float
+        ``theta_deg`` [deg] and ``Fc_N`` [N].
     """
-    import meshio  # optional heavy dependency of the export only
-
     fl = global_cam_fields(model, C, n, F)
     nn = fl["xy"].shape[1]
     mpa = {f"{k}_MPa": fl[k] * 1e-6 for k in ("sxx", "syy", "sxy", "hoop", "von_mises")}
     data = {"displacement_um": np.column_stack([fl["u"].T * 1e6, np.zeros(nn)]), **mpa,
             "bore_hoop_MPa": fl["bore_hoop"] * 1e-6, "bore_pressure_MPa": fl["bore_p"] * 1e-6}
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    meshio.write(path, meshio.Mesh(np.column_stack([fl["xy"].T, np.zeros(nn)]), [("triangle6", fl["cells"])],
-                                   point_data=data,
-                                   field_data={"theta_deg": np.array([math.degrees(theta)]),
-                                               "Fc_N": np.array([float(F)])}))
-    return path
+    return (np.column_stack([fl["xy"].T, np.zeros(nn)]), fl["cells"], data,
+            {"theta_deg": math.degrees(theta), "Fc_N": float(F)})

@@ -1,4 +1,4 @@
-"""Full fields of a solved ring model and their VTU export (meshio).
+"""Full fields of a solved ring model, as the arrays :func:`femcam.io.write_ring_vtu` writes.
 
 The ring, the pin (if elastic) and the cam body are written in the roller frame (m; ring
 centre ``(0, Ro)``). Point data at the P2 nodes (``triangle6`` cells): ``displacement`` (m),
@@ -8,8 +8,6 @@ nu (sxx + syy)``). Cell data ``body``: 0 cam, 1 ring, 2 pin.
 """
 
 from __future__ import annotations
-
-from pathlib import Path
 
 import numpy as np
 
@@ -145,32 +143,3 @@ def ring_arrays(model, result, bodies=("ring", "pin", "cam")):
     """
     fields = {name: body_fields(model, result, name) for name in bodies if name in model.bodies}
     return stack_bodies(fields, BODY_IDS)
-
-
-def write_ring_vtu(model, result, path, bodies=("ring", "pin", "cam")) -> Path:
-    """Write the bodies of a solved ring model to a ``.vtu`` file.
-
-    Parameters
-    ----------
-    model : RingModel
-        The solved ring model.
-    result : RingResult
-        Its solution for one load case.
-    path : str or os.PathLike
-        The ``.vtu`` file; its folder is created.
-    bodies : tuple of str, optional
-        The bodies, of ``"ring"``, ``"pin"``, ``"cam"`` (a missing one is skipped).
-
-    Returns
-    -------
-    pathlib.Path
-        The written file.
-    """
-    import meshio  # optional heavy dependency of the export only
-
-    pts, cells, data, ids = ring_arrays(model, result, bodies)
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    meshio.write(path, meshio.Mesh(pts, [("triangle6", cells)], point_data=data,
-                                   cell_data={"body": [ids]}))
-    return path

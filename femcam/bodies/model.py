@@ -104,8 +104,7 @@ def _solve_rows(body, B: np.ndarray, rows: np.ndarray) -> np.ndarray:
     """``(K^-1 B)[rows]`` (rows: global DOFs; zero on supports) without the full
     ``(n_dofs, k)`` displacement array: chunked SuperLU solves with one BLAS thread (as
     ``Body.solve``), keeping only the rows the condensation needs: the full-size zero, copy and
-    scatter arrays are not made (seed 002 needle roller, 55 770 DOFs, 229 columns: condensation
-    median 0.96 s vs 1.08 s over 8 fresh runs each, load average ~2; identical to 3e-14)."""
+    scatter arrays are not made (the same values to round-off)."""
     pos = np.full(body.n_dofs, -1)
     pos[body.free] = np.arange(body.free.size)
     r = pos[rows]

@@ -16,7 +16,7 @@ import re
 from pathlib import Path
 
 from .. import _validate
-from .._files import os_error_line  # noqa: F401  (re-exported for the subcommands)
+from .._files import os_error_line
 from ..errors import InputError
 from ..kinematics import LAW_NAMES
 from ..sweep.store import LOCK

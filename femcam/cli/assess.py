@@ -80,7 +80,7 @@ def _run(args) -> int:
     summary = {"scene": scene.name, "n_angles": int(len(theta)),
                "worst": {c: {"value": v, "theta_deg": math.degrees(t)} for c, (v, t, _) in res.worst.items()},
                "skipped": list(res.notes), "omitted": list(res.omitted), "provenance": prov}
-    (out / "summary.json").write_text(json.dumps(summary, indent=1, default=str))
+    atomic_write_text(out / "summary.json", json.dumps(summary, indent=1, default=str))
     plots = {}
     if not args.no_plots:
 

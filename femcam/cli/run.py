@@ -18,9 +18,9 @@ import numpy as np
 
 from .. import _validate
 from ..dynamics import arm_follower, rigid_jump_speed
-from ..io import provenance, write_table
+from ..io import atomic_write_text, provenance, write_table
 from ..scene import load_scene
-from ..sweep.result import COLUMNS as SWEEP_COLUMNS
+from ..sweep.table import COLUMNS as SWEEP_COLUMNS
 from ..viz.analytic import plot_all
 from ._common import (
     add_law_override,
@@ -35,7 +35,7 @@ from ._common import (
 from ._flags import RANGE_RULE, Range, add_number
 
 #: the analytic chain's columns, named and scaled as in the sweep table (one copy of each
-#: column's unit: :data:`femcam.sweep.result.COLUMNS`)
+#: column's unit: :data:`femcam.sweep.table.COLUMNS`)
 _ANALYTIC = ("theta", "s", "v", "a", "j", "phi", "rho", "Fc")
 _SWEEP_COLUMNS = {si: (name, f) for si, name, f in SWEEP_COLUMNS}
 
@@ -233,9 +233,9 @@ def _run(args) -> int:
               file=sys.stderr)
 
     files = [write_csv(out / "analytic.csv", scene, st, command)]
-    (out / "summary.txt").write_text("\n".join([f"scene: {scene.source_path}",
-                                                scene.program.table(omega=scene.omega),
-                                                "Summary:", *summ]) + "\n")
+    atomic_write_text(out / "summary.txt", "\n".join([f"scene: {scene.source_path}",
+                                                      scene.program.table(omega=scene.omega),
+                                                      "Summary:", *summ]) + "\n")
     files.append(out / "summary.txt")
     if not args.no_plots:
         circle = fo.kind in ("roller", "oscillating_roller", "oscillating_pad")  # drawn follower circle

@@ -81,7 +81,7 @@ def register(subparsers) -> None:
                                                 "arrays and time grow without changing its worst values"),
                default=720, help="cam angles per revolution (default 720)")
     p.add_argument("--wear", action="store_true",
-                   help="also the Archard cam wear depth per revolution (about 0.15 s per variant)")
+                   help="also the Archard cam wear depth per revolution (costly: off by default)")
     p.add_argument("--objective", choices=tuple(_OBJECTIVE), default="p0", help="ranks the FE candidates")
     add_number(p, "--fe-top", Range("variants", 0, MAX_VARIANTS, whole=True,
                                     why="0: no FE; at most the study's variants"),

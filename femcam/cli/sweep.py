@@ -59,7 +59,7 @@ def register(subparsers) -> None:
                help="local worker processes; 1 = serial in this process; auto (default) = "
                     "processes only when the expected saving beats the pool start-up: the "
                     "model families are built and verified before the chunks run, so the "
-                    "chunks are only ~1-2 ms contact solves per angle: a sweep without VTK "
+                    "chunks are only short contact solves per angle: a sweep without VTK "
                     "usually runs serially, while writing many VTU files pays on 2 "
                     "processes; capped at the useful number (CPU cores, chunks)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",

@@ -181,8 +181,8 @@ def run(args) -> int:
         rows = study_k(program, Rb=Rb, ks=[10.0**p for p in range(2, 11)], mu=1.0, options=opt)
         rows2 = study_k_over_mu(program, Rb=Rb, ratios=[10.0**p for p in range(1, 9)], k=1e6,
                                 options=opt)
-        (out / "synth_study_k.md").write_text(format_table(rows) + "\n")
-        (out / "synth_study_k_mu.md").write_text(format_table(rows2) + "\n")
+        io.atomic_write_text(out / "synth_study_k.md", format_table(rows) + "\n")
+        io.atomic_write_text(out / "synth_study_k_mu.md", format_table(rows2) + "\n")
         title = f"femcam synth study (seed 003), case {name}, Rb = {Rb * 1e3:.6g} mm"
         io.write_table(out / "synth_study_k.csv", study_columns(rows), dict(prov, case=name),
                        title=title + ", mu = 1, k varied")

@@ -14,7 +14,7 @@ On a straight-sided triangle ``g`` is constant (P1) or linear (P2), so the integ
 quadratic and the three-point edge-midpoint rule (weights ``|T| / 3``) integrates it exactly
 (Strang & Fix 1973 §4.3): the matrix equals scikit-fem's ``asm(linear_elasticity(...))`` to
 round-off (``tests/test_fe_assembly.py``), at a fraction of the time of its generic form
-assembly (1.65 s -> see docs/performance.md for two bodies at a/h = 40).
+assembly (docs/performance.md).
 
 The contact-last order (:func:`contact_last_order`) serves
 ``SolverOptions(stress_operators="per_solve")``: the minimum-degree order of the node graph of

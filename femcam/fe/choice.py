@@ -43,7 +43,8 @@ from ..mesh import MeshOptions
 from ..profile import FlatFacedFollower, RollerFollower
 from .followers import check_face, rolling_direction, sliding_sign
 from .gap import arc_gap, contact_geometry, gap_from_surface, local_surface
-from .model import ContactModel, ContactResult, SolverOptions
+from .model import ContactModel, SolverOptions
+from .result import ContactResult
 
 MODELS = ("hertz", "fe_arc", "fe_exact")
 

@@ -81,8 +81,8 @@ def edge_midside_dofs(body, contact: np.ndarray) -> np.ndarray | None:
 
 def load_operator(body, contact: np.ndarray, x: np.ndarray, component: int) -> sp.csc_matrix:
     """Sparse ``B``: consistent nodal forces of unit pressure hats (a hat loads its vertex and
-    the midside nodes of its two edges: at a/h = 40 the dense ``(n_dofs, n_c)`` array was 107 MB
-    per body and direction).
+    the midside nodes of its two edges; sparse, because the dense ``(n_dofs, n_c)`` array is
+    ~100 MB per body and direction at a/h = 40).
 
     Parameters
     ----------

@@ -11,8 +11,8 @@ by the vectorised kernel of :mod:`femcam.fe.assembly` on scikit-fem's DOF number
 Rigid-body modes are removed by clamping every DOF on the body's fixed support (far from the
 contact). The free block ``K_ff`` is factorised once with SuperLU (``scipy.sparse.linalg.splu``)
 using an explicit column ordering: ``MMD_AT_PLUS_A`` is the ordering for symmetric matrices,
-the SciPy default ``COLAMD`` is meant for unsymmetric ones and fills in far more (measured in
-``benchmarks/bench_fe.py``).
+the SciPy default ``COLAMD`` is meant for unsymmetric ones and fills in far more
+(``benchmarks/bench_fe.py``).
 """
 
 from __future__ import annotations
@@ -217,7 +217,7 @@ class Body:
 
         The displacements ``K^-1 F`` are never held for all columns at once: blocks of
         :data:`CHUNK` right-hand sides are solved and projected in turn, so the memory is that of
-        the result (at a/h = 40 the full ``K^-1 F`` of one body was 2 x 107 MB, plus the dense
+        the result (at a/h = 40 the full ``K^-1 F`` of one body would be ~200 MB, plus the dense
         ``F``). Same factor and block size as :meth:`solve`.
 
         Parameters

@@ -1,4 +1,5 @@
-"""VTU export of a solved contact scene through meshio (both bodies in one file).
+"""The arrays of a solved contact scene as VTU point data (both bodies in one mesh), written by
+:func:`femcam.io.write_fe_vtu`.
 
 Points are in the FE contact frame (m): ``x`` along the common tangent, ``y`` from the cam into
 the roller. P2 models are written as quadratic ``triangle6`` cells (skfem's local P2 node order
@@ -13,8 +14,6 @@ the contact frame, ``q`` on the cam and ``-q`` on the roller, same interpolation
 """
 
 from __future__ import annotations
-
-from pathlib import Path
 
 import numpy as np
 
@@ -70,7 +69,7 @@ def vtk_point_data(data: dict) -> dict:
 
 
 def scene_arrays(result, model=None):
-    """Mesh and point data of both bodies, ready for meshio.
+    """Mesh and point data of both bodies, ready for :func:`femcam.io.write_vtu`.
 
     Parameters
     ----------
@@ -129,33 +128,3 @@ def scene_arrays(result, model=None):
     cell_type = "triangle6" if model.element == "P2" else "triangle"
     return (np.concatenate(pts), np.concatenate(cells), cell_type,
             {k: np.concatenate(v) for k, v in data.items()}, np.concatenate(body_id))
-
-
-def write_vtu(result, path, model=None) -> Path:
-    """Write ``result`` to a .vtu file (both bodies, arrays named by :data:`VTK_NAMES`).
-
-    Parameters
-    ----------
-    result : ContactResult
-        A solved contact.
-    path : str or pathlib.Path
-        Output file; its suffix is replaced by ``.vtu`` if different. Parent folders are made.
-    model : ContactModel, optional
-        The solving model, needed for an unpickled ``result``.
-
-    Returns
-    -------
-    pathlib.Path
-        The path written.
-    """
-    import meshio  # lazy: meshio loads its many format plugins; only .vtu export needs it
-
-    path = Path(path)
-    if path.suffix != ".vtu":
-        path = path.with_suffix(".vtu")
-    points, cells, cell_type, point_data, body = scene_arrays(result, model)
-    mesh = meshio.Mesh(points, [(cell_type, cells)], point_data=vtk_point_data(point_data),
-                       cell_data={"body": [body]})
-    path.parent.mkdir(parents=True, exist_ok=True)
-    meshio.write(path, mesh, binary=True)
-    return path

@@ -48,14 +48,7 @@ from .elasticity import (
 )
 from .passrange import pass_grid
 from .recovery import build_eval_set, depth, derived, fit_half_width, johnson_frame
-from .result import (  # noqa: F401  (also importable from here: pickles made before the split)
-    MAXIMA_KEYS,
-    ContactResult,
-    StressMax,
-    SurfaceStress,
-    traction_fields,
-    window_extrema,
-)
+from .result import ContactResult, traction_fields, window_extrema
 from .traction import solve_partial_slip
 
 #: values of ``SolverOptions.stress_operators``

@@ -18,7 +18,6 @@ import numpy as np
 
 from .. import _validate
 from .._repr import compact_repr
-from .export import write_vtu
 from .passrange import ShearRange, pass_shear_range
 from .recovery import derived
 
@@ -314,23 +313,6 @@ class ContactResult:
             ``(sx, sz, txz, sy, tau1, von_mises)`` [Pa], each of the broadcast shape.
         """
         return self.model_or(model).stress_at(self, x, z, body)
-
-    def to_vtu(self, path, model=None):
-        """Write both bodies to one .vtu (see :func:`femcam.fe.export.write_vtu`).
-
-        Parameters
-        ----------
-        path : str or pathlib.Path
-            Output file (suffix forced to ``.vtu``).
-        model : ContactModel, optional
-            The solving model, needed for an unpickled result.
-
-        Returns
-        -------
-        pathlib.Path
-            The path written.
-        """
-        return write_vtu(self, path, model=model)
 
 
 def traction_fields(trac, q, w, x, length) -> dict:

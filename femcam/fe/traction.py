@@ -107,7 +107,7 @@ def upwind_derivative(M: np.ndarray, x: np.ndarray, rolling: int) -> np.ndarray:
     """du/dx of the rows of ``M`` (n or (n, k)) by one-sided differences with the upstream
     neighbour (the material arrives from ``-rolling x``), so that a stick node's condition links
     it to where its material was. Row differences, not a matrix product: a threaded BLAS gemm
-    on these small blocks busy-waits on a shared machine (25-50 ms measured, 0.1 ms this way).
+    on these small blocks busy-waits on a shared machine (docs/performance.md).
 
     Parameters
     ----------

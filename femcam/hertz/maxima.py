@@ -8,8 +8,8 @@ Method: a dense grid over ``-2 <= x/a <= 2``, ``0 <= z/a <= 2`` (the maximum alw
 the field decays like ``1/r`` outside), then the best grid points are refined by zoomed
 sampling (21 x 21 points over +-1 step, 10x finer per pass, to a step below 1e-11 a;
 derivative-free because the field has square-root kinks at the surface edges ``|x| = a``;
-numpy only: the bounded Nelder-Mead search it replaced gave the same maxima to 7e-16 and
-cost the main job the ~0.1 s import of ``scipy.optimize``).  Diagnostics (grid value, ``nfev``
+numpy only, so the main job does not import ``scipy.optimize``; a bounded Nelder-Mead search
+gives the same maxima to 7e-16).  Diagnostics (grid value, ``nfev``
 = field evaluations, ``converged``) travel with the result.
 
 Textbook values (frictionless, Johnson 1985 §4.2.3 and Fig. 4.6):

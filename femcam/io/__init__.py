@@ -1,9 +1,10 @@
-"""Writers: result tables (plain CSV with a sidecar JSON, NPZ), VTU fields, PVD series, and the
-atomic file writes every other writer (the sweep's chunk store included) goes through.
+"""Writers: result tables (plain CSV with a sidecar JSON, NPZ), VTU fields, PVD series, gmsh
+meshes, and the atomic file writes they all go through. Every file femcam writes is written here
+(``tests/test_writers.py`` fails on a writer elsewhere): the lower layers hand over arrays.
 
 This package knows no sweep: a table is a dict of arrays written through a column list
 ``[(internal SI name, CSV column name, factor SI -> CSV unit), ...]`` that the caller owns
-(:data:`femcam.sweep.result.COLUMNS` for a sweep), so the writers sit below the sweep in the
+(:data:`femcam.sweep.table.COLUMNS` for a sweep), so the writers sit below the sweep in the
 layer order (docs/architecture.md).
 
 * CSV (:func:`write_csv`, :func:`write_table`): line 1 holds the column names, whose names carry
@@ -22,7 +23,15 @@ layer order (docs/architecture.md).
   angle in degrees, so ParaView and pyvista play the sweep as an animation.
 """
 
-from .atomic import atomic_write_bytes, atomic_write_text
+from .atomic import TEMP_SUFFIX, atomic_write_bytes, atomic_write_path, atomic_write_text
+from .fields import (
+    write_cam_vtu,
+    write_fe_vtu,
+    write_global_cam_vtu,
+    write_hertz_vtu,
+    write_msh,
+    write_ring_vtu,
+)
 from .provenance import header_dict, provenance, versions
 from .tables import (
     CSV_EMPTY,
@@ -32,14 +41,17 @@ from .tables import (
     meta_path,
     read_csv,
     read_meta,
+    write_arrays,
     write_csv,
     write_npz,
     write_rows,
     write_table,
 )
-from .vtk import vtu_name, write_fe_vtu, write_hertz_vtu, write_pvd, write_vtu
+from .vtk import vtu_name, write_pvd, write_vtu
 
-__all__ = ["CSV_EMPTY", "META_SUFFIX", "Column", "atomic_write_bytes", "atomic_write_text",
-           "csv_text", "header_dict", "meta_path", "provenance", "read_csv", "read_meta",
-           "versions", "vtu_name", "write_csv", "write_fe_vtu", "write_hertz_vtu", "write_npz",
-           "write_pvd", "write_rows", "write_table", "write_vtu"]
+__all__ = ["CSV_EMPTY", "META_SUFFIX", "TEMP_SUFFIX", "Column", "atomic_write_bytes",
+           "atomic_write_path", "atomic_write_text", "csv_text", "header_dict", "meta_path",
+           "provenance", "read_csv", "read_meta", "versions", "vtu_name", "write_arrays",
+           "write_cam_vtu", "write_csv", "write_fe_vtu", "write_global_cam_vtu", "write_hertz_vtu",
+           "write_msh", "write_npz", "write_pvd", "write_ring_vtu", "write_rows", "write_table",
+           "write_vtu"]

@@ -353,6 +353,26 @@ def write_npz(path, table: dict, prov: dict | None = None, *, numeric: Sequence[
     return path
 
 
+def write_arrays(path, arrays: dict) -> Path:
+    """Named arrays as one uncompressed ``.npz`` (``numpy.savez``), atomic.
+
+    Parameters
+    ----------
+    path : str or Path
+        Output ``.npz``.
+    arrays : dict[str, ndarray]
+        Name -> array (no object arrays: read back with ``allow_pickle=False``).
+
+    Returns
+    -------
+    Path
+        ``path``.
+    """
+    path = Path(path)
+    atomic_write_bytes(path, lambda f: np.savez(f, **arrays))
+    return path
+
+
 def _savez_stream(f, items) -> None:
     """``numpy.savez_compressed`` of ``(name, array)`` pairs written one by one (the same
     ``.npz`` format: a deflated zip of ``name.npy`` members), so only one array is in memory."""

@@ -1,5 +1,6 @@
-"""VTK output: ``.vtu`` fields through meshio (atomic), ParaView ``.pvd`` collections, and the
-VTU of one solved cam angle (FE result or analytic Hertz field, plus wear)."""
+"""Mesh output: ``.vtu`` fields and gmsh ``.msh`` meshes through meshio (atomic), ParaView
+``.pvd`` collections. The fields of a solved body (FE contact, Hertz, ring, cam disk) are in
+:mod:`femcam.io.fields`; they are written through :func:`write_vtu`."""
 
 from __future__ import annotations
 
@@ -10,9 +11,7 @@ from xml.sax.saxutils import escape, quoteattr
 import numpy as np
 
 from .. import _validate
-from ..fe.export import scene_arrays, stress_tensor, vtk_point_data
-from ..hertz import LineContact
-from .atomic import atomic_write_text
+from .atomic import atomic_write_path, atomic_write_text
 
 
 def write_pvd(path, entries) -> Path:
@@ -53,7 +52,7 @@ def write_vtu(path, points, cells, point_data: dict, field_data: dict | None = N
     Parameters
     ----------
     path : str or Path
-        Output ``.vtu``.
+        Output ``.vtu``; its folder is created.
     points : ndarray, shape (n, 2) or (n, 3)
         Node coordinates (m).
     cells : list of (str, ndarray)
@@ -71,25 +70,73 @@ def write_vtu(path, points, cells, point_data: dict, field_data: dict | None = N
     Path
         ``path``.
     """
-    import meshio  # lazy: meshio pulls in its many format plugins; only VTU writing needs it
-
     pts = np.asarray(points, dtype=float)
     if pts.shape[1] == 2:
         pts = np.column_stack([pts, np.zeros(len(pts))])
-    mesh = meshio.Mesh(pts, cells, point_data={k: np.asarray(v) for k, v in point_data.items()},
-                       cell_data=cell_data or {})
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(path.stem + ".part.vtu")
-    try:
-        # compression=None: zlib took 29 of 32 ms per file (measured), for files read once
-        meshio.write(tmp, mesh, file_format="vtu", binary=True, compression=None)
+    mesh = _mesh(pts, cells, point_data={k: np.asarray(v) for k, v in point_data.items()},
+                 cell_data=cell_data or {})
+
+    def write(tmp):
+        # compression=None: files read once; zlib would be most of the write time
+        # (docs/performance.md)
+        _meshio().write(tmp, mesh, file_format="vtu", binary=True, compression=None)
         if field_data:
             _insert_field_data(tmp, field_data)
-        tmp.replace(path)
-    except BaseException:  # a full disk, Ctrl-C: no half-written .part.vtu is left behind
-        tmp.unlink(missing_ok=True)
-        raise
+
+    return _write_mesh(path, write)
+
+
+def write_gmsh(path, points, cells, cell_data: dict, field_data: dict) -> Path:
+    """A mesh as a gmsh 2.2 ASCII ``.msh`` file through meshio (atomic write).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        Output file; must end in ``.msh``. Parent folders are created.
+    points : ndarray, shape (n, 3)
+        Node coordinates (m).
+    cells : list of (str, ndarray)
+        ``[("triangle", conn (nel, 3)), ("line", conn (nel, 2)), ...]``.
+    cell_data : dict[str, list of ndarray]
+        ``gmsh:physical`` and ``gmsh:geometrical`` tags, one array per cell block.
+    field_data : dict[str, ndarray]
+        The physical names: ``name -> [tag, dim]``.
+
+    Returns
+    -------
+    Path
+        ``path``.
+
+    Raises
+    ------
+    InputError
+        ``path`` is not a path ending in ``.msh``.
+    """
+    if not isinstance(path, str | os.PathLike):
+        raise _validate.fail("path", path, "", "must be a file path (str or os.PathLike) ending in .msh")
+    if Path(path).suffix.lower() != ".msh":
+        raise _validate.fail("path", str(path), "", "must end in .msh (gmsh 2.2 ASCII mesh)")
+    mesh = _mesh(points, cells, cell_data=cell_data, field_data=field_data)
+    return _write_mesh(path, lambda tmp: _meshio().write(tmp, mesh, file_format="gmsh22",
+                                                           binary=False))
+
+
+def _meshio():
+    import meshio  # lazy: meshio loads its many format plugins; only the mesh writers need it
+
+    return meshio
+
+
+def _mesh(points, cells, **data):
+    return _meshio().Mesh(points, cells, **data)
+
+
+def _write_mesh(path, write) -> Path:
+    """``write(tmp)`` into a temp file renamed over ``path`` (:func:`atomic_write_path`); the
+    folder is created."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    atomic_write_path(path, write)
     return path
 
 
@@ -111,9 +158,6 @@ def _insert_field_data(path: Path, field_data: dict) -> None:
     path.write_bytes(data[:k] + b"\n" + block.encode() + data[k:])
 
 
-# ---------------------------------------------------------------------------------------------
-# VTU of one solved angle (sweep): FE result or analytic Hertz field, plus wear
-# ---------------------------------------------------------------------------------------------
 def vtu_name(theta: float) -> str:
     """File name of the ``.vtu`` of one cam angle: ``angle_<deg>deg.vtu``.
 
@@ -131,83 +175,3 @@ def vtu_name(theta: float) -> str:
     'angle_0090.000deg.vtu'
     """
     return f"angle_{np.degrees(_validate.number('theta', theta, 'rad')):08.3f}deg.vtu"
-
-
-def _field_data(wear: dict | None) -> dict:
-    if not wear:
-        return {}
-    return {"theta_deg": wear["theta_deg"], "Fc_N": wear["Fc"], "wear_k_m3_per_N_m": wear["k"],
-            "v_slip_m_s": wear["v_slip"], "V_cam_m_s": wear["V_cam"],
-            "wear_depth_per_rev_m": wear["wear_depth_per_rev"]}
-
-
-def write_fe_vtu(path, r, wear: dict | None = None) -> Path:
-    """Both bodies of a solved angle (:func:`femcam.fe.export.scene_arrays`) plus wear.
-
-    Parameters
-    ----------
-    path : str or Path
-        Output ``.vtu``.
-    r : femcam.fe.ContactResult
-        The solved load case.
-    wear : dict, optional
-        ``{"k" (m^3/(N m)), "v_slip" (m/s), "V_cam" (m/s), "wear_depth_per_rev" (m),
-        "theta_deg" (deg), "Fc" (N)}``. Adds the point data ``wear_rate_m_s``: Archard's local
-        rate ``k p v_slip`` on the contact surfaces (``p`` = the FE nodal contact pressure), 0
-        elsewhere, and the field data ``theta_deg``, ``Fc_N``, ``wear_k_m3_per_N_m``,
-        ``v_slip_m_s``, ``V_cam_m_s``, ``wear_depth_per_rev_m``.
-
-    Returns
-    -------
-    Path
-        ``path``.
-    """
-    points, cells, cell_type, point_data, body = scene_arrays(r)
-    if wear:
-        point_data = dict(point_data, wear_rate=wear["k"] * np.asarray(point_data["contact_pressure"])
-                          * wear["v_slip"])
-    return write_vtu(path, points, [(cell_type, cells)], vtk_point_data(point_data),
-                     field_data=_field_data(wear),
-                     cell_data={"body": [body]})
-
-
-def write_hertz_vtu(path, hc: LineContact, n: int = 41, wear: dict | None = None) -> Path:
-    """The analytic Hertz field in the cam on a structured grid ``|x| <= 3a``, ``0 <= z <= 3a``.
-
-    Parameters
-    ----------
-    path : str or Path
-        Output ``.vtu``.
-    hc : femcam.hertz.LineContact
-        One (scalar) load case.
-    n : int
-        Grid points in depth (``2 n - 1`` along x).
-    wear : dict, optional
-        As in :func:`write_fe_vtu`; adds ``wear_rate_m_s = k p v_slip`` on the surface row.
-
-    Returns
-    -------
-    Path
-        ``path``. Point data ``stress_Pa`` (6 components XX, YY, ZZ, XY, YZ, XZ:
-        ``sx, sz, sy, -txz, 0, 0``), ``tau1_Pa``, ``von_mises_Pa``, ``contact_pressure_Pa``; the cam
-        lies below the surface (``y = -z``).
-    """
-    n = _validate.integer("n", n, 2, "grid points")
-    a = float(hc.a)
-    xs = np.linspace(-3 * a, 3 * a, 2 * n - 1)
-    zs = np.linspace(0.0, 3 * a, n)
-    X, Z = np.meshgrid(xs, zs)
-    sf = hc.stress(X.ravel(), Z.ravel())
-    ids = np.arange(X.size).reshape(Z.shape)
-    quads = np.column_stack([ids[:-1, :-1].ravel(), ids[:-1, 1:].ravel(), ids[1:, 1:].ravel(),
-                             ids[1:, :-1].ravel()])
-    pts = np.column_stack([X.ravel(), -Z.ravel()])  # cam below the surface: y = -z
-    data = {"stress": stress_tensor(sf.sx, sf.sz, sf.sy, sf.txz, -1.0), "tau1": sf.tau1,
-            "von_mises": sf.von_mises}
-    p = np.where(Z == 0.0, hc.pressure(X), 0.0).ravel()
-    data["contact_pressure"] = p
-    if wear:
-        data["wear_rate"] = wear["k"] * p * wear["v_slip"]
-    return write_vtu(path, pts, [("quad", quads)],
-                     vtk_point_data({k: np.asarray(v, float) for k, v in data.items()}),
-                     field_data=_field_data(wear))

@@ -323,16 +323,6 @@ class Junction:
         return None if self.omega is None else self.omega**3 * self.jump_s3
 
     @property
-    def infinite_a(self) -> bool:
-        """Alias of :attr:`infinite_acceleration`."""
-        return self.infinite_acceleration
-
-    @property
-    def infinite_j(self) -> bool:
-        """Alias of :attr:`infinite_jerk`."""
-        return self.infinite_jerk
-
-    @property
     def kind(self) -> str:
         """'infinite acceleration', 'infinite jerk', 'finite jerk step' or 'smooth'."""
         if self.infinite_acceleration:

@@ -28,7 +28,8 @@ override the field. Arc-centre points that gmsh returns unreferenced are dropped
 
 Physical groups (``PHYSICAL_NAMES``) are read back from gmsh before its model is removed and
 kept in ``BodyMesh.groups`` (dimension, tag, elements in the body's node numbering);
-``ContactMesh.write_msh`` writes both bodies with them to a gmsh ``.msh`` file.
+``femcam.io.write_msh(path, mesh)`` writes both bodies with them to a gmsh ``.msh`` file
+(``ContactMesh.msh_arrays``).
 
 Defaults of every parameter are recorded in ``meshes/contact_region.toml``; the same geometry
 as a gmsh ``.geo`` file with ``DefineConstant`` sliders is ``meshes/contact_region.geo`` (one
@@ -38,7 +39,7 @@ Modules: :mod:`~femcam.mesh.options` (inputs and result objects), :mod:`~femcam.
 (the gmsh session and its lock), :mod:`~femcam.mesh.geometry` (exact arc, body layout, outline,
 size field), :mod:`~femcam.mesh.nodes` (node extraction, snapping, mirroring),
 :mod:`~femcam.mesh.coating` (the coating band) and :mod:`~femcam.mesh.build` (one body, both
-bodies). Everything importable from ``femcam.mesh`` before the split still is.
+bodies).
 """
 
 from __future__ import annotations

@@ -4,9 +4,7 @@
 
 from __future__ import annotations
 
-import os
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
 
@@ -193,35 +191,24 @@ class ContactMesh:
         """``{name: PhysicalGroup}`` of both bodies (node indices are per body)."""
         return {**self.cam.groups, **self.roller.groups}
 
-    def write_msh(self, path):
-        """Write both bodies to a gmsh 2.2 ASCII ``.msh`` file (via meshio).
+    def msh_arrays(self):
+        """Both bodies as the arrays of a gmsh 2.2 ``.msh`` file (:func:`femcam.io.write_msh`).
 
-        The final (snapped, mirrored) nodes are written in m, the roller's after the cam's,
-        with the physical names ``roller_contact, cam_contact, roller_fixed, cam_fixed,
-        roller, cam`` (roller tags shifted by 100 so tags are unique).
-
-        Parameters
-        ----------
-        path : str or os.PathLike
-            Output file; must end in ``.msh``. Parent folders are created.
+        The final (snapped, mirrored) nodes in m, the roller's after the cam's, with the
+        physical names ``roller_contact, cam_contact, roller_fixed, cam_fixed, roller, cam``
+        (roller tags shifted by 100 so tags are unique).
 
         Returns
         -------
-        pathlib.Path
-            The path written.
-
-        Raises
-        ------
-        InputError
-            ``path`` is not a path ending in ``.msh``.
+        points : ndarray of float, shape (n, 3)
+            Node coordinates [m] (z = 0).
+        cells : list of (str, ndarray of int)
+            One ``("line" or "triangle", connectivity)`` block per physical group.
+        cell_data : dict of str to list of ndarray
+            ``gmsh:physical`` and ``gmsh:geometrical`` tags, one array per block.
+        field_data : dict of str to ndarray
+            Physical name -> ``[tag, dim]``.
         """
-        import meshio  # lazy: meshio loads its many format plugins; only .msh export needs it
-
-        if not isinstance(path, str | os.PathLike):
-            raise _validate.fail("path", path, "", "must be a file path (str or os.PathLike) ending in .msh")
-        path = Path(path)
-        if path.suffix.lower() != ".msh":
-            raise _validate.fail("path", str(path), "", "must end in .msh (gmsh 2.2 ASCII mesh)")
         pts, cells, phys, names = [], [], [], {}
         off = 0
         for b in (self.cam, self.roller):
@@ -233,9 +220,5 @@ class ContactMesh:
                 phys.append(np.full(g.elements.shape[1], tag))
                 names[g.name] = np.array([tag, g.dim])
             off += b.points.shape[1]
-        mesh = meshio.Mesh(np.concatenate(pts), cells,
-                           cell_data={"gmsh:physical": phys, "gmsh:geometrical": phys},
-                           field_data=names)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        meshio.write(path, mesh, file_format="gmsh22", binary=False)
-        return path
+        return (np.concatenate(pts), cells, {"gmsh:physical": phys, "gmsh:geometrical": phys},
+                names)

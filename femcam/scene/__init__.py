@@ -64,10 +64,7 @@ Only numpy/scipy and the standard library (``tomllib``) are imported.
 
 from .bodies import roller_support_problems
 from .checker import MAX_PROBLEMS
-from .checker import _Checker as _Checker  # used by femcam.wear.options
 from .load import load_scene
-from .schema import _RANGES as _RANGES  # read by tests/test_scene_tables.py
-from .schema import _WEAR as _WEAR  # used by femcam.wear.options
 from .schema import METHODS, STUDY_RANGES, STUDY_WHOLE, TOLERANCE_FLOOR, study_problem
 from .state import UNDERCUT_CHECK_N, Scene, SceneState
 from .wear import wear_table

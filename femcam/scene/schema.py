@@ -211,7 +211,7 @@ def si_named(table: dict) -> dict:
 #: sweep methods: ``fe`` (the FE answers every contact angle), ``hertz`` (analytic only),
 #: ``auto`` (the cheapest model within the tolerance)
 METHODS = ("fe", "hertz", "auto")
-#: smallest accepted ``tolerance`` (relative p0 reuse error); see :mod:`femcam.sweep.families`
+#: smallest accepted ``tolerance`` (relative p0 reuse error); see :mod:`femcam.sweep.plan`
 TOLERANCE_FLOOR = 1e-4
 #: closed ranges of the real-valued study settings
 STUDY_RANGES = {"a_over_h": (2.0, 400.0), "tolerance": (TOLERANCE_FLOOR, 0.5)}

@@ -63,7 +63,8 @@ class EvalOptions:
         The jump-speed search runs up to this multiple of the operating speed (> 1).
     wear : bool
         Also compute the Archard wear map (:func:`femcam.wear.scene.scene_wear`, Hertz
-        pressure): about 0.15 s per variant, 30 times the rest, so off by default.
+        pressure): many times the cost of the rest of a variant (docs/performance.md), so off
+        by default.
     """
 
     n_angles: int = 720

@@ -25,6 +25,7 @@ import tempfile
 from pathlib import Path
 
 from ..errors import InputError, SceneError
+from ..io import atomic_write_text
 from ..scene import load_scene
 
 _BARE = re.compile(r"^[A-Za-z0-9_-]+$")
@@ -252,7 +253,7 @@ def build_scene(raw: dict, *, source_path: str = "", label: str = "variant", tmp
         with tempfile.TemporaryDirectory(prefix="femcam-study-") as tmp:
             return build_scene(raw, source_path=source_path, label=label, tmpdir=tmp)
     path = Path(tmpdir) / "variant.toml"
-    path.write_text(to_toml(raw), encoding="utf-8")
+    atomic_write_text(path, to_toml(raw))
     try:
         scene = load_scene(path)
     except SceneError as exc:

@@ -1,7 +1,7 @@
 r"""Extra column providers of the sweep: physics packages that answer per cam angle.
 
 Each :class:`Provider` says when it applies (from the scene), which columns it adds (SI name,
-CSV name with its unit, factor SI -> CSV, like :data:`femcam.sweep.result.COLUMNS`; text
+CSV name with its unit, factor SI -> CSV, like :data:`femcam.sweep.table.COLUMNS`; text
 columns separately) and how one chunk computes them. :func:`fill_extras` is called once per
 chunk by :func:`femcam.sweep.pipeline.run_chunk`, after the contact rows (Hertz, FE, wear) are
 filled; the writers get :func:`extra_columns`; the provenance gets :func:`extras_provenance`.

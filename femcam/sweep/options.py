@@ -35,7 +35,7 @@ class SweepOptions:
     tolerance : float
         Bound on the reuse error ``|p0(family model) / p0(fresh model) - 1|`` (``--tolerance``),
         verified with fresh models at each family's worst-covered angles; families are split
-        until it holds (:mod:`femcam.sweep.families`). Dimensionless, in
+        until it holds (:mod:`femcam.sweep.verify`). Dimensionless, in
         [:data:`TOLERANCE_FLOOR`, 0.5] ([1e-4, 0.5]).
     chunk_size : int
         Angles per chunk (unit of work and of the on-disk store), a whole number >= 1.

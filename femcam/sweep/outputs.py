@@ -23,16 +23,9 @@ from .extras import extra_columns, extras_files, plot_extras
 from .options import SweepOptions, contact_params
 from .profile import worst_surface_profile
 from .report import report_html
-from .result import (
-    COLUMNS,
-    INTEGER_COLUMNS,
-    NUMERIC,
-    TEXT_COLUMNS,
-    SweepResult,
-    plot_data_arrays,
-    report_markdown,
-)
+from .result import SweepResult, plot_data_arrays, report_markdown
 from .store import ChunkStore, DirLock
+from .table import COLUMNS, INTEGER_COLUMNS, NUMERIC, TEXT_COLUMNS
 from .wear import WearSetup
 
 __all__ = ["SweepRun", "check_vtus", "scene_hash", "scene_source", "with_plot_data", "write_outputs"]

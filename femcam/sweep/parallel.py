@@ -32,10 +32,9 @@ from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
 from .. import _validate
-from .._progress import Progress  # noqa: F401  (re-exported: femcam.sweep.Progress)
 from .._threads import limit_blas_threads
 from ..errors import InputError
-from ..io import atomic_write_bytes
+from ..io import TEMP_SUFFIX, atomic_write_bytes
 
 #: ``workers="auto"``: use processes only if they are expected to save at least this fraction
 AUTO_MIN_SAVING = 0.25
@@ -64,14 +63,13 @@ def auto_workers(n_tasks: int, n_solves: int, t_solve: float, n_families: int, t
     The chunks' work is ``n_solves`` contact solves of ``t_solve`` each, plus ``t_other`` s of
     other work (writing the ``.vtu`` files): the family models are
     built and verified before the chunks run, in this process, and the verification already
-    solves up to :data:`~femcam.sweep.families.MAX_SCAN` load cases per family (cached; forked
+    solves up to :data:`~femcam.sweep.verify.MAX_SCAN` load cases per family (cached; forked
     workers inherit models and results, spawned ones rebuild the ``n_families`` models at
     ``t_build`` each). Processes are used only when they are expected to save at least
     :data:`AUTO_MIN_SAVING` of that time after the pool's fixed cost
-    :data:`AUTO_POOL_OVERHEAD_S`. For the seed 002 study model (360 angles, ~1 ms per solve,
-    200 of them solved during the verification) serial wins, also with the CLI's default 36
-    ``.vtu`` files now that one takes ~15 ms (whole process 5.4-5.9 s with --workers 1 and
-    5.4-5.6 s with 2, load ~2). Processes pay for long angle lists, fine meshes (slower
+    :data:`AUTO_POOL_OVERHEAD_S`. For the seed 002 study model (360 angles, 200 of them solved
+    during the verification) serial wins, also with the CLI's default 36 ``.vtu`` files
+    (docs/performance.md). Processes pay for long angle lists, fine meshes (slower
     solves), many VTU files and resumed sweeps, which solve everything in the chunks.
 
     Parameters
@@ -244,7 +242,7 @@ def _files_back(fn, task):
     with tempfile.TemporaryDirectory(prefix="femcam-chunk-") as tmp:
         rows = fn(dataclasses.replace(task, vtk_dir=tmp))
         files = {p.name: p.read_bytes() for p in sorted(Path(tmp).iterdir())
-                 if not p.name.endswith(".part.vtu")}
+                 if not p.name.endswith(TEMP_SUFFIX)}
     return rows, files
 
 

@@ -14,7 +14,7 @@ body meshed in units of ``a`` is the same matrix for every ``a``. From angle to 
 gap shape ``x^2 / 2R`` and the load change. So one mesh + factorisation serves every angle whose
 ``a`` (and ``Rr / rho``) stays close to the model's reference. The parent process plans the
 families and verifies the reuse error against ``tolerance`` with fresh models, splitting
-families until it holds (:func:`femcam.sweep.families.verify_families`); each worker process
+families until it holds (:func:`femcam.sweep.verify.verify_families`); each worker process
 then builds a family's model once (:class:`~femcam.sweep.cache.ModelCache`, one per
 process; forked workers inherit the parent's) and checks it with ``model.covers(F, rho)``; an
 angle it does not cover gets its own model (flag ``rebuilt``). Because the plan depends only on
@@ -49,9 +49,9 @@ from ..io import vtu_name, write_fe_vtu, write_hertz_vtu
 from ..wear.slip import SlipResult
 from .cache import ModelCache, default_cache
 from .extras import fill_extras
-from .families import hertz_half_width
 from .headline import omitted_physics
 from .options import ContactParams, SweepOptions, contact_params
+from .plan import hertz_half_width
 from .realcam import Traction, arc_error_estimate, contact_scene, hertz_within_tolerance, traction_args
 from .realrows import (
     exact_solve,
@@ -63,7 +63,7 @@ from .realrows import (
     hertz_row_traction,
     hertz_stress,
 )
-from .result import TEXT_COLUMNS, empty_rows
+from .table import TEXT_COLUMNS, empty_rows
 from .wear import fill_wear
 
 #: result columns that are 0 (not NaN) at lift-off: no contact has zero width and zero pressure
@@ -174,7 +174,7 @@ def analytic_rows(scene, theta) -> tuple[dict, object]:
     Returns
     -------
     rows : dict[str, ndarray]
-        The table (:func:`femcam.sweep.result.empty_rows`) with ``theta, s, v, a, j, phi, rho,
+        The table (:func:`femcam.sweep.table.empty_rows`) with ``theta, s, v, a, j, phi, rho,
         Fc`` (SI) filled (knife-edge: of the cam cut for the tip radius).
     state : femcam.scene.SceneState
     """
@@ -218,7 +218,7 @@ def run_chunk(task: ChunkTask) -> dict:
     Returns
     -------
     dict[str, ndarray]
-        The chunk's rows (SI, see :mod:`femcam.sweep.result`).
+        The chunk's rows (SI, see :mod:`femcam.sweep.table`).
     """
     if multiprocessing.parent_process() is None and threading.current_thread() is threading.main_thread():
         return _run_chunk(task)

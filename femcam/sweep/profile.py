@@ -24,12 +24,12 @@ import numpy as np
 from ..hertz.conformity import roller_does_not_fit
 from ..hertz.surface import surface_stress
 from .cache import ModelCache, default_cache
-from .families import hertz_half_width
 from .options import ContactParams, SweepOptions
 from .pipeline import line_contact
+from .plan import hertz_half_width
 from .realcam import scene_traction, traction_args
 from .realrows import exact_solve
-from .result import worst_row
+from .table import worst_row
 
 FRICTIONLESS_Q = 1e-3  # |Q| / (mu F) below which the Hertz curve is drawn frictionless
 
@@ -43,7 +43,7 @@ def worst_surface_profile(table: dict, method: str, cp: ContactParams, families:
     Parameters
     ----------
     table : dict[str, ndarray]
-        The sweep table (:mod:`femcam.sweep.result`).
+        The sweep table (:mod:`femcam.sweep.table`).
     method : str
         ``"fe"`` or ``"hertz"``.
     cp : ContactParams

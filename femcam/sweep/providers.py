@@ -17,7 +17,6 @@ import numpy as np
 
 from ..assess import COLUMNS as ASSESS_COLUMNS
 from ..assess import assess_rows
-from ..bodies.cam_export import write_global_cam_vtu
 from ..bodies.cam_geometry import contact_frame
 from ..bodies.cam_global import CamGlobalModel
 from ..bodies.cam_rows import CAM_CSV_COLUMNS, cam_disk_rows, disk_from_scene
@@ -27,13 +26,13 @@ from ..bodies.rows import build_for, ring_rows
 from ..errors import FemcamError
 from ..halfspace.rows import COLUMNS as HS_COLUMNS
 from ..halfspace.rows import finite_length_rows, strip_for_scene
-from ..io import vtu_name
+from ..io import vtu_name, write_global_cam_vtu
 from ..layers import scene_layer_rows
 from ..wear.coating import coating_wear
 from ..wear.map import wear_depth_per_angle
 from .cache import default_cache
-from .families import hertz_half_width
 from .options import contact_params
+from .plan import hertz_half_width
 
 #: angles of the revolution on which per-process models are graded (independent of chunking)
 _GRID = np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False)
@@ -426,7 +425,7 @@ def cam_disk_vtu_name(theta: float) -> str:
 
 def cam_disk_vtus(task, model, Fc) -> None:
     """The global model's complete cam body at the chunk's VTK angles with a contact
-    (:func:`femcam.bodies.cam_export.write_global_cam_vtu`; one back-substitution each); a stale
+    (:func:`femcam.io.write_global_cam_vtu`; one back-substitution each); a stale
     file of an angle without contact is removed.
 
     Parameters
@@ -444,7 +443,7 @@ def cam_disk_vtus(task, model, Fc) -> None:
             path.unlink(missing_ok=True)
             continue
         C, n, _, _ = contact_frame(task.scene, float(task.theta[i]))
-        write_global_cam_vtu(model, C, n, float(Fc[i]), path, theta=float(task.theta[i]))
+        write_global_cam_vtu(path, model, C, n, float(Fc[i]), theta=float(task.theta[i]))
 
 
 def layers_chunk(task, rows) -> dict:

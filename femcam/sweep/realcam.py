@@ -12,7 +12,7 @@ that answers each angle, and the three followers (:mod:`femcam.fe.choice`, docs/
   knife-edge, flat-faced and curved-pad (on an arm, :mod:`femcam.profile.pad`) followers slide
   fully in the direction of the sliding velocity (:func:`femcam.fe.followers.sliding_sign`).
   The scene's ``[contact] sliding`` is an explicit override: full sliding in that fixed
-  direction (the behaviour before the mechanism was used).
+  direction.
 * **Model per angle** (:func:`arc_error_estimate`): the error of the osculating-arc gap is
   estimated without building the exact gap from the curvature gradient along the cam surface,
   ``kappa_1 = d kappa / d s``: the cam surface departs from its osculating circle by

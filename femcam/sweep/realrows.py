@@ -1,7 +1,7 @@
 """The real-cam columns of a chunk's rows: the model that answered, the exact-gap solve where
 the choice needs it, the traction, and the flat-faced sweep (:mod:`femcam.sweep.realcam`).
 
-The roller and knife-edge rows keep the family models of :mod:`femcam.sweep.families` (arc gap,
+The roller and knife-edge rows keep the family models of :mod:`femcam.sweep.plan` (arc gap,
 traction from the mechanism); a row whose arc-gap error estimate exceeds the tolerance, or that
 lies in a curvature jump's straddle span, is solved again with the exact gap by
 :func:`femcam.fe.choice.solve_angle` on the same model. Flat-faced rows are answered by

@@ -1,8 +1,7 @@
 """The result of a sweep (:class:`SweepResult`: the table, provenance, model families, timings,
 output paths) and its Markdown report.
 
-The table's columns, statuses and flags are described in :mod:`femcam.sweep.table` (its names
-are re-exported here: ``from femcam.sweep.result import COLUMNS`` keeps working).
+The table's columns, statuses and flags are described in :mod:`femcam.sweep.table`.
 """
 
 from __future__ import annotations
@@ -17,26 +16,10 @@ from .._repr import compact_repr, dataframe, span
 from ..errors import InputError
 from ..viz.sweep import plot_caption
 from .realrows import FLAT_BIN_RATIO
-from .table import (
-    COLUMNS,
-    EXTRA_COLUMNS,
-    INTEGER_COLUMNS,
-    NUMERIC,
-    PROFILE_PREFIX,
-    STATUSES,
-    TEXT_COLUMNS,
-    WALL_CLOCK,
-    TableBuilder,
-    concat_rows,
-    empty_rows,
-    extra_keys,
-    worst_row,
-)
+from .table import COLUMNS, NUMERIC, PROFILE_PREFIX, STATUSES, TEXT_COLUMNS, worst_row
 from .worst import angle_text, peak_rows
 
-__all__ = ["COLUMNS", "EXTRA_COLUMNS", "INTEGER_COLUMNS", "NUMERIC", "PROFILE_PREFIX", "STATUSES",
-           "TEXT_COLUMNS", "WALL_CLOCK", "SweepResult", "TableBuilder", "concat_rows", "empty_rows",
-           "extra_keys", "families_text", "plot_data_arrays", "report_markdown", "worst_row"]
+__all__ = ["SweepResult", "families_text", "hertz_check_text", "plot_data_arrays", "report_markdown"]
 
 
 @dataclass(frozen=True)
@@ -59,7 +42,7 @@ class SweepResult:
     provenance : dict
         femcam/gmsh/scikit-fem/numpy versions, scene file and hash, command line, date, options,
         ``families`` (one record per model family: references, checked reuse errors, build
-        time; see :func:`femcam.sweep.families.verify_families`) and ``wear`` (k, slip model).
+        time; see :func:`femcam.sweep.verify.verify_families`) and ``wear`` (k, slip model).
     paths : dict[str, str]
         Files written (``csv``, ``npz``, ``pvd``, plots ...); empty for an in-memory sweep.
     timings : dict[str, float]

@@ -14,6 +14,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from .. import _validate
+from .._progress import Progress
 from ..hertz.conformity import roller_does_not_fit
 from ..io import provenance
 from ..mesh import MeshOptions
@@ -22,14 +23,15 @@ from ..scene import load_scene
 from ..scene.digest import physics_hash, physics_parts
 from .cache import default_cache
 from .extras import extras_provenance
-from .families import FamilyRecord, verify_families
 from .options import SweepOptions, contact_params
 from .outputs import SweepRun, scene_hash, scene_source, write_outputs
-from .parallel import AUTO_VTU_S, Progress, auto_workers, run_tasks
+from .parallel import AUTO_VTU_S, auto_workers, run_tasks
 from .pipeline import ChunkTask, contact_mask, run_chunk
 from .realcam import auto_hertz_rows, contact_scene, jump_angles, real_cam_summary, scene_traction
-from .result import SweepResult, TableBuilder
+from .result import SweepResult
 from .store import LOCK, STREAM_ANGLES, ChunkStore, DirLock, array_hash
+from .table import TableBuilder
+from .verify import FamilyRecord, verify_families
 from .wear import wear_setup
 
 DEFAULT_STEP_DEG = 1.0
@@ -83,7 +85,7 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
         Bound on the relative p0 difference between an angle solved with its family's model and
         with a model built fresh for it (the reuse error); verified with fresh models at each
         family's worst-covered angles, families split until it holds
-        (:mod:`femcam.sweep.families`). >= 1e-4.
+        (:mod:`femcam.sweep.verify`). >= 1e-4.
     chunk_size : int
         Angles per chunk (unit of parallel work and of the on-disk store).
     out : str or Path, optional

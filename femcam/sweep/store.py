@@ -32,8 +32,8 @@ except ImportError:  # pragma: no cover - Windows: no directory lock
     fcntl = None
 
 from ..errors import InputError
-from ..io import atomic_write_bytes, atomic_write_text
-from .result import NUMERIC, TEXT_COLUMNS, extra_keys
+from ..io import atomic_write_text, write_arrays
+from .table import NUMERIC, TEXT_COLUMNS, extra_keys
 
 MANIFEST = "manifest.json"
 PLAN = "plan.json"
@@ -220,9 +220,7 @@ class ChunkStore:
             arrays[name] = v.astype(str) if v.dtype.kind in "OUS" else v.astype(float)
         if self.key.get("scene_sha256") is not None:
             arrays[CHUNK_SCENE_KEY] = np.array(str(self.key["scene_sha256"]))
-        p = self.path(i)
-        atomic_write_bytes(p, lambda f: np.savez(f, **arrays))
-        return p
+        return write_arrays(self.path(i), arrays)
 
     def table(self) -> StoredTable:
         """The whole table, read from the chunk files on access.

@@ -42,7 +42,7 @@ docs/synthesis.md). While the penalty dominates, the error is
 The derivation, with the seed's typos corrected, is in :mod:`femcam.synthesis.energy`
 (energy, residual, tangent); the globalised Newton solver in :mod:`femcam.synthesis.newton`.
 The inputs and the result are in :mod:`femcam.synthesis.options`; this module holds the
-driver :func:`synthesize_knife_edge` (all names importable from here as before the split).
+driver :func:`synthesize_knife_edge`.
 
 Orientation: the curve is the polar curve ``r(alpha) = R_b + s(alpha)`` at polar angle
 ``+alpha`` (a cam turning clockwise under a follower on the +x axis). The direct profile of a

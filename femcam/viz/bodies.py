@@ -12,7 +12,7 @@ from ._mpl import pyplot, save
 
 def plot_hoop(vtu_path, path, *, size=(760, 700), body: int = 1, clim=None):
     """Render the hoop stress (MPa) of the ring (``body`` id 1) from a VTU written by
-    :func:`femcam.bodies.export.write_ring_vtu` to a PNG; returns the path.
+    :func:`femcam.io.write_ring_vtu` to a PNG; returns the path.
 
     Parameters
     ----------

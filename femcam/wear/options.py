@@ -32,7 +32,9 @@ from __future__ import annotations
 import warnings
 
 from ..errors import InputError
-from ..scene import _WEAR, _Checker, wear_table
+from ..scene import wear_table
+from ..scene.checker import _Checker
+from ..scene.schema import _WEAR
 from .archard import dimensional_coefficient
 
 #: key -> (unit shown to the user, SI factor, check, required) -- the scene loader's schema

@@ -1,0 +1,167 @@
+"""The style numbers of docs/architecture.md ("Style numbers"), counted from the source with
+:mod:`ast` (no femcam import). Run ``python tests/style_numbers.py`` from the repository root
+(or ``python tests/style_numbers.py /path/to/another/checkout`` for the "before" column);
+``tests/test_writers.py`` holds the writer count at zero.
+
+Counts:
+
+* writers outside ``femcam/io`` (:func:`test_writers.writers_outside_io`);
+* compat aliases: re-export lines marked ``noqa: F401`` outside ``__init__.py``, modules that
+  only re-export (no function or class of their own), ``from x import _name as _name``
+  re-exports, properties documented as an ``Alias of``, the callable-module trick
+  (``__class__`` of a module replaced) and scene keys documented as a deprecated alias;
+* follower dispatch sites outside the follower classes: ``isinstance(..., <X>Follower)`` and
+  comparisons of a ``kind`` with a follower kind string (``.kind == "roller"``), outside
+  ``femcam/profile/geometry.py`` and ``femcam/profile/oscillating.py``;
+* files with a function that takes the scene (a parameter named ``scene`` or ``sc``, or
+  annotated ``Scene``);
+* the sweep package: module count and import depth (the longest chain of module-level imports
+  between its modules).
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+import sys
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+FOLLOWER_HOMES = ("femcam/profile/geometry.py", "femcam/profile/oscillating.py")
+
+
+def _files(root: Path):
+    for f in sorted((root / "femcam").rglob("*.py")):
+        yield f.relative_to(root).as_posix(), f.read_text(encoding="utf-8")
+
+
+def _only_re_exports(tree: ast.Module) -> bool:
+    """A module whose body is relative imports and assignments only (no code of its own)."""
+    body = [n for n in tree.body if not isinstance(n, ast.Expr)]
+    return bool(body) and all(isinstance(n, ast.ImportFrom | ast.Import | ast.Assign) for n in body) \
+        and any(isinstance(n, ast.ImportFrom) and n.level for n in body)
+
+
+def _alias_nodes(tree: ast.Module) -> list[tuple[int, str]]:
+    """``from x import _name as _name`` re-exports and properties documented ``Alias of``."""
+    out = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom):
+            out += [(node.lineno, f"private re-export {a.name}") for a in node.names
+                    if a.asname and a.asname == a.name and a.name.startswith("_")]
+        if isinstance(node, ast.FunctionDef) and any(
+                isinstance(d, ast.Name) and d.id == "property" for d in node.decorator_list) \
+                and (ast.get_docstring(node) or "").startswith("Alias of"):
+            out.append((node.lineno, f"alias property {node.name}"))
+    return out
+
+
+def compat_aliases(root: Path) -> list[str]:
+    """The compat aliases and re-exports (module docstring), as ``path:line what``."""
+    out = []
+    for rel, text in _files(root):
+        tree = ast.parse(text)
+        for i, line in enumerate(text.splitlines(), 1):
+            if "noqa: F401" in line and not rel.endswith("__init__.py") and "import" in line:
+                out.append(f"{rel}:{i} re-export")
+            if re.search(r"__class__\s*=", line) and "sys.modules" in line:
+                out.append(f"{rel}:{i} callable module")
+            if re.search(r"DEPRECATED alias", line):
+                out.append(f"{rel}:{i} deprecated scene key")
+        if not rel.endswith("__init__.py") and _only_re_exports(tree):
+            out.append(f"{rel}:1 re-export module")
+        out += [f"{rel}:{n} {what}" for n, what in _alias_nodes(tree)]
+    return out
+
+
+#: the follower kinds (``kind`` of the follower classes)
+KINDS = {"roller", "knife_edge", "flat_faced", "oscillating_roller"}
+
+
+def _names_a_kind(node: ast.Compare) -> bool:
+    """A comparison of something with a follower kind string (``f.kind == "roller"``,
+    ``kind in ("roller", "oscillating_roller")``)."""
+    consts = [c for c in ast.walk(node) if isinstance(c, ast.Constant) and isinstance(c.value, str)]
+    return any(c.value in KINDS for c in consts) and "kind" in ast.unparse(node)
+
+
+def follower_dispatch(root: Path) -> list[str]:
+    """isinstance/kind-string follower dispatch sites outside the follower classes."""
+    out = []
+    for rel, text in _files(root):
+        if rel in FOLLOWER_HOMES:
+            continue
+        for node in ast.walk(ast.parse(text)):
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) \
+                    and node.func.id == "isinstance" and len(node.args) == 2 \
+                    and "Follower" in ast.unparse(node.args[1]):
+                out.append(f"{rel}:{node.lineno} isinstance")
+            if isinstance(node, ast.Compare) and _names_a_kind(node):
+                out.append(f"{rel}:{node.lineno} kind")
+    return out
+
+
+def scene_files(root: Path) -> list[str]:
+    """Files with a function taking the scene (parameter ``scene``/``sc`` or annotated Scene)."""
+    out = []
+    for rel, text in _files(root):
+        for node in ast.walk(ast.parse(text)):
+            if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef):
+                args = node.args.posonlyargs + node.args.args + node.args.kwonlyargs
+                if any(a.arg in ("scene", "sc") or (a.annotation is not None and "Scene" ==
+                       ast.unparse(a.annotation).split(".")[-1]) for a in args):
+                    out.append(rel)
+                    break
+    return out
+
+
+def sweep_package(root: Path) -> tuple[int, int]:
+    """``(modules, import depth)`` of ``femcam/sweep``: depth = the longest chain of
+    module-level imports between its modules (1 for a module importing no sibling)."""
+    pkg = root / "femcam" / "sweep"
+    mods = {f.stem: f for f in pkg.glob("*.py")}
+    deps = {}
+    for name, f in mods.items():
+        d = set()
+        for node in ast.parse(f.read_text(encoding="utf-8")).body:
+            if isinstance(node, ast.ImportFrom) and node.level == 1:
+                if node.module:
+                    d.add(node.module.split(".")[0])
+                else:
+                    d.update(a.name for a in node.names)
+        deps[name] = {m for m in d if m in mods and m != name}
+    memo: dict[str, int] = {}
+
+    def depth(m, seen=()):
+        if m not in memo:
+            memo[m] = 1 + max((depth(t, (*seen, m)) for t in deps[m] if t not in seen), default=0)
+        return memo[m]
+
+    return len(mods), max(depth(m) for m in mods)
+
+
+def writers(root: Path) -> list[str]:
+    """Writer calls outside femcam/io (:mod:`test_writers`)."""
+    sys.path.insert(0, str(HERE))
+    from test_writers import writers_outside_io
+
+    return writers_outside_io(root)
+
+
+def numbers(root: Path) -> dict[str, int]:
+    """Every count of the module docstring for the checkout at ``root``."""
+    n_mod, depth = sweep_package(root)
+    return {"writers outside io": len(writers(root)),
+            "compat aliases and re-exports": len(compat_aliases(root)),
+            "follower dispatch sites outside the follower classes": len(follower_dispatch(root)),
+            "files with a function taking the scene": len(set(scene_files(root))),
+            "sweep package modules": n_mod, "sweep import depth": depth}
+
+
+if __name__ == "__main__":
+    root = Path(sys.argv[1]) if len(sys.argv) > 1 else HERE.parent
+    for k, v in numbers(root).items():
+        print(f"{k}: {v}")
+    if "-v" in sys.argv:
+        for line in compat_aliases(root) + follower_dispatch(root) + writers(root):
+            print("  ", line)
