@@ -431,7 +431,8 @@ def real_cam_summary(table, traction: Traction | None) -> dict:
     dict
         ``{"models": {model: count}, "n_curvature_jump", "n_edge_contact", "traction"}``.
     """
-    models = {m: int(np.count_nonzero(table["model"] == m)) for m in MODELS}
+    base = np.array([str(m).split("+")[0] for m in table["model"]], dtype=str)   # fe_arc+coating
+    models = {m: int(np.count_nonzero(base == m)) for m in MODELS}
     return {"models": models, "n_curvature_jump": int(np.nansum(table["curvature_jump"] == 1)),
             "n_edge_contact": int(np.count_nonzero(table["status"] == "edge_contact")),
             "traction": traction.source if traction is not None else "none (method hertz)"}
