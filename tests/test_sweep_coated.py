@@ -164,3 +164,16 @@ def test_layered_half_space_reference_through_the_headline(tmp_path):
                                mesh=MeshOptions(a_over_h=10.0))
     p0_fresh = fresh.solve(F=F, rho=RB, mu=0.0).p0_nodal
     assert r["p0_fe"][0] == pytest.approx(p0_fresh, rel=2e-3)
+
+
+def test_method_auto_gives_a_coated_scene_to_the_fe(tmp_path):
+    """On the base circle Hertz is exact for homogeneous bodies, so method auto answers the
+    uncoated dwell with Hertz; with a coating (Hertz's error estimate knows none) the coated FE
+    answers, and its layer columns come from that solve."""
+    th = np.radians([DWELL_DEG])
+    plain = sweep(_scene(tmp_path), angles=th, workers=1, a_over_h=6.0, method="auto")
+    sc = _scene(tmp_path, tables=_coating("cam", 30.0, 100.0, 0.3))
+    r = sweep(sc, angles=th, workers=1, a_over_h=6.0, method="auto")
+    assert plain["model"][0] == "hertz"
+    assert r["model"][0] == "fe_arc+coating" and r["layer_source"][0] == "headline"
+    assert np.isfinite(r["layer_interface_tau_max"][0]) and "headline_omits_coating" not in r["flags"][0]

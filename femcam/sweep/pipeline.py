@@ -289,7 +289,7 @@ def _choose_models(task: ChunkTask, cp: ContactParams, rows, flags, good) -> np.
     e_arc, e_h = arc_error_estimate(task.scene, rows["theta"][good], rows["a_hertz"][good], cp.Rr)
     rows["est_err_arc"][good] = e_arc / 100.0
     rows["est_err_hertz"][good] = e_h / 100.0
-    if task.options.method != "auto" or cp.coat_body is not None:
+    if task.options.method != "auto" or (cp.coat_body is not None and cp.kind != "flat_faced"):
         return good   # a coated body: Hertz (homogeneous) is not the scene's model
     hz = (task.hertz[good] if task.hertz is not None else
           hertz_within_tolerance(e_h, task.jump[good] if task.jump is not None else None,

@@ -347,11 +347,12 @@ def auto_hertz_rows(scene, cp, options, theta, F, rho, contact, jump) -> np.ndar
     Returns
     -------
     ndarray of bool, shape (n,)
-        Rows Hertz answers.
+        Rows Hertz answers (none for a coated roller or knife-edge scene: its Hertz error
+        estimate knows no coating, the coated FE answers).
     """
     n = np.asarray(theta).size
-    if options.method != "auto":
-        return np.zeros(n, bool)
+    if options.method != "auto" or (cp.coat_body is not None and cp.kind != "flat_faced"):
+        return np.zeros(n, bool)   # a coated body: Hertz (homogeneous) is not the scene's model
     F = np.clip(np.asarray(F, float), 0.0, None)
     rho = np.asarray(rho, float)
     with np.errstate(divide="ignore", invalid="ignore"):
