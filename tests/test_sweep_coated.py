@@ -177,3 +177,25 @@ def test_method_auto_gives_a_coated_scene_to_the_fe(tmp_path):
     assert plain["model"][0] == "hertz"
     assert r["model"][0] == "fe_arc+coating" and r["layer_source"][0] == "headline"
     assert np.isfinite(r["layer_interface_tau_max"][0]) and "headline_omits_coating" not in r["flags"][0]
+
+
+def test_case_columns_come_from_the_headline_solve(tmp_path):
+    """A nitrided cam (no coating: the case changes strength, not stiffness): the headline is
+    the homogeneous contact (model fe_arc, within 0.5 % of Hertz), and the case-core margin
+    comes from that solve's stress field: against a hand calculation on Hertz's on-axis tau_1
+    (Johnson 1985 eq. 4.75) with k = H / (3 sqrt 3) and the exponential law (DIN 50190-3 depth),
+    within 2.5 % (the FE tau_1 maximum's error at a/h = 10, tests/test_layers.py)."""
+    F, depth, HV = 1000.0, 0.1e-3, 9.80665e6
+    case = ("[materials.cam.case]\ndepth_mm = 0.1\nsurface_hardness_HV = 700.0\n"
+            "core_hardness_HV = 300.0\nhardness_law = \"exponential\"\n")
+    r = _dwell_row(_scene(tmp_path, preload_N=F, tables=case), 10.0, F)
+    a, p0 = _hertz(F, STEEL.E, STEEL.nu, STEEL.E, STEEL.nu)
+    assert r["model"][0] == "fe_arc" and r["p0_fe"][0] == pytest.approx(p0, rel=5e-3)
+    assert r["layer_source"][0] == "headline" and np.isnan(r["layer_interface_tau_max"][0])
+    z = np.linspace(0.0, 4 * max(a, depth), 4001)
+    sx = -p0 / a * ((a**2 + 2 * z**2) / np.sqrt(a**2 + z**2) - 2 * z)
+    sz = -p0 * a / np.sqrt(a**2 + z**2)
+    H = 300 * HV + 400 * HV * np.exp(-z * math.log(8.0) / depth)
+    u = (sx - sz) / 2 / (H / (3 * math.sqrt(3)))
+    assert r["layer_case_margin"][0] == pytest.approx(1 / np.abs(u).max(), rel=2.5e-2)
+    assert r["layer_case_z_at_max"][0] == pytest.approx(z[np.argmax(np.abs(u))], abs=0.1 * a)
