@@ -726,6 +726,7 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.bodies.to_csv_columns", "femcam.halfspace.has_finite_length",
         "femcam.halfspace.to_csv_columns", "femcam.kinematics.CamProgram",
         "femcam.kinematics.junction_report", "femcam.layers.interface_stress",
+        "femcam.layers.result_layer_row",
         "femcam.layers.scene_layers", "femcam.mesh.gmsh_nodes", "femcam.mesh.mirror",
         "femcam.mesh.mesh_coated_body", "femcam.mesh.mesh_plain_body",
         "femcam.sweep.run_chunk", "femcam.wear.wear_coefficient_info",

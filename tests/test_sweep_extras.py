@@ -175,6 +175,9 @@ def test_layer_columns_equal_direct_call(tmp_path):
     th = np.radians([0.0, 130.0])
     r, cols = _sweep_csv(scene, th, tmp_path)
     direct = scene_layer_rows(scene, th, a_over_h=10.0)
+    # method hertz: no FE solve answered the rows, so the layer columns come from the layered
+    # model of each angle (method fe takes them from the headline solve: tests/test_sweep_coated.py)
+    assert set(cols["layer_source"]) == {"layer_model"}
     for _, csv, _ in providers.LAYERS:
         _close(cols[csv], direct[csv])
     assert r.provenance["extras"]["layers"]["case_margin_min"] == pytest.approx(

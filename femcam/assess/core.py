@@ -426,9 +426,10 @@ def assess(scene, theta=None, *, table=None, lubricated: bool = True) -> Assessm
 def omitted_physics(scene) -> tuple[str, ...]:
     """What ``scene`` holds that the assessment leaves out, one sentence each: a coating (the
     scene test of :func:`femcam.layers.from_scene.scene_coatings`, the one the sweep's
-    ``headline_omits_coating`` uses). The contact (Hertz or the sweep's headline FE, both of
-    homogeneous bodies), the film, the flash temperature and the strength and fatigue data are
-    the substrate's; every contact row carries the flag ``omits_coating``.
+    ``headline_omits_coating`` uses). The film, the flash temperature and the strength and
+    fatigue data are the substrate's; the contact and its stresses are the coated model's where
+    they come from an FE sweep table (``femcam sweep``, whose headline FE carries the coating),
+    Hertz's of homogeneous bodies otherwise. Every contact row carries the flag ``omits_coating``.
 
     Parameters
     ----------
@@ -441,8 +442,9 @@ def omitted_physics(scene) -> tuple[str, ...]:
         Empty for an uncoated scene.
     """
     return tuple(f"the assessment treats the coated body as homogeneous: {coating_phrase(body, c)} is "
-                 "not in its contact, stresses or fatigue data (the substrate's are used; flag "
-                 "omits_coating); the coating's own stresses are the coating_* and interface_* columns "
+                 "not in its film, flash temperature or fatigue data (the substrate's are used; flag "
+                 "omits_coating), nor in its contact unless that comes from a femcam sweep's FE (the "
+                 "coated model); the coating's own stresses are the coating_* and interface_* columns "
                  "of femcam sweep" for body, c in scene_coatings(scene))
 
 

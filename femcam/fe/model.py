@@ -500,7 +500,10 @@ class ContactModel:
             q = np.zeros_like(self.x)
             # similar materials (Dundurs beta = 0): normal and tangential problems decouple
             # (Johnson 1985 §7.1), one pass; otherwise a fixed point on the coupling At q
-            similar = (self.cam.E, self.cam.nu) == (self.roller.E, self.roller.nu)
+            # (a coating band makes the bodies dissimilar near the surface)
+            similar = ((self.cam.E, self.cam.nu) == (self.roller.E, self.roller.nu)
+                       and getattr(self.cam, "coating", None) is None
+                       and getattr(self.roller, "coating", None) is None)
             for _ in range(1 if similar else 20):
                 sol = solve_lcp(self.An, h0 + self.At @ q, self.w, W, **kw)
                 trac = solve_partial_slip(self.Ctt, self.x, self.w, sol.p, Q / self.length, mu,

@@ -183,30 +183,62 @@ def layer_rows(model, F, rho, mu, *, coating: Coating | None = None, coat_body: 
                                      _validate.nonnegative_array("mu", mu, ""))
     if coating is None and case is None:
         raise InputError("layer_rows: give a coating and/or a case (nothing to check)")
-    # the stresses need no strength; only the utilisations do (NaN without it)
-    tau_i = coating.interface_shear_strength if coating is not None else None
-    Hc = coating.hardness if coating is not None else None
     _validate.record("model", model, "a ContactModel (femcam.fe or build_coated_model)", "solve", "bodies")
-    n = F.size
-    cols = ("interface_tau_max_MPa", "interface_sn_min_MPa", "interface_sn_max_MPa",
-            "interface_utilisation", "coating_sx_max_MPa", "coating_sx_utilisation",
-            "case_utilisation_max", "case_z_at_max_mm", "case_margin")
-    out = {c: np.full(n, np.nan) for c in cols}
-    for j in range(n):
+    out = {c: np.full(F.size, np.nan) for c in LAYER_COLUMNS}
+    for j in range(F.size):
         r = model.solve(F=float(F.flat[j]), rho=float(rho.flat[j]), mu=float(mu.flat[j]),
                         sliding=sliding)
-        if coating is not None:
-            it = interface_stress(r, coat_body)
-            sx = float(np.max(r.surface_by_body[coat_body].sx))
-            out["interface_tau_max_MPa"][j] = it.tau_abs_max / 1e6
-            out["interface_sn_min_MPa"][j] = it.sigma_n_min / 1e6
-            out["interface_sn_max_MPa"][j] = it.sigma_n_max / 1e6
-            out["interface_utilisation"][j] = it.tau_abs_max / tau_i if tau_i else np.nan
-            out["coating_sx_max_MPa"][j] = sx / 1e6
-            out["coating_sx_utilisation"][j] = max(sx, 0.0) / (Hc / 3.0) if Hc else np.nan
-        if case is not None:
-            u, zm, mg = _case_row(r, case, case_body)
-            out["case_utilisation_max"][j] = u
-            out["case_z_at_max_mm"][j] = zm * 1e3
-            out["case_margin"][j] = mg
+        for c, v in result_layer_row(r, coating=coating, coat_body=coat_body, case=case,
+                                     case_body=case_body).items():
+            out[c][j] = v
+    return out
+
+
+#: the columns of :func:`layer_rows` and :func:`result_layer_row` (CSV names, units in the names)
+LAYER_COLUMNS = ("interface_tau_max_MPa", "interface_sn_min_MPa", "interface_sn_max_MPa",
+                 "interface_utilisation", "coating_sx_max_MPa", "coating_sx_utilisation",
+                 "case_utilisation_max", "case_z_at_max_mm", "case_margin")
+
+
+def result_layer_row(result, *, coating: Coating | None = None, coat_body: str = "roller",
+                     case: Case | None = None, case_body: str = "cam", model=None) -> dict:
+    """The layer checks of one solved load case, from its own stress field: the sweep takes
+    them from the solve that answers its headline (no second model).
+
+    The coating's stresses need no strength; only the utilisations do (NaN without
+    ``interface_shear_strength``, ``hardness``).
+
+    Parameters
+    ----------
+    result : femcam.fe.ContactResult
+        The solved load case (of a coated model when ``coating`` is given).
+    coating : Coating, optional
+        The coating to check.
+    coat_body : {"cam", "roller"}, optional
+        The coated body.
+    case : Case, optional
+        The hardened case to check.
+    case_body : {"cam", "roller"}, optional
+        The case-hardened body.
+    model : femcam.fe.ContactModel, optional
+        The solving model when ``result`` carries none (unpickled).
+
+    Returns
+    -------
+    dict of str to float
+        The :data:`LAYER_COLUMNS` (units in the names: MPa, mm, - ; NaN for checks not asked).
+    """
+    out = dict.fromkeys(LAYER_COLUMNS, math.nan)
+    if coating is not None:
+        tau_i, Hc = coating.interface_shear_strength, coating.hardness
+        it = interface_stress(result, coat_body, model=model)
+        sx = float(np.max(result.surface_by_body[coat_body].sx))
+        out.update(interface_tau_max_MPa=it.tau_abs_max / 1e6, interface_sn_min_MPa=it.sigma_n_min / 1e6,
+                   interface_sn_max_MPa=it.sigma_n_max / 1e6,
+                   interface_utilisation=it.tau_abs_max / tau_i if tau_i else math.nan,
+                   coating_sx_max_MPa=sx / 1e6,
+                   coating_sx_utilisation=max(sx, 0.0) / (Hc / 3.0) if Hc else math.nan)
+    if case is not None:
+        u, zm, mg = _case_row(result, case, case_body, model)
+        out.update(case_utilisation_max=u, case_z_at_max_mm=zm * 1e3, case_margin=mg)
     return out

@@ -12,13 +12,15 @@ from collections import OrderedDict
 from .. import _validate
 from ..errors import FemcamError
 from ..fe import ContactModel, ContactResult, SolverOptions
+from ..layers import Coating, build_coated_model
+from ..materials import effective_modulus
 from ..mesh import MeshOptions
 from .options import ContactParams, SweepOptions
 
 
 def _key(cp, rho_ref, a_ref, options):
     return (cp.Rr, cp.length, repr(cp.cam), repr(cp.roller), cp.plane, float(rho_ref),
-            float(a_ref), options.a_over_h)
+            float(a_ref), options.a_over_h, cp.coat_body, cp.coat_thickness, cp.coat_E, cp.coat_nu)
 
 
 class ModelCache:
@@ -255,8 +257,48 @@ def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepO
     Returns
     -------
     femcam.fe.ContactModel
+        With ``cp.coat_body`` set: the coated model (:func:`femcam.layers.build_coated_model`,
+        the coating band in the contact FE), its fine zone widened by :func:`coated_zone_factor`.
     """
-    return ContactModel.build(Rr=cp.Rr, rho_ref=rho_ref, cam=cp.cam, roller=cp.roller,
+    solver = solver or SolverOptions()
+    if cp.coat_body is None:
+        return ContactModel.build(Rr=cp.Rr, rho_ref=rho_ref, cam=cp.cam, roller=cp.roller,
+                                  length=cp.length, a_ref=a_ref,
+                                  mesh=MeshOptions(a_over_h=options.a_over_h),
+                                  solver=solver, plane=cp.plane)
+    base = MeshOptions()
+    mesh = MeshOptions(a_over_h=options.a_over_h,
+                       fine_half_width=base.fine_half_width * coated_zone_factor(cp))
+    return build_coated_model(Rr=cp.Rr, rho_ref=rho_ref, cam=cp.cam, roller=cp.roller,
                               length=cp.length, a_ref=a_ref,
-                              mesh=MeshOptions(a_over_h=options.a_over_h),
-                              solver=solver or SolverOptions(), plane=cp.plane)
+                              coating=Coating(thickness=cp.coat_thickness, material=cp.coating),
+                              body=cp.coat_body, mesh=mesh, solver=solver, plane=cp.plane)
+
+
+def coated_zone_factor(cp: ContactParams) -> float:
+    r"""How much wider than the homogeneous model's the coated model's fine zone is: the ratio of
+    the Hertz half-widths with the coating's and the substrate's constants on the coated body,
+    when the coating is softer (1 otherwise).
+
+    The families are planned, and :meth:`~femcam.fe.ContactModel.covers` checks, with the Hertz
+    half-width of the substrates (``cp.E_star``); a soft coating thicker than the contact widens
+    the contact up to that of a body of the coating material, ``a ~ 1 / sqrt(E*)`` (Johnson 1985
+    eq. 4.43), so the zone the contact may load grows by this factor.
+
+    .. math:: f = \max\left(1, \sqrt{E^*_{substrate} / E^*_{coating}}\right)
+
+    Parameters
+    ----------
+    cp : ContactParams
+        With ``coat_body``, ``coat_E`` [Pa], ``coat_nu`` [-].
+
+    Returns
+    -------
+    float
+        ``f >= 1`` [-] (1 for an uncoated ``cp``).
+    """
+    if cp.coat_body is None:
+        return 1.0
+    coat = cp.coating
+    as_coat = {"cam": (coat, cp.roller), "roller": (cp.cam, coat)}[cp.coat_body]
+    return max(1.0, math.sqrt(cp.E_star / effective_modulus(*as_coat, cp.plane)))

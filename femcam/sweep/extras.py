@@ -121,6 +121,9 @@ class Provider:
         What the plot shows (its title after the scene name; default: ``name``).
     keys : str, optional
         The scene keys that ask for the provider: what a refusal tells the user to change.
+    solved : bool, optional
+        ``compute(task, rows, solved)`` also gets the chunk's FE solves ``{row: ContactResult}``
+        (the layers take their columns from the solve that answered the row).
     """
 
     name: str
@@ -131,6 +134,7 @@ class Provider:
     panels: tuple = ()
     title: str = ""
     keys: str = ""
+    solved: bool = False
 
 
 #: the table, in the order the providers run (halfspace before assess: the axial peak)
@@ -148,8 +152,8 @@ PROVIDERS: tuple[Provider, ...] = (
                   "needle_count, needle_radius_mm"),
     Provider("cam_disk", has_cam_bore, CAM_DISK, ("camdisk_flags",), cam_disk_chunk, CAM_DISK_PANELS,
              keys="[cam] bore_mm, shaft_fit, shaft_clearance_um"),
-    Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, (), layers_chunk, LAYER_PANELS,
-             keys="[materials.<body>.coating] and [materials.<body>.case]"),
+    Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS, ("layer_source",), layers_chunk,
+             LAYER_PANELS, keys="[materials.<body>.coating] and [materials.<body>.case]", solved=True),
     Provider("coating_wear", coated_cam, (), (), coating_wear_chunk,
              keys="[materials.cam.coating] wear keys"),
 )
@@ -230,7 +234,7 @@ def extra_columns(scene) -> tuple[tuple[Column, ...], tuple[str, ...]]:
             tuple(t for p in ps for t in p.text) + (ERROR_COLUMN,))
 
 
-def fill_extras(task, rows) -> None:
+def fill_extras(task, rows, solved: dict | None = None) -> None:
     """Compute the applicable providers' columns of one chunk into ``rows`` (in place).
 
     Parameters
@@ -239,6 +243,9 @@ def fill_extras(task, rows) -> None:
         ``scene``, ``theta``, ``options``, ``slip``, ``wear_k`` of the chunk.
     rows : dict[str, ndarray]
         The chunk's table with the contact and wear columns filled.
+    solved : dict[int, femcam.fe.ContactResult], optional
+        The FE solves that answered the chunk's rows (row index -> result), for the providers
+        that take their columns from them (``Provider.solved``).
     """
     ps = providers_for(task.scene)
     if not ps:
@@ -247,7 +254,7 @@ def fill_extras(task, rows) -> None:
     errors = []
     for p in ps:
         try:
-            vals = p.compute(task, rows)
+            vals = p.compute(task, rows, solved or {}) if p.solved else p.compute(task, rows)
         except FemcamError as exc:
             errors.append(f"{p.name}: {type(exc).__name__}: {exc}")
             vals = {}
@@ -295,7 +302,7 @@ def extras_files(scene, table, out, vtk_mask) -> dict[str, str]:
     return {"pvd_camdisk": str(write_pvd(Path(out) / "camdisk.pvd", entries))} if entries else {}
 
 
-def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
+def extras_provenance(scene, table, tolerance: float | None = None, method: str = "fe") -> dict:
     """Which providers ran and their summary over the swept angles (JSON-able).
 
     ``providers``: names; ``headline``: what the headline model omits (:func:`omitted_physics`,
@@ -320,6 +327,8 @@ def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
         The sweep table (SI columns).
     tolerance : float or None, optional
         The sweep's relative p0 tolerance [-]; None: no cam-disk check.
+    method : str, optional
+        The sweep's method (``fe``, ``auto``, ``hertz``): whether the coating is in the headline.
 
     Returns
     -------
@@ -328,7 +337,7 @@ def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
     """
     ps = providers_for(scene)
     out = {"providers": [p.name for p in ps]}
-    omitted = omitted_physics(scene)
+    omitted = omitted_physics(scene, method)
     if omitted:
         out["headline"] = [sentence for _, sentence in omitted]
     if not ps:

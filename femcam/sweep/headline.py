@@ -1,7 +1,9 @@
 """What the sweep's headline columns are, and where they cannot be taken at face value.
 
-The headline contact model of every row is the 2D contact of two homogeneous solid bodies at
-``Fc / length`` (:mod:`femcam.sweep.table`, "which column answers what"). Two things are said
+The headline contact model of every row is the 2D contact of the two solid bodies at
+``Fc / length`` (:mod:`femcam.sweep.table`, "which column answers what"); a coating is in it
+(the coated model answers: ``model`` reads ``fe_arc+coating``, :data:`COATED`), except on
+Hertz rows (method hertz) and flat-faced followers. Two things are said
 per row in ``flags``, never left silent:
 
 * :func:`omitted_physics` -- the scene holds physics that model leaves out (a coating, a ring
@@ -29,6 +31,9 @@ from .providers import has_support
 #: from the edge; within it the edge singularity of the discretisation gives up to 27 MPa of
 #: txz where the contact carries none (docs/sweep.md, "Surface columns at the contact edge")
 SURF_EDGE_TOL = 0.02
+
+#: suffix of the ``model`` column on a row the coated contact FE answered (``fe_arc+coating``)
+COATED = "+coating"
 
 
 def edge_flags(r: ContactResult) -> list[str]:
@@ -71,19 +76,44 @@ def edge_flags(r: ContactResult) -> list[str]:
     return out
 
 
-def omitted_physics(scene) -> tuple[tuple[str, str], ...]:
-    """What the scene holds that the sweep's headline contact model (the 2D two-body contact of
-    homogeneous solid bodies at ``Fc / length``) leaves out: ``(flag, sentence)`` pairs. The
-    flag goes into the ``flags`` of every ``ok`` row, the sentence into the summary line and
-    ``report.md``, so a headline never omits physics silently.
-
-    A hardened case is not listed: it changes no elastic constant, so the headline contact is
-    the case-hardened body's; the case's strength is checked in the ``case_*`` columns.
+def coating_in_headline(scene, method: str = "fe") -> bool:
+    """True when the sweep's headline contact carries the scene's coating: the FE answers
+    (method ``fe`` or ``auto``, which gives a coated scene's rows to the FE) and the follower
+    is not flat-faced (its real-cam model has no coating band).
 
     Parameters
     ----------
     scene : femcam.scene.Scene
         The scene swept.
+    method : str, optional
+        The sweep's method (``fe``, ``auto`` or ``hertz``).
+
+    Returns
+    -------
+    bool
+        The coated model answers the headline (False for an uncoated scene).
+    """
+    return (bool(scene_coatings(scene)) and method != "hertz"
+            and getattr(scene.follower, "kind", "roller") != "flat_faced")
+
+
+def omitted_physics(scene, method: str = "fe") -> tuple[tuple[str, str], ...]:
+    """What the scene holds that the sweep's headline contact model (the 2D two-body contact of
+    the solid bodies at ``Fc / length``) leaves out: ``(flag, sentence)`` pairs. The flag goes
+    into the ``flags`` of every ``ok`` row, the sentence into the summary line and
+    ``report.md``, so a headline never omits physics silently.
+
+    A coating is listed only where the coated FE does not answer (:func:`coating_in_headline`:
+    method hertz, a flat-faced follower). A hardened case is not listed: it changes no elastic
+    constant, so the headline contact is the case-hardened body's; the case's strength is
+    checked in the ``case_*`` columns, from the headline solve's stress field.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept.
+    method : str, optional
+        The sweep's method (``fe``, ``auto`` or ``hertz``).
 
     Returns
     -------
@@ -92,11 +122,12 @@ def omitted_physics(scene) -> tuple[tuple[str, str], ...]:
         ``headline_2d_mean_load`` as they apply, each with its sentence.
     """
     out = []
-    for body, c in scene_coatings(scene):
+    for body, c in () if coating_in_headline(scene, method) else scene_coatings(scene):
         out.append(("headline_omits_coating",
-                    f"headline_omits_coating: {coating_phrase(body, c)} is not in the contact FE "
-                    "that answers a_fe, p0_fe and the stresses (uncoated bodies); its own stresses "
-                    "are the interface_* and coating_* columns"))
+                    f"headline_omits_coating: {coating_phrase(body, c)} is not in the contact "
+                    "model that answers here (method hertz, or a flat-faced follower's real-cam "
+                    "FE: homogeneous bodies); its own stresses are the interface_* and coating_* "
+                    "columns"))
     if has_support(scene):
         out.append(("headline_solid_roller",
                     f"headline_solid_roller: the roller runs on {scene.bodies['support']}, the "

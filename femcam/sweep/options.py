@@ -101,6 +101,16 @@ class ContactParams:
         cut for it) or ``"flat_faced"`` (``Rr`` = inf).
     face_length : float or None
         Flat face length (m, ``[follower] face_length_mm``).
+    coat_body : {"cam", "roller"} or None
+        The body whose coating band is in the contact FE (``[materials.<body>.coating]``);
+        None: homogeneous bodies. ``cam`` and ``roller`` stay the substrates, so Hertz
+        (``E_star``) is the homogeneous reference.
+    coat_thickness : float
+        Coating thickness (m; 0 without a coating).
+    coat_E : float
+        Coating Young's modulus (Pa; 0 without a coating).
+    coat_nu : float
+        Coating Poisson's ratio (-; 0 without a coating).
     """
 
     Rr: float
@@ -112,6 +122,17 @@ class ContactParams:
     sliding: int = 1
     kind: str = "roller"
     face_length: float | None = None
+    coat_body: str | None = None
+    coat_thickness: float = 0.0
+    coat_E: float = 0.0
+    coat_nu: float = 0.0
+
+    @property
+    def coating(self) -> Material | None:
+        """The coating's elastic constants (``coat_E`` Pa, ``coat_nu``), None when uncoated."""
+        if self.coat_body is None:
+            return None
+        return Material(E=self.coat_E, nu=self.coat_nu, name="coating")
 
     @property
     def E_star(self) -> float:
@@ -130,6 +151,8 @@ def contact_params(scene) -> ContactParams:
     Returns
     -------
     ContactParams
+        With the scene's coating (``[materials.<body>.coating]``: one coated body per scene,
+        the loader's rule) in ``coat_*``: the contact FE that answers the headline carries it.
 
     Raises
     ------
@@ -149,6 +172,12 @@ def contact_params(scene) -> ContactParams:
         R = float(tip)
     else:
         R = float(scene.follower.Rr)
+    coat = {}
+    for body, tabs in (getattr(scene, "layers", None) or {}).items():
+        if "coating" in tabs:
+            c = tabs["coating"]
+            coat = dict(coat_body=str(body), coat_thickness=float(c["thickness"]),
+                        coat_E=float(c["E"]), coat_nu=float(c["nu"]))
     return ContactParams(R, float(scene.length), scene.cam, scene.roller, float(scene.mu),
                          str(scene.plane), sliding, kind=kind,
-                         face_length=getattr(scene, "face_length", None))
+                         face_length=getattr(scene, "face_length", None), **coat)

@@ -49,7 +49,7 @@ from ..io import vtu_name, write_fe_vtu, write_hertz_vtu
 from ..wear.slip import SlipResult
 from .cache import ModelCache, default_cache
 from .extras import fill_extras
-from .headline import omitted_physics
+from .headline import COATED, omitted_physics
 from .options import ContactParams, SweepOptions, contact_params
 from .plan import hertz_half_width
 from .realcam import Traction, arc_error_estimate, contact_scene, hertz_within_tolerance, traction_args
@@ -252,7 +252,7 @@ def _run_chunk(task: ChunkTask) -> dict:
     _hertz_rows(rows, flags, good, cp, rows["Fc"], rows["rho"], opts.method)
     if cp.kind == "flat_faced":  # past the face end: an edge contact, never Hertz
         good = flat_edge_rows(task.scene, cp, rows, good)
-    vtk_fe = {}
+    vtk_fe, solved = {}, {}
     if opts.method == "hertz":
         rows["a_fe"][:] = np.nan
         rows["p0_fe"][:] = np.nan
@@ -262,11 +262,16 @@ def _run_chunk(task: ChunkTask) -> dict:
         if cp.kind == "flat_faced":
             vtk_fe = flat_rows(task, cp, rows, fe, default_cache(), flags)
         else:
-            vtk_fe = _fe_rows(task, cp, rows, flags, fe, default_cache())
+            solved = _fe_rows(task, cp, rows, flags, fe, default_cache())
+            vtk_fe = {i: r for i, r in solved.items()
+                      if task.vtk_dir is not None and task.vtk_mask is not None and task.vtk_mask[i]}
     fill_wear(rows, task.slip, task.wear_k, opts.method)
-    fill_extras(task, rows)  # extra column providers (femcam.sweep.extras), after contact and wear
+    # extra column providers (femcam.sweep.extras), after contact and wear; the layers take
+    # their columns from the solves that answered the headline
+    fill_extras(task, rows, solved)
+    solved = None
     _write_vtus(task, cp, rows, vtk_fe)  # last: not part of any timing column
-    omitted = [flag for flag, _ in omitted_physics(task.scene)]
+    omitted = [flag for flag, _ in omitted_physics(task.scene, opts.method)]
     for i in np.flatnonzero(rows["status"] == "ok"):   # never silently (femcam.sweep.extras)
         flags[i].extend(omitted)
     for i in range(n):
@@ -284,8 +289,8 @@ def _choose_models(task: ChunkTask, cp: ContactParams, rows, flags, good) -> np.
     e_arc, e_h = arc_error_estimate(task.scene, rows["theta"][good], rows["a_hertz"][good], cp.Rr)
     rows["est_err_arc"][good] = e_arc / 100.0
     rows["est_err_hertz"][good] = e_h / 100.0
-    if task.options.method != "auto":
-        return good
+    if task.options.method != "auto" or (cp.coat_body is not None and cp.kind != "flat_faced"):
+        return good   # a coated body: Hertz (homogeneous) is not the scene's model
     hz = (task.hertz[good] if task.hertz is not None else
           hertz_within_tolerance(e_h, task.jump[good] if task.jump is not None else None,
                                  task.options.tolerance))
@@ -294,14 +299,13 @@ def _choose_models(task: ChunkTask, cp: ContactParams, rows, flags, good) -> np.
 
 
 def _fe_rows(task: ChunkTask, cp: ContactParams, rows, flags, good, cache: ModelCache) -> dict:
-    """FE solve of rows ``good``; returns ``{row: ContactResult}`` of the rows that get a VTU."""
-    vtk_fe = {}
+    """FE solve of rows ``good``; returns ``{row: ContactResult}`` of the rows solved (the
+    VTUs and the layer columns are taken from them)."""
+    solved = {}
     for i in good:
         b0 = cache.stats["build_time"]
         try:
-            r = _fe_angle(task, cp, rows, flags, int(i), cache)
-            if task.vtk_dir is not None and task.vtk_mask is not None and task.vtk_mask[i]:
-                vtk_fe[int(i)] = r
+            solved[int(i)] = _fe_angle(task, cp, rows, flags, int(i), cache)
         except (FemcamError, ValueError, ArithmeticError, RuntimeError, MemoryError) as exc:
             rows["status"][i] = "failed"
             msg = f"{type(exc).__name__}: {exc}"
@@ -313,7 +317,7 @@ def _fe_rows(task: ChunkTask, cp: ContactParams, rows, flags, good, cache: Model
     with np.errstate(invalid="ignore", divide="ignore"):
         rows["err_a"][:] = np.where(ok, rows["a_fe"] / rows["a_hertz"] - 1.0, np.nan)
         rows["err_p0"][:] = np.where(ok, rows["p0_fe"] / rows["p0_hertz"] - 1.0, np.nan)
-    return vtk_fe
+    return solved
 
 
 def _fe_angle(task: ChunkTask, cp: ContactParams, rows, flags, i: int,
@@ -340,6 +344,8 @@ def _fe_angle(task: ChunkTask, cp: ContactParams, rows, flags, i: int,
     else:
         r = cache.solve(model, F, rho, cp.mu, sl, check=not own, Q=Q, rolling=roll)
         rows["model"][i] = "fe_arc"
+    if cp.coat_body is not None:   # the coating band is in this model (sweep.cache.build_model)
+        rows["model"][i] = rows["model"][i] + COATED
     rows["fe_time"][i] = r.timings["contact"] + r.timings.get("recovery", 0.0)
     flags[i].extend(fe_fill(rows, i, r))
     rows["Q_over_muFc"][i] = r.Q / (cp.mu * F) if cp.mu > 0 else np.nan

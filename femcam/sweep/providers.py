@@ -27,7 +27,7 @@ from ..errors import FemcamError
 from ..halfspace.rows import COLUMNS as HS_COLUMNS
 from ..halfspace.rows import finite_length_rows, strip_for_scene
 from ..io import vtu_name, write_global_cam_vtu
-from ..layers import scene_layer_rows
+from ..layers import result_layer_row, scene_layer_rows, scene_layers
 from ..wear.coating import coating_wear
 from ..wear.map import wear_depth_per_angle
 from .cache import default_cache
@@ -446,9 +446,15 @@ def cam_disk_vtus(task, model, Fc) -> None:
         write_global_cam_vtu(path, model, C, n, float(Fc[i]), theta=float(task.theta[i]))
 
 
-def layers_chunk(task, rows) -> dict:
+def layers_chunk(task, rows, solved) -> dict:
     """The coating interface and case-hardening columns of one chunk (the scene's layers);
     NaN where there is no contact.
+
+    An ``ok`` row the FE answered takes them from the stress field of that very solve (the
+    coated model of the headline, :func:`femcam.sweep.cache.build_model`; ``layer_source =
+    "headline"``); a contact row without one (method hertz, a Hertz row of method auto, a
+    failed FE row, a flat-faced follower) from the layered FE of the angle alone
+    (:func:`femcam.layers.scene_layer_rows`, ``layer_source = "layer_model"``).
 
     Parameters
     ----------
@@ -456,21 +462,39 @@ def layers_chunk(task, rows) -> dict:
         The chunk (scene, ``theta`` [rad], options, slip, ``wear_k``).
     rows : dict[str, ndarray]
         The chunk's table with the contact and wear columns filled (SI).
+    solved : dict[int, femcam.fe.ContactResult]
+        The FE solves that answered the chunk's rows (row index -> result).
 
     Returns
     -------
     dict[str, ndarray]
         ``layer_*`` columns under their SI names, SI values (:data:`LAYERS`; the CSV names
-        carry the unit).
+        carry the unit), and the text column ``layer_source``.
     """
     n = task.theta.size
     out = {si: np.full(n, np.nan) for si, _, _ in LAYERS}
-    idx = np.flatnonzero(_contact_rows(rows))
+    out["layer_source"] = np.full(n, "", dtype=object)
+    status = np.asarray(rows["status"]).astype(str)
+    contact = _contact_rows(rows)
+    head = [i for i in np.flatnonzero(contact) if i in solved and status[i] == "ok"]
+    if head:
+        lay = scene_layers(task.scene)
+        kw = dict(coating=lay["coating"][1] if lay["coating"] else None,
+                  coat_body=lay["coating"][0] if lay["coating"] else "roller",
+                  case=lay["case"][1] if lay["case"] else None,
+                  case_body=lay["case"][0] if lay["case"] else "cam")
+        for i in head:
+            r = result_layer_row(solved[i], **kw)
+            for si, csv, f in LAYERS:
+                out[si][i] = r[csv] / f
+            out["layer_source"][i] = "headline"
+    idx = np.setdiff1d(np.flatnonzero(contact), np.asarray(head, int))
     if idx.size:
         r = scene_layer_rows(task.scene, task.theta[idx], a_over_h=task.options.a_over_h)
         for si, csv, f in LAYERS:
             if csv in r:
                 out[si][idx] = np.asarray(r[csv], float) / f
+        out["layer_source"][idx] = "layer_model"
     return out
 
 

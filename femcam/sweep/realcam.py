@@ -348,11 +348,12 @@ def auto_hertz_rows(scene, cp, options, theta, F, rho, contact, jump) -> np.ndar
     Returns
     -------
     ndarray of bool, shape (n,)
-        Rows Hertz answers.
+        Rows Hertz answers (none for a coated roller or knife-edge scene: its Hertz error
+        estimate knows no coating, the coated FE answers).
     """
     n = np.asarray(theta).size
-    if options.method != "auto":
-        return np.zeros(n, bool)
+    if options.method != "auto" or (cp.coat_body is not None and cp.kind != "flat_faced"):
+        return np.zeros(n, bool)   # a coated body: Hertz (homogeneous) is not the scene's model
     F = np.clip(np.asarray(F, float), 0.0, None)
     rho = np.asarray(rho, float)
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -432,7 +433,8 @@ def real_cam_summary(table, traction: Traction | None) -> dict:
     dict
         ``{"models": {model: count}, "n_curvature_jump", "n_edge_contact", "traction"}``.
     """
-    models = {m: int(np.count_nonzero(table["model"] == m)) for m in MODELS}
+    base = np.array([str(m).split("+")[0] for m in table["model"]], dtype=str)   # fe_arc+coating
+    models = {m: int(np.count_nonzero(base == m)) for m in MODELS}
     return {"models": models, "n_curvature_jump": int(np.nansum(table["curvature_jump"] == 1)),
             "n_edge_contact": int(np.count_nonzero(table["status"] == "edge_contact")),
             "traction": traction.source if traction is not None else "none (method hertz)"}

@@ -43,6 +43,9 @@ MODEL_REASONS = {
               "within the tolerance",
     "fe_exact": "FE contact with the exact cam gap: a curvature jump, or the arc-gap estimate "
                 "exceeds the tolerance",
+    "fe_arc+coating": "FE contact with the osculating-arc gap, the coating band in the coated body "
+                      "(the scene's coated model answers the headline)",
+    "fe_exact+coating": "FE contact with the exact cam gap, the coating band in the coated body",
     "": "no model (no contact, or the row was not solved; see status)",
 }
 

@@ -210,6 +210,7 @@ class SweepResult:
             exact-gap ``fe_exact`` rows), ``err_p0_absmax_exact`` (relative, the exact-gap rows at
             a curvature jump, which the arc-gap Hertz cannot see: a departure, not an error),
             ``n_vs_hertz`` (FE rows compared with Hertz), ``n_exact`` (exact-gap rows),
+            ``n_coated`` (rows the coated model answered),
             ``n_binned`` (FE rows on binned models without a verified family: flat-faced),
             ``n_liftoff``, ``n_failed``, ``n_undercut``, ``n_families`` (counts),
             ``reuse_error_max`` (relative), ``wear_depth_max`` (m per revolution), ``extras``
@@ -223,6 +224,8 @@ class SweepResult:
             return float(np.nanmax(v)) if np.any(np.isfinite(v)) else float("nan")
 
         model = np.asarray(t["model"]).astype(str) if "model" in t else np.full(ok.shape, "")
+        coated = ok & np.char.endswith(model, "+coating")   # the coated model answered
+        model = np.array([m.split("+")[0] for m in model], dtype=str)   # fe_arc+coating: fe_arc
         exact = ok & (model == "fe_exact")   # exact-gap FE: Hertz (arc gap) is not its reference
         family = np.asarray(t["family"], float) if "family" in t else np.zeros(ok.shape)
         binned = ok & np.isin(model, ("fe_arc", "fe_exact")) & ~(family >= 0)
@@ -239,6 +242,7 @@ class SweepResult:
             "err_p0_absmax_exact": peak("err_p0", exact),
             "n_vs_hertz": int(np.count_nonzero(ok & ~exact & np.isfinite(t["err_p0"]))),
             "n_exact": int(np.count_nonzero(exact)),
+            "n_coated": int(np.count_nonzero(coated)),
             "n_binned": int(np.count_nonzero(binned)),
             "err_a_absmax": peak("err_a"),
             "n_liftoff": int(np.count_nonzero(t["status"] == "liftoff")),
@@ -383,6 +387,10 @@ def hertz_check_text(s: dict) -> str:
         parts.append(f"{s['n_exact']} exact-gap rows: no Hertz reference (a join where the cam's "
                      f"curvature or its rate jumps: the parabolic gap of Hertz does not hold; they "
                      f"depart from Hertz by up to {100 * s['err_p0_absmax_exact']:.3f} %)")
+    if s.get("n_coated", 0):
+        parts.append(f"{s['n_coated']} rows answered by the coated model: Hertz (homogeneous "
+                     "substrates) is the reference there, the difference is the coating's effect "
+                     "plus the FE error")
     return "; ".join(parts) or "no FE row compared with Hertz"
 
 

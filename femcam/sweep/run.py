@@ -189,7 +189,8 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
                       scene_hash=run.shash, command=command, options=options,
                       families=[r.to_dict() for r in run.records] if fe else None,
                       wear=run.wear.to_dict())
-    prov["extras"] = extras_provenance(run.scene, table, tolerance=run.opts.tolerance)
+    prov["extras"] = extras_provenance(run.scene, table, tolerance=run.opts.tolerance,
+                                        method=run.opts.method)
     # what an assessment of this folder checks its scene against (femcam.assess.sweep_table)
     prov["scene_physics_parts"] = physics_parts(run.scene)
     prov["scene_physics_sha256"] = physics_hash(run.scene)
