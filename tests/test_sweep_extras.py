@@ -228,11 +228,11 @@ def test_fe_answers_at_the_most_loaded_slice(tmp_path):
     th = np.radians([0.0, 230.0])
     _, cols = _sweep_csv(scene, th, tmp_path, method="fe")
     w = cols["w_max_N_per_mm"] * 1e3
-    np.testing.assert_allclose(cols["fe_slice_F_N"], w * scene.length, rtol=RTOL)
+    np.testing.assert_allclose(cols["F_peak_slice_N"], w * scene.length, rtol=RTOL)
     R = 1.0 / (1.0 / (cols["rho_mm"] * 1e-3) + 1.0 / scene.follower.Rr)
     E_star = 1.0 / (2.0 * (1.0 - 0.3**2) / 210e9)             # plane strain, steel on steel
     p0_ref = np.sqrt(w * E_star / (math.pi * R))
-    np.testing.assert_allclose(cols["fe_slice_p0_MPa"] * 1e6, p0_ref, rtol=1e-2)
+    np.testing.assert_allclose(cols["p0_peak_slice_MPa"] * 1e6, p0_ref, rtol=1e-2)
     assert list(cols["fe_load_basis"]) == ["w_max*length"] * 2
     # the mean-load FE columns are untouched: still the Hertz load Fc / length
     p0_mean = np.sqrt(cols["Fc_N"] / scene.length * E_star / (math.pi * R))

@@ -64,6 +64,7 @@ from .realrows import (
     hertz_stress,
 )
 from .result import TEXT_COLUMNS, empty_rows
+from .ringhead import ring_headline
 from .wear import fill_wear
 
 #: result columns that are 0 (not NaN) at lift-off: no contact has zero width and zero pressure
@@ -263,7 +264,9 @@ def _run_chunk(task: ChunkTask) -> dict:
             vtk_fe = flat_rows(task, cp, rows, fe, default_cache(), flags)
         else:
             vtk_fe = _fe_rows(task, cp, rows, flags, fe, default_cache())
-    fill_wear(rows, task.slip, task.wear_k, opts.method)
+    ring = ring_headline(task, rows)  # a roller on a pin or needles: the ring answers
+    fill_wear(rows, task.slip, task.wear_k, "fe" if ring.any() else opts.method)
+    rows["wear_source"] = np.where(ring & (rows["wear_source"] == "fe"), "ring", rows["wear_source"])
     fill_extras(task, rows)  # extra column providers (femcam.sweep.extras), after contact and wear
     _write_vtus(task, cp, rows, vtk_fe)  # last: not part of any timing column
     omitted = [flag for flag, _ in omitted_physics(task.scene)]
