@@ -137,7 +137,8 @@ def _one(model, F, r, needles, Z):
     ang = math.remainder(best.hoop_theta + 0.5 * math.pi, 2 * math.pi)
     dist = {"needle_loads_on": res[0].needle_Q, "needle_loads_between": res[-1].needle_Q,
             "bore_pressure": best.bore_p}
-    return dist, {"p0": best.p0, "a": best.a, "p0_peak": float(np.max(best.p)), "p0_solid": best.hertz_p0, "a_solid": best.hertz_a,
+    return dist, {"p0": best.p0, "a": best.a, "p0_peak": float(np.max(best.p)),
+            "p0_solid": best.hertz_p0, "a_solid": best.hertz_a,
             "dp0": best.p0 / best.hertz_p0 - 1, "da": best.a / best.hertz_a - 1,
             "hoop_max": best.hoop_max, "hoop_angle": ang, "pin_p0": best.pin_p0, "pin_arc": best.pin_arc,
             "needle_Q_on": res[0].needle_Q_max,

@@ -301,7 +301,8 @@ def extras_provenance(scene, table, tolerance: float | None = None) -> dict:
     """Which providers ran and their summary over the swept angles (JSON-able).
 
     ``providers``: names; ``headline``: what the headline model omits (:func:`omitted_physics`)
-    and which model answers it (:func:`answered_by`), one sentence each; ``columns``: the SI names of their columns; ``errors``: the refusals;
+    and which model answers it (:func:`answered_by`), one sentence each; ``columns``: the SI
+    names of their columns; ``errors``: the refusals;
     ``refused``: the same, one record per provider (:func:`femcam.sweep.worst.refusals`);
     ``assess``: the worst angle per criterion (:func:`femcam.assess.worst_angles`:
     ``{criterion: {"value", "theta_deg"}}``);

@@ -137,7 +137,8 @@ ASSESS = tuple((assess_name(si), csv if csv not in ("a_um", "p0_MPa") else f"ass
 ASSESS_TEXT = ("assess_regime", "assess_flags", "assess_source")
 #: the 2D FE at the most loaded slice (method fe): F = w_max * length
 FE_SLICE = (("F_peak_slice", "F_peak_slice_N", 1.0), ("a_peak_slice", "a_peak_slice_um", 1e6),
-            ("p0_peak_slice", "p0_peak_slice_MPa", 1e-6), ("vm_max_peak_slice", "vm_max_peak_slice_MPa", 1e-6),
+            ("p0_peak_slice", "p0_peak_slice_MPa", 1e-6),
+            ("vm_max_peak_slice", "vm_max_peak_slice_MPa", 1e-6),
             ("tau1_max_peak_slice", "tau1_max_peak_slice_MPa", 1e-6),
             ("surf_txz_absmax_peak_slice", "surf_txz_absmax_peak_slice_MPa", 1e-6),
             ("txz_range_max_peak_slice", "txz_range_max_peak_slice_MPa", 1e-6))

@@ -43,7 +43,8 @@ exact-gap half-space solve within 0.15 %, the fit is off by up to 1.5 % (docs/sw
 column answers what").
 
 Real-cam columns (:mod:`femcam.sweep.realcam`): ``model`` (``hertz``, ``fe_arc``, ``fe_exact``:
-which model answered; ``+ring`` when the ring model answered the contact), ``est_err_arc_pct``/``est_err_hertz_pct`` (estimated p0 error of the
+which model answered; ``+ring`` when the ring model answered the contact),
+``est_err_arc_pct``/``est_err_hertz_pct`` (estimated p0 error of the
 cheaper models), ``curvature_jump`` (1 inside a curvature jump's straddle span),
 ``exact_vs_arc_p0_pct`` (peak p0 of the arc-gap FE vs the exact-gap FE, jump rows), ``Q_N``
 (tangential force on the cam along local x), ``Q_over_muFc``, ``stick_width_um``,
