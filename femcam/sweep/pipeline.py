@@ -365,7 +365,7 @@ def _write_vtus(task: ChunkTask, cp: ContactParams, rows, vtk_fe: dict) -> None:
         return
     for i, r in vtk_fe.items():
         write_fe_vtu(Path(task.vtk_dir) / vtu_name(task.theta[i]), r, wear=_vtu_wear(task, rows, i))
-    analytic = (rows["status"] == "ok") & (rows["model"] == "hertz")
+    analytic = (rows["status"] == "ok") & np.isin(rows["model"], ("hertz", "hertz+ring"))
     if task.options.method == "hertz":
         analytic = rows["status"] == "ok"
     for i in np.flatnonzero(task.vtk_mask & analytic):

@@ -240,6 +240,7 @@ class SweepResult:
             return float(np.nanmax(v)) if np.any(np.isfinite(v)) else float("nan")
 
         model = np.asarray(t["model"]).astype(str) if "model" in t else np.full(ok.shape, "")
+        model = np.char.replace(model, "+ring", "")   # the solid answer a ring row was scaled from
         exact = ok & (model == "fe_exact")   # exact-gap FE: Hertz (arc gap) is not its reference
         family = np.asarray(t["family"], float) if "family" in t else np.zeros(ok.shape)
         binned = ok & np.isin(model, ("fe_arc", "fe_exact")) & ~(family >= 0)
