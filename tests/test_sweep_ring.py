@@ -132,3 +132,17 @@ def test_no_column_claims_the_headline_twice():
     assert "p0_peak_slice_MPa" in sentence and "MOST LOADED slice" in sentence
     shaft = load_scene(EX / "seed002_cam_on_shaft.toml")
     assert omitted_physics(shaft) == () and answered_by(shaft)[0].startswith("headline_cam_disk:")
+
+
+def test_finite_length_summary_says_which_p0_is_which(tmp_path, capsys):
+    """The crowned example on the console: the 2D p0 is said to be at the mean load, the most
+    loaded slice is named by its column, and the report carries the same sentence."""
+    from femcam.cli import main
+
+    assert main(["sweep", str(EX / "seed002_crowned.toml"), "--out", str(tmp_path / "o"),
+                 "--angles-deg", "44:45:1", "--no-plots", "--vtk-every", "0", "--mesh-size", "6",
+                 "--workers", "1"]) == 0
+    printed = capsys.readouterr().out
+    assert "(peak of the solved pressure, 2D at the mean load Fc / length)" in printed
+    line = next(x.strip() for x in printed.splitlines() if "headline_2d_mean_load:" in x)
+    assert "p0_peak_slice_MPa" in line and line in (tmp_path / "o" / "report.md").read_text()
