@@ -106,8 +106,8 @@ def omitted_physics(scene) -> tuple[tuple[str, str], ...]:
                     "headline_2d_mean_load: finite length, two answers side by side: p0_fe_MPa, "
                     "a_fe_um and the stress columns are the 2D contact at the MEAN load Fc / length; "
                     "p0_peak_slice_MPa, a_peak_slice_um and *_peak_slice_MPa are the 2D FE at the "
-                    "MOST LOADED slice (w_max * length; the 3D half-space peak is p_axial_peak_MPa); "
-                    "wear and the assessment use the most loaded slice"))
+                    "MOST LOADED slice (method fe, F = w_max * length; the 3D half-space peak is "
+                    "p_axial_peak_MPa); wear and the assessment use the most loaded slice"))
     return tuple(out)
 
 
