@@ -83,9 +83,10 @@ for ax in (ax1, ax2):
 # %%
 # Over the revolution
 # -------------------
-# ``ring_rows`` gives the sweep's ring columns per angle with the same model (both cage
-# positions each time): the bore hoop maximum and the most loaded needle follow the contact
-# force.
+# ``ring_rows`` gives the ring's rows per angle with the same model (both cage positions each
+# time): the bore hoop maximum and the most loaded needle follow the contact force. In
+# ``femcam sweep`` the same rows answer the headline: ``p0_fe_MPa`` is ``ring_rows``' peak
+# ``p0_peak`` (model ``fe_arc+ring``), and the bore and needle columns sit beside it.
 rows = ring_rows(sc, theta, st.Fc, st.rho, model=model)
 deg = np.degrees(rows["theta"])
 fig, ax = plt.subplots(figsize=(6.4, 3.6), constrained_layout=True)

@@ -150,7 +150,7 @@ def test_halfspace_extras_plot_says_what_it_shows(tmp_path, monkeypatch):
     theta = np.radians(np.arange(0.0, 360.0, 30.0))
     one = np.ones_like(theta)
     table = {"theta": theta, "status": np.array(["ok"] * theta.size), "hs_p_axial_peak": 2e9 * one,
-             "p0_hertz": 1e9 * one, "hs_fe_p0": 1.1e9 * one, "hs_w_max": 3e5 * one}
+             "p0_hertz": 1e9 * one, "p0_peak_slice": 1.1e9 * one, "hs_w_max": 3e5 * one}
     paths = plot_extras(sc, table, tmp_path)
     assert "plot_extras_halfspace" in paths and len(figs) == 1
     fig = figs[0]

@@ -94,5 +94,5 @@ def test_fe_sweep_of_the_crowned_roller_does_not_depend_on_chunk_size():
     th = np.radians([0.0, 50.0, 130.0])
     t = [sweep(scene, angles=th, method="fe", chunk_size=c, workers=1, plots=False, vtk_every=0).table
          for c in (1, 3)]
-    assert np.all(np.isfinite(np.asarray(t[0]["hs_fe_p0"], float)))
+    assert np.all(np.isfinite(np.asarray(t[0]["p0_peak_slice"], float)))
     _assert_identical(t[0], t[1], [c for c in t[0] if c not in TIMING])

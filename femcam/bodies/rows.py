@@ -13,8 +13,9 @@ Columns (key: meaning, SI unit -> CSV name):
 
 ==================  ==========================================================  ====================
 ``theta``           cam angle (rad)                                             ``theta_deg``
-``p0``, ``a``       cam-roller peak pressure and half-width on the ring          ``ring_p0_MPa``,
-                                                                                ``ring_a_um``
+``p0``, ``a``       cam-roller pressure and half-width on the ring (the Hertz    ``ring_p0_MPa``,
+                    ellipse fitted to the solved pressure)                      ``ring_a_um``
+``p0_peak``         cam-roller peak of the solved pressure on the ring (Pa)     ``ring_p0_peak_MPa``
 ``p0_solid``,       Hertz solid roller (Johnson 1985 eq. 4.45)                   ``solid_p0_MPa``,
 ``a_solid``                                                                     ``solid_a_um``
 ``dp0``, ``da``     relative change ring vs solid (-)                           ``ring_dp0_pct``,
@@ -51,6 +52,7 @@ from .solve import solve_ring
 #: key -> (CSV column name, factor from SI)
 CSV_COLUMNS = {
     "theta": ("theta_deg", 180.0 / math.pi), "p0": ("ring_p0_MPa", 1e-6), "a": ("ring_a_um", 1e6),
+    "p0_peak": ("ring_p0_peak_MPa", 1e-6),
     "p0_solid": ("solid_p0_MPa", 1e-6), "a_solid": ("solid_a_um", 1e6), "dp0": ("ring_dp0_pct", 100.0),
     "da": ("ring_da_pct", 100.0), "hoop_max": ("bore_hoop_max_MPa", 1e-6),
     "hoop_angle": ("bore_hoop_angle_deg", 180.0 / math.pi), "pin_p0": ("pin_p0_MPa", 1e-6),
@@ -135,7 +137,8 @@ def _one(model, F, r, needles, Z):
     ang = math.remainder(best.hoop_theta + 0.5 * math.pi, 2 * math.pi)
     dist = {"needle_loads_on": res[0].needle_Q, "needle_loads_between": res[-1].needle_Q,
             "bore_pressure": best.bore_p}
-    return dist, {"p0": best.p0, "a": best.a, "p0_solid": best.hertz_p0, "a_solid": best.hertz_a,
+    return dist, {"p0": best.p0, "a": best.a, "p0_peak": float(np.max(best.p)),
+            "p0_solid": best.hertz_p0, "a_solid": best.hertz_a,
             "dp0": best.p0 / best.hertz_p0 - 1, "da": best.a / best.hertz_a - 1,
             "hoop_max": best.hoop_max, "hoop_angle": ang, "pin_p0": best.pin_p0, "pin_arc": best.pin_arc,
             "needle_Q_on": res[0].needle_Q_max,

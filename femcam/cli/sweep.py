@@ -307,8 +307,10 @@ def _print_summary(res) -> None:
               f"{o.get('workers')}" + (f" ({o['workers_reason']})" if o.get("workers_reason") else ""))
     print(f"  peak Fc {s['Fc_max']:.1f} N, p0 Hertz {s['p0_hertz_max'] / 1e6:.1f} MPa"
           + (f", p0 FE {s['p0_fe_max'] / 1e6:.1f} MPa (peak of the solved pressure"
-             + (", coated model)" if s.get("n_coated") else ")")
-             if res.method == "fe" else "")
+             + (", 2D at the mean load Fc / length"
+                if "halfspace" in s.get("extras", {}).get("providers", ()) else "")
+             + (", coated model" if s.get("n_coated") else "") + ")"
+             if res.method == "fe" or math.isfinite(s["p0_fe_max"]) else "")   # a ring: any method
           + f", von Mises {s['vm_max'] / 1e6:.1f} MPa, tau1 {s['tau1_max'] / 1e6:.1f} MPa")
     if res.method == "fe":
         print(f"  p0 FE vs Hertz: {hertz_check_text(s)}")

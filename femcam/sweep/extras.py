@@ -15,8 +15,10 @@ provider       applies when                                 columns (CSV)
 ``assess``     ``scene.tribology`` has a lubricant          ``lambda``, ``h_min_um``, ``dT_flash_K``,
                                                             ``sf_*``, ... , ``assess_regime``,
                                                             ``assess_flags``, ``assess_source``
-``bodies``     ``roller_support`` is ``pin``/``needles``    ``ring_p0_MPa``, ``bore_hoop_max_MPa``,
-                                                            ``pin_p0_MPa``, ``needle_Qmax_on_N``, ...
+``bodies``     ``roller_support`` is ``pin``/``needles``    ``bore_hoop_max_MPa``, ``pin_p0_MPa``,
+                                                            ``needle_Qmax_on_N``, ... (the ring's
+                                                            contact answers the headline,
+                                                            :mod:`femcam.sweep.ringhead`)
 ``cam_disk``   ``[cam] bore_mm`` given                       ``cam_bore_hoop_max_MPa``, ``shaft_p0_MPa``, ...
 ``layers``     ``scene.layers`` non-empty                   ``interface_tau_max_MPa``, ``case_margin``, ...
 ``coating_``   a coated cam with ``wear_k_mm3_per_N_m`` or  (none: the wear column uses the coating's k,
@@ -26,9 +28,9 @@ provider       applies when                                 columns (CSV)
 Finite length (the axial slices of :mod:`femcam.halfspace.strip`):
 
 * the 2D FE answers again at the most loaded slice with that slice's load per unit length
-  (method fe): ``F = w_max * length``, columns ``fe_slice_F_N``, ``fe_slice_a_um``,
-  ``fe_slice_p0_MPa`` (the peak of the solved pressure), ``fe_slice_vm_max_MPa``,
-  ``fe_slice_tau1_max_MPa``, ``fe_slice_surf_txz_absmax_MPa``, ``fe_slice_txz_range_max_MPa``
+  (method fe): ``F = w_max * length``, columns ``F_peak_slice_N``, ``a_peak_slice_um``,
+  ``p0_peak_slice_MPa`` (the peak of the solved pressure), ``vm_max_peak_slice_MPa``,
+  ``tau1_max_peak_slice_MPa``, ``surf_txz_absmax_peak_slice_MPa``, ``txz_range_max_peak_slice_MPa``
   (the range of ``txz`` over one pass, fed to the assessment's subsurface fatigue) and the text
   column ``fe_load_basis = "w_max*length"``; the sweep's
   own FE columns (``a_fe``, ``p0_fe``, ``vm_max``, ...) stay at the mean load ``Fc / length``,
@@ -66,7 +68,7 @@ from ..halfspace.rows import has_finite_length
 from ..io import write_pvd
 from ..viz.extras import plot_extra_panels
 from ..wear.coating import coating_wear
-from .headline import omitted_physics
+from .headline import answered_by, omitted_physics
 from .providers import (
     ASSESS,
     ASSESS_PANELS,
@@ -305,8 +307,9 @@ def extras_files(scene, table, out, vtk_mask) -> dict[str, str]:
 def extras_provenance(scene, table, tolerance: float | None = None, method: str = "fe") -> dict:
     """Which providers ran and their summary over the swept angles (JSON-able).
 
-    ``providers``: names; ``headline``: what the headline model omits (:func:`omitted_physics`,
-    one sentence each); ``columns``: the SI names of their columns; ``errors``: the refusals;
+    ``providers``: names; ``headline``: what the headline model omits (:func:`omitted_physics`)
+    and which model answers it (:func:`answered_by`), one sentence each; ``columns``: the SI
+    names of their columns; ``errors``: the refusals;
     ``refused``: the same, one record per provider (:func:`femcam.sweep.worst.refusals`);
     ``assess``: the worst angle per criterion (:func:`femcam.assess.worst_angles`:
     ``{criterion: {"value", "theta_deg"}}``);
@@ -337,9 +340,9 @@ def extras_provenance(scene, table, tolerance: float | None = None, method: str 
     """
     ps = providers_for(scene)
     out = {"providers": [p.name for p in ps]}
-    omitted = omitted_physics(scene, method)
-    if omitted:
-        out["headline"] = [sentence for _, sentence in omitted]
+    headline = [sentence for _, sentence in omitted_physics(scene, method)] + list(answered_by(scene))
+    if headline:
+        out["headline"] = headline
     if not ps:
         return out
     cols, text = extra_columns(scene)
@@ -360,7 +363,7 @@ def extras_provenance(scene, table, tolerance: float | None = None, method: str 
     if "halfspace" in names:
         out["halfspace"] = {"p_axial_peak_max_MPa": _peak(table, "hs_p_axial_peak", ok) * 1e-6,
                             "wear": "most loaded slice: p0 = p_axial_peak, a = 2 w_max/(pi p0)",
-                            "fe_load_basis": ("a_fe, p0_fe, vm_max, ...: mean load Fc; fe_slice_*: "
+                            "fe_load_basis": ("a_fe, p0_fe, vm_max, ...: mean load Fc; *_peak_slice: "
                                               "F = w_max * length (most loaded slice)")}
     if "bodies" in names:
         out["bodies"] = {"bore_hoop_max_MPa": _peak(table, "ring_hoop_max", ok) * 1e-6,

@@ -1,14 +1,16 @@
 """What the sweep's headline columns are, and where they cannot be taken at face value.
 
-The headline contact model of every row is the 2D contact of the two solid bodies at
-``Fc / length`` (:mod:`femcam.sweep.table`, "which column answers what"); a coating is in it
-(the coated model answers: ``model`` reads ``fe_arc+coating``, :data:`COATED`), except on
-Hertz rows (method hertz) and flat-faced followers. Two things are said
+The headline contact model of every row is the 2D contact of the scene's bodies at ``Fc /
+length`` (:mod:`femcam.sweep.table`, "which column answers what"): a coating is in it (the
+coated model answers: ``model`` reads ``fe_arc+coating``, :data:`COATED`), except on Hertz rows
+(method hertz) and flat-faced followers; a roller on a pin or needles is the ring model's
+(:mod:`femcam.sweep.ringhead`, ``model`` ``...+ring``), a cam on its shaft the local cam body
+verified against the whole disk (:func:`answered_by`). Two things are said
 per row in ``flags``, never left silent:
 
-* :func:`omitted_physics` -- the scene holds physics that model leaves out (a coating, a ring
-  on a pin or needles, a cam on its shaft, a finite contact length); the flag also goes into the
-  summary line and ``report.md`` (``provenance["extras"]["headline"]``);
+* :func:`omitted_physics` -- the scene holds physics that model leaves out (a coating, a finite
+  contact length); the flag also goes into the summary line and ``report.md``
+  (``provenance["extras"]["headline"]``, with the sentences of :func:`answered_by`);
 * :func:`edge_flags` -- an FE surface extreme (``surf_*``) that is a value of the
   discretisation's contact-edge singularity, not a result.
 """
@@ -106,7 +108,9 @@ def omitted_physics(scene, method: str = "fe") -> tuple[tuple[str, str], ...]:
     A coating is listed only where the coated FE does not answer (:func:`coating_in_headline`:
     method hertz, a flat-faced follower). A hardened case is not listed: it changes no elastic
     constant, so the headline contact is the case-hardened body's; the case's strength is
-    checked in the ``case_*`` columns, from the headline solve's stress field.
+    checked in the ``case_*`` columns, from the headline solve's stress field. A ring on a pin
+    or needles and a cam on its shaft are not listed either: their models answer the headline
+    (:func:`answered_by`).
 
     Parameters
     ----------
@@ -118,8 +122,8 @@ def omitted_physics(scene, method: str = "fe") -> tuple[tuple[str, str], ...]:
     Returns
     -------
     tuple of (str, str)
-        ``headline_omits_coating``, ``headline_solid_roller``, ``headline_solid_cam``,
-        ``headline_2d_mean_load`` as they apply, each with its sentence.
+        ``headline_omits_coating``, ``headline_2d_mean_load`` as they apply, each with its
+        sentence.
     """
     out = []
     for body, c in () if coating_in_headline(scene, method) else scene_coatings(scene):
@@ -128,16 +132,39 @@ def omitted_physics(scene, method: str = "fe") -> tuple[tuple[str, str], ...]:
                     "model that answers here (method hertz, or a flat-faced follower's real-cam "
                     "FE: homogeneous bodies); its own stresses are the interface_* and coating_* "
                     "columns"))
-    if has_support(scene):
-        out.append(("headline_solid_roller",
-                    f"headline_solid_roller: the roller runs on {scene.bodies['support']}, the "
-                    "headline contact is the solid roller's; the ring's own contact is ring_p0_MPa"))
-    if has_cam_bore(scene):
-        out.append(("headline_solid_cam",
-                    "headline_solid_cam: the cam sits on its shaft, the headline contact is a solid "
-                    "cam's; the cam disk is in the cam_bore_* and shaft_* columns"))
     if has_finite_length(scene):
         out.append(("headline_2d_mean_load",
-                    "headline_2d_mean_load: finite length, the headline is the 2D contact at the mean "
-                    "load Fc / length; the most loaded slice is p_axial_peak_MPa and fe_slice_*"))
+                    "headline_2d_mean_load: finite length, two answers side by side: p0_fe_MPa, "
+                    "a_fe_um and the stress columns are the 2D contact at the MEAN load Fc / length; "
+                    "p0_peak_slice_MPa, a_peak_slice_um and *_peak_slice_MPa are the 2D FE at the "
+                    "MOST LOADED slice (method fe, F = w_max * length; the 3D half-space peak is "
+                    "p_axial_peak_MPa); wear and the assessment use the most loaded slice"))
+    return tuple(out)
+
+
+def answered_by(scene) -> tuple[str, ...]:
+    """Which model answers the headline where the scene holds real bodies (one sentence each,
+    for the summary line and ``report.md``; no row flag: the row's ``model`` column says it).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept.
+
+    Returns
+    -------
+    tuple of str
+        ``headline_ring: ...`` (a roller on a pin or needles) and ``headline_cam_disk: ...``
+        (a cam on its shaft) as they apply.
+    """
+    out = []
+    if has_support(scene):
+        out.append(f"headline_ring: the roller runs on {scene.bodies['support']}; p0_fe, a_fe and "
+                   "err_* are the ring model's contact (model ...+ring), its stresses the solid "
+                   "roller's scaled to it (global-local); p0_hertz is the solid roller's Hertz")
+    if has_cam_bore(scene):
+        out.append("headline_cam_disk: the cam sits on its shaft; the contact columns are the "
+                   "local cam body's (global-local), checked once against the fully refined "
+                   "disk at the peak force (cam disk check below); the disk is in the cam_bore_* "
+                   "and shaft_* columns")
     return tuple(out)

@@ -63,6 +63,7 @@ from .realrows import (
     hertz_row_traction,
     hertz_stress,
 )
+from .ringhead import ring_headline
 from .table import TEXT_COLUMNS, empty_rows
 from .wear import fill_wear
 
@@ -265,7 +266,9 @@ def _run_chunk(task: ChunkTask) -> dict:
             solved = _fe_rows(task, cp, rows, flags, fe, default_cache())
             vtk_fe = {i: r for i, r in solved.items()
                       if task.vtk_dir is not None and task.vtk_mask is not None and task.vtk_mask[i]}
-    fill_wear(rows, task.slip, task.wear_k, opts.method)
+    ring = ring_headline(task, rows)  # a roller on a pin or needles: the ring answers
+    fill_wear(rows, task.slip, task.wear_k, "fe" if ring.any() else opts.method)
+    rows["wear_source"] = np.where(ring & (rows["wear_source"] == "fe"), "ring", rows["wear_source"])
     # extra column providers (femcam.sweep.extras), after contact and wear; the layers take
     # their columns from the solves that answered the headline
     fill_extras(task, rows, solved)
@@ -368,7 +371,7 @@ def _write_vtus(task: ChunkTask, cp: ContactParams, rows, vtk_fe: dict) -> None:
         return
     for i, r in vtk_fe.items():
         write_fe_vtu(Path(task.vtk_dir) / vtu_name(task.theta[i]), r, wear=_vtu_wear(task, rows, i))
-    analytic = (rows["status"] == "ok") & (rows["model"] == "hertz")
+    analytic = (rows["status"] == "ok") & np.isin(rows["model"], ("hertz", "hertz+ring"))
     if task.options.method == "hertz":
         analytic = rows["status"] == "ok"
     for i in np.flatnonzero(task.vtk_mask & analytic):

@@ -78,7 +78,8 @@ def worst_surface_profile(table: dict, method: str, cp: ContactParams, families:
     out["a_hertz"] = a_est
     if not bool(roller_does_not_fit(rho, cp.Rr)):
         out.update(_hertz_curve(table, i, cp, F, rho))
-    fe_row = str(table["model"][i]).split("+")[0] in ("fe_arc", "fe_exact", "")   # +coating
+    # +coating: the coated model; +ring: the solid roller's fine field (global-local scheme)
+    fe_row = str(table["model"][i]).split("+")[0] in ("fe_arc", "fe_exact", "")
     if method == "fe" and table["status"][i] == "ok" and fe_row:
         r, out["fe_model"] = _fe_solve(table, i, cp, families, options, cache, scene)
         out.update(x_fe=np.asarray(r.x_surface, float), sx_fe=np.asarray(r.sx, float),
@@ -141,7 +142,7 @@ def _fe_solve(table, i, cp, families, options, cache, scene):
     if scene is None:
         return cache.solve(model, F, rho, cp.mu, cp.sliding, check=False), name
     sl, Q, roll = traction_args(scene_traction(scene, np.array([theta])), 0, cp.sliding)
-    if str(table["model"][i]).startswith("fe_exact"):
+    if str(table["model"][i]).split("+")[0] == "fe_exact":
         jump = bool(table["curvature_jump"][i] == 1)
         res = exact_solve(scene, cp, model, theta, F, Q=Q, jump=jump,
                           tol_pct=100.0 * options.tolerance)

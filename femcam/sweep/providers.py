@@ -22,7 +22,7 @@ from ..bodies.cam_global import CamGlobalModel
 from ..bodies.cam_rows import CAM_CSV_COLUMNS, cam_disk_rows, disk_from_scene
 from ..bodies.cam_study import check_local_body
 from ..bodies.rows import CSV_COLUMNS as RING_COLUMNS
-from ..bodies.rows import build_for, ring_rows
+from ..bodies.rows import build_for
 from ..errors import FemcamError
 from ..halfspace.rows import COLUMNS as HS_COLUMNS
 from ..halfspace.rows import finite_length_rows, strip_for_scene
@@ -135,13 +135,20 @@ ASSESS = tuple((assess_name(si), csv if csv not in ("a_um", "p0_MPa") else f"ass
                for si, csv, f in ASSESS_COLUMNS if si not in ASSESS_SKIP)
 ASSESS_TEXT = ("assess_regime", "assess_flags", "assess_source")
 #: the 2D FE at the most loaded slice (method fe): F = w_max * length
-FE_SLICE = (("hs_fe_F", "fe_slice_F_N", 1.0), ("hs_fe_a", "fe_slice_a_um", 1e6),
-            ("hs_fe_p0", "fe_slice_p0_MPa", 1e-6), ("hs_fe_vm_max", "fe_slice_vm_max_MPa", 1e-6),
-            ("hs_fe_tau1_max", "fe_slice_tau1_max_MPa", 1e-6),
-            ("hs_fe_surf_txz_absmax", "fe_slice_surf_txz_absmax_MPa", 1e-6),
-            ("hs_fe_txz_range_max", "fe_slice_txz_range_max_MPa", 1e-6))
+FE_SLICE = (("F_peak_slice", "F_peak_slice_N", 1.0), ("a_peak_slice", "a_peak_slice_um", 1e6),
+            ("p0_peak_slice", "p0_peak_slice_MPa", 1e-6),
+            ("vm_max_peak_slice", "vm_max_peak_slice_MPa", 1e-6),
+            ("tau1_max_peak_slice", "tau1_max_peak_slice_MPa", 1e-6),
+            ("surf_txz_absmax_peak_slice", "surf_txz_absmax_peak_slice_MPa", 1e-6),
+            ("txz_range_max_peak_slice", "txz_range_max_peak_slice_MPa", 1e-6))
 HALFSPACE = tuple((f"hs_{k}", csv, f) for k, (csv, f) in HS_COLUMNS.items()) + FE_SLICE
-RING = tuple((f"ring_{k}", csv, f) for k, (csv, f) in RING_COLUMNS.items() if k != "theta")
+#: the ring model's cam contact answers the headline (``p0_fe``, ``p0_fit``, ``a_fe``, ``err_*``;
+#: :mod:`femcam.sweep.ringhead`): those keys of :data:`femcam.bodies.rows.CSV_COLUMNS` are no
+#: side columns; the bore, pin and needle columns are
+#: key of the ring model's refusal in a chunk's rows (popped by :func:`ring_chunk`, which raises it)
+RING_ERROR = "__ring_error__"
+RING_HEADLINE_KEYS = ("theta", "p0", "a", "p0_peak", "p0_solid", "a_solid", "dp0", "da")
+RING = tuple((f"ring_{k}", csv, f) for k, (csv, f) in RING_COLUMNS.items() if k not in RING_HEADLINE_KEYS)
 CAM_DISK = tuple((f"camdisk_{k}", csv, f) for k, (csv, f) in CAM_CSV_COLUMNS.items())
 LAYER_CSV = (("interface_tau_max_MPa", 1e-6), ("interface_sn_min_MPa", 1e-6),
              ("interface_sn_max_MPa", 1e-6), ("interface_utilisation", 1.0),
@@ -201,10 +208,10 @@ def _fe_slice(task, rows, out) -> None:
         if not r.converged:
             out["fe_load_basis"][i] = f"w_max*length: not converged ({r.iterations} iterations)"
             continue
-        for si, v in (("hs_fe_F", F), ("hs_fe_a", r.a), ("hs_fe_p0", r.p0_nodal),
-                      ("hs_fe_vm_max", r.von_mises_max.value), ("hs_fe_tau1_max", r.tau1_max.value),
-                      ("hs_fe_surf_txz_absmax", float(np.abs(r.txz).max()) if r.txz.size else np.nan),
-                      ("hs_fe_txz_range_max", r.txz_range.value if r.txz_range.inside else np.nan)):
+        for si, v in (("F_peak_slice", F), ("a_peak_slice", r.a), ("p0_peak_slice", r.p0_nodal),
+                      ("vm_max_peak_slice", r.von_mises_max.value), ("tau1_max_peak_slice", r.tau1_max.value),
+                      ("surf_txz_absmax_peak_slice", float(np.abs(r.txz).max()) if r.txz.size else np.nan),
+                      ("txz_range_max_peak_slice", r.txz_range.value if r.txz_range.inside else np.nan)):
             out[si][i] = v
         out["fe_load_basis"][i] = "w_max*length"
 
@@ -300,8 +307,8 @@ def assess_chunk(task, rows) -> dict:
     axial = "hs_p_axial_peak" in rows
     if axial:  # finite length: the most loaded slice, Hertz shape factors at its p0
         a, p0 = axial_contact(rows)
-        table = {"a_fe": a, "p0_fe": p0, "tau1_max": rows["hs_fe_tau1_max"],
-                 "txz_range_max": rows["hs_fe_txz_range_max"]}
+        table = {"a_fe": a, "p0_fe": p0, "tau1_max": rows["tau1_max_peak_slice"],
+                 "txz_range_max": rows["txz_range_max_peak_slice"]}
     n = task.theta.size
     idx = np.flatnonzero(np.asarray(rows["status"]).astype(str) != "undercut")
     out = {assess_name(si): np.full(n, np.nan) for si, _, _ in ASSESS_COLUMNS if si not in ASSESS_SKIP}
@@ -328,23 +335,32 @@ def _contact_rows(rows) -> np.ndarray:
 
 
 def ring_chunk(task, rows) -> dict:
-    """The ring (pin or needle bearing) columns of one chunk; NaN where there is no contact.
+    """The ring (pin or needle bearing) side columns of one chunk, solved before the wear and
+    the assessment by :func:`femcam.sweep.ringhead.ring_headline` (which also lets the ring
+    answer the headline); NaN where there is no contact.
 
     Parameters
     ----------
     task : femcam.sweep.pipeline.ChunkTask
         The chunk (scene, ``theta`` [rad], options, slip, ``wear_k``).
     rows : dict[str, ndarray]
-        The chunk's table with the contact and wear columns filled (SI).
+        The chunk's table with the contact, wear and ``ring_*`` columns filled (SI).
 
     Returns
     -------
     dict[str, ndarray]
-        ``ring_*`` columns (SI; :data:`femcam.bodies.rows.CSV_COLUMNS`).
+        ``ring_*`` columns of :data:`RING` (SI).
+
+    Raises
+    ------
+    FemcamError
+        The ring model's refusal kept by the headline step (the provider's columns stay NaN).
     """
-    Fc = np.where(_contact_rows(rows), rows["Fc"], 0.0)   # ring_rows: Fc <= 0 -> NaN row
-    r = ring_rows(task.scene, task.theta, Fc, rows["rho"], model=ring_model(task.scene))
-    return {f"ring_{k}": np.asarray(r[k], float) for k in RING_COLUMNS if k != "theta"}
+    exc = rows.pop(RING_ERROR, None)
+    if exc is not None:
+        raise exc
+    n = task.theta.size
+    return {si: np.asarray(rows.get(si, np.full(n, np.nan)), float) for si, _, _ in RING}
 
 
 def cam_disk_chunk(task, rows) -> dict:
@@ -561,7 +577,7 @@ def has_support(scene) -> bool:
 MPA = 1e-6
 HS_PANELS = (("peak pressure (MPa)", (("hs_p_axial_peak", "axial peak p(x, y) (3D half-space)", MPA),
                                                ("p0_hertz", "2D Hertz p0 at Fc / length", MPA),
-                                               ("hs_fe_p0", "2D FE p0 at the most loaded slice", MPA)),
+                                               ("p0_peak_slice", "2D FE p0 at the most loaded slice", MPA)),
                False),
               ("most loaded slice\nw_max (N/mm)", (("hs_w_max", "load per length of the most loaded slice",
                                                    1e-3),), False))
@@ -573,8 +589,8 @@ ASSESS_PANELS = (("lambda (-)", (("assess_lam", "lambda = h_min / sigma", 1.0),)
                   ("temperature (degC)", (("assess_T_contact", "contact temperature", 1.0),), False))
 RING_PANELS = (("bore hoop stress (MPa)", (("ring_hoop_max", "largest tensile bore hoop stress", MPA),),
                  False),
-                ("cam-roller p0 (MPa)", (("ring_p0", "ring", MPA), ("ring_p0_solid", "solid roller", MPA)),
-                 False),
+                ("cam-roller p0 (MPa)", (("p0_fe", "ring model (headline p0_fe)", MPA),
+                                         ("p0_hertz", "Hertz, solid roller", MPA)), False),
                 ("needle load (N)", (("ring_needle_Q_on", "most loaded, needle on the load line", 1.0),
                                      ("ring_needle_Q_between", "most loaded, load between needles", 1.0)),
                  False))

@@ -431,10 +431,16 @@ def real_cam_summary(table, traction: Traction | None) -> dict:
     Returns
     -------
     dict
-        ``{"models": {model: count}, "n_curvature_jump", "n_edge_contact", "traction"}``.
+        ``{"models": {model: count}, "n_curvature_jump", "n_edge_contact", "traction"}``
+        (``<model>+ring`` counted apart where the ring model answered).
     """
     base = np.array([str(m).split("+")[0] for m in table["model"]], dtype=str)   # fe_arc+coating
-    models = {m: int(np.count_nonzero(base == m)) for m in MODELS}
+    ring = np.array([str(m).endswith("+ring") for m in table["model"]], dtype=bool)
+    models = {m: int(np.count_nonzero((base == m) & ~ring)) for m in MODELS}
+    for m in MODELS:   # rows the ring model answered (femcam.sweep.ringhead), where there are any
+        n = int(np.count_nonzero(ring & (base == m)))
+        if n:
+            models[f"{m}+ring"] = n
     return {"models": models, "n_curvature_jump": int(np.nansum(table["curvature_jump"] == 1)),
             "n_edge_contact": int(np.count_nonzero(table["status"] == "edge_contact")),
             "traction": traction.source if traction is not None else "none (method hertz)"}

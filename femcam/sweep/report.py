@@ -49,6 +49,11 @@ MODEL_REASONS = {
     "": "no model (no contact, or the row was not solved; see status)",
 }
 
+#: suffix of a row the ring model answered (femcam.sweep.ringhead) and why
+RING_SUFFIX = "+ring"
+RING_REASON = ("the roller runs on a pin or needles: the ring model answers p0, a, err_* and the "
+               "stresses are the solid answer's scaled to its contact (global-local)")
+
 #: unit of the assessment's worst values (the others are safety factors, ratios)
 ASSESS_UNITS = {"contact temperature": "°C", "pitting life": "cycles"}
 
@@ -185,7 +190,8 @@ def _worst(result: SweepResult) -> str:
 def _models(result: SweepResult, s: dict) -> str:
     model = np.asarray(result.table.get("model", np.full(result.n_angles, ""))).astype(str)
     rows = [(f"<code>{_e(m or '(none)')}</code>", str(int(np.count_nonzero(model == m))),
-             _e(MODEL_REASONS.get(m, "")))
+             _e(MODEL_REASONS.get(m, "") if not m.endswith(RING_SUFFIX) else
+                f"{MODEL_REASONS.get(m.removesuffix(RING_SUFFIX), '')}; {RING_REASON}"))
             for m in dict.fromkeys(model)]
     out = html_table(("model", "angles", "why"), rows, num=(1,))
     if result.method != "hertz":

@@ -43,7 +43,8 @@ exact-gap half-space solve within 0.15 %, the fit is off by up to 1.5 % (docs/sw
 column answers what").
 
 Real-cam columns (:mod:`femcam.sweep.realcam`): ``model`` (``hertz``, ``fe_arc``, ``fe_exact``:
-which model answered), ``est_err_arc_pct``/``est_err_hertz_pct`` (estimated p0 error of the
+which model answered; ``+ring`` when the ring model answered the contact),
+``est_err_arc_pct``/``est_err_hertz_pct`` (estimated p0 error of the
 cheaper models), ``curvature_jump`` (1 inside a curvature jump's straddle span),
 ``exact_vs_arc_p0_pct`` (peak p0 of the arc-gap FE vs the exact-gap FE, jump rows), ``Q_N``
 (tangential force on the cam along local x), ``Q_over_muFc``, ``stick_width_um``,
@@ -65,11 +66,16 @@ cheaper models), ``curvature_jump`` (1 inside a curvature jump's straddle span),
   element of the contact edge and exceeds the value the contact can carry there by more than the
   FE's surface error (:data:`femcam.sweep.headline.SURF_EDGE_TOL` p0): a value of the
   discretisation's edge singularity, not a result (:func:`femcam.sweep.headline.edge_flags`);
-* ``headline_omits_coating``, ``headline_solid_roller``, ``headline_solid_cam``,
-  ``headline_2d_mean_load`` -- the scene holds physics the headline contact model leaves out
-  (:func:`femcam.sweep.headline.omitted_physics`): a coating, a ring on a pin or needles (the
-  ring's own contact is ``ring_p0_MPa``), a cam on its shaft (``cam_bore_*``), a finite length
-  (the most loaded slice is ``p_axial_peak_MPa``, ``fe_slice_*``).
+* ``headline_omits_coating``, ``headline_2d_mean_load`` -- the scene holds physics the
+  headline contact model leaves out (:func:`femcam.sweep.headline.omitted_physics`): a coating,
+  a finite length (the headline is the 2D contact at the mean load ``Fc / length``; the most
+  loaded slice is ``p0_peak_slice_MPa``, ``a_peak_slice_um``, ``*_peak_slice_MPa``, the 3D
+  half-space peak ``p_axial_peak_MPa``).
+
+A roller on a pin or needles is no omission: the ring model answers ``p0_fe``, ``p0_fit``,
+``a_fe``, ``err_*`` and scales the solid roller's stresses to its contact (``model``
+``fe_arc+ring``, ``fe_exact+ring``, ``hertz+ring``; :mod:`femcam.sweep.ringhead`); nor is a cam
+on its shaft (the local cam body, checked against the fully refined disk once per sweep).
 
 Subsurface orthogonal shear: ``txz_range_max`` is the largest range of ``txz`` over one pass,
 ``max_z [max_x txz(x, z) - min_x txz(x, z)]`` (Johnson 1985 §9.2; the stress cycle of

@@ -65,7 +65,8 @@ def angle_text(theta_deg: float) -> str:
 #: provider -> its label and items (SI column, what, unit shown, factor SI -> unit, "max"|"min")
 ITEMS = {
     "halfspace": ("finite length", (("hs_p_axial_peak", "axial peak", "MPa", 1e-6, "max"),
-                                    ("hs_fe_p0", "2D FE p0 at the most loaded slice", "MPa", 1e-6, "max"))),
+                                    ("p0_peak_slice", "p0 at the most loaded slice (2D FE)", "MPa",
+                                     1e-6, "max"))),
     "bodies": ("roller support", (("ring_hoop_max", "bore hoop stress", "MPa", 1e-6, "max"),
                                   ("ring_pin_p0", "pin pressure", "MPa", 1e-6, "max"),
                                   ("ring_needle_Q_on", "worst needle load", "N", 1.0, "max"))),
