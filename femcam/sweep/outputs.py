@@ -6,7 +6,7 @@
 from __future__ import annotations
 
 import hashlib
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -148,6 +148,8 @@ class SweepRun:
         Tangential load and directions per angle (FE methods).
     hertz : ndarray of bool, shape (n,), optional
         Rows answered by Hertz under method ``auto``.
+    estimates : dict[int, FamilyEstimate]
+        The families' two-level error estimates (:mod:`femcam.sweep.estimate`).
     """
 
     scene: Scene
@@ -175,6 +177,7 @@ class SweepRun:
     jump: np.ndarray | None = None
     traction: object = None
     hertz: np.ndarray | None = None
+    estimates: dict = field(default_factory=dict)
 
 
 

@@ -21,6 +21,7 @@ from ..mesh.estimate import check_contact_elements
 from ..scene import load_scene
 from ..scene.digest import physics_hash, physics_parts
 from .cache import default_cache
+from .estimate import estimate_families
 from .extras import extras_provenance
 from .families import FamilyRecord, verify_families
 from .options import SweepOptions, contact_params
@@ -169,6 +170,8 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
     t0 = time.perf_counter()
     with talk.phase("model families: build and verify"):
         _plan(run)
+    with talk.phase("error estimates: one coarse model per family"):
+        _estimate(run)
     t_verify = time.perf_counter() - t0
     tasks, task_chunk = _tasks(run)
     workers, workers_note = _choose_workers(run, tasks, task_chunk, scheduler, client)
@@ -187,6 +190,7 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
                       scene_hash=run.shash, command=command, options=options,
                       families=[r.to_dict() for r in run.records] if fe else None,
                       wear=run.wear.to_dict())
+    prov["estimates"] = {str(k): e.to_dict() for k, e in run.estimates.items()}
     prov["extras"] = extras_provenance(run.scene, table, tolerance=run.opts.tolerance)
     # what an assessment of this folder checks its scene against (femcam.assess.sweep_table)
     prov["scene_physics_parts"] = physics_parts(run.scene)
@@ -313,6 +317,14 @@ def _plan(run: SweepRun) -> None:
                              "records": [r.to_dict() for r in run.records]})
 
 
+def _estimate(run: SweepRun) -> None:
+    """The families' two-level discretisation-error estimates (FE; :mod:`femcam.sweep.estimate`)."""
+    if run.opts.method == "hertz" or not run.records:
+        return
+    run.estimates = estimate_families(run.records, contact_params(run.scene), run.opts,
+                                      default_cache())
+
+
 def _tasks(run: SweepRun) -> tuple[list[ChunkTask], list[int]]:
     """One task per chunk still to compute, and its chunk number."""
     refs = {r.id: (r.rho_ref, r.a_ref) for r in run.records}
@@ -327,7 +339,8 @@ def _tasks(run: SweepRun) -> tuple[list[ChunkTask], list[int]]:
                                family=fam, refs=sub, vtk_dir=vtk_dir, vtk_mask=run.vtk_mask[a:b],
                                slip=run.wear.chunk(a, b), wear_k=run.wear.k, delay_s=run.delay_s,
                                jump=run.jump[a:b], hertz=None if run.hertz is None else run.hertz[a:b],
-                               traction=run.traction.chunk(a, b) if run.traction is not None else None))
+                               traction=run.traction.chunk(a, b) if run.traction is not None else None,
+                               estimates={f: run.estimates[f] for f in sub if f in run.estimates}))
         task_chunk.append(c)
     return tasks, task_chunk
 
