@@ -150,6 +150,10 @@ class SweepRun:
         Rows answered by Hertz under method ``auto``.
     estimates : dict[int, FamilyEstimate]
         The families' two-level error estimates (:mod:`femcam.sweep.estimate`).
+    preplanned : bool
+        The families were planned and verified while choosing the mesh for ``rtol``.
+    rtol_info : dict
+        The ``rtol`` mesh choice (pilots, levels tried), recorded in the provenance.
     """
 
     scene: Scene
@@ -178,6 +182,8 @@ class SweepRun:
     traction: object = None
     hertz: np.ndarray | None = None
     estimates: dict = field(default_factory=dict)
+    preplanned: bool = False
+    rtol_info: dict = field(default_factory=dict)
 
 
 

@@ -350,6 +350,8 @@ def _fe_angle(task: ChunkTask, cp: ContactParams, rows, flags, i: int,
     rows["family"][i] = fid
     fill_row_estimate(rows, i, task.estimates.get(fid), float(rows["a_hertz"][i]), model.a_ref,
                       task.options.a_over_h)
+    if task.options.rtol is not None and rows["err_est_p0"][i] > task.options.rtol:
+        flags[i].append("rtol_not_met")
     if r.outside_hertz and "hertz_large_a" not in flags[i]:
         flags[i].append("hertz_large_a")
     if r.converged:

@@ -1,0 +1,148 @@
+r"""Accuracy on demand: the mesh of a sweep chosen for a requested p0 error (``rtol``).
+
+The estimated p0 error of an FE row (:mod:`femcam.sweep.estimate`) has two parts: the
+discretisation error of its family's mesh carried to the row, and the family's verified reuse
+error (bounded by ``tolerance``). ``rtol`` splits the budget in half:
+
+1. ``tolerance = min(tolerance, rtol / 2)``: the family verification keeps the reuse error
+   within half the budget;
+2. a **pilot** two-level estimate at ``a_over_h = 8`` on the planned families with the smallest
+   and the largest curvature ratio ``Rr / rho`` (2D elasticity is scale invariant, so the
+   relative error at a given ``a/h`` changes only with the shape of the gap) predicts the
+   ``a_over_h`` whose discretisation error is ``rtol / 2``:
+   ``n = 8 (e_8 / (rtol / 2))^{1/p}``, rounded up to an even whole number >= 6 (an even
+   ``a_over_h`` keeps the contact centre and the Hertz edge on nodes of both estimate levels,
+   where the two-level estimate was validated);
+3. the families are planned, verified and estimated at that ``a_over_h``; if a row's estimate
+   still exceeds ``rtol``, ``a_over_h`` is raised once more by the same rule from the worst row
+   (rows still above are flagged ``rtol_not_met``).
+
+Only p0 is controlled (the estimates of a, von Mises and tau1 are reported, not targeted).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+
+from .. import _validate
+from .estimate import RATES, FamilyEstimate, family_estimate, predict_a_over_h, row_estimate
+from .options import ContactParams, SweepOptions
+from .plan import hertz_half_width, plan_families
+
+__all__ = ["PILOT_A_OVER_H", "even_ceil", "pilot_a_over_h", "rows_p0_estimate"]
+
+#: ``a_over_h`` of the pilot estimate (coarse level 4)
+PILOT_A_OVER_H = 8.0
+#: smallest ``a_over_h`` chosen for an rtol (the two-level estimate is validated from 6 on)
+MIN_A_OVER_H = 6.0
+
+
+def even_ceil(x: float, lo: float = MIN_A_OVER_H, hi: float = 400.0) -> float:
+    """The smallest even whole number >= ``x``, within ``[lo, hi]``.
+
+    Parameters
+    ----------
+    x : float
+        Elements per half-width [-].
+    lo, hi : float
+        Bounds [-].
+
+    Returns
+    -------
+    float
+        An even whole number [-].
+
+    >>> even_ceil(6.1), even_ceil(3.0), even_ceil(8.0)
+    (8.0, 6.0, 8.0)
+    """
+    x = _validate.positive("x", x, "(elements per half-width)")
+    return float(min(hi, max(lo, 2 * math.ceil(x / 2 - 1e-9))))
+
+
+def pilot_a_over_h(F, rho, contact, cp: ContactParams, options: SweepOptions, cache=None) -> tuple:
+    """The ``a_over_h`` predicted for ``options.rtol`` from a pilot two-level estimate.
+
+    Parameters
+    ----------
+    F, rho : ndarray, shape (n,)
+        Contact force [N] and cam radius of curvature [m] per angle.
+    contact : ndarray of bool, shape (n,)
+        Angles the FE answers.
+    cp : ContactParams
+        Contact parameters.
+    options : SweepOptions
+        With ``rtol`` (relative p0 error) and the effective ``tolerance``.
+    cache : ModelCache, optional
+        Where the pilot family models go.
+
+    Returns
+    -------
+    a_over_h : float
+        Even whole number >= 6 [-].
+    pilots : list of dict
+        ``{"rho_ref" (m), "a_ref" (m), "err_p0" (relative, at a/h 8), "a_over_h" (predicted)}``.
+    """
+    rtol = _validate.positive("rtol", options.rtol, "(relative p0 error)")
+    fam, refs = plan_families(F, rho, cp, options.tolerance, contact)
+    if not refs:
+        return MIN_A_OVER_H, []
+    kap = {f: (0.0 if math.isinf(r[0]) else cp.Rr / r[0]) for f, r in refs.items()}
+    picks = sorted({min(kap, key=kap.get), max(kap, key=kap.get)})
+    pilot = replace(options, a_over_h=PILOT_A_OVER_H)
+    out, need = [], MIN_A_OVER_H
+    for f in picks:
+        est = family_estimate(cp, *refs[f], pilot, cache)
+        n = predict_a_over_h(est, rtol / 2.0) if np.isfinite(est.err["p0"]) else 2 * PILOT_A_OVER_H
+        need = max(need, n)
+        out.append({"rho_ref": refs[f][0], "a_ref": refs[f][1], "err_p0": est.err["p0"], "a_over_h": n})
+    return even_ceil(need), out
+
+
+def rows_p0_estimate(F, rho, family, estimates: dict, cp: ContactParams) -> np.ndarray:
+    """The p0 estimate of each row from its family's estimate (before the rows are solved).
+
+    Parameters
+    ----------
+    F, rho : ndarray, shape (n,)
+        Contact force [N] and cam radius [m] per angle.
+    family : ndarray of int, shape (n,)
+        Family id per angle (-1: none).
+    estimates : dict[int, FamilyEstimate]
+        The families' estimates.
+    cp : ContactParams
+        Contact parameters.
+
+    Returns
+    -------
+    ndarray, shape (n,)
+        Relative p0 error estimate [-] (NaN outside the families).
+    """
+    out = np.full(np.shape(F), np.nan)
+    for f, est in estimates.items():
+        idx = np.flatnonzero(np.asarray(family) == f)
+        if idx.size == 0 or not isinstance(est, FamilyEstimate):
+            continue
+        a = hertz_half_width(np.asarray(F)[idx], np.asarray(rho)[idx], cp)
+        out[idx] = [row_estimate(est, float(ai))["p0"] for ai in a]
+    return out
+
+
+def refine(a_over_h: float, worst: float, rtol: float) -> float:
+    """The next ``a_over_h`` when the worst row's p0 estimate ``worst`` exceeds ``rtol``.
+
+    Parameters
+    ----------
+    a_over_h : float
+        Current elements per half-width [-].
+    worst, rtol : float
+        Worst row estimate and the requested bound (relative) [-].
+
+    Returns
+    -------
+    float
+        ``even_ceil(a_over_h (worst / rtol)^(1/p))`` and at least ``a_over_h + 2`` [-].
+    """
+    return even_ceil(max(a_over_h + 2.0, a_over_h * (worst / rtol) ** (1.0 / RATES["p0"])))
