@@ -24,8 +24,8 @@ from ..mesh.estimate import check_contact_elements
 from ..scene import load_scene, study_problem
 from ..scene.schema import STUDY_RANGES, STUDY_UNITS, STUDY_WHOLE
 from ..sweep import parse_angles_deg, sweep
-from ..sweep.options import RTOL_RANGE, TOLERANCE_FLOOR
 from ..sweep.estimate import estimate_text
+from ..sweep.options import RTOL_RANGE, TOLERANCE_FLOOR
 from ..sweep.result import families_text, hertz_check_text
 from ..sweep.worst import assess_line
 from ._common import (

@@ -51,10 +51,10 @@ from ..errors import FemcamError
 from ..fe import ContactModel, SolverOptions
 from ..mesh import MeshOptions
 from .cache import ModelCache, default_cache
-from .options import ContactParams, SweepOptions
+from .options import ContactParams, SweepOptions, contact_params
 
 __all__ = ["QUANTITIES", "RATES", "FamilyEstimate", "coarse_mesh", "family_estimate",
-           "estimate_families", "estimate_text", "fill_row_estimate", "predict_a_over_h",
+           "estimate_families", "estimate_run", "estimate_text", "fill_row_estimate", "predict_a_over_h",
            "reference_load", "row_estimate"]
 
 #: quantities estimated: name -> (sweep column of the estimate, ContactResult reader)
@@ -135,7 +135,7 @@ def coarse_mesh(a_over_h: float, fine_half_width: float = 2.5) -> MeshOptions:
 
 
 def reference_load(cp: ContactParams, rho_ref: float, a_ref: float) -> float:
-    """The contact force whose Hertz half-width is ``a_ref`` at ``rho_ref``.
+    r"""The contact force whose Hertz half-width is ``a_ref`` at ``rho_ref``.
 
     .. math:: F = \frac{\pi E^* a^2 l}{4 R}, \qquad \frac{1}{R} = \frac{1}{\rho} + \frac{1}{R_r}
 
@@ -321,6 +321,21 @@ def estimate_families(records, cp: ContactParams, options: SweepOptions,
         reuse = rec.reuse_error if np.isfinite(rec.reuse_error) else math.nan
         out[int(rec.id)] = family_estimate(cp, rec.rho_ref, rec.a_ref, options, cache, reuse)
     return out
+
+
+def estimate_run(run, cache: ModelCache | None = None) -> None:
+    """A sweep's family estimates (FE methods with verified families), kept once computed.
+
+    Parameters
+    ----------
+    run : femcam.sweep.outputs.SweepRun
+        The sweep's state after the family phase; ``run.estimates`` is set in place.
+    cache : ModelCache, optional
+        Where the family models are.
+    """
+    if run.opts.method == "hertz" or not run.records or run.estimates:
+        return
+    run.estimates = estimate_families(run.records, contact_params(run.scene), run.opts, cache)
 
 
 def estimate_text(result) -> str:

@@ -28,11 +28,15 @@ from dataclasses import replace
 import numpy as np
 
 from .. import _validate
+from ..hertz.conformity import roller_does_not_fit
+from ..mesh import MeshOptions
+from ..mesh.estimate import check_contact_elements
 from .estimate import RATES, FamilyEstimate, family_estimate, predict_a_over_h, row_estimate
-from .options import ContactParams, SweepOptions
+from .options import RTOL_RANGE, ContactParams, SweepOptions, contact_params
 from .plan import hertz_half_width, plan_families
 
-__all__ = ["PILOT_A_OVER_H", "even_ceil", "pilot_a_over_h", "rows_p0_estimate"]
+__all__ = ["PILOT_A_OVER_H", "choose_mesh", "even_ceil", "pilot_a_over_h", "refine", "rows_p0_estimate",
+           "rtol_settings"]
 
 #: ``a_over_h`` of the pilot estimate (coarse level 4)
 PILOT_A_OVER_H = 8.0
@@ -146,3 +150,83 @@ def refine(a_over_h: float, worst: float, rtol: float) -> float:
         ``even_ceil(a_over_h (worst / rtol)^(1/p))`` and at least ``a_over_h + 2`` [-].
     """
     return even_ceil(max(a_over_h + 2.0, a_over_h * (worst / rtol) ** (1.0 / RATES["p0"])))
+
+
+def rtol_settings(a_over_h, rtol, method: str, tolerance: float) -> tuple:
+    """``(a_over_h, tolerance, rtol)`` of a sweep call: with ``rtol``, the pilot's ``a_over_h``
+    and ``tolerance <= rtol / 2``.
+
+    Parameters
+    ----------
+    a_over_h : float or None
+        Elements per half-width as given [-] (refused together with ``rtol``).
+    rtol : float or None
+        Requested relative p0 error [-], in :data:`femcam.sweep.options.RTOL_RANGE`.
+    method : str
+        The sweep method (``"hertz"`` is refused with ``rtol``).
+    tolerance : float
+        The reuse tolerance as given [-].
+
+    Returns
+    -------
+    tuple
+        ``(a_over_h or None, tolerance, rtol or None)``.
+
+    Raises
+    ------
+    InputError
+        ``rtol`` with ``a_over_h``, with method ``hertz``, or out of range.
+    """
+    if rtol is None:
+        return a_over_h, tolerance, None
+    if a_over_h is not None:
+        raise _validate.fail("a_over_h", a_over_h, "(elements per contact half-width)",
+                             f"cannot be given with rtol = {rtol}: rtol chooses the mesh; give one")
+    if method == "hertz":
+        raise _validate.fail("rtol", rtol, "(relative p0 error)", "needs an FE method (fe or auto)")
+    rtol = _validate.in_range("rtol", rtol, *RTOL_RANGE, "(relative p0 error)")
+    return PILOT_A_OVER_H, min(_validate.positive("tolerance", tolerance, ""), rtol / 2.0), rtol
+
+
+def choose_mesh(run, plan, estimate, cache) -> None:
+    """``rtol``: the pilot's ``a_over_h``, then the families planned, verified and estimated
+    there; one refinement when a row's p0 estimate still exceeds ``rtol``.
+
+    Parameters
+    ----------
+    run : femcam.sweep.outputs.SweepRun
+        The sweep's state after the analytic phase; ``opts``, ``family``, ``records``,
+        ``estimates``, ``preplanned`` and ``rtol_info`` are set in place.
+    plan, estimate : callable
+        ``plan(run)`` and ``estimate(run, cache)``: the sweep's family and estimate phases.
+    cache : ModelCache
+        The process's model cache.
+
+    Raises
+    ------
+    InputError
+        A flat-faced follower (binned models, no families), or a chosen mesh too large.
+    """
+    cp = contact_params(run.scene)
+    if cp.kind == "flat_faced":
+        raise _validate.fail("rtol", run.opts.rtol, "(relative p0 error)", "needs model families; a "
+                             "flat-faced follower's binned real-cam models carry no estimate; give a_over_h")
+    F, rho = run.rows0["Fc"], run.rows0["rho"]
+    fit = run.contact & ~roller_does_not_fit(rho, cp.Rr)
+    n, pilots = pilot_a_over_h(F, rho, fit, cp, run.opts, cache)
+    tried = []
+    for attempt in range(2):
+        run.opts = replace(run.opts, a_over_h=n)
+        check_contact_elements(MeshOptions(a_over_h=n), "a_over_h (chosen for rtol)")
+        run.preplanned, run.estimates = False, {}
+        plan(run)
+        estimate(run, cache)
+        est = rows_p0_estimate(F, rho, run.family, run.estimates, cp)
+        worst = float(np.nanmax(est)) if np.any(np.isfinite(est)) else float("nan")
+        tried.append({"a_over_h": n, "worst_err_est_p0": worst})
+        if not worst > run.opts.rtol or attempt == 1:
+            break
+        n = refine(n, worst, run.opts.rtol)
+    run.preplanned = True
+    run.rtol_info = {"rtol": run.opts.rtol, "a_over_h": run.opts.a_over_h,
+                     "tolerance": run.opts.tolerance, "pilots": pilots, "levels": tried}

@@ -8,7 +8,6 @@ planning, chunking, the executor and the on-disk store; the output files are wri
 from __future__ import annotations
 
 import time
-from dataclasses import replace
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -22,22 +21,20 @@ from ..mesh.estimate import check_contact_elements
 from ..scene import load_scene
 from ..scene.digest import physics_hash, physics_parts
 from .cache import default_cache
-from .estimate import estimate_families
-from .rtol import PILOT_A_OVER_H, pilot_a_over_h, refine, rows_p0_estimate
+from .estimate import estimate_run
 from .extras import extras_provenance
 from .families import FamilyRecord, verify_families
-from .options import RTOL_RANGE, SweepOptions, contact_params
+from .options import SweepOptions, contact_params
 from .outputs import SweepRun, scene_hash, scene_source, write_outputs
 from .parallel import AUTO_VTU_S, Progress, auto_workers, run_tasks
 from .pipeline import ChunkTask, contact_mask, run_chunk
 from .realcam import auto_hertz_rows, contact_scene, jump_angles, real_cam_summary, scene_traction
 from .result import SweepResult, TableBuilder
+from .rtol import choose_mesh, rtol_settings
 from .store import LOCK, STREAM_ANGLES, ChunkStore, DirLock, array_hash
 from .wear import wear_setup
 
 DEFAULT_STEP_DEG = 1.0
-#: ``a_over_h`` when neither it nor ``rtol`` is given (API and CLI default)
-DEFAULT_A_OVER_H = 10.0
 #: ``.vtu`` every k angles with ``out`` (API and CLI default)
 DEFAULT_VTK_EVERY = 10
 ANALYTIC_BLOCK = 20_000  # angles per Scene.analyse call in the analytic phase (memory)
@@ -64,8 +61,8 @@ def parse_angles_deg(spec: str) -> np.ndarray:
     return _validate.angles_deg("--angles-deg", spec)
 
 
-def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float | None = None,
-          tolerance: float = 2e-3, rtol: float | None = None, chunk_size: int = 30, out=None, resume: bool = False,
+def sweep(scene, *, angles=None, method: str = "fe", a_over_h=None, tolerance: float = 2e-3,
+          rtol=None, chunk_size: int = 30, out=None, resume: bool = False,
           workers: int | str = "auto", scheduler=None, client=None, vtk_every: int | None = None,
           progress: bool | None = None, plots: bool | None = None, command: str | None = None,
           scene_path=None, chunk_delay_s: float = 0.0, overwrite: bool = False,
@@ -83,18 +80,15 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float | None = No
         (the cheapest of Hertz, FE arc gap, FE exact gap within ``tolerance`` per angle;
         :mod:`femcam.sweep.realcam`).
     a_over_h : float, optional
-        FE element size in the contact zone ``h = a / a_over_h`` (dimensionless); default
-        :data:`DEFAULT_A_OVER_H`, or chosen by ``rtol`` (giving both is refused).
+        FE element size in the contact zone ``h = a / a_over_h`` (default 10; refused with rtol).
     tolerance : float
         Bound on the relative p0 difference between an angle solved with its family's model and
         with a model built fresh for it (the reuse error); verified with fresh models at each
         family's worst-covered angles, families split until it holds
         (:mod:`femcam.sweep.families`). >= 1e-4.
     rtol : float, optional
-        Requested bound on the estimated relative p0 error of every FE row (a fraction, 2e-4
-        to 0.1): the sweep chooses ``a_over_h`` (and ``tolerance <= rtol / 2``) from a pilot
-        two-level estimate (:mod:`femcam.sweep.rtol`); each row reports what it reached in
-        ``err_est_p0`` (flag ``rtol_not_met`` where it stays above).
+        Bound on every FE row's estimated relative p0 error (2e-4 to 0.1): the sweep chooses
+        ``a_over_h`` and ``tolerance <= rtol / 2`` (:mod:`femcam.sweep.rtol`).
     chunk_size : int
         Angles per chunk (unit of parallel work and of the on-disk store).
     out : str or Path, optional
@@ -179,14 +173,11 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
     t0 = time.perf_counter()
     if run.opts.rtol is not None:
         with talk.phase(f"mesh for rtol {100 * run.opts.rtol:g} %: pilot estimate, families"):
-            _choose_mesh(run)
-    t_rtol = time.perf_counter() - t0
+            choose_mesh(run, _plan, estimate_run, default_cache())
     _open_store(run)
-    t0 = time.perf_counter()
-    with talk.phase("model families: build and verify"):
+    with talk.phase("model families: build, verify, estimate the error (a coarse model each)"):
         _plan(run)
-    with talk.phase("error estimates: one coarse model per family"):
-        _estimate(run)
+        estimate_run(run, default_cache())
     t_verify = time.perf_counter() - t0
     tasks, task_chunk = _tasks(run)
     workers, workers_note = _choose_workers(run, tasks, task_chunk, scheduler, client)
@@ -199,9 +190,7 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
                "n_angles": int(run.angles.size), "n_families": len(run.records)}
     if run.workers == "auto":
         options.update(workers_requested="auto", workers_reason=workers_note)
-    options.update(real_cam_summary(table, run.traction))
-    if run.rtol_info:
-        options["rtol_choice"] = run.rtol_info
+    options.update(real_cam_summary(table, run.traction), rtol_choice=run.rtol_info or None)
     fe = run.opts.method != "hertz"
     prov = provenance(scene_path=run.scene_path if run.scene_path is not None else src_path,
                       scene_hash=run.shash, command=command, options=options,
@@ -212,7 +201,7 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
     # what an assessment of this folder checks its scene against (femcam.assess.sweep_table)
     prov["scene_physics_parts"] = physics_parts(run.scene)
     prov["scene_physics_sha256"] = physics_hash(run.scene)
-    timings = {"analytic": t_analytic, "verify": t_verify + t_rtol, "compute": t_compute}
+    timings = {"analytic": t_analytic, "verify": t_verify, "compute": t_compute}
     result = SweepResult(table=table, method=run.opts.method, provenance=prov, paths={},
                          timings=timings, n_chunks_computed=len(tasks),
                          n_chunks_resumed=len(run.done))
@@ -226,16 +215,7 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
 def _prepare(scene, angles, method, mesh, tolerance, chunk_size, out, resume, workers,
              vtk_every, scene_path, chunk_delay_s) -> SweepRun:
     """Check the inputs; load the scene file. ``mesh``: ``(a_over_h, rtol)``."""
-    a_over_h, rtol = mesh
-    if rtol is not None:
-        if a_over_h is not None:
-            raise _validate.fail("a_over_h", a_over_h, "(elements per contact half-width)",
-                                 f"cannot be given with rtol = {rtol}: rtol chooses the mesh; give one")
-        if method == "hertz":
-            raise _validate.fail("rtol", rtol, "(relative p0 error)", "needs an FE method (fe or auto)")
-        rtol = _validate.in_range("rtol", rtol, *RTOL_RANGE, "(relative p0 error)")
-        tolerance = min(_validate.positive("tolerance", tolerance, ""), rtol / 2.0)
-        a_over_h = PILOT_A_OVER_H
+    a_over_h, tolerance, rtol = rtol_settings(*mesh, method, tolerance)
     if isinstance(scene, (str, Path)):
         scene_path = scene
         scene = load_scene(scene)
@@ -247,7 +227,7 @@ def _prepare(scene, angles, method, mesh, tolerance, chunk_size, out, resume, wo
     workers = _validate.workers("workers", workers)
     if vtk_every is None:
         vtk_every = DEFAULT_VTK_EVERY
-    opts = SweepOptions(method=method, a_over_h=DEFAULT_A_OVER_H if a_over_h is None else a_over_h,
+    opts = SweepOptions(method=method, **({} if a_over_h is None else {"a_over_h": a_over_h}),
                         tolerance=tolerance, chunk_size=chunk_size,
                         vtk_every=vtk_every if out is not None else 0, rtol=rtol)
     if opts.method != "hertz":  # refused before any work: a mesh too large for time and memory
@@ -320,71 +300,32 @@ def _open_store(run: SweepRun) -> None:
 
 
 def _plan(run: SweepRun) -> None:
-    """Model families verified against the tolerance (FE only); a resume reuses the stored plan."""
+    """Model families verified against the tolerance (FE only); a resume reuses the stored plan;
+    families chosen for an rtol (:func:`femcam.sweep.rtol.choose_mesh`) are only stored."""
     n = run.angles.size
-    if not run.preplanned:
+    if run.opts.method == "hertz" or not run.preplanned:
         run.family, run.records = np.full(n, -1), []
     if run.opts.method == "hertz":
         return
     cp = contact_params(run.scene)
     run.hertz = auto_hertz_rows(run.scene, cp, run.opts, run.angles, run.rows0["Fc"], run.rows0["rho"],
                                 run.contact, run.jump)
-    if run.preplanned:  # chosen for an rtol (_choose_mesh): only stored
-        if run.store is not None:
-            run.store.save_plan({"family": run.family.tolist(),
-                                 "records": [r.to_dict() for r in run.records]})
-        return
     plan = run.store.load_plan() if (run.store is not None and run.resume) else None
-    if plan is not None and len(plan.get("family", ())) == n:
+    if plan is not None and len(plan.get("family", ())) == n and not run.preplanned:
         run.family = np.asarray(plan["family"], dtype=int)
         run.records = [FamilyRecord.from_dict(r) for r in plan["records"]]
         return
     if cp.kind == "flat_faced":  # binned real-cam models (femcam.sweep.realrows), no families
         return
     fit = run.contact & ~roller_does_not_fit(run.rows0["rho"], cp.Rr) & ~run.hertz
-    run.family, _, run.records = verify_families(run.rows0["Fc"], run.rows0["rho"], run.angles, cp,
-                                                 run.opts, fit, cache=default_cache(),
-                                                 traction=run.traction)
+    if not run.preplanned:
+        run.family, _, run.records = verify_families(run.rows0["Fc"], run.rows0["rho"], run.angles, cp,
+                                                     run.opts, fit, cache=default_cache(),
+                                                     traction=run.traction)
     run.verified_here = True
     if run.store is not None:
         run.store.save_plan({"family": run.family.tolist(),
                              "records": [r.to_dict() for r in run.records]})
-
-
-def _estimate(run: SweepRun) -> None:
-    """The families' two-level discretisation-error estimates (FE; :mod:`femcam.sweep.estimate`)."""
-    if run.opts.method == "hertz" or not run.records or run.estimates:
-        return
-    run.estimates = estimate_families(run.records, contact_params(run.scene), run.opts,
-                                      default_cache())
-
-
-def _choose_mesh(run: SweepRun) -> None:
-    """``rtol``: the pilot's ``a_over_h``, then families planned, verified and estimated there;
-    one refinement when a row's p0 estimate still exceeds ``rtol`` (:mod:`femcam.sweep.rtol`)."""
-    cp = contact_params(run.scene)
-    if cp.kind == "flat_faced":
-        raise _validate.fail("rtol", run.opts.rtol, "(relative p0 error)", "needs model families; a "
-                             "flat-faced follower's binned real-cam models carry no estimate; give a_over_h")
-    F, rho = run.rows0["Fc"], run.rows0["rho"]
-    fit = run.contact & ~roller_does_not_fit(rho, cp.Rr)
-    n, pilots = pilot_a_over_h(F, rho, fit, cp, run.opts, default_cache())
-    tried = []
-    for attempt in range(2):
-        run.opts = replace(run.opts, a_over_h=n)
-        check_contact_elements(MeshOptions(a_over_h=n), "a_over_h (chosen for rtol)")
-        run.preplanned, run.estimates = False, {}
-        _plan(run)
-        _estimate(run)
-        est = rows_p0_estimate(F, rho, run.family, run.estimates, cp)
-        worst = float(np.nanmax(est)) if np.any(np.isfinite(est)) else float("nan")
-        tried.append({"a_over_h": n, "worst_err_est_p0": worst})
-        if not worst > run.opts.rtol or attempt == 1:
-            break
-        n = refine(n, worst, run.opts.rtol)
-    run.preplanned = True
-    run.rtol_info = {"rtol": run.opts.rtol, "a_over_h": run.opts.a_over_h,
-                     "tolerance": run.opts.tolerance, "pilots": pilots, "levels": tried}
 
 
 def _tasks(run: SweepRun) -> tuple[list[ChunkTask], list[int]]:
