@@ -77,7 +77,7 @@ def register(subparsers) -> None:
         dest = flag[2:].replace("-", "_")
         add_number(p, flag, rng, default=None, metavar=metavar,
                    help=f"{text} {_default_text(dest, extra)}")
-    add_number(p, "--rtol-pct", Range("%", RTOL_RANGE[0] * 100, RTOL_RANGE[1] * 100), default=None,
+    add_number(p, "--rtol-pct", Range("percent", RTOL_RANGE[0] * 100, RTOL_RANGE[1] * 100), default=None,
                metavar="PCT",
                help="requested bound on the estimated p0 error of every FE row, in percent "
                     "(0.5 means 0.5 %%): the sweep chooses the mesh (a/h) and a reuse tolerance "
