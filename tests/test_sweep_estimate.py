@@ -206,3 +206,59 @@ def test_cli_refuses_rtol_with_mesh_size(tmp_path, capsys):
     scene.write_text(STUDY.read_text() + "\n[fe]\nrtol_pct = 0.5\na_over_h = 10\n")
     code = main(["sweep", str(scene), "--out", str(tmp_path / "p")])
     assert code != 0 and "rtol_pct" in capsys.readouterr().err
+
+
+def _zz_window(a_over_h, tmp_path=None):
+    """The recovery indicator of the study contact (mu = 0) and the true stress error of the
+    recovered field against Hertz's subsurface field (McEwen 1949 / Johnson 1985 §4.2 through
+    femcam.hertz, the analytic module) over the cam's window |x| < 2a, 0.3a < z < 2a."""
+    from femcam.fe import ContactModel, SolverOptions
+    from femcam.fe.export import scene_arrays
+    from femcam.hertz import LineContact
+    from femcam.mesh import MeshOptions
+
+    Rr, rho, F, L = 0.01, 0.02, 1500.0, 0.01
+    hc = LineContact(F=F, length=L, R1=rho, R2=Rr, cam=STEEL, roller=STEEL, mu=0.0, plane="strain")
+    m = ContactModel.build(Rr=Rr, rho_ref=rho, cam=STEEL, roller=STEEL, length=L, a_ref=float(hc.a),
+                           mesh=MeshOptions(a_over_h=a_over_h),
+                           solver=SolverOptions(stress_operators="per_solve"), plane="strain")
+    r = m.solve(F=F, rho=rho, mu=0.0)
+    if tmp_path is not None:
+        r.to_vtu(tmp_path / "zz.vtu")
+    pts, _, _, d, _ = scene_arrays(r)
+    cam = np.arange(pts.shape[0]) < m.bodies["cam"].basis.N // 2
+    x, z = pts[:, 0], d["depth"]
+    win = cam & (np.abs(x) < 2 * hc.a) & (z < 2 * hc.a) & (z > 0.3 * hc.a)
+    sf = hc.stress(x[win], z[win])
+    err = np.sqrt((d["sx"][win] - sf.sx) ** 2 + (d["sz"][win] - sf.sz) ** 2
+                  + 2 * (d["txz"][win] - sf.txz) ** 2)
+    eta = d["err_est_stress"]
+    return eta, win, float(np.sqrt(np.mean(eta[win] ** 2)) / hc.p0), float(np.sqrt(np.mean(err**2)) / hc.p0)
+
+
+def test_vtu_holds_the_recovery_indicator(tmp_path):
+    """err_est_stress_Pa is a point field of the VTU: finite, >= 0, largest within 2.5 a of the
+    contact (where the stress gradients are)."""
+    import meshio
+
+    eta, win, _, _ = _zz_window(6.0, tmp_path)
+    got = meshio.read(tmp_path / "zz.vtu").point_data["err_est_stress_Pa"]
+    np.testing.assert_allclose(got, eta, rtol=1e-12)
+    assert np.all(np.isfinite(eta)) and eta.min() >= 0.0 and eta[win].max() > 0.0
+
+
+@pytest.mark.slow
+def test_recovery_indicator_vs_hertz_stress_error():
+    """Against Hertz's subsurface field: the FE-vs-Hertz stress error holds a finite-body floor
+    (measured 0.67 % p0 rms over the window at a/h = 20, where the indicator is 0.07 %); with
+    it taken out in quadrature the discretisation part at a/h = 5 and 10 (0.58 % and 0.17 % p0)
+    is matched by the indicator with effectivity 0.68 and 0.87 (band 0.5-3), and the indicator
+    falls at a rate 1-2 (measured 1.4)."""
+    _, _, e5, t5 = _zz_window(5.0)
+    _, _, e10, t10 = _zz_window(10.0)
+    _, _, e20, t20 = _zz_window(20.0)
+    floor = t20   # the finite-body part: t20 is 0.674 % p0 with an indicator of 0.066 % p0
+    for e, t in ((e5, t5), (e10, t10)):
+        disc = math.sqrt(max(t**2 - floor**2, 0.0))
+        assert BAND[0] <= e / disc <= BAND[1], (e, t, floor)
+    assert 1.0 <= math.log(e5 / e20) / math.log(4.0) <= 2.0
