@@ -481,7 +481,7 @@ CASES: dict[str, Case] = {
     "femcam.sweep.run_tasks": Case(kw(fn=abs, tasks=[-1, 2], workers=1), {"workers": opt(INT_POS)},
                                    call=lambda *a, **k: list(femcam.sweep.run_tasks(*a, **k))),
     "femcam.sweep.sweep": Case(lazy(lambda: dict(scene=scene(), angles=TH[:2], method="hertz")),
-                               {"a_over_h": opt(POS), "rtol": opt(POS), "tolerance": POS,
+                               {"a_over_h": opt(POS), "rtol": opt(POS), "tolerance": opt(POS),
                                 "chunk_size": INT_POS,
                                 "angles": opt(REAL)}, slow=True),
     "femcam.sweep.verify_families": Case(

@@ -77,6 +77,8 @@ def test_even_ceil_and_rtol_settings():
     assert [even_ceil(x) for x in (2.0, 6.0, 6.01, 15.2)] == [6.0, 6.0, 8.0, 16.0]
     assert rtol_settings(None, 0.005, "fe", 2e-3)[1:] == (2e-3, 0.005)
     assert rtol_settings(None, 0.001, "fe", 2e-3)[1] == pytest.approx(5e-4)
+    assert rtol_settings(None, 0.01, "fe", None)[1] == pytest.approx(5e-3)   # no tolerance given
+    assert rtol_settings(10.0, None, "fe", None) == (10.0, 2e-3, None)
     with pytest.raises(InputError, match="a_over_h"):
         rtol_settings(10.0, 0.005, "fe", 2e-3)
     with pytest.raises(InputError, match="rtol"):
@@ -144,7 +146,8 @@ def test_rtol_half_percent_on_the_study_model():
     t = r.table
     arc = (t["status"] == "ok") & (t["model"] == "fe_arc")
     F, rho = t["Fc"][arc], t["rho"][arc]
-    p0 = np.array([hertz(f, sc.length, 1 / (1 / sc.follower.Rr + 1 / q))[1] for f, q in zip(F, rho)])
+    p0 = np.array([hertz(f, sc.length, 1 / (1 / sc.follower.Rr + 1 / q))[1]
+                   for f, q in zip(F, rho, strict=True)])
     true = np.abs(t["p0_fe"][arc] / p0 - 1)
     assert arc.sum() >= 60 and true.max() <= 0.005
     assert np.nanmax(t["err_est_p0"][t["status"] == "ok"]) <= 0.005
@@ -162,7 +165,7 @@ def test_rtol_tenth_percent_on_the_study_model():
     t = r.table
     arc = (t["status"] == "ok") & (t["model"] == "fe_arc")
     p0 = np.array([hertz(f, sc.length, 1 / (1 / sc.follower.Rr + 1 / q))[1]
-                   for f, q in zip(t["Fc"][arc], t["rho"][arc])])
+                   for f, q in zip(t["Fc"][arc], t["rho"][arc], strict=True)])
     true = np.abs(t["p0_fe"][arc] / p0 - 1)
     assert arc.sum() >= 10 and true.max() <= 0.001
     assert np.nanmax(t["err_est_p0"][t["status"] == "ok"]) <= 0.001

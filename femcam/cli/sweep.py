@@ -299,6 +299,7 @@ def _run(args) -> int:
         check_law("--law", args.law)
     scene = load_scene(args.scene)
     rtol_note = resolve_rtol(args, scene)
+    tol_given = args.tolerance is not None or "tolerance" in (getattr(scene, "fe", {}) or {})
     from_scene = resolve_settings(args, scene) + rtol_note
     _check_args(args)
     angles = parse_angles_deg(args.angles_deg)
@@ -315,7 +316,8 @@ def _run(args) -> int:
         res = sweep(scene, angles=angles, method=args.method,
                     a_over_h=args.mesh_size if args.rtol_pct is None else None,
                     rtol=None if args.rtol_pct is None else args.rtol_pct / 100.0,
-                    tolerance=args.tolerance, chunk_size=args.chunk_size, out=args.out,
+                    tolerance=args.tolerance if (tol_given or args.rtol_pct is None) else None,
+                    chunk_size=args.chunk_size, out=args.out,
                     resume=args.resume, workers=args.workers, scheduler=args.scheduler,
                     vtk_every=args.vtk_every, progress=progress, plots=args.plots,
                     command=_command_line(args), scene_path=args.scene,

@@ -4,8 +4,8 @@ The estimated p0 error of an FE row (:mod:`femcam.sweep.estimate`) has two parts
 discretisation error of its family's mesh carried to the row, and the family's verified reuse
 error (bounded by ``tolerance``). ``rtol`` splits the budget in half:
 
-1. ``tolerance = min(tolerance, rtol / 2)``: the family verification keeps the reuse error
-   within half the budget;
+1. ``tolerance = rtol / 2`` (``min(tolerance, rtol / 2)`` when a tolerance is given): the family
+   verification keeps the reuse error within half the budget;
 2. a **pilot** two-level estimate at ``a_over_h = 8`` on the planned families with the smallest
    and the largest curvature ratio ``Rr / rho`` (2D elasticity is scale invariant, so the
    relative error at a given ``a/h`` changes only with the shape of the gap) predicts the
@@ -40,6 +40,8 @@ __all__ = ["PILOT_A_OVER_H", "choose_mesh", "even_ceil", "pilot_a_over_h", "refi
 
 #: ``a_over_h`` of the pilot estimate (coarse level 4)
 PILOT_A_OVER_H = 8.0
+#: reuse tolerance of a sweep without ``rtol`` when none is given (relative p0 error)
+DEFAULT_TOLERANCE = 2e-3
 #: smallest ``a_over_h`` chosen for an rtol (the two-level estimate is validated from 6 on)
 MIN_A_OVER_H = 6.0
 
@@ -164,13 +166,16 @@ def rtol_settings(a_over_h, rtol, method: str, tolerance: float) -> tuple:
         Requested relative p0 error [-], in :data:`femcam.sweep.options.RTOL_RANGE`.
     method : str
         The sweep method (``"hertz"`` is refused with ``rtol``).
-    tolerance : float
-        The reuse tolerance as given [-].
+    tolerance : float or None
+        The reuse tolerance as given [-]; None: :data:`DEFAULT_TOLERANCE`, or ``rtol / 2`` with
+        ``rtol`` (measured on the seed 002 study model at rtol 1 %: 2 families and 2.9 s instead
+        of 6 families and 13.5 s with 0.2 %, load 3.9).
 
     Returns
     -------
     tuple
-        ``(a_over_h or None, tolerance, rtol or None)``.
+        ``(a_over_h or None, tolerance, rtol or None)``; with ``rtol`` the tolerance is at most
+        ``rtol / 2``.
 
     Raises
     ------
@@ -178,13 +183,15 @@ def rtol_settings(a_over_h, rtol, method: str, tolerance: float) -> tuple:
         ``rtol`` with ``a_over_h``, with method ``hertz``, or out of range.
     """
     if rtol is None:
-        return a_over_h, tolerance, None
+        return a_over_h, DEFAULT_TOLERANCE if tolerance is None else tolerance, None
     if a_over_h is not None:
         raise _validate.fail("a_over_h", a_over_h, "(elements per contact half-width)",
                              f"cannot be given with rtol = {rtol}: rtol chooses the mesh; give one")
     if method == "hertz":
         raise _validate.fail("rtol", rtol, "(relative p0 error)", "needs an FE method (fe or auto)")
     rtol = _validate.in_range("rtol", rtol, *RTOL_RANGE, "(relative p0 error)")
+    if tolerance is None:
+        return PILOT_A_OVER_H, rtol / 2.0, rtol
     return PILOT_A_OVER_H, min(_validate.positive("tolerance", tolerance, ""), rtol / 2.0), rtol
 
 

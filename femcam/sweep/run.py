@@ -61,7 +61,7 @@ def parse_angles_deg(spec: str) -> np.ndarray:
     return _validate.angles_deg("--angles-deg", spec)
 
 
-def sweep(scene, *, angles=None, method: str = "fe", a_over_h=None, tolerance: float = 2e-3,
+def sweep(scene, *, angles=None, method: str = "fe", a_over_h=None, tolerance=None,
           rtol=None, chunk_size: int = 30, out=None, resume: bool = False,
           workers: int | str = "auto", scheduler=None, client=None, vtk_every: int | None = None,
           progress: bool | None = None, plots: bool | None = None, command: str | None = None,
@@ -81,11 +81,10 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h=None, tolerance: f
         :mod:`femcam.sweep.realcam`).
     a_over_h : float, optional
         FE element size in the contact zone ``h = a / a_over_h`` (default 10; refused with rtol).
-    tolerance : float
+    tolerance : float, optional
         Bound on the relative p0 difference between an angle solved with its family's model and
-        with a model built fresh for it (the reuse error); verified with fresh models at each
-        family's worst-covered angles, families split until it holds
-        (:mod:`femcam.sweep.families`). >= 1e-4.
+        with a model built fresh for it (the reuse error), >= 1e-4; default 2e-3, with ``rtol``
+        ``rtol / 2`` (at most); families split until it holds (:mod:`femcam.sweep.families`).
     rtol : float, optional
         Bound on every FE row's estimated relative p0 error (2e-4 to 0.1): the sweep chooses
         ``a_over_h`` and ``tolerance <= rtol / 2`` (:mod:`femcam.sweep.rtol`).
