@@ -316,7 +316,7 @@ def plot(rows, path):
         for lab, st in styles.items():
             if not lab.endswith(kind):
                 continue
-            rs = [r for r in rows if r[0] == lab]
+            rs = sorted((r for r in rows if r[0] == lab), key=lambda r: r[2])  # by time
             if not rs:
                 continue
             t = [r[2] for r in rs]
