@@ -209,6 +209,11 @@ def test_cli_refuses_rtol_with_mesh_size(tmp_path, capsys):
     scene.write_text(STUDY.read_text() + "\n[fe]\nrtol_pct = 0.5\na_over_h = 10\n")
     code = main(["sweep", str(scene), "--out", str(tmp_path / "p")])
     assert code != 0 and "rtol_pct" in capsys.readouterr().err
+    # the scene's rtol is for its FE runs: a Hertz sweep of the same scene ignores it
+    scene.write_text(STUDY.read_text() + "\n[fe]\nrtol_pct = 0.5\n")
+    code = main(["sweep", str(scene), "--out", str(tmp_path / "q"), "--method", "hertz",
+                 "--angles-deg", "0:360:90", "--no-plots", "--vtk-every", "0"])
+    assert code == 0, capsys.readouterr().err
 
 
 def _zz_window(a_over_h, tmp_path=None):
@@ -265,3 +270,23 @@ def test_recovery_indicator_vs_hertz_stress_error():
         disc = math.sqrt(max(t**2 - floor**2, 0.0))
         assert BAND[0] <= e / disc <= BAND[1], (e, t, floor)
     assert 1.0 <= math.log(e5 / e20) / math.log(4.0) <= 2.0
+
+
+@pytest.mark.slow
+def test_cli_rtol_writes_the_estimate_columns(tmp_path, capsys):
+    """femcam sweep --rtol-pct 0.5: the CSV's err_est_*_pct columns (percent) hold every FE row's
+    estimate, p0 within the requested 0.5 %, and the summary line says what was reached."""
+    import pandas as pd
+
+    from femcam.cli import main
+    out = tmp_path / "o"
+    assert main(["sweep", str(STUDY), "--out", str(out), "--rtol-pct", "0.5", "--angles-deg",
+                 "0:360:30", "--no-plots", "--vtk-every", "0"]) == 0
+    text = capsys.readouterr().out
+    assert "estimated discretisation error" in text and "rtol 0.5 % on p0" in text
+    d = pd.read_csv(out / "sweep.csv")
+    fe = d[d["status"] == "ok"]
+    for c in ("err_est_p0_pct", "err_est_a_pct", "err_est_vm_pct", "err_est_tau1_pct", "a_over_h_row"):
+        assert np.all(np.isfinite(fe[c])), c
+    assert fe["err_est_p0_pct"].max() <= 0.5
+    assert "rtol" in (out / "report.md").read_text()

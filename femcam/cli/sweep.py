@@ -301,6 +301,8 @@ def _run(args) -> int:
     rtol_note = resolve_rtol(args, scene)
     tol_given = args.tolerance is not None or "tolerance" in (getattr(scene, "fe", {}) or {})
     from_scene = resolve_settings(args, scene) + rtol_note
+    if rtol_note and args.method == "hertz":  # the scene's rtol is for its FE runs
+        args.rtol_pct, from_scene = None, from_scene[:-1]
     _check_args(args)
     angles = parse_angles_deg(args.angles_deg)
     args.workers, note = useful_workers(args.workers, angles.size, args.chunk_size)
