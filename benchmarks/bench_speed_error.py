@@ -25,7 +25,10 @@ separation of the two circles.
 Sweeps: 360 angles of README command 1 (FE, ``femcam.sweep.sweep`` in memory, cold model
 cache, serial) at a/h = 10, 20 (and 26 without ``--quick``): compute time (analytic +
 families + verification + solves) and the largest p0 / a error against Hertz over the angles;
-the half-space solve of each angle's (F, rho) from the Hertz sweep for comparison.
+the half-space solve of each angle's (F, rho) from the Hertz sweep for comparison; next to the
+true errors the largest estimated p0 error of the rows (``err_est_p0``, femcam.sweep.estimate);
+then sweeps with ``rtol`` = 1 %, 0.5 % (and 0.1 % without ``--quick``): the a/h the sweep chose,
+the time, and the reached true and estimated p0 errors (asserted <= rtol before printing).
 
 ``--memory`` (``--memory-only``: nothing else): peak RSS (subprocess, ``VmHWM``) of a Hertz
 sweep of 10 000 and 100 000 angles written chunk by chunk to a directory (chunk_size 1000),
@@ -151,20 +154,26 @@ def fe_scene(n):
     return tt, m.n_dofs, e, dict(m.timings)
 
 
-def fe_sweep(n):
+def fe_sweep(n, rtol=None):
+    """A cold 360-angle FE sweep at a/h = n (or chosen for ``rtol``): time, timings, max |p0|
+    and |a| errors vs Hertz and the largest p0 estimate over the arc-gap rows, the table, and the
+    a/h used."""
     from femcam.sweep import sweep
     from femcam.sweep.cache import default_cache
 
     default_cache().clear()  # cold model cache: every family built
     t = time.perf_counter()
-    res = sweep(STUDY, a_over_h=n, workers=1)
+    res = sweep(STUDY, workers=1, **({"a_over_h": n} if rtol is None else {"rtol": rtol}))
     tt = time.perf_counter() - t
     tab = res.table
     # arc-gap rows only (as bench_main_job.py): the exact-gap rows at the cam's curvature jumps
     # carry a non-Hertzian pressure, so their difference from Hertz is not an error
     ok = np.isfinite(tab["err_p0"]) & (np.asarray(tab["model"]).astype(str) == "fe_arc")
+    est = float(np.nanmax(tab["err_est_p0"][ok]))
+    est_all = float(np.nanmax(np.where(np.asarray(tab["status"]).astype(str) == "ok",
+                                       tab["err_est_p0"], np.nan)))
     return tt, dict(res.timings), float(np.max(np.abs(tab["err_p0"][ok]))), \
-        float(np.max(np.abs(tab["err_a"][ok]))), tab
+        float(np.max(np.abs(tab["err_a"][ok]))), tab, max(est, est_all), res.provenance["options"]["a_over_h"]
 
 
 def hs_sweep(tab, n):
@@ -266,14 +275,22 @@ def main() -> int:
         print("\n## 360-angle sweep of the study model (cold model cache, serial, in memory; "
               "FE errors over the arc-gap rows)\n")
         print("| method | a/h | compute (s) | analytic / verify / solves (s) | max abs p0 err | "
-              "max abs a err | load |")
-        print("|---|---|---|---|---|---|---|")
+              "max abs a err | max p0 estimate | load |")
+        print("|---|---|---|---|---|---|---|---|")
         tab = None
         for n in ([10, 20] if args.quick else [10, 20, 26]):
-            tt, tm, ep, ea, tab = fe_sweep(n)
-            rows.append(("FE sweep", n, tt, {"p0": ep, "a": ea}))
+            tt, tm, ep, ea, tab, est, _ = fe_sweep(n)
+            rows.append(("FE sweep", n, tt, {"p0": ep, "a": ea, "est p0": est}))
             print(f"| FE | {n} | {tt:.2f} | {tm['analytic']:.2f} / {tm['verify']:.2f} / {tm['compute']:.2f} "
-                  f"| {ep:.3%} | {ea:.3%} | {os.getloadavg()[0]:.2f} |", flush=True)
+                  f"| {ep:.3%} | {ea:.3%} | {est:.3%} | {os.getloadavg()[0]:.2f} |", flush=True)
+        for rtol in (0.01, 0.005) if args.quick else (0.01, 0.005, 0.001):
+            tt, tm, ep, ea, _, est, n = fe_sweep(None, rtol)
+            # correctness before the time is worth anything: the requested bound holds
+            assert ep <= rtol and est <= rtol, f"rtol {rtol:.1%}: true {ep:.3%}, estimate {est:.3%}"
+            rows.append(("FE rtol sweep", n, tt, {"p0": ep, "est p0": est}))
+            print(f"| FE rtol {100 * rtol:g} % | {n:g} (chosen) | {tt:.2f} | {tm['analytic']:.2f} / "
+                  f"{tm['verify']:.2f} / {tm['compute']:.2f} | {ep:.3%} | {ea:.3%} | {est:.3%} | "
+                  f"{os.getloadavg()[0]:.2f} |", flush=True)
         for n in (10, 20, 40):
             tt, ep, ea = hs_sweep(tab, n)
             rows.append(("half-space sweep", n, tt, {"p0": ep, "a": ea}))
@@ -293,21 +310,22 @@ def plot(rows, path):
     import matplotlib.pyplot as plt
 
     fig, axs = plt.subplots(1, 2, figsize=(10, 4))
-    styles = {"FE scene": "o-", "half-space scene": "s--", "FE sweep": "o-", "half-space sweep": "s--"}
+    styles = {"FE scene": "o-", "half-space scene": "s--", "FE sweep": "o-", "half-space sweep": "s--",
+              "FE rtol sweep": "^:"}
     for ax, kind in zip(axs, ("scene", "sweep"), strict=True):
         for lab, st in styles.items():
             if not lab.endswith(kind):
                 continue
-            rs = [r for r in rows if r[0] == lab]
+            rs = sorted((r for r in rows if r[0] == lab), key=lambda r: r[2])  # by time
             if not rs:
                 continue
             t = [r[2] for r in rs]
-            for key, c in (("p0", "C0"), ("a", "C1"), ("rms", "C2")):
+            for key, c in (("p0", "C0"), ("a", "C1"), ("rms", "C2"), ("est p0", "C3")):
                 err = [abs(r[3][key]) for r in rs if key in r[3]]
                 if len(err) == len(t):
-                    ax.loglog(t, err, st, color=c, label=f"{lab.split()[0]} {key}")
+                    ax.loglog(t, err, st, color=c, label=f"{' '.join(lab.split()[:-1])} {key}")
         ax.set_xlabel("wall time (s)")
-        ax.set_ylabel("relative error vs Hertz")
+        ax.set_ylabel("relative error vs Hertz (est: the estimate)")
         ax.set_title("single scene" if kind == "scene" else "360-angle sweep (max over angles)")
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)

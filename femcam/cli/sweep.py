@@ -5,8 +5,10 @@ DIR/sweep.npz (SI, plus the scene file's text), DIR/scene.toml (a copy of the sc
 --law written into it), DIR/chunks/ (the resumable store), DIR/sweep.pvd + DIR/vtk/*.vtu
 (every 10th angle by default; --vtk-every K) and PNG plots in DIR/plots/ (unless --no-plots).
 
-Settings: a flag given on the command line wins; else the scene's [fe] a_over_h, tolerance and
-[sweep] method, angles_deg, chunk_size, vtk_every, plots; else the defaults shown below.
+Settings: a flag given on the command line wins; else the scene's [fe] a_over_h, tolerance,
+rtol_pct and [sweep] method, angles_deg, chunk_size, vtk_every, plots; else the defaults shown
+below. --rtol-pct chooses the mesh: it is refused together with --mesh-size (and [fe] rtol_pct
+together with [fe] a_over_h); a flag of one beats the scene's other.
 """
 
 from __future__ import annotations
@@ -22,7 +24,8 @@ from ..mesh.estimate import check_contact_elements
 from ..scene import load_scene, study_problem
 from ..scene.schema import STUDY_RANGES, STUDY_UNITS, STUDY_WHOLE
 from ..sweep import parse_angles_deg, sweep
-from ..sweep.options import TOLERANCE_FLOOR
+from ..sweep.estimate import estimate_text
+from ..sweep.options import RTOL_RANGE, TOLERANCE_FLOOR
 from ..sweep.result import families_text, hertz_check_text
 from ..sweep.worst import assess_line
 from ._common import (
@@ -74,6 +77,12 @@ def register(subparsers) -> None:
         dest = flag[2:].replace("-", "_")
         add_number(p, flag, rng, default=None, metavar=metavar,
                    help=f"{text} {_default_text(dest, extra)}")
+    add_number(p, "--rtol-pct", Range("percent", RTOL_RANGE[0] * 100, RTOL_RANGE[1] * 100), default=None,
+               metavar="PCT",
+               help="requested bound on the estimated p0 error of every FE row, in percent "
+                    "(0.5 means 0.5 %%): the sweep chooses the mesh (a/h) and a reuse tolerance "
+                    "<= PCT/2 from a two-level error estimate; each row reports err_est_p0_pct "
+                    "(default: [fe] rtol_pct, else none: --mesh-size decides)")
     p.add_argument("--method", choices=("fe", "hertz", "auto"), default=None,
                    help="fe: FE contact solve; hertz: analytic only; auto: the cheapest of Hertz, "
                         "FE arc gap, FE exact gap within --tolerance per angle "
@@ -172,6 +181,46 @@ def resolve_settings(args, scene) -> list[str]:
     return used
 
 
+def resolve_rtol(args, scene) -> list[str]:
+    """``--rtol-pct`` against ``--mesh-size`` and the scene's ``[fe] rtol_pct`` / ``a_over_h``.
+
+    Both flags: refused. One flag: it wins over the scene's other key (``--mesh-size`` drops
+    ``[fe] rtol_pct``; ``--rtol-pct`` drops ``[fe] a_over_h``). Neither flag: ``[fe] rtol_pct``
+    is used, refused together with ``[fe] a_over_h``.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The parsed flags; ``args.rtol_pct`` (percent, or None) is set in place.
+    scene : femcam.scene.Scene
+        The scene (its ``fe`` table).
+
+    Returns
+    -------
+    list of str
+        ``["[fe] rtol_pct = ..."]`` when the scene's value is used, else ``[]``.
+
+    Raises
+    ------
+    InputError
+        Both flags, or both scene keys.
+    """
+    fe = getattr(scene, "fe", {}) or {}
+    if args.rtol_pct is not None:
+        if args.mesh_size is not None:
+            raise _validate.fail("--rtol-pct", args.rtol_pct, "%", "cannot be given with --mesh-size: "
+                                 "--rtol-pct chooses the mesh; give one of them")
+        return []
+    if args.mesh_size is not None or "rtol_pct" not in fe:
+        return []
+    if "a_over_h" in fe:
+        raise _validate.fail("[fe] rtol_pct", fe["rtol_pct"], "%", "cannot be given with [fe] a_over_h "
+                             "in the same scene: rtol_pct chooses the mesh; give one of them (or "
+                             "override on the command line with --mesh-size or --rtol-pct)")
+    args.rtol_pct = float(fe["rtol_pct"])
+    return [f"[fe] rtol_pct = {args.rtol_pct:g}"]
+
+
 def useful_workers(requested, n_angles: int, chunk_size: int) -> tuple:
     """Cap a worker count at the CPU cores and the number of chunks (more only wait).
 
@@ -224,7 +273,9 @@ def _check_args(args) -> None:
 def _command_line(args) -> str:
     """The command, rebuilt from the parsed arguments (also right for ``main([...])`` calls)."""
     parts = ["femcam", "sweep", args.scene, "--out", args.out, "--angles-deg", args.angles_deg,
-             "--workers", str(args.workers), "--mesh-size", f"{args.mesh_size:g}",
+             "--workers", str(args.workers),
+             *(["--rtol-pct", f"{args.rtol_pct:g}"] if args.rtol_pct is not None else
+               ["--mesh-size", f"{args.mesh_size:g}"]),
              "--tolerance", f"{args.tolerance:g}", "--chunk-size", str(args.chunk_size),
              "--vtk-every", str(args.vtk_every), "--method", args.method]
     if args.scheduler:
@@ -247,7 +298,11 @@ def _run(args) -> int:
     if args.law is not None:
         check_law("--law", args.law)
     scene = load_scene(args.scene)
-    from_scene = resolve_settings(args, scene)
+    rtol_note = resolve_rtol(args, scene)
+    tol_given = args.tolerance is not None or "tolerance" in (getattr(scene, "fe", {}) or {})
+    from_scene = resolve_settings(args, scene) + rtol_note
+    if rtol_note and args.method == "hertz":  # the scene's rtol is for its FE runs
+        args.rtol_pct, from_scene = None, from_scene[:-1]
     _check_args(args)
     angles = parse_angles_deg(args.angles_deg)
     args.workers, note = useful_workers(args.workers, angles.size, args.chunk_size)
@@ -260,8 +315,11 @@ def _run(args) -> int:
         scene = scene.with_law(args.law)
     progress = {"auto": None, "on": True, "off": False}[args.progress]
     try:
-        res = sweep(scene, angles=angles, method=args.method, a_over_h=args.mesh_size,
-                    tolerance=args.tolerance, chunk_size=args.chunk_size, out=args.out,
+        res = sweep(scene, angles=angles, method=args.method,
+                    a_over_h=args.mesh_size if args.rtol_pct is None else None,
+                    rtol=None if args.rtol_pct is None else args.rtol_pct / 100.0,
+                    tolerance=args.tolerance if (tol_given or args.rtol_pct is None) else None,
+                    chunk_size=args.chunk_size, out=args.out,
                     resume=args.resume, workers=args.workers, scheduler=args.scheduler,
                     vtk_every=args.vtk_every, progress=progress, plots=args.plots,
                     command=_command_line(args), scene_path=args.scene,
@@ -314,6 +372,8 @@ def _print_summary(res) -> None:
           + f", von Mises {s['vm_max'] / 1e6:.1f} MPa, tau1 {s['tau1_max'] / 1e6:.1f} MPa")
     if res.method == "fe":
         print(f"  p0 FE vs Hertz: {hertz_check_text(s)}")
+    if res.method != "hertz" and estimate_text(res):
+        print(f"  {estimate_text(res)}")
     for line in s.get("extras", {}).get("headline", ()):   # what the headline model omits
         print(f"  {line}")
     for line in s.get("extras", {}).get("worst", ()):   # each provider's worst values (sweep.worst)

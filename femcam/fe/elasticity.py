@@ -407,25 +407,28 @@ def probe_matrix(body: Body, xy: np.ndarray) -> sp.csr_matrix:
                              f"must lie inside the mesh of body {body.name}") from None
 
 
-def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matrix:
-    """Sparse operator ``S`` with ``S @ u = [sxx; syy; sxy]`` at scalar-DOF nodes (stacked).
-
-    ``nodes`` selects scalar nodes (indices into the scalar DOF numbering of ``body.basis``,
-    vertices first then edge midpoints for P2); default all. Built from the reference-element
-    shape-function gradients at the element nodes, then averaged over neighbouring elements.
+def element_gradients(body: Body, nodes: np.ndarray | None = None) -> tuple:
+    """Physical shape-function gradients of every element at its own nodes (no averaging).
 
     Parameters
     ----------
     body : Body
         The assembled body.
     nodes : ndarray of int, shape (n,), optional
-        Scalar node indices; default all ``n_dofs // 2`` nodes.
+        Only the elements around these scalar nodes; default all elements.
 
     Returns
     -------
-    scipy.sparse.csr_matrix, shape (3 n, n_dofs)
-        Stress per unit nodal displacement [Pa/m]; rows ``sxx`` of every node, then ``syy``,
-        then ``sxy``.
+    dphi : ndarray, shape (nloc, 2, nel, nloc)
+        ``d phi_j / d x_i`` of local function ``j`` at local node ``k`` of each element [1/m].
+    sdofs : ndarray of int, shape (nloc, nel)
+        Scalar node of each local node.
+    edofs : ndarray of int, shape (2 nloc, nel)
+        Vector DOFs ``(ux, uy)`` of each local node.
+    lam, mu : float or ndarray, shape (nel,)
+        Lame constants of the elements [Pa].
+    cnt : ndarray, shape (n_dofs // 2,)
+        Elements around each scalar node (all elements counted).
     """
     b = body.basis
     mesh = body.mesh
@@ -436,8 +439,7 @@ def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matri
     # reference gradients dphi_j/dxi at node k: (nloc_j, 2, nloc_k)
     G = np.zeros((nloc, 2, nloc))
     for j in range(nloc):
-        _, dphi = elem.lbasis(ref, j)
-        G[j] = dphi
+        G[j] = elem.lbasis(ref, j)[1]
     nscal = b.N // 2
     sdofs = b.element_dofs[::2] // 2  # scalar dofs (vector dofs interleaved (ux, uy) per node)
     cnt = np.bincount(sdofs.ravel(), minlength=nscal).astype(float)  # elements per node
@@ -461,7 +463,31 @@ def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matri
     invJ[1, :, 0] = -J[1, :, 0] / detJ
     invJ[1, :, 1] = J[0, :, 0] / detJ
     # physical gradients: (nloc_j, 2[i], nel, nloc_k)
-    dphi = np.einsum("jkn,kei->jien", G, invJ)
+    return np.einsum("jkn,kei->jien", G, invJ), sdofs, edofs, lam, mu, cnt
+
+
+def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matrix:
+    """Sparse operator ``S`` with ``S @ u = [sxx; syy; sxy]`` at scalar-DOF nodes (stacked).
+
+    ``nodes`` selects scalar nodes (indices into the scalar DOF numbering of ``body.basis``,
+    vertices first then edge midpoints for P2); default all. Built from the reference-element
+    shape-function gradients at the element nodes, then averaged over neighbouring elements.
+
+    Parameters
+    ----------
+    body : Body
+        The assembled body.
+    nodes : ndarray of int, shape (n,), optional
+        Scalar node indices; default all ``n_dofs // 2`` nodes.
+
+    Returns
+    -------
+    scipy.sparse.csr_matrix, shape (3 n, n_dofs)
+        Stress per unit nodal displacement [Pa/m]; rows ``sxx`` of every node, then ``syy``,
+        then ``sxy``.
+    """
+    dphi, sdofs, edofs, lam, mu, cnt = element_gradients(body, nodes)
+    b, nscal, nloc = body.basis, body.basis.N // 2, dphi.shape[0]
     rows, cols, vals = [], [], []
     for k in range(nloc):  # node at which stress is evaluated
         node = sdofs[k]

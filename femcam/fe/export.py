@@ -8,7 +8,8 @@ the roller. P2 models are written as quadratic ``triangle6`` cells (skfem's loca
 XX, YY, ZZ, XY, YZ, XZ: sx, sz, sy, +-txz, 0, 0; :func:`stress_tensor`), ``tau1_Pa``,
 ``von_mises_Pa``, ``depth_m`` (m below each body's surface) and ``contact_pressure_Pa`` (Pa,
 the P1 interpolant of the nodal pressure at the vertex and midside nodes of the fine-zone contact
-curve, 0 elsewhere), ``contact_traction_Pa`` (the tangential traction on each body along x in
+curve, 0 elsewhere), ``err_est_stress_Pa`` (the recovery (ZZ) indicator of the stress error,
+:mod:`femcam.fe.estimate`), ``contact_traction_Pa`` (the tangential traction on each body along x in
 the contact frame, ``q`` on the cam and ``-q`` on the roller, same interpolation). Cell data
 ``body``: 0 cam, 1 roller.
 """
@@ -17,6 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .estimate import zz_indicator
 from .recovery import surface_nodes
 
 FIELDS = ("sx", "sz", "txz", "sy", "tau1", "von_mises")
@@ -25,7 +27,7 @@ FIELDS = ("sx", "sz", "txz", "sy", "tau1", "von_mises")
 VTK_NAMES = {"displacement": "displacement_m", "stress": "stress_Pa", "tau1": "tau1_Pa",
              "von_mises": "von_mises_Pa", "depth": "depth_m",
              "contact_pressure": "contact_pressure_Pa", "contact_traction": "contact_traction_Pa",
-             "wear_rate": "wear_rate_m_s"}
+             "wear_rate": "wear_rate_m_s", "err_est_stress": "err_est_stress_Pa"}
 
 
 def stress_tensor(sx, sz, sy, txz, sign: float):
@@ -89,13 +91,15 @@ def scene_arrays(result, model=None):
     point_data : dict of str to ndarray
         Per node: ``sx, sz, txz, sy, tau1, von_mises`` [Pa], ``stress`` (n, 6) [Pa],
         ``displacement`` (n, 3) [m], ``depth`` [m], ``contact_pressure`` and
-        ``contact_traction`` [Pa].
+        ``contact_traction`` [Pa], ``err_est_stress`` [Pa] (the recovery indicator of
+        :func:`femcam.fe.estimate.zz_indicator`).
     body_id : ndarray of int, shape (n_el,)
         0 for cam cells, 1 for roller cells.
     """
 
     model = result.model_or(model)
-    keys = (*FIELDS, "displacement", "depth", "contact_pressure", "contact_traction", "stress")
+    keys = (*FIELDS, "displacement", "depth", "contact_pressure", "contact_traction", "stress",
+            "err_est_stress")
     pts, cells, data, body_id = [], [], {k: [] for k in keys}, []
     offset = 0
     for i, name in enumerate(("cam", "roller")):
@@ -112,6 +116,7 @@ def scene_arrays(result, model=None):
                                             -1.0 if name == "cam" else 1.0))
         data["displacement"].append(np.column_stack([u.T, np.zeros(n)]))
         data["depth"].append(fld["z"])
+        data["err_est_stress"].append(zz_indicator(b, u))  # recovery (ZZ) indicator, Pa
         # the fine-zone contact curve: vertices and P2 midside nodes (on the chords, so not
         # exactly at depth 0); the pressure is zero beyond it
         on = np.zeros(n, dtype=bool)

@@ -192,7 +192,9 @@ RANGES: dict[str, dict[str, Range]] = {
                                    "perfluoropolyethers (~1900)")},
     "surface": {k: Range(0.0, 50.0, _RA) for k in ("cam_Ra_um", "roller_Ra_um", "cam_Rq_um", "roller_Rq_um")},
     "fe": {"a_over_h": Range(2.0, 400.0, "femcam: STUDY_RANGES (mesh resolution of the contact)"),
-           "tolerance": Range(1e-4, 0.5, "femcam: STUDY_RANGES (reuse error floor)")},
+           "tolerance": Range(1e-4, 0.5, "femcam: STUDY_RANGES (reuse error floor)"),
+           "rtol_pct": Range(0.02, 10.0, "femcam: RTOL_RANGE (estimated p0 error in %; 0.02 % = twice "
+                             "the reuse tolerance floor)")},
     "sweep": {"chunk_size": Range(1.0, 1e5, "femcam: whole number of angles"),
               "vtk_every": Range(0.0, 1e5, "femcam: whole number of angles (0: none)")},
     "wear": {

@@ -16,7 +16,11 @@ from ..materials import Material, effective_modulus
 from ..scene.schema import METHODS, STUDY_UNITS, STUDY_WHOLE, TOLERANCE_FLOOR, study_problem
 from ..wear.options import follower_tip_radius
 
-__all__ = ["METHODS", "TOLERANCE_FLOOR", "ContactParams", "SweepOptions", "contact_params"]
+#: accepted ``rtol`` (relative p0 error): 0.02 % (the reuse tolerance floor 1e-4 is half of it)
+#: to 10 %
+RTOL_RANGE = (2e-4, 0.1)
+
+__all__ = ["METHODS", "RTOL_RANGE", "TOLERANCE_FLOOR", "ContactParams", "SweepOptions", "contact_params"]
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -41,6 +45,10 @@ class SweepOptions:
         Angles per chunk (unit of work and of the on-disk store), a whole number >= 1.
     vtk_every : int
         Write a ``.vtu`` every k-th angle (0: none), a whole number >= 0.
+    rtol : float or None
+        Requested bound on the estimated relative p0 error of every FE row (a fraction, in
+        [:data:`RTOL_RANGE`]; ``--rtol-pct`` and ``[fe] rtol_pct`` give it in percent); the
+        sweep then chooses ``a_over_h`` (:mod:`femcam.sweep.rtol`). None: ``a_over_h`` as given.
 
     Raises
     ------
@@ -53,6 +61,7 @@ class SweepOptions:
     tolerance: float = 2e-3
     chunk_size: int = 30
     vtk_every: int = 0
+    rtol: float | None = None
 
     def __post_init__(self):
         _validate.choice("method", self.method, METHODS)
@@ -63,6 +72,9 @@ class SweepOptions:
             if problem:
                 raise _validate.fail(key, value, unit, problem)
             object.__setattr__(self, key, int(x) if key in STUDY_WHOLE else x)
+        if self.rtol is not None:
+            object.__setattr__(self, "rtol", _validate.in_range("rtol", self.rtol, *RTOL_RANGE,
+                                                                "(relative p0 error)"))
 
     def to_dict(self) -> dict:
         """The options as a JSON-able dict (manifest key and provenance).
@@ -71,10 +83,13 @@ class SweepOptions:
         -------
         dict
             ``{"method", "a_over_h", "tolerance", "chunk_size", "vtk_every"}`` -> value (the
-            fields' units).
+            fields' units), and ``"rtol"`` when it is set.
         """
-        return {"method": self.method, "a_over_h": self.a_over_h, "tolerance": self.tolerance,
-                "chunk_size": self.chunk_size, "vtk_every": self.vtk_every}
+        out = {"method": self.method, "a_over_h": self.a_over_h, "tolerance": self.tolerance,
+               "chunk_size": self.chunk_size, "vtk_every": self.vtk_every}
+        if self.rtol is not None:
+            out["rtol"] = self.rtol
+        return out
 
 
 @dataclass(frozen=True)

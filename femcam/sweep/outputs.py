@@ -6,7 +6,7 @@
 from __future__ import annotations
 
 import hashlib
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -141,6 +141,12 @@ class SweepRun:
         Tangential load and directions per angle (FE methods).
     hertz : ndarray of bool, shape (n,), optional
         Rows answered by Hertz under method ``auto``.
+    estimates : dict[int, FamilyEstimate]
+        The families' two-level error estimates (:mod:`femcam.sweep.estimate`).
+    preplanned : bool
+        The families were planned and verified while choosing the mesh for ``rtol``.
+    rtol_info : dict
+        The ``rtol`` mesh choice (pilots, levels tried), recorded in the provenance.
     """
 
     scene: Scene
@@ -168,6 +174,9 @@ class SweepRun:
     jump: np.ndarray | None = None
     traction: object = None
     hertz: np.ndarray | None = None
+    estimates: dict = field(default_factory=dict)
+    preplanned: bool = False
+    rtol_info: dict = field(default_factory=dict)
 
 
 

@@ -48,6 +48,7 @@ from ..hertz.conformity import (
 from ..io import vtu_name, write_fe_vtu, write_hertz_vtu
 from ..wear.slip import SlipResult
 from .cache import ModelCache, default_cache
+from .estimate import fill_row_estimate
 from .extras import fill_extras
 from .headline import COATED, omitted_physics
 from .options import ContactParams, SweepOptions, contact_params
@@ -145,6 +146,8 @@ class ChunkTask:
         Per-angle traction (None: full sliding in the scene's direction).
     hertz : ndarray of bool, shape (n,), optional
         Method ``auto``: rows Hertz answers (:func:`femcam.sweep.realcam.auto_hertz_rows`).
+    estimates : dict[int, femcam.sweep.estimate.FamilyEstimate]
+        The families' two-level error estimates (empty: the rows get NaN estimates).
     """
 
     index: int
@@ -161,6 +164,7 @@ class ChunkTask:
     jump: np.ndarray | None = None
     traction: Traction | None = None
     hertz: np.ndarray | None = None
+    estimates: dict = field(default_factory=dict)
 
 
 def analytic_rows(scene, theta) -> tuple[dict, object]:
@@ -353,6 +357,10 @@ def _fe_angle(task: ChunkTask, cp: ContactParams, rows, flags, i: int,
     flags[i].extend(fe_fill(rows, i, r))
     rows["Q_over_muFc"][i] = r.Q / (cp.mu * F) if cp.mu > 0 else np.nan
     rows["family"][i] = fid
+    fill_row_estimate(rows, i, task.estimates.get(fid), float(rows["a_hertz"][i]), model.a_ref,
+                      task.options.a_over_h)
+    if task.options.rtol is not None and rows["err_est_p0"][i] > task.options.rtol:
+        flags[i].append("rtol_not_met")
     if r.outside_hertz and "hertz_large_a" not in flags[i]:
         flags[i].append("hertz_large_a")
     if r.converged:

@@ -15,6 +15,7 @@ import numpy as np
 from .._repr import compact_repr, dataframe, span
 from ..errors import InputError
 from ..viz.sweep import plot_caption
+from .estimate import estimate_text
 from .realrows import FLAT_BIN_RATIO
 from .table import COLUMNS, NUMERIC, PROFILE_PREFIX, STATUSES, TEXT_COLUMNS, worst_row
 from .worst import angle_text, peak_rows
@@ -435,6 +436,8 @@ def report_markdown(result: SweepResult) -> str:
               for r in peak_rows(result.table)]   # the providers' worst values: _extras_lines
     # the text holds |...|: escaped, or Markdown splits the row at each bar
     lines += [f"| p0 FE vs Hertz | {hertz_check_text(s).replace('|', chr(92) + '|')} | | | | |"]
+    if estimate_text(result):   # femcam.sweep.estimate: the FE rows' error estimates
+        lines += [f"| error estimates | {estimate_text(result)} | | | | |"]
     lines += [f"- {t}" for t in p.get("extras", {}).get("headline", ())]   # what the headline omits
     lines += _extras_lines(p.get("extras", {}))
     plots = {k: f"plots/{Path(v).name}" for k, v in result.paths.items() if k.startswith("plot_")}

@@ -22,6 +22,7 @@ from ..mesh.estimate import check_contact_elements
 from ..scene import load_scene
 from ..scene.digest import physics_hash, physics_parts
 from .cache import default_cache
+from .estimate import estimate_run
 from .extras import extras_provenance
 from .options import SweepOptions, contact_params
 from .outputs import SweepRun, scene_hash, scene_source, write_outputs
@@ -29,6 +30,7 @@ from .parallel import AUTO_VTU_S, auto_workers, run_tasks
 from .pipeline import ChunkTask, contact_mask, run_chunk
 from .realcam import auto_hertz_rows, contact_scene, jump_angles, real_cam_summary, scene_traction
 from .result import SweepResult
+from .rtol import choose_mesh, rtol_settings
 from .store import LOCK, STREAM_ANGLES, ChunkStore, DirLock, array_hash
 from .table import TableBuilder
 from .verify import FamilyRecord, verify_families
@@ -61,8 +63,8 @@ def parse_angles_deg(spec: str) -> np.ndarray:
     return _validate.angles_deg("--angles-deg", spec)
 
 
-def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
-          tolerance: float = 2e-3, chunk_size: int = 30, out=None, resume: bool = False,
+def sweep(scene, *, angles=None, method: str = "fe", a_over_h=None, tolerance=None,
+          rtol=None, chunk_size: int = 30, out=None, resume: bool = False,
           workers: int | str = "auto", scheduler=None, client=None, vtk_every: int | None = None,
           progress: bool | None = None, plots: bool | None = None, command: str | None = None,
           scene_path=None, chunk_delay_s: float = 0.0, overwrite: bool = False,
@@ -79,13 +81,15 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
         ``"fe"`` (FE contact solve, default), ``"hertz"`` (analytic only, fast) or ``"auto"``
         (the cheapest of Hertz, FE arc gap, FE exact gap within ``tolerance`` per angle;
         :mod:`femcam.sweep.realcam`).
-    a_over_h : float
-        FE element size in the contact zone ``h = a / a_over_h``.
-    tolerance : float
+    a_over_h : float, optional
+        FE element size in the contact zone ``h = a / a_over_h`` (default 10; refused with rtol).
+    tolerance : float, optional
         Bound on the relative p0 difference between an angle solved with its family's model and
-        with a model built fresh for it (the reuse error); verified with fresh models at each
-        family's worst-covered angles, families split until it holds
-        (:mod:`femcam.sweep.verify`). >= 1e-4.
+        with a model built fresh for it (the reuse error), >= 1e-4; default 2e-3, with ``rtol``
+        ``rtol / 2`` (at most); families split until it holds (:mod:`femcam.sweep.verify`).
+    rtol : float, optional
+        Bound on every FE row's estimated relative p0 error (2e-4 to 0.1): the sweep chooses
+        ``a_over_h`` and ``tolerance <= rtol / 2`` (:mod:`femcam.sweep.rtol`).
     chunk_size : int
         Angles per chunk (unit of parallel work and of the on-disk store).
     out : str or Path, optional
@@ -132,8 +136,8 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
         On Ctrl-C (a ``KeyboardInterrupt`` saying what was saved and how to resume).
     """
     t_start = time.perf_counter()
-    run = _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume, workers,
-                   vtk_every, scene_path, chunk_delay_s)
+    run = _prepare(scene, angles, method, (a_over_h, rtol), tolerance, chunk_size, out, resume,
+                   workers, vtk_every, scene_path, chunk_delay_s)
     run.overwrite = bool(overwrite)
     run.animate = bool(animate)
     if run.animate and not run.opts.vtk_every:
@@ -167,10 +171,14 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
     with talk.phase(f"analytic chain ({run.angles.size} angles)"):
         _analytic(run)
     t_analytic = time.perf_counter() - t_start
-    _open_store(run)
     t0 = time.perf_counter()
-    with talk.phase("model families: build and verify"):
+    if run.opts.rtol is not None:
+        with talk.phase(f"mesh for rtol {100 * run.opts.rtol:g} %: pilot estimate, families"):
+            choose_mesh(run, _plan, estimate_run, default_cache())
+    _open_store(run)
+    with talk.phase("model families: build, verify, estimate the error (a coarse model each)"):
         _plan(run)
+        estimate_run(run, default_cache())
     t_verify = time.perf_counter() - t0
     tasks, task_chunk = _tasks(run)
     workers, workers_note = _choose_workers(run, tasks, task_chunk, scheduler, client)
@@ -183,12 +191,13 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
                "n_angles": int(run.angles.size), "n_families": len(run.records)}
     if run.workers == "auto":
         options.update(workers_requested="auto", workers_reason=workers_note)
-    options.update(real_cam_summary(table, run.traction))
+    options.update(real_cam_summary(table, run.traction), rtol_choice=run.rtol_info or None)
     fe = run.opts.method != "hertz"
     prov = provenance(scene_path=run.scene_path if run.scene_path is not None else src_path,
                       scene_hash=run.shash, command=command, options=options,
                       families=[r.to_dict() for r in run.records] if fe else None,
                       wear=run.wear.to_dict())
+    prov["estimates"] = {str(k): e.to_dict() for k, e in run.estimates.items()}
     prov["extras"] = extras_provenance(run.scene, table, tolerance=run.opts.tolerance,
                                         method=run.opts.method)
     # what an assessment of this folder checks its scene against (femcam.assess.sweep_table)
@@ -205,9 +214,10 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
     return result
 
 
-def _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume, workers,
+def _prepare(scene, angles, method, mesh, tolerance, chunk_size, out, resume, workers,
              vtk_every, scene_path, chunk_delay_s) -> SweepRun:
-    """Check the inputs; load the scene file."""
+    """Check the inputs; load the scene file. ``mesh``: ``(a_over_h, rtol)``."""
+    a_over_h, tolerance, rtol = rtol_settings(*mesh, method, tolerance)
     if isinstance(scene, (str, Path)):
         scene_path = scene
         scene = load_scene(scene)
@@ -219,8 +229,9 @@ def _prepare(scene, angles, method, a_over_h, tolerance, chunk_size, out, resume
     workers = _validate.workers("workers", workers)
     if vtk_every is None:
         vtk_every = DEFAULT_VTK_EVERY
-    opts = SweepOptions(method=method, a_over_h=a_over_h, tolerance=tolerance,
-                        chunk_size=chunk_size, vtk_every=vtk_every if out is not None else 0)
+    opts = SweepOptions(method=method, **({} if a_over_h is None else {"a_over_h": a_over_h}),
+                        tolerance=tolerance, chunk_size=chunk_size,
+                        vtk_every=vtk_every if out is not None else 0, rtol=rtol)
     if opts.method != "hertz":  # refused before any work: a mesh too large for time and memory
         check_contact_elements(MeshOptions(a_over_h=opts.a_over_h))
     if resume and out is None:
@@ -291,25 +302,28 @@ def _open_store(run: SweepRun) -> None:
 
 
 def _plan(run: SweepRun) -> None:
-    """Model families verified against the tolerance (FE only); a resume reuses the stored plan."""
+    """Model families verified against the tolerance (FE only); a resume reuses the stored plan;
+    families chosen for an rtol (:func:`femcam.sweep.rtol.choose_mesh`) are only stored."""
     n = run.angles.size
-    run.family, run.records = np.full(n, -1), []
+    if run.opts.method == "hertz" or not run.preplanned:
+        run.family, run.records = np.full(n, -1), []
     if run.opts.method == "hertz":
         return
     cp = contact_params(run.scene)
     run.hertz = auto_hertz_rows(run.scene, cp, run.opts, run.angles, run.rows0["Fc"], run.rows0["rho"],
                                 run.contact, run.jump)
     plan = run.store.load_plan() if (run.store is not None and run.resume) else None
-    if plan is not None and len(plan.get("family", ())) == n:
+    if plan is not None and len(plan.get("family", ())) == n and not run.preplanned:
         run.family = np.asarray(plan["family"], dtype=int)
         run.records = [FamilyRecord.from_dict(r) for r in plan["records"]]
         return
     if cp.kind == "flat_faced":  # binned real-cam models (femcam.sweep.realrows), no families
         return
     fit = run.contact & ~roller_does_not_fit(run.rows0["rho"], cp.Rr) & ~run.hertz
-    run.family, _, run.records = verify_families(run.rows0["Fc"], run.rows0["rho"], run.angles, cp,
-                                                 run.opts, fit, cache=default_cache(),
-                                                 traction=run.traction)
+    if not run.preplanned:
+        run.family, _, run.records = verify_families(run.rows0["Fc"], run.rows0["rho"], run.angles, cp,
+                                                     run.opts, fit, cache=default_cache(),
+                                                     traction=run.traction)
     run.verified_here = True
     if run.store is not None:
         run.store.save_plan({"family": run.family.tolist(),
@@ -330,7 +344,8 @@ def _tasks(run: SweepRun) -> tuple[list[ChunkTask], list[int]]:
                                family=fam, refs=sub, vtk_dir=vtk_dir, vtk_mask=run.vtk_mask[a:b],
                                slip=run.wear.chunk(a, b), wear_k=run.wear.k, delay_s=run.delay_s,
                                jump=run.jump[a:b], hertz=None if run.hertz is None else run.hertz[a:b],
-                               traction=run.traction.chunk(a, b) if run.traction is not None else None))
+                               traction=run.traction.chunk(a, b) if run.traction is not None else None,
+                               estimates={f: run.estimates[f] for f in sub if f in run.estimates}))
         task_chunk.append(c)
     return tasks, task_chunk
 

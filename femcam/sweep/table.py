@@ -50,6 +50,13 @@ cheaper models), ``curvature_jump`` (1 inside a curvature jump's straddle span),
 (tangential force on the cam along local x), ``Q_over_muFc``, ``stick_width_um``,
 ``slip_state``.
 
+Error estimates (:mod:`femcam.sweep.estimate`): ``err_est_p0_pct``, ``err_est_a_pct``,
+``err_est_vm_pct``, ``err_est_tau1_pct`` (percent of the row's own value): the estimated
+discretisation error of ``p0_fe``, ``a_fe``, ``vm_max``, ``tau1_max`` of an FE row (two-level
+estimate on its family's model, carried to the row's ``a_over_h_row``; p0 includes the family's
+reuse error); ``a_over_h_row``: elements per the row's Hertz half-width on the mesh that solved
+it (dimensionless). NaN on Hertz rows.
+
 ``flags`` is a ``;``-separated list of remarks on ``ok`` rows:
 
 * ``hertz_large_a`` -- Hertz a / min(Rr, |rho|) > 0.1 (``LineContact.valid`` is False, or the FE
@@ -136,6 +143,12 @@ COLUMNS: tuple[tuple[str, str, float], ...] = (
     ("exact_vs_arc_p0", "exact_vs_arc_p0_pct", 100.0),
     ("est_err_hertz", "est_err_hertz_pct", 100.0),
     ("est_err_arc", "est_err_arc_pct", 100.0),
+    # a posteriori discretisation-error estimates of the FE rows (femcam.sweep.estimate)
+    ("err_est_p0", "err_est_p0_pct", 100.0),
+    ("err_est_a", "err_est_a_pct", 100.0),
+    ("err_est_vm", "err_est_vm_pct", 100.0),
+    ("err_est_tau1", "err_est_tau1_pct", 100.0),
+    ("a_over_h_row", "a_over_h_row", 1.0),
     ("Q", "Q_N", 1.0),
     ("Q_over_muFc", "Q_over_muFc", 1.0),
     ("stick_width", "stick_width_um", 1e6),
