@@ -28,6 +28,7 @@ import numpy as np
 import pytest
 
 from femcam.errors import InputError
+from femcam.io import write_fe_vtu
 from femcam.materials import STEEL
 from femcam.scene import load_scene
 from femcam.sweep import sweep
@@ -232,7 +233,7 @@ def _zz_window(a_over_h, tmp_path=None):
                            solver=SolverOptions(stress_operators="per_solve"), plane="strain")
     r = m.solve(F=F, rho=rho, mu=0.0)
     if tmp_path is not None:
-        r.to_vtu(tmp_path / "zz.vtu")
+        write_fe_vtu(tmp_path / "zz.vtu", r)
     pts, _, _, d, _ = scene_arrays(r)
     cam = np.arange(pts.shape[0]) < m.bodies["cam"].basis.N // 2
     x, z = pts[:, 0], d["depth"]
