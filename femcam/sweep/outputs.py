@@ -148,6 +148,8 @@ class SweepRun:
         Tangential load and directions per angle (FE methods).
     hertz : ndarray of bool, shape (n,), optional
         Rows answered by Hertz under method ``auto``.
+    disk : femcam.sweep.diskcache.DiskCache, optional
+        The persistent model cache of this call (``model_cache``, ``cache_dir``).
     """
 
     scene: Scene
@@ -175,6 +177,7 @@ class SweepRun:
     jump: np.ndarray | None = None
     traction: object = None
     hertz: np.ndarray | None = None
+    disk: object = None
 
 
 

@@ -48,6 +48,7 @@ from ..hertz.conformity import (
 from ..io import vtu_name, write_fe_vtu, write_hertz_vtu
 from ..wear.slip import SlipResult
 from .cache import ModelCache, default_cache
+from .diskcache import attach
 from .extras import fill_extras
 from .families import hertz_half_width
 from .headline import omitted_physics
@@ -144,6 +145,9 @@ class ChunkTask:
         Per-angle traction (None: full sliding in the scene's direction).
     hertz : ndarray of bool, shape (n,), optional
         Method ``auto``: rows Hertz answers (:func:`femcam.sweep.realcam.auto_hertz_rows`).
+    disk : tuple, optional
+        The sweep's persistent model cache (:meth:`femcam.sweep.diskcache.DiskCache.spec`; read
+        only on Dask workers); None: the process's as it is.
     """
 
     index: int
@@ -160,6 +164,7 @@ class ChunkTask:
     jump: np.ndarray | None = None
     traction: Traction | None = None
     hertz: np.ndarray | None = None
+    disk: tuple | None = None
 
 
 def analytic_rows(scene, theta) -> tuple[dict, object]:
@@ -228,6 +233,7 @@ def run_chunk(task: ChunkTask) -> dict:
 
 def _run_chunk(task: ChunkTask) -> dict:
     opts = task.options
+    attach(default_cache(), task.disk)
     cp = contact_params(task.scene)
     rows, st = analytic_rows(task.scene, task.theta)
     n = rows["theta"].size

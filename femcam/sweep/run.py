@@ -21,6 +21,7 @@ from ..mesh.estimate import check_contact_elements
 from ..scene import load_scene
 from ..scene.digest import physics_hash, physics_parts
 from .cache import default_cache
+from .diskcache import DiskCache, usage_line
 from .extras import extras_provenance
 from .families import FamilyRecord, verify_families
 from .options import SweepOptions, contact_params
@@ -64,7 +65,7 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
           workers: int | str = "auto", scheduler=None, client=None, vtk_every: int | None = None,
           progress: bool | None = None, plots: bool | None = None, command: str | None = None,
           scene_path=None, chunk_delay_s: float = 0.0, overwrite: bool = False,
-          animate: bool = False) -> SweepResult:
+          animate: bool = False, model_cache: bool = True, cache_dir=None) -> SweepResult:
     """Sweep a scene over cam angles: kinematics, loads, Hertz and FE contact at every angle.
 
     Parameters
@@ -119,6 +120,13 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
     animate : bool
         With ``out`` and VTK output, also write ``DIR/animation.gif``: von Mises over cam angle
         (:func:`femcam.viz.animate.animate_pvd`).
+    model_cache : bool
+        Load the family models and the fresh-check results from the persistent model cache
+        and store what is built (default True; False: ``--no-cache``, build everything;
+        :mod:`femcam.sweep.diskcache`, docs/sweep.md "Model cache").
+    cache_dir : str or Path, optional
+        The cache directory (``--cache-dir``; default ``$FEMCAM_CACHE_DIR``, else
+        ``$XDG_CACHE_HOME/femcam``, else ``~/.cache/femcam``).
 
     Returns
     -------
@@ -134,6 +142,9 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
                    vtk_every, scene_path, chunk_delay_s)
     run.overwrite = bool(overwrite)
     run.animate = bool(animate)
+    if not isinstance(model_cache, bool):
+        raise _validate.fail("model_cache", model_cache, "", "must be True or False")
+    run.disk = DiskCache(cache_dir, enabled=model_cache)
     if run.animate and not run.opts.vtk_every:
         raise _validate.fail("animate", animate, "", "needs the VTK series: an output directory "
                              "(out) and vtk_every > 0 (--vtk-every)")
@@ -167,6 +178,9 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
     t_analytic = time.perf_counter() - t_start
     _open_store(run)
     t0 = time.perf_counter()
+    cache = default_cache()
+    cache.disk = run.disk
+    before = dict(cache.stats)
     with talk.phase("model families: build and verify"):
         _plan(run)
     t_verify = time.perf_counter() - t0
@@ -183,6 +197,11 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
         options.update(workers_requested="auto", workers_reason=workers_note)
     options.update(real_cam_summary(table, run.traction))
     fe = run.opts.method != "hertz"
+    if fe:  # this process's builds and loads (a process pool's workers count their own)
+        used = {k: cache.stats[k] - before[k] for k in ("loaded", "built", "checks_loaded", "checks_built")}
+        options["model_cache"] = {"directory": str(run.disk.root), "enabled": run.disk.enabled, **used,
+                                  "line": usage_line(used["loaded"], used["built"], used["checks_loaded"],
+                                                     used["checks_built"], run.disk)}
     prov = provenance(scene_path=run.scene_path if run.scene_path is not None else src_path,
                       scene_hash=run.shash, command=command, options=options,
                       families=[r.to_dict() for r in run.records] if fe else None,
@@ -327,7 +346,8 @@ def _tasks(run: SweepRun) -> tuple[list[ChunkTask], list[int]]:
                                family=fam, refs=sub, vtk_dir=vtk_dir, vtk_mask=run.vtk_mask[a:b],
                                slip=run.wear.chunk(a, b), wear_k=run.wear.k, delay_s=run.delay_s,
                                jump=run.jump[a:b], hertz=None if run.hertz is None else run.hertz[a:b],
-                               traction=run.traction.chunk(a, b) if run.traction is not None else None))
+                               traction=run.traction.chunk(a, b) if run.traction is not None else None,
+                               disk=run.disk.spec()))
         task_chunk.append(c)
     return tasks, task_chunk
 
