@@ -471,14 +471,14 @@ def usage_line(reused: int, built: int, checks_reused: int, checks_built: int,
     Returns
     -------
     str
-        E.g. ``"models: 2 reused from cache (/home/u/.cache/femcam), 0 built; fresh checks:
+        E.g. ``"FE models: 2 reused from cache (/home/u/.cache/femcam), 0 built; fresh checks:
         2 reused, 0 built"``.
     """
     checks = f"; fresh checks: {checks_reused} reused, {checks_built} built"
     if disk is None or not disk.enabled:
-        return f"models: {built} built, model cache off (--no-cache)" + checks
+        return f"FE models: {built} built, model cache off (--no-cache)" + checks
     ro = "" if disk.writable and not disk._failed_write else ", not writable"
-    return f"models: {reused} reused from cache ({disk.root}{ro}), {built} built" + checks
+    return f"FE models: {reused} reused from cache ({disk.root}{ro}), {built} built" + checks
 
 
 def attach(cache, spec: tuple | None) -> None:
