@@ -283,7 +283,9 @@ class DiskCache:
     def __init__(self, directory=None, *, enabled: bool = True, writable: bool = True,
                  max_bytes: int | None = None):
         self.root = Path(directory).expanduser() if directory is not None else default_dir()
-        self.enabled = bool(enabled)
+        if not isinstance(enabled, bool):
+            raise _validate.fail("model_cache", enabled, "", "must be True or False")
+        self.enabled = enabled
         self.writable = bool(writable)
         if max_bytes is None:
             max_bytes = _env_max_bytes()
@@ -479,6 +481,28 @@ def usage_line(reused: int, built: int, checks_reused: int, checks_built: int,
         return f"FE models: {built} built, model cache off (--no-cache)" + checks
     ro = "" if disk.writable and not disk._failed_write else ", not writable"
     return f"FE models: {reused} reused from cache ({disk.root}{ro}), {built} built" + checks
+
+
+def usage(stats: dict, before: dict, disk: DiskCache) -> dict:
+    """What one sweep took from the cache and built (its provenance ``options.model_cache``).
+
+    Parameters
+    ----------
+    stats, before : dict
+        :attr:`femcam.sweep.cache.ModelCache.stats` after and before the sweep.
+    disk : DiskCache
+        The sweep's cache.
+
+    Returns
+    -------
+    dict
+        ``directory``, ``enabled``, ``loaded``, ``built``, ``checks_loaded``, ``checks_built``
+        (counts) and ``line`` (:func:`usage_line`).
+    """
+    used = {k: stats[k] - before[k] for k in ("loaded", "built", "checks_loaded", "checks_built")}
+    return {"directory": str(disk.root), "enabled": disk.enabled, **used,
+            "line": usage_line(used["loaded"], used["built"], used["checks_loaded"],
+                               used["checks_built"], disk)}
 
 
 def attach(cache, spec: tuple | None) -> None:

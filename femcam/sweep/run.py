@@ -21,7 +21,7 @@ from ..mesh.estimate import check_contact_elements
 from ..scene import load_scene
 from ..scene.digest import physics_hash, physics_parts
 from .cache import default_cache
-from .diskcache import DiskCache, usage_line
+from .diskcache import DiskCache, usage
 from .extras import extras_provenance
 from .families import FamilyRecord, verify_families
 from .options import SweepOptions, contact_params
@@ -121,12 +121,10 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
         With ``out`` and VTK output, also write ``DIR/animation.gif``: von Mises over cam angle
         (:func:`femcam.viz.animate.animate_pvd`).
     model_cache : bool
-        Load the family models and the fresh-check results from the persistent model cache
-        and store what is built (default True; False: ``--no-cache``, build everything;
-        :mod:`femcam.sweep.diskcache`, docs/sweep.md "Model cache").
+        Load family models and fresh-check results from the persistent model cache, store what
+        is built (False: ``--no-cache``; :mod:`femcam.sweep.diskcache`, docs/sweep.md).
     cache_dir : str or Path, optional
-        The cache directory (``--cache-dir``; default ``$FEMCAM_CACHE_DIR``, else
-        ``$XDG_CACHE_HOME/femcam``, else ``~/.cache/femcam``).
+        Its directory (``--cache-dir``; default :func:`femcam.sweep.diskcache.default_dir`).
 
     Returns
     -------
@@ -142,8 +140,6 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h: float = 10.0,
                    vtk_every, scene_path, chunk_delay_s)
     run.overwrite = bool(overwrite)
     run.animate = bool(animate)
-    if not isinstance(model_cache, bool):
-        raise _validate.fail("model_cache", model_cache, "", "must be True or False")
     run.disk = DiskCache(cache_dir, enabled=model_cache)
     if run.animate and not run.opts.vtk_every:
         raise _validate.fail("animate", animate, "", "needs the VTK series: an output directory "
@@ -198,10 +194,7 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
     options.update(real_cam_summary(table, run.traction))
     fe = run.opts.method != "hertz"
     if fe:  # this process's builds and loads (a process pool's workers count their own)
-        used = {k: cache.stats[k] - before[k] for k in ("loaded", "built", "checks_loaded", "checks_built")}
-        options["model_cache"] = {"directory": str(run.disk.root), "enabled": run.disk.enabled, **used,
-                                  "line": usage_line(used["loaded"], used["built"], used["checks_loaded"],
-                                                     used["checks_built"], run.disk)}
+        options["model_cache"] = usage(cache.stats, before, run.disk)
     prov = provenance(scene_path=run.scene_path if run.scene_path is not None else src_path,
                       scene_hash=run.shash, command=command, options=options,
                       families=[r.to_dict() for r in run.records] if fe else None,
