@@ -259,3 +259,23 @@ def test_sweep_rows_warm_equal_cold_and_no_cache_builds(study_scene, tmp_path, c
                  "--no-plots", "--vtk-every", "0", "--no-cache", "--out", str(tmp_path / "o")])
     out = capsys.readouterr().out
     assert code == 0 and "model cache off (--no-cache)" in out
+
+
+def test_dask_workers_read_the_clients_cache_and_write_nothing(cp, tmp_path):
+    """A Dask task runs through ``parallel._files_back`` on the worker: its cache is read only
+    (it loads what the client stored; a model it must build is not stored)."""
+    from femcam.sweep.diskcache import attach
+    from femcam.sweep.parallel import _files_back
+    from femcam.sweep.pipeline import ChunkTask
+
+    client = DiskCache(tmp_path)
+    _model(client, cp)                                    # the client's verification stored it
+    task = ChunkTask(index=0, scene=None, theta=np.zeros(1), options=FAST, disk=client.spec())
+    seen = _files_back(lambda t: t.disk, task)[0]
+    worker = ModelCache()
+    attach(worker, seen)
+    assert worker.disk.writable is False and worker.disk.root == client.root
+    worker.model_for(cp, RHO, _a(cp), FAST)               # loaded from the client's entry
+    worker.model_for(cp, 1.01 * RHO, _a(cp, rho=1.01 * RHO), FAST)   # built, not stored
+    assert (worker.stats["loaded"], worker.stats["built"]) == (1, 1)
+    assert len(list(client.directory.glob("*.pkl"))) == 1
