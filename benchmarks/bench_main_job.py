@@ -170,23 +170,29 @@ def _rows_without_times(csv_path: Path) -> list[dict]:
 def cache_runs(runs: int) -> None:
     """Paired Hertz-only / cold / warm whole-process runs (module docstring)."""
     hertz = ["--method", "hertz", "--no-plots", "--vtk-every", "0"]
-    t = {"hertz": [], "cold": [], "warm": []}
+    compute = ["--no-plots", "--vtk-every", "0"]
+    plan = (("hertz", hertz, "h"), ("cold", [], "a"), ("warm", [], "a"),
+            ("cold_compute", compute, "b"), ("warm_compute", compute, "b"))
+    t = {name: [] for name, _, _ in plan}
     c = {k: [] for k in t}
     for _ in range(runs):
         with tempfile.TemporaryDirectory(prefix="femcam_mainjob_cache_") as cache:
-            for name, extra in (("hertz", hertz), ("cold", []), ("warm", [])):
+            for name, extra, cdir in plan:   # a and b: one cache each, filled by the cold run
                 csv_copy = Path(cache) / f"{name}.csv"
-                w, cpu, _, _ = run_once(extra, ROOT, cache=str(Path(cache) / "c"), keep=csv_copy)
+                w, cpu, _, _ = run_once(extra, ROOT, cache=str(Path(cache) / cdir), keep=csv_copy)
                 t[name].append(w)
                 c[name].append(cpu)
-            assert _rows_without_times(Path(cache) / "cold.csv") == _rows_without_times(
-                Path(cache) / "warm.csv"), "warm rows differ from cold rows"
+            for k in ("", "_compute"):
+                assert _rows_without_times(Path(cache) / f"cold{k}.csv") == _rows_without_times(
+                    Path(cache) / f"warm{k}.csv"), "warm rows differ from cold rows"
     med = {k: statistics.median(v) for k, v in t.items()}
     cmed = {k: statistics.median(v) for k, v in c.items()}
     print("| run | wall median (s) | wall min-max (s) | CPU median (s) | wall / Hertz-only | CPU / Hertz-only |")
     print("|---|---|---|---|---|---|")
     for k, label in (("hertz", "Hertz only, compute only"), ("cold", "README command 1, cold cache"),
-                     ("warm", "README command 1, warm cache")):
+                     ("warm", "README command 1, warm cache"),
+                     ("cold_compute", "compute only (--no-plots --vtk-every 0), cold"),
+                     ("warm_compute", "compute only, warm")):
         print(f"| {label} | {med[k]:.2f} | {min(t[k]):.2f}-{max(t[k]):.2f} | {cmed[k]:.2f} | "
               f"{med[k] / med['hertz']:.2f} | {cmed[k] / cmed['hertz']:.2f} |")
     print(f"\n{runs} paired rounds; warm rows equal cold rows (timing columns aside); "
