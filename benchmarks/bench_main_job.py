@@ -187,7 +187,8 @@ def cache_runs(runs: int) -> None:
                     Path(cache) / f"warm{k}.csv"), "warm rows differ from cold rows"
     med = {k: statistics.median(v) for k, v in t.items()}
     cmed = {k: statistics.median(v) for k, v in c.items()}
-    print("| run | wall median (s) | wall min-max (s) | CPU median (s) | wall / Hertz-only | CPU / Hertz-only |")
+    print("| run | wall median (s) | wall min-max (s) | CPU median (s) | wall / Hertz-only "
+          "| CPU / Hertz-only |")
     print("|---|---|---|---|---|---|")
     for k, label in (("hertz", "Hertz only, compute only"), ("cold", "README command 1, cold cache"),
                      ("warm", "README command 1, warm cache"),

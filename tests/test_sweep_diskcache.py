@@ -114,8 +114,9 @@ def _mesh_option(monkeypatch):
 
 
 CHANGES = {
-    "material_E": (lambda cp, mp: (dataclasses.replace(cp, cam=dataclasses.replace(cp.cam, E=1.01 * cp.cam.E)),
-                                   RHO, FAST), lambda m, cp: m.cam.E == 1.01 * cp.cam.E),
+    "material_E": (lambda cp, mp: (dataclasses.replace(
+        cp, cam=dataclasses.replace(cp.cam, E=1.01 * cp.cam.E)), RHO, FAST),
+        lambda m, cp: m.cam.E == 1.01 * cp.cam.E),
     "roller_radius": (lambda cp, mp: (dataclasses.replace(cp, Rr=1.01 * cp.Rr), RHO, FAST),
                       lambda m, cp: m.Rr == 1.01 * cp.Rr),
     "cam_radius": (lambda cp, mp: (cp, 1.01 * RHO, FAST), lambda m, cp: m.rho_ref == 1.01 * RHO),

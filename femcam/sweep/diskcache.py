@@ -407,7 +407,12 @@ class DiskCache:
         """
         if not (self.enabled and self.writable) or self._failed_write:
             return False
-        payload = pickle.dumps(obj, protocol=5)
+        try:
+            payload = pickle.dumps(obj, protocol=5)
+        except (pickle.PicklingError, TypeError, AttributeError) as exc:  # a field added later
+            self._failed_write = True
+            _say(f"cannot store a {type(obj).__name__} ({exc}); building without storing")
+            return False
         if len(payload) + _HEADER.size > self.max_bytes:
             return False
         head = _HEADER.pack(MAGIC, len(payload), hashlib.sha256(payload).digest())
