@@ -8,6 +8,13 @@ What is timed (each in a fresh ``python -m femcam`` subprocess, as a user runs i
    VTK series every 10 degrees, 5 PNG plots), default ``--workers auto``;
 2. the same with ``--no-plots --vtk-every 0`` (compute only).
 
+Every run gets an empty model cache of its own (``FEMCAM_CACHE_DIR``, femcam.sweep.diskcache):
+the rows above are cold runs. ``--cache`` times instead, paired run by run, the Hertz-only
+compute-only sweep (``--method hertz --no-plots --vtk-every 0``), README command 1 cold (an
+empty cache) and warm (the cache the cold run just filled), and prints the medians and the
+ratios cold / Hertz-only and warm / Hertz-only (issue 27 targets: <= 3 and <= 1.5); each FE run's
+CSV passes the p0 check, and the warm CSV must equal the cold one (timing columns aside).
+
 Each is run ``--runs`` times (default 5; with several ``--root`` trees, alternating run by run)
 into a fresh directory; the table gives the median wall
 time, the median CPU time (user + sys of the child and its workers: less sensitive to the
@@ -33,6 +40,7 @@ import json
 import os
 import platform
 import resource
+import shutil
 import statistics
 import subprocess
 import sys
@@ -126,26 +134,71 @@ def check_csv(out: Path) -> float:
     return worst
 
 
-def env(root: Path) -> dict:
-    """The environment of a child: ``femcam`` imported from ``root``."""
-    return {**os.environ, "PYTHONPATH": str(root)}
+def env(root: Path, cache: str) -> dict:
+    """The environment of a child: ``femcam`` imported from ``root``, the model cache in
+    ``cache`` (an empty directory: a cold run)."""
+    return {**os.environ, "PYTHONPATH": str(root), "FEMCAM_CACHE_DIR": cache}
 
 
-def run_once(extra: list[str], root: Path = ROOT) -> tuple[float, float, float, float]:
-    """(wall s, cpu s, peak RSS MB, worst p0 error) of one whole-process run of femcam in ``root``."""
+def run_once(extra: list[str], root: Path = ROOT, cache: str | None = None,
+             keep: Path | None = None) -> tuple[float, float, float, float]:
+    """(wall s, cpu s, peak RSS MB, worst p0 error) of one whole-process run of femcam in ``root``
+    (``cache``: the model cache directory; ``keep``: copy the CSV there)."""
     with tempfile.TemporaryDirectory(prefix="femcam_mainjob_") as d:
         out = Path(d) / "out"
+        cache = cache or str(Path(d) / "cache")  # cold: a cache of this run alone
         before = resource.getrusage(resource.RUSAGE_CHILDREN)
         t = time.perf_counter()
         p = subprocess.run([sys.executable, "-m", "femcam", "sweep", str(SCENE), "--out", str(out),
-                            *extra], capture_output=True, text=True, cwd=root, env=env(root))
+                            *extra], capture_output=True, text=True, cwd=root, env=env(root, cache))
         wall = time.perf_counter() - t
         after = resource.getrusage(resource.RUSAGE_CHILDREN)
         if p.returncode != 0:
             raise SystemExit(f"femcam sweep failed ({p.returncode}):\n{p.stderr}")
-        err = check_csv(out)
+        err = check_csv(out) if "hertz" not in extra else 0.0
+        if keep is not None:
+            shutil.copy(out / "sweep.csv", keep)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     return wall, cpu, after.ru_maxrss / 1024.0, err
+
+
+def _rows_without_times(csv_path: Path) -> list[dict]:
+    with open(csv_path) as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    return [{k: v for k, v in r.items() if "time" not in k} for r in rows]
+
+
+def cache_runs(runs: int) -> None:
+    """Paired Hertz-only / cold / warm whole-process runs (module docstring)."""
+    hertz = ["--method", "hertz", "--no-plots", "--vtk-every", "0"]
+    compute = ["--no-plots", "--vtk-every", "0"]
+    plan = (("hertz", hertz, "h"), ("cold", [], "a"), ("warm", [], "a"),
+            ("cold_compute", compute, "b"), ("warm_compute", compute, "b"))
+    t = {name: [] for name, _, _ in plan}
+    c = {k: [] for k in t}
+    for _ in range(runs):
+        with tempfile.TemporaryDirectory(prefix="femcam_mainjob_cache_") as cache:
+            for name, extra, cdir in plan:   # a and b: one cache each, filled by the cold run
+                csv_copy = Path(cache) / f"{name}.csv"
+                w, cpu, _, _ = run_once(extra, ROOT, cache=str(Path(cache) / cdir), keep=csv_copy)
+                t[name].append(w)
+                c[name].append(cpu)
+            for k in ("", "_compute"):
+                assert _rows_without_times(Path(cache) / f"cold{k}.csv") == _rows_without_times(
+                    Path(cache) / f"warm{k}.csv"), "warm rows differ from cold rows"
+    med = {k: statistics.median(v) for k, v in t.items()}
+    cmed = {k: statistics.median(v) for k, v in c.items()}
+    print("| run | wall median (s) | wall min-max (s) | CPU median (s) | wall / Hertz-only "
+          "| CPU / Hertz-only |")
+    print("|---|---|---|---|---|---|")
+    for k, label in (("hertz", "Hertz only, compute only"), ("cold", "README command 1, cold cache"),
+                     ("warm", "README command 1, warm cache"),
+                     ("cold_compute", "compute only (--no-plots --vtk-every 0), cold"),
+                     ("warm_compute", "compute only, warm")):
+        print(f"| {label} | {med[k]:.2f} | {min(t[k]):.2f}-{max(t[k]):.2f} | {cmed[k]:.2f} | "
+              f"{med[k] / med['hertz']:.2f} | {cmed[k] / cmed['hertz']:.2f} |")
+    print(f"\n{runs} paired rounds; warm rows equal cold rows (timing columns aside); "
+          f"load after: {load()}")
 
 
 def breakdown(extra: list[str] = ()) -> dict:
@@ -158,7 +211,7 @@ def breakdown(extra: list[str] = ()) -> dict:
         t = time.perf_counter()
         p = subprocess.run([sys.executable, "-c", DRIVER, "sweep", str(SCENE), "--out", f"{d}/out",
                             "--workers", "1", *extra], capture_output=True, text=True, cwd=ROOT,
-                           env=env(ROOT))
+                           env=env(ROOT, f"{d}/cache"))
         wall = time.perf_counter() - t
     if p.returncode != 0:
         raise SystemExit(f"driver failed:\n{p.stderr}")
@@ -217,6 +270,8 @@ def main() -> int:
     ap.add_argument("--runs", type=int, default=5)
     ap.add_argument("--no-breakdown", action="store_true")
     ap.add_argument("--breakdown-only", action="store_true")
+    ap.add_argument("--cache", action="store_true",
+                    help="paired Hertz-only / cold / warm runs of the model cache (ratios)")
     ap.add_argument("--compute-only", action="store_true",
                     help="time only the compute-only command (--no-plots --vtk-every 0)")
     ap.add_argument("--mesh-size", type=float, default=None,
@@ -230,6 +285,9 @@ def main() -> int:
     print("# femcam main job, whole process (README command 1)")
     print(f"machine: {machine()}")
     print(f"load average at start: {load()} (1/5/15 min)\n")
+    if args.cache:
+        cache_runs(args.runs)
+        return 0
     print("| femcam tree | command | runs | wall median (s) | wall min-max (s) | CPU median (s) "
           "| peak RSS (MB) | max |p0 err| vs Hertz | load after |")
     print("|---|---|---|---|---|---|---|---|---|")

@@ -71,6 +71,11 @@ def register(subparsers) -> None:
                    help="continue an interrupted sweep in DIR (computes only missing chunks)")
     p.add_argument("--overwrite", action="store_true",
                    help="replace the results in a non-empty DIR (refused otherwise)")
+    p.add_argument("--no-cache", dest="model_cache", action="store_false",
+                   help="build every FE model, neither loading nor storing the persistent model cache")
+    p.add_argument("--cache-dir", default=None, metavar="DIR",
+                   help="the persistent model cache (default $FEMCAM_CACHE_DIR, else "
+                        "$XDG_CACHE_HOME/femcam, else ~/.cache/femcam; docs/sweep.md)")
     p.add_argument("--animate", action="store_true",
                    help="also write DIR/animation.gif: von Mises over cam angle (the VTK series)")
     for flag, rng, metavar, text, extra in _SCENE_FLAGS:
@@ -268,6 +273,8 @@ def _check_args(args) -> None:
     if args.method != "hertz":  # the FE mesh's size, estimated before any work (the library's cap)
         check_contact_elements(MeshOptions(a_over_h=args.mesh_size), "--mesh-size")
     args.workers = _validate.workers("--workers", args.workers)
+    if args.cache_dir is not None and not args.cache_dir.strip():
+        raise _validate.fail("--cache-dir", args.cache_dir, "", "must name a directory")
 
 
 def _command_line(args) -> str:
@@ -290,6 +297,10 @@ def _command_line(args) -> str:
         parts.append("--overwrite")
     if args.animate:
         parts.append("--animate")
+    if not args.model_cache:
+        parts.append("--no-cache")
+    if args.cache_dir is not None:
+        parts += ["--cache-dir", args.cache_dir]
     return shlex.join(parts)
 
 
@@ -324,7 +335,7 @@ def _run(args) -> int:
                     vtk_every=args.vtk_every, progress=progress, plots=args.plots,
                     command=_command_line(args), scene_path=args.scene,
                     chunk_delay_s=args.chunk_delay_s, overwrite=args.overwrite,
-                    animate=args.animate)
+                    animate=args.animate, model_cache=args.model_cache, cache_dir=args.cache_dir)
     except KeyboardInterrupt as exc:  # Ctrl-C: one line (what was saved, how to resume)
         nl = "\n" if sys.stderr.isatty() else ""  # end a progress bar's line
         print(f"{nl}femcam sweep: {exc or 'interrupted'}", file=sys.stderr)
@@ -363,6 +374,8 @@ def _print_summary(res) -> None:
         print(f"  {families_text(s['n_families'], s['reuse_error_max'], s['n_binned'])} "
               f"(tolerance {100 * o['tolerance']:g} %); workers "
               f"{o.get('workers')}" + (f" ({o['workers_reason']})" if o.get("workers_reason") else ""))
+        if o.get("model_cache"):
+            print(f"  {o['model_cache']['line']}")
     print(f"  peak Fc {s['Fc_max']:.1f} N, p0 Hertz {s['p0_hertz_max'] / 1e6:.1f} MPa"
           + (f", p0 FE {s['p0_fe_max'] / 1e6:.1f} MPa (peak of the solved pressure"
              + (", 2D at the mean load Fc / length"

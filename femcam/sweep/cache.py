@@ -15,6 +15,7 @@ from ..fe import ContactModel, ContactResult, SolverOptions
 from ..layers import Coating, build_coated_model
 from ..materials import effective_modulus
 from ..mesh import MeshOptions
+from .diskcache import DiskCache, content_key, finite_p0, restore_model, strip_model
 from .options import ContactParams, SweepOptions
 
 
@@ -33,21 +34,28 @@ class ModelCache:
     ----------
     max_models : int
         Models kept (least recently used dropped first).
+    disk : femcam.sweep.diskcache.DiskCache, optional
+        The persistent cache consulted before a family model or a fresh check is built (and
+        given what is built); None: none (:func:`femcam.sweep.sweep` attaches one per call).
 
     Attributes
     ----------
     stats : dict
-        ``{"built": int, "build_time": float (s)}``: models built by this cache (diagnostics).
+        ``{"built": int, "build_time": float (s), "loaded": int, "checks_built": int,
+        "checks_loaded": int}``: models built by this cache and loaded from ``disk``, fresh
+        checks computed and loaded (diagnostics).
     """
 
-    def __init__(self, max_models: int = 64):
+    def __init__(self, max_models: int = 64, disk: DiskCache | None = None):
         self.max_models = _validate.integer("max_models", max_models, 1, "models")
+        self.disk = disk
         self._models: OrderedDict = OrderedDict()
         #: ``id(model) -> {(F, rho, mu, sliding): ContactResult}`` (lives as long as its model)
         self._results: dict[int, dict] = {}
         #: p0 of fresh check models (a repeated sweep in one process does not rebuild them)
         self._fresh_p0: OrderedDict = OrderedDict()
-        self.stats = {"built": 0, "build_time": 0.0}
+        self.stats = {"built": 0, "build_time": 0.0, "loaded": 0, "checks_built": 0,
+                      "checks_loaded": 0}
         self._lock = threading.RLock()
 
     def model_for(self, cp: ContactParams, rho_ref: float, a_ref: float,
@@ -70,20 +78,30 @@ class ModelCache:
             now by :func:`build_model` and counted in :attr:`stats`.
         """
         return self._get_or_build(_key(cp, rho_ref, a_ref, options),
-                                  lambda: build_model(cp, rho_ref, a_ref, options), memo=True)
+                                  lambda: build_model(cp, rho_ref, a_ref, options), memo=True,
+                                  disk_key=lambda: _disk_key("family_model", cp, rho_ref, a_ref, options))
 
-    def _get_or_build(self, key: tuple, build, memo: bool = False):
-        """The model under ``key`` (LRU: most recently used last), or ``build()`` now (counted in
-        :attr:`stats`); ``memo``: keep its solved load cases (:meth:`solve`)."""
+    def _get_or_build(self, key: tuple, build, memo: bool = False, disk_key=None):
+        """The model under ``key`` (LRU: most recently used last), else from :attr:`disk` under
+        ``disk_key()`` (counted as loaded), else ``build()`` now (counted in :attr:`stats`, and
+        stored); ``memo``: keep its solved load cases (:meth:`solve`)."""
         with self._lock:
             m = self._models.get(key)
             if m is not None:
                 self._models.move_to_end(key)
                 return m
-            t0 = time.perf_counter()
-            m = build()
-            self.stats["built"] += 1
-            self.stats["build_time"] += time.perf_counter() - t0
+            dk = disk_key() if (disk_key is not None and self.disk is not None) else None
+            m = self.disk.get(dk) if dk is not None else None
+            if isinstance(m, ContactModel):
+                m = restore_model(m)
+                self.stats["loaded"] += 1
+            else:
+                t0 = time.perf_counter()
+                m = build()
+                self.stats["built"] += 1
+                self.stats["build_time"] += time.perf_counter() - t0
+                if dk is not None:
+                    self.disk.put(dk, strip_model(m))
             self._models[key] = m
             if memo:
                 self._results[id(m)] = {}
@@ -166,13 +184,23 @@ class ModelCache:
             p0 = self._fresh_p0.get(key)
         if p0 is not None:
             return p0
-        try:
-            with self._lock:  # gmsh is not thread-safe; one load case: no stress operators
-                fresh = build_model(cp, rho, a, options, SolverOptions(stress_operators="per_solve"))
-            p0 = fresh.solve(F=F, rho=rho, mu=cp.mu, sliding=sliding, check=False, Q=Q,
-                             rolling=rolling if Q is not None else 0).p0_nodal
-        except (FemcamError, ValueError, ArithmeticError):
-            return math.nan
+        solver = SolverOptions(stress_operators="per_solve")  # one load case: no stress operators
+        dk = (_disk_key("fresh_p0", cp, rho, a, options, solver, (F, sliding, Q, rolling))
+              if self.disk is not None else None)
+        p0 = self.disk.get(dk) if dk is not None else None
+        if finite_p0(p0):
+            self.stats["checks_loaded"] += 1
+        else:
+            try:
+                with self._lock:  # gmsh is not thread-safe
+                    fresh = build_model(cp, rho, a, options, solver)
+                p0 = float(fresh.solve(F=F, rho=rho, mu=cp.mu, sliding=sliding, check=False, Q=Q,
+                                       rolling=rolling if Q is not None else 0).p0_nodal)
+            except (FemcamError, ValueError, ArithmeticError):
+                return math.nan
+            self.stats["checks_built"] += 1
+            if dk is not None and finite_p0(p0):
+                self.disk.put(dk, p0)
         with self._lock:
             self._fresh_p0[key] = p0
             while len(self._fresh_p0) > 1024:
@@ -260,19 +288,11 @@ def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepO
         With ``cp.coat_body`` set: the coated model (:func:`femcam.layers.build_coated_model`,
         the coating band in the contact FE), its fine zone widened by :func:`coated_zone_factor`.
     """
-    solver = solver or SolverOptions()
+    args = model_args(cp, rho_ref, a_ref, options, solver)
     if cp.coat_body is None:
-        return ContactModel.build(Rr=cp.Rr, rho_ref=rho_ref, cam=cp.cam, roller=cp.roller,
-                                  length=cp.length, a_ref=a_ref,
-                                  mesh=MeshOptions(a_over_h=options.a_over_h),
-                                  solver=solver, plane=cp.plane)
-    base = MeshOptions()
-    mesh = MeshOptions(a_over_h=options.a_over_h,
-                       fine_half_width=base.fine_half_width * coated_zone_factor(cp))
-    return build_coated_model(Rr=cp.Rr, rho_ref=rho_ref, cam=cp.cam, roller=cp.roller,
-                              length=cp.length, a_ref=a_ref,
-                              coating=Coating(thickness=cp.coat_thickness, material=cp.coating),
-                              body=cp.coat_body, mesh=mesh, solver=solver, plane=cp.plane)
+        return ContactModel.build(**args)
+    return build_coated_model(**args, body=cp.coat_body,
+                              coating=Coating(thickness=cp.coat_thickness, material=cp.coating))
 
 
 def coated_zone_factor(cp: ContactParams) -> float:
@@ -302,3 +322,39 @@ def coated_zone_factor(cp: ContactParams) -> float:
     coat = cp.coating
     as_coat = {"cam": (coat, cp.roller), "roller": (cp.cam, coat)}[cp.coat_body]
     return max(1.0, math.sqrt(cp.E_star / effective_modulus(*as_coat, cp.plane)))
+
+
+def model_args(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions,
+               solver: SolverOptions | None = None) -> dict:
+    """The keyword arguments of :meth:`femcam.fe.ContactModel.build` for a sweep's model (the
+    one place they are chosen: :func:`build_model` builds with them, the persistent cache keys
+    on them, :mod:`femcam.sweep.diskcache`).
+    rho_ref, a_ref : float
+        Reference cam radius and half-width (m).
+    options : SweepOptions
+        ``a_over_h``.
+    solver : SolverOptions, optional
+        Default ``SolverOptions()``.
+
+    Returns
+    -------
+    dict
+        ``Rr, rho_ref, cam, roller, length, a_ref`` (m, materials), ``mesh`` (the fine zone widened
+        by :func:`coated_zone_factor` for a coated ``cp``), ``solver``, ``plane``.
+    """
+    mesh = MeshOptions(a_over_h=options.a_over_h)
+    if cp.coat_body is not None:   # a soft coating widens the contact: widen the fine zone
+        mesh = MeshOptions(a_over_h=options.a_over_h,
+                           fine_half_width=mesh.fine_half_width * coated_zone_factor(cp))
+    return dict(Rr=cp.Rr, rho_ref=rho_ref, cam=cp.cam, roller=cp.roller, length=cp.length,
+                a_ref=a_ref, mesh=mesh, solver=solver or SolverOptions(), plane=cp.plane)
+
+
+def _disk_key(kind: str, cp, rho_ref, a_ref, options, solver=None, load=()) -> str | None:
+    """The persistent key of a model (or a fresh check with its ``load`` case): every field of
+    ``cp`` and every build argument (None: not keyable, so not stored)."""
+    try:
+        return content_key(kind, cp, model_args(cp, float(rho_ref), float(a_ref), options, solver),
+                           load)
+    except TypeError:
+        return None

@@ -147,6 +147,8 @@ class SweepRun:
         The families were planned and verified while choosing the mesh for ``rtol``.
     rtol_info : dict
         The ``rtol`` mesh choice (pilots, levels tried), recorded in the provenance.
+    disk : femcam.sweep.diskcache.DiskCache, optional
+        The persistent model cache of this call (``model_cache``, ``cache_dir``).
     """
 
     scene: Scene
@@ -177,6 +179,7 @@ class SweepRun:
     estimates: dict = field(default_factory=dict)
     preplanned: bool = False
     rtol_info: dict = field(default_factory=dict)
+    disk: object = None
 
 
 

@@ -35,6 +35,7 @@ from .. import _validate
 from .._threads import limit_blas_threads
 from ..errors import InputError
 from ..io import TEMP_SUFFIX, atomic_write_bytes
+from .diskcache import read_only
 
 #: ``workers="auto"``: use processes only if they are expected to save at least this fraction
 AUTO_MIN_SAVING = 0.25
@@ -235,7 +236,10 @@ def _files_back(fn, task):
 
     A worker's working directory and disk are not the client's (another directory for a
     relative ``--out``, another machine on a cluster), so a worker writes nothing into the
-    output directory itself."""
+    output directory itself; nor into the model cache: it reads what the client stored
+    (:func:`femcam.sweep.diskcache.read_only`, a cache directory it can reach)."""
+    if getattr(task, "disk", None) is not None:
+        task = dataclasses.replace(task, disk=read_only(task.disk))
     vtk_dir = getattr(task, "vtk_dir", None)
     if vtk_dir is None:
         return fn(task), {}

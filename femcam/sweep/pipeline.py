@@ -48,6 +48,7 @@ from ..hertz.conformity import (
 from ..io import vtu_name, write_fe_vtu, write_hertz_vtu
 from ..wear.slip import SlipResult
 from .cache import ModelCache, default_cache
+from .diskcache import attach
 from .estimate import fill_row_estimate
 from .extras import fill_extras
 from .headline import COATED, omitted_physics
@@ -148,6 +149,9 @@ class ChunkTask:
         Method ``auto``: rows Hertz answers (:func:`femcam.sweep.realcam.auto_hertz_rows`).
     estimates : dict[int, femcam.sweep.estimate.FamilyEstimate]
         The families' two-level error estimates (empty: the rows get NaN estimates).
+    disk : tuple, optional
+        The sweep's persistent model cache (:meth:`femcam.sweep.diskcache.DiskCache.spec`; read
+        only on Dask workers); None: the process's as it is.
     """
 
     index: int
@@ -165,6 +169,7 @@ class ChunkTask:
     traction: Traction | None = None
     hertz: np.ndarray | None = None
     estimates: dict = field(default_factory=dict)
+    disk: tuple | None = None
 
 
 def analytic_rows(scene, theta) -> tuple[dict, object]:
@@ -233,6 +238,7 @@ def run_chunk(task: ChunkTask) -> dict:
 
 def _run_chunk(task: ChunkTask) -> dict:
     opts = task.options
+    attach(default_cache(), task.disk)
     cp = contact_params(task.scene)
     rows, st = analytic_rows(task.scene, task.theta)
     n = rows["theta"].size

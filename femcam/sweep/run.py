@@ -22,6 +22,7 @@ from ..mesh.estimate import check_contact_elements
 from ..scene import load_scene
 from ..scene.digest import physics_hash, physics_parts
 from .cache import default_cache
+from .diskcache import DiskCache, usage
 from .estimate import estimate_run
 from .extras import extras_provenance
 from .options import SweepOptions, contact_params
@@ -68,7 +69,7 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h=None, tolerance=No
           workers: int | str = "auto", scheduler=None, client=None, vtk_every: int | None = None,
           progress: bool | None = None, plots: bool | None = None, command: str | None = None,
           scene_path=None, chunk_delay_s: float = 0.0, overwrite: bool = False,
-          animate: bool = False) -> SweepResult:
+          animate: bool = False, model_cache: bool = True, cache_dir=None) -> SweepResult:
     """Sweep a scene over cam angles: kinematics, loads, Hertz and FE contact at every angle.
 
     Parameters
@@ -125,6 +126,11 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h=None, tolerance=No
     animate : bool
         With ``out`` and VTK output, also write ``DIR/animation.gif``: von Mises over cam angle
         (:func:`femcam.viz.animate.animate_pvd`).
+    model_cache : bool
+        Load family models and fresh-check results from the persistent model cache, store what
+        is built (False: ``--no-cache``; :mod:`femcam.sweep.diskcache`, docs/sweep.md).
+    cache_dir : str or Path, optional
+        Its directory (``--cache-dir``; default :func:`femcam.sweep.diskcache.default_dir`).
 
     Returns
     -------
@@ -140,6 +146,7 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h=None, tolerance=No
                    workers, vtk_every, scene_path, chunk_delay_s)
     run.overwrite = bool(overwrite)
     run.animate = bool(animate)
+    run.disk = DiskCache(cache_dir, enabled=model_cache)
     if run.animate and not run.opts.vtk_every:
         raise _validate.fail("animate", animate, "", "needs the VTK series: an output directory "
                              "(out) and vtk_every > 0 (--vtk-every)")
@@ -172,6 +179,9 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
         _analytic(run)
     t_analytic = time.perf_counter() - t_start
     t0 = time.perf_counter()
+    cache = default_cache()
+    cache.disk = run.disk
+    before = dict(cache.stats)
     if run.opts.rtol is not None:
         with talk.phase(f"mesh for rtol {100 * run.opts.rtol:g} %: pilot estimate, families"):
             choose_mesh(run, _plan, estimate_run, default_cache())
@@ -193,6 +203,8 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
         options.update(workers_requested="auto", workers_reason=workers_note)
     options.update(real_cam_summary(table, run.traction), rtol_choice=run.rtol_info or None)
     fe = run.opts.method != "hertz"
+    if fe:  # this process's builds and loads (a process pool's workers count their own)
+        options["model_cache"] = usage(cache.stats, before, run.disk)
     prov = provenance(scene_path=run.scene_path if run.scene_path is not None else src_path,
                       scene_hash=run.shash, command=command, options=options,
                       families=[r.to_dict() for r in run.records] if fe else None,
@@ -345,7 +357,8 @@ def _tasks(run: SweepRun) -> tuple[list[ChunkTask], list[int]]:
                                slip=run.wear.chunk(a, b), wear_k=run.wear.k, delay_s=run.delay_s,
                                jump=run.jump[a:b], hertz=None if run.hertz is None else run.hertz[a:b],
                                traction=run.traction.chunk(a, b) if run.traction is not None else None,
-                               estimates={f: run.estimates[f] for f in sub if f in run.estimates}))
+                               estimates={f: run.estimates[f] for f in sub if f in run.estimates},
+                               disk=run.disk.spec()))
         task_chunk.append(c)
     return tasks, task_chunk
 
