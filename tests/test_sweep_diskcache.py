@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 import femcam
-import femcam.sweep.cache as cache_mod
+from femcam.sweep import cache as cache_mod
 from femcam.cli import main
 from femcam.sweep import SweepOptions, default_cache, sweep
 from femcam.sweep.cache import ModelCache

@@ -329,6 +329,11 @@ def model_args(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOp
     """The keyword arguments of :meth:`femcam.fe.ContactModel.build` for a sweep's model (the
     one place they are chosen: :func:`build_model` builds with them, the persistent cache keys
     on them, :mod:`femcam.sweep.diskcache`).
+
+    Parameters
+    ----------
+    cp : ContactParams
+        The contact (radii, materials, length, plane, coating).
     rho_ref, a_ref : float
         Reference cam radius and half-width (m).
     options : SweepOptions
