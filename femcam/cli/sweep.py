@@ -381,7 +381,7 @@ def _print_summary(res) -> None:
              + (", 2D at the mean load Fc / length"
                 if "halfspace" in s.get("extras", {}).get("providers", ()) else "")
              + (", coated model" if s.get("n_coated") else "") + ")"
-             if res.method == "fe" or math.isfinite(s["p0_fe_max"]) else "")   # a ring: any method
+             if res.method == "fe" or math.isfinite(s.get("p0_fe_max", math.nan)) else "")   # a ring: any method
           + f", von Mises {s['vm_max'] / 1e6:.1f} MPa, tau1 {s['tau1_max'] / 1e6:.1f} MPa")
     if res.method == "fe":
         print(f"  p0 FE vs Hertz: {hertz_check_text(s)}")
