@@ -71,8 +71,8 @@ def timed(mod, name, key, acc=False):
 timed(femcam.scene, "load_scene", "scene")
 import femcam.sweep.pipeline
 timed(femcam.sweep.pipeline, "write_fe_vtu", "VTU", acc=True)
-import femcam.io
-timed(femcam.io, "scene_arrays", "VTU fields (full_field of both bodies)", acc=True)  # as io calls it
+import femcam.io.vtk
+timed(femcam.io.vtk, "scene_arrays", "VTU fields (full_field of both bodies)", acc=True)  # as io calls it
 timed(femcam.sweep.run, "write_outputs", "outputs (CSV, NPZ, PVD, plots)")
 for name in ("plot_p0", "plot_maxima", "plot_svaj_loads", "plot_wear", "plot_surface_worst"):
     timed(vs, name, "plot " + name[5:])
