@@ -13,7 +13,6 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 from .. import _validate
 from .._repr import compact_repr, span
@@ -243,6 +242,8 @@ class Scene:
         i = int(np.argmax(f))
         lo, hi = dense[max(i - 1, 0)], dense[min(i + 1, dense.size - 1)]
         if hi > lo:  # |phi| is smooth inside a segment: the bounded maximum between neighbours
+            from scipy.optimize import minimize_scalar  # lazy: scipy.optimize, 0.3-0.5 s to import
+
             res = minimize_scalar(lambda t: -float(phi(np.array([t]))[0]), bounds=(lo, hi),
                                   method="bounded", options={"xatol": 1e-12})
             if -res.fun > f[i]:
