@@ -358,6 +358,16 @@ def _refusal_code(res) -> int:
     return 0
 
 
+def _p0_fe_text(res, s: dict) -> str:
+    """``, p0 FE ... MPa (peak of the solved pressure, ...)`` where the FE (or a ring) answered."""
+    if not (res.method == "fe" or math.isfinite(s.get("p0_fe_max", math.nan))):   # a ring: any method
+        return ""
+    return (f", p0 FE {s['p0_fe_max'] / 1e6:.1f} MPa (peak of the solved pressure"
+            + (", 2D at the mean load Fc / length"
+               if "halfspace" in s.get("extras", {}).get("providers", ()) else "")
+            + (", coated model" if s.get("n_coated") else "") + ")")
+
+
 def _print_summary(res) -> None:
     """The sweep's summary on stdout (warnings on stderr): counts, models, the 2D headline and
     one line per extra provider's worst values (:mod:`femcam.sweep.worst`)."""
@@ -377,11 +387,7 @@ def _print_summary(res) -> None:
         if o.get("model_cache"):
             print(f"  {o['model_cache']['line']}")
     print(f"  peak Fc {s['Fc_max']:.1f} N, p0 Hertz {s['p0_hertz_max'] / 1e6:.1f} MPa"
-          + (f", p0 FE {s['p0_fe_max'] / 1e6:.1f} MPa (peak of the solved pressure"
-             + (", 2D at the mean load Fc / length"
-                if "halfspace" in s.get("extras", {}).get("providers", ()) else "")
-             + (", coated model" if s.get("n_coated") else "") + ")"
-             if res.method == "fe" or math.isfinite(s.get("p0_fe_max", math.nan)) else "")   # a ring: any method
+          + _p0_fe_text(res, s)
           + f", von Mises {s['vm_max'] / 1e6:.1f} MPa, tau1 {s['tau1_max'] / 1e6:.1f} MPa")
     if res.method == "fe":
         print(f"  p0 FE vs Hertz: {hertz_check_text(s)}")
