@@ -368,6 +368,15 @@ def _p0_fe_text(res, s: dict) -> str:
             + (", coated model" if s.get("n_coated") else "") + ")")
 
 
+def _print_families(s: dict, o: dict) -> None:
+    """The model families' line (reuse error, workers) and the model cache's line."""
+    print(f"  {families_text(s['n_families'], s['reuse_error_max'], s['n_binned'])} "
+          f"(tolerance {100 * o['tolerance']:g} %); workers "
+          f"{o.get('workers')}" + (f" ({o['workers_reason']})" if o.get("workers_reason") else ""))
+    if o.get("model_cache"):
+        print(f"  {o['model_cache']['line']}")
+
+
 def _print_summary(res) -> None:
     """The sweep's summary on stdout (warnings on stderr): counts, models, the 2D headline and
     one line per extra provider's worst values (:mod:`femcam.sweep.worst`)."""
@@ -381,11 +390,7 @@ def _print_summary(res) -> None:
               f"{o.get('n_curvature_jump', 0)}, edge contacts {o.get('n_edge_contact', 0)}; traction: "
               f"{o.get('traction')}")
     if res.method != "hertz":
-        print(f"  {families_text(s['n_families'], s['reuse_error_max'], s['n_binned'])} "
-              f"(tolerance {100 * o['tolerance']:g} %); workers "
-              f"{o.get('workers')}" + (f" ({o['workers_reason']})" if o.get("workers_reason") else ""))
-        if o.get("model_cache"):
-            print(f"  {o['model_cache']['line']}")
+        _print_families(s, o)
     print(f"  peak Fc {s['Fc_max']:.1f} N, p0 Hertz {s['p0_hertz_max'] / 1e6:.1f} MPa"
           + _p0_fe_text(res, s)
           + f", von Mises {s['vm_max'] / 1e6:.1f} MPa, tau1 {s['tau1_max'] / 1e6:.1f} MPa")
