@@ -362,11 +362,11 @@ def arm_lever(L, phi, *, mu=0.0, friction_lever=0.0, theta=0.0) -> np.ndarray:
     if np.any(D <= 0.0):
         i = int(np.argmin(D))
         raise _validate.fail(
-            "mu", mu, "", f"(scene key [contact] friction): self-locking arm at theta = "
-            f"{math.degrees(float(theta.flat[i])):.2f} deg: the friction moment mu s_f d_t = "
-            f"{mu * float(lev.flat[i]) * 1e3:.4g} mm per N of Fc cancels the normal force's L cos(phi) = "
-            f"{L * math.cos(float(phi.flat[i])) * 1e3:.4g} mm, so no contact force can drive the arm; "
-            "lower the friction coefficient or change the pivot, arm length or pad radius")
+            "mu", mu, "(dimensionless)", "self-locking arm (scene key [contact] friction) at theta = "
+            f"{math.degrees(float(theta.flat[i])):.2f} deg: the friction moment per N of Fc, mu * "
+            f"friction_lever (s_f d_t) = {mu:g} * {float(lev.flat[i]) * 1e3:.4g} mm, cancels the normal "
+            f"force's L cos(phi) = {L * math.cos(float(phi.flat[i])) * 1e3:.4g} mm, so no contact force "
+            "can drive the arm; lower the friction coefficient or change the pivot, arm length or pad radius")
     return D
 
 

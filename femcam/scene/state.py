@@ -130,7 +130,8 @@ class Scene:
     length : float
         Axial contact length (face width / cam thickness, m).
     mu : float
-        Friction coefficient (dimensionless).
+        Friction coefficient (dimensionless); for a curved pad on an arm it also enters ``Fc``
+        (the friction moment about the pivot, :meth:`analyse`).
     plane : str
         ``"strain"`` or ``"stress"``.
     sliding : str or None
@@ -308,6 +309,9 @@ class Scene:
         two_dof (an oscillating arm: its moment balance, or its train referred to the roller
         path): then it is the periodic contact force of the elastic train
         (:attr:`dynamic_response`, interpolated to ``theta``; free flight is ``liftoff``).
+        A sliding pad on an arm adds the friction force's moment about the pivot,
+        ``Fc (L cos phi + mu s_f d_t) = M`` (rigid or elastic arm; ``mu`` = :attr:`mu`, the
+        sign from the mechanism's sliding velocity, not the ``[contact] sliding`` override).
 
         Parameters
         ----------
