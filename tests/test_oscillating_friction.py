@@ -179,7 +179,8 @@ def test_self_locking_geometry_is_refused(load_raw):
 
 def test_api_refuses_a_self_locking_lever():
     arm = ArmDynamics(I=1e-5, k_t=20.0, M_pl=5.0)
-    with pytest.raises(InputError, match=r"mu = 0\.5 \(dimensionless\): self-locking arm \(scene key \[contact\] friction\)"):
+    msg = r"mu = 0\.5 \(dimensionless\): self-locking arm \(scene key \[contact\] friction\)"
+    with pytest.raises(InputError, match=msg):
         arm_contact_force(arm, 0.3, 0.1, 0.0, 0.0, 0.04, 0.0, mu=0.5, friction_lever=-0.1)
     r = arm_contact_force(arm, 0.3, 0.1, 0.0, 0.0, 0.04, 0.0, mu=0.5, friction_lever=-0.05)
     assert math.isclose(float(r.Fc), (20.0 * 0.1 + 5.0) / (0.04 - 0.025), rel_tol=1e-14)
