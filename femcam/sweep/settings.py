@@ -141,17 +141,7 @@ def resolve_settings(scene, given: Mapping, names: Mapping | None = None) -> Swe
     def name(p):
         return (names or {}).get(p, (p, 1, _UNITS.get(p, "")))
 
-    fe = tabs["fe"]
-    if "rtol" in given and "a_over_h" in given:
-        (nr, fr, ur), (na, fa, _) = name("rtol"), name("a_over_h")
-        raise _validate.fail(nr, f"{given['rtol'] * fr:g}", ur, f"cannot be given with {na} = "
-                             f"{given['a_over_h'] * fa:g}: {nr} chooses the mesh (a_over_h); give one")
-    if "rtol" in given or "a_over_h" in given:
-        fe.pop("a_over_h" if "rtol" in given else "rtol_pct", None)  # one given beats the other key
-    if "rtol_pct" in fe and "a_over_h" in fe:
-        raise _validate.fail("[fe] rtol_pct", fe["rtol_pct"], "%", "cannot be given with [fe] a_over_h "
-                             "in the same scene: rtol_pct chooses the mesh; give one of them (or "
-                             "override one: a_over_h / rtol, --mesh-size / --rtol-pct)")
+    _mesh_keys(tabs["fe"], given, name)
     values, sources, used = {}, {}, []
     for p, (table, key, default) in SETTINGS.items():
         if p in given:
@@ -167,14 +157,9 @@ def resolve_settings(scene, given: Mapping, names: Mapping | None = None) -> Swe
             values["rtol"], sources["rtol"] = None, "default"
             used.pop()
     spec = values["angles"] if isinstance(values["angles"], str) else None
-    if spec is not None:
-        label = name("angles_deg")[0] if sources["angles"] == "argument" else \
-            "[sweep] angles_deg" if sources["angles"] == "scene" else "angles_deg"
-        angles = _validate.angles_deg(label, spec)
-    else:
-        angles = _validate.finite_array("angles", values["angles"], "rad").ravel()
-        if angles.size == 0:
-            raise _validate.fail("angles", "[]", "rad", "must contain at least one angle")
+    label = {"argument": name("angles_deg")[0], "scene": "[sweep] angles_deg"}.get(sources["angles"],
+                                                                                  "angles_deg")
+    angles = _angles(values["angles"], label)
     a_over_h = values["a_over_h"] if sources["a_over_h"] != "default" or values["rtol"] is None else None
     tolerance = values["tolerance"] if sources["tolerance"] != "default" else None
     a_over_h, tolerance, rtol = rtol_settings(a_over_h, values["rtol"], values["method"], tolerance)
@@ -182,3 +167,30 @@ def resolve_settings(scene, given: Mapping, names: Mapping | None = None) -> Swe
                          a_over_h=a_over_h, tolerance=tolerance,
                          rtol=rtol, chunk_size=values["chunk_size"], vtk_every=values["vtk_every"],
                          plots=bool(values["plots"]), sources=sources, from_scene=tuple(used))
+
+
+def _mesh_keys(fe: dict, given: dict, name) -> None:
+    """``rtol`` against ``a_over_h``: both given, or both in the scene, refused; one given drops
+    the scene's other key from ``fe`` (in place)."""
+    if "rtol" in given and "a_over_h" in given:
+        (nr, fr, ur), (na, fa, _) = name("rtol"), name("a_over_h")
+        r = _validate.number("rtol", given["rtol"], _UNITS["rtol"]) * fr
+        a = _validate.number("a_over_h", given["a_over_h"], _UNITS["a_over_h"]) * fa
+        raise _validate.fail(nr, r, ur, f"cannot be given with {na} = {a:g}: {nr} chooses the mesh "
+                             "(a_over_h); give one")
+    if "rtol" in given or "a_over_h" in given:
+        fe.pop("a_over_h" if "rtol" in given else "rtol_pct", None)  # one given beats the other key
+    if "rtol_pct" in fe and "a_over_h" in fe:
+        raise _validate.fail("[fe] rtol_pct", fe["rtol_pct"], "%", "cannot be given with [fe] a_over_h "
+                             "in the same scene: rtol_pct chooses the mesh; give one of them (or "
+                             "override one: a_over_h / rtol, --mesh-size / --rtol-pct)")
+
+
+def _angles(value, label: str) -> np.ndarray:
+    """Cam angles [rad] from a ``start:stop:step`` spec [deg] or an array [rad]."""
+    if isinstance(value, str):
+        return _validate.angles_deg(label, value)
+    angles = _validate.finite_array("angles", value, "rad").ravel()
+    if angles.size == 0:
+        raise _validate.fail("angles", "[]", "rad", "must contain at least one angle")
+    return angles
