@@ -58,7 +58,8 @@ def test_hertz_rows_equal_with_scene_settings(tmp_path):
     o = r.provenance["options"]
     assert (o["a_over_h"], o["tolerance"], o["chunk_size"], o["vtk_every"]) == (12.0, 1e-3, 5, 0)
     assert set(o["settings"]["sources"].values()) == {"scene", "default"}
-    assert o["settings"]["sources"]["method"] == "scene" and o["settings"]["values"]["angles_deg"] == "0:360:30"
+    assert o["settings"]["sources"]["method"] == "scene"
+    assert o["settings"]["values"]["angles_deg"] == "0:360:30"
 
 
 def test_explicit_keyword_overrides_the_scene_like_the_flag(tmp_path):
