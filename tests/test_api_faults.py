@@ -504,7 +504,7 @@ CASES: dict[str, Case] = {
                                    call=lambda *a, **k: list(_sweep_run_tasks(*a, **k))),
     "femcam.sweep": Case(lazy(lambda: dict(scene=scene(), angles=TH[:2], method="hertz")),
                                {"a_over_h": opt(POS), "rtol": opt(POS), "tolerance": opt(POS),
-                                "chunk_size": INT_POS,
+                                "chunk_size": opt(INT_POS),
                                 "angles": opt(REAL)}, slow=True),
     "femcam.sweep.verify_families": Case(
         lazy(lambda: dict(F=state().Fc, rho=state().rho, theta=TH, cp=cp(),
