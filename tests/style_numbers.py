@@ -12,7 +12,8 @@ Counts:
   (``__class__`` of a module replaced) and scene keys documented as a deprecated alias;
 * follower dispatch sites outside the follower classes: ``isinstance(..., <X>Follower)`` (a
   class name ending in ``Follower``: not ``FollowerDynamics``, a load record) and comparisons of
-  a ``kind`` with a follower kind string (``.kind == "roller"``), outside
+  a ``kind`` with a follower kind string (``.kind == "roller"``) or of anything with a follower
+  class name (``type(f).__name__ == "RollerFollower"``), outside
   ``femcam/profile/geometry.py``, ``femcam/profile/oscillating.py`` and ``femcam/profile/pad.py``;
 * files with a function that takes the scene (a parameter named ``scene`` or ``sc``, or
   annotated ``Scene``);
@@ -81,8 +82,11 @@ KINDS = {"roller", "knife_edge", "flat_faced", "oscillating_roller", "oscillatin
 
 def _names_a_kind(node: ast.Compare) -> bool:
     """A comparison of something with a follower kind string (``f.kind == "roller"``,
-    ``kind in ("roller", "oscillating_roller")``)."""
+    ``kind in ("roller", "oscillating_roller")``) or a follower class name
+    (``type(f).__name__ == "RollerFollower"``)."""
     consts = [c for c in ast.walk(node) if isinstance(c, ast.Constant) and isinstance(c.value, str)]
+    if any(re.fullmatch(r"\w+Follower", c.value) for c in consts):  # type(f).__name__ == "RollerFollower"
+        return True
     return any(c.value in KINDS for c in consts) and "kind" in ast.unparse(node)
 
 
