@@ -208,10 +208,8 @@ def _run(args) -> int:
     command = shlex.join(["femcam", "run", str(args.scene), *opts])
 
     fo, dy = scene.follower, scene.dynamics
-    # a follower or dynamics record that describes itself (the oscillating arm) says so
-    geo = fo.describe() if hasattr(fo, "describe") else (
-        f"Rb = {fo.Rb * 1e3:g} mm" + (f", Rr = {fo.Rr * 1e3:g} mm" if fo.translating_roller else "")
-        + f", e = {fo.e * 1e3:g} mm")
+    geo = fo.describe()  # the follower's geometry in mm (femcam.profile)
+    # a dynamics record that describes itself (the oscillating arm) says so
     dyn = dy.describe() if hasattr(dy, "describe") else (
         f"m = {dy.m:g} kg, k = {dy.k:g} N/m, Fpl = {dy.Fpl:g} N, c = {dy.c:.4g} N s/m")
     print(f"femcam run: {scene.name}  ({scene.source_path})")

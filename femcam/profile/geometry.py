@@ -90,6 +90,22 @@ class FollowerBehaviour:
         """A roller on a slide (not on an arm): the roller slip models and the pitch curve."""
         return self.rolls and not self.oscillating
 
+    def describe(self) -> str:
+        """One line of the geometry in mm (``femcam run`` prints it); the arm's classes say more.
+
+        Returns
+        -------
+        str
+            Base radius, the roller radius of a roller, and the offset.
+
+        Examples
+        --------
+        >>> RollerFollower(Rb=0.02, Rr=0.01).describe()
+        'Rb = 20 mm, Rr = 10 mm, e = 0 mm'
+        """
+        roller = f", Rr = {self.Rr * 1e3:g} mm" if self.translating_roller else ""
+        return f"Rb = {self.Rb * 1e3:g} mm{roller}, e = {self.e * 1e3:g} mm"
+
     def contact_radius(self, tip_radius: float | None = None) -> float:
         """Radius of the follower body at the contact, the second Hertz radius (m).
 
