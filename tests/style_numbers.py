@@ -10,9 +10,11 @@ Counts:
   only re-export (no function or class of their own), ``from x import _name as _name``
   re-exports, properties documented as an ``Alias of``, the callable-module trick
   (``__class__`` of a module replaced) and scene keys documented as a deprecated alias;
-* follower dispatch sites outside the follower classes: ``isinstance(..., <X>Follower)`` and
-  comparisons of a ``kind`` with a follower kind string (``.kind == "roller"``), outside
-  ``femcam/profile/geometry.py`` and ``femcam/profile/oscillating.py``;
+* follower dispatch sites outside the follower classes: ``isinstance(..., <X>Follower)`` (a
+  class name ending in ``Follower``: not ``FollowerDynamics``, a load record) and comparisons of
+  a ``kind`` with a follower kind string (``.kind == "roller"``) or of anything with a follower
+  class name (``type(f).__name__ == "RollerFollower"``), outside
+  ``femcam/profile/geometry.py``, ``femcam/profile/oscillating.py`` and ``femcam/profile/pad.py``;
 * files with a function that takes the scene (a parameter named ``scene`` or ``sc``, or
   annotated ``Scene``);
 * the sweep package: module count and import depth (the longest chain of module-level imports
@@ -27,7 +29,7 @@ import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
-FOLLOWER_HOMES = ("femcam/profile/geometry.py", "femcam/profile/oscillating.py")
+FOLLOWER_HOMES = ("femcam/profile/geometry.py", "femcam/profile/oscillating.py", "femcam/profile/pad.py")
 
 
 def _files(root: Path):
@@ -75,13 +77,16 @@ def compat_aliases(root: Path) -> list[str]:
 
 
 #: the follower kinds (``kind`` of the follower classes)
-KINDS = {"roller", "knife_edge", "flat_faced", "oscillating_roller"}
+KINDS = {"roller", "knife_edge", "flat_faced", "oscillating_roller", "oscillating_pad"}
 
 
 def _names_a_kind(node: ast.Compare) -> bool:
     """A comparison of something with a follower kind string (``f.kind == "roller"``,
-    ``kind in ("roller", "oscillating_roller")``)."""
+    ``kind in ("roller", "oscillating_roller")``) or a follower class name
+    (``type(f).__name__ == "RollerFollower"``)."""
     consts = [c for c in ast.walk(node) if isinstance(c, ast.Constant) and isinstance(c.value, str)]
+    if any(re.fullmatch(r"\w+Follower", c.value) for c in consts):  # type(f).__name__ == "RollerFollower"
+        return True
     return any(c.value in KINDS for c in consts) and "kind" in ast.unparse(node)
 
 
@@ -94,7 +99,7 @@ def follower_dispatch(root: Path) -> list[str]:
         for node in ast.walk(ast.parse(text)):
             if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) \
                     and node.func.id == "isinstance" and len(node.args) == 2 \
-                    and "Follower" in ast.unparse(node.args[1]):
+                    and re.search(r"Follower\b", ast.unparse(node.args[1])):
                 out.append(f"{rel}:{node.lineno} isinstance")
             if isinstance(node, ast.Compare) and _names_a_kind(node):
                 out.append(f"{rel}:{node.lineno} kind")

@@ -177,3 +177,15 @@ def test_the_checks_catch_a_cycle_and_a_back_edge():
     assert cycles(g) == ["femcam.io -> femcam.sweep.result -> femcam.sweep.run -> femcam.io"]
     assert back_edges(g, ["io", "sweep"]) == ["femcam.io -> femcam.sweep.result (io is below sweep)"]
     assert cycles({"femcam.a": {"femcam.b"}, "femcam.b": set()}) == []
+
+
+def test_no_follower_dispatch_outside_the_follower_classes():
+    """Issue 24 item 2: callers read the follower protocol (``rolls``, ``draws_circle``,
+    ``flat_face``, ``needs_tip``, ``oscillating``, ``contact_radius``; docs/architecture.md)
+    instead of ``isinstance(..., *Follower)`` or a ``kind`` string (tests/style_numbers.py)."""
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from style_numbers import follower_dispatch
+
+    assert follower_dispatch(ROOT) == []

@@ -378,3 +378,32 @@ def test_min_base_radius_n_theta_must_be_integer_ge_16(n):
 def test_min_base_radius_n_theta_numpy_integer():
     r = min_base_radius("knife_edge", SEED000, n_theta=np.int64(16))
     assert r.n_theta == 16 and r.binding == "pressure_angle"
+
+
+def test_follower_protocol_says_what_each_follower_does():
+    """The follower protocol (docs/architecture.md): one row per follower class."""
+    from femcam.profile import (
+        FlatFacedFollower,
+        KnifeEdgeFollower,
+        OscillatingPadFollower,
+        OscillatingRollerFollower,
+        RollerFollower,
+    )
+
+    arm = dict(Rb=0.018, Rr=0.012, a=0.045, L=0.036)
+    rows = {  # rolls, draws_circle, flat_face, needs_tip, oscillating, translating_roller
+        RollerFollower(Rb=0.02, Rr=0.01): (True, True, False, False, False, True),
+        KnifeEdgeFollower(Rb=0.02): (False, False, False, True, False, False),
+        FlatFacedFollower(Rb=0.02): (False, False, True, False, False, False),
+        OscillatingRollerFollower(**arm): (True, True, False, False, True, False),
+        OscillatingPadFollower(**arm): (False, True, False, False, True, False),
+    }
+    for f, want in rows.items():
+        got = (f.rolls, f.draws_circle, f.flat_face, f.needs_tip, f.oscillating, f.translating_roller)
+        assert got == want, f.kind
+    assert RollerFollower(Rb=0.02, Rr=0.01).contact_radius() == 0.01
+    assert OscillatingPadFollower(**arm).contact_radius() == 0.012
+    assert FlatFacedFollower(Rb=0.02).contact_radius() == math.inf
+    assert KnifeEdgeFollower(Rb=0.02).contact_radius(0.003) == 0.003
+    with pytest.raises(InputError, match="tip_radius_mm"):
+        KnifeEdgeFollower(Rb=0.02).contact_radius()

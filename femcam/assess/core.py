@@ -82,10 +82,9 @@ WORST = {"film (lambda)": ("lam", "min"), "contact temperature": ("T_contact", "
 
 def _geometry(scene):
     """``(scene for the kinematics, R2 in m, tip radius or None)`` per follower type."""
-    kind = type(scene.follower).__name__
-    if kind in ("RollerFollower", "OscillatingRollerFollower", "OscillatingPadFollower"):  # R2 = Rr
+    if getattr(scene.follower, "draws_circle", False):  # R2 = Rr: a roller, on a slide or an arm, or a pad
         return scene, scene.follower.Rr, None
-    if kind == "FlatFacedFollower":
+    if getattr(scene.follower, "flat_face", False):
         return scene, math.inf, None
     tip = follower_tip_radius(scene)
     if tip is None:
@@ -122,7 +121,7 @@ def _speeds(scene, sc, st, theta, Fc, tip):
     kw = slip_kwargs(scene)
     full = theta.size >= 4 and np.allclose(np.diff(theta), theta[1] - theta[0]) and \
         abs(theta[-1] - theta[0] + (theta[1] - theta[0]) - 2.0 * math.pi) < 1e-9
-    if kw["roller_model"] != "inertia" or type(scene.follower).__name__ != "RollerFollower" or full:
+    if kw["roller_model"] != "inertia" or not getattr(scene.follower, "translating_roller", False) or full:
         r = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, tip_radius=tip, **kw)
         return r.V_cam, r.V_follower
     grid = np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False)

@@ -174,8 +174,8 @@ def outline_from_scene(scene, n: int = 720) -> np.ndarray:
 
 
 def _require_roller(scene):
-    kind = getattr(scene.follower, "kind", "")
-    if kind != "roller":
+    if not getattr(scene.follower, "translating_roller", False):
+        kind = getattr(scene.follower, "kind", "")
         raise InputError(f"follower type = {kind!r}: the cam disk model needs a roller follower")
 
 

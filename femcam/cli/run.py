@@ -130,12 +130,12 @@ def summary_lines(scene, st, phi_limit_deg: float = 30.0) -> list[str]:
         f"undercut       = {_intervals_deg(_undercut_intervals(st))} (whole revolution: 0.05 deg grid and "
         "every segment)",
     ]
-    if scene.follower.kind == "oscillating_roller":  # the arm's rigid lift-off (jump) speed
+    if scene.follower.oscillating and scene.follower.rolls:  # the arm's rigid lift-off (jump) speed
         j = rigid_jump_speed(arm_follower(scene.dynamics, scene.follower.L), scene.program,
                              0.01 * scene.rpm, 10.0 * scene.rpm)
         lines.append(f"jump speed     = {j:.6g} rpm (rigid arm)" if math.isfinite(j) else
                      f"jump speed     = none up to {10 * scene.rpm:.6g} rpm (rigid arm)")
-    if scene.follower.kind == "flat_faced":
+    if scene.follower.flat_face:
         lines.append(f"min face width = {st.profile.face_width_min * 1e3:.3f} mm (face centred on the axis)")
     return lines
 
@@ -208,10 +208,8 @@ def _run(args) -> int:
     command = shlex.join(["femcam", "run", str(args.scene), *opts])
 
     fo, dy = scene.follower, scene.dynamics
-    # a follower or dynamics record that describes itself (the oscillating arm) says so
-    geo = fo.describe() if hasattr(fo, "describe") else (
-        f"Rb = {fo.Rb * 1e3:g} mm" + (f", Rr = {fo.Rr * 1e3:g} mm" if fo.kind == "roller" else "")
-        + f", e = {fo.e * 1e3:g} mm")
+    geo = fo.describe()  # the follower's geometry in mm (femcam.profile)
+    # a dynamics record that describes itself (the oscillating arm) says so
     dyn = dy.describe() if hasattr(dy, "describe") else (
         f"m = {dy.m:g} kg, k = {dy.k:g} N/m, Fpl = {dy.Fpl:g} N, c = {dy.c:.4g} N s/m")
     print(f"femcam run: {scene.name}  ({scene.source_path})")
@@ -238,8 +236,7 @@ def _run(args) -> int:
                                                       "Summary:", *summ]) + "\n")
     files.append(out / "summary.txt")
     if not args.no_plots:
-        circle = fo.kind in ("roller", "oscillating_roller", "oscillating_pad")  # drawn follower circle
-        files += plot_all(st, out, "", Rr=fo.Rr if circle else 0.0,
+        files += plot_all(st, out, "", Rr=fo.Rr if fo.draws_circle else 0.0,
                           limit_deg=args.phi_limit_deg, title=scene.name)
     print()
     print("Wrote: " + ", ".join(str(f) for f in files))

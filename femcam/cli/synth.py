@@ -25,7 +25,7 @@ from .. import io
 from .._progress import phase
 from ..errors import ConvergenceError, InputError
 from ..kinematics import LAW_NAMES
-from ..profile import KnifeEdgeFollower, min_base_radius
+from ..profile import min_base_radius
 from ..scene import load_scene
 from ..synthesis import SynthesisOptions, compare_direct, synthesize_knife_edge
 from ..synthesis.options import MAX_ELEMENTS
@@ -99,7 +99,7 @@ def _case(args):
     if args.case:
         return "seed003", seed003_program(), SEED003_RB
     sc = load_scene(args.scene)
-    if not isinstance(sc.follower, KnifeEdgeFollower) or sc.follower.e != 0.0:
+    if not sc.follower.needs_tip or sc.follower.e != 0.0:
         raise InputError(f"scene {args.scene}: [follower] type = "
                          f"{sc.follower.kind!r}: synth needs an in-line "
                          "knife_edge follower (offset_mm = 0)")

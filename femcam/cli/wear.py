@@ -35,7 +35,6 @@ from ..errors import InputError
 from ..halfspace.rows import has_finite_length
 from ..io import provenance, write_rows, write_table
 from ..kinematics import LAW_NAMES
-from ..profile import FlatFacedFollower, KnifeEdgeFollower, RollerFollower
 from ..scene import load_scene
 from ..sweep import sweep
 from ..viz.wear import plot_evolution, plot_wear_comparison, plot_wear_map, plot_wear_polar
@@ -138,10 +137,10 @@ def _seed000(args) -> int:
 
 def _follower_coordinate(scene) -> tuple[str, str, str]:
     """(CSV column name, plain-words description, plot label) of the follower surface coordinate."""
-    if isinstance(scene.follower, RollerFollower):
+    if scene.follower.translating_roller:
         return "roller_arc_mm", ("arc along the roller circumference (0 .. 2 pi Rr) from the roller point "
                                  "in contact at the first cam angle of the first revolution"), "roller arc"
-    if isinstance(scene.follower, FlatFacedFollower):
+    if scene.follower.flat_face:
         return "face_x_mm", "distance along the flat face from the follower axis", "face position from axis"
     return ("tip_arc_mm", "arc along the tip from the tip's axis point (r_tip x pressure angle)",
             "tip arc r_tip phi")
@@ -214,7 +213,7 @@ def _fe_scene(scene, tip):
     """The scene the FE sweep of ``--source fe`` solves: a knife edge stays a knife edge (the
     sweep cuts the cam for its radiused tip and lets the tip slide) with ``--tip-radius-mm`` as
     its tip radius; any other follower as it is."""
-    if isinstance(scene.follower, KnifeEdgeFollower):
+    if scene.follower.needs_tip:
         return dataclasses.replace(scene, tip_radius=scene_tip_radius(scene, tip))
     return tip_scene(scene, tip)   # itself; refuses a tip radius on another follower, naming it
 

@@ -40,7 +40,6 @@ import numpy as np
 from .. import _validate
 from ..materials import effective_modulus
 from ..mesh import MeshOptions
-from ..profile import FlatFacedFollower, RollerFollower
 from .followers import check_face, rolling_direction, sliding_sign
 from .gap import arc_gap, contact_geometry, gap_from_surface, local_surface
 from .model import ContactModel, SolverOptions
@@ -122,7 +121,7 @@ def build_real_cam(*, program, follower, cam, roller, length: float, F_ref: floa
     F_ref = _validate.positive("F_ref", F_ref, "N")
     rho_ref = _validate.number("rho_ref", rho_ref, "m")
     E_star = effective_modulus(cam, roller, plane)
-    swapped = isinstance(follower, FlatFacedFollower)
+    swapped = follower.flat_face
     inv = (0.0 if math.isinf(R) else 1 / R) + (0.0 if math.isinf(rho_ref) else 1 / rho_ref)
     a_ref = math.sqrt(4 * F_ref / length / max(inv, 1e-300) / (math.pi * E_star))
     if swapped:  # the cam is the curved FE "roller", the flat follower the FE "cam"
@@ -249,15 +248,10 @@ def _estimates(surf, x, a, R_eff):
     return g_ex, g_arc, 50.0 * e_g, 50.0 * e_g + 100.0 * (a / R_min) ** 2
 
 
-def _rolls(follower) -> bool:
-    """A translating roller, or a follower that says it rolls (the arm's roller; its pad does not)."""
-    return isinstance(follower, RollerFollower) or bool(getattr(follower, "rolls", False))
-
-
 def _traction(rc: RealCam, theta, F, mu, Q):
     """(Q on the cam, rolling, sliding) in the FE frame; the FE frame's x is the physical x,
     but with swapped bodies the traction on the FE cam (the follower) is -Q."""
-    if _rolls(rc.follower):
+    if rc.follower.rolls:
         roll = int(rolling_direction(rc.program, rc.follower, [theta])[0])
         return (0.0 if Q is None else float(Q)), roll, 1
     s = int(sliding_sign(rc.program, rc.follower, [theta], tip_radius=rc.tip_radius)[0])
@@ -315,7 +309,7 @@ def solve_angle(rc: RealCam, theta: float, F: float, *, mu: float, Q: float | No
     Q_fe = -Qc if rc.swapped else Qc
     exact = force_exact or curvature_jump
     kw = dict(F=F, rho=math.inf if rc.swapped else surf.rho, mu=mu, check=False)
-    if _rolls(rc.follower):
+    if rc.follower.rolls:
         kw.update(Q=Q_fe, rolling=roll)
     else:
         kw.update(sliding=slide)
@@ -328,7 +322,7 @@ def solve_angle(rc: RealCam, theta: float, F: float, *, mu: float, Q: float | No
                                  else "curvature jump / exact requested")
         if exact:
             p0_arc = m.solve(gap=g_arc, **kw).p0_nodal
-    elif e_h > tol_pct or isinstance(rc.follower, FlatFacedFollower) and rc.face_length is None:
+    elif e_h > tol_pct or rc.follower.flat_face and rc.face_length is None:
         res = m.solve(gap=g_arc, **kw)
         p0_arc = res.p0_nodal
         name, why = "fe_arc", f"Hertz error estimate {e_h:.3g} % > tol {tol_pct:g} %"

@@ -33,7 +33,7 @@ import numpy as np
 
 from .. import _validate
 from ..errors import PhysicsError
-from ..profile import FlatFacedFollower, KnifeEdgeFollower, RollerFollower, bool_intervals, cam_profile
+from ..profile import bool_intervals, cam_profile
 from .gap import _contact_frame, contact_geometry
 
 #: FE body name -> physical body, for a flat-faced follower (the bodies swap roles)
@@ -161,7 +161,7 @@ def face_edge_intervals(program, follower, face_length: float, theta, a) -> list
     InputError
         ``follower`` is not flat-faced, or ``face_length`` is not positive.
     """
-    if not isinstance(follower, FlatFacedFollower):
+    if not getattr(follower, "flat_face", False):
         raise _validate.fail("follower", type(follower).__name__, "", "must be a flat-faced follower")
     L = _validate.positive("face_length", face_length, "m")
     th = _validate.finite_array("theta", theta, "rad")
@@ -191,7 +191,7 @@ def check_face(program, follower, face_length: float | None, theta, a) -> None:
     PhysicsError
         The contact runs past the face end, naming the angle range in degrees.
     """
-    if face_length is None or not isinstance(follower, FlatFacedFollower):
+    if face_length is None or not getattr(follower, "flat_face", False):
         return
     iv = face_edge_intervals(program, follower, face_length, theta, a)
     if iv:
@@ -219,8 +219,6 @@ def follower_kind(follower) -> str:
     InputError
         Any other object.
     """
-    if isinstance(follower, RollerFollower):
-        return "rolling"
-    if isinstance(follower, KnifeEdgeFollower | FlatFacedFollower):
-        return "sliding"
+    if hasattr(follower, "rolls") and not follower.oscillating:  # a translating follower
+        return "rolling" if follower.rolls else "sliding"
     raise _validate.fail("follower", follower, "", "must be a roller, knife-edge or flat-faced follower")

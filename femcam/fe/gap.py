@@ -54,13 +54,7 @@ import numpy as np
 from .. import _validate
 from ..errors import PhysicsError
 from ..mesh import surface_height
-from ..profile import (
-    FlatFacedFollower,
-    KnifeEdgeFollower,
-    OscillatingRollerFollower,
-    RollerFollower,
-    cam_profile,
-)
+from ..profile import RollerFollower, cam_profile
 
 GAP_KINDS = ("normal", "vertical")
 #: cam surface samples per local window (linear interpolation error ~ (window/N)^2 / (8 rho))
@@ -120,18 +114,12 @@ def contact_geometry(follower, tip_radius: float | None = None):
     InputError
         A knife-edge follower without ``tip_radius``, or not a follower.
     """
-    if isinstance(follower, RollerFollower | OscillatingRollerFollower):  # a roller on a slide or an arm
-        return follower, follower.Rr
-    if isinstance(follower, KnifeEdgeFollower):
-        if tip_radius is None:
-            raise _validate.fail("tip_radius_mm", None, "mm", "a knife-edge follower needs a tip radius for "
-                                 "contact stresses (a sharp tip has no contact width): add "
-                                 "tip_radius_mm = ... to the [follower] table")
-        r = _validate.positive("tip_radius", tip_radius, "m")
-        return RollerFollower(Rb=follower.Rb, Rr=r, e=follower.e), r
-    if isinstance(follower, FlatFacedFollower):
-        return follower, math.inf
-    raise _validate.fail("follower", follower, "", "must be a roller, knife-edge or flat-faced follower")
+    if not hasattr(follower, "contact_radius"):
+        raise _validate.fail("follower", follower, "", "must be a roller, knife-edge or flat-faced follower")
+    R = follower.contact_radius(tip_radius)  # Rr, the tip radius (refused if missing) or inf
+    if follower.needs_tip:  # the tip's roller cuts the cam
+        return RollerFollower(Rb=follower.Rb, Rr=R, e=follower.e), R
+    return follower, R
 
 
 def _contact_frame(prof, theta, R: float):

@@ -40,7 +40,7 @@ from ..errors import InputError, PhysicsError
 from ..hertz import LineContact
 from ..hertz.conformity import shape_factors
 from ..hertz.contact import HertzValidityWarning
-from ..profile import RollerFollower, cam_profile, pitch_curvature
+from ..profile import cam_profile, pitch_curvature
 from ..wear.map import wear_depth_per_angle
 from ..wear.options import slip_kwargs, wear_coefficient_info, wear_options
 from ..wear.slip import follower_slip
@@ -145,7 +145,7 @@ def evaluate(scene, theta, objective: str, *, phi_max: float | None, rho_min: fl
     Fc = (dyn.m * a + dyn.c * w * d.s1 + dyn.k * d.s + dyn.Fpl) / np.cos(p.phi)
     out = {"phi": p.phi, "rho": p.rho, "Fc": Fc, "a": a}
     if objective in ("p0", "von_mises", "tau1", "wear"):
-        if not isinstance(f, RollerFollower):
+        if not f.translating_roller:
             raise InputError(f"objective = {objective!r}: needs a roller follower (Hertz contact); "
                              f"this scene's follower is a {f.kind} follower")
         rho = np.where(kappa * (Rr + _RHO_FLOOR) >= 1.0, _RHO_FLOOR, p.rho)

@@ -46,7 +46,6 @@ import numpy as np
 from .. import _validate
 from ..errors import InputError
 from ..kinematics import CamProgram, law
-from ..profile import FlatFacedFollower, RollerFollower
 from .bounds import check_scene_range
 
 __all__ = ["Variable", "BezierRise", "Design", "VARIABLE_UNITS"]
@@ -193,10 +192,10 @@ class Design:
         for v in self.variables:
             check_scene_range(v)   # femcam.optimise.bounds
         f = self.scene.follower
-        if isinstance(f, FlatFacedFollower):
+        if f.flat_face:
             raise InputError("follower type = flat_faced: femcam.optimise handles roller and knife-edge "
                              "followers")
-        if "roller_radius" in names and not isinstance(f, RollerFollower):
+        if "roller_radius" in names and not f.translating_roller:
             raise InputError(f"design variable 'roller_radius': this scene's follower is a {f.kind} follower")
         cps = [n for n in names if n.startswith("control_point_")]
         if cps:

@@ -17,7 +17,17 @@ import numpy as np
 
 from .. import _validate
 from ..errors import UndercutError
-from .geometry import FOLLOWER_KINDS, pitch_curvature, pressure_angle
+from .geometry import (
+    FOLLOWER_KINDS,
+    FlatFacedFollower,
+    KnifeEdgeFollower,
+    RollerFollower,
+    pitch_curvature,
+    pressure_angle,
+)
+
+#: the follower class of each kind: its protocol says what bounds Rb (a circle, a flat face)
+_CLASS = {c.kind: c for c in (RollerFollower, KnifeEdgeFollower, FlatFacedFollower)}
 
 
 @dataclass(frozen=True)
@@ -165,7 +175,7 @@ def min_base_radius(kind: str, program, *, phi_max: float = math.radians(30.0), 
     theta = np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
     dtheta = 2.0 * math.pi / n
     s, s1, s2 = _derivs(program, theta)
-    if kind == "flat_faced":
+    if _CLASS[kind].flat_face:
         return _flat_faced(program, theta, s, s2, dtheta, rho_min, n)
 
     tan_lim = math.tan(phi_lim)
@@ -229,9 +239,9 @@ def _checked(kind, phi_max, Rr, e, rho_min, n_theta):
     Rr = _validate.nonnegative("Rr", Rr, "m")
     e = _validate.number("e", e, "m")
     rho_min = _validate.nonnegative("rho_min", rho_min, "m")
-    if kind == "roller" and Rr <= 0.0:
+    if _CLASS[kind].draws_circle and Rr <= 0.0:
         raise _validate.fail("Rr", Rr, "m", "must be > 0 for a roller follower")
-    if kind != "roller" and Rr != 0.0:
+    if not _CLASS[kind].draws_circle and Rr != 0.0:
         raise _validate.fail("Rr", Rr, "m", f"only a roller follower has a roller radius; a {kind} "
                              "follower needs Rr = 0 (the default)")
     return phi_lim, Rr, e, rho_min, _validate.integer("n_theta", n_theta, 16)
@@ -281,7 +291,7 @@ def _raise_to_undercut_limit(margin, Rb, reach, s):
 
 def _unbounded(kind, Rr, Rp_phi, deg, phi0, rho0, theta_c, n, iterations) -> BaseRadiusResult:
     """``binding = "none"``: nothing bounds ``Rb`` away from 0 (the values in the limit Rb -> 0)."""
-    if kind == "roller":
+    if _CLASS[kind].draws_circle:
         why = (f"the roller radius Rr = {Rr * 1e3:g} mm alone is at least the prime radius "
                f"{Rp_phi * 1e3:.6g} mm that phi <= {deg:g} deg needs, and no Rb > 0 undercuts "
                "the cam")

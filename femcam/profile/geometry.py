@@ -68,8 +68,81 @@ def _set_checked(follower, **checks) -> None:
         object.__setattr__(follower, name, check(name, getattr(follower, name), "m"))
 
 
+class FollowerBehaviour:
+    """The follower protocol: what a follower does at the contact, so that callers read these
+    attributes instead of dispatching on the class or on ``kind`` (docs/architecture.md,
+    "Follower protocol"). Each follower class sets the flags that differ from these defaults.
+    """
+
+    #: the follower surface turns with the contact (a roller; a knife edge, a flat face or a pad slides)
+    rolls = False
+    #: the contact surface is a circle of radius ``Rr`` (a roller, on a slide or an arm, or a pad)
+    draws_circle = False
+    #: the contact surface is a flat face (second radius ``inf``; the cam is the curved body)
+    flat_face = False
+    #: a knife edge: contact stresses need a tip radius (a sharp tip has no contact width)
+    needs_tip = False
+    #: the follower sits on a pivoted arm (femcam.profile.oscillating)
+    oscillating = False
+
+    @property
+    def translating_roller(self) -> bool:
+        """A roller on a slide (not on an arm): the roller slip models and the pitch curve."""
+        return self.rolls and not self.oscillating
+
+    def describe(self) -> str:
+        """One line of the geometry in mm (``femcam run`` prints it); the arm's classes say more.
+
+        Returns
+        -------
+        str
+            Base radius, the roller radius of a roller, and the offset.
+
+        Examples
+        --------
+        >>> RollerFollower(Rb=0.02, Rr=0.01).describe()
+        'Rb = 20 mm, Rr = 10 mm, e = 0 mm'
+        """
+        roller = f", Rr = {self.Rr * 1e3:g} mm" if self.translating_roller else ""
+        return f"Rb = {self.Rb * 1e3:g} mm{roller}, e = {self.e * 1e3:g} mm"
+
+    def contact_radius(self, tip_radius: float | None = None) -> float:
+        """Radius of the follower body at the contact, the second Hertz radius (m).
+
+        Parameters
+        ----------
+        tip_radius : float, optional
+            Knife-edge tip radius [m] (required for a knife edge, ignored otherwise).
+
+        Returns
+        -------
+        float
+            ``Rr`` for a follower circle, ``tip_radius`` for a knife edge, ``inf`` for a flat face.
+
+        Raises
+        ------
+        InputError
+            A knife edge without ``tip_radius`` (naming ``tip_radius_mm``), or a tip radius not
+            positive.
+
+        Examples
+        --------
+        >>> FlatFacedFollower(Rb=0.02).contact_radius()
+        inf
+        """
+        if self.flat_face:
+            return math.inf
+        if self.needs_tip:
+            if tip_radius is None:
+                raise _validate.fail("tip_radius_mm", None, "mm", "a knife-edge follower needs a tip radius "
+                                     "for contact stresses (a sharp tip has no contact width): add "
+                                     "tip_radius_mm = ... to the [follower] table")
+            return _validate.positive("tip_radius", tip_radius, "m")
+        return float(self.Rr)
+
+
 @dataclass(frozen=True, kw_only=True)
-class RollerFollower:
+class RollerFollower(FollowerBehaviour):
     """Translating roller follower: base radius ``Rb``, roller radius ``Rr``, offset ``e`` (m).
 
     Parameters
@@ -96,6 +169,8 @@ class RollerFollower:
     Rr: float
     e: float = 0.0
     kind = "roller"
+    rolls = True
+    draws_circle = True
 
     def __post_init__(self):
         _set_checked(self, Rb=_validate.positive, Rr=_validate.positive, e=_validate.number)
@@ -109,7 +184,7 @@ class RollerFollower:
 
 
 @dataclass(frozen=True, kw_only=True)
-class KnifeEdgeFollower:
+class KnifeEdgeFollower(FollowerBehaviour):
     """Translating knife-edge follower: base radius ``Rb`` and offset ``e`` (m).
 
     Parameters
@@ -128,6 +203,7 @@ class KnifeEdgeFollower:
     Rb: float
     e: float = 0.0
     kind = "knife_edge"
+    needs_tip = True
 
     def __post_init__(self):
         _set_checked(self, Rb=_validate.positive, e=_validate.number)
@@ -146,7 +222,7 @@ class KnifeEdgeFollower:
 
 
 @dataclass(frozen=True, kw_only=True)
-class FlatFacedFollower:
+class FlatFacedFollower(FollowerBehaviour):
     """Translating flat-faced follower (face perpendicular to its axis), base radius ``Rb`` (m).
 
     The axis offset ``e`` does not change the cam shape; it only moves the contact point
@@ -168,6 +244,7 @@ class FlatFacedFollower:
     Rb: float
     e: float = 0.0
     kind = "flat_faced"
+    flat_face = True
 
     def __post_init__(self):
         _set_checked(self, Rb=_validate.positive, e=_validate.number)

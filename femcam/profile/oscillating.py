@@ -61,14 +61,14 @@ import numpy as np
 
 from .. import _validate
 from ..errors import InputError, UndercutError
-from .geometry import CamProfile, _fmt_intervals_deg, _rot, _set_checked, bool_intervals
+from .geometry import CamProfile, FollowerBehaviour, _fmt_intervals_deg, _rot, _set_checked, bool_intervals
 
 #: scene values of ``[follower] direction`` and their ``sigma``
 DIRECTIONS = {"away_from_pivot": 1, "toward_pivot": -1}
 
 
 @dataclass(frozen=True, kw_only=True)
-class OscillatingRollerFollower:
+class OscillatingRollerFollower(FollowerBehaviour):
     """Roller on an arm pivoted at distance ``a`` from the cam centre (m; module docstring).
 
     Parameters
@@ -104,6 +104,8 @@ class OscillatingRollerFollower:
     kind = "oscillating_roller"
     #: the roller turns on the arm (rolls); a pad (femcam.profile.pad) does not
     rolls = True
+    draws_circle = True
+    oscillating = True
     #: the follower surface named in messages
     face = "roller"
 

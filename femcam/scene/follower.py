@@ -133,7 +133,7 @@ def arm_program(program, follower):
     femcam.kinematics.CamProgram or None
         The program in m.
     """
-    if not isinstance(follower, OscillatingRollerFollower) or program is None:
+    if not getattr(follower, "oscillating", False) or program is None:
         return program
     L = follower.L
     return CamProgram([dataclasses.replace(sg, h=sg.h * L) if sg.h else sg for sg in program.segments])
@@ -151,7 +151,7 @@ def arm_fold(ck: _Checker, program, follower) -> None:
     follower : object
         The checked follower (only an OscillatingRollerFollower is checked).
     """
-    if not isinstance(follower, OscillatingRollerFollower) or program is None:
+    if not getattr(follower, "oscillating", False) or program is None:
         return
     top = program.h_max  # rad: checked before arm_program scales it
     if top >= follower.psi_fold:
@@ -179,7 +179,7 @@ def arm_self_locking(ck: _Checker, program, follower, mu) -> None:
     mu : float or None
         The checked ``[contact] friction`` [-].
     """
-    if not isinstance(follower, OscillatingRollerFollower) or program is None or not mu:
+    if not getattr(follower, "oscillating", False) or program is None or not mu:
         return
     th = _dense_theta(program)
     d = program.derivatives(th)

@@ -91,8 +91,7 @@ class EvalOptions:
 
 def _contact_radius(scene) -> float:
     """R2 of the follower (m): the roller, a knife edge's tip, inf for a flat face."""
-    kind = getattr(scene.follower, "kind", type(scene.follower).__name__)
-    if kind in ("flat_faced", "FlatFacedFollower"):
+    if getattr(scene.follower, "flat_face", False):
         return math.inf
     r = float(getattr(scene.follower, "Rr", 0.0) or 0.0)
     if r <= 0.0:

@@ -96,7 +96,7 @@ def coating_in_headline(scene, method: str = "fe") -> bool:
         The coated model answers the headline (False for an uncoated scene).
     """
     return (bool(scene_coatings(scene)) and method != "hertz"
-            and getattr(scene.follower, "kind", "roller") != "flat_faced")
+            and not getattr(scene.follower, "flat_face", False))
 
 
 def omitted_physics(scene, method: str = "fe") -> tuple[tuple[str, str], ...]:

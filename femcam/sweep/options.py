@@ -7,7 +7,6 @@ by :class:`SweepOptions`).
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 from .. import _validate
@@ -176,17 +175,12 @@ def contact_params(scene) -> ContactParams:
     """
     kind = scene.follower.kind
     sliding = -1 if str(scene.sliding or "+x").strip() == "-x" else 1
-    if kind == "flat_faced":
-        R = math.inf
-    elif kind == "knife_edge":
-        tip = follower_tip_radius(scene)
-        if tip is None:
-            raise InputError("follower.type = knife_edge: a sharp tip has no contact width, so the "
-                             "contact stresses are undefined; add the tip radius to the scene: "
-                             "[follower] tip_radius_mm = ... (mm)")
-        R = float(tip)
-    else:
-        R = float(scene.follower.Rr)
+    tip = follower_tip_radius(scene) if scene.follower.needs_tip else None
+    if scene.follower.needs_tip and tip is None:
+        raise InputError("follower.type = knife_edge: a sharp tip has no contact width, so the "
+                         "contact stresses are undefined; add the tip radius to the scene: "
+                         "[follower] tip_radius_mm = ... (mm)")
+    R = scene.follower.contact_radius(tip)  # Rr, the tip radius or inf (flat face)
     coat = {}
     for body, tabs in (getattr(scene, "layers", None) or {}).items():
         if "coating" in tabs:

@@ -300,7 +300,7 @@ def with_plot_data(result: SweepResult, run: SweepRun) -> SweepResult:
     cp = contact_params(run.scene)
     profile = None
     if np.any(result.ok):
-        fe = "hertz" if (result.method == "hertz" or cp.kind == "flat_faced") else "fe"
+        fe = "hertz" if (result.method == "hertz" or run.scene.follower.flat_face) else "fe"
         profile = worst_surface_profile(result.table, fe, cp, result.families, run.opts,
                                         default_cache(), scene=run.scene)
     return replace(result, surface_profile=profile,

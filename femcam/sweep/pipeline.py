@@ -261,7 +261,7 @@ def _run_chunk(task: ChunkTask) -> dict:
     rows["fe_time"][:] = 0.0
     rows["build_time"][:] = 0.0
     _hertz_rows(rows, flags, good, cp, rows["Fc"], rows["rho"], opts.method)
-    if cp.kind == "flat_faced":  # past the face end: an edge contact, never Hertz
+    if task.scene.follower.flat_face:  # past the face end: an edge contact, never Hertz
         good = flat_edge_rows(task.scene, cp, rows, good)
     vtk_fe, solved = {}, {}
     if opts.method == "hertz":
@@ -270,7 +270,7 @@ def _run_chunk(task: ChunkTask) -> dict:
         rows["status"][good] = "ok"
     else:
         fe = _choose_models(task, cp, rows, flags, good)
-        if cp.kind == "flat_faced":
+        if task.scene.follower.flat_face:
             vtk_fe = flat_rows(task, cp, rows, fe, default_cache(), flags)
         else:
             solved = _fe_rows(task, cp, rows, flags, fe, default_cache())
@@ -302,7 +302,7 @@ def _choose_models(task: ChunkTask, cp: ContactParams, rows, flags, good) -> np.
     e_arc, e_h = arc_error_estimate(task.scene, rows["theta"][good], rows["a_hertz"][good], cp.Rr)
     rows["est_err_arc"][good] = e_arc / 100.0
     rows["est_err_hertz"][good] = e_h / 100.0
-    if task.options.method != "auto" or (cp.coat_body is not None and cp.kind != "flat_faced"):
+    if task.options.method != "auto" or (cp.coat_body is not None and not task.scene.follower.flat_face):
         return good   # a coated body: Hertz (homogeneous) is not the scene's model
     hz = (task.hertz[good] if task.hertz is not None else
           hertz_within_tolerance(e_h, task.jump[good] if task.jump is not None else None,

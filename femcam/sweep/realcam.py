@@ -53,10 +53,6 @@ from ..fe.followers import rolling_direction, sliding_sign
 from ..fe.gap import contact_geometry
 from ..materials import effective_modulus
 from ..profile import (
-    FlatFacedFollower,
-    KnifeEdgeFollower,
-    OscillatingRollerFollower,
-    RollerFollower,
     cam_profile,
 )
 from ..wear.options import follower_tip_radius, slip_kwargs
@@ -91,7 +87,7 @@ def contact_scene(scene):
     InputError
         A knife-edge follower without ``[follower] tip_radius_mm``.
     """
-    if not isinstance(scene.follower, KnifeEdgeFollower):
+    if not scene.follower.needs_tip:
         return scene
     tip = follower_tip_radius(scene)
     if tip is None:
@@ -102,7 +98,7 @@ def contact_scene(scene):
 
 
 def _tip(scene):
-    return follower_tip_radius(scene) if isinstance(scene.follower, KnifeEdgeFollower) else None
+    return follower_tip_radius(scene) if scene.follower.needs_tip else None
 
 
 def _a_at(scene, jump, F) -> float:
@@ -235,10 +231,10 @@ def scene_traction(scene, theta) -> Traction:
         s = -1 if str(scene.sliding).strip() == "-x" else 1
         return Traction(np.full(n, np.nan), np.full(n, s, int), f"[contact] sliding = {scene.sliding}")
     f = scene.follower
-    if isinstance(f, OscillatingRollerFollower) and f.rolls:  # the roller slip models are translating only
+    if f.oscillating and f.rolls:  # the roller slip models are translating only
         return Traction(np.zeros(n), np.ones(n, int), "oscillating roller: pure rolling, no traction "
                         "(the roller inertia slip model is not built for an arm)")
-    if not isinstance(f, RollerFollower):  # knife-edge, flat face, the pad on an arm: full sliding
+    if not f.rolls:  # knife-edge, flat face, the pad on an arm: full sliding
         sg = sliding_sign(scene.program, f, theta, tip_radius=_tip(scene))
         return Traction(np.full(n, np.nan), sg.astype(int), "full sliding, sign of the sliding velocity")
     roll = rolling_direction(scene.program, f, theta)
@@ -352,7 +348,7 @@ def auto_hertz_rows(scene, cp, options, theta, F, rho, contact, jump) -> np.ndar
         estimate knows no coating, the coated FE answers).
     """
     n = np.asarray(theta).size
-    if options.method != "auto" or (cp.coat_body is not None and cp.kind != "flat_faced"):
+    if options.method != "auto" or (cp.coat_body is not None and not scene.follower.flat_face):
         return np.zeros(n, bool)   # a coated body: Hertz (homogeneous) is not the scene's model
     F = np.clip(np.asarray(F, float), 0.0, None)
     rho = np.asarray(rho, float)
@@ -410,11 +406,7 @@ def follower_radius(scene) -> float:
     float
         ``Rr``, the knife-edge tip radius, or ``inf`` (flat face) [m].
     """
-    f = scene.follower
-    if isinstance(f, FlatFacedFollower):
-        return math.inf
-    _, R = contact_geometry(f, _tip(scene))
-    return R
+    return scene.follower.contact_radius(_tip(scene))
 
 
 def real_cam_summary(table, traction: Traction | None) -> dict:

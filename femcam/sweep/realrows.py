@@ -21,7 +21,6 @@ from ..fe.choice import RealCam, build_real_cam, solve_angle
 from ..fe.followers import check_face
 from ..hertz.conformity import shape_factors
 from ..mesh import MeshOptions
-from ..profile import KnifeEdgeFollower, RollerFollower
 from .headline import edge_flags
 from .realcam import traction_args
 
@@ -190,7 +189,7 @@ def family_real_cam(scene, cp, model) -> RealCam:
     femcam.fe.choice.RealCam
         The real cam on that model.
     """
-    tip = cp.Rr if isinstance(scene.follower, KnifeEdgeFollower) else None
+    tip = cp.Rr if scene.follower.needs_tip else None
     return RealCam(program=scene.program, follower=scene.follower, model=model, tip_radius=tip,
                    face_length=None, swapped=False, E_star=cp.E_star)
 
@@ -226,7 +225,7 @@ def exact_solve(scene, cp, model, theta, F, *, Q, jump: bool, tol_pct: float):
     femcam.fe.choice.AngleResult or None
         The exact-gap answer, or None when the arc gap is within the tolerance.
     """
-    if isinstance(scene.follower, RollerFollower) and Q is None:  # [contact] sliding override
+    if scene.follower.translating_roller and Q is None:  # [contact] sliding override
         Q = cp.sliding * cp.mu * F
     res = solve_angle(family_real_cam(scene, cp, model), theta, F, mu=cp.mu, Q=Q,
                       curvature_jump=jump, tol_pct=tol_pct, force_exact=jump)

@@ -215,7 +215,7 @@ def choose_mesh(run, plan, estimate, cache) -> None:
         A flat-faced follower (binned models, no families), or a chosen mesh too large.
     """
     cp = contact_params(run.scene)
-    if cp.kind == "flat_faced":
+    if run.scene.follower.flat_face:
         raise _validate.fail("rtol", run.opts.rtol, "(relative p0 error)", "needs model families; a "
                              "flat-faced follower's binned real-cam models carry no estimate; give a_over_h")
     F, rho = run.rows0["Fc"], run.rows0["rho"]

@@ -334,7 +334,7 @@ def _plan(run: SweepRun) -> None:
         run.family = np.asarray(plan["family"], dtype=int)
         run.records = [FamilyRecord.from_dict(r) for r in plan["records"]]
         return
-    if cp.kind == "flat_faced":  # binned real-cam models (femcam.sweep.realrows), no families
+    if run.scene.follower.flat_face:  # binned real-cam models (femcam.sweep.realrows), no families
         return
     fit = run.contact & ~roller_does_not_fit(run.rows0["rho"], cp.Rr) & ~run.hertz
     if not run.preplanned:

@@ -230,7 +230,7 @@ def plot_cam(st, path, title: str = ""):
     p = st.profile
     fig, ax = plt.subplots(figsize=(6.6, 5.0))
     ax.plot(np.r_[p.x, p.x[:1]] * 1e3, np.r_[p.y, p.y[:1]] * 1e3, lw=1.6, label="cam surface")
-    if p.follower.kind == "roller":
+    if p.follower.translating_roller:
         ax.plot(p.pitch_x * 1e3, p.pitch_y * 1e3, "--", lw=0.8, label="pitch curve")
     t = np.linspace(0, 2 * np.pi, 361)
     Rb = p.follower.Rb * 1e3

@@ -230,8 +230,8 @@ def evolution_case(scene, theta, *, k: float | None = None) -> EvolutionCase:
         A follower other than a roller, or ``k < 0``.
     """
     _validate.record("scene", scene, "a femcam.scene.Scene", "follower", "analyse")
-    kind = type(scene.follower).__name__
-    if kind != "RollerFollower":
+    if not getattr(scene.follower, "translating_roller", False):
+        kind = type(scene.follower).__name__
         raise _validate.fail("follower type", getattr(scene.follower, "kind", kind), "",
                       "profile evolution is implemented for roller followers only (a radiused "
                       "knife-edge tip wears to a conformal flat that Hertz does not describe; a "

@@ -139,7 +139,7 @@ def slip_kwargs(scene, opts: dict | None = None) -> dict:
     if opts is None:
         opts = wear_options(scene)
     model = opts.get("roller_model", "srr")
-    if model == "inertia" and scene.mu == 0 and type(scene.follower).__name__ == "RollerFollower":
+    if model == "inertia" and scene.mu == 0 and getattr(scene.follower, "translating_roller", False):
         # J dOmega/dt = mu Fc Rr - T_drag sign(Omega): with mu = 0 any constant spin (T_drag = 0)
         # is a periodic answer, or the roller coasts to rest: the scene does not set the speed
         raise InputError("contact.friction = 0: the inertia-limited roller model ([wear] roller_model "

@@ -17,7 +17,7 @@ import numpy as np
 from .. import _validate
 from ..errors import InputError
 from ..hertz import LineContact
-from ..profile import KnifeEdgeFollower, OscillatingRollerFollower, RollerFollower
+from ..profile import RollerFollower
 from .coating import coating_wear
 from .map import WearMap, wear_map
 from .options import follower_tip_radius, slip_kwargs, wear_coefficient_info, wear_options
@@ -44,7 +44,7 @@ def tip_scene(scene, tip_radius: float | None):
     InputError
         A tip radius for a follower that is not a knife edge, or none for a knife edge.
     """
-    if not isinstance(scene.follower, KnifeEdgeFollower):
+    if not scene.follower.needs_tip:
         if tip_radius is not None:
             raise InputError(f"tip radius = {tip_radius * 1e3:g} mm: applies to knife-edge followers only "
                              f"(this scene's follower is a {scene.follower.kind} follower)")
@@ -75,7 +75,7 @@ def scene_tip_radius(scene, tip_radius: float | None = None) -> float | None:
     """
     if tip_radius is None:
         return follower_tip_radius(scene)
-    if isinstance(scene.follower, KnifeEdgeFollower):
+    if scene.follower.needs_tip:
         return _validate.positive("tip radius", tip_radius, "m")
     return tip_radius
 
@@ -116,8 +116,7 @@ def scene_wear(scene, theta, *, cycles: float = 1e6, tip_radius: float | None = 
         table, pressure = fe, "fe"
     else:
         # a roller, the tip's roller, or the roller or pad on an arm: the follower circle's radius
-        circle = isinstance(sc.follower, RollerFollower | OscillatingRollerFollower)
-        R2 = sc.follower.Rr if circle else math.inf
+        R2 = sc.follower.Rr if sc.follower.draws_circle else math.inf
         hc = LineContact(F=Fc, length=sc.length, R1=st.rho, R2=R2, cam=sc.cam, roller=sc.roller)
         table, pressure = {"theta": theta, "a": hc.a, "p0": hc.p0, "Fc": Fc}, "hertz"
     slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **slip_kwargs(scene, opts),

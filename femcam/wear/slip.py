@@ -607,6 +607,12 @@ def radiused_tip(theta, s, s1, s2, *, Rb, r_tip, omega, e=0.0) -> SlipResult:
 ROLLER_MODELS = ("srr", "inertia")
 
 
+def _says(follower, flag: str) -> bool:
+    """A flag of the follower protocol (:class:`femcam.profile.geometry.FollowerBehaviour`);
+    False for an object that is not a follower."""
+    return bool(getattr(follower, flag, False))
+
+
 def follower_slip(follower, theta, s, s1, s2, *, omega, Fc=None, roller_model: str = "srr",
                   srr: float = 0.02, mu: float = 0.1, J: float | None = None,
                   T_drag: float = 0.0, tip_radius: float | None = None) -> SlipResult:
@@ -664,26 +670,26 @@ def follower_slip(follower, theta, s, s1, s2, *, omega, Fc=None, roller_model: s
     mu = _validate.nonnegative("mu", mu, "")
     kind = type(follower).__name__
     e = float(getattr(follower, "e", 0.0))
-    if kind == "KnifeEdgeFollower":
+    if _says(follower, "needs_tip"):
         if tip_radius is not None:
             return radiused_tip(theta, s, s1, s2, Rb=follower.Rb, r_tip=tip_radius, omega=omega, e=e)
         return knife_edge(theta, s, s1, Rb=follower.Rb, omega=omega, e=e)
     if tip_radius is not None:
         raise _validate.fail("tip_radius", tip_radius, "m",
                              f"applies to knife-edge followers only (got a {kind})")
-    if kind == "FlatFacedFollower":
+    if _says(follower, "flat_face"):
         r = flat_faced(theta, s, s1, s2, Rb=follower.Rb, omega=omega)
         return dataclasses.replace(r, follower_origin=r.follower_origin - e)
-    if kind == "OscillatingPadFollower":
+    if _says(follower, "oscillating") and not _says(follower, "rolls"):  # the pad on an arm
         return oscillating_pad(theta, s, s1, s2, follower=follower, omega=omega)
-    if kind == "OscillatingRollerFollower":
+    if _says(follower, "oscillating"):  # the roller on an arm
         if roller_model != "srr":
             raise _validate.fail("roller_model", roller_model, "", "an oscillating roller has the "
                                  "slide-to-roll ratio model only ('srr'; srr = 0: pure rolling)")
         L = follower.L  # a scene's s is the roller centre's arc travel L psi (m)
         return oscillating_roller_srr(theta, np.asarray(s, float) / L, np.asarray(s1, float) / L,
                                       np.asarray(s2, float) / L, follower=follower, omega=omega, srr=srr)
-    if kind != "RollerFollower":
+    if not _says(follower, "translating_roller"):
         raise _validate.fail("follower", kind, "",
                       "must be a RollerFollower, KnifeEdgeFollower, FlatFacedFollower, "
                       "OscillatingRollerFollower or OscillatingPadFollower")
