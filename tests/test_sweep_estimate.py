@@ -137,6 +137,24 @@ def test_row_estimate_scales_with_the_rows_own_a_over_h():
     assert own["p0"] == pytest.approx(1e-3) and own["tau1"] == pytest.approx(4e-3)
 
 
+def test_family_need_meets_the_target_on_the_family_s_smallest_row():
+    """rtol per family: n_f = n0 (e0 (a_ref / a_min)^p / target)^(1/p), rounded up to even >= 6,
+    written out here; a family of larger rows (a_min = a_ref) needs fewer elements."""
+    from femcam.sweep.estimate import RATES, FamilyEstimate
+    from femcam.sweep.rtol import family_need
+    p = RATES["p0"]
+    est = FamilyEstimate(a_ref=1e-4, a_over_h=8.0, a_over_h_coarse=4.0,
+                         err={"p0": 1.6e-3, "a": 1e-3, "vm": 1e-3, "tau1": 1e-3})
+    a_rows = np.array([0.8e-4, 1.0e-4, 1.2e-4])
+    n = 8.0 * (1.6e-3 * (1e-4 / 0.8e-4) ** p / 5e-4) ** (1 / p)   # 24.3 -> 26
+    assert family_need(est, a_rows, 5e-4) == 2 * math.ceil(n / 2)
+    n_big = 8.0 * (1.6e-3 / 5e-4) ** (1 / p)   # 15.8 -> 16: the rows no smaller than a_ref
+    assert family_need(est, a_rows[1:], 5e-4) == 2 * math.ceil(n_big / 2)
+    assert family_need(est, a_rows, 1.0) == 6.0   # loose target: the validated floor
+    nan = FamilyEstimate(1e-4, 8.0, 4.0, {q: math.nan for q in ("p0", "a", "vm", "tau1")})
+    assert family_need(nan, a_rows, 5e-4) == 16.0   # a failed pilot: twice the pilot's a/h
+
+
 @pytest.mark.slow
 def test_rtol_half_percent_on_the_study_model():
     """--rtol 0.5 %: every arc-gap row's true p0 error vs Hertz <= 0.5 %, every row's estimate
@@ -171,6 +189,16 @@ def test_rtol_tenth_percent_on_the_study_model():
     assert arc.sum() >= 10 and true.max() <= 0.001
     assert np.nanmax(t["err_est_p0"][t["status"] == "ok"]) <= 0.001
     assert np.all(t["err_est_p0"][arc] >= BAND[0] * true)
+    # the mesh is each family's own: every row's a/h is its family's a/h scaled to the row
+    fams = {f["id"]: f for f in r.provenance["families"]}
+    choice = r.provenance["options"]["rtol_choice"]
+    assert sorted(choice["family_a_over_h"]) == sorted(f["a_over_h"] for f in fams.values())
+    assert choice["a_over_h"] == max(choice["family_a_over_h"])
+    assert len(choice["pilots"]) >= 2 and all(f["a_over_h"] % 2 == 0 for f in fams.values())
+    family_model = np.array(["rebuilt" not in str(x).split(";") for x in t["flags"]])
+    for i in np.flatnonzero(arc & family_model):
+        f = fams[int(t["family"][i])]
+        assert t["a_over_h_row"][i] == pytest.approx(f["a_over_h"] * t["a_hertz"][i] / f["a_ref"], rel=1e-9)
 
 
 @pytest.mark.slow

@@ -319,7 +319,10 @@ def estimate_families(records, cp: ContactParams, options: SweepOptions,
     out = {}
     for rec in records:
         reuse = rec.reuse_error if np.isfinite(rec.reuse_error) else math.nan
-        out[int(rec.id)] = family_estimate(cp, rec.rho_ref, rec.a_ref, options, cache, reuse)
+        opts = options.for_family(getattr(rec, "a_over_h", None))   # the family's own mesh
+        if opts.a_over_h < 4.0:
+            continue
+        out[int(rec.id)] = family_estimate(cp, rec.rho_ref, rec.a_ref, opts, cache, reuse)
     return out
 
 
@@ -369,6 +372,9 @@ def estimate_text(result) -> str:
     text = f"estimated discretisation error (largest over {n} FE rows): " + ", ".join(parts)
     choice = result.provenance.get("options", {}).get("rtol_choice")
     if choice:
-        text += (f"; rtol {100 * choice['rtol']:g} % on p0: a/h = {choice['a_over_h']:g}, reuse "
+        own = choice.get("family_a_over_h") or [choice["a_over_h"]]
+        mesh = (f"a/h = {min(own):g}" if min(own) == max(own) else
+                f"a/h = {min(own):g}-{max(own):g} over {len(own)} families")
+        text += (f"; rtol {100 * choice['rtol']:g} % on p0: {mesh}, reuse "
                  f"tolerance {100 * choice['tolerance']:g} %")
     return text
