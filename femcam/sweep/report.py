@@ -31,7 +31,8 @@ from ..assess.core import WORST as ASSESS_WORST
 from ..viz.html import html_table, page_html, png_data_uri
 from ..viz.sweep import PLOT_CAPTIONS, plot_caption
 from .result import SweepResult, families_text, hertz_check_text
-from .worst import angle_text, peak_rows
+from .estimate import estimate_text
+from .worst import angle_text, estimate_rows, peak_rows
 
 __all__ = ["report_html", "scene_inputs"]
 
@@ -220,6 +221,22 @@ def _validation(result: SweepResult, s: dict) -> str:
     return "".join(out)
 
 
+def _estimates(result: SweepResult) -> str:
+    rows = estimate_rows(result.table, result.provenance.get("options", {}))
+    if not rows:
+        return ("<p>No error estimate: the rows are Hertz's (method hertz), or no FE row was "
+                "solved on a model family.</p>")
+    out = ("<p>Estimated discretisation error of each FE headline quantity (two-level estimate "
+           "on the row's model family, docs/estimate.md): at the row of the quantity's worst "
+           "value and the largest over the FE rows; p0 includes the family's reuse error.</p>")
+    out += html_table(
+        ("quantity", "estimate at its worst row (%)", "largest estimate (%)", "FE rows", "requested (rtol)"),
+        [(_e(r["what"]), _num(r["at_worst_pct"], ".3g"), _num(r["max_pct"], ".3g"), str(r["n_rows"]),
+          "" if r["met"] is None else f"{r['rtol_pct']:g} %: {'met by every row' if r['met'] else 'NOT met'}")
+         for r in rows], num=(1, 2, 3), attrs="id=estimates")
+    return out + f"<p>{_e(estimate_text(result))}.</p>"
+
+
 def _plots(out: Path, plots) -> str:
     # the sweep's own in the order of their captions, then the others
     found = sorted(p.name for p in (out / "plots").glob("*.png")) if plots is None \
@@ -283,6 +300,7 @@ def report_html(result: SweepResult, out, plots=None) -> str:
     name, title = _title(result.provenance, text)
     sections = [("The run", _run(result, s)), ("Worst values and where they occur", _worst(result)),
                 ("Models used", _models(result, s)), ("Validation against Hertz", _validation(result, s)),
+                ("Error estimates", _estimates(result)),
                 ("Plots", _plots(out, plots)), ("The scene", _scene(text)), ("Files", _files(out))]
     body = _refused(ex) + title + _omits(ex) + "".join(
         f"<h2>{_e(h)}</h2>{c}" for h, c in sections)
