@@ -303,3 +303,7 @@ def test_error_estimates_per_headline_quantity_match_the_npz(tmp_path):
     p0 = np.where(ok, z["err_est_p0"], np.nan)
     assert np.nanmax(p0) <= 0.005
     assert got[what["p0_fe"]][3] == "0.5 %: met by every row" and "0.5 %: met by every row" in md
+    # the mesh rtol chose for each family: the last cell of its row in the families table
+    for f in SweepResult.load(out).families:
+        row = re.search(rf"<tr><td[^>]*>{f['id']}</td><td class=num>{f['n_angles']}</td>.*?</tr>", text)
+        assert row and row.group(0).endswith(f"<td class=num>{f['a_over_h']:g}</td></tr>"), f["id"]

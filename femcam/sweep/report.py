@@ -211,13 +211,14 @@ def _validation(result: SweepResult, s: dict) -> str:
     if fams:
         rows = [(str(f.get("id", "")), str(f.get("n_angles", "")),
                  _num(1e3 * float(f.get("rho_ref", math.nan))), _num(1e6 * float(f.get("a_ref", math.nan))),
-                 str(len(f.get("checks", ()))), _num(100 * float(f.get("reuse_error", math.nan)), ".3f"))
+                 str(len(f.get("checks", ()))), _num(100 * float(f.get("reuse_error", math.nan)), ".3f"),
+                 _num(float(f.get("a_over_h", math.nan)), "g"))   # rtol: each family's own mesh
                 for f in fams]
         out.append("<p>Model families (one FE model reused over neighbouring angles), each checked "
                    "against a model built for the checked angle"
                    + (f", tolerance {100 * float(tol):g} %" if tol is not None else "") + ":</p>")
         out.append(html_table(("family", "angles", "rho_ref (mm)", "a_ref (µm)", "checked angles",
-                           "reuse error (%)"), rows, num=(1, 2, 3, 4, 5)))
+                           "reuse error (%)", "a/h"), rows, num=(1, 2, 3, 4, 5, 6)))
     return "".join(out)
 
 
