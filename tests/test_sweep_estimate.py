@@ -319,3 +319,30 @@ def test_cli_rtol_writes_the_estimate_columns(tmp_path, capsys):
         assert np.all(np.isfinite(fe[c])), c
     assert fe["err_est_p0_pct"].max() <= 0.5
     assert "rtol" in (out / "report.md").read_text()
+
+
+def test_pilot_is_solved_at_the_curvature_extremes_and_interpolated_between(monkeypatch):
+    """rtol per family: the pilot p0 estimate is solved on the planned families with the smallest
+    and largest Rr/rho and linear in Rr/rho between them (written out here); each family then
+    needs its own a/h: a family with a larger pilot error gets a finer mesh."""
+    import importlib
+    rt = importlib.import_module("femcam.sweep.rtol")
+    from femcam.sweep.estimate import FamilyEstimate
+    cp = contact_params(load_scene(STUDY))
+    err = {0.2: 1e-3, 1.0: 4e-3}            # Rr/rho -> pilot p0 error of the solved families
+    calls = []
+
+    def fake(cp_, rho_ref, a_ref, options, cache=None, reuse=0.0):
+        calls.append((cp.Rr / rho_ref, options.a_over_h))
+        return FamilyEstimate(a_ref, options.a_over_h, options.a_over_h / 2,
+                              {"p0": err[round(cp.Rr / rho_ref, 6)], "a": 0.0, "vm": 0.0, "tau1": 0.0})
+
+    monkeypatch.setattr(rt, "family_estimate", fake)
+    refs = {0: (cp.Rr / 0.2, 1e-4), 1: (cp.Rr / 0.6, 1e-4), 2: (cp.Rr / 1.0, 1e-4)}
+    est = rt._pilot_estimates(cp, refs, SweepOptions(), None)
+    assert sorted(round(k, 6) for k, _ in calls) == [0.2, 1.0] and {n for _, n in calls} == {8.0}
+    assert est[1].err["p0"] == pytest.approx(1e-3 + (0.6 - 0.2) / (1.0 - 0.2) * 3e-3)
+    a = np.array([1e-4])
+    need = [rt.family_need(est[f], a, 5e-4) for f in (0, 1, 2)]
+    assert need == sorted(need) and need[0] < need[2]
+    assert need[2] == 2 * math.ceil(8.0 * (4e-3 / 5e-4) ** (1 / 1.7) / 2)
