@@ -312,17 +312,78 @@ class ArmDynamics:
             object.__setattr__(self, name, _validate.nonnegative(name, getattr(self, name), unit))
 
 
-def arm_contact_force(dyn: ArmDynamics, theta, psi, psi_dot, psi_ddot, L, phi) -> LoadResult:
-    r"""Normal contact force on an oscillating roller arm from the moment balance about the pivot.
+def arm_lever(L, phi, *, mu=0.0, friction_lever=0.0, theta=0.0) -> np.ndarray:
+    r"""Moment about the pivot of a unit normal contact force with its friction (m).
 
-    .. math:: F_c\, L \cos\varphi = I \ddot\psi + c_t \dot\psi + k_t \psi + M_{pl}
+    .. math:: D = L\cos\varphi + \mu\, s_f d_t
 
-    The contact force acts along the cam normal through the roller centre; its moment about the
-    pivot in the sense of ``psi`` is ``Fc L cos(phi)`` (virtual work: the roller centre moves
-    ``L dpsi`` along ``u``, and ``u . n = cos phi``; Norton, *Cam Design and Manufacturing
-    Handbook* (2009) ch. 8). ``F_axial`` etc. of the result are the moments divided by ``L``
-    (the force at the roller centre along its path, N), so ``Fc = F_axial / cos(phi)`` as for
-    the translating follower. Lift-off: ``Fc <= 0``.
+    ``s_f d_t`` is the follower's signed friction lever
+    (:meth:`femcam.profile.OscillatingPadFollower.friction_lever`; 0 for a roller, whose
+    rolling traction is left out), so the moment balance reads ``Fc D = I psi'' + c psi' +
+    k psi + M_pl``. Where ``D <= 0`` the friction moment beats the normal force's: no contact
+    force can drive the arm (self-locking), and the geometry is refused.
+
+    Parameters
+    ----------
+    L : float
+        Arm length, pivot to roller or pad centre [m], ``> 0``.
+    phi : float or ndarray
+        Pressure angle [rad], ``|phi| < 90 deg``.
+    mu : float, optional
+        Friction coefficient [-], ``>= 0`` (scene key ``[contact] friction``). Default 0.
+    friction_lever : float or ndarray, optional
+        ``s_f d_t`` [m], signed. Default 0.
+    theta : float or ndarray, optional
+        Cam angle [rad], only to name the self-locking angle in the message. Default 0.
+
+    Returns
+    -------
+    ndarray
+        ``D`` [m], ``> 0``, the broadcast shape.
+
+    Raises
+    ------
+    InputError
+        Non-finite input, ``L <= 0``, ``mu < 0``, or ``D <= 0`` (self-locking; the message names
+        ``mu``, the scene key ``[contact] friction``, the angle and the levers).
+
+    >>> float(arm_lever(0.04, 0.0, mu=0.1, friction_lever=-0.02))   # 0.04 - 0.1 * 0.02
+    0.038
+    """
+    L = _validate.positive("L", L, "m")
+    mu = _validate.nonnegative("mu", mu, "")
+    arrs = [_validate.finite_array(n, x, u) for n, x, u in (
+        ("phi", phi, "rad"), ("friction_lever", friction_lever, "m"), ("theta", theta, "rad"))]
+    try:
+        phi, lev, theta = (np.array(x, float) for x in np.broadcast_arrays(*arrs))
+    except ValueError:
+        raise InputError("phi, friction_lever, theta: shapes must broadcast together") from None
+    D = L * np.cos(phi) + mu * lev
+    if np.any(D <= 0.0):
+        i = int(np.argmin(D))
+        raise _validate.fail(
+            "mu", mu, "(dimensionless)", "self-locking arm (scene key [contact] friction) at theta = "
+            f"{math.degrees(float(theta.flat[i])):.2f} deg: the friction moment per N of Fc, mu * "
+            f"friction_lever (s_f d_t) = {mu:g} * {float(lev.flat[i]) * 1e3:.4g} mm, cancels the normal "
+            f"force's L cos(phi) = {L * math.cos(float(phi.flat[i])) * 1e3:.4g} mm, so no contact force "
+            "can drive the arm; lower the friction coefficient or change the pivot, arm length or pad radius")
+    return D
+
+
+def arm_contact_force(dyn: ArmDynamics, theta, psi, psi_dot, psi_ddot, L, phi, *, mu=0.0,
+                      friction_lever=0.0) -> LoadResult:
+    r"""Normal contact force on an oscillating arm from the moment balance about the pivot.
+
+    .. math:: F_c\,\left(L \cos\varphi + \mu\,s_f d_t\right) = I \ddot\psi + c_t \dot\psi + k_t \psi + M_{pl}
+
+    The contact force acts along the cam normal through the roller (or pad) centre; its moment
+    about the pivot in the sense of ``psi`` is ``Fc L cos(phi)`` (virtual work: the roller centre
+    moves ``L dpsi`` along ``u``, and ``u . n = cos phi``; Norton, *Cam Design and Manufacturing
+    Handbook* (2009) ch. 8). A sliding pad adds the friction force's moment ``mu Fc s_f d_t``
+    (:func:`arm_lever`; ``friction_lever = s_f d_t`` from the follower's ``friction_lever``; 0,
+    the default, is the frictionless balance). ``F_axial`` etc. of the result are the moments
+    divided by ``L`` (the force at the roller centre along its path, N), so
+    ``Fc = F_axial L / D``. Lift-off: ``Fc <= 0`` (``D > 0``, so where the moment is).
 
     Parameters
     ----------
@@ -336,6 +397,10 @@ def arm_contact_force(dyn: ArmDynamics, theta, psi, psi_dot, psi_ddot, L, phi) -
         Arm length, pivot to roller centre [m], > 0.
     phi : float or ndarray
         Pressure angle [rad], ``|phi| < 90 deg``.
+    mu : float, optional
+        Friction coefficient [-], ``>= 0``. Default 0.
+    friction_lever : float or ndarray, optional
+        Signed friction lever ``s_f d_t`` [m]. Default 0.
 
     Returns
     -------
@@ -345,7 +410,8 @@ def arm_contact_force(dyn: ArmDynamics, theta, psi, psi_dot, psi_ddot, L, phi) -
     Raises
     ------
     InputError
-        Non-finite input, ``L <= 0`` or ``|phi| >= 90 deg``.
+        Non-finite input, ``L <= 0``, ``|phi| >= 90 deg``, ``mu < 0`` or a self-locking arm
+        (:func:`arm_lever`).
 
     >>> r = arm_contact_force(ArmDynamics(I=1e-5, k_t=20.0, M_pl=5.0), 0.0, 0.1, 0.0, 1e4, 0.04, 0.0)
     >>> round(float(r.Fc), 9)    # (1e-5 * 1e4 + 20 * 0.1 + 5) / 0.04
@@ -361,10 +427,13 @@ def arm_contact_force(dyn: ArmDynamics, theta, psi, psi_dot, psi_ddot, L, phi) -
     if np.any(np.abs(phi) >= 0.5 * math.pi):
         bad = float(phi[np.abs(phi) >= 0.5 * math.pi].flat[0])
         raise _validate.fail("phi", bad, "rad", "pressure angle must satisfy |phi| < 90 deg")
+    arm_lever(L, phi, mu=mu, friction_lever=friction_lever, theta=theta)   # refuses self-locking
     F_in, F_d = dyn.I * psi_ddot / L, dyn.c_t * psi_dot / L
     F_s = (dyn.k_t * psi + dyn.M_pl) / L
     F_ax = F_in + F_d + F_s
-    Fc = F_ax / np.cos(phi)
+    # D / L written so that mu = 0 divides by cos(phi) itself (the frictionless Fc to the bit)
+    Fc = F_ax / (np.cos(phi) + float(mu) * np.asarray(friction_lever, float) / L)
+    theta = np.broadcast_to(theta, Fc.shape)
     lift = Fc <= 0.0
     return LoadResult(theta=theta, Fc=Fc, F_axial=F_ax, F_inertia=F_in, F_damping=F_d, F_spring=F_s,
                       liftoff=lift, liftoff_angles=theta[lift], liftoff_intervals=bool_intervals(theta, lift))

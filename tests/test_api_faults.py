@@ -220,7 +220,11 @@ CASES: dict[str, Case] = {
     "femcam.loads.arm_contact_force": Case(
         lazy(lambda: dict(dyn=_arm_dyn(), theta=TH, psi=0.1 + 0 * TH, psi_dot=0 * TH, psi_ddot=TH,
                           L=0.035, phi=0.1 + 0 * TH)),
-        {"theta": REAL, "psi": REAL, "psi_dot": REAL, "psi_ddot": REAL, "L": POS, "phi": REAL + (2.0,)}),
+        {"theta": REAL, "psi": REAL, "psi_dot": REAL, "psi_ddot": REAL, "L": POS, "phi": REAL + (2.0,),
+         "mu": NONNEG, "friction_lever": REAL}),
+    "femcam.loads.arm_lever": Case(
+        lazy(lambda: dict(L=0.035, phi=0.1 + 0 * TH, mu=0.1, friction_lever=0.01 + 0 * TH, theta=TH)),
+        {"L": POS, "phi": REAL, "mu": NONNEG, "friction_lever": REAL + (-1.0,), "theta": REAL}),
     # femcam.io
     "femcam.io.vtu_name": Case(kw(theta=0.5), {"theta": REAL}),
     "femcam.io.write_hertz_vtu": Case(
@@ -500,7 +504,7 @@ CASES: dict[str, Case] = {
                                    call=lambda *a, **k: list(_sweep_run_tasks(*a, **k))),
     "femcam.sweep": Case(lazy(lambda: dict(scene=scene(), angles=TH[:2], method="hertz")),
                                {"a_over_h": opt(POS), "rtol": opt(POS), "tolerance": opt(POS),
-                                "chunk_size": INT_POS,
+                                "chunk_size": opt(INT_POS),
                                 "angles": opt(REAL)}, slow=True),
     "femcam.sweep.verify_families": Case(
         lazy(lambda: dict(F=state().Fc, rho=state().rho, theta=TH, cp=cp(),

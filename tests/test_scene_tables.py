@@ -17,6 +17,8 @@ from femcam.cli import main
 from femcam.errors import InputError, SceneError
 from femcam.scene import load_scene
 from femcam.sweep.options import TOLERANCE_FLOOR, SweepOptions
+from femcam.sweep.settings import SETTINGS as LIBRARY_SETTINGS
+from femcam.sweep.settings import resolve_settings
 from femcam.wear.options import wear_options
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -106,7 +108,11 @@ def captured(monkeypatch):
                                   "vm_max", "tau1_max"), 0)
 
     def fake(scene, **kw):
-        calls.append(kw)
+        # the CLI hands its flags over as given; the library resolves them (scene, default)
+        st = resolve_settings(scene, {k: kw.get(k) for k in LIBRARY_SETTINGS})
+        calls.append({**kw, "angles": st.angles, "a_over_h": st.a_over_h, "tolerance": st.tolerance,
+                      "method": st.method, "chunk_size": st.chunk_size, "vtk_every": st.vtk_every,
+                      "plots": st.plots})
         return _R()
 
     monkeypatch.setattr(cli_sweep, "sweep", fake)

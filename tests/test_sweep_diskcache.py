@@ -22,9 +22,9 @@ import numpy as np
 import pytest
 
 import femcam
-from femcam.sweep import cache as cache_mod
 from femcam.cli import main
 from femcam.sweep import SweepOptions, default_cache, sweep
+from femcam.sweep import cache as cache_mod
 from femcam.sweep.cache import ModelCache
 from femcam.sweep.diskcache import DiskCache, content_key, default_dir
 from femcam.sweep.options import ContactParams, contact_params

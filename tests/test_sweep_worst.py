@@ -50,5 +50,6 @@ def test_summary_and_report_print_the_providers_worst_value(tmp_path, capsys, sc
         assert float(m.group(1)) == pytest.approx(value * unit, rel=5e-4)
         assert float(m.group(2)) == pytest.approx(theta_deg, abs=0.05)
     if col == "p_axial_peak_MPa":   # the 2D Hertz p0 at the same angle is quoted beside it
-        m = re.search(r"\(2D Hertz there ([\d.]+) MPa\): the 2D p0 above is not the peak", printed)
+        m = re.search(r"\(2D Hertz at the mean load there ([\d.]+) MPa\): the 2D p0 above is not "
+                      r"the peak", printed)
         assert m and float(m.group(1)) == pytest.approx(float(row["p0_hertz_MPa"]), abs=0.5)

@@ -23,10 +23,12 @@ from ..mesh import MeshOptions
 from ..mesh.estimate import check_contact_elements
 from ..scene import load_scene, study_problem
 from ..scene.schema import STUDY_RANGES, STUDY_UNITS, STUDY_WHOLE
-from ..sweep import parse_angles_deg, sweep
+from ..sweep import sweep
 from ..sweep.estimate import estimate_text
 from ..sweep.options import RTOL_RANGE, TOLERANCE_FLOOR
 from ..sweep.result import families_text, hertz_check_text
+from ..sweep.settings import SETTINGS as LIBRARY_SETTINGS
+from ..sweep.settings import resolve_settings
 from ..sweep.worst import assess_line
 from ._common import (
     add_law_override,
@@ -105,12 +107,15 @@ def register(subparsers) -> None:
     p.set_defaults(func=_run)
 
 
-#: flag dest -> (scene table, key, default): the scene value is used where no flag is given;
-#: the one place each default is written (the --help text is made from it)
-SETTINGS = {"angles_deg": ("sweep", "angles_deg", "0:360:1"), "mesh_size": ("fe", "a_over_h", 10.0),
-            "tolerance": ("fe", "tolerance", 2e-3), "chunk_size": ("sweep", "chunk_size", 30),
-            "vtk_every": ("sweep", "vtk_every", 10), "method": ("sweep", "method", "fe"),
-            "plots": ("sweep", "plots", True)}
+#: flag dest -> the library's parameter (:data:`femcam.sweep.settings.SETTINGS`: scene table,
+#: key and default, written once there; the --help text is made from it)
+_PARAMS = {"angles_deg": "angles", "mesh_size": "a_over_h", "tolerance": "tolerance",
+           "chunk_size": "chunk_size", "vtk_every": "vtk_every", "method": "method", "plots": "plots"}
+#: flag dest -> (scene table, key, default)
+SETTINGS = {dest: LIBRARY_SETTINGS[p] for dest, p in _PARAMS.items()}
+#: the flags' names in the library's messages about given values
+_NAMES = {"rtol": ("--rtol-pct", 100, "%"), "a_over_h": ("--mesh-size", 1, ""),
+          "angles_deg": ("--angles-deg", 1, "deg")}
 
 def _study(key: str, whole: bool = False, hi: float | None = None) -> Range:
     """The flag's range: the scene's (femcam.scene.schema.study_problem, one copy, with the
@@ -157,14 +162,16 @@ def _default_text(dest: str, note: str = "") -> str:
     return f"(default: [{table}] {key}, else {shown}" + (f"; {note}" if note else "") + ")"
 
 
-def resolve_settings(args, scene) -> list[str]:
-    """Fill the settings not given as flags: flag > scene [fe]/[sweep] table > default.
+def resolve_args(args, scene) -> list[str]:
+    """Fill the settings not given as flags, by the library's rule (flag > scene [fe]/[sweep]
+    table > default, :func:`femcam.sweep.settings.resolve_settings`, which ``sweep()`` applies
+    to the same flags again).
 
     Parameters
     ----------
     args : argparse.Namespace
-        The parsed flags; the missing :data:`SETTINGS` are set in place (scene units: deg,
-        a/h, relative tolerance, angles).
+        The parsed flags; the :data:`SETTINGS` and ``rtol_pct`` are set in place to the
+        resolved values (scene units: deg spec, a/h, relative tolerance, percent).
     scene : femcam.scene.Scene
         The scene (its ``fe`` and ``sweep`` tables).
 
@@ -172,58 +179,27 @@ def resolve_settings(args, scene) -> list[str]:
     -------
     list of str
         ``[table] key = value`` of each setting taken from the scene.
-    """
-    used = []
-    for dest, (table, key, default) in SETTINGS.items():
-        if getattr(args, dest) is not None:
-            continue
-        tab = getattr(scene, table, {}) or {}
-        if key in tab:
-            v = tab[key]
-            used.append(f"[{table}] {key} = " + (f'"{v}"' if isinstance(v, str) else
-                                                  str(v).lower() if isinstance(v, bool) else f"{v:g}"))
-        setattr(args, dest, tab.get(key, default))
-    return used
-
-
-def resolve_rtol(args, scene) -> list[str]:
-    """``--rtol-pct`` against ``--mesh-size`` and the scene's ``[fe] rtol_pct`` / ``a_over_h``.
-
-    Both flags: refused. One flag: it wins over the scene's other key (``--mesh-size`` drops
-    ``[fe] rtol_pct``; ``--rtol-pct`` drops ``[fe] a_over_h``). Neither flag: ``[fe] rtol_pct``
-    is used, refused together with ``[fe] a_over_h``.
-
-    Parameters
-    ----------
-    args : argparse.Namespace
-        The parsed flags; ``args.rtol_pct`` (percent, or None) is set in place.
-    scene : femcam.scene.Scene
-        The scene (its ``fe`` table).
-
-    Returns
-    -------
-    list of str
-        ``["[fe] rtol_pct = ..."]`` when the scene's value is used, else ``[]``.
 
     Raises
     ------
     InputError
-        Both flags, or both scene keys.
+        ``--rtol-pct`` with ``--mesh-size``, or ``[fe] rtol_pct`` with ``[fe] a_over_h``.
     """
-    fe = getattr(scene, "fe", {}) or {}
-    if args.rtol_pct is not None:
-        if args.mesh_size is not None:
-            raise _validate.fail("--rtol-pct", args.rtol_pct, "%", "cannot be given with --mesh-size: "
-                                 "--rtol-pct chooses the mesh; give one of them")
-        return []
-    if args.mesh_size is not None or "rtol_pct" not in fe:
-        return []
-    if "a_over_h" in fe:
-        raise _validate.fail("[fe] rtol_pct", fe["rtol_pct"], "%", "cannot be given with [fe] a_over_h "
-                             "in the same scene: rtol_pct chooses the mesh; give one of them (or "
-                             "override on the command line with --mesh-size or --rtol-pct)")
-    args.rtol_pct = float(fe["rtol_pct"])
-    return [f"[fe] rtol_pct = {args.rtol_pct:g}"]
+    st = resolve_settings(scene, _given(args), names=_NAMES)
+    args.angles_deg, args.method, args.tolerance = st.angles_deg, st.method, st.tolerance
+    args.mesh_size, args.chunk_size, args.vtk_every, args.plots = (st.a_over_h, st.chunk_size,
+                                                                   st.vtk_every, st.plots)
+    args.rtol_pct = None if st.rtol is None else 100.0 * st.rtol
+    args.angles = st.angles
+    return list(st.from_scene)
+
+
+def _given(args) -> dict:
+    """The settings as given on the command line (None where no flag was given)."""
+    given = {p: getattr(args, dest) for dest, p in _PARAMS.items()}
+    given["angles_deg"] = given.pop("angles")
+    given["rtol"] = None if args.rtol_pct is None else args.rtol_pct / 100.0
+    return given
 
 
 def useful_workers(requested, n_angles: int, chunk_size: int) -> tuple:
@@ -309,14 +285,10 @@ def _run(args) -> int:
     if args.law is not None:
         check_law("--law", args.law)
     scene = load_scene(args.scene)
-    rtol_note = resolve_rtol(args, scene)
-    tol_given = args.tolerance is not None or "tolerance" in (getattr(scene, "fe", {}) or {})
-    from_scene = resolve_settings(args, scene) + rtol_note
-    if rtol_note and args.method == "hertz":  # the scene's rtol is for its FE runs
-        args.rtol_pct, from_scene = None, from_scene[:-1]
+    given = _given(args)   # handed to sweep() as given: it resolves them as resolve_args did
+    from_scene = resolve_args(args, scene)
     _check_args(args)
-    angles = parse_angles_deg(args.angles_deg)
-    args.workers, note = useful_workers(args.workers, angles.size, args.chunk_size)
+    args.workers, note = useful_workers(args.workers, args.angles.size, args.chunk_size)
     refuse_non_empty(args.out, args.overwrite, resume=args.resume)  # the flags' words, not the API's
     if from_scene:
         print("femcam sweep: settings from the scene file: " + ", ".join(from_scene))
@@ -326,13 +298,11 @@ def _run(args) -> int:
         scene = scene.with_law(args.law)
     progress = {"auto": None, "on": True, "off": False}[args.progress]
     try:
-        res = sweep(scene, angles=angles, method=args.method,
-                    a_over_h=args.mesh_size if args.rtol_pct is None else None,
-                    rtol=None if args.rtol_pct is None else args.rtol_pct / 100.0,
-                    tolerance=args.tolerance if (tol_given or args.rtol_pct is None) else None,
-                    chunk_size=args.chunk_size, out=args.out,
+        res = sweep(scene, angles=None if given["angles_deg"] is None else args.angles,
+                    method=given["method"], a_over_h=given["a_over_h"], rtol=given["rtol"],
+                    tolerance=given["tolerance"], chunk_size=given["chunk_size"], out=args.out,
                     resume=args.resume, workers=args.workers, scheduler=args.scheduler,
-                    vtk_every=args.vtk_every, progress=progress, plots=args.plots,
+                    vtk_every=given["vtk_every"], progress=progress, plots=given["plots"],
                     command=_command_line(args), scene_path=args.scene,
                     chunk_delay_s=args.chunk_delay_s, overwrite=args.overwrite,
                     animate=args.animate, model_cache=args.model_cache, cache_dir=args.cache_dir)
@@ -358,6 +328,25 @@ def _refusal_code(res) -> int:
     return 0
 
 
+def _p0_fe_text(res, s: dict) -> str:
+    """``, p0 FE ... MPa (peak of the solved pressure, ...)`` where the FE (or a ring) answered."""
+    if not (res.method == "fe" or math.isfinite(s.get("p0_fe_max", math.nan))):   # a ring: any method
+        return ""
+    return (f", p0 FE {s['p0_fe_max'] / 1e6:.1f} MPa (peak of the solved pressure"
+            + (", 2D at the mean load Fc / length"
+               if "halfspace" in s.get("extras", {}).get("providers", ()) else "")
+            + (", coated model" if s.get("n_coated") else "") + ")")
+
+
+def _print_families(s: dict, o: dict) -> None:
+    """The model families' line (reuse error, workers) and the model cache's line."""
+    print(f"  {families_text(s['n_families'], s['reuse_error_max'], s['n_binned'])} "
+          f"(tolerance {100 * o['tolerance']:g} %); workers "
+          f"{o.get('workers')}" + (f" ({o['workers_reason']})" if o.get("workers_reason") else ""))
+    if o.get("model_cache"):
+        print(f"  {o['model_cache']['line']}")
+
+
 def _print_summary(res) -> None:
     """The sweep's summary on stdout (warnings on stderr): counts, models, the 2D headline and
     one line per extra provider's worst values (:mod:`femcam.sweep.worst`)."""
@@ -371,17 +360,9 @@ def _print_summary(res) -> None:
               f"{o.get('n_curvature_jump', 0)}, edge contacts {o.get('n_edge_contact', 0)}; traction: "
               f"{o.get('traction')}")
     if res.method != "hertz":
-        print(f"  {families_text(s['n_families'], s['reuse_error_max'], s['n_binned'])} "
-              f"(tolerance {100 * o['tolerance']:g} %); workers "
-              f"{o.get('workers')}" + (f" ({o['workers_reason']})" if o.get("workers_reason") else ""))
-        if o.get("model_cache"):
-            print(f"  {o['model_cache']['line']}")
+        _print_families(s, o)
     print(f"  peak Fc {s['Fc_max']:.1f} N, p0 Hertz {s['p0_hertz_max'] / 1e6:.1f} MPa"
-          + (f", p0 FE {s['p0_fe_max'] / 1e6:.1f} MPa (peak of the solved pressure"
-             + (", 2D at the mean load Fc / length"
-                if "halfspace" in s.get("extras", {}).get("providers", ()) else "")
-             + (", coated model" if s.get("n_coated") else "") + ")"
-             if res.method == "fe" or math.isfinite(s.get("p0_fe_max", math.nan)) else "")   # a ring: any method
+          + _p0_fe_text(res, s)
           + f", von Mises {s['vm_max'] / 1e6:.1f} MPa, tau1 {s['tau1_max'] / 1e6:.1f} MPa")
     if res.method == "fe":
         print(f"  p0 FE vs Hertz: {hertz_check_text(s)}")

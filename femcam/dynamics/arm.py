@@ -18,6 +18,12 @@ holds ``s = L psi`` (m), so :func:`femcam.dynamics.periodic_response` and
 :func:`femcam.dynamics.jump_speed` run on the referred train unchanged. Damping ratios are the
 same in both coordinates (``c / (2 sqrt(k m))`` scales by ``L^-2 / L^-2``).
 
+A sliding pad's friction force also has a moment about the pivot: the train's contact moment
+``M_c = F_axial L`` then gives ``Fc = M_c / (L cos phi + s_f mu d_t)``
+(:func:`femcam.loads.arm_lever`; :meth:`femcam.scene.Scene.analyse` applies it). The lever
+``D`` is positive (a self-locking arm is refused), so the sign of ``Fc``, lift-off and the jump
+speed are the train's.
+
 The brief's equivalent mass ``I / (L cos phi)^2`` is the inertia referred along the contact
 *normal*; along the roller *path*, where the train acts, it is ``I / L^2`` exactly and the
 ``cos phi`` enters once, in the normal force.

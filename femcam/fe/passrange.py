@@ -9,7 +9,8 @@ rolling-contact fatigue (Johnson 1985 §9.2):
 (0.5 p0 at z = 0.5 a for a Hertz contact, frictionless or sliding up to mu ~ 0.5:
 :func:`femcam.hertz.max_shear_range`). :func:`pass_grid` builds, once per model, the rows of
 equal depth through a body's stress window and the sparse interpolation of the window's nodal
-field onto them; :func:`pass_shear_range` takes the range on those rows per load case
+field onto them; :func:`grid_shear_range` (the same as :func:`pass_shear_range` on the full grid) takes the
+range on those rows per load case
 (:class:`ShearRange` in a :class:`femcam.fe.ContactResult`).
 """
 
@@ -67,6 +68,8 @@ def pass_grid(body: Body, nodes: np.ndarray, x: np.ndarray, z: np.ndarray, surfa
     (twice that spacing) below the surface, where the contact-edge error of the surface nodes
     has faded. Points in elements not wholly inside the window are left out (``ok`` False).
 
+    The per-solve cost is one sparse product and a segmented maximum (:func:`grid_shear_range`).
+
     Parameters
     ----------
     body : Body
@@ -80,8 +83,9 @@ def pass_grid(body: Body, nodes: np.ndarray, x: np.ndarray, z: np.ndarray, surfa
 
     Returns
     -------
-    P : scipy.sparse.csr_matrix, shape (n_z * n_x, n_eval)
-        Interpolation weights [-] (rows in row-major order of ``(zs, xs)``).
+    P : scipy.sparse.csr_matrix, shape (n_ok, n_eval)
+        Interpolation weights [-] at the grid points where ``ok`` (rows in row-major order of
+        ``(zs, xs)``, the points outside the window left out: ``ok.sum()`` rows).
     xs : ndarray of float, shape (n_x,)
         Abscissae of the grid [m].
     zs : ndarray of float, shape (n_z,)
@@ -132,8 +136,9 @@ def pass_grid(body: Body, nodes: np.ndarray, x: np.ndarray, z: np.ndarray, surfa
     elem = body.basis.elem.elem
     nloc = sd.shape[0]
     w = np.stack([elem.lbasis(ref, j)[0] for j in range(nloc)])
-    P = sp.csr_matrix((w.ravel(), (np.tile(g, nloc), pos[sd[:, e]].ravel())),
-                      shape=(nz * nx, nodes.size))
+    # g is sorted and unique: row r of P is the grid point g[r] (only the points inside)
+    P = sp.csr_matrix((w.ravel(), (np.tile(np.arange(g.size), nloc), pos[sd[:, e]].ravel())),
+                      shape=(g.size, nodes.size))
     ok = np.zeros(nz * nx, dtype=bool)
     ok[g] = True
     return P, xs, zs, ok.reshape(nz, nx)
@@ -181,4 +186,55 @@ def pass_shear_range(txz, xs, zs, ok) -> dict:
     pad = np.pad(ok[k], 1)                                    # neighbours in x (False off the grid)
     inside = bool(k < rows[-1] and pad[j_hi] and pad[j_hi + 2] and pad[j_lo] and pad[j_lo + 2])
     return {"value": float(rng.max()), "z": float(zs[k]), "x_max": float(xs[j_hi]),
+            "x_min": float(xs[j_lo]), "inside": inside}
+
+
+def grid_shear_range(v, xs, zs, ok) -> dict:
+    r""":func:`pass_shear_range` of the values at the grid points where ``ok`` only (the rows of
+    :func:`pass_grid`'s ``P``): the same result, by a segmented maximum and minimum per row
+    (``np.maximum.reduceat``) instead of two full masked grids (~5x faster per solve).
+
+    Parameters
+    ----------
+    v : ndarray of float, shape (n_ok,)
+        ``txz`` at the points where ``ok``, in row-major order of ``(zs, xs)`` [Pa].
+    xs : ndarray of float, shape (n_x,)
+        Abscissae [m].
+    zs : ndarray of float, shape (n_z,)
+        Depths of the rows [m].
+    ok : ndarray of bool, shape (n_z, n_x)
+        The grid points that count (``ok.sum() == v.size``).
+
+    Returns
+    -------
+    dict
+        As :func:`pass_shear_range`: ``value`` [Pa], ``z`` [m], ``x_max``, ``x_min`` [m],
+        ``inside`` (bool).
+
+    Examples
+    --------
+    >>> xs, zs = np.array([-1.0, 0.0, 1.0]), np.array([0.1, 0.5, 0.9])
+    >>> ok = np.array([[True, True, True], [True, True, True], [False, False, False]])
+    >>> r = grid_shear_range(np.array([1.0, 0.0, -1.0, 1.0, 2.0, -3.0]), xs, zs, ok)
+    >>> r["value"], r["z"], r["x_max"], r["x_min"], r["inside"]
+    (5.0, 0.5, 0.0, 1.0, False)
+    """
+    counts = ok.sum(axis=1)
+    rows = np.flatnonzero(counts)
+    if rows.size == 0:
+        return {"value": 0.0, "z": np.nan, "x_max": np.nan, "x_min": np.nan, "inside": False}
+    starts = (np.cumsum(counts) - counts)[rows]
+    rng = np.maximum.reduceat(v, starts) - np.minimum.reduceat(v, starts)
+    i = int(np.argmax(rng))
+    k = int(rows[i])
+    seg = v[starts[i]:starts[i] + counts[k]]
+    cols = np.flatnonzero(ok[k])
+    j_hi, j_lo = int(cols[np.argmax(seg)]), int(cols[np.argmin(seg)])
+    row, n = ok[k], ok.shape[1]
+
+    def flanked(j):                                           # both neighbours in x are points
+        return 0 < j < n - 1 and bool(row[j - 1]) and bool(row[j + 1])
+
+    inside = bool(k < rows[-1] and flanked(j_hi) and flanked(j_lo))
+    return {"value": float(rng[i]), "z": float(zs[k]), "x_max": float(xs[j_hi]),
             "x_min": float(xs[j_lo]), "inside": inside}

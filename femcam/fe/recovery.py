@@ -56,8 +56,8 @@ class EvalSet:
     pass_P, pass_x, pass_z, pass_ok : optional
         The rows of equal depth for the range of ``txz`` over one pass
         (:func:`femcam.fe.passrange.pass_grid`, attached by the model build; None: not computed):
-        interpolation (n_z n_x, n_eval) [-], abscissae (n_x,) [m], depths (n_z,) [m], and the
-        grid points inside the window (n_z, n_x).
+        interpolation (n_ok, n_eval) [-] at the grid points inside the window, abscissae
+        (n_x,) [m], depths (n_z,) [m], and the grid points inside the window (n_z, n_x).
     """
 
     body: str

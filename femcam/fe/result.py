@@ -18,7 +18,7 @@ import numpy as np
 
 from .. import _validate
 from .._repr import compact_repr
-from .passrange import ShearRange, pass_shear_range
+from .passrange import ShearRange, grid_shear_range
 from .recovery import derived
 
 if TYPE_CHECKING:
@@ -378,7 +378,6 @@ def window_extrema(name: str, ev, sx, sz, txz, sy) -> tuple[dict, SurfaceStress]
     if ev.pass_P is None:                                   # no rows of equal depth: not computed
         m["txz_range"] = ShearRange(np.nan, np.nan, np.nan, np.nan, name, False)
     else:
-        grid = np.where(ev.pass_ok, (ev.pass_P @ txz).reshape(ev.pass_ok.shape), np.nan)
-        m["txz_range"] = ShearRange(**pass_shear_range(grid, ev.pass_x, ev.pass_z, ev.pass_ok),
-                                    body=name)
+        m["txz_range"] = ShearRange(**grid_shear_range(ev.pass_P @ txz, ev.pass_x, ev.pass_z,
+                                                       ev.pass_ok), body=name)
     return m, SurfaceStress(x=ev.x[k], sx=sx[k], sz=sz[k], txz=txz[k], sy=sy[k], body=name)

@@ -25,6 +25,9 @@ from .options import BodyMesh, MeshOptions
 #: largest in-plane / through-thickness element size ratio in the coating band's fine zone
 COAT_MAX_ASPECT = 40.0
 
+#: largest a_over_h the scene and --mesh-size accept (femcam.scene.ranges)
+A_OVER_H_MAX = 400.0
+
 #: growth ratio of the element size along the side strips of the band
 _SIDE_RATIO = 1.15
 
@@ -40,7 +43,9 @@ def _layers(lay: BodyLayout, opts: MeshOptions) -> int:
                              f"is too thin for the mesh: {n} layers of {t / n * 1e6:.3g} um under a "
                              f"fine-zone spacing h = {h * 1e6:.3g} um give an element aspect ratio "
                              f"{h / (t / n):.0f} > {COAT_MAX_ASPECT:g}; use a_over_h >= {need:.0f} "
-                             "([fe] a_over_h or --mesh-size) or more coat_layers")
+                             "([fe] a_over_h or --mesh-size)"
+                             + (f", beyond its limit {A_OVER_H_MAX:g}: the contact FE cannot resolve "
+                                "a coating this thin" if need > A_OVER_H_MAX else ""))
     if t > 0.25 * lay.L:
         raise _validate.fail("coat_thickness ([materials.*.coating] thickness_um)", t * 1e6, "um",
                              f"must be <= L/4 = {0.25 * lay.L * 1e6:.4g} um (body {lay.name} size L)")

@@ -146,6 +146,25 @@ class OscillatingRollerFollower:
         return (f"Rb = {self.Rb * 1e3:g} mm, Rr = {self.Rr * 1e3:g} mm, pivot {self.a * 1e3:g} mm, arm "
                 f"{self.L * 1e3:g} mm, {side}, base-circle arm angle {math.degrees(self.beta0):.4g} deg")
 
+    def friction_lever(self, psi, psi1, psi2) -> np.ndarray:
+        """Lever of the contact friction about the pivot per unit ``mu``: 0 for a roller (m).
+
+        A roller rolls: the tangential force at its contact is the small traction its inertia
+        and bearing drag need, not ``mu Fc``, and the moment balance leaves it out. The sliding
+        pad (:class:`femcam.profile.OscillatingPadFollower`) overrides this.
+
+        Parameters
+        ----------
+        psi, psi1, psi2 : float or array_like
+            Arm angle [rad] and its theta-derivatives [rad/rad, rad/rad^2]; broadcast together.
+
+        Returns
+        -------
+        ndarray
+            Zeros of the broadcast shape [m].
+        """
+        return np.zeros(arm_geometry(self, psi, psi1, psi2).phi.shape)
+
     def cam_profile(self, theta, s, s1, s2, *, allow_undercut: bool = False) -> CamProfile:
         """:func:`oscillating_profile` at the roller-centre arc travel ``s = L psi`` (m) of a scene
         program; :func:`femcam.profile.cam_profile` hands an oscillating follower here, so the

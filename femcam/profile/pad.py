@@ -27,6 +27,19 @@ kappa) tau`` from the Frenet formulas of the pitch curve turned with the cam.) O
 circle ``v_s = omega Rb``; as ``L -> inf`` (``psi' -> 0``) ``v_s -> omega (|T| - Rr)``, the
 translating radiused tip of :func:`femcam.wear.slip.radiused_tip`.
 
+Friction moment about the pivot (full sliding, Coulomb ``mu``; docs/oscillating.md). The cam
+pushes the pad with ``Fc n`` and drags it with ``mu Fc sign(v_s) tau`` (friction on the pad
+opposes the pad's slip ``-v_s tau`` relative to the cam). A force ``F`` at the pad point ``C``
+does work ``F . dC/dpsi`` per unit arm lift, ``dC/dpsi = -sigma J (C - A)``, so with
+``tau . (-sigma J (C - A)) = -sigma n . (C - A)``:
+
+.. math:: F_c\left(L\cos\varphi + s_f\,\mu\,d_t\right) = I\ddot\psi + c\dot\psi + k\psi + M_{pl},
+          \qquad s_f = \sigma\,\mathrm{sign}(v_s),\quad d_t = n\cdot(A - C)
+
+``d_t`` is the signed distance of the pivot from the tangent line through the contact (> 0: the
+pivot on the pad's side of the line). :meth:`OscillatingPadFollower.friction_lever` returns
+``s_f d_t``.
+
 Symbols
 -------
 =========  ==================================================  =======  ===========================
@@ -41,6 +54,8 @@ u_pad      pad surface speed relative to the contact point      m/s      Johnson
 v_s        sliding speed u_cam - u_pad (signed along tau)       m/s
 U          entrainment (rolling) speed (u_cam + u_pad)/2        m/s      Dowson & Higginson
 xi_pad     contact position on the pad, Rr (angle of n - arm)   m
+d_t        signed distance pivot - tangent line, n . (A - C)    m        this module
+s_f        sign of the friction moment, sigma sign(v_s)          -        this module
 =========  ==================================================  =======  ===========================
 
 References
@@ -205,3 +220,32 @@ class OscillatingPadFollower(OscillatingRollerFollower):
         L = self.L
         return self.speeds(np.asarray(s, float) / L, np.asarray(s1, float) / L, np.asarray(s2, float) / L,
                            omega=omega)
+
+    def friction_lever(self, psi, psi1, psi2) -> np.ndarray:
+        r"""Signed lever of the friction force about the pivot per unit ``mu`` (m, module docstring).
+
+        .. math:: s_f\,d_t = \sigma\,\mathrm{sign}(v_s)\; n\cdot(A - C)
+
+        The moment of the friction force ``mu Fc`` on the pad about the pivot, in the sense of
+        ``psi``, is ``mu Fc s_f d_t``; :func:`femcam.loads.arm_contact_force` adds it to the
+        normal force's ``Fc L cos(phi)``. Where ``v_s = 0`` (no sliding) it is 0.
+
+        Parameters
+        ----------
+        psi, psi1, psi2 : float or array_like
+            Arm angle [rad] and its theta-derivatives [rad/rad, rad/rad^2]; broadcast together.
+
+        Returns
+        -------
+        ndarray
+            ``s_f d_t`` [m], the broadcast shape.
+
+        Examples
+        --------
+        >>> f = OscillatingPadFollower(Rb=0.018, Rr=0.012, a=0.045, L=0.036)
+        >>> round(float(f.friction_lever(0.0, 0.0, 0.0)), 12)   # base circle: a Bx / Rp - Rb
+        0.00915
+        """
+        g = self.speeds(psi, psi1, psi2, omega=1.0)   # v_s scales with omega: its sign does not
+        d_t = g.ty * (self.a - g.cx) + g.tx * g.cy   # n = (ty, -tx), A - C = (a - cx, -cy)
+        return self.sigma * np.sign(g.v_slide) * d_t

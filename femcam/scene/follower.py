@@ -9,12 +9,21 @@ from __future__ import annotations
 import dataclasses
 import math
 
+import numpy as np
+
 from ..errors import InputError
 from ..halfspace.crown import RollerProfile
 from ..kinematics import CamProgram
-from ..profile import DIRECTIONS, OscillatingPadFollower, OscillatingRollerFollower, make_follower
+from ..profile import (
+    DIRECTIONS,
+    OscillatingPadFollower,
+    OscillatingRollerFollower,
+    arm_geometry,
+    make_follower,
+)
 from .checker import _Checker, _fmt
 from .schema import _ARM, _CAM, _FINITE, _FINITE_SI, _FOLLOWER, _FOLLOWER_ONLY
+from .state import _dense_theta
 
 
 def is_oscillating(raw: dict) -> bool:
@@ -150,6 +159,42 @@ def arm_fold(ck: _Checker, program, follower) -> None:
                f"program): folds the arm past the line pivot-cam centre; must be < "
                f"{math.degrees(follower.psi_fold):.4g} deg (180 deg - the base-circle arm angle "
                f"{math.degrees(follower.beta0):.4g} deg)")
+
+
+def arm_self_locking(ck: _Checker, program, follower, mu) -> None:
+    """Refuse a friction coefficient that self-locks the arm somewhere on the cam.
+
+    The moment of a unit contact force about the pivot is ``D = L cos(phi) + mu s_f d_t``
+    (:func:`femcam.loads.arm_lever`); where ``D <= 0`` no contact force drives the arm. Checked
+    on the whole-cam grid of the undercut check (a sliding pad only; a roller's lever is 0).
+
+    Parameters
+    ----------
+    ck : _Checker
+        Collects the problem.
+    program : femcam.kinematics.CamProgram or None
+        The checked program (lifts in rad for an oscillating follower).
+    follower : object
+        The checked follower.
+    mu : float or None
+        The checked ``[contact] friction`` [-].
+    """
+    if not isinstance(follower, OscillatingRollerFollower) or program is None or not mu:
+        return
+    th = _dense_theta(program)
+    d = program.derivatives(th)
+    try:
+        lev = follower.friction_lever(d.s, d.s1, d.s2)
+        D = follower.L * np.cos(arm_geometry(follower, d.s, d.s1, d.s2).phi) + mu * lev
+    except InputError:  # a folded arm: reported by arm_fold
+        return
+    if np.any(D <= 0.0):
+        i = int(np.argmin(D))
+        ck.add("contact.friction", f"= {_fmt(mu)} (dimensionless): self-locks the arm at theta = "
+               f"{math.degrees(th[i]):.2f} deg: the friction moment mu s_f d_t = {mu * lev[i] * 1e3:.4g} mm "
+               f"per N of contact force cancels the normal force's L cos(phi) = "
+               f"{(D[i] - mu * lev[i]) * 1e3:.4g} mm, so the cam cannot drive the arm; lower the "
+               "friction or change pivot_distance_mm, arm_length_mm or pad_radius_mm")
 
 
 def _follower_only_keys(ck: _Checker, raw, ftype) -> bool:

@@ -15,7 +15,7 @@ from .checker import _Checker
 from .contact import _contact, _layers, _tribology
 from .cross import cross_key_problems
 from .dynamics import _dynamics
-from .follower import _finite_length, _follower, arm_fold, arm_program
+from .follower import _finite_length, _follower, arm_fold, arm_program, arm_self_locking
 from .materials import _materials
 from .program import _program
 from .schema import _OPERATING, _TABLES, _TOP
@@ -67,6 +67,7 @@ def load_scene(path) -> Scene:
     bodies = _check_bodies(ck, raw, fo, mats)
     layers = _layers(ck, raw)
     co = _contact(ck, raw)
+    arm_self_locking(ck, program, follower, co.get("friction"))
     study = _study(ck, raw)
     _scene_wear(ck, raw, mats)
     cross_key_problems(ck, raw)

@@ -13,14 +13,13 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 from .. import _validate
 from .._repr import compact_repr, span
 from ..dynamics import TrainModel, periodic_response
 from ..errors import ConvergenceError, InputError, UndercutError
 from ..kinematics import CamProgram, law
-from ..loads import ArmDynamics, FollowerDynamics, LoadResult, arm_contact_force, contact_force
+from ..loads import ArmDynamics, FollowerDynamics, LoadResult, arm_contact_force, arm_lever, contact_force
 from ..materials import Material
 from ..profile import CamProfile, bool_intervals, cam_profile
 
@@ -130,7 +129,8 @@ class Scene:
     length : float
         Axial contact length (face width / cam thickness, m).
     mu : float
-        Friction coefficient (dimensionless).
+        Friction coefficient (dimensionless); for a curved pad on an arm it also enters ``Fc``
+        (the friction moment about the pivot, :meth:`analyse`).
     plane : str
         ``"strain"`` or ``"stress"``.
     sliding : str or None
@@ -243,6 +243,8 @@ class Scene:
         i = int(np.argmax(f))
         lo, hi = dense[max(i - 1, 0)], dense[min(i + 1, dense.size - 1)]
         if hi > lo:  # |phi| is smooth inside a segment: the bounded maximum between neighbours
+            from scipy.optimize import minimize_scalar  # lazy: scipy.optimize, 0.3-0.5 s to import
+
             res = minimize_scalar(lambda t: -float(phi(np.array([t]))[0]), bounds=(lo, hi),
                                   method="bounded", options={"xatol": 1e-12})
             if -res.fun > f[i]:
@@ -308,6 +310,9 @@ class Scene:
         two_dof (an oscillating arm: its moment balance, or its train referred to the roller
         path): then it is the periodic contact force of the elastic train
         (:attr:`dynamic_response`, interpolated to ``theta``; free flight is ``liftoff``).
+        A sliding pad on an arm adds the friction force's moment about the pivot,
+        ``Fc (L cos phi + mu s_f d_t) = M`` (rigid or elastic arm; ``mu`` = :attr:`mu`, the
+        sign from the mechanism's sliding velocity, not the ``[contact] sliding`` override).
 
         Parameters
         ----------
@@ -342,14 +347,20 @@ class Scene:
             raise UndercutError(f"{self._dense_undercut[1]} (found by the dense check on "
                                 f"{UNDERCUT_CHECK_N} angles over one revolution and "
                                 f"{SEGMENT_CHECK_N} in each segment; the analysed angles miss it)")
+        if isinstance(self.dynamics, ArmDynamics):  # an arm: the pad's friction moment about the pivot
+            L = self.follower.L
+            lev = self.follower.friction_lever(d.s / L, d.s1 / L, d.s2 / L)
         if self.train is not None:  # the periodic train response at theta (an arm's: on its arc travel)
             res = self.dynamic_response
             if not res.converged:
                 raise ConvergenceError(f"[dynamics] model = {res.model!r} at {self.rpm:g} rpm: {res.message}")
             r = res.load_result(d.theta, p.phi)
+            if isinstance(self.dynamics, ArmDynamics) and self.mu > 0:  # Fc = M_c / D, D > 0: same lift-off
+                arm_lever(L, p.phi, mu=self.mu, friction_lever=lev, theta=d.theta)
+                r = dataclasses.replace(r, Fc=r.F_axial / (np.cos(p.phi) + self.mu * lev / L))
         elif isinstance(self.dynamics, ArmDynamics):  # oscillating arm: s, v, a are L psi and its rates
-            L = self.follower.L
-            r = arm_contact_force(self.dynamics, d.theta, d.s / L, v / L, a / L, L, p.phi)
+            r = arm_contact_force(self.dynamics, d.theta, d.s / L, v / L, a / L, L, p.phi, mu=self.mu,
+                                  friction_lever=lev)
         else:
             r = contact_force(self.dynamics, d.theta, d.s, v, a, p.phi)
         return SceneState(theta=np.asarray(d.theta, float), s=d.s, v=v, a=a, j=j, s1=d.s1, s2=d.s2,

@@ -149,6 +149,8 @@ class SweepRun:
         The ``rtol`` mesh choice (pilots, levels tried), recorded in the provenance.
     disk : femcam.sweep.diskcache.DiskCache, optional
         The persistent model cache of this call (``model_cache``, ``cache_dir``).
+    settings : femcam.sweep.settings.SweepSettings, optional
+        The resolved settings and the source of each (argument, scene, default).
     """
 
     scene: Scene
@@ -180,6 +182,7 @@ class SweepRun:
     preplanned: bool = False
     rtol_info: dict = field(default_factory=dict)
     disk: object = None
+    settings: object = None
 
 
 

@@ -432,15 +432,14 @@ def real_cam_summary(table, traction: Traction | None) -> dict:
     -------
     dict
         ``{"models": {model: count}, "n_curvature_jump", "n_edge_contact", "traction"}``
-        (``<model>+ring`` counted apart where the ring model answered).
+        (``<model>+coating``, ``<model>+ring`` counted apart where the coated or the ring model
+        answered).
     """
-    base = np.array([str(m).split("+")[0] for m in table["model"]], dtype=str)   # fe_arc+coating
-    ring = np.array([str(m).endswith("+ring") for m in table["model"]], dtype=bool)
-    models = {m: int(np.count_nonzero((base == m) & ~ring)) for m in MODELS}
-    for m in MODELS:   # rows the ring model answered (femcam.sweep.ringhead), where there are any
-        n = int(np.count_nonzero(ring & (base == m)))
-        if n:
-            models[f"{m}+ring"] = n
+    names = np.array([str(m) for m in table["model"]], dtype=str)
+    models = {m: int(np.count_nonzero(names == m)) for m in MODELS}
+    for v in sorted(set(names.tolist()) - set(MODELS)):   # fe_arc+coating, fe_exact+ring, ...
+        if "+" in v:   # the richer model that answered these rows, counted apart
+            models[v] = int(np.count_nonzero(names == v))
     return {"models": models, "n_curvature_jump": int(np.nansum(table["curvature_jump"] == 1)),
             "n_edge_contact": int(np.count_nonzero(table["status"] == "edge_contact")),
             "traction": traction.source if traction is not None else "none (method hertz)"}

@@ -31,15 +31,13 @@ from .parallel import AUTO_VTU_S, auto_workers, run_tasks
 from .pipeline import ChunkTask, contact_mask, run_chunk
 from .realcam import auto_hertz_rows, contact_scene, jump_angles, real_cam_summary, scene_traction
 from .result import SweepResult
-from .rtol import choose_mesh, rtol_settings
+from .rtol import choose_mesh
+from .settings import resolve_settings
 from .store import LOCK, STREAM_ANGLES, ChunkStore, DirLock, array_hash
 from .table import TableBuilder
 from .verify import FamilyRecord, verify_families
 from .wear import wear_setup
 
-DEFAULT_STEP_DEG = 1.0
-#: ``.vtu`` every k angles with ``out`` (API and CLI default)
-DEFAULT_VTK_EVERY = 10
 ANALYTIC_BLOCK = 20_000  # angles per Scene.analyse call in the analytic phase (memory)
 
 
@@ -64,35 +62,46 @@ def parse_angles_deg(spec: str) -> np.ndarray:
     return _validate.angles_deg("--angles-deg", spec)
 
 
-def sweep(scene, *, angles=None, method: str = "fe", a_over_h=None, tolerance=None,
-          rtol=None, chunk_size: int = 30, out=None, resume: bool = False,
+def sweep(scene, *, angles=None, method: str | None = None, a_over_h=None, tolerance=None,
+          rtol=None, chunk_size: int | None = None, out=None, resume: bool = False,
           workers: int | str = "auto", scheduler=None, client=None, vtk_every: int | None = None,
           progress: bool | None = None, plots: bool | None = None, command: str | None = None,
           scene_path=None, chunk_delay_s: float = 0.0, overwrite: bool = False,
           animate: bool = False, model_cache: bool = True, cache_dir=None) -> SweepResult:
     """Sweep a scene over cam angles: kinematics, loads, Hertz and FE contact at every angle.
 
+    A setting left at None takes the scene's ``[fe]`` / ``[sweep]`` value, else femcam's
+    default; a setting given overrides the scene, as a flag of ``femcam sweep`` does (one
+    resolution for both, :func:`femcam.sweep.settings.resolve_settings`: the two compute the
+    same rows). The settings and their sources are in ``provenance["options"]["settings"]``.
+
     Parameters
     ----------
     scene : femcam.scene.Scene or str or Path
         A scene, or the path of a scene TOML file.
     angles : array_like, optional
-        Cam angles (rad); default 0, 1, ..., 359 degrees.
-    method : str
-        ``"fe"`` (FE contact solve, default), ``"hertz"`` (analytic only, fast) or ``"auto"``
+        Cam angles (rad); default the scene's ``[sweep] angles_deg``, else 0, 1, ..., 359
+        degrees.
+    method : str, optional
+        ``"fe"`` (FE contact solve), ``"hertz"`` (analytic only, fast) or ``"auto"``
         (the cheapest of Hertz, FE arc gap, FE exact gap within ``tolerance`` per angle;
-        :mod:`femcam.sweep.realcam`).
+        :mod:`femcam.sweep.realcam`); default the scene's ``[sweep] method``, else ``"fe"``.
     a_over_h : float, optional
-        FE element size in the contact zone ``h = a / a_over_h`` (default 10; refused with rtol).
+        FE element size in the contact zone ``h = a / a_over_h`` (default the scene's ``[fe]
+        a_over_h``, else 10; refused with rtol).
     tolerance : float, optional
         Bound on the relative p0 difference between an angle solved with its family's model and
         with a model built fresh for it (the reuse error), >= 1e-4; default 2e-3, with ``rtol``
-        ``rtol / 2`` (at most); families split until it holds (:mod:`femcam.sweep.verify`).
+        ``rtol / 2`` (at most); the scene's ``[fe] tolerance`` when not given; families split
+        until it holds (:mod:`femcam.sweep.verify`).
     rtol : float, optional
         Bound on every FE row's estimated relative p0 error (2e-4 to 0.1): the sweep chooses
-        ``a_over_h`` and ``tolerance <= rtol / 2`` (:mod:`femcam.sweep.rtol`).
-    chunk_size : int
-        Angles per chunk (unit of parallel work and of the on-disk store).
+        ``a_over_h`` and ``tolerance <= rtol / 2`` (:mod:`femcam.sweep.rtol`); default the
+        scene's ``[fe] rtol_pct`` / 100 (dropped when ``a_over_h`` is given or the method is
+        ``"hertz"``), else none.
+    chunk_size : int, optional
+        Angles per chunk (unit of parallel work and of the on-disk store); default the scene's
+        ``[sweep] chunk_size``, else 30.
     out : str or Path, optional
         Output directory; ``None`` keeps everything in memory. Locked while the sweep runs (a
         second sweep into it is refused); a non-empty directory is refused unless ``resume``
@@ -107,13 +116,13 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h=None, tolerance=No
     scheduler, client : str or dask.distributed.Client, optional
         Dask scheduler address, or a ``Client``/``LocalCluster``.
     vtk_every : int, optional
-        With ``out``, write one ``.vtu`` every k angles and ``sweep.pvd`` (0 = none). Default:
-        the CLI's, :data:`DEFAULT_VTK_EVERY` (so ``sweep(..., out=DIR)`` writes what
-        ``femcam sweep --out DIR`` writes).
+        With ``out``, write one ``.vtu`` every k angles and ``sweep.pvd`` (0 = none); default
+        the scene's ``[sweep] vtk_every``, else 10.
     progress : bool, optional
         Stderr progress bar (default: only when stderr is a TTY).
     plots : bool, optional
-        With ``out``, write the PNG plots (:mod:`femcam.viz.sweep`); default True (as the CLI).
+        With ``out``, write the PNG plots (:mod:`femcam.viz.sweep`); default the scene's
+        ``[sweep] plots``, else True.
     command : str, optional
         Command line recorded in the provenance.
     scene_path : str or Path, optional
@@ -142,15 +151,16 @@ def sweep(scene, *, angles=None, method: str = "fe", a_over_h=None, tolerance=No
         On Ctrl-C (a ``KeyboardInterrupt`` saying what was saved and how to resume).
     """
     t_start = time.perf_counter()
-    run = _prepare(scene, angles, method, (a_over_h, rtol), tolerance, chunk_size, out, resume,
-                   workers, vtk_every, scene_path, chunk_delay_s)
+    given = dict(angles=angles, method=method, a_over_h=a_over_h, tolerance=tolerance, rtol=rtol,
+                 chunk_size=chunk_size, vtk_every=vtk_every, plots=plots)
+    run = _prepare(scene, given, out, resume, workers, scene_path, chunk_delay_s)
     run.overwrite = bool(overwrite)
     run.animate = bool(animate)
     run.disk = DiskCache(cache_dir, enabled=model_cache)
     if run.animate and not run.opts.vtk_every:
         raise _validate.fail("animate", animate, "", "needs the VTK series: an output directory "
                              "(out) and vtk_every > 0 (--vtk-every)")
-    plots = (run.out is not None) if plots is None else bool(plots)
+    plots = run.out is not None and run.settings.plots
     try:
         return _sweep(run, scheduler, client, progress, plots, command, t_start)
     except KeyboardInterrupt:
@@ -201,7 +211,8 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
                "n_angles": int(run.angles.size), "n_families": len(run.records)}
     if run.workers == "auto":
         options.update(workers_requested="auto", workers_reason=workers_note)
-    options.update(real_cam_summary(table, run.traction), rtol_choice=run.rtol_info or None)
+    options.update(real_cam_summary(table, run.traction), rtol_choice=run.rtol_info or None,
+                   settings=run.settings.to_dict())  # each setting's source (femcam.sweep.settings)
     fe = run.opts.method != "hertz"
     if fe:  # this process's builds and loads (a process pool's workers count their own)
         options["model_cache"] = usage(cache.stats, before, run.disk)
@@ -226,24 +237,18 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
     return result
 
 
-def _prepare(scene, angles, method, mesh, tolerance, chunk_size, out, resume, workers,
-             vtk_every, scene_path, chunk_delay_s) -> SweepRun:
-    """Check the inputs; load the scene file. ``mesh``: ``(a_over_h, rtol)``."""
-    a_over_h, tolerance, rtol = rtol_settings(*mesh, method, tolerance)
+def _prepare(scene, given, out, resume, workers, scene_path, chunk_delay_s) -> SweepRun:
+    """Load the scene file; resolve the settings (given > scene > default,
+    :func:`femcam.sweep.settings.resolve_settings`, as the CLI does); check the inputs."""
     if isinstance(scene, (str, Path)):
         scene_path = scene
         scene = load_scene(scene)
-    if angles is None:
-        angles = np.radians(np.arange(0.0, 360.0, DEFAULT_STEP_DEG))
-    angles = _validate.finite_array("angles", angles, "rad").ravel()
-    if angles.size == 0:
-        raise _validate.fail("angles", "[]", "rad", "must contain at least one angle")
+    st = resolve_settings(scene, given)
+    angles, a_over_h, tolerance, rtol = st.angles, st.a_over_h, st.tolerance, st.rtol
     workers = _validate.workers("workers", workers)
-    if vtk_every is None:
-        vtk_every = DEFAULT_VTK_EVERY
-    opts = SweepOptions(method=method, **({} if a_over_h is None else {"a_over_h": a_over_h}),
-                        tolerance=tolerance, chunk_size=chunk_size,
-                        vtk_every=vtk_every if out is not None else 0, rtol=rtol)
+    opts = SweepOptions(method=st.method, **({} if a_over_h is None else {"a_over_h": a_over_h}),
+                        tolerance=tolerance, chunk_size=st.chunk_size,
+                        vtk_every=st.vtk_every if out is not None else 0, rtol=rtol)
     if opts.method != "hertz":  # refused before any work: a mesh too large for time and memory
         check_contact_elements(MeshOptions(a_over_h=opts.a_over_h))
     if resume and out is None:
@@ -254,7 +259,7 @@ def _prepare(scene, angles, method, mesh, tolerance, chunk_size, out, resume, wo
     bounds = [(i, min(i + opts.chunk_size, n)) for i in range(0, n, opts.chunk_size)]
     return SweepRun(scene=scene, scene_path=scene_path, angles=angles, opts=opts, workers=workers,
                 out=Path(out) if out is not None else None, resume=bool(resume), bounds=bounds,
-                delay_s=delay, jump=jump)
+                delay_s=delay, jump=jump, settings=st)
 
 
 def _analytic(run: SweepRun) -> None:

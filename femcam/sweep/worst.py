@@ -134,12 +134,13 @@ def peak_rows(table, names=()) -> list[dict]:
 
 
 def _halfspace_tail(table, found) -> str:
-    """``" (2D Hertz there 1127 MPa): the 2D p0 above is not the peak"`` for the axial peak."""
+    """``" (2D Hertz at the mean load there 1127 MPa): the 2D p0 above is not the peak"`` for
+    the axial peak."""
     if "hs_p_axial_peak" not in found:
         return ""
     i = found["hs_p_axial_peak"][2]
     p_h = float(np.asarray(table["p0_hertz"], float)[i]) * 1e-6
-    return f" (2D Hertz there {p_h:.0f} MPa): the 2D p0 above is not the peak"
+    return f" (2D Hertz at the mean load there {p_h:.0f} MPa): the 2D p0 above is not the peak"
 
 
 def assess_line(extras: dict) -> str:
@@ -180,8 +181,8 @@ def worst_lines(names, table, extras: dict | None = None) -> list[str]:
     Returns
     -------
     list of str
-        E.g. ``"finite length: axial peak 2032 MPa at 72.0 deg (2D Hertz there 1127 MPa): the
-        2D p0 above is not the peak"``; providers without a finite value are left out.
+        E.g. ``"finite length: axial peak 2032 MPa at 72.0 deg (2D Hertz at the mean load there
+        1127 MPa): the 2D p0 above is not the peak"``; providers without a finite value are left out.
     """
     ok = np.asarray(table["status"]).astype(str) == "ok"
     extras = extras or {}

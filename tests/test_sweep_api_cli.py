@@ -1,0 +1,103 @@
+"""The library equals the CLI (issue 24 item 6): ``femcam.sweep(path, ...)`` and ``femcam sweep
+path`` resolve the scene's ``[fe]``/``[sweep]`` settings by one rule
+(:func:`femcam.sweep.settings.resolve_settings`: given > scene > default) and write the same rows.
+
+References: the expected settings are typed from the scene text written here and from the
+defaults documented in docs/sweep.md (a_over_h 10, tolerance 0.2 %, 30 angles a chunk); the two
+tables are compared cell by cell except the wall-clock columns (``femcam.sweep.table.WALL_CLOCK``).
+"""
+
+import csv
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import femcam
+from femcam.cli import main
+from femcam.errors import InputError
+from femcam.scene import load_scene
+from femcam.sweep.settings import resolve_settings
+from femcam.sweep.table import WALL_CLOCK
+
+STUDY = (Path(__file__).resolve().parents[1] / "examples" / "seed002_study_model.toml").read_text()
+
+HERTZ = ("[fe]\na_over_h = 12\ntolerance = 1e-3\n[sweep]\nmethod = \"hertz\"\n"
+         "angles_deg = \"0:360:30\"\nchunk_size = 5\nvtk_every = 0\nplots = false\n")
+#: a small FE case: three angles on the rise, a coarse mesh
+FE = "[fe]\na_over_h = 6\n[sweep]\nmethod = \"fe\"\nangles_deg = \"40:60:10\"\nvtk_every = 0\nplots = false\n"
+
+
+def _scene(tmp_path, extra: str) -> Path:
+    p = tmp_path / "scene.toml"
+    p.write_text(STUDY + "\n" + extra)
+    return p
+
+
+def _rows(out: Path) -> list[dict]:
+    """sweep.csv's rows without the wall-clock columns (``fe_time_ms``, ``build_time_ms``)."""
+    with open(out / "sweep.csv", newline="", encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    return [{k: v for k, v in r.items() if not k.startswith(WALL_CLOCK)} for r in rows]
+
+
+def _both(tmp_path, scene, api_kw=None, flags=()):
+    """(API result, API rows, CLI rows) of the same scene, settings and overrides."""
+    r = femcam.sweep(str(scene), out=tmp_path / "api", progress=False, model_cache=False,
+                     **(api_kw or {}))
+    code = main(["sweep", str(scene), "--out", str(tmp_path / "cli"), "--progress", "off",
+                 "--no-cache", *flags])
+    assert code == 0
+    return r, _rows(tmp_path / "api"), _rows(tmp_path / "cli")
+
+
+def test_hertz_rows_equal_with_scene_settings(tmp_path):
+    r, api, cli = _both(tmp_path, _scene(tmp_path, HERTZ))
+    assert len(api) == 12 and api == cli
+    assert r.method == "hertz" and not (tmp_path / "api" / "plots").exists()
+    o = r.provenance["options"]
+    assert (o["a_over_h"], o["tolerance"], o["chunk_size"], o["vtk_every"]) == (12.0, 1e-3, 5, 0)
+    assert set(o["settings"]["sources"].values()) == {"scene", "default"}
+    assert o["settings"]["sources"]["method"] == "scene"
+    assert o["settings"]["values"]["angles_deg"] == "0:360:30"
+
+
+def test_explicit_keyword_overrides_the_scene_like_the_flag(tmp_path):
+    r, api, cli = _both(tmp_path, _scene(tmp_path, HERTZ), dict(angles=np.radians([0.0, 90.0]), chunk_size=1),
+                        ("--angles-deg", "0:90:90", "--chunk-size", "1"))
+    assert len(api) == 2 and api == cli
+    assert r.provenance["options"]["chunk_size"] == 1
+    assert r.provenance["options"]["settings"]["sources"]["chunk_size"] == "argument"
+
+
+def test_fe_rows_equal_with_scene_settings(tmp_path):
+    r, api, cli = _both(tmp_path, _scene(tmp_path, FE))
+    assert len(api) == 3 and api == cli
+    assert r.method == "fe" and r.provenance["options"]["a_over_h"] == 6.0
+    assert np.isfinite(r.table["p0_fe"]).all()
+
+
+def test_defaults_without_scene_settings(tmp_path):
+    st = resolve_settings(load_scene(_scene(tmp_path, "")), {})
+    assert (st.a_over_h, st.tolerance, st.chunk_size, st.vtk_every, st.method, st.plots, st.rtol) == \
+        (10.0, 2e-3, 30, 10, "fe", True, None)
+    assert st.angles.size == 360 and set(st.sources.values()) == {"default"} and st.from_scene == ()
+
+
+def test_rtol_against_a_over_h(tmp_path):
+    """rtol chooses the mesh: one given beats the scene's other key; both given, or both in the
+    scene, refused; the scene's rtol_pct is dropped under method hertz (the CLI's rule)."""
+    sc = load_scene(_scene(tmp_path, "[fe]\nrtol_pct = 1\n"))
+    assert resolve_settings(sc, {}).rtol == pytest.approx(0.01)
+    assert resolve_settings(sc, {}).tolerance == pytest.approx(0.005)   # rtol / 2
+    st = resolve_settings(sc, {"a_over_h": 14.0})
+    assert (st.rtol, st.a_over_h) == (None, 14.0)
+    assert resolve_settings(sc, {"method": "hertz"}).rtol is None
+    sc2 = load_scene(_scene(tmp_path, "[fe]\na_over_h = 20\n"))
+    assert resolve_settings(sc2, {"rtol": 0.01}).rtol == 0.01
+    with pytest.raises(InputError, match="rtol = 0.01 .*cannot be given with a_over_h = 10"):
+        resolve_settings(sc2, {"rtol": 0.01, "a_over_h": 10.0})
+    sc3 = load_scene(_scene(tmp_path, "[fe]\nrtol_pct = 1\na_over_h = 20\n"))
+    with pytest.raises(InputError, match=r"\[fe\] rtol_pct = 1 %: cannot be given with \[fe\] a_over_h"):
+        resolve_settings(sc3, {})
+    assert resolve_settings(sc3, {"a_over_h": 8.0}).a_over_h == 8.0
