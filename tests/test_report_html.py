@@ -270,3 +270,40 @@ def test_markdown_page_embeds_images_and_reads_tables(run):
     assert [i["src"] for i in page.imgs] == [png_data_uri(out / "plots" / "p0_vs_angle.png")]
     assert "<title>The title</title>" in text and "<code>code</code>" in text and "<b>bold</b>" in text
     assert "<td>1</td><td>x | y</td>" in text and "<li>one</li><li>two</li>" in text
+
+
+def test_a_hertz_sweep_says_it_has_no_error_estimate(run):
+    _, out, _ = run
+    text = (out / "report.html").read_text(encoding="utf-8")
+    assert "<h2>Error estimates</h2><p>No error estimate" in text and "id=estimates" not in text
+    assert "## Error estimates" not in (out / "report.md").read_text()
+
+
+@pytest.mark.slow
+def test_error_estimates_per_headline_quantity_match_the_npz(tmp_path):
+    """rtol 0.5 %: each FE headline quantity's estimate at the row of its worst value and the
+    largest over the ok rows, read from sweep.npz here (err_est_* relative -> percent, .3g), in
+    report.html's table and report.md's; p0 says the requested rtol and that every row met it."""
+    out = tmp_path / "est"
+    sweep(EXAMPLE, angles=np.radians([60.0, 150.0, 210.0, 300.0]), rtol=0.005, workers=1, out=out,
+          plots=False, vtk_every=0, progress=False, scene_path=EXAMPLE)
+    z, text = _npz(out), (out / "report.html").read_text(encoding="utf-8")
+    md = (out / "report.md").read_text()
+    ok = z["status"].astype(str) == "ok"
+    table = text.split("<table id=estimates>", 1)[1].split("</table>", 1)[0]
+    cells = [re.findall(r"<td[^>]*>([^<]*)</td>", r) for r in table.split("<tr>")[2:]]
+    got = {c[0]: c[1:] for c in cells}
+    what = {c: w for c, w, *_ in PEAKS}
+    for col, q in (("p0_fe", "p0"), ("a_fe", "a"), ("vm_max", "vm"), ("tau1_max", "tau1")):
+        est = np.where(ok, z[f"err_est_{q}"], np.nan)
+        i = int(np.nanargmax(np.where(ok, z[col], np.nan)))        # the quantity's worst row
+        at, top = f"{100 * est[i]:.3g}", f"{100 * np.nanmax(est):.3g}"
+        assert got[what[col]][:3] == [at, top, str(int(np.isfinite(est).sum()))], col
+        assert f"| {what[col]} | {at} | {top} | {int(np.isfinite(est).sum())} |" in md, col
+    p0 = np.where(ok, z["err_est_p0"], np.nan)
+    assert np.nanmax(p0) <= 0.005
+    assert got[what["p0_fe"]][3] == "0.5 %: met by every row" and "0.5 %: met by every row" in md
+    # the mesh rtol chose for each family: the last cell of its row in the families table
+    for f in SweepResult.load(out).families:
+        row = re.search(rf"<tr><td[^>]*>{f['id']}</td><td class=num>{f['n_angles']}</td>.*?</tr>", text)
+        assert row and row.group(0).endswith(f"<td class=num>{f['a_over_h']:g}</td></tr>"), f["id"]

@@ -137,6 +137,24 @@ def test_row_estimate_scales_with_the_rows_own_a_over_h():
     assert own["p0"] == pytest.approx(1e-3) and own["tau1"] == pytest.approx(4e-3)
 
 
+def test_family_need_meets_the_target_on_the_family_s_smallest_row():
+    """rtol per family: n_f = n0 (e0 (a_ref / a_min)^p / target)^(1/p), rounded up to even >= 6,
+    written out here; a family of larger rows (a_min = a_ref) needs fewer elements."""
+    from femcam.sweep.estimate import RATES, FamilyEstimate
+    from femcam.sweep.rtol import family_need
+    p = RATES["p0"]
+    est = FamilyEstimate(a_ref=1e-4, a_over_h=8.0, a_over_h_coarse=4.0,
+                         err={"p0": 1.6e-3, "a": 1e-3, "vm": 1e-3, "tau1": 1e-3})
+    a_rows = np.array([0.8e-4, 1.0e-4, 1.2e-4])
+    n = 8.0 * (1.6e-3 * (1e-4 / 0.8e-4) ** p / 5e-4) ** (1 / p)   # 24.3 -> 26
+    assert family_need(est, a_rows, 5e-4) == 2 * math.ceil(n / 2)
+    n_big = 8.0 * (1.6e-3 / 5e-4) ** (1 / p)   # 15.8 -> 16: the rows no smaller than a_ref
+    assert family_need(est, a_rows[1:], 5e-4) == 2 * math.ceil(n_big / 2)
+    assert family_need(est, a_rows, 1.0) == 6.0   # loose target: the validated floor
+    nan = FamilyEstimate(1e-4, 8.0, 4.0, {q: math.nan for q in ("p0", "a", "vm", "tau1")})
+    assert family_need(nan, a_rows, 5e-4) == 16.0   # a failed pilot: twice the pilot's a/h
+
+
 @pytest.mark.slow
 def test_rtol_half_percent_on_the_study_model():
     """--rtol 0.5 %: every arc-gap row's true p0 error vs Hertz <= 0.5 %, every row's estimate
@@ -171,6 +189,16 @@ def test_rtol_tenth_percent_on_the_study_model():
     assert arc.sum() >= 10 and true.max() <= 0.001
     assert np.nanmax(t["err_est_p0"][t["status"] == "ok"]) <= 0.001
     assert np.all(t["err_est_p0"][arc] >= BAND[0] * true)
+    # the mesh is each family's own: every row's a/h is its family's a/h scaled to the row
+    fams = {f["id"]: f for f in r.provenance["families"]}
+    choice = r.provenance["options"]["rtol_choice"]
+    assert sorted(choice["family_a_over_h"]) == sorted(f["a_over_h"] for f in fams.values())
+    assert choice["a_over_h"] == max(choice["family_a_over_h"])
+    assert len(choice["pilots"]) >= 2 and all(f["a_over_h"] % 2 == 0 for f in fams.values())
+    family_model = np.array(["rebuilt" not in str(x).split(";") for x in t["flags"]])
+    for i in np.flatnonzero(arc & family_model):
+        f = fams[int(t["family"][i])]
+        assert t["a_over_h_row"][i] == pytest.approx(f["a_over_h"] * t["a_hertz"][i] / f["a_ref"], rel=1e-9)
 
 
 @pytest.mark.slow
@@ -291,3 +319,30 @@ def test_cli_rtol_writes_the_estimate_columns(tmp_path, capsys):
         assert np.all(np.isfinite(fe[c])), c
     assert fe["err_est_p0_pct"].max() <= 0.5
     assert "rtol" in (out / "report.md").read_text()
+
+
+def test_pilot_is_solved_at_the_curvature_extremes_and_interpolated_between(monkeypatch):
+    """rtol per family: the pilot p0 estimate is solved on the planned families with the smallest
+    and largest Rr/rho and linear in Rr/rho between them (written out here); each family then
+    needs its own a/h: a family with a larger pilot error gets a finer mesh."""
+    import importlib
+    rt = importlib.import_module("femcam.sweep.rtol")
+    from femcam.sweep.estimate import FamilyEstimate
+    cp = contact_params(load_scene(STUDY))
+    err = {0.2: 1e-3, 1.0: 4e-3}            # Rr/rho -> pilot p0 error of the solved families
+    calls = []
+
+    def fake(cp_, rho_ref, a_ref, options, cache=None, reuse=0.0):
+        calls.append((cp.Rr / rho_ref, options.a_over_h))
+        return FamilyEstimate(a_ref, options.a_over_h, options.a_over_h / 2,
+                              {"p0": err[round(cp.Rr / rho_ref, 6)], "a": 0.0, "vm": 0.0, "tau1": 0.0})
+
+    monkeypatch.setattr(rt, "family_estimate", fake)
+    refs = {0: (cp.Rr / 0.2, 1e-4), 1: (cp.Rr / 0.6, 1e-4), 2: (cp.Rr / 1.0, 1e-4)}
+    est = rt._pilot_estimates(cp, refs, SweepOptions(), None)
+    assert sorted(round(k, 6) for k, _ in calls) == [0.2, 1.0] and {n for _, n in calls} == {8.0}
+    assert est[1].err["p0"] == pytest.approx(1e-3 + (0.6 - 0.2) / (1.0 - 0.2) * 3e-3)
+    a = np.array([1e-4])
+    need = [rt.family_need(est[f], a, 5e-4) for f in (0, 1, 2)]
+    assert need == sorted(need) and need[0] < need[2]
+    assert need[2] == 2 * math.ceil(8.0 * (4e-3 / 5e-4) ** (1 / 1.7) / 2)

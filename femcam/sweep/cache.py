@@ -268,7 +268,7 @@ def default_cache() -> ModelCache:
 
 
 def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions,
-                solver: SolverOptions | None = None) -> ContactModel:
+                solver: SolverOptions | None = None, mesh: MeshOptions | None = None) -> ContactModel:
     """A fresh :class:`femcam.fe.ContactModel` (mesh + factorisation).
 
     Parameters
@@ -281,6 +281,9 @@ def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepO
     solver : SolverOptions, optional
         Default ``SolverOptions()`` (stress operators precomputed: a family model solved at
         many angles); ``stress_operators="per_solve"`` for a one-off model (same p0 to ~1e-12).
+    mesh : MeshOptions, optional
+        Replaces the mesh of :func:`model_args` (the coarse level of a two-level estimate,
+        :func:`femcam.sweep.estimate.coarse_mesh`; such a model is not cached).
 
     Returns
     -------
@@ -289,6 +292,8 @@ def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepO
         the coating band in the contact FE), its fine zone widened by :func:`coated_zone_factor`.
     """
     args = model_args(cp, rho_ref, a_ref, options, solver)
+    if mesh is not None:
+        args["mesh"] = mesh
     if cp.coat_body is None:
         return ContactModel.build(**args)
     return build_coated_model(**args, body=cp.coat_body,

@@ -48,9 +48,9 @@ import numpy as np
 
 from .. import _validate
 from ..errors import FemcamError
-from ..fe import ContactModel, SolverOptions
+from ..fe import SolverOptions
 from ..mesh import MeshOptions
-from .cache import ModelCache, default_cache
+from .cache import ModelCache, build_model, default_cache, model_args
 from .options import ContactParams, SweepOptions, contact_params
 
 __all__ = ["QUANTITIES", "RATES", "FamilyEstimate", "coarse_mesh", "family_estimate",
@@ -192,7 +192,9 @@ def family_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: Sw
         NaN errors where the coarse model failed (the rows then carry NaN estimates).
     """
     cache = cache or default_cache()
-    mesh2 = coarse_mesh(options.a_over_h)
+    # the coarse level of the family's own model: coated when the scene is (the coating band in
+    # the contact FE and the widened fine zone of model_args, build_model), nested in its nodes
+    mesh2 = coarse_mesh(options.a_over_h, model_args(cp, rho_ref, a_ref, options)["mesh"].fine_half_width)
     a2, r_h = mesh2.a_over_h, 2.0
     nan = {q: math.nan for q in QUANTITIES}
     try:
@@ -200,10 +202,8 @@ def family_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: Sw
         fine = cache.solve(cache.model_for(cp, rho_ref, a_ref, options), F, rho_ref, cp.mu,
                            cp.sliding, check=False)
         with cache._lock:  # gmsh is not thread-safe
-            coarse_model = ContactModel.build(
-                Rr=cp.Rr, rho_ref=rho_ref, cam=cp.cam, roller=cp.roller, length=cp.length,
-                a_ref=a_ref, mesh=mesh2, solver=SolverOptions(stress_operators="per_solve"),
-                plane=cp.plane)
+            coarse_model = build_model(cp, rho_ref, a_ref, options,
+                                       SolverOptions(stress_operators="per_solve"), mesh=mesh2)
         coarse = coarse_model.solve(F=F, rho=rho_ref, mu=cp.mu, sliding=cp.sliding, check=False)
     except (FemcamError, ValueError, ArithmeticError):
         return FamilyEstimate(a_ref, options.a_over_h, a2, nan, float(reuse))
@@ -319,7 +319,10 @@ def estimate_families(records, cp: ContactParams, options: SweepOptions,
     out = {}
     for rec in records:
         reuse = rec.reuse_error if np.isfinite(rec.reuse_error) else math.nan
-        out[int(rec.id)] = family_estimate(cp, rec.rho_ref, rec.a_ref, options, cache, reuse)
+        opts = options.for_family(getattr(rec, "a_over_h", None))   # the family's own mesh
+        if opts.a_over_h < 4.0:
+            continue
+        out[int(rec.id)] = family_estimate(cp, rec.rho_ref, rec.a_ref, opts, cache, reuse)
     return out
 
 
@@ -369,6 +372,9 @@ def estimate_text(result) -> str:
     text = f"estimated discretisation error (largest over {n} FE rows): " + ", ".join(parts)
     choice = result.provenance.get("options", {}).get("rtol_choice")
     if choice:
-        text += (f"; rtol {100 * choice['rtol']:g} % on p0: a/h = {choice['a_over_h']:g}, reuse "
+        own = choice.get("family_a_over_h") or [choice["a_over_h"]]
+        mesh = (f"a/h = {min(own):g}" if min(own) == max(own) else
+                f"a/h = {min(own):g}-{max(own):g} over {len(own)} families")
+        text += (f"; rtol {100 * choice['rtol']:g} % on p0: {mesh}, reuse "
                  f"tolerance {100 * choice['tolerance']:g} %")
     return text

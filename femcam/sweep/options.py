@@ -7,7 +7,8 @@ by :class:`SweepOptions`).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import math
+from dataclasses import dataclass, replace
 
 from .. import _validate
 from ..errors import InputError
@@ -74,6 +75,24 @@ class SweepOptions:
         if self.rtol is not None:
             object.__setattr__(self, "rtol", _validate.in_range("rtol", self.rtol, *RTOL_RANGE,
                                                                 "(relative p0 error)"))
+
+    def for_family(self, a_over_h) -> SweepOptions:
+        """These options with one model family's own ``a_over_h`` (``rtol`` chooses it per
+        family, :mod:`femcam.sweep.rtol`; :class:`femcam.sweep.verify.FamilyRecord.a_over_h`).
+
+        Parameters
+        ----------
+        a_over_h : float or None
+            The family's elements per reference half-width [-]; None or NaN: unchanged.
+
+        Returns
+        -------
+        SweepOptions
+            ``self`` or a copy with ``a_over_h`` replaced (the model cache keys on it).
+        """
+        if a_over_h is None or a_over_h != a_over_h or float(a_over_h) == self.a_over_h:
+            return self
+        return replace(self, a_over_h=float(a_over_h))
 
     def to_dict(self) -> dict:
         """The options as a JSON-able dict (manifest key and provenance).

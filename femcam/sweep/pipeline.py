@@ -131,6 +131,9 @@ class ChunkTask:
         Family id per angle (-1: none).
     refs : dict[int, tuple[float, float]]
         ``(rho_ref, a_ref)`` (m) of the families used here.
+    a_over_h : dict[int, float]
+        Each family's own ``a_over_h`` [-] (missing: ``options.a_over_h``;
+        :meth:`family_options`).
     vtk_dir : str, optional
         Where to write the ``.vtu`` files.
     vtk_mask : ndarray of bool, shape (n,), optional
@@ -160,6 +163,7 @@ class ChunkTask:
     options: SweepOptions
     family: np.ndarray = field(default_factory=lambda: np.zeros(0, int))
     refs: dict = field(default_factory=dict)
+    a_over_h: dict = field(default_factory=dict)
     vtk_dir: str | None = None
     vtk_mask: np.ndarray | None = None
     slip: SlipResult | None = None
@@ -170,6 +174,20 @@ class ChunkTask:
     hertz: np.ndarray | None = None
     estimates: dict = field(default_factory=dict)
     disk: tuple | None = None
+
+    def family_options(self, fid: int) -> SweepOptions:
+        """The options family ``fid``'s model was built with (its own ``a_over_h``).
+
+        Parameters
+        ----------
+        fid : int
+            Family id (-1 or unknown: the sweep's options).
+
+        Returns
+        -------
+        SweepOptions
+        """
+        return self.options.for_family(self.a_over_h.get(int(fid)))
 
 
 def analytic_rows(scene, theta) -> tuple[dict, object]:
@@ -338,11 +356,12 @@ def _fe_angle(task: ChunkTask, cp: ContactParams, rows, flags, i: int,
     """Solve row ``i`` with its family's model (or a model of its own) and fill the row."""
     F, rho = float(rows["Fc"][i]), float(rows["rho"][i])
     fid = int(task.family[i])
-    model = cache.model_for(cp, *task.refs[fid], task.options)
+    opts = task.family_options(fid)
+    model = cache.model_for(cp, *task.refs[fid], opts)
     own = not model.covers(F, rho)
     if own:  # outside the family's range (e.g. nearly conformal): its own model
         a_i = float(hertz_half_width(np.array([F]), np.array([rho]), cp)[0])
-        model = cache.model_for(cp, rho, a_i, task.options)
+        model = cache.model_for(cp, rho, a_i, opts)
         flags[i].append("rebuilt")
     sl, Q, roll = traction_args(task.traction, i, cp.sliding)
     jump = bool(task.jump[i]) if task.jump is not None else False
@@ -364,7 +383,7 @@ def _fe_angle(task: ChunkTask, cp: ContactParams, rows, flags, i: int,
     rows["Q_over_muFc"][i] = r.Q / (cp.mu * F) if cp.mu > 0 else np.nan
     rows["family"][i] = fid
     fill_row_estimate(rows, i, task.estimates.get(fid), float(rows["a_hertz"][i]), model.a_ref,
-                      task.options.a_over_h)
+                      opts.a_over_h)
     if task.options.rtol is not None and rows["err_est_p0"][i] > task.options.rtol:
         flags[i].append("rtol_not_met")
     if r.outside_hertz and "hertz_large_a" not in flags[i]:

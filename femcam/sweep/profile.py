@@ -134,6 +134,8 @@ def _fe_solve(table, i, cp, families, options, cache, scene):
     refs = {int(f["id"]): (float(f["rho_ref"]), float(f["a_ref"])) for f in families}
     fid = int(table["family"][i]) if np.isfinite(table["family"][i]) else -1
     rebuilt = "rebuilt" in str(table["flags"][i]).split(";")
+    own = {int(f["id"]): f.get("a_over_h") for f in families}   # rtol: each family's own a/h
+    options = options.for_family(own.get(fid))
     if rebuilt or fid not in refs:
         a_est = float(hertz_half_width(np.array([F]), np.array([rho]), cp)[0])
         model, name = cache.model_for(cp, rho, a_est, options), "own"

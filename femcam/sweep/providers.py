@@ -220,10 +220,11 @@ def _solve_slice(task, cp, cache, i: int, F: float, rho: float):
     """Row ``i`` at load ``F`` (N): its family's model if it covers ``(F, rho)``, else one of
     its own (sized by the Hertz half-width at ``F``), as the chunk runner does."""
     fid = int(task.family[i]) if task.family.size else -1
-    model = cache.model_for(cp, *task.refs[fid], task.options) if fid in task.refs else None
+    opts = task.family_options(fid)
+    model = cache.model_for(cp, *task.refs[fid], opts) if fid in task.refs else None
     if model is None or not model.covers(F, rho):
         a_i = float(hertz_half_width(np.array([F]), np.array([rho]), cp)[0])
-        model = cache.model_for(cp, rho, a_i, task.options)
+        model = cache.model_for(cp, rho, a_i, opts)
     return cache.solve(model, F, rho, cp.mu, cp.sliding, check=False)
 
 

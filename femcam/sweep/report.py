@@ -31,7 +31,8 @@ from ..assess.core import WORST as ASSESS_WORST
 from ..viz.html import html_table, page_html, png_data_uri
 from ..viz.sweep import PLOT_CAPTIONS, plot_caption
 from .result import SweepResult, families_text, hertz_check_text
-from .worst import angle_text, peak_rows
+from .estimate import estimate_text
+from .worst import angle_text, estimate_rows, peak_rows
 
 __all__ = ["report_html", "scene_inputs"]
 
@@ -210,14 +211,31 @@ def _validation(result: SweepResult, s: dict) -> str:
     if fams:
         rows = [(str(f.get("id", "")), str(f.get("n_angles", "")),
                  _num(1e3 * float(f.get("rho_ref", math.nan))), _num(1e6 * float(f.get("a_ref", math.nan))),
-                 str(len(f.get("checks", ()))), _num(100 * float(f.get("reuse_error", math.nan)), ".3f"))
+                 str(len(f.get("checks", ()))), _num(100 * float(f.get("reuse_error", math.nan)), ".3f"),
+                 _num(float(f.get("a_over_h", math.nan)), "g"))   # rtol: each family's own mesh
                 for f in fams]
         out.append("<p>Model families (one FE model reused over neighbouring angles), each checked "
                    "against a model built for the checked angle"
                    + (f", tolerance {100 * float(tol):g} %" if tol is not None else "") + ":</p>")
         out.append(html_table(("family", "angles", "rho_ref (mm)", "a_ref (µm)", "checked angles",
-                           "reuse error (%)"), rows, num=(1, 2, 3, 4, 5)))
+                           "reuse error (%)", "a/h"), rows, num=(1, 2, 3, 4, 5, 6)))
     return "".join(out)
+
+
+def _estimates(result: SweepResult) -> str:
+    rows = estimate_rows(result.table, result.provenance.get("options", {}))
+    if not rows:
+        return ("<p>No error estimate: the rows are Hertz's (method hertz), or no FE row was "
+                "solved on a model family.</p>")
+    out = ("<p>Estimated discretisation error of each FE headline quantity (two-level estimate "
+           "on the row's model family, docs/estimate.md): at the row of the quantity's worst "
+           "value and the largest over the FE rows; p0 includes the family's reuse error.</p>")
+    out += html_table(
+        ("quantity", "estimate at its worst row (%)", "largest estimate (%)", "FE rows", "requested (rtol)"),
+        [(_e(r["what"]), _num(r["at_worst_pct"], ".3g"), _num(r["max_pct"], ".3g"), str(r["n_rows"]),
+          "" if r["met"] is None else f"{r['rtol_pct']:g} %: {'met by every row' if r['met'] else 'NOT met'}")
+         for r in rows], num=(1, 2, 3), attrs="id=estimates")
+    return out + f"<p>{_e(estimate_text(result))}.</p>"
 
 
 def _plots(out: Path, plots) -> str:
@@ -283,6 +301,7 @@ def report_html(result: SweepResult, out, plots=None) -> str:
     name, title = _title(result.provenance, text)
     sections = [("The run", _run(result, s)), ("Worst values and where they occur", _worst(result)),
                 ("Models used", _models(result, s)), ("Validation against Hertz", _validation(result, s)),
+                ("Error estimates", _estimates(result)),
                 ("Plots", _plots(out, plots)), ("The scene", _scene(text)), ("Files", _files(out))]
     body = _refused(ex) + title + _omits(ex) + "".join(
         f"<h2>{_e(h)}</h2>{c}" for h, c in sections)

@@ -18,7 +18,7 @@ from ..viz.sweep import plot_caption
 from .estimate import estimate_text
 from .realrows import FLAT_BIN_RATIO
 from .table import COLUMNS, NUMERIC, PROFILE_PREFIX, STATUSES, TEXT_COLUMNS, worst_row
-from .worst import angle_text, peak_rows
+from .worst import angle_text, estimate_rows, peak_rows
 
 __all__ = ["SweepResult", "families_text", "hertz_check_text", "plot_data_arrays", "report_markdown"]
 
@@ -436,9 +436,8 @@ def report_markdown(result: SweepResult) -> str:
               for r in peak_rows(result.table)]   # the providers' worst values: _extras_lines
     # the text holds |...|: escaped, or Markdown splits the row at each bar
     lines += [f"| p0 FE vs Hertz | {hertz_check_text(s).replace('|', chr(92) + '|')} | | | | |"]
-    if estimate_text(result):   # femcam.sweep.estimate: the FE rows' error estimates
-        lines += [f"| error estimates | {estimate_text(result)} | | | | |"]
     lines += [f"- {t}" for t in p.get("extras", {}).get("headline", ())]   # what the headline omits
+    lines += _estimate_lines(result)
     lines += _extras_lines(p.get("extras", {}))
     plots = {k: f"plots/{Path(v).name}" for k, v in result.paths.items() if k.startswith("plot_")}
     if plots:
@@ -449,6 +448,21 @@ def report_markdown(result: SweepResult) -> str:
               + (", `report.html` (this report with the plots embedded: one file to send)"
                  if result.paths else ""), ""]
     return "\n".join(lines)
+
+
+def _estimate_lines(result: SweepResult) -> list[str]:
+    """``report.md``'s error estimates: per headline quantity at its worst row and the largest
+    (:func:`femcam.sweep.worst.estimate_rows`), and the rtol reached."""
+    rows = estimate_rows(result.table, result.provenance.get("options", {}))
+    if not rows:
+        return []
+    lines = ["", "## Error estimates", "", "| quantity | estimate at its worst row (%) | largest "
+             "estimate (%) | FE rows | requested (rtol) |", "|---|---|---|---|---|"]
+    lines += [f"| {r['what']} | {r['at_worst_pct']:.3g} | {r['max_pct']:.3g} | {r['n_rows']} | "
+              + ("" if r["met"] is None else
+                 f"{r['rtol_pct']:g} %: {'met by every row' if r['met'] else 'NOT met'}") + " |"
+              for r in rows]
+    return lines + ["", estimate_text(result) + "."]
 
 
 def _extras_lines(ex: dict) -> list[str]:

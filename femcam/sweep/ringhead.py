@@ -33,6 +33,21 @@ solid answer (the exact gap at a curvature jump, the partial-slip traction; the 
 frictionless on the osculating arc) stay in the scaled stresses; ``p0_fe`` is the ring
 model's own peak.
 
+Error estimates (``err_est_*``, :mod:`femcam.sweep.estimate`) on a ring row: the ring model's
+cam contact is meshed by the same contact-zone generator as the solid families (its fine zone
+``a_ref / 20``, the default :class:`~femcam.mesh.MeshOptions` of
+:func:`femcam.bodies.rows.build_for`, graded for the largest force), and the relative
+discretisation error of a contact depends on its elements per half-width (2D elasticity is scale
+invariant), so the row's solid family's two-level estimate is carried to the ring mesh's
+resolution ``n = 20 a_ring / a_ref_ring`` (``a_over_h_row``):
+``err_est_p0, err_est_a = e_ref (n_ref / n)^p`` (no reuse error: the ring model is solved at the
+row's own load). The scaled stresses carry three errors, ``err_est_vm = e_vm,solid + e_p0,ring
++ e_p0,solid`` (likewise tau1). A ``hertz+ring`` row has no solid family, so no estimate (NaN).
+The estimate leaves out what the ring's global compliance adds to the contact's discretisation
+(bending of a thin wall is resolved by the ring mesh, :class:`~femcam.bodies.RingMeshOptions`,
+not by ``a/h``); checked on the thick ring on a tight pin against Hertz
+(``tests/test_sweep_ring.py``).
+
 Cost: no model beyond today's: the ring model was already built and solved for its bore and
 needle columns; those solves are now read by the headline as well (the solid-roller families
 still answer the stresses). With ``--method auto`` the rows Hertz answers need no FE model at
@@ -46,7 +61,13 @@ import numpy as np
 from ..bodies.rows import CSV_COLUMNS as RING_COLUMNS
 from ..bodies.rows import ring_rows
 from ..errors import FemcamError
+from ..mesh import MeshOptions
+from .estimate import QUANTITIES, RATES, FamilyEstimate
 from .providers import RING_ERROR, RING_HEADLINE_KEYS, has_support, ring_model
+
+#: elements per reference half-width of the ring model's contact mesh (``ring_model`` builds
+#: with the default MeshOptions, :func:`femcam.bodies.rows.build_for`)
+RING_A_OVER_H = MeshOptions().a_over_h
 
 #: stress columns scaled by ``p0_ring / p0_solid`` and length columns by ``a_ring / a_solid``
 SCALED_BY_P0 = ("vm_max", "tau1_max", "txz_range_max", "surf_sx_min", "surf_sx_max", "surf_sz_min",
@@ -75,6 +96,33 @@ def contact_rows(rows) -> np.ndarray:
     return (status == "ok") | (status == "failed")
 
 
+def ring_estimate(rows, i: int, est: FamilyEstimate | None, n_ring: float) -> None:
+    """Row ``i``'s error estimates once the ring model answers it (module docstring): the solid
+    family's estimate carried to the ring mesh's ``n_ring`` elements per half-width.
+
+    Parameters
+    ----------
+    rows : dict[str, ndarray]
+        The chunk's table with the solid row's ``err_est_*`` (relative) filled; modified in place.
+    i : int
+        Row index.
+    est : FamilyEstimate or None
+        The solid row's family estimate (None: a Hertz row, the estimates become NaN).
+    n_ring : float
+        Elements per the row's half-width on the ring model's contact mesh [-].
+    """
+    rows["a_over_h_row"][i] = n_ring
+    if est is None:
+        for q in QUANTITIES:
+            rows[f"err_est_{q}"][i] = np.nan
+        return
+    e = {q: est.err[q] * (est.a_over_h / n_ring) ** RATES[q] for q in QUANTITIES}
+    p0_solid = rows["err_est_p0"][i]
+    for q in ("vm", "tau1"):   # the solid stress x p0_ring / p0_solid
+        rows[f"err_est_{q}"][i] = rows[f"err_est_{q}"][i] + e["p0"] + p0_solid
+    rows["err_est_p0"][i], rows["err_est_a"][i] = e["p0"], e["a"]
+
+
 def ring_headline(task, rows) -> np.ndarray:
     """Solve the chunk's contact rows on the scene's ring model, put the ring's side columns
     (``ring_<key>`` of :data:`SIDE_KEYS`, SI) into ``rows`` and let the ring answer the headline
@@ -100,7 +148,8 @@ def ring_headline(task, rows) -> np.ndarray:
         return done
     Fc = np.where(contact_rows(rows), rows["Fc"], 0.0)   # ring_rows: Fc <= 0 -> NaN row
     try:
-        r = ring_rows(task.scene, task.theta, Fc, rows["rho"], model=ring_model(task.scene))
+        model = ring_model(task.scene)
+        r = ring_rows(task.scene, task.theta, Fc, rows["rho"], model=model)
     except FemcamError as exc:   # the bodies provider reports it (extras_error, refusals)
         rows[RING_ERROR] = exc
         return done
@@ -112,6 +161,8 @@ def ring_headline(task, rows) -> np.ndarray:
         p_s = rows["p0_fe"][i] if np.isfinite(rows["p0_fe"][i]) else rows["p0_hertz"][i]
         a_s = rows["a_fe"][i] if np.isfinite(rows["a_fe"][i]) else rows["a_hertz"][i]
         k_p, k_a = peak[i] / p_s, a[i] / a_s
+        fid = int(rows["family"][i]) if np.isfinite(rows["family"][i]) else -1
+        ring_estimate(rows, i, task.estimates.get(fid), RING_A_OVER_H * a[i] / model.a_ref)
         for name in SCALED_BY_P0:
             rows[name][i] *= k_p
         for name in SCALED_BY_A:

@@ -1,4 +1,4 @@
-r"""Accuracy on demand: the mesh of a sweep chosen for a requested p0 error (``rtol``).
+r"""Accuracy on demand: the mesh of each model family chosen for a requested p0 error (``rtol``).
 
 The estimated p0 error of an FE row (:mod:`femcam.sweep.estimate`) has two parts: the
 discretisation error of its family's mesh carried to the row, and the family's verified reuse
@@ -6,16 +6,32 @@ error (bounded by ``tolerance``). ``rtol`` splits the budget in half:
 
 1. ``tolerance = rtol / 2`` (``min(tolerance, rtol / 2)`` when a tolerance is given): the family
    verification keeps the reuse error within half the budget;
-2. a **pilot** two-level estimate at ``a_over_h = 8`` on the planned families with the smallest
-   and the largest curvature ratio ``Rr / rho`` (2D elasticity is scale invariant, so the
-   relative error at a given ``a/h`` changes only with the shape of the gap) predicts the
-   ``a_over_h`` whose discretisation error is ``rtol / 2``:
-   ``n = 8 (e_8 / (rtol / 2))^{1/p}``, rounded up to an even whole number >= 6 (an even
-   ``a_over_h`` keeps the contact centre and the Hertz edge on nodes of both estimate levels,
-   where the two-level estimate was validated);
-3. the families are planned, verified and estimated at that ``a_over_h``; if a row's estimate
-   still exceeds ``rtol``, ``a_over_h`` is raised once more by the same rule from the worst row
-   (rows still above are flagged ``rtol_not_met``).
+2. the families are planned (:func:`femcam.sweep.plan.plan_families`) and **each** gets a
+   **pilot** p0 estimate at ``a_over_h = 8``: 2D elasticity is scale invariant, so the relative
+   error at a given ``a/h`` changes only with the shape of the gap (``Rr / rho``); the two-level
+   estimate is solved on the families with the smallest and the largest ``Rr / rho`` and
+   interpolated linearly in ``Rr / rho`` for the others (a pilot solve for each of 11 families
+   cost 5 s more at rtol 0.1 % on the study model, which its choices did not win back). The
+   family's pilot carried to its smallest row half-width ``a_min`` predicts the family's own
+   ``a_over_h`` whose discretisation error is ``rtol / 2`` on every row:
+   ``n_f = 8 (e_8 (a_ref / a_min)^p / (rtol / 2))^{1/p}``, rounded up to an even whole number
+   >= 6 (an even ``a_over_h`` keeps the contact centre and the Hertz edge on nodes of both
+   estimate levels, where the two-level estimate was validated). A flat or mildly curved family
+   stays coarse while a sharply curved one is refined: the least elements that meet ``rtol``
+   family by family, instead of the worst family's mesh everywhere;
+3. each planned family's rows are verified (:func:`femcam.sweep.verify.verify_families`, split
+   until the reuse error is within ``tolerance``) and estimated at its ``n_f``; a family whose
+   worst row estimate still exceeds ``rtol`` is refined once more by the same rule from that
+   row (:func:`refine`), verified and estimated again (rows still above are flagged
+   ``rtol_not_met``).
+
+The families are then numbered as :func:`~femcam.sweep.verify.verify_families` numbers them
+(reference half-width, then curvature); each :class:`~femcam.sweep.verify.FamilyRecord` keeps
+its ``a_over_h`` (the model cache and the persistent cache key on it through
+:func:`femcam.sweep.cache.model_args`), each row its ``a_over_h_row``, and the provenance's
+``rtol_choice`` the pilot of every planned family and every level tried. The sweep's
+``a_over_h`` (``SweepOptions.a_over_h``, used by models outside the families: the layer and ring
+side columns) is the largest family's.
 
 Only p0 is controlled (the estimates of a, von Mises and tau1 are reported, not targeted).
 """
@@ -23,19 +39,17 @@ Only p0 is controlled (the estimates of a, von Mises and tau1 are reported, not 
 from __future__ import annotations
 
 import math
-from dataclasses import replace
-
 import numpy as np
 
 from .. import _validate
-from ..hertz.conformity import roller_does_not_fit
 from ..mesh import MeshOptions
 from ..mesh.estimate import check_contact_elements
 from .estimate import RATES, FamilyEstimate, family_estimate, predict_a_over_h, row_estimate
-from .options import RTOL_RANGE, ContactParams, SweepOptions, contact_params
+from .options import RTOL_RANGE, ContactParams, contact_params
 from .plan import hertz_half_width, plan_families
+from .verify import verify_families
 
-__all__ = ["PILOT_A_OVER_H", "choose_mesh", "even_ceil", "pilot_a_over_h", "refine", "rows_p0_estimate",
+__all__ = ["PILOT_A_OVER_H", "choose_mesh", "even_ceil", "family_need", "refine", "rows_p0_estimate",
            "rtol_settings"]
 
 #: ``a_over_h`` of the pilot estimate (coarse level 4)
@@ -68,43 +82,32 @@ def even_ceil(x: float, lo: float = MIN_A_OVER_H, hi: float = 400.0) -> float:
     return float(min(hi, max(lo, 2 * math.ceil(x / 2 - 1e-9))))
 
 
-def pilot_a_over_h(F, rho, contact, cp: ContactParams, options: SweepOptions, cache=None) -> tuple:
-    """The ``a_over_h`` predicted for ``options.rtol`` from a pilot two-level estimate.
+def family_need(est: FamilyEstimate, a_rows, target: float) -> float:
+    r"""The ``a_over_h`` at which a family's p0 discretisation estimate meets ``target`` on all of
+    its rows (the row with the smallest half-width has the largest estimate).
+
+    .. math:: n = n_0 \left(\frac{e_0 (a_{ref} / a_{min})^p}{target}\right)^{1/p}
 
     Parameters
     ----------
-    F, rho : ndarray, shape (n,)
-        Contact force [N] and cam radius of curvature [m] per angle.
-    contact : ndarray of bool, shape (n,)
-        Angles the FE answers.
-    cp : ContactParams
-        Contact parameters.
-    options : SweepOptions
-        With ``rtol`` (relative p0 error) and the effective ``tolerance``.
-    cache : ModelCache, optional
-        Where the pilot family models go.
+    est : FamilyEstimate
+        The family's estimate at ``est.a_over_h``.
+    a_rows : array_like, shape (m,)
+        Hertz half-widths of the family's rows [m].
+    target : float
+        Relative p0 error to reach [-].
 
     Returns
     -------
-    a_over_h : float
-        Even whole number >= 6 [-].
-    pilots : list of dict
-        ``{"rho_ref" (m), "a_ref" (m), "err_p0" (relative, at a/h 8), "a_over_h" (predicted)}``.
+    float
+        Even whole number >= 6 [-]; ``2 * PILOT_A_OVER_H`` when the estimate failed (NaN).
     """
-    rtol = _validate.positive("rtol", options.rtol, "(relative p0 error)")
-    fam, refs = plan_families(F, rho, cp, options.tolerance, contact)
-    if not refs:
-        return MIN_A_OVER_H, []
-    kap = {f: (0.0 if math.isinf(r[0]) else cp.Rr / r[0]) for f, r in refs.items()}
-    picks = sorted({min(kap, key=kap.get), max(kap, key=kap.get)})
-    pilot = replace(options, a_over_h=PILOT_A_OVER_H)
-    out, need = [], MIN_A_OVER_H
-    for f in picks:
-        est = family_estimate(cp, *refs[f], pilot, cache)
-        n = predict_a_over_h(est, rtol / 2.0) if np.isfinite(est.err["p0"]) else 2 * PILOT_A_OVER_H
-        need = max(need, n)
-        out.append({"rho_ref": refs[f][0], "a_ref": refs[f][1], "err_p0": est.err["p0"], "a_over_h": n})
-    return even_ceil(need), out
+    target = _validate.positive("target", target, "(relative p0 error)")
+    a_rows = np.asarray(a_rows, dtype=float)
+    a_rows = a_rows[np.isfinite(a_rows) & (a_rows > 0)]
+    scale = float(np.max(est.a_ref / a_rows)) ** RATES["p0"] if a_rows.size else 1.0
+    n = predict_a_over_h(est, target / scale)
+    return even_ceil(n if np.isfinite(n) else 2 * PILOT_A_OVER_H)
 
 
 def rows_p0_estimate(F, rho, family, estimates: dict, cp: ContactParams) -> np.ndarray:
@@ -188,24 +191,26 @@ def rtol_settings(a_over_h, rtol, method: str, tolerance: float) -> tuple:
         raise _validate.fail("a_over_h", a_over_h, "(elements per contact half-width)",
                              f"cannot be given with rtol = {rtol}: rtol chooses the mesh; give one")
     if method == "hertz":
-        raise _validate.fail("rtol", rtol, "(relative p0 error)", "needs an FE method (fe or auto)")
-    rtol = _validate.in_range("rtol", rtol, *RTOL_RANGE, "(relative p0 error)")
+        raise _validate.fail("rtol (--rtol-pct / 100)", rtol, "(relative p0 error)",
+                             "needs an FE method (fe or auto)")
+    rtol = _validate.in_range("rtol (--rtol-pct / 100)", rtol, *RTOL_RANGE, "(relative p0 error)")
     if tolerance is None:
         return PILOT_A_OVER_H, rtol / 2.0, rtol
     return PILOT_A_OVER_H, min(_validate.positive("tolerance", tolerance, ""), rtol / 2.0), rtol
 
 
-def choose_mesh(run, plan, estimate, cache) -> None:
-    """``rtol``: the pilot's ``a_over_h``, then the families planned, verified and estimated
-    there; one refinement when a row's p0 estimate still exceeds ``rtol``.
+def choose_mesh(run, fit_rows, cache) -> None:
+    """``rtol``: each planned family's own ``a_over_h`` from its pilot estimate, its rows verified
+    and estimated there, refined once more where a row's p0 estimate still exceeds ``rtol``.
 
     Parameters
     ----------
     run : femcam.sweep.outputs.SweepRun
-        The sweep's state after the analytic phase; ``opts``, ``family``, ``records``,
-        ``estimates``, ``preplanned`` and ``rtol_info`` are set in place.
-    plan, estimate : callable
-        ``plan(run)`` and ``estimate(run, cache)``: the sweep's family and estimate phases.
+        The sweep's state after the analytic phase; ``opts`` (``a_over_h``: the largest family's),
+        ``family``, ``records``, ``estimates``, ``preplanned`` and ``rtol_info`` are set in place.
+    fit_rows : callable
+        ``fit_rows(run) -> ndarray of bool``: the rows the family models answer (sets
+        ``run.hertz`` for method auto).
     cache : ModelCache
         The process's model cache.
 
@@ -215,25 +220,98 @@ def choose_mesh(run, plan, estimate, cache) -> None:
         A flat-faced follower (binned models, no families), or a chosen mesh too large.
     """
     cp = contact_params(run.scene)
+    rtol = run.opts.rtol
     if run.scene.follower.flat_face:
-        raise _validate.fail("rtol", run.opts.rtol, "(relative p0 error)", "needs model families; a "
-                             "flat-faced follower's binned real-cam models carry no estimate; give a_over_h")
+        raise _validate.fail("rtol_pct (--rtol-pct)", 100 * rtol, "%", "needs model families; a "
+                             "flat-faced follower's binned real-cam models carry no estimate; give "
+                             "[fe] a_over_h or --mesh-size instead")
     F, rho = run.rows0["Fc"], run.rows0["rho"]
-    fit = run.contact & ~roller_does_not_fit(rho, cp.Rr)
-    n, pilots = pilot_a_over_h(F, rho, fit, cp, run.opts, cache)
-    tried = []
-    for attempt in range(2):
-        run.opts = replace(run.opts, a_over_h=n)
-        check_contact_elements(MeshOptions(a_over_h=n), "a_over_h (chosen for rtol)")
-        run.preplanned, run.estimates = False, {}
-        plan(run)
-        estimate(run, cache)
-        est = rows_p0_estimate(F, rho, run.family, run.estimates, cp)
-        worst = float(np.nanmax(est)) if np.any(np.isfinite(est)) else float("nan")
-        tried.append({"a_over_h": n, "worst_err_est_p0": worst})
-        if not worst > run.opts.rtol or attempt == 1:
-            break
-        n = refine(n, worst, run.opts.rtol)
+    fit = fit_rows(run)
+    fam0, refs = plan_families(F, rho, cp, run.opts.tolerance, fit)
+    pilots, groups, tried = [], [], []
+    for f, est in _pilot_estimates(cp, refs, run.opts, cache).items():
+        rows = fit & (fam0 == f)
+        n = family_need(est, hertz_half_width(F[rows], rho[rows], cp), rtol / 2.0)
+        pilots.append({"rho_ref": refs[f][0], "a_ref": refs[f][1], "n_angles": int(rows.sum()),
+                       "err_p0": est.err["p0"], "solved": bool(est.a_over_h_coarse > 0), "a_over_h": n})
+        groups += _verified(run, cp, rows, n, cache)
+    final = []
+    for idx, rec, est in groups:
+        worst = _worst(F[idx], rho[idx], est, cp)
+        tried.append({"rho_ref": rec.rho_ref, "a_ref": rec.a_ref, "a_over_h": rec.a_over_h,
+                      "worst_err_est_p0": worst})
+        if not worst > rtol:
+            final.append((idx, rec, est))
+            continue
+        mask = np.zeros(fit.shape, bool)
+        mask[idx] = True
+        for g in _verified(run, cp, mask, refine(rec.a_over_h, worst, rtol), cache):
+            tried.append({"rho_ref": g[1].rho_ref, "a_ref": g[1].a_ref, "a_over_h": g[1].a_over_h,
+                          "worst_err_est_p0": _worst(F[g[0]], rho[g[0]], g[2], cp)})
+            final.append(g)
+    _number(run, final)
+    n_all = [rec.a_over_h for rec in run.records]
+    run.opts = run.opts.for_family(max(n_all) if n_all else PILOT_A_OVER_H)
     run.preplanned = True
-    run.rtol_info = {"rtol": run.opts.rtol, "a_over_h": run.opts.a_over_h,
-                     "tolerance": run.opts.tolerance, "pilots": pilots, "levels": tried}
+    run.rtol_info = {"rtol": rtol, "a_over_h": run.opts.a_over_h, "tolerance": run.opts.tolerance,
+                     "per_family": True, "family_a_over_h": n_all, "pilots": pilots, "levels": tried}
+
+
+def _pilot_estimates(cp: ContactParams, refs: dict, options, cache) -> dict:
+    """The pilot p0 estimate at ``a/h = 8`` of every planned family: solved on the families with
+    the smallest and the largest ``Rr / rho`` (two fine and two coarse builds, whatever the
+    number of families), interpolated linearly in ``Rr / rho`` between them for the others
+    (marked ``a_over_h_coarse = 0``); the per-family refinement catches an interpolation that
+    falls short."""
+    kap = {f: (0.0 if math.isinf(r[0]) else cp.Rr / r[0]) for f, r in refs.items()}
+    if not kap:
+        return {}
+    picks = sorted({min(kap, key=kap.get), max(kap, key=kap.get)}, key=kap.get)
+    pilot_opts = options.for_family(PILOT_A_OVER_H)
+    solved = {f: family_estimate(cp, *refs[f], pilot_opts, cache) for f in picks}
+    k = [kap[f] for f in picks]
+    e = [solved[f].err["p0"] for f in picks]
+    out = {}
+    for f in refs:
+        if f in solved:
+            out[f] = solved[f]
+            continue
+        e_f = float(np.interp(kap[f], k, e))
+        out[f] = FamilyEstimate(refs[f][1], PILOT_A_OVER_H, 0.0, {"p0": e_f, "a": math.nan,
+                                                                   "vm": math.nan, "tau1": math.nan})
+    return out
+
+
+def _verified(run, cp: ContactParams, rows, n: float, cache) -> list:
+    """Rows ``rows`` verified at ``a_over_h = n`` (split as needed), each family estimated:
+    ``[(row indices, FamilyRecord, FamilyEstimate), ...]``."""
+    opts = run.opts.for_family(n)
+    check_contact_elements(MeshOptions(a_over_h=n), "a_over_h (chosen for rtol)")
+    fam, _, recs = verify_families(run.rows0["Fc"], run.rows0["rho"], run.angles, cp, opts, rows,
+                                   cache=cache, traction=run.traction)
+    out = []
+    for rec in recs:
+        reuse = rec.reuse_error if np.isfinite(rec.reuse_error) else math.nan
+        out.append((np.flatnonzero(fam == rec.id), rec,
+                    family_estimate(cp, rec.rho_ref, rec.a_ref, opts, cache, reuse)))
+    return out
+
+
+def _worst(F, rho, est: FamilyEstimate, cp: ContactParams) -> float:
+    """The largest row p0 estimate of a family (NaN when none is finite)."""
+    e = rows_p0_estimate(F, rho, np.zeros(np.shape(F), int), {0: est}, cp)
+    return float(np.nanmax(e)) if np.any(np.isfinite(e)) else math.nan
+
+
+def _number(run, groups: list) -> None:
+    """Families numbered as :func:`~femcam.sweep.verify.verify_families` numbers them (reference
+    half-width, then curvature, then ``a_over_h``): ``run.family``, ``run.records``,
+    ``run.estimates``."""
+    groups = sorted(groups, key=lambda g: (g[1].a_ref, g[1].kappa[0], g[1].kappa[1], g[1].a_over_h))
+    run.family = np.full(run.angles.size, -1)
+    run.records, run.estimates = [], {}
+    for k, (idx, rec, est) in enumerate(groups):
+        rec.id = k
+        run.family[idx] = k
+        run.records.append(rec)
+        run.estimates[k] = est

@@ -193,8 +193,8 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
     cache.disk = run.disk
     before = dict(cache.stats)
     if run.opts.rtol is not None:
-        with talk.phase(f"mesh for rtol {100 * run.opts.rtol:g} %: pilot estimate, families"):
-            choose_mesh(run, _plan, estimate_run, default_cache())
+        with talk.phase(f"mesh for rtol {100 * run.opts.rtol:g} %: a pilot estimate and a mesh per family"):
+            choose_mesh(run, _fit_rows, default_cache())
     _open_store(run)
     with talk.phase("model families: build, verify, estimate the error (a coarse model each)"):
         _plan(run)
@@ -327,8 +327,7 @@ def _plan(run: SweepRun) -> None:
     if run.opts.method == "hertz":
         return
     cp = contact_params(run.scene)
-    run.hertz = auto_hertz_rows(run.scene, cp, run.opts, run.angles, run.rows0["Fc"], run.rows0["rho"],
-                                run.contact, run.jump)
+    fit = _fit_rows(run)
     plan = run.store.load_plan() if (run.store is not None and run.resume) else None
     if plan is not None and len(plan.get("family", ())) == n and not run.preplanned:
         run.family = np.asarray(plan["family"], dtype=int)
@@ -336,7 +335,6 @@ def _plan(run: SweepRun) -> None:
         return
     if run.scene.follower.flat_face:  # binned real-cam models (femcam.sweep.realrows), no families
         return
-    fit = run.contact & ~roller_does_not_fit(run.rows0["rho"], cp.Rr) & ~run.hertz
     if not run.preplanned:
         run.family, _, run.records = verify_families(run.rows0["Fc"], run.rows0["rho"], run.angles, cp,
                                                      run.opts, fit, cache=default_cache(),
@@ -347,9 +345,19 @@ def _plan(run: SweepRun) -> None:
                              "records": [r.to_dict() for r in run.records]})
 
 
+def _fit_rows(run: SweepRun) -> np.ndarray:
+    """The rows the family models answer (contact, a roller that fits, not Hertz's in method
+    auto); sets ``run.hertz``."""
+    cp = contact_params(run.scene)
+    run.hertz = auto_hertz_rows(run.scene, cp, run.opts, run.angles, run.rows0["Fc"], run.rows0["rho"],
+                                run.contact, run.jump)
+    return run.contact & ~roller_does_not_fit(run.rows0["rho"], cp.Rr) & ~run.hertz
+
+
 def _tasks(run: SweepRun) -> tuple[list[ChunkTask], list[int]]:
     """One task per chunk still to compute, and its chunk number."""
     refs = {r.id: (r.rho_ref, r.a_ref) for r in run.records}
+    own = {r.id: r.a_over_h for r in run.records}   # each family's a/h (rtol chooses it per family)
     vtk_dir = str(run.out / "vtk") if (run.out is not None and run.opts.vtk_every) else None
     tasks, task_chunk = [], []
     for c, (a, b) in enumerate(run.bounds):
@@ -358,7 +366,7 @@ def _tasks(run: SweepRun) -> tuple[list[ChunkTask], list[int]]:
         fam = run.family[a:b]
         sub = {int(f): refs[int(f)] for f in np.unique(fam) if f >= 0}
         tasks.append(ChunkTask(index=c, scene=run.scene, theta=run.angles[a:b], options=run.opts,
-                               family=fam, refs=sub, vtk_dir=vtk_dir, vtk_mask=run.vtk_mask[a:b],
+                               family=fam, refs=sub, a_over_h={f: own[f] for f in sub}, vtk_dir=vtk_dir, vtk_mask=run.vtk_mask[a:b],
                                slip=run.wear.chunk(a, b), wear_k=run.wear.k, delay_s=run.delay_s,
                                jump=run.jump[a:b], hertz=None if run.hertz is None else run.hertz[a:b],
                                traction=run.traction.chunk(a, b) if run.traction is not None else None,

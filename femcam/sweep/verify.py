@@ -94,6 +94,9 @@ class FamilyRecord:
     estimated : list of tuple
         As ``checks``, for candidates whose reuse error was only estimated (module docstring:
         well below the checked worst).
+    a_over_h : float
+        Elements per ``a_ref`` of the family model's mesh [-] (the sweep's ``a_over_h``, or the
+        family's own when ``rtol`` chose it: :mod:`femcam.sweep.rtol`; NaN: not recorded).
     """
 
     id: int
@@ -111,6 +114,7 @@ class FamilyRecord:
     n_scanned: int = 0
     n_rebuilt: int = 0
     estimated: list = field(default_factory=list)
+    a_over_h: float = float("nan")
 
     def to_dict(self) -> dict:
         """The record as JSON-able lists and numbers (``plan.json``, provenance).
@@ -126,7 +130,8 @@ class FamilyRecord:
                 "reuse_error": self.reuse_error, "build_time": self.build_time,
                 "check_time": self.check_time, "solve_time": self.solve_time,
                 "p0_vs_hertz": list(self.p0_vs_hertz), "n_scanned": self.n_scanned,
-                "n_rebuilt": self.n_rebuilt, "estimated": [list(c) for c in self.estimated]}
+                "n_rebuilt": self.n_rebuilt, "estimated": [list(c) for c in self.estimated],
+                "a_over_h": self.a_over_h}
 
     @classmethod
     def from_dict(cls, d: dict) -> FamilyRecord:
@@ -285,7 +290,7 @@ def verify_families(F, rho, theta, cp: ContactParams, options: SweepOptions,
     done.sort(key=lambda t: (t[1].a_ref, t[1].kappa[0], t[1].kappa[1]))
     refs, records = {}, []
     for n, (g, rec) in enumerate(done):
-        rec.id = n
+        rec.id, rec.a_over_h = n, float(options.a_over_h)
         refs[n] = (rec.rho_ref, rec.a_ref)
         fam[idx[g]] = n
         records.append(rec)

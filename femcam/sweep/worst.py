@@ -247,3 +247,46 @@ def refusals(table, keys: dict[str, str], column: str = "extras_error") -> list[
                 + (f"; change the scene keys {keys[part]}" if keys.get(part) else ""))
         out.append({"part": part, "reason": reason, "angles": n, "keys": keys.get(part, ""), "line": line})
     return out
+
+
+#: headline columns whose FE rows carry an error estimate: column -> ``err_est_*`` column
+#: (:mod:`femcam.sweep.estimate`)
+ESTIMATED = {"p0_fe": "err_est_p0", "a_fe": "err_est_a", "vm_max": "err_est_vm", "tau1_max": "err_est_tau1"}
+
+
+def estimate_rows(table, options: dict | None = None) -> list[dict]:
+    """The error estimate of each headline quantity that has one: at the row of its worst value
+    (the row of :func:`peak_rows`) and the largest over the ``ok`` FE rows, with the rtol asked
+    for and whether every row met it (p0 only: the quantity ``rtol`` controls).
+
+    Parameters
+    ----------
+    table : Mapping[str, ndarray]
+        The sweep table (SI columns, ``err_est_*`` relative, ``status``).
+    options : dict, optional
+        ``provenance["options"]`` (its ``rtol``, relative, when the sweep chose the mesh).
+
+    Returns
+    -------
+    list of dict
+        ``{"column", "what", "at_worst_pct", "max_pct", "n_rows", "rtol_pct", "met"}`` per
+        quantity with a finite estimate (percent; ``rtol_pct`` and ``met`` None except p0 with
+        an rtol); empty without estimates (method hertz).
+    """
+    if "err_est_p0" not in table:
+        return []
+    ok = np.asarray(table["status"]).astype(str) == "ok"
+    worst = {r["column"]: r for r in peak_rows(table)}
+    rtol = (options or {}).get("rtol")
+    out = []
+    for c, e in ESTIMATED.items():
+        est = np.where(ok, np.asarray(table[e], float), np.nan)
+        fin = np.isfinite(est)
+        if c not in worst or not fin.any():
+            continue
+        at = float(est[worst[c]["index"]])
+        met = bool(np.all(est[fin] <= rtol)) if (rtol is not None and c == "p0_fe") else None
+        out.append({"column": c, "what": worst[c]["what"], "at_worst_pct": 100.0 * at,
+                    "max_pct": 100.0 * float(np.max(est[fin])), "n_rows": int(fin.sum()),
+                    "rtol_pct": 100.0 * rtol if met is not None else None, "met": met})
+    return out
