@@ -7,7 +7,6 @@ by :class:`SweepOptions`).
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, replace
 
 from .. import _validate

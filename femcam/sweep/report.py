@@ -30,8 +30,8 @@ except ModuleNotFoundError:  # pragma: no cover - Python 3.10 (as femcam.scene.l
 from ..assess.core import WORST as ASSESS_WORST
 from ..viz.html import html_table, page_html, png_data_uri
 from ..viz.sweep import PLOT_CAPTIONS, plot_caption
-from .result import SweepResult, families_text, hertz_check_text
 from .estimate import estimate_text
+from .result import SweepResult, families_text, hertz_check_text
 from .worst import angle_text, estimate_rows, peak_rows
 
 __all__ = ["report_html", "scene_inputs"]

@@ -39,6 +39,7 @@ Only p0 is controlled (the estimates of a, von Mises and tau1 are reported, not 
 from __future__ import annotations
 
 import math
+
 import numpy as np
 
 from .. import _validate

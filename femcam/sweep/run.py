@@ -366,7 +366,8 @@ def _tasks(run: SweepRun) -> tuple[list[ChunkTask], list[int]]:
         fam = run.family[a:b]
         sub = {int(f): refs[int(f)] for f in np.unique(fam) if f >= 0}
         tasks.append(ChunkTask(index=c, scene=run.scene, theta=run.angles[a:b], options=run.opts,
-                               family=fam, refs=sub, a_over_h={f: own[f] for f in sub}, vtk_dir=vtk_dir, vtk_mask=run.vtk_mask[a:b],
+                               family=fam, refs=sub, a_over_h={f: own[f] for f in sub},
+                               vtk_dir=vtk_dir, vtk_mask=run.vtk_mask[a:b],
                                slip=run.wear.chunk(a, b), wear_k=run.wear.k, delay_s=run.delay_s,
                                jump=run.jump[a:b], hertz=None if run.hertz is None else run.hertz[a:b],
                                traction=run.traction.chunk(a, b) if run.traction is not None else None,
