@@ -280,3 +280,23 @@ def test_dask_workers_read_the_clients_cache_and_write_nothing(cp, tmp_path):
     worker.model_for(cp, 1.01 * RHO, _a(cp, rho=1.01 * RHO), FAST)   # built, not stored
     assert (worker.stats["loaded"], worker.stats["built"]) == (1, 1)
     assert len(list(client.directory.glob("*.pkl"))) == 1
+
+
+def test_estimate_coarse_level_is_stored_and_reused(cp, disk, monkeypatch):
+    """The two-level estimate's coarse solve is stored too: a warm estimate builds no coarse
+    model and gives the cold estimate's errors bit for bit."""
+    from femcam.sweep import estimate as est_mod
+    built = []
+    real = est_mod.build_model
+
+    def counting(*a, **k):
+        built.append(k.get("mesh"))
+        return real(*a, **k)
+
+    monkeypatch.setattr(est_mod, "build_model", counting)
+    a = _a(cp)
+    cold = est_mod.family_estimate(cp, RHO, a, FAST, ModelCache(disk=disk))
+    n_cold = len(built)
+    warm = est_mod.family_estimate(cp, RHO, a, FAST, ModelCache(disk=disk))
+    assert n_cold == 1 and len(built) == 1          # the coarse model was built once, cold only
+    assert warm.err == cold.err and all(np.isfinite(list(cold.err.values())))

@@ -50,7 +50,7 @@ from .. import _validate
 from ..errors import FemcamError
 from ..fe import SolverOptions
 from ..mesh import MeshOptions
-from .cache import ModelCache, build_model, default_cache, model_args
+from .cache import ModelCache, _disk_key, build_model, default_cache, model_args
 from .options import ContactParams, SweepOptions, contact_params
 
 __all__ = ["QUANTITIES", "RATES", "FamilyEstimate", "coarse_mesh", "family_estimate",
@@ -201,15 +201,31 @@ def family_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: Sw
         F = reference_load(cp, rho_ref, a_ref)
         fine = cache.solve(cache.model_for(cp, rho_ref, a_ref, options), F, rho_ref, cp.mu,
                            cp.sliding, check=False)
-        with cache._lock:  # gmsh is not thread-safe
-            coarse_model = build_model(cp, rho_ref, a_ref, options,
-                                       SolverOptions(stress_operators="per_solve"), mesh=mesh2)
-        coarse = coarse_model.solve(F=F, rho=rho_ref, mu=cp.mu, sliding=cp.sliding, check=False)
+        qH = _coarse_quantities(cp, rho_ref, a_ref, options, mesh2, F, cache)
     except (FemcamError, ValueError, ArithmeticError):
         return FamilyEstimate(a_ref, options.a_over_h, a2, nan, float(reuse))
-    qh, qH = _quantities(fine), _quantities(coarse)
+    qh = _quantities(fine)
     err = {q: abs(qh[q] - qH[q]) / abs(qh[q]) / (r_h ** RATES[q] - 1.0) for q in QUANTITIES}
     return FamilyEstimate(a_ref, options.a_over_h, a2, err, float(reuse))
+
+
+def _coarse_quantities(cp, rho_ref, a_ref, options, mesh2, F, cache) -> dict:
+    """The coarse level's quantities (:func:`_quantities`), from the persistent model cache when
+    an earlier run stored them under the same content key (the coarse mesh and the load in it)."""
+    solver = SolverOptions(stress_operators="per_solve")
+    disk = getattr(cache, "disk", None)
+    dk = (_disk_key("estimate_coarse", cp, rho_ref, a_ref, options, solver,
+                    (F, cp.mu, cp.sliding, mesh2.a_over_h, mesh2.fine_half_width))
+          if disk is not None else None)
+    qH = disk.get(dk) if dk is not None else None
+    if isinstance(qH, dict) and set(qH) == set(QUANTITIES) and all(map(math.isfinite, qH.values())):
+        return qH
+    with cache._lock:  # gmsh is not thread-safe
+        coarse_model = build_model(cp, rho_ref, a_ref, options, solver, mesh=mesh2)
+    qH = _quantities(coarse_model.solve(F=F, rho=rho_ref, mu=cp.mu, sliding=cp.sliding, check=False))
+    if dk is not None and all(map(math.isfinite, qH.values())):
+        disk.put(dk, {k: float(v) for k, v in qH.items()})
+    return qH
 
 
 def row_estimate(est: FamilyEstimate, a_row: float, a_model: float | None = None) -> dict:
