@@ -40,8 +40,8 @@ def test_arc_and_exact_rows_are_reported_apart():
     assert s["n_binned"] == 0
     md = report_markdown(res)
     assert (r"| p0 FE vs Hertz | max \|p0_fe/p0_hertz - 1\| 0.140 % over 2 arc-gap rows; 2 exact-gap "
-            "rows: no Hertz reference (a join where the cam's curvature or its rate jumps: the parabolic "
-            "gap of Hertz does not hold; they depart from Hertz by up to 6.200 %) |") in md
+            "rows: no Hertz reference (the cam's curvature changes across the contact, at a join or on a "
+            "fast-changing flank: the parabolic gap of Hertz does not hold; they depart from Hertz by up to 6.200 %) |") in md
 
 
 def test_all_exact_gap_rows_print_no_nan():
@@ -53,8 +53,8 @@ def test_all_exact_gap_rows_print_no_nan():
     s = res.summary()
     assert s["n_vs_hertz"] == 0 and s["n_exact"] == 4
     text = hertz_check_text(s)
-    assert text == ("4 exact-gap rows: no Hertz reference (a join where the cam's curvature or its "
-                    "rate jumps: the parabolic gap of Hertz does not hold; they depart from Hertz "
+    assert text == ("4 exact-gap rows: no Hertz reference (the cam's curvature changes across the "
+                    "contact, at a join or on a fast-changing flank: the parabolic gap of Hertz does not hold; they depart from Hertz "
                     "by up to 6.200 %)")
     assert "nan %" not in report_markdown(res)
 
@@ -89,7 +89,7 @@ def test_cli_headline_on_the_junction_example(tmp_path, capsys):
     m = re.search(r"max \|p0_fe/p0_hertz - 1\| ([\d.]+) % over (\d+) arc-gap rows", printed)
     assert m and float(m.group(1)) == pytest.approx(arc, abs=5e-4)
     assert int(m.group(2)) == sum(r["model"] != "fe_exact" for r in rows)
-    m = re.search(r"(\d+) exact-gap rows: no Hertz reference \(a join where the cam's curvature or "
-                  r"its rate jumps: the parabolic gap of Hertz does not hold; they depart from "
+    m = re.search(r"(\d+) exact-gap rows: no Hertz reference \(the cam's curvature changes across "
+                  r"the contact, at a join or on a fast-changing flank: the parabolic gap of Hertz does not hold; they depart from "
                   r"Hertz by up to ([\d.]+) %\)", printed)
     assert m and float(m.group(2)) == pytest.approx(exact, abs=0.05)

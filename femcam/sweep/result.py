@@ -390,8 +390,9 @@ def hertz_check_text(s: dict) -> str:
         parts.append(f"max |p0_fe/p0_hertz - 1| {100 * s['err_p0_absmax_arc']:.3f} % over "
                      f"{s['n_vs_hertz']} arc-gap rows")
     if s.get("n_exact", 0):
-        parts.append(f"{s['n_exact']} exact-gap rows: no Hertz reference (a join where the cam's "
-                     f"curvature or its rate jumps: the parabolic gap of Hertz does not hold; they "
+        parts.append(f"{s['n_exact']} exact-gap rows: no Hertz reference (the cam's curvature "
+                     f"changes across the contact, at a join or on a fast-changing flank: the "
+                     f"parabolic gap of Hertz does not hold; they "
                      f"depart from Hertz by up to {100 * s['err_p0_absmax_exact']:.3f} %)")
     if s.get("n_coated", 0):
         parts.append(f"{s['n_coated']} rows answered by the coated model: Hertz (homogeneous "
