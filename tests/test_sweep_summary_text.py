@@ -41,7 +41,8 @@ def test_arc_and_exact_rows_are_reported_apart():
     md = report_markdown(res)
     assert (r"| p0 FE vs Hertz | max \|p0_fe/p0_hertz - 1\| 0.140 % over 2 arc-gap rows; 2 exact-gap "
             "rows: no Hertz reference (the cam's curvature changes across the contact, at a join or on a "
-            "fast-changing flank: the parabolic gap of Hertz does not hold; they depart from Hertz by up to 6.200 %) |") in md
+            "fast-changing flank: the parabolic gap of Hertz does not hold; they depart from Hertz by "
+            "up to 6.200 %) |") in md
 
 
 def test_all_exact_gap_rows_print_no_nan():
@@ -54,8 +55,8 @@ def test_all_exact_gap_rows_print_no_nan():
     assert s["n_vs_hertz"] == 0 and s["n_exact"] == 4
     text = hertz_check_text(s)
     assert text == ("4 exact-gap rows: no Hertz reference (the cam's curvature changes across the "
-                    "contact, at a join or on a fast-changing flank: the parabolic gap of Hertz does not hold; they depart from Hertz "
-                    "by up to 6.200 %)")
+                    "contact, at a join or on a fast-changing flank: the parabolic gap of Hertz "
+                    "does not hold; they depart from Hertz by up to 6.200 %)")
     assert "nan %" not in report_markdown(res)
 
 
@@ -90,6 +91,16 @@ def test_cli_headline_on_the_junction_example(tmp_path, capsys):
     assert m and float(m.group(1)) == pytest.approx(arc, abs=5e-4)
     assert int(m.group(2)) == sum(r["model"] != "fe_exact" for r in rows)
     m = re.search(r"(\d+) exact-gap rows: no Hertz reference \(the cam's curvature changes across "
-                  r"the contact, at a join or on a fast-changing flank: the parabolic gap of Hertz does not hold; they depart from "
-                  r"Hertz by up to ([\d.]+) %\)", printed)
+                  r"the contact, at a join or on a fast-changing flank: the parabolic gap of Hertz "
+                  r"does not hold; they depart from Hertz by up to ([\d.]+) %\)", printed)
     assert m and float(m.group(2)) == pytest.approx(exact, abs=0.05)
+
+
+def test_report_md_names_the_models_that_answered():
+    """report.md lists the rows per model, as the command line's models line does."""
+    t = _table()
+    t["model"] = np.array(["fe_arc", "fe_arc", "fe_exact", "fe_arc+coating", ""])
+    res = SweepResult(table=t, method="fe", provenance={"options": {
+        "tolerance": 2e-3, "models": {"hertz": 0, "fe_arc": 2, "fe_exact": 1, "fe_arc+coating": 1}}})
+    md = report_markdown(res)
+    assert "- models (rows): `fe_arc` 2, `fe_exact` 1, `fe_arc+coating` 1" in md

@@ -430,6 +430,9 @@ def report_markdown(result: SweepResult) -> str:
     if result.method == "fe":
         lines.append(f"- {families_text(s['n_families'], s['reuse_error_max'], s['n_binned'])} (tolerance "
                      f"{100 * float(o.get('tolerance', float('nan'))):g} %)")
+    if o.get("models"):   # the model that answered, rows per model (report.html explains each)
+        lines.append("- models (rows): " + ", ".join(f"`{m}` {n}" for m, n in o["models"].items()
+                                                     if n))
     lines += ["", "| quantity | worst value | unit | at cam angle (deg) | depth (um) | note |",
               "|---|---|---|---|---|---|"]
     lines += [f"| {r['what']} | {r['value']:.4g} | {r['unit']} | {angle_text(r['theta_deg'])} | "
