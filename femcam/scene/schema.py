@@ -226,7 +226,7 @@ _FLOOR_WHY = ("the reuse error is a discretisation effect of the order of the FE
               "angle needs its own model. Refine a_over_h for more accurate p0")
 _FE = {"a_over_h": ("(elements per contact half-width)", 1.0, "pos", False),
        "tolerance": ("(relative p0 reuse error)", 1.0, "pos", False),
-       "rtol_pct": ("(% estimated p0 error)", 1.0, "pos", False)}
+       "rtol_pct": ("%", 1.0, "pos", False)}
 _SWEEP = {"method": ("", None, "str", False), "angles_deg": ("", None, "str", False),
           "chunk_size": ("angles", 1.0, "num", False), "vtk_every": ("angles", 1.0, "num", False),
           "plots": ("", None, "bool", False)}
