@@ -431,7 +431,8 @@ class DiskCache:
                 except OSError:
                     pass
             self._failed_write = True
-            _say(f"cannot write to {self.root} ({exc.strerror or exc}); building without storing")
+            _say(f"cannot write to {self.root} (--cache-dir or FEMCAM_CACHE_DIR: {exc.strerror or exc}); "
+                 "building without storing")
             return False
         self.stats["writes"] += 1
         self._evict()
