@@ -32,6 +32,7 @@ from .kinematics import LAW_NAMES
 from .scene import load_scene
 from .scene import schema as _schema
 from .scene.ranges import RANGES, group_of, span
+from .sweep.settings import resolve_settings
 
 #: the example the template is made from (a roller follower, every common table)
 TEMPLATE_BASE = "seed002_study_model.toml"
@@ -120,8 +121,11 @@ def check_scene(path) -> SceneCheck:
     ------
     SceneError
         Every problem of the file (dotted key, value, unit, range).
+    InputError
+        ``[fe]``/``[sweep]`` settings the sweep refuses together (``rtol_pct`` with ``a_over_h``).
     """
     sc = load_scene(path)
+    resolve_settings(sc, {})   # the [fe]/[sweep] settings as the sweep reads them (conflicts refused)
     theta = np.radians(np.arange(0.0, 360.0, CHECK_STEP_DEG))
     st = sc.analyse(theta, allow_undercut=True)
     phi, phi_theta = sc.max_pressure_angle

@@ -101,3 +101,13 @@ def test_rtol_against_a_over_h(tmp_path):
     with pytest.raises(InputError, match=r"\[fe\] rtol_pct = 1 %: cannot be given with \[fe\] a_over_h"):
         resolve_settings(sc3, {})
     assert resolve_settings(sc3, {"a_over_h": 8.0}).a_over_h == 8.0
+
+
+def test_check_refuses_what_the_sweep_refuses(tmp_path, capsys):
+    """`femcam check` reads the [fe]/[sweep] settings as the sweep does: a scene giving both
+    rtol_pct and a_over_h fails the check with the sweep's one line, not only the sweep."""
+    path = _scene(tmp_path, "[fe]\nrtol_pct = 0.5\na_over_h = 12\n")
+    assert main(["check", str(path)]) == 1
+    err = capsys.readouterr().err
+    assert "[fe] rtol_pct = 0.5 %: cannot be given with [fe] a_over_h" in err
+    assert len(err.strip().splitlines()) == 1
