@@ -20,8 +20,8 @@ from dataclasses import dataclass
 __all__ = ["UNITS", "Column"]
 
 #: unit suffixes of CSV names, longest first (the first one a name ends with is its unit)
-UNITS = ("mm3_per_N_m", "per_rev_nm", "N_per_mm", "m_per_s", "mPa_s", "m_s2", "m_s3", "m_s",
-         "cycles", "MPa", "deg", "pct", "mm", "um", "nm", "ms", "N", "K", "C")
+UNITS = ("mm3_per_N_m", "per_rev_nm", "m_per_rev", "N_per_mm", "m_per_s2", "m_per_s", "mPa_s",
+         "m_s2", "m_s3", "m_s", "cycles", "MPa", "deg", "pct", "mm", "um", "nm", "ms", "N", "K", "C")
 
 
 @dataclass(frozen=True, slots=True)

@@ -367,8 +367,8 @@ def test_extra_columns_parallel_equal_serial():
     r1 = sweep(scene, angles=th, method="hertz", workers=1, chunk_size=2)
     r2 = sweep(scene, angles=th, method="hertz", workers=2, chunk_size=2)
     cols, text = extras.extra_columns(scene)
-    for si, _, _ in cols:   # the same arithmetic in another process: equal to rounding
-        np.testing.assert_allclose(r2.table[si], r1.table[si], rtol=1e-12, equal_nan=True)
+    for c in cols:   # the same arithmetic in another process: equal to rounding
+        np.testing.assert_allclose(r2.table[c.si], r1.table[c.si], rtol=1e-12, equal_nan=True)
     for t in text:
         assert list(r2.table[t]) == list(r1.table[t])
 
