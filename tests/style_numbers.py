@@ -18,7 +18,11 @@ Counts:
 * files with a function that takes the scene (a parameter named ``scene`` or ``sc``, or
   annotated ``Scene``);
 * the sweep package: module count and import depth (the longest chain of module-level imports
-  between its modules).
+  between its modules);
+* column declarations as bare tuples (:func:`bare_columns`): a tuple literal ``(si, csv,
+  factor)`` or a dict value ``csv: (csv, factor)`` whose CSV name ends in a unit of
+  ``femcam._columns.UNITS`` and whose factor is a number expression, and a comprehension that
+  builds ``(name, csv, f)`` triples; declarations are :class:`femcam._columns.Column`.
 """
 
 from __future__ import annotations
@@ -145,6 +149,45 @@ def sweep_package(root: Path) -> tuple[int, int]:
     return len(mods), max(depth(m) for m in mods)
 
 
+#: unit suffixes of CSV names (femcam/_columns.py ``UNITS``; repeated here: no femcam import)
+UNITS = ("mm3_per_N_m", "per_rev_nm", "m_per_rev", "N_per_mm", "m_per_s2", "m_per_s", "mPa_s",
+         "m_s2", "m_s3", "m_s", "cycles", "MPa", "deg", "pct", "mm", "um", "nm", "ms", "N", "K", "C")
+
+
+def _csv_name(node) -> bool:
+    return isinstance(node, ast.Constant) and isinstance(node.value, str) \
+        and re.fullmatch(r"[A-Za-z]\w*", node.value) is not None \
+        and any(node.value.endswith("_" + u) for u in UNITS)
+
+
+def _number(node) -> bool:
+    if isinstance(node, ast.Constant):
+        return isinstance(node.value, int | float) and not isinstance(node.value, bool)
+    if isinstance(node, ast.Name):  # a constant or a factor variable, not a class (CamelCase)
+        return not (node.id[0].isupper() and not node.id.isupper())
+    return isinstance(node, ast.BinOp | ast.UnaryOp | ast.Attribute)
+
+
+def bare_columns(root: Path) -> list[str]:
+    """Column declarations as bare tuples (module docstring), as ``path:line what``."""
+    out = []
+    for rel, text in _files(root):
+        for node in ast.walk(ast.parse(text)):
+            if isinstance(node, ast.Tuple) and len(node.elts) == 3 \
+                    and isinstance(node.elts[0], ast.Constant | ast.JoinedStr) \
+                    and _csv_name(node.elts[1]) and _number(node.elts[2]):
+                out.append(f"{rel}:{node.lineno} (si, csv, factor)")
+            if isinstance(node, ast.Dict):
+                out += [f"{rel}:{v.lineno} key: (csv, factor)" for v in node.values
+                        if isinstance(v, ast.Tuple) and len(v.elts) == 2 and _csv_name(v.elts[0])
+                        and _number(v.elts[1])]
+            if isinstance(node, ast.GeneratorExp | ast.ListComp) and isinstance(node.elt, ast.Tuple) \
+                    and len(node.elt.elts) == 3 and isinstance(node.elt.elts[2], ast.Name) \
+                    and "csv" in ast.unparse(node.elt.elts[1]):
+                out.append(f"{rel}:{node.lineno} built (name, csv, f)")
+    return out
+
+
 def writers(root: Path) -> list[str]:
     """Writer calls outside femcam/io (:mod:`test_writers`)."""
     sys.path.insert(0, str(HERE))
@@ -160,7 +203,8 @@ def numbers(root: Path) -> dict[str, int]:
             "compat aliases and re-exports": len(compat_aliases(root)),
             "follower dispatch sites outside the follower classes": len(follower_dispatch(root)),
             "files with a function taking the scene": len(set(scene_files(root))),
-            "sweep package modules": n_mod, "sweep import depth": depth}
+            "sweep package modules": n_mod, "sweep import depth": depth,
+            "column declarations as bare tuples": len(bare_columns(root))}
 
 
 if __name__ == "__main__":
@@ -168,5 +212,5 @@ if __name__ == "__main__":
     for k, v in numbers(root).items():
         print(f"{k}: {v}")
     if "-v" in sys.argv:
-        for line in compat_aliases(root) + follower_dispatch(root) + writers(root):
+        for line in compat_aliases(root) + follower_dispatch(root) + writers(root) + bare_columns(root):
             print("  ", line)

@@ -703,6 +703,8 @@ def _arm_dyn():
 RESULT = "a result or built-model record femcam returns (its inputs are checked where it is made)"
 RECORDS = "takes records only (Scene, Material, results, rows), checked where they are made"
 NOT_AN_INPUT: dict[str, str] = {
+    "femcam.io.Column": "a column declaration of femcam's own tables (names and a unit factor), "
+                        "not a physical input",
     **{n: RESULT for n in (
         "femcam.assess.AssessInputs", "femcam.assess.Assessment", "femcam.bodies.CamDiskModel",
         "femcam.bodies.CamDiskResult", "femcam.bodies.CamGlobalModel", "femcam.bodies.RingModel",

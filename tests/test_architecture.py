@@ -189,3 +189,14 @@ def test_no_follower_dispatch_outside_the_follower_classes():
     from style_numbers import follower_dispatch
 
     assert follower_dispatch(ROOT) == []
+
+
+def test_columns_declared_with_the_column_type():
+    """Issue 24 item 4: a table column is declared as a ``femcam._columns.Column``, not as a
+    bare ``(si, csv, factor)`` tuple (tests/style_numbers.py, docs/architecture.md)."""
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from style_numbers import bare_columns
+
+    assert bare_columns(ROOT) == []

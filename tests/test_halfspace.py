@@ -308,7 +308,7 @@ def test_finite_length_rows_on_the_crowned_scene():
     assert np.all(rows["y_centre"] < 0)                       # tilt +0.02 deg lifts the +y end
     csv = to_csv_columns(rows)
     np.testing.assert_allclose(csv["p_axial_peak_MPa"], rows["p_axial_peak"] * 1e-6)
-    assert set(csv) == {v[0] for v in COLUMNS.values()}
+    assert set(csv) == {c.csv for c in COLUMNS.values()}
 
 
 def test_finite_length_rows_refuses_knife_edge():

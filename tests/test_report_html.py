@@ -119,7 +119,7 @@ def _check_worst(out, page):
     theta_deg = np.degrees(z["theta"])
     # column -> (factor SI -> unit shown, which extreme, depth column)
     spec = {c: (f, how, "") for _, items in ITEMS.values() for c, _, _, f, how in items}
-    factor = {si: f for si, _, f in COLUMNS}
+    factor = {c.si: c.factor for c in COLUMNS}
     spec.update({c: (factor[c], how, d) for c, _, _, how, d in PEAKS})
     for row in page.worst:
         col, (_, value, unit, angle, dep, csv, _, note) = row["column"], row["cells"]

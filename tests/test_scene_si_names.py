@@ -102,9 +102,9 @@ def test_layer_columns_si_names_csv_names_unchanged():
     csv = ("interface_tau_max_MPa", "interface_sn_min_MPa", "interface_sn_max_MPa",
            "interface_utilisation", "coating_sx_max_MPa", "coating_sx_utilisation",
            "case_utilisation_max", "case_z_at_max_mm", "case_margin")
-    assert tuple(c for _, c, _ in providers.LAYERS) == csv
-    assert "layer_interface_tau_max" in {si for si, _, _ in providers.LAYERS}
-    assert "layer_case_z_at_max" in {si for si, _, _ in providers.LAYERS}
-    for si, c, f in providers.LAYERS:
-        assert not si.endswith(EDGE), si
-        assert f == (1e-6 if c.endswith("_MPa") else 1e3 if c.endswith("_mm") else 1.0)
+    assert tuple(c.csv for c in providers.LAYERS) == csv
+    assert "layer_interface_tau_max" in {c.si for c in providers.LAYERS}
+    assert "layer_case_z_at_max" in {c.si for c in providers.LAYERS}
+    for col in providers.LAYERS:
+        assert not col.si.endswith(EDGE), col.si
+        assert col.factor == (1e-6 if col.unit == "MPa" else 1e3 if col.unit == "mm" else 1.0)

@@ -46,7 +46,7 @@ def test_layer_columns_do_not_depend_on_chunk_size():
     scene = load_scene(EX + "seed002_coated.toml")
     th = np.radians([20.0, 40.0])
     t1, t2 = _table(scene, th, 1), _table(scene, th, 2)
-    cols = [si for si, _, _ in providers.LAYERS]
+    cols = [c.si for c in providers.LAYERS]
     assert np.all(np.isfinite(np.asarray(t1["layer_coating_sx_max"], float)))
     _assert_identical(t1, t2, [c for c in t1 if c not in TIMING])
     assert set(cols) <= set(t1)

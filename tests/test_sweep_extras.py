@@ -67,7 +67,7 @@ def test_assess_columns_equal_direct_call(tmp_path):
     scene = load_scene(EX + "seed002_assess.toml")
     r, cols = _sweep_csv(scene, TH8, tmp_path, chunk_size=3)
     direct = assess_rows(scene, TH8)          # method hertz: no FE a/p0, Hertz as the direct call
-    for si, csv, f in ASSESS_COLUMNS:
+    for si, csv, f in ((c.si, c.csv, c.factor) for c in ASSESS_COLUMNS):
         if si in ("theta", "Fc"):
             continue
         name = csv if csv not in ("a_um", "p0_MPa") else "assess_" + csv
@@ -110,8 +110,8 @@ def test_halfspace_columns_and_axial_peak_wear(tmp_path):
     r, cols = _sweep_csv(scene, TH8, tmp_path)
     # every angle warm-started from its anchor angle, as the direct call with start="anchor"
     direct = finite_length_rows(scene, TH8, start="anchor")
-    for k, (csv, f) in HS_COLUMNS.items():
-        _close(cols[csv], direct[k], f)
+    for k, c in HS_COLUMNS.items():
+        _close(cols[c.csv], direct[k], c.factor)
     assert list(cols["hs_flags"]) == [";".join(f) for f in direct["flags"]]
     # Archard per pass at the most loaded slice: h = k w_max v_slip / V_cam (independent form)
     k = wear_coefficient_info(scene)[0]
@@ -147,10 +147,11 @@ def test_needle_roller_sweep_writes_ring_results(tmp_path):
     model = build_for(scene, np.where(g.Fc > 0, g.Fc, np.nan), g.rho)   # graded as the provider says
     st = scene.analyse(th)
     direct = ring_rows(scene, th, st.Fc, st.rho, model=model)
-    side = {csv for _, csv, _ in providers.RING}
-    for k, (csv, f) in RING_COLUMNS.items():
+    side = {c.csv for c in providers.RING}
+    for k, c in RING_COLUMNS.items():
+        csv = c.csv
         if csv in side:
-            _close(cols[csv], direct[k], f)
+            _close(cols[csv], direct[k], c.factor)
         elif k != "theta":   # the ring's cam contact is no side column: it answers the headline
             assert csv not in cols, csv
     # the headline: the peak of the ring's solved pressure, the fitted ellipse, model ...+ring
@@ -187,7 +188,7 @@ def test_layer_columns_equal_direct_call(tmp_path):
     # method hertz: no FE solve answered the rows, so the layer columns come from the layered
     # model of each angle (method fe takes them from the headline solve: tests/test_sweep_coated.py)
     assert set(cols["layer_source"]) == {"layer_model"}
-    for _, csv, _ in providers.LAYERS:
+    for csv in (c.csv for c in providers.LAYERS):
         _close(cols[csv], direct[csv])
     assert r.provenance["extras"]["layers"]["case_margin_min"] == pytest.approx(
         np.nanmin(direct["case_margin"]), rel=1e-12)
@@ -366,8 +367,8 @@ def test_extra_columns_parallel_equal_serial():
     r1 = sweep(scene, angles=th, method="hertz", workers=1, chunk_size=2)
     r2 = sweep(scene, angles=th, method="hertz", workers=2, chunk_size=2)
     cols, text = extras.extra_columns(scene)
-    for si, _, _ in cols:   # the same arithmetic in another process: equal to rounding
-        np.testing.assert_allclose(r2.table[si], r1.table[si], rtol=1e-12, equal_nan=True)
+    for c in cols:   # the same arithmetic in another process: equal to rounding
+        np.testing.assert_allclose(r2.table[c.si], r1.table[c.si], rtol=1e-12, equal_nan=True)
     for t in text:
         assert list(r2.table[t]) == list(r1.table[t])
 

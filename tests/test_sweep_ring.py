@@ -132,12 +132,12 @@ def test_no_column_claims_the_headline_twice():
     headline); the finite-length columns name the most loaded slice, and the flag's sentence
     says which of p0_fe_MPa and p0_peak_slice_MPa is which."""
     ring = load_scene(EX / "seed002_needle_roller.toml")
-    cols = [c[1] for c in extra_columns(ring)[0]]
+    cols = [c.csv for c in extra_columns(ring)[0]]
     assert not [c for c in cols if c.startswith(("ring_p0", "ring_a", "solid_", "ring_d"))], cols
     assert "bore_hoop_max_MPa" in cols and "needle_Qmax_on_N" in cols
     assert omitted_physics(ring) == () and answered_by(ring)[0].startswith("headline_ring:")
     crowned = load_scene(EX / "seed002_crowned.toml")
-    cols = [c[1] for c in extra_columns(crowned)[0]]
+    cols = [c.csv for c in extra_columns(crowned)[0]]
     assert {"p0_peak_slice_MPa", "a_peak_slice_um", "F_peak_slice_N"} <= set(cols)
     assert not [c for c in cols if "fe_slice" in c]
     (flag, sentence), = omitted_physics(crowned)

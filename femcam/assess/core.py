@@ -29,6 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _validate
+from .._columns import Column
 from .._repr import compact_repr, dataframe
 from ..errors import InputError
 from ..hertz import HertzValidityWarning, LineContact
@@ -40,37 +41,37 @@ from ..wear.options import follower_tip_radius, slip_kwargs, wear_coefficient_in
 from ..wear.slip import follower_slip
 from .inputs import AssessInputs, assessment_inputs
 
-#: (SI name, CSV name with unit, factor SI -> CSV)
+#: the assessment's columns (:class:`femcam._columns.Column`)
 COLUMNS = (
-    ("theta", "theta_deg", 180.0 / math.pi),
-    ("Fc", "Fc_N", 1.0),
-    ("cam_x", "cam_x_mm", 1e3),
-    ("cam_y", "cam_y_mm", 1e3),
-    ("R", "R_eff_mm", 1e3),
-    ("a", "a_um", 1e6),
-    ("p0", "p0_MPa", 1e-6),
-    ("u_cam", "u_cam_m_per_s", 1.0),
-    ("u_follower", "u_follower_m_per_s", 1.0),
-    ("U", "U_entrain_m_per_s", 1.0),
-    ("v_slide", "v_slide_m_per_s", 1.0),
-    ("eta0", "eta0_mPa_s", 1e3),
-    ("h_min", "h_min_um", 1e6),
-    ("h_c", "h_c_um", 1e6),
-    ("lam", "lambda", 1.0),
-    ("dT_flash", "dT_flash_K", 1.0),
-    ("T_contact", "T_contact_C", 1.0),
-    ("Pe_cam", "Pe_cam", 1.0),
-    ("Pe_follower", "Pe_follower", 1.0),
-    ("p0_over_k", "p0_over_k", 1.0),
-    ("sf_yield", "sf_yield", 1.0),
-    ("sf_shakedown", "sf_shakedown", 1.0),
-    ("dtau_orth", "dtau_orth_MPa", 1e-6),
-    ("util_subsurface", "util_subsurface", 1.0),
-    ("sf_subsurface", "sf_subsurface", 1.0),
-    ("sf_surface_fatigue", "sf_surface_fatigue", 1.0),
-    ("N_pitting", "N_pitting_cycles", 1.0),
-    ("sf_scuffing", "sf_scuffing", 1.0),
-    ("k_wear", "k_wear_mm3_per_N_m", 1e9),
+    Column("theta", "theta_deg", 180.0 / math.pi),
+    Column("Fc", "Fc_N", 1.0),
+    Column("cam_x", "cam_x_mm", 1e3),
+    Column("cam_y", "cam_y_mm", 1e3),
+    Column("R", "R_eff_mm", 1e3),
+    Column("a", "a_um", 1e6),
+    Column("p0", "p0_MPa", 1e-6),
+    Column("u_cam", "u_cam_m_per_s", 1.0),
+    Column("u_follower", "u_follower_m_per_s", 1.0),
+    Column("U", "U_entrain_m_per_s", 1.0),
+    Column("v_slide", "v_slide_m_per_s", 1.0),
+    Column("eta0", "eta0_mPa_s", 1e3),
+    Column("h_min", "h_min_um", 1e6),
+    Column("h_c", "h_c_um", 1e6),
+    Column("lam", "lambda", 1.0),
+    Column("dT_flash", "dT_flash_K", 1.0),
+    Column("T_contact", "T_contact_C", 1.0),
+    Column("Pe_cam", "Pe_cam", 1.0),
+    Column("Pe_follower", "Pe_follower", 1.0),
+    Column("p0_over_k", "p0_over_k", 1.0),
+    Column("sf_yield", "sf_yield", 1.0),
+    Column("sf_shakedown", "sf_shakedown", 1.0),
+    Column("dtau_orth", "dtau_orth_MPa", 1e-6),
+    Column("util_subsurface", "util_subsurface", 1.0),
+    Column("sf_subsurface", "sf_subsurface", 1.0),
+    Column("sf_surface_fatigue", "sf_surface_fatigue", 1.0),
+    Column("N_pitting", "N_pitting_cycles", 1.0),
+    Column("sf_scuffing", "sf_scuffing", 1.0),
+    Column("k_wear", "k_wear_mm3_per_N_m", 1e9),
 )
 TEXT = ("regime", "flags")
 #: criterion -> (column, "min"|"max") for the worst-angle summary
@@ -250,7 +251,7 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
     st = sc.analyse(theta)
     Fc, a, p0, w, R, E_star, valid, source = _contact(sc, st, R2, table, n)
     u1, u2 = _speeds(scene, sc, st, theta, Fc, tip)
-    out = {c[0]: np.full(n, np.nan) for c in COLUMNS}
+    out = {c.si: np.full(n, np.nan) for c in COLUMNS}
     out.update(theta=theta, Fc=Fc, cam_x=st.profile.x, cam_y=st.profile.y)
     out.update(R=R, a=a, p0=p0, u_cam=u1, u_follower=u2, U=0.5 * (u1 + u2),
                v_slide=np.abs(u1 - u2))
@@ -460,7 +461,7 @@ def csv_columns(rows: dict) -> dict:
     dict of str -> ndarray, shape (n,)
         Float columns renamed and scaled to their CSV unit (:data:`COLUMNS`), then the text columns.
     """
-    out = {csv: np.asarray(rows[si], float) * f for si, csv, f in COLUMNS}
+    out = {c.csv: np.asarray(rows[c.si], float) * c.factor for c in COLUMNS}
     out.update({t: rows[t] for t in (*TEXT, "source") if t in rows})
     return out
 

@@ -28,6 +28,7 @@ import math
 import numpy as np
 
 from .. import _validate
+from .._columns import Column
 from ..errors import InputError
 from ..materials import effective_modulus
 from .cam_geometry import CamDisk, outline_from_scene
@@ -36,12 +37,13 @@ from .cam_model import CamMeshOptions
 from .cam_solve import shaft_arc
 from .contact import solve_multi_lcp
 
-#: key -> (CSV column name, factor from SI)
-CAM_CSV_COLUMNS = {
-    "hoop_max": ("cam_bore_hoop_max_MPa", 1e-6), "hoop_angle": ("cam_bore_hoop_angle_deg", 180.0 / math.pi),
-    "shaft_p0": ("shaft_p0_MPa", 1e-6), "shaft_arc": ("shaft_arc_deg", 180.0 / math.pi),
-    "web": ("cam_web_mm", 1e3),
-}
+#: key -> its :class:`femcam._columns.Column` (CSV name, factor from SI)
+CAM_CSV_COLUMNS = {c.si: c for c in (
+    Column("hoop_max", "cam_bore_hoop_max_MPa", 1e-6),
+    Column("hoop_angle", "cam_bore_hoop_angle_deg", 180.0 / math.pi),
+    Column("shaft_p0", "shaft_p0_MPa", 1e-6), Column("shaft_arc", "shaft_arc_deg", 180.0 / math.pi),
+    Column("web", "cam_web_mm", 1e3),
+)}
 
 
 def has_cam_bore(scene) -> bool:
@@ -291,5 +293,5 @@ def to_csv_columns(rows: dict) -> dict:
     dict of str to ndarray
         ``{csv name: array}`` in the column's unit (MPa, deg, mm).
     """
-    return {CAM_CSV_COLUMNS[k][0]: np.asarray(v) * CAM_CSV_COLUMNS[k][1] for k, v in rows.items()
+    return {CAM_CSV_COLUMNS[k].csv: np.asarray(v) * CAM_CSV_COLUMNS[k].factor for k, v in rows.items()
             if k in CAM_CSV_COLUMNS}

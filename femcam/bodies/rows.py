@@ -42,6 +42,7 @@ import math
 import numpy as np
 
 from .. import _validate
+from .._columns import Column
 from ..errors import InputError
 from ..materials import effective_modulus
 from ..mesh import MeshOptions
@@ -49,16 +50,17 @@ from .geometry import RollerBearing
 from .model import RingMeshOptions, RingModel
 from .solve import solve_ring
 
-#: key -> (CSV column name, factor from SI)
-CSV_COLUMNS = {
-    "theta": ("theta_deg", 180.0 / math.pi), "p0": ("ring_p0_MPa", 1e-6), "a": ("ring_a_um", 1e6),
-    "p0_peak": ("ring_p0_peak_MPa", 1e-6),
-    "p0_solid": ("solid_p0_MPa", 1e-6), "a_solid": ("solid_a_um", 1e6), "dp0": ("ring_dp0_pct", 100.0),
-    "da": ("ring_da_pct", 100.0), "hoop_max": ("bore_hoop_max_MPa", 1e-6),
-    "hoop_angle": ("bore_hoop_angle_deg", 180.0 / math.pi), "pin_p0": ("pin_p0_MPa", 1e-6),
-    "pin_arc": ("pin_arc_deg", 180.0 / math.pi), "needle_Q_on": ("needle_Qmax_on_N", 1.0),
-    "needle_Q_between": ("needle_Qmax_between_N", 1.0),
-}
+#: key -> its :class:`femcam._columns.Column` (CSV name, factor from SI)
+CSV_COLUMNS = {c.si: c for c in (
+    Column("theta", "theta_deg", 180.0 / math.pi), Column("p0", "ring_p0_MPa", 1e-6),
+    Column("a", "ring_a_um", 1e6), Column("p0_peak", "ring_p0_peak_MPa", 1e-6),
+    Column("p0_solid", "solid_p0_MPa", 1e-6), Column("a_solid", "solid_a_um", 1e6),
+    Column("dp0", "ring_dp0_pct", 100.0), Column("da", "ring_da_pct", 100.0),
+    Column("hoop_max", "bore_hoop_max_MPa", 1e-6),
+    Column("hoop_angle", "bore_hoop_angle_deg", 180.0 / math.pi),
+    Column("pin_p0", "pin_p0_MPa", 1e-6), Column("pin_arc", "pin_arc_deg", 180.0 / math.pi),
+    Column("needle_Q_on", "needle_Qmax_on_N", 1.0), Column("needle_Q_between", "needle_Qmax_between_N", 1.0),
+)}
 
 
 def bearing_from_scene(scene) -> RollerBearing:
@@ -216,5 +218,5 @@ def to_csv_columns(rows: dict) -> dict:
     dict of str to ndarray
         ``{csv name: array}`` in the column's unit (deg, MPa, um, %, N).
     """
-    return {CSV_COLUMNS[k][0]: np.asarray(v) * CSV_COLUMNS[k][1] for k, v in rows.items()
+    return {CSV_COLUMNS[k].csv: np.asarray(v) * CSV_COLUMNS[k].factor for k, v in rows.items()
             if k in CSV_COLUMNS}

@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import _validate
+from .._columns import Column
 from ..dynamics import arm_follower, rigid_jump_speed
 from ..io import atomic_write_text, provenance, write_table
 from ..scene import load_scene
@@ -37,13 +38,13 @@ from ._flags import RANGE_RULE, Range, add_number
 #: the analytic chain's columns, named and scaled as in the sweep table (one copy of each
 #: column's unit: :data:`femcam.sweep.table.COLUMNS`)
 _ANALYTIC = ("theta", "s", "v", "a", "j", "phi", "rho", "Fc")
-_SWEEP_COLUMNS = {si: (name, f) for si, name, f in SWEEP_COLUMNS}
+_SWEEP_COLUMNS = {c.si: c for c in SWEEP_COLUMNS}
 
-#: CSV columns: (name with unit, SceneState attribute, factor from SI); the first eight are
-#: the printed table
-COLUMNS = (*((_SWEEP_COLUMNS[a][0], a, _SWEEP_COLUMNS[a][1]) for a in _ANALYTIC),
-           ("contact_x_mm", "contact_x", 1e3), ("contact_y_mm", "contact_y", 1e3),
-           ("liftoff", "liftoff", 1), ("undercut", "undercut", 1))
+#: CSV columns (:class:`femcam._columns.Column`; ``si`` is the SceneState attribute); the first
+#: eight are the printed table
+COLUMNS = (*(_SWEEP_COLUMNS[a] for a in _ANALYTIC),
+           Column("contact_x", "contact_x_mm", 1e3), Column("contact_y", "contact_y_mm", 1e3),
+           Column("liftoff", "liftoff", 1.0), Column("undercut", "undercut", 1.0))
 
 
 #: ranges of the numeric flags (femcam.cli._flags)
@@ -148,10 +149,10 @@ def _table(st, every_deg: float) -> str:
     else:
         pick = np.arange(th.size)
     cols = COLUMNS[:8]
-    head = "".join(f"{n:>12s}" for n, _, _ in cols)
+    head = "".join(f"{c.csv:>12s}" for c in cols)
     rows = []
     for i in pick:
-        vals = [float(np.asarray(getattr(st, a))[i]) * f for _, a, f in cols]
+        vals = [float(np.asarray(getattr(st, c.si))[i]) * c.factor for c in cols]
         # + 0.0 turns -0.0 into 0.0, so the table never shows "-0"
         rows.append("".join(f"{v + 0.0:12.5g}" for v in vals) + ("  LIFT-OFF" if st.liftoff[i] else ""))
     return "\n".join([head, *rows])
@@ -177,7 +178,7 @@ def write_csv(path, scene, st, command: str) -> Path:
     pathlib.Path
         The path written.
     """
-    cols = {n: np.asarray(getattr(st, a), float) * f for n, a, f in COLUMNS}
+    cols = {c.csv: np.asarray(getattr(st, c.si), float) * c.factor for c in COLUMNS}
     cols["liftoff"] = cols["liftoff"].astype(int)
     cols["undercut"] = cols["undercut"].astype(int)
     prov = provenance(scene_path=scene.source_path, command=command, scene_name=scene.name,

@@ -23,24 +23,25 @@ import weakref
 import numpy as np
 
 from .. import _validate
+from .._columns import Column
 from ..errors import InputError
 from ..materials import effective_modulus
 from .crown import RollerProfile
 from .strip import FiniteLengthContact
 
-#: SI column -> (CSV column name with unit, factor from SI to the CSV unit)
-COLUMNS = {
-    "p_axial_peak": ("p_axial_peak_MPa", 1e-6),     # peak of p(x, y) over the strip
-    "y_peak": ("y_axial_peak_mm", 1e3),             # axial position of that peak (0 = mid-plane)
-    "L_eff": ("L_eff_mm", 1e3),                     # loaded length (slices with w > 0)
-    "w_max": ("w_max_N_per_mm", 1e-3),              # most loaded slice (mean over 2b axially), N/mm
-    "y_wmax": ("y_w_max_mm", 1e3),                  # axial position of that slice
-    "y_centre": ("y_load_centre_mm", 1e3),          # load centre int w y dy / F
-    "edge_factor": ("edge_factor", 1.0),            # p_axial_peak / 2D Hertz p0 at w = F / L
-    "iterations": ("hs_iterations", 1.0),           # CG iterations
-    "converged": ("hs_converged", 1.0),
-    "flagged": ("hs_flagged", 1.0),                 # any StripResult flag (see ``flags``)
-}
+#: SI column -> its :class:`femcam._columns.Column` (CSV name with unit, factor from SI)
+COLUMNS = {c.si: c for c in (
+    Column("p_axial_peak", "p_axial_peak_MPa", 1e-6, "peak of p(x, y) over the strip"),
+    Column("y_peak", "y_axial_peak_mm", 1e3, "axial position of that peak (0 = mid-plane)"),
+    Column("L_eff", "L_eff_mm", 1e3, "loaded length (slices with w > 0)"),
+    Column("w_max", "w_max_N_per_mm", 1e-3, "most loaded slice (mean over 2b axially)"),
+    Column("y_wmax", "y_w_max_mm", 1e3, "axial position of that slice"),
+    Column("y_centre", "y_load_centre_mm", 1e3, "load centre int w y dy / F"),
+    Column("edge_factor", "edge_factor", 1.0, "p_axial_peak / 2D Hertz p0 at w = F / L"),
+    Column("iterations", "hs_iterations", 1.0, "CG iterations"),
+    Column("converged", "hs_converged", 1.0),
+    Column("flagged", "hs_flagged", 1.0, "any StripResult flag (see ``flags``)"),
+)}
 
 
 #: spacing of the anchor angles of ``start="anchor"`` (rad): every angle is warm-started from the
@@ -209,7 +210,7 @@ def to_csv_columns(rows: dict) -> dict:
     >>> to_csv_columns({"L_eff": np.array([0.01])})
     {'L_eff_mm': array([10.])}
     """
-    return {COLUMNS[k][0]: np.asarray(v) * COLUMNS[k][1] for k, v in rows.items() if k in COLUMNS}
+    return {COLUMNS[k].csv: np.asarray(v) * COLUMNS[k].factor for k, v in rows.items() if k in COLUMNS}
 
 
 def has_finite_length(scene) -> bool:

@@ -10,12 +10,10 @@ from pathlib import Path
 
 import numpy as np
 
+from .._columns import Column
 from ..errors import InputError
 from .atomic import atomic_write_bytes
 from .provenance import header_dict
-
-#: one column of a written table: (internal SI name, CSV column name, factor SI -> CSV unit)
-Column = tuple[str, str, float]
 
 _CSV_TEXT = str.maketrans({",": ";", "#": "No.", '"': "'", "\n": " ", "\r": " "})
 
@@ -199,7 +197,7 @@ def write_csv(path, table: dict, prov: dict | None = None, *, columns: Sequence[
         chunk by chunk).
     prov : dict, optional
         Provenance (:func:`femcam.io.provenance`), written to the sidecar (:func:`meta_path`).
-    columns : sequence of (name, csv_name, factor)
+    columns : sequence of femcam._columns.Column
         Numeric columns in CSV order; ``csv = SI * factor``.
     text_columns : sequence of str
         String columns written after the numeric ones (:func:`csv_text`).
@@ -211,11 +209,11 @@ def write_csv(path, table: dict, prov: dict | None = None, *, columns: Sequence[
     Path
         ``path``.
     """
-    names = [c[1] for c in columns] + list(text_columns)
+    names = [c.csv for c in columns] + list(text_columns)
 
     def blocks():  # in blocks of rows: memory independent of n
         for rows in _row_blocks(table):
-            yield ([np.asarray(rows[k], dtype=float) * fac for k, _, fac in columns]
+            yield ([np.asarray(rows[c.si], dtype=float) * c.factor for c in columns]
                    + [np.asarray(rows[k]).astype(str) for k in text_columns])
 
     return _write_table(path, names, blocks(), prov, title)

@@ -9,6 +9,7 @@ import math
 import numpy as np
 
 from .. import _validate
+from .._columns import Column
 from ..errors import InputError
 from ..kinematics import LAW_NAMES
 from .chain import angle_grid, constraint_value, evaluate, residual_vibration
@@ -20,13 +21,14 @@ __all__ = ["STANDARD_LAWS", "COMPARE_COLUMNS", "compare_laws"]
 STANDARD_LAWS = ("bezier5", "bezier7", "bezier9", "cycloidal", "poly345", "poly4567", "modified_sine",
                  "modified_trapezoid")
 
-#: (name, csv name, factor) of the comparison table (write with femcam.io.write_csv)
-COMPARE_COLUMNS = (("p0_max", "p0_max_MPa", 1e-6), ("phi_max", "phi_max_deg", 180.0 / math.pi),
-                   ("rho_min", "rho_min_mm", 1e3), ("a_max", "a_max_m_per_s2", 1.0),
-                   ("margin_phi", "margin_phi_deg", 180.0 / math.pi), ("margin_rho", "margin_rho_mm", 1e3),
-                   ("margin_liftoff", "margin_liftoff_Fc_over_Fpl", 1.0),
-                   ("wear_max", "wear_max_m_per_rev", 1.0), ("lambda_min", "lambda_min", 1.0),
-                   ("residual_vibration", "residual_vibration_um", 1e6))
+#: the comparison table's columns (:class:`femcam._columns.Column`; write with femcam.io.write_csv)
+COMPARE_COLUMNS = (Column("p0_max", "p0_max_MPa", 1e-6), Column("phi_max", "phi_max_deg", 180.0 / math.pi),
+                   Column("rho_min", "rho_min_mm", 1e3), Column("a_max", "a_max_m_per_s2", 1.0),
+                   Column("margin_phi", "margin_phi_deg", 180.0 / math.pi),
+                   Column("margin_rho", "margin_rho_mm", 1e3),
+                   Column("margin_liftoff", "margin_liftoff_Fc_over_Fpl", 1.0),
+                   Column("wear_max", "wear_max_m_per_rev", 1.0), Column("lambda_min", "lambda_min", 1.0),
+                   Column("residual_vibration", "residual_vibration_um", 1e6))
 
 
 def compare_laws(scene, *, optimum=None, laws=STANDARD_LAWS, constraints=None) -> dict:

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .._columns import Column
 from ..io import write_csv, write_npz
 from ..viz.study import plot_constraint_map, plot_pareto
 from .result import INTEGER_COLUMNS, RESULT_COLUMNS, TEXT_COLUMNS
@@ -28,14 +29,14 @@ def columns(spec, combos: list, table: dict) -> tuple:
 
     Returns
     -------
-    numeric : tuple of (str, str, float)
+    numeric : tuple of femcam._columns.Column
     text : tuple of str
     """
-    num = [("variant", "variant", 1.0)]
+    num = [Column("variant", "variant", 1.0)]
     text = []
     for k in spec.keys:
         if np.asarray(table[k]).dtype.kind == "f":
-            num.append((k, k, 1.0))
+            num.append(Column(k, k, 1.0))
         else:
             text.append(k)
     return tuple(num) + RESULT_COLUMNS, tuple(text) + TEXT_COLUMNS
@@ -69,7 +70,7 @@ def write_outputs(res, out, *, scene_toml: str = "", plots: bool = False) -> dic
                                   text_columns=res.text_columns,
                                   title="femcam study: one row per variant")),
              "npz": str(write_npz(out / "study.npz", res.table, res.provenance,
-                                  numeric=[c[0] for c in res.columns], text_columns=res.text_columns,
+                                  numeric=[c.si for c in res.columns], text_columns=res.text_columns,
                                   integer_columns=INTEGER_COLUMNS, scene_toml=scene_toml))}
     if plots:
         t = res.table

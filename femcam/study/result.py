@@ -19,37 +19,38 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import _validate
+from .._columns import Column
 from .._repr import compact_repr, dataframe
 from .constraints import NAMES
 
 _DEG = 180.0 / math.pi
 
-#: numeric result columns: (SI name, CSV name, factor SI -> CSV)
+#: numeric result columns (:class:`femcam._columns.Column`: SI name, CSV name, factor SI -> CSV)
 RESULT_COLUMNS = (
-    ("theta", "theta_p0_deg", _DEG),
-    ("p0_max", "p0_max_MPa", 1e-6),
-    ("Fc_at_p0", "Fc_at_p0_N", 1.0),
-    ("a_at_p0", "a_at_p0_um", 1e6),
-    ("R_at_p0", "R_at_p0_mm", 1e3),
-    ("von_mises_max", "von_mises_max_MPa", 1e-6),
-    ("tau1_max", "tau1_max_MPa", 1e-6),
-    ("phi_max", "phi_max_deg", _DEG),
-    ("rho_min", "rho_min_mm", 1e3),
-    ("undercut", "undercut", 1.0),
-    ("Fc_min", "Fc_min_N", 1.0),
-    ("Fc_max", "Fc_max_N", 1.0),
-    ("cam_radius_max", "cam_radius_max_mm", 1e3),
-    ("sf_min", "sf_min", 1.0),
-    ("lambda_min", "lambda_min", 1.0),
-    ("rpm", "rpm", 1.0),
-    ("rpm_jump", "rpm_jump", 1.0),
-    ("wear_depth_per_rev", "wear_depth_per_rev_nm", 1e9),
-) + tuple((f"margin_{k}", f"margin_{k}", 1.0) for k in NAMES) + (
-    ("feasible", "feasible", 1.0),
-    ("pareto", "pareto", 1.0),
-    ("p0_fe", "p0_fe_MPa", 1e-6),
-    ("theta_fe", "theta_fe_deg", _DEG),
-    ("duplicate_of", "duplicate_of", 1.0),
+    Column("theta", "theta_p0_deg", _DEG),
+    Column("p0_max", "p0_max_MPa", 1e-6),
+    Column("Fc_at_p0", "Fc_at_p0_N", 1.0),
+    Column("a_at_p0", "a_at_p0_um", 1e6),
+    Column("R_at_p0", "R_at_p0_mm", 1e3),
+    Column("von_mises_max", "von_mises_max_MPa", 1e-6),
+    Column("tau1_max", "tau1_max_MPa", 1e-6),
+    Column("phi_max", "phi_max_deg", _DEG),
+    Column("rho_min", "rho_min_mm", 1e3),
+    Column("undercut", "undercut", 1.0),
+    Column("Fc_min", "Fc_min_N", 1.0),
+    Column("Fc_max", "Fc_max_N", 1.0),
+    Column("cam_radius_max", "cam_radius_max_mm", 1e3),
+    Column("sf_min", "sf_min", 1.0),
+    Column("lambda_min", "lambda_min", 1.0),
+    Column("rpm", "rpm", 1.0),
+    Column("rpm_jump", "rpm_jump", 1.0),
+    Column("wear_depth_per_rev", "wear_depth_per_rev_nm", 1e9),
+) + tuple(Column(f"margin_{k}", f"margin_{k}", 1.0) for k in NAMES) + (
+    Column("feasible", "feasible", 1.0),
+    Column("pareto", "pareto", 1.0),
+    Column("p0_fe", "p0_fe_MPa", 1e-6),
+    Column("theta_fe", "theta_fe_deg", _DEG),
+    Column("duplicate_of", "duplicate_of", 1.0),
 )
 #: text columns
 TEXT_COLUMNS = ("model", "status", "binding", "reason", "hash")
@@ -102,7 +103,7 @@ class StudyResult:
     table : dict of str -> ndarray, shape (n,)
         One row per variant (module docstring), SI units under the internal names; the varied
         keys under their scene keys, in the scene file's units.
-    columns : tuple of (str, str, float)
+    columns : tuple of femcam._columns.Column
         The numeric columns in CSV order (SI name, CSV name, factor).
     text_columns : tuple of str
         The text columns.
@@ -162,7 +163,7 @@ class StudyResult:
         ImportError
             pandas is not installed (femcam does not require it).
         """
-        cols = {csv: np.asarray(self.table[si], dtype=float) * f for si, csv, f in self.columns}
+        cols = {c.csv: np.asarray(self.table[c.si], dtype=float) * c.factor for c in self.columns}
         cols.update({k: np.asarray(self.table[k]).astype(str) for k in self.text_columns})
         return dataframe(cols, "StudyResult.to_dataframe")
 

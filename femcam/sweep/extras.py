@@ -60,6 +60,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .._columns import Column
 from ..assess import COLUMNS as ASSESS_COLUMNS
 from ..assess import worst_angles
 from ..bodies.cam_rows import has_cam_bore
@@ -96,7 +97,6 @@ from .providers import (
 )
 from .worst import refusals, worst_lines
 
-Column = tuple[str, str, float]
 #: text column of every sweep with providers: ``"<provider>: <reason>"`` where one was refused
 ERROR_COLUMN = "extras_error"
 
@@ -110,7 +110,7 @@ class Provider:
     name : str
         Short name (provenance, ``extras_error``).
     applies : callable(scene) -> bool
-    columns : tuple of (SI name, CSV name, factor)
+    columns : tuple of femcam._columns.Column
         Numeric columns (SI name in the table, ``csv = SI * factor``).
     text : tuple of str
         Text columns.
@@ -224,8 +224,8 @@ def extra_columns(scene) -> tuple[tuple[Column, ...], tuple[str, ...]]:
 
     Returns
     -------
-    columns : tuple of (str, str, float)
-        ``(SI name, CSV name, factor SI -> CSV unit)`` of the numeric columns.
+    columns : tuple of femcam._columns.Column
+        The numeric columns (SI name, CSV name, factor SI -> CSV unit).
     text : tuple of str
         Text column names.
     """
@@ -260,8 +260,8 @@ def fill_extras(task, rows, solved: dict | None = None) -> None:
         except FemcamError as exc:
             errors.append(f"{p.name}: {type(exc).__name__}: {exc}")
             vals = {}
-        for si, _, _ in p.columns:
-            rows[si] = np.asarray(vals.get(si, np.full(n, np.nan)), float)
+        for c in p.columns:
+            rows[c.si] = np.asarray(vals.get(c.si, np.full(n, np.nan)), float)
         for t in p.text:
             rows[t] = np.asarray(vals.get(t, np.full(n, "")), dtype=object)
         for k in ("wear_depth", "wear_source"):
@@ -346,8 +346,8 @@ def extras_provenance(scene, table, tolerance: float | None = None, method: str 
     if not ps:
         return out
     cols, text = extra_columns(scene)
-    out["columns"] = [c[0] for c in cols] + list(text)   # SI names (SweepResult.load reads them)
-    out["csv_columns"] = [list(c) for c in cols]   # (SI, CSV name, factor): SweepResult.to_dataframe
+    out["columns"] = [c.si for c in cols] + list(text)   # SI names (SweepResult.load reads them)
+    out["csv_columns"] = [[c.si, c.csv, c.factor] for c in cols]   # SweepResult.to_dataframe
     errs = sorted({e for e in np.asarray(table.get(ERROR_COLUMN, [])).astype(str) if e})
     if errs:
         out["errors"] = errs
@@ -355,8 +355,8 @@ def extras_provenance(scene, table, tolerance: float | None = None, method: str 
     ok = np.asarray(table["status"]).astype(str) == "ok"
     names = [p.name for p in ps]
     if "assess" in names:
-        rows = {si: np.asarray(table[assess_name(si)], float) for si, _, _ in ASSESS_COLUMNS
-                if si not in ASSESS_SKIP}
+        rows = {c.si: np.asarray(table[assess_name(c.si)], float) for c in ASSESS_COLUMNS
+                if c.si not in ASSESS_SKIP}
         rows.update(theta=table["theta"], Fc=np.where(ok, table["Fc"], 0.0))
         out["assess"] = {c: {"value": v, "theta_deg": math.degrees(t)}
                          for c, (v, t, _) in worst_angles(rows).items()}

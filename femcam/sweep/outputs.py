@@ -226,7 +226,7 @@ def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None
                                    text_columns=TEXT_COLUMNS + xtext,
                                    title="femcam sweep: one row per cam angle")),
                  npz=str(write_npz(out / "sweep.npz", result.table, prov,
-                                   numeric=NUMERIC + tuple(c[0] for c in xcols),
+                                   numeric=NUMERIC + tuple(c.si for c in xcols),
                                    text_columns=TEXT_COLUMNS + xtext, integer_columns=INTEGER_COLUMNS,
                                    scene_toml=src_text,
                                    scene_repr=repr(run.scene), extra=plot_data_arrays(result))))

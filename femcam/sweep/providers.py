@@ -2,7 +2,8 @@ r"""The extra column providers' columns, per-chunk compute functions and per-pro
 (the mechanism and the table are :mod:`femcam.sweep.extras`; what each provider does and why is
 documented there and in docs/sweep.md, "Extra columns").
 
-Column triples are ``(SI name in the sweep table, CSV name with unit, factor SI -> CSV)``; each
+Columns are :class:`femcam._columns.Column` (SI name in the sweep table, CSV name with unit,
+factor SI -> CSV); each
 compute function takes the chunk's task and rows and returns the provider's arrays (shape (n,)).
 """
 
@@ -15,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .._columns import Column
 from ..assess import COLUMNS as ASSESS_COLUMNS
 from ..assess import assess_rows
 from ..bodies.cam_geometry import contact_frame
@@ -131,32 +133,38 @@ def assess_name(name: str) -> str:
 
 
 ASSESS_SKIP = ("theta", "Fc")
-ASSESS = tuple((assess_name(si), csv if csv not in ("a_um", "p0_MPa") else f"assess_{csv}", f)
-               for si, csv, f in ASSESS_COLUMNS if si not in ASSESS_SKIP)
+ASSESS = tuple(Column(assess_name(c.si), c.csv if c.csv not in ("a_um", "p0_MPa") else f"assess_{c.csv}",
+                      c.factor, c.description) for c in ASSESS_COLUMNS if c.si not in ASSESS_SKIP)
 ASSESS_TEXT = ("assess_regime", "assess_flags", "assess_source")
 #: the 2D FE at the most loaded slice (method fe): F = w_max * length
-FE_SLICE = (("F_peak_slice", "F_peak_slice_N", 1.0), ("a_peak_slice", "a_peak_slice_um", 1e6),
-            ("p0_peak_slice", "p0_peak_slice_MPa", 1e-6),
-            ("vm_max_peak_slice", "vm_max_peak_slice_MPa", 1e-6),
-            ("tau1_max_peak_slice", "tau1_max_peak_slice_MPa", 1e-6),
-            ("surf_txz_absmax_peak_slice", "surf_txz_absmax_peak_slice_MPa", 1e-6),
-            ("txz_range_max_peak_slice", "txz_range_max_peak_slice_MPa", 1e-6))
-HALFSPACE = tuple((f"hs_{k}", csv, f) for k, (csv, f) in HS_COLUMNS.items()) + FE_SLICE
+FE_SLICE = (Column("F_peak_slice", "F_peak_slice_N", 1.0), Column("a_peak_slice", "a_peak_slice_um", 1e6),
+            Column("p0_peak_slice", "p0_peak_slice_MPa", 1e-6),
+            Column("vm_max_peak_slice", "vm_max_peak_slice_MPa", 1e-6),
+            Column("tau1_max_peak_slice", "tau1_max_peak_slice_MPa", 1e-6),
+            Column("surf_txz_absmax_peak_slice", "surf_txz_absmax_peak_slice_MPa", 1e-6),
+            Column("txz_range_max_peak_slice", "txz_range_max_peak_slice_MPa", 1e-6))
+HALFSPACE = tuple(Column(f"hs_{c.si}", c.csv, c.factor, c.description)
+                  for c in HS_COLUMNS.values()) + FE_SLICE
 #: the ring model's cam contact answers the headline (``p0_fe``, ``p0_fit``, ``a_fe``, ``err_*``;
 #: :mod:`femcam.sweep.ringhead`): those keys of :data:`femcam.bodies.rows.CSV_COLUMNS` are no
 #: side columns; the bore, pin and needle columns are
 #: key of the ring model's refusal in a chunk's rows (popped by :func:`ring_chunk`, which raises it)
 RING_ERROR = "__ring_error__"
 RING_HEADLINE_KEYS = ("theta", "p0", "a", "p0_peak", "p0_solid", "a_solid", "dp0", "da")
-RING = tuple((f"ring_{k}", csv, f) for k, (csv, f) in RING_COLUMNS.items() if k not in RING_HEADLINE_KEYS)
-CAM_DISK = tuple((f"camdisk_{k}", csv, f) for k, (csv, f) in CAM_CSV_COLUMNS.items())
-LAYER_CSV = (("interface_tau_max_MPa", 1e-6), ("interface_sn_min_MPa", 1e-6),
-             ("interface_sn_max_MPa", 1e-6), ("interface_utilisation", 1.0),
-             ("coating_sx_max_MPa", 1e-6), ("coating_sx_utilisation", 1.0),
-             ("case_utilisation_max", 1.0), ("case_z_at_max_mm", 1e3), ("case_margin", 1.0))
+RING = tuple(Column(f"ring_{c.si}", c.csv, c.factor, c.description) for c in RING_COLUMNS.values()
+             if c.si not in RING_HEADLINE_KEYS)
+CAM_DISK = tuple(Column(f"camdisk_{c.si}", c.csv, c.factor, c.description) for c in CAM_CSV_COLUMNS.values())
 #: internal names are SI (``layer_interface_tau_max`` in Pa, ``layer_case_z_at_max`` in m); the
 #: CSV name carries the unit
-LAYERS = tuple((f"layer_{csv.removesuffix('_MPa').removesuffix('_mm')}", csv, f) for csv, f in LAYER_CSV)
+LAYERS = (Column("layer_interface_tau_max", "interface_tau_max_MPa", 1e-6),
+          Column("layer_interface_sn_min", "interface_sn_min_MPa", 1e-6),
+          Column("layer_interface_sn_max", "interface_sn_max_MPa", 1e-6),
+          Column("layer_interface_utilisation", "interface_utilisation", 1.0),
+          Column("layer_coating_sx_max", "coating_sx_max_MPa", 1e-6),
+          Column("layer_coating_sx_utilisation", "coating_sx_utilisation", 1.0),
+          Column("layer_case_utilisation_max", "case_utilisation_max", 1.0),
+          Column("layer_case_z_at_max", "case_z_at_max_mm", 1e3),
+          Column("layer_case_margin", "case_margin", 1.0))
 
 
 def axial_contact(rows) -> tuple[np.ndarray, np.ndarray]:
@@ -191,8 +199,8 @@ def _fe_slice(task, rows, out) -> None:
     fe), with the family's model where it covers that load, else a model of the angle's own (as
     the chunk runner does), through the process's :class:`~femcam.sweep.cache.ModelCache`."""
     n = rows["theta"].size
-    for si, _, _ in FE_SLICE:
-        out[si] = np.full(n, np.nan)
+    for c in FE_SLICE:
+        out[c.si] = np.full(n, np.nan)
     out["fe_load_basis"] = np.full(n, "", dtype=object)
     if task.options.method != "fe":
         return
@@ -312,14 +320,14 @@ def assess_chunk(task, rows) -> dict:
                  "txz_range_max": rows["txz_range_max_peak_slice"]}
     n = task.theta.size
     idx = np.flatnonzero(np.asarray(rows["status"]).astype(str) != "undercut")
-    out = {assess_name(si): np.full(n, np.nan) for si, _, _ in ASSESS_COLUMNS if si not in ASSESS_SKIP}
+    out = {assess_name(c.si): np.full(n, np.nan) for c in ASSESS_COLUMNS if c.si not in ASSESS_SKIP}
     out.update({t: np.full(n, "", dtype=object) for t in ASSESS_TEXT})
     if idx.size == 0:
         return out
     r = assess_rows(task.scene, task.theta[idx], table={k: np.asarray(v)[idx] for k, v in table.items()})
-    for si, _, _ in ASSESS_COLUMNS:
-        if si not in ASSESS_SKIP:
-            out[assess_name(si)][idx] = r[si]
+    for c in ASSESS_COLUMNS:
+        if c.si not in ASSESS_SKIP:
+            out[assess_name(c.si)][idx] = r[c.si]
     src = np.asarray(r["source"]).astype(str)
     if axial:
         src = np.where(src == "fe", "axial_peak", src)
@@ -361,7 +369,7 @@ def ring_chunk(task, rows) -> dict:
     if exc is not None:
         raise exc
     n = task.theta.size
-    return {si: np.asarray(rows.get(si, np.full(n, np.nan)), float) for si, _, _ in RING}
+    return {c.si: np.asarray(rows.get(c.si, np.full(n, np.nan)), float) for c in RING}
 
 
 def cam_disk_chunk(task, rows) -> dict:
@@ -489,7 +497,7 @@ def layers_chunk(task, rows, solved) -> dict:
         carry the unit), and the text column ``layer_source``.
     """
     n = task.theta.size
-    out = {si: np.full(n, np.nan) for si, _, _ in LAYERS}
+    out = {c.si: np.full(n, np.nan) for c in LAYERS}
     out["layer_source"] = np.full(n, "", dtype=object)
     status = np.asarray(rows["status"]).astype(str)
     contact = _contact_rows(rows)
@@ -502,15 +510,15 @@ def layers_chunk(task, rows, solved) -> dict:
                   case_body=lay["case"][0] if lay["case"] else "cam")
         for i in head:
             r = result_layer_row(solved[i], **kw)
-            for si, csv, f in LAYERS:
-                out[si][i] = r[csv] / f
+            for c in LAYERS:
+                out[c.si][i] = r[c.csv] / c.factor
             out["layer_source"][i] = "headline"
     idx = np.setdiff1d(np.flatnonzero(contact), np.asarray(head, int))
     if idx.size:
         r = scene_layer_rows(task.scene, task.theta[idx], a_over_h=task.options.a_over_h)
-        for si, csv, f in LAYERS:
-            if csv in r:
-                out[si][idx] = np.asarray(r[csv], float) / f
+        for c in LAYERS:
+            if c.csv in r:
+                out[c.si][idx] = np.asarray(r[c.csv], float) / c.factor
         out["layer_source"][idx] = "layer_model"
     return out
 

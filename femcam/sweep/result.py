@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .._columns import Column
 from .._repr import compact_repr, dataframe, span
 from ..errors import InputError
 from ..viz.sweep import plot_caption
@@ -97,16 +98,16 @@ class SweepResult:
 
         Returns
         -------
-        numeric : list of (str, str, float)
-            ``(SI name, CSV name, factor SI -> CSV unit)``: :data:`COLUMNS` then the extra
+        numeric : list of femcam._columns.Column
+            (SI name, CSV name, factor SI -> CSV unit): :data:`COLUMNS` then the extra
             column providers' (from ``provenance["extras"]``; a sweep stored before their CSV
             names were recorded keeps its SI names, factor 1).
         text : list of str
             :data:`TEXT_COLUMNS` then the providers' text columns.
         """
         ex = self.provenance.get("extras", {})
-        numeric = list(COLUMNS) + [tuple(c) for c in ex.get("csv_columns", ())]
-        known = {c[0] for c in numeric}
+        numeric = list(COLUMNS) + [Column(*c) for c in ex.get("csv_columns", ())]
+        known = {c.si for c in numeric}
         text = list(TEXT_COLUMNS)
         for name in ex.get("columns", ()):
             if name in known or name not in self.table:
@@ -114,7 +115,7 @@ class SweepResult:
             if np.asarray(self.table[name]).dtype.kind in "USO":
                 text.append(name)
             else:
-                numeric.append((name, name, 1.0))
+                numeric.append(Column(name, name, 1.0))
         return numeric, text
 
     def to_dataframe(self):
@@ -134,7 +135,7 @@ class SweepResult:
             pandas is not installed (femcam does not require it).
         """
         numeric, text = self.csv_layout()
-        cols = {csv: np.asarray(self.table[si], dtype=float) * f for si, csv, f in numeric}
+        cols = {c.csv: np.asarray(self.table[c.si], dtype=float) * c.factor for c in numeric}
         cols.update({k: np.asarray(self.table[k]).astype(str) for k in text})
         return dataframe(cols, "SweepResult.to_dataframe")
 

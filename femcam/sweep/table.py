@@ -103,6 +103,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._columns import Column
+
 __all__ = ["COLUMNS", "EXTRA_COLUMNS", "INTEGER_COLUMNS", "NUMERIC", "PROFILE_PREFIX", "STATUSES",
            "TEXT_COLUMNS", "WALL_CLOCK", "TableBuilder", "concat_rows", "empty_rows", "extra_keys",
            "worst_row"]
@@ -110,52 +112,52 @@ __all__ = ["COLUMNS", "EXTRA_COLUMNS", "INTEGER_COLUMNS", "NUMERIC", "PROFILE_PR
 #: prefix of the worst angle's surface-profile arrays in ``sweep.npz`` (for re-plotting)
 PROFILE_PREFIX = "profile__"
 
-#: (internal SI name, CSV column name, factor SI -> CSV unit). Order = CSV column order.
-COLUMNS: tuple[tuple[str, str, float], ...] = (
-    ("theta", "theta_deg", 180.0 / np.pi),
-    ("s", "s_mm", 1e3),
-    ("v", "v_m_s", 1.0),
-    ("a", "a_m_s2", 1.0),
-    ("j", "j_m_s3", 1.0),
-    ("phi", "phi_deg", 180.0 / np.pi),
-    ("rho", "rho_mm", 1e3),
-    ("Fc", "Fc_N", 1.0),
-    ("a_hertz", "a_hertz_um", 1e6),
-    ("p0_hertz", "p0_hertz_MPa", 1e-6),
-    ("a_fe", "a_fe_um", 1e6),
-    ("p0_fe", "p0_fe_MPa", 1e-6),
-    ("err_a", "err_a_pct", 100.0),
-    ("err_p0", "err_p0_pct", 100.0),
-    ("vm_max", "vm_max_MPa", 1e-6),
-    ("vm_depth", "vm_depth_um", 1e6),
-    ("tau1_max", "tau1_max_MPa", 1e-6),
-    ("tau1_depth", "tau1_depth_um", 1e6),
-    ("txz_range_max", "txz_range_max_MPa", 1e-6),
-    ("txz_range_depth", "txz_range_depth_um", 1e6),
-    ("surf_sx_min", "surf_sx_min_MPa", 1e-6),
-    ("surf_sx_max", "surf_sx_max_MPa", 1e-6),
-    ("surf_sz_min", "surf_sz_min_MPa", 1e-6),
-    ("surf_txz_absmax", "surf_txz_absmax_MPa", 1e-6),
-    ("v_slip", "v_slip_m_s", 1.0),
-    ("V_cam", "V_cam_m_s", 1.0),
-    ("wear_depth", "wear_depth_per_rev_nm", 1e9),
+#: the sweep's own columns (:class:`femcam._columns.Column`). Order = CSV column order.
+COLUMNS: tuple[Column, ...] = (
+    Column("theta", "theta_deg", 180.0 / np.pi),
+    Column("s", "s_mm", 1e3),
+    Column("v", "v_m_s", 1.0),
+    Column("a", "a_m_s2", 1.0),
+    Column("j", "j_m_s3", 1.0),
+    Column("phi", "phi_deg", 180.0 / np.pi),
+    Column("rho", "rho_mm", 1e3),
+    Column("Fc", "Fc_N", 1.0),
+    Column("a_hertz", "a_hertz_um", 1e6),
+    Column("p0_hertz", "p0_hertz_MPa", 1e-6),
+    Column("a_fe", "a_fe_um", 1e6),
+    Column("p0_fe", "p0_fe_MPa", 1e-6),
+    Column("err_a", "err_a_pct", 100.0),
+    Column("err_p0", "err_p0_pct", 100.0),
+    Column("vm_max", "vm_max_MPa", 1e-6),
+    Column("vm_depth", "vm_depth_um", 1e6),
+    Column("tau1_max", "tau1_max_MPa", 1e-6),
+    Column("tau1_depth", "tau1_depth_um", 1e6),
+    Column("txz_range_max", "txz_range_max_MPa", 1e-6),
+    Column("txz_range_depth", "txz_range_depth_um", 1e6),
+    Column("surf_sx_min", "surf_sx_min_MPa", 1e-6),
+    Column("surf_sx_max", "surf_sx_max_MPa", 1e-6),
+    Column("surf_sz_min", "surf_sz_min_MPa", 1e-6),
+    Column("surf_txz_absmax", "surf_txz_absmax_MPa", 1e-6),
+    Column("v_slip", "v_slip_m_s", 1.0),
+    Column("V_cam", "V_cam_m_s", 1.0),
+    Column("wear_depth", "wear_depth_per_rev_nm", 1e9),
     # FE on the real cam (femcam.sweep.realcam): model choice, curvature jumps, traction
-    ("p0_fit", "p0_fit_MPa", 1e-6),
-    ("curvature_jump", "curvature_jump", 1.0),
-    ("exact_vs_arc_p0", "exact_vs_arc_p0_pct", 100.0),
-    ("est_err_hertz", "est_err_hertz_pct", 100.0),
-    ("est_err_arc", "est_err_arc_pct", 100.0),
+    Column("p0_fit", "p0_fit_MPa", 1e-6),
+    Column("curvature_jump", "curvature_jump", 1.0),
+    Column("exact_vs_arc_p0", "exact_vs_arc_p0_pct", 100.0),
+    Column("est_err_hertz", "est_err_hertz_pct", 100.0),
+    Column("est_err_arc", "est_err_arc_pct", 100.0),
     # a posteriori discretisation-error estimates of the FE rows (femcam.sweep.estimate)
-    ("err_est_p0", "err_est_p0_pct", 100.0),
-    ("err_est_a", "err_est_a_pct", 100.0),
-    ("err_est_vm", "err_est_vm_pct", 100.0),
-    ("err_est_tau1", "err_est_tau1_pct", 100.0),
-    ("a_over_h_row", "a_over_h_row", 1.0),
-    ("Q", "Q_N", 1.0),
-    ("Q_over_muFc", "Q_over_muFc", 1.0),
-    ("stick_width", "stick_width_um", 1e6),
-    ("fe_time", "fe_time_ms", 1e3),
-    ("build_time", "build_time_ms", 1e3),
+    Column("err_est_p0", "err_est_p0_pct", 100.0),
+    Column("err_est_a", "err_est_a_pct", 100.0),
+    Column("err_est_vm", "err_est_vm_pct", 100.0),
+    Column("err_est_tau1", "err_est_tau1_pct", 100.0),
+    Column("a_over_h_row", "a_over_h_row", 1.0),
+    Column("Q", "Q_N", 1.0),
+    Column("Q_over_muFc", "Q_over_muFc", 1.0),
+    Column("stick_width", "stick_width_um", 1e6),
+    Column("fe_time", "fe_time_ms", 1e3),
+    Column("build_time", "build_time_ms", 1e3),
 )
 
 #: string columns (in the CSV with ``,``, ``#``, quotes and newlines replaced, see femcam.io)
@@ -164,7 +166,7 @@ TEXT_COLUMNS = ("status", "flags", "wear_source", "message", "model", "slip_stat
 #: numeric diagnostics stored in the NPZ only
 EXTRA_COLUMNS = ("iterations", "residual", "n_dofs", "family")
 
-NUMERIC = tuple(c[0] for c in COLUMNS) + EXTRA_COLUMNS
+NUMERIC = tuple(c.si for c in COLUMNS) + EXTRA_COLUMNS
 #: numeric columns that are counts or ids: int64 in the NPZ (-1 where undefined)
 INTEGER_COLUMNS = ("iterations", "n_dofs", "family")
 STATUSES = ("ok", "liftoff", "undercut", "failed", "edge_contact")

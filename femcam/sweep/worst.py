@@ -114,7 +114,7 @@ def peak_rows(table, names=()) -> list[dict]:
         (``surf_edge_dominated:<column>``, :func:`femcam.sweep.headline.edge_flags`), else "".
     """
     ok = np.asarray(table["status"]).astype(str) == "ok"
-    csv = {c[0]: (c[1], c[2]) for c in COLUMNS}
+    csv = {c.si: (c.csv, c.factor) for c in COLUMNS}
     items = [(c, what, unit, csv[c][1], how, depth, "headline", csv[c][0])
              for c, what, unit, how, depth in PEAKS]
     items += [(c, what, unit, f, how, "", label, "") for name in names if name in ITEMS
