@@ -341,7 +341,7 @@ def _p0_fe_text(res, s: dict) -> str:
 def _print_families(s: dict, o: dict) -> None:
     """The model families' line (reuse error, workers) and the model cache's line."""
     print(f"  {families_text(s['n_families'], s['reuse_error_max'], s['n_binned'])} "
-          f"(tolerance {100 * o['tolerance']:g} %); workers "
+          f"(reuse tolerance {100 * o['tolerance']:g} %); workers "
           f"{o.get('workers')}" + (f" ({o['workers_reason']})" if o.get("workers_reason") else ""))
     if o.get("model_cache"):
         print(f"  {o['model_cache']['line']}")
@@ -356,7 +356,7 @@ def _print_summary(res) -> None:
           f"{res.n_chunks_computed} computed) in {res.timings['total']:.2f} s; "
           f"liftoff {s['n_liftoff']}, undercut {s['n_undercut']}, failed {s['n_failed']}")
     if o.get("models"):
-        print(f"  models: {o['models']} (tolerance {100 * o['tolerance']:g} %); curvature-jump rows "
+        print(f"  models: {o['models']} (reuse tolerance {100 * o['tolerance']:g} %); curvature-jump rows "
               f"{o.get('n_curvature_jump', 0)}, edge contacts {o.get('n_edge_contact', 0)}; traction: "
               f"{o.get('traction')}")
     if res.method != "hertz":

@@ -216,7 +216,7 @@ def _validation(result: SweepResult, s: dict) -> str:
                 for f in fams]
         out.append("<p>Model families (one FE model reused over neighbouring angles), each checked "
                    "against a model built for the checked angle"
-                   + (f", tolerance {100 * float(tol):g} %" if tol is not None else "") + ":</p>")
+                   + (f", reuse tolerance {100 * float(tol):g} %" if tol is not None else "") + ":</p>")
         out.append(html_table(("family", "angles", "rho_ref (mm)", "a_ref (µm)", "checked angles",
                            "reuse error (%)", "a/h"), rows, num=(1, 2, 3, 4, 5, 6)))
     return "".join(out)

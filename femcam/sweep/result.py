@@ -429,7 +429,8 @@ def report_markdown(result: SweepResult) -> str:
              f"- lift-off {s['n_liftoff']}, undercut {s['n_undercut']}, failed {s['n_failed']} "
              "angle(s)"]
     if result.method == "fe":
-        lines.append(f"- {families_text(s['n_families'], s['reuse_error_max'], s['n_binned'])} (tolerance "
+        lines.append(f"- {families_text(s['n_families'], s['reuse_error_max'], s['n_binned'])} "
+                     "(reuse tolerance "
                      f"{100 * float(o.get('tolerance', float('nan'))):g} %)")
     if o.get("models"):   # the model that answered, rows per model (report.html explains each)
         lines.append("- models (rows): " + ", ".join(f"`{m}` {n}" for m, n in o["models"].items()
