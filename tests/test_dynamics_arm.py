@@ -265,6 +265,14 @@ def test_femcam_run_prints_the_rigid_arm_jump_speed(tmp_path, capsys):
     rpm = float(line.split("=")[1].split("rpm")[0])
     ref = _cycloid_jump_rpm(2.5e-4, 100.0, 12.5, math.radians(10.0), math.radians(65.0))
     assert abs(rpm / ref - 1) < 0.005, (line, ref)
+    # a curved pad on the same arm: the contact force is the arm's moment over a lever that stays
+    # positive (self-locking is refused), so it reaches zero where the moment does: the same speed
+    pad = EXAMPLE.read_text(encoding="utf-8").replace('type = "roller"', 'type = "curved_pad"')
+    pad = pad.replace("roller_radius_mm = 9.0", "pad_radius_mm = 12.0")
+    (tmp_path / "pad.toml").write_text(pad, encoding="utf-8")
+    assert main(["run", str(tmp_path / "pad.toml"), "--out", str(tmp_path / "pad"), "--no-plots"]) == 0
+    line = next(ln for ln in capsys.readouterr().out.splitlines() if "jump speed" in ln)
+    assert abs(float(line.split("=")[1].split("rpm")[0]) / ref - 1) < 0.005, (line, ref)
 
 
 def test_two_dof_stiff_scene_is_the_rigid_arm_with_both_inertias(monkeypatch):

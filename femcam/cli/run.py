@@ -131,7 +131,7 @@ def summary_lines(scene, st, phi_limit_deg: float = 30.0) -> list[str]:
         f"undercut       = {_intervals_deg(_undercut_intervals(st))} (whole revolution: 0.05 deg grid and "
         "every segment)",
     ]
-    if scene.follower.oscillating and scene.follower.rolls:  # the arm's rigid lift-off (jump) speed
+    if scene.follower.oscillating:  # the arm's rigid lift-off (jump) speed
         j = rigid_jump_speed(arm_follower(scene.dynamics, scene.follower.L), scene.program,
                              0.01 * scene.rpm, 10.0 * scene.rpm)
         lines.append(f"jump speed     = {j:.6g} rpm (rigid arm)" if math.isfinite(j) else
