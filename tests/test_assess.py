@@ -131,9 +131,10 @@ def test_knife_edge_needs_tip_radius_and_slides_fully(tmp_path):
 
     with pytest.raises(InputError, match="tip_radius_mm"):
         assess_rows(_scene(tmp_path, knife), np.radians([300.0]))
-    sc = _scene(tmp_path, lambda t: knife(t) + "\n[wear]\ntip_radius_mm = 2.0\n", "k.toml")
-    with pytest.warns(FutureWarning, match="deprecated"):  # the alias of [follower] tip_radius_mm
-        r = assess_rows(sc, np.radians([300.0]))             # base circle: v_slip = omega Rb
+    sc = _scene(tmp_path, lambda t: knife(t).replace("face_width_mm = 10.0\n",
+                                                     "face_width_mm = 10.0\ntip_radius_mm = 2.0\n"),
+                "k.toml")
+    r = assess_rows(sc, np.radians([300.0]))             # base circle: v_slip = omega Rb
     np.testing.assert_allclose(r["v_slide"][0], OMEGA * 0.020, rtol=1e-9)
     np.testing.assert_allclose(r["R"][0], 0.020 * 0.002 / 0.022, rtol=1e-9)
     assert r["dT_flash"][0] > 0

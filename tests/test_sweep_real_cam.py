@@ -9,14 +9,13 @@ cam surface built as the envelope of roller circles (tests/halfspace_ref.py, Joh
 
 import dataclasses
 import math
-import warnings
 from pathlib import Path
 
 import numpy as np
 import pytest
 from halfspace_ref import envelope_height, halfspace_solve  # tests/ is on sys.path (pytest rootdir)
 
-from femcam.errors import InputError
+from femcam.errors import SceneError
 from femcam.scene import load_scene
 from femcam.sweep import sweep
 
@@ -197,19 +196,19 @@ def test_flat_faced_sweep_and_edge_contact():
     assert np.isnan(e["p0_hertz"][0]) and e["model"][0] == ""
 
 
-def test_tip_radius_key_and_deprecated_alias():
-    """[follower] tip_radius_mm is the key; [wear] tip_radius_mm still works with a warning and
-    must agree with it."""
+def test_tip_radius_key_and_the_retired_alias(tmp_path):
+    """[follower] tip_radius_mm is the key; the retired [wear] tip_radius_mm is refused in one
+    line naming the key to use."""
     from femcam.wear.options import follower_tip_radius
 
     sc = load_scene(EX / "seed003_knife_edge.toml")
     assert follower_tip_radius(sc) == pytest.approx(2e-3)
-    old = dataclasses.replace(sc, tip_radius=None, wear={"tip_radius_mm": 1.5})
-    with pytest.warns(FutureWarning, match=r"\[follower\] tip_radius_mm"):
-        assert follower_tip_radius(old) == pytest.approx(1.5e-3)
-    with warnings.catch_warnings(), pytest.raises(InputError, match="differ"):
-        warnings.simplefilter("ignore", FutureWarning)
-        follower_tip_radius(dataclasses.replace(sc, wear={"tip_radius_mm": 1.5}))
+    p = tmp_path / "old.toml"
+    p.write_text((EX / "seed003_knife_edge.toml").read_text(encoding="utf-8")
+                 + "\n[wear]\ntip_radius_mm = 1.5\n", encoding="utf-8")
+    with pytest.raises(SceneError, match=r"wear.tip_radius_mm = 1.5 mm: retired; give the knife-edge "
+                                         r"tip radius as \[follower\] tip_radius_mm \(mm\)"):
+        load_scene(p)
 
 
 def test_method_auto_writes_the_hertz_vtu_of_hertz_rows(tmp_path):

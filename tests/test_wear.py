@@ -544,8 +544,11 @@ def test_wear_table_keys_and_k_source():
     assert k == pytest.approx(3e-8 / 6000e6, rel=1e-15) and "hardness_MPa = 6000" in where
     k, where = wear_coefficient_info(dataclasses.replace(hard, wear={}))     # default K, scene H
     assert k == pytest.approx(1e-8 / 6000e6, rel=1e-15) and where.startswith("default K = 1e-08")
-    opts = wear_options(dataclasses.replace(sc, wear={"tip_radius_mm": 0.5, "cycles": 10}))
-    assert opts == {"tip_radius": pytest.approx(5e-4), "cycles": 10.0}  # SI name, m
+    opts = wear_options(dataclasses.replace(sc, wear={"J_kg_m2": 2e-6, "cycles": 10}))
+    assert opts == {"J_kg_m2": pytest.approx(2e-6), "cycles": 10.0}    # SI values
+    with pytest.raises(SceneError, match=r"wear.tip_radius_mm = 0.5 mm: retired; give the knife-edge "
+                                         r"tip radius as \[follower\] tip_radius_mm"):
+        wear_options(dataclasses.replace(sc, wear={"tip_radius_mm": 0.5}))
 
 
 @pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)

@@ -111,15 +111,15 @@ def test_the_scan_finds_writers(tmp_path):
 
 def test_no_compat_alias_comes_back():
     """The style numbers' alias count (tests/style_numbers.py, docs/architecture.md): no re-export
-    kept for an old import path, no alias property, no callable module; what is left is the
-    deprecated scene key ``[wear] tip_radius_mm`` (a user-facing deprecation, warned)."""
+    kept for an old import path, no alias property, no callable module, no deprecated scene key
+    (``[wear] tip_radius_mm`` is refused with the key to use)."""
     import sys
 
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from style_numbers import compat_aliases
 
     left = compat_aliases(ROOT)
-    assert all(a.endswith("deprecated scene key") for a in left), left
+    assert not left, left
 
 
 def test_a_failed_vtu_write_leaves_the_old_file_and_no_temp_file(tmp_path):

@@ -15,7 +15,7 @@
 
 Scene ``[wear]`` keys (checked; see :mod:`femcam.wear.options`): ``K`` (dimensionless; with the
 cam's ``hardness_MPa``) or ``k_mm3_per_N_m``; ``roller_model = "srr"|"inertia"``, ``srr``,
-``J_kg_m2``, ``T_drag_N_m``; ``tip_radius_mm`` (deprecated: use [follower] tip_radius_mm); ``cycles``.
+``J_kg_m2``, ``T_drag_N_m``; ``cycles`` (a knife edge's tip radius: ``[follower] tip_radius_mm``).
 """
 
 from __future__ import annotations
@@ -82,8 +82,7 @@ def register(subparsers) -> None:
                        "on the follower; writes DIR/wear_<law>.csv, wear_<law>_surface.csv, "
                        "wear_<law>_follower.csv, wear_summary.csv and PNG plots. Scene [wear] "
                        "keys: K (with [materials.cam] hardness_MPa) or k_mm3_per_N_m, "
-                       "roller_model = srr|inertia, srr, J_kg_m2, T_drag_N_m, tip_radius_mm, "
-                       "cycles.")
+                       "roller_model = srr|inertia, srr, J_kg_m2, T_drag_N_m, cycles.")
     add_scene_out(m, "scene file (see examples/)")
     add_number(m, "--cycles", CYCLES, default=None, metavar="N",
                help="number of cam revolutions (default: scene [wear] cycles or 1e6)")

@@ -45,8 +45,8 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
                        radius = bore - clearance), [materials.shaft]?
     [fe]?              a_over_h?, tolerance? (femcam sweep's --mesh-size, --tolerance)
     [sweep]?           method?, angles_deg? ("0:360:1"), chunk_size?, vtk_every?, plots?
-    [wear]?            K | k_mm3_per_N_m, roller_model?, srr?, J_kg_m2?, T_drag_N_m?, tip_radius_mm?,
-                       cycles? (femcam.wear.options)
+    [wear]?            K | k_mm3_per_N_m, roller_model?, srr?, J_kg_m2?, T_drag_N_m?, cycles?
+                       (femcam.wear.options)
 
 Every numeric key has a stated range with its source (``ranges``; the table of all keys is
 docs/scene.md), and keys that must fit together are checked together (``cross``).

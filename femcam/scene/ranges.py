@@ -204,7 +204,6 @@ RANGES: dict[str, dict[str, Range]] = {
                      open_=True),
         "J_kg_m2": Range(0.0, 1e3, "physical: roller inertias are ~1e-7-1e-3 kg m^2"),
         "T_drag_N_m": Range(0.0, 1e4, "physical: bearing drag torques are ~1e-3-1 N m"),
-        "tip_radius_mm": Range(0.01, 1000.0, _LEN),
         "cycles": Range(0.0, 1e13, "physical: 1e13 revolutions is 30 years at 6e5 rpm")},
 }
 

@@ -274,7 +274,7 @@ _WEAR = {"K": ("(dimensionless)", 1.0, "nonneg", False),
          "k_mm3_per_N_m": ("mm^3/(N m)", 1e-9, "nonneg", False),
          "roller_model": ("", None, "str", False), "srr": ("(dimensionless)", 1.0, "num", False),
          "J_kg_m2": ("kg m^2", 1.0, "pos", False), "T_drag_N_m": ("N m", 1.0, "nonneg", False),
-         "tip_radius_mm": ("mm", 1e-3, "pos", False), "cycles": ("revolutions", 1.0, "nonneg", False)}
+         "cycles": ("revolutions", 1.0, "nonneg", False)}
 
 #: the accepted strings of the ``str`` keys
 _CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", "flat_faced", "curved_pad"),

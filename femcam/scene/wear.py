@@ -27,9 +27,13 @@ def wear_table(ck: _Checker, raw, hardness) -> dict:
     -------
     dict
         The valid keys with SI values under SI names (``k`` in m^3/(N m) from
-        ``k_mm3_per_N_m``, ``tip_radius`` in m from ``tip_radius_mm``; ``J_kg_m2`` in kg m^2,
+        ``k_mm3_per_N_m``; ``J_kg_m2`` in kg m^2,
         ``T_drag_N_m`` in N m; ``K``, ``srr``, ``cycles`` as given).
     """
+    if isinstance(raw, dict) and "tip_radius_mm" in raw:   # the retired alias: one clear line
+        ck.add("wear.tip_radius_mm", f"= {raw['tip_radius_mm']} mm: retired; give the knife-edge "
+               "tip radius as [follower] tip_radius_mm (mm)")
+        raw = {k: v for k, v in raw.items() if k != "tip_radius_mm"}
     out = ck.table(raw, "wear", _WEAR)
     if not isinstance(raw, dict):
         return out

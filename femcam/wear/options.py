@@ -17,7 +17,6 @@ roller_model       "srr" | "inertia"   roller slip model (default "srr")
 srr                (dimensionless)     slide-to-roll ratio, -2 < srr < 2 (default 0.02)
 J_kg_m2            kg m^2              roller polar inertia (inertia model)
 T_drag_N_m         N m                 roller bearing drag torque (inertia model)
-tip_radius_mm      mm                  DEPRECATED alias of [follower] tip_radius_mm (warns)
 cycles             revolutions         number of cam revolutions (default 1e6)
 =================  ==================  ===================================================
 
@@ -28,8 +27,6 @@ seed 000's H = 2000 N/mm^2. The returned text says which case applied.
 """
 
 from __future__ import annotations
-
-import warnings
 
 from ..errors import InputError
 from ..scene import wear_table
@@ -169,8 +166,8 @@ def describe_k(k: float, where: str) -> str:
 
 
 def follower_tip_radius(scene) -> float | None:
-    """Knife-edge tip radius (m) of a scene: ``[follower] tip_radius_mm`` (``Scene.tip_radius``),
-    or the deprecated alias ``[wear] tip_radius_mm`` (a ``FutureWarning``); None if neither.
+    """Knife-edge tip radius (m) of a scene: ``[follower] tip_radius_mm`` (``Scene.tip_radius``);
+    None if not given (the former ``[wear] tip_radius_mm`` is refused by the scene loader).
 
     Parameters
     ----------
@@ -181,19 +178,5 @@ def follower_tip_radius(scene) -> float | None:
     -------
     float or None
         Tip radius [m], or None.
-
-    Raises
-    ------
-    InputError
-        Both keys given with different values.
     """
-    tip = getattr(scene, "tip_radius", None)
-    legacy = wear_options(scene).get("tip_radius")
-    if legacy is None:
-        return tip
-    warnings.warn("scene [wear] tip_radius_mm is deprecated: give the knife-edge tip radius as "
-                  "[follower] tip_radius_mm (mm)", FutureWarning, stacklevel=2)
-    if tip is not None and abs(tip - legacy) > 1e-12:
-        raise InputError(f"[follower] tip_radius_mm = {tip * 1e3:g} mm and the deprecated [wear] "
-                         f"tip_radius_mm = {legacy * 1e3:g} mm differ: give [follower] tip_radius_mm only")
-    return legacy if tip is None else tip
+    return getattr(scene, "tip_radius", None)

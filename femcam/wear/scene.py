@@ -1,7 +1,7 @@
 """The Archard wear map of a scene: kinematics, contact pressure and slip put together.
 
 Knife-edge followers need a tip radius (``tip_radius`` in m, or the scene's ``[follower]
-tip_radius_mm``; ``[wear] tip_radius_mm`` is a deprecated alias): the kinematics, pressure
+tip_radius_mm``): the kinematics, pressure
 angle, contact force and cam curvature are then those of the cam cut for the radiused tip (a
 roller of that radius that does not turn), the pressure is Hertz of the cam against the tip
 radius (Johnson 1985 §4.3), and the slip is :func:`femcam.wear.slip.radiused_tip`.
@@ -65,8 +65,7 @@ def scene_tip_radius(scene, tip_radius: float | None = None) -> float | None:
     scene : femcam.scene.Scene
     tip_radius : float, optional
         Tip radius (m), checked > 0 for a knife edge; default the scene's ``[follower]
-        tip_radius_mm`` (:func:`femcam.wear.options.follower_tip_radius`, which also takes the
-        deprecated ``[wear] tip_radius_mm`` with a warning).
+        tip_radius_mm`` (:func:`femcam.wear.options.follower_tip_radius`).
 
     Returns
     -------
