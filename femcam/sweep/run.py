@@ -29,6 +29,7 @@ from .options import SweepOptions, contact_params
 from .outputs import SweepRun, scene_hash, scene_source, write_outputs
 from .parallel import AUTO_VTU_S, auto_workers, run_tasks
 from .pipeline import ChunkTask, contact_mask, run_chunk
+from .plotproc import start_plot_process
 from .realcam import auto_hertz_rows, contact_scene, jump_angles, real_cam_summary, scene_traction
 from .result import SweepResult
 from .rtol import choose_mesh
@@ -161,11 +162,14 @@ def sweep(scene, *, angles=None, method: str | None = None, a_over_h=None, toler
         raise _validate.fail("animate", animate, "", "needs the VTK series: an output directory "
                              "(out) and vtk_every > 0 (--vtk-every)")
     plots = run.out is not None and run.settings.plots
+    run.plotter = start_plot_process() if plots else None  # imports matplotlib meanwhile
     try:
         return _sweep(run, scheduler, client, progress, plots, command, t_start)
     except KeyboardInterrupt:
         raise SweepInterrupted(_interrupt_message(run)) from None
     finally:
+        if run.plotter is not None:
+            run.plotter.close()
         if run.lock is not None:
             run.lock.release()
 

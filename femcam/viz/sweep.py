@@ -332,6 +332,23 @@ def plot_sweep(result, out) -> dict[str, str]:
     if "curvature_jump" in result.table and np.any(result.table["curvature_jump"] == 1):
         paths["plot_junction"] = plot_junction_p0(r, d / "p0_curvature_jumps.png")
     if result.surface_profile is not None and "x_hertz" in result.surface_profile:
-        paths["plot_surface"] = plot_surface_worst(result.surface_profile,
-                                                   d / "surface_stress_worst.png")
+        paths.update(plot_surface_sweep(result.surface_profile, out))
     return paths
+
+
+def plot_surface_sweep(profile: dict, out) -> dict[str, str]:
+    """The worst-angle surface plot of :func:`plot_sweep` alone (``out/plots``).
+
+    Parameters
+    ----------
+    profile : dict
+        ``SweepResult.surface_profile`` with its Hertz curve (``x_hertz``).
+    out : str or Path
+        Output directory.
+
+    Returns
+    -------
+    dict[str, str]
+        ``{"plot_surface": path}``.
+    """
+    return {"plot_surface": plot_surface_worst(profile, Path(out) / "plots" / "surface_stress_worst.png")}
