@@ -17,7 +17,7 @@ from ..io import atomic_write_text, vtu_name, write_csv, write_npz, write_pvd
 from ..scene import Scene
 from ..scene.override import with_overrides
 from ..viz.animate import animate_pvd
-from ..viz.sweep import plot_surface_sweep, plot_sweep
+from ..viz.sweep import plot_surface_sweep, plot_sweep, sweep_plot_calls
 from .cache import default_cache
 from .extras import extra_columns, extras_files, plot_extras
 from .options import SweepOptions, contact_params
@@ -246,7 +246,7 @@ def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None
     result = replace(result, paths=paths)
     if child is not None:  # drawn in the plot process meanwhile (femcam.sweep.plotproc)
         drawn, error = child.collect()
-        if error.startswith("plot_sweep: ImportError"):  # pragma: no cover - matplotlib missing
+        if ": ImportError: " in error:  # pragma: no cover - matplotlib missing
             raise InputError(f"plots = True: {error.split(': ', 2)[-1]}")
         paths.update(drawn)
         if error:
@@ -316,7 +316,8 @@ def with_plot_data(result: SweepResult, run: SweepRun, child: PlotProcess | None
     cp = contact_params(run.scene)
     result = replace(result, hertz_factors=shape_factors(cp.mu, cp.cam.nu, cp.plane))
     if child is not None:
-        child.submit(plot_sweep, result, run.out)  # surface_profile None: the other plots
+        for function, args in sweep_plot_calls(result, run.out):  # no surface_profile yet
+            child.submit(function, *args)
     profile = None
     if np.any(result.ok):
         fe = "hertz" if (result.method == "hertz" or run.scene.follower.flat_face) else "fe"

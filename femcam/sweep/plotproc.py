@@ -22,6 +22,8 @@ import signal
 import sys
 import warnings
 
+from ..viz._mpl import pyplot
+
 __all__ = ["PlotProcess", "start_plot_process"]
 
 #: longest wait for the child's plots once the parent has written everything else (s); a
@@ -129,8 +131,6 @@ def _serve(conn, parent_end) -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's: it ends this child
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     try:
-        from ..viz._mpl import pyplot
-
         pyplot()  # while the parent computes: the import is off the critical path
     except ImportError:
         pass  # the plot call itself raises it, and its message goes back
