@@ -35,21 +35,38 @@ def _die(*_):
 
 
 def test_answers_errors_and_a_killed_child_in_order():
-    """Each call's paths come back in the order sent; a failing call is one line; a child that
-    dies mid-way is reported with its exit code and the answers before it are kept."""
-    p = PlotProcess()
+    """One lane: each call's paths come back in the order sent; a failing call is one line; a
+    child that dies mid-way is reported with its exit code and the answers before it are kept."""
+    p = PlotProcess(lanes=1)
     p.submit(dict, {"a": "1"})
     p.submit(_boom)
     p.submit(dict, {"b": "2"})
     paths, error = p.collect()
-    assert paths == {"a": "1", "b": "2"}
+    assert list(paths.items()) == [("a", "1"), ("b", "2")]
     assert error == "_boom: ValueError: no ink"
-    p = start_plot_process()
+    p = PlotProcess(lanes=1)
     p.submit(dict, {"a": "1"})
     p.submit(_die)
     p.submit(dict, {"b": "2"})
     paths, error = p.collect()
-    assert paths == {"a": "1"} and "ended early (exit code 3)" in error
+    assert paths == {"a": "1"} and error == "a plot process ended early (exit code 3)"
+
+
+def test_two_lanes_keep_the_order_and_survive_each_other():
+    """Two lanes: calls go to the less loaded lane, answers come back in the order submitted,
+    and a lane that dies loses only its own calls."""
+    p = start_plot_process()
+    for k, w in (("a", 1.0), ("b", 3.0), ("c", 1.0), ("d", 1.0)):  # lanes 0, 1, 0, 0
+        p.submit(dict, {k: k}, weight=w)
+    paths, error = p.collect()
+    assert list(paths) == ["a", "b", "c", "d"] and error == ""
+    for lane_die in (0, 1):
+        p = PlotProcess()
+        p.submit(dict, {"a": "1"}) if lane_die else p.submit(_die)   # lane 0
+        p.submit(_die) if lane_die else p.submit(dict, {"a": "1"})   # lane 1
+        p.submit(dict, {"b": "2"}, weight=0.5)                      # lane 0 or 1: the lighter
+        paths, error = p.collect()
+        assert "a" in paths and "ended early" in error, (lane_die, paths, error)
 
 
 def test_plots_equal_those_drawn_in_process(tmp_path):
@@ -65,15 +82,18 @@ def test_plots_equal_those_drawn_in_process(tmp_path):
 
 
 def test_killed_plot_process_loses_no_other_output(tmp_path, monkeypatch):
-    """The child dies while drawing (its plot function ends the process): the tables and the
-    reports are written as without plots, the plots drawn before it are kept, one warning
-    names the missing plots and the command that redraws them."""
+    """A lane dies while drawing (its plot function ends the process): the tables and the
+    reports are written as without plots, the other lane's plots are kept (and only they are
+    in the report), one warning names the missing plots and the command that redraws them."""
     monkeypatch.setattr(vs, "plot_maxima", _die)  # the forked child inherits the patch
-    with pytest.warns(RuntimeWarning, match=r"some plots are missing: .*exit code 3.*femcam plot"):
+    with pytest.warns(RuntimeWarning, match=r"some plots are missing: .*ended early.*femcam plot"):
         r = sweep(load_scene(SCENE), out=tmp_path / "o", **HERTZ)
     bare = sweep(load_scene(SCENE), out=tmp_path / "bare", plots=False, **HERTZ)
     for f in ("sweep.csv", "sweep.npz", "report.md", "report.html"):
         assert (tmp_path / "o" / f).stat().st_size > 0
     assert {k for k in r.paths if not k.startswith("plot_")} == set(bare.paths)
-    assert sorted(p.name for p in (tmp_path / "o" / "plots").iterdir()) == ["p0_vs_angle.png"]
-    assert "p0_vs_angle.png" in (tmp_path / "o" / "report.html").read_text()
+    kept = sorted(p.name for p in (tmp_path / "o" / "plots").iterdir())
+    assert "p0_vs_angle.png" in kept and "maxima_vs_angle.png" not in kept
+    assert kept == sorted(os.path.basename(v) for k, v in r.paths.items() if k.startswith("plot_"))
+    html = (tmp_path / "o" / "report.html").read_text()
+    assert all(name in html for name in kept) and "maxima_vs_angle.png" not in html

@@ -190,6 +190,12 @@ class SweepRun:
 
 
 
+#: CPU seconds of each sweep plot (the study model, AMD EPYC, median of 3): the weights that
+#: share the plots between the plot process's two lanes (:class:`PlotProcess`)
+PLOT_CPU_S = {"plot_p0": 0.17, "plot_maxima": 0.15, "plot_svaj": 0.38, "plot_wear": 0.20,
+              "plot_junction": 0.20, "plot_surface": 0.23}
+
+
 def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None,
                    src_text: str = "") -> SweepResult:
     """``scene.toml``, ``sweep.csv``, ``sweep.npz``, ``sweep.pvd`` and the plots in ``run.out``.
@@ -317,7 +323,7 @@ def with_plot_data(result: SweepResult, run: SweepRun, child: PlotProcess | None
     result = replace(result, hertz_factors=shape_factors(cp.mu, cp.cam.nu, cp.plane))
     if child is not None:
         for function, args in sweep_plot_calls(result, run.out):  # no surface_profile yet
-            child.submit(function, *args)
+            child.submit(function, *args, weight=PLOT_CPU_S.get(args[0], 0.2))
     profile = None
     if np.any(result.ok):
         fe = "hertz" if (result.method == "hertz" or run.scene.follower.flat_face) else "fe"
@@ -326,6 +332,6 @@ def with_plot_data(result: SweepResult, run: SweepRun, child: PlotProcess | None
     result = replace(result, surface_profile=profile)
     if child is not None:
         if profile is not None and "x_hertz" in profile:
-            child.submit(plot_surface_sweep, profile, run.out)
-        child.submit(plot_extras, run.scene, result.table, run.out)
+            child.submit(plot_surface_sweep, profile, run.out, weight=PLOT_CPU_S["plot_surface"])
+        child.submit(plot_extras, run.scene, result.table, run.out, weight=0.2)
     return result

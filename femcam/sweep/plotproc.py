@@ -3,8 +3,9 @@
 The command-line main job (README command 1) runs its chunks in one process on a 2-core
 machine (``workers="auto"`` finds a pool not worth it), so the other core is idle. A
 :class:`PlotProcess` is forked when the sweep starts: it imports matplotlib while the sweep
-builds, verifies and solves, then draws what the parent sends it (the finished table, then the
-worst angle's surface profile) while the parent writes the tables and the reports. The parent
+builds, verifies and solves, then forks itself into a second lane (matplotlib imported once),
+and the two lanes draw what the parent sends them (the finished table, then the worst angle's
+surface profile) on the two cores while the parent writes the tables and waits. The parent
 never imports matplotlib.
 
 Failure is contained: if the child fails, is killed or cannot start, the parent writes every
@@ -18,6 +19,7 @@ child would import numpy, scipy and femcam again, which costs about what it save
 from __future__ import annotations
 
 import multiprocessing
+import os
 import signal
 import sys
 import warnings
@@ -49,24 +51,35 @@ def start_plot_process() -> PlotProcess | None:
 
 
 class PlotProcess:
-    """A child process that draws plots on request (module docstring).
+    """Two lanes of plot drawing (module docstring): a forked child, and its own fork once it
+    has imported matplotlib (so the import is paid once), each answering on its own pipe.
 
-    :meth:`submit` sends ``(function, args)``; the child calls ``function(*args)`` (each a
-    plot function returning ``{name: path}``) in the order sent; :meth:`collect` returns the
-    merged paths of the calls that succeeded and the first error line, if any.
+    :meth:`submit` sends ``(function, args)`` to the lane with less work queued (``weight``);
+    a lane calls ``function(*args)`` (a plot function returning ``{name: path}``) in the order
+    sent; :meth:`collect` returns the merged paths of the calls that succeeded, in the order
+    submitted, and the first error line, if any.
+
+    Parameters
+    ----------
+    lanes : int
+        1 or 2 drawing processes (2: the 2 cores of the machine the main job is tuned for;
+        the sweep's own process only waits while they draw).
     """
 
-    def __init__(self):
+    def __init__(self, lanes: int = 2):
         ctx = multiprocessing.get_context("fork")
-        self._conn, child = ctx.Pipe()
-        self._proc = ctx.Process(target=_serve, args=(child, self._conn), daemon=True,
-                                 name="femcam-plots")
+        pipes = [ctx.Pipe() for _ in range(lanes)]
+        self._conns = [mine for mine, _ in pipes]
+        self._proc = ctx.Process(target=_serve, args=([theirs for _, theirs in pipes], self._conns),
+                                 daemon=True, name="femcam-plots")
         self._proc.start()
-        child.close()
-        self._sent = 0
+        for _, theirs in pipes:
+            theirs.close()
+        self._jobs = []   # lane of each call, in the order submitted
+        self._load = [0.0] * lanes
 
-    def submit(self, function, *args) -> None:
-        """Have the child call ``function(*args)`` (a module-level plot function).
+    def submit(self, function, *args, weight: float = 1.0) -> None:
+        """Have a lane call ``function(*args)`` (a module-level plot function).
 
         Parameters
         ----------
@@ -74,41 +87,51 @@ class PlotProcess:
             Returns ``{name: path}`` of the PNGs it wrote.
         *args
             Its arguments (pickled).
+        weight : float
+            Its expected cost relative to the others (e.g. its number of axes): the call goes
+            to the lane with the least queued weight.
         """
+        lane = min(range(len(self._load)), key=self._load.__getitem__)
+        self._load[lane] += weight
         try:
-            self._conn.send((function, args))
-            self._sent += 1
-        except (OSError, ValueError):  # the child is gone: collect() says so
-            pass
+            self._conns[lane].send((function, args))
+            self._jobs.append(lane)
+        except (OSError, ValueError):  # the lane is gone: collect() says so
+            self._jobs.append(lane)
 
     def collect(self, timeout_s: float = WAIT_S) -> tuple[dict, str]:
-        """Wait for the answers to every :meth:`submit` and end the child.
+        """Wait for the answers to every :meth:`submit` and end the lanes.
 
         Parameters
         ----------
         timeout_s : float
-            Longest wait for all answers [s].
+            Longest wait for each answer [s].
 
         Returns
         -------
         paths : dict[str, str]
             The plots written, in the order submitted.
         error : str
-            ``""``, or one line saying which plots are missing and why.
+            ``""``, or one line saying why plots are missing (the first failure).
         """
-        paths, error = {}, ""
-        for _ in range(self._sent):
+        paths, error, dead = {}, "", set()
+        for lane in self._jobs:
+            if lane in dead:
+                continue
+            conn = self._conns[lane]
             try:
-                if not self._conn.poll(timeout_s):
-                    error = f"the plot process did not answer within {timeout_s:g} s"
-                    break
-                ok, value = self._conn.recv()
+                if not conn.poll(timeout_s):
+                    error = error or f"a plot process did not answer within {timeout_s:g} s"
+                    dead.add(lane)
+                    continue
+                ok, value = conn.recv()
             except (EOFError, OSError):
-                self._proc.join(5.0)
-                code = self._proc.exitcode
-                error = ("the plot process ended early"
-                         + (f" (exit code {code})" if code is not None else ""))
-                break
+                dead.add(lane)
+                self._proc.join(0.5 if lane else 5.0)
+                code = self._proc.exitcode if lane == 0 else None
+                error = error or ("a plot process ended early"
+                                  + (f" (exit code {code})" if code is not None else ""))
+                continue
             if ok:
                 paths.update(value)
             elif not error:
@@ -117,23 +140,46 @@ class PlotProcess:
         return paths, error
 
     def close(self) -> None:
-        """End the child (idempotent): close the pipe, which the child reads as the end."""
-        self._conn.close()
+        """End the lanes (idempotent): close the pipes, which the lanes read as the end."""
+        for conn in self._conns:
+            conn.close()
         self._proc.join(2.0)
         if self._proc.is_alive():  # pragma: no cover - a stuck child
             self._proc.kill()
             self._proc.join()
 
 
-def _serve(conn, parent_end) -> None:
-    """The child: import matplotlib, then call each function received until the pipe closes."""
-    parent_end.close()
-    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's: it ends this child
+def _serve(conns, parent_ends) -> None:
+    """The first lane: import matplotlib, fork the second lane, then serve ``conns[0]``."""
+    for c in parent_ends:
+        c.close()
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's: it ends the lanes
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     try:
         pyplot()  # while the parent computes: the import is off the critical path
     except ImportError:
         pass  # the plot call itself raises it, and its message goes back
+    second = 0
+    if len(conns) > 1:
+        try:
+            second = os.fork()
+        except OSError:  # no second lane: its calls are reported missing
+            conns[1].close()
+        else:
+            if second == 0:  # the second lane: serve its pipe, then end without cleanups
+                conns[0].close()
+                try:
+                    _answer(conns[1])
+                finally:
+                    os._exit(0)
+            conns[1].close()
+    _answer(conns[0])
+    if second:
+        os.waitpid(second, 0)
+
+
+def _answer(conn) -> None:
+    """Call each function received on ``conn`` and send its answer, until the pipe closes."""
     while True:
         try:
             function, args = conn.recv()
