@@ -30,7 +30,7 @@ analytic chain, families + verification (``SweepResult.timings["verify"]``), chu
 (``timings["compute"]`` minus VTU), VTU writing (``femcam.io.write_fe_vtu`` calls),
 CSV/NPZ/PVD, and each plot (``femcam.viz.sweep``), the worst-angle surface plot separately
 (it re-solves one angle). On Linux the plots are drawn by the sweep's plot process
-(:mod:`femcam.sweep.plotproc`, forked when the sweep starts; it imports matplotlib), so their
+(:mod:`femcam.viz.process`, forked when the sweep starts; it imports matplotlib), so their
 rows are missing and the outputs row holds the parent's wait for them.
 """
 

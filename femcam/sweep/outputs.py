@@ -17,11 +17,11 @@ from ..io import atomic_write_text, vtu_name, write_csv, write_npz, write_pvd
 from ..scene import Scene
 from ..scene.override import with_overrides
 from ..viz.animate import animate_pvd
+from ..viz.process import PlotProcess, warn_missing
 from ..viz.sweep import plot_surface_sweep, plot_sweep, sweep_plot_calls
 from .cache import default_cache
 from .extras import extra_columns, extras_files, plot_extras
 from .options import SweepOptions, contact_params
-from .plotproc import PlotProcess, warn_missing
 from .profile import worst_surface_profile
 from .report import report_html
 from .result import SweepResult, plot_data_arrays, report_markdown
@@ -152,7 +152,7 @@ class SweepRun:
         The persistent model cache of this call (``model_cache``, ``cache_dir``).
     settings : femcam.sweep.settings.SweepSettings, optional
         The resolved settings and the source of each (argument, scene, default).
-    plotter : femcam.sweep.plotproc.PlotProcess, optional
+    plotter : femcam.viz.process.PlotProcess, optional
         The process drawing the plots (started with the sweep; None: drawn here).
     """
 
@@ -250,7 +250,7 @@ def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None
         paths["pvd"] = str(write_pvd(out / "sweep.pvd", entries))
     paths.update(extras_files(run.scene, result.table, out, run.vtk_mask))  # e.g. camdisk.pvd
     result = replace(result, paths=paths)
-    if child is not None:  # drawn in the plot process meanwhile (femcam.sweep.plotproc)
+    if child is not None:  # drawn in the plot process meanwhile (femcam.viz.process)
         drawn, error = child.collect()
         if ": ImportError: " in error:  # pragma: no cover - matplotlib missing
             raise InputError(f"plots = True: {error.split(': ', 2)[-1]}")

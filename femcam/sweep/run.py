@@ -21,6 +21,7 @@ from ..mesh import MeshOptions
 from ..mesh.estimate import check_contact_elements
 from ..scene import load_scene
 from ..scene.digest import physics_hash, physics_parts
+from ..viz.process import start_plot_process
 from .cache import default_cache
 from .diskcache import DiskCache, usage
 from .estimate import estimate_run
@@ -29,7 +30,6 @@ from .options import SweepOptions, contact_params
 from .outputs import SweepRun, scene_hash, scene_source, write_outputs
 from .parallel import AUTO_VTU_S, auto_workers, run_tasks
 from .pipeline import ChunkTask, contact_mask, run_chunk
-from .plotproc import start_plot_process
 from .realcam import auto_hertz_rows, contact_scene, jump_angles, real_cam_summary, scene_traction
 from .result import SweepResult
 from .rtol import choose_mesh

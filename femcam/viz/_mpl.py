@@ -74,7 +74,7 @@ def save(fig, path, *, dpi: int = 100, tight: bool = False) -> Path:
     if tight and path.suffix.lower() == ".png":
         # the Agg canvas directly: savefig would lay the figure out once more (a draw with
         # rendering off, for the placeholder layout engine tight_layout leaves), ~40 % of a plot;
-        # atomic, so that a plot process ended mid-write (femcam.sweep.plotproc) leaves no half PNG
+        # atomic, so that a plot process ended mid-write (femcam.viz.process) leaves no half PNG
         fig.dpi = dpi
         atomic_write_bytes(path, fig.canvas.print_png)
     else:

@@ -330,7 +330,7 @@ def plot_sweep(result, out) -> dict[str, str]:
 
 def sweep_plot_calls(result, out) -> list[tuple]:
     """The calls :func:`plot_sweep` makes, one per plot, for a caller that draws them elsewhere
-    (:mod:`femcam.sweep.plotproc`).
+    (:mod:`femcam.viz.process`).
 
     Parameters
     ----------

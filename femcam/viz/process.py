@@ -24,7 +24,7 @@ import signal
 import sys
 import warnings
 
-from ..viz._mpl import pyplot
+from ._mpl import pyplot
 
 __all__ = ["PlotProcess", "start_plot_process"]
 

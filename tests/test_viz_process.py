@@ -1,4 +1,4 @@
-"""The sweep's plot process (femcam.sweep.plotproc): the plots it draws are those the sweep
+"""The sweep's plot process (femcam.viz.process): the plots it draws are those the sweep
 drew in its own process, and a plot process that fails or is killed loses no other output and
 says so in one warning.
 
@@ -17,7 +17,7 @@ import pytest
 import femcam.viz.sweep as vs
 from femcam.scene import load_scene
 from femcam.sweep import sweep
-from femcam.sweep.plotproc import PlotProcess, start_plot_process
+from femcam.viz.process import PlotProcess, start_plot_process
 from femcam.viz.sweep import plot_sweep
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="fork: Linux only")
