@@ -10,6 +10,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 from femcam.scene import load_scene
 from femcam.sweep import parse_angles_deg, sweep
 
@@ -24,6 +26,7 @@ def _rows(path: Path) -> list[dict]:
     return [{k: v for k, v in r.items() if "time" not in k} for r in rows]
 
 
+@pytest.mark.slow
 def test_command_line_files_and_stdout_are_complete(tmp_path):
     """A Hertz sweep with a VTK series and plots through ``python -m femcam`` (piped stdout):
     exit 0, the summary printed to its last line, and the CSV, the .pvd's files and the reports

@@ -17,12 +17,14 @@ import pytest
 import femcam.viz.sweep as vs
 from femcam.scene import load_scene
 from femcam.sweep import sweep
+from femcam.viz._mpl import pyplot
 from femcam.viz.process import PlotProcess, start_plot_process
 from femcam.viz.sweep import plot_sweep
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="fork: Linux only")
 
 SCENE = "examples/seed002_study_model.toml"
+pyplot()  # imported here once: every forked lane inherits it (the tests stay short)
 HERTZ = dict(angles=[0.0, 0.5, 1.0, 1.5], method="hertz", vtk_every=0, progress=False)
 
 
@@ -69,6 +71,7 @@ def test_two_lanes_keep_the_order_and_survive_each_other():
         assert "a" in paths and "ended early" in error, (lane_die, paths, error)
 
 
+@pytest.mark.slow
 def test_plots_equal_those_drawn_in_process(tmp_path):
     """The PNGs of a sweep (drawn by the plot process) equal, byte for byte, those
     plot_sweep draws in this process from the same result."""

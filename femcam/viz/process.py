@@ -22,6 +22,7 @@ import multiprocessing
 import os
 import signal
 import sys
+import time
 import warnings
 
 from ._mpl import pyplot
@@ -127,8 +128,7 @@ class PlotProcess:
                 ok, value = conn.recv()
             except (EOFError, OSError):
                 dead.add(lane)
-                self._proc.join(0.5 if lane else 5.0)
-                code = self._proc.exitcode if lane == 0 else None
+                code = self._exit_code() if lane == 0 else None  # the second lane is not our child
                 error = error or ("a plot process ended early"
                                   + (f" (exit code {code})" if code is not None else ""))
                 continue
@@ -138,6 +138,14 @@ class PlotProcess:
                 error = value
         self.close()
         return paths, error
+
+    def _exit_code(self, wait_s: float = 2.0):
+        """The first lane's exit code once it has ended (None if it has not within ``wait_s``).
+        Polled (``waitpid``), not joined: the second lane inherited the first's sentinel."""
+        end = time.monotonic() + wait_s
+        while self._proc.exitcode is None and time.monotonic() < end:
+            time.sleep(0.01)
+        return self._proc.exitcode
 
     def close(self) -> None:
         """End the lanes (idempotent): close the pipes, which the lanes read as the end."""
