@@ -322,8 +322,8 @@ def with_plot_data(result: SweepResult, run: SweepRun, child: PlotProcess | None
     cp = contact_params(run.scene)
     result = replace(result, hertz_factors=shape_factors(cp.mu, cp.cam.nu, cp.plane))
     if child is not None:
-        for function, args in sweep_plot_calls(result, run.out):  # no surface_profile yet
-            child.submit(function, *args, weight=PLOT_CPU_S.get(args[0], 0.2))
+        for function, args in sweep_plot_calls(replace(result, surface_profile=None), run.out):
+            child.submit(function, *args, weight=PLOT_CPU_S.get(str(args[0]), 0.2))
     profile = None
     if np.any(result.ok):
         fe = "hertz" if (result.method == "hertz" or run.scene.follower.flat_face) else "fe"
