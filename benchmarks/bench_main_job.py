@@ -29,7 +29,9 @@ heavy libraries the sweep imports lazily: scikit-fem, gmsh, meshio, matplotlib),
 analytic chain, families + verification (``SweepResult.timings["verify"]``), chunk solves
 (``timings["compute"]`` minus VTU), VTU writing (``femcam.io.write_fe_vtu`` calls),
 CSV/NPZ/PVD, and each plot (``femcam.viz.sweep``), the worst-angle surface plot separately
-(it re-solves one angle).
+(it re-solves one angle). On Linux the plots are drawn by the sweep's plot process
+(:mod:`femcam.viz.process`, forked when the sweep starts; it imports matplotlib), so their
+rows are missing and the outputs row holds the parent's wait for them.
 """
 
 from __future__ import annotations
@@ -57,7 +59,7 @@ import json, sys, time
 t_start = time.perf_counter()
 T = {}
 t = time.perf_counter(); import femcam.cli; T["import femcam.cli"] = time.perf_counter() - t
-for mod in ("skfem", "gmsh", "meshio", "matplotlib.pyplot", "femcam.fe", "femcam.sweep"):
+for mod in ("skfem", "gmsh", "meshio", "femcam.fe", "femcam.sweep"):  # matplotlib: the plot process
     t = time.perf_counter(); __import__(mod); T["import " + mod] = time.perf_counter() - t
 import importlib, femcam.scene, femcam.viz.sweep as vs
 from femcam.sweep import pipeline as sw_pipeline, run as sw_run
@@ -230,14 +232,15 @@ def print_breakdown(b: dict) -> None:
     plots = {k: v for k, v in ph.items() if k.startswith("plot ")}
     outputs = ph.get("outputs (CSV, NPZ, PVD, plots)", 0.0)
     rows = [("interpreter start (python -c pass)", b["python start"]),
-            ("imports (femcam.cli + skfem, gmsh, meshio, matplotlib)", imports),
+            ("imports (femcam.cli + skfem, gmsh, meshio)", imports),
             ("scene (load_scene)", ph.get("scene", 0.0)),
             ("analytic chain (kinematics, loads, Hertz)", sw.get("analytic", 0.0)),
             ("families + verification (model builds, scans, fresh checks)", sw.get("verify", 0.0)),
             ("chunk solves (compute minus VTU)", sw.get("compute", 0.0) - vtu),
             (f"VTU files ({int(ph.get('VTU (n)', 0))}): fields (femcam.fe full_field)", fields),
             ("VTU files: arrays + meshio write (femcam.io)", vtu - fields),
-            ("CSV + NPZ + PVD", outputs - sum(plots.values()))]
+            ("CSV + NPZ + PVD" if plots else "CSV + NPZ + PVD + reports, and the wait for the plot process",
+             outputs - sum(plots.values()))]
     rows += [(f"{k} (PNG)", v) for k, v in plots.items()]
     rows.append(("rest (argument parsing, printing, exit)",
                  b["wall"] - b["python start"] - sum(v for _, v in rows[1:])))

@@ -16,6 +16,7 @@ plain lines elsewhere).
 from __future__ import annotations
 
 import argparse
+import atexit
 import contextlib
 import importlib
 import os
@@ -156,13 +157,35 @@ def main(argv=None) -> int:
         written, a full disk), printed as one line
         ``femcam <command>: error: ...`` naming the path, never a traceback; 2 usage. A reader
         that closes the pipe early (``femcam wear seed000 --all-laws | head -2``) ends the
-        command quietly with 1 (no message).
+        command quietly with 1 (no message). Run as the ``femcam`` command (``argv`` None
+        and :func:`femcam._interrupt.is_command_line`), the process ends here with that code
+        once stdout and stderr are flushed (no interpreter teardown: :func:`_exit_process`).
     """
     previous = _interrupt.starting()  # imports of the subcommands: one line, exit at once
     try:
-        return _main(argv)
+        code = _main(argv)
     finally:
         _interrupt.restore(previous)
+    if argv is None and _interrupt.is_command_line():
+        _exit_process(code)  # the command line only: never a program that imports femcam
+    return code
+
+
+def _exit_process(code: int) -> None:
+    """End the ``femcam`` process with ``code`` once its output is out, skipping the
+    interpreter's teardown of the modules and of the large arrays of a sweep (0.25-0.5 s).
+
+    Every file femcam writes is complete and closed when its writer returns
+    (:mod:`femcam.io.atomic`); stdout and stderr are flushed and the ``atexit`` functions run
+    (logging, a process pool's workers, temporary directories) before ``os._exit``.
+    """
+    try:
+        sys.stdout.flush()
+        sys.stderr.flush()
+    except (BrokenPipeError, ValueError):  # a reader that closed early, or a closed stream
+        _quiet_broken_pipe()
+    atexit._run_exitfuncs()
+    os._exit(code)
 
 
 def _main(argv) -> int:

@@ -17,7 +17,8 @@ from ..io import atomic_write_text, vtu_name, write_csv, write_npz, write_pvd
 from ..scene import Scene
 from ..scene.override import with_overrides
 from ..viz.animate import animate_pvd
-from ..viz.sweep import plot_sweep
+from ..viz.process import PlotProcess, warn_missing
+from ..viz.sweep import plot_surface_sweep, plot_sweep, sweep_plot_calls
 from .cache import default_cache
 from .extras import extra_columns, extras_files, plot_extras
 from .options import SweepOptions, contact_params
@@ -151,6 +152,8 @@ class SweepRun:
         The persistent model cache of this call (``model_cache``, ``cache_dir``).
     settings : femcam.sweep.settings.SweepSettings, optional
         The resolved settings and the source of each (argument, scene, default).
+    plotter : femcam.viz.process.PlotProcess, optional
+        The process drawing the plots (started with the sweep; None: drawn here).
     """
 
     scene: Scene
@@ -183,7 +186,14 @@ class SweepRun:
     rtol_info: dict = field(default_factory=dict)
     disk: object = None
     settings: object = None
+    plotter: object = None
 
+
+
+#: CPU seconds of each sweep plot (the study model, AMD EPYC, median of 3): the weights that
+#: share the plots between the plot process's two lanes (:class:`PlotProcess`)
+PLOT_CPU_S = {"plot_p0": 0.17, "plot_maxima": 0.15, "plot_svaj": 0.38, "plot_wear": 0.20,
+              "plot_junction": 0.20, "plot_surface": 0.23}
 
 
 def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None,
@@ -219,8 +229,9 @@ def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None
         prov["scene_copy"] = (f"{copy.name} (copy of {src_path} with the overrides of the run, e.g. "
                               "--law, written into it: sweeping it again reproduces the run)")
     result = replace(result, provenance=prov)
+    child = run.plotter if plots else None
     if plots:
-        result = with_plot_data(result, run)
+        result = with_plot_data(result, run, child)
     xcols, xtext = extra_columns(run.scene)  # extra column providers (femcam.sweep.extras)
     paths.update(csv=str(write_csv(out / "sweep.csv", result.table, prov, columns=COLUMNS + xcols,
                                    text_columns=TEXT_COLUMNS + xtext,
@@ -239,7 +250,14 @@ def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None
         paths["pvd"] = str(write_pvd(out / "sweep.pvd", entries))
     paths.update(extras_files(run.scene, result.table, out, run.vtk_mask))  # e.g. camdisk.pvd
     result = replace(result, paths=paths)
-    if plots:
+    if child is not None:  # drawn in the plot process meanwhile (femcam.viz.process)
+        drawn, error = child.collect()
+        if ": ImportError: " in error:  # pragma: no cover - matplotlib missing
+            raise InputError(f"plots = True: {error.split(': ', 2)[-1]}")
+        paths.update(drawn)
+        if error:
+            warn_missing(error, out)
+    elif plots:
         try:
             paths.update(plot_sweep(result, out))
             paths.update(plot_extras(run.scene, result.table, out))
@@ -282,7 +300,7 @@ def check_vtus(result: SweepResult, run: SweepRun) -> None:
                           f"{run.out / 'chunks'}")
 
 
-def with_plot_data(result: SweepResult, run: SweepRun) -> SweepResult:
+def with_plot_data(result: SweepResult, run: SweepRun, child: PlotProcess | None = None) -> SweepResult:
     """The Hertz shape factors and the worst angle's surface profile, for the plots.
 
     Parameters
@@ -291,6 +309,10 @@ def with_plot_data(result: SweepResult, run: SweepRun) -> SweepResult:
         The computed sweep.
     run : SweepRun
         Its state (scene, options).
+    child : PlotProcess, optional
+        A plot process: it is sent the plots that need no surface profile before the profile
+        is solved, then the profile's plot, the extra providers' plots last (the order of
+        :func:`femcam.viz.sweep.plot_sweep`, then :func:`femcam.sweep.extras.plot_extras`).
 
     Returns
     -------
@@ -298,10 +320,18 @@ def with_plot_data(result: SweepResult, run: SweepRun) -> SweepResult:
         ``result`` with ``surface_profile`` (None without an ``ok`` angle) and ``hertz_factors``.
     """
     cp = contact_params(run.scene)
+    result = replace(result, hertz_factors=shape_factors(cp.mu, cp.cam.nu, cp.plane))
+    if child is not None:
+        for function, args in sweep_plot_calls(replace(result, surface_profile=None), run.out):
+            child.submit(function, *args, weight=PLOT_CPU_S.get(str(args[0]), 0.2))
     profile = None
     if np.any(result.ok):
         fe = "hertz" if (result.method == "hertz" or run.scene.follower.flat_face) else "fe"
         profile = worst_surface_profile(result.table, fe, cp, result.families, run.opts,
                                         default_cache(), scene=run.scene)
-    return replace(result, surface_profile=profile,
-                   hertz_factors=shape_factors(cp.mu, cp.cam.nu, cp.plane))
+    result = replace(result, surface_profile=profile)
+    if child is not None:
+        if profile is not None and "x_hertz" in profile:
+            child.submit(plot_surface_sweep, profile, run.out, weight=PLOT_CPU_S["plot_surface"])
+        child.submit(plot_extras, run.scene, result.table, run.out, weight=0.2)
+    return result

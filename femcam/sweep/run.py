@@ -21,6 +21,7 @@ from ..mesh import MeshOptions
 from ..mesh.estimate import check_contact_elements
 from ..scene import load_scene
 from ..scene.digest import physics_hash, physics_parts
+from ..viz.process import start_plot_process
 from .cache import default_cache
 from .diskcache import DiskCache, usage
 from .estimate import estimate_run
@@ -161,11 +162,14 @@ def sweep(scene, *, angles=None, method: str | None = None, a_over_h=None, toler
         raise _validate.fail("animate", animate, "", "needs the VTK series: an output directory "
                              "(out) and vtk_every > 0 (--vtk-every)")
     plots = run.out is not None and run.settings.plots
+    run.plotter = start_plot_process() if plots else None  # imports matplotlib meanwhile
     try:
         return _sweep(run, scheduler, client, progress, plots, command, t_start)
     except KeyboardInterrupt:
         raise SweepInterrupted(_interrupt_message(run)) from None
     finally:
+        if run.plotter is not None:
+            run.plotter.close()
         if run.lock is not None:
             run.lock.release()
 

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ..io.atomic import atomic_write_bytes
+
 
 def pyplot():
     """``matplotlib.pyplot`` on the Agg backend (headless; PNG output).
@@ -71,9 +73,10 @@ def save(fig, path, *, dpi: int = 100, tight: bool = False) -> Path:
         fig.tight_layout()
     if tight and path.suffix.lower() == ".png":
         # the Agg canvas directly: savefig would lay the figure out once more (a draw with
-        # rendering off, for the placeholder layout engine tight_layout leaves), ~40 % of a plot
+        # rendering off, for the placeholder layout engine tight_layout leaves), ~40 % of a plot;
+        # atomic, so that a plot process ended mid-write (femcam.viz.process) leaves no half PNG
         fig.dpi = dpi
-        fig.canvas.print_png(path)
+        atomic_write_bytes(path, fig.canvas.print_png)
     else:
         fig.savefig(path, dpi=dpi)
     pyplot().close(fig)

@@ -322,16 +322,75 @@ def plot_sweep(result, out) -> dict[str, str]:
     dict[str, str]
         ``{name: path}`` of the PNGs written.
     """
+    paths = {}
+    for function, args in sweep_plot_calls(result, out):
+        paths.update(function(*args))
+    return paths
+
+
+def sweep_plot_calls(result, out) -> list[tuple]:
+    """The calls :func:`plot_sweep` makes, one per plot, for a caller that draws them elsewhere
+    (:mod:`femcam.viz.process`).
+
+    Parameters
+    ----------
+    result : femcam.sweep.SweepResult
+        As for :func:`plot_sweep`.
+    out : str or Path
+        Output directory.
+
+    Returns
+    -------
+    list of (callable, tuple)
+        ``(function, args)``; ``function(*args)`` draws one plot and returns ``{name: path}``.
+    """
     r = result
     d = Path(out) / "plots"
-    paths = {"plot_p0": plot_p0(r, d / "p0_vs_angle.png"),
-             "plot_maxima": plot_maxima(r, d / "maxima_vs_angle.png"),
-             "plot_svaj": plot_svaj_loads(r, d / "svaj_loads.png")}
+    calls = [(named_plot, ("plot_p0", plot_p0, r, d / "p0_vs_angle.png")),
+             (named_plot, ("plot_maxima", plot_maxima, r, d / "maxima_vs_angle.png")),
+             (named_plot, ("plot_svaj", plot_svaj_loads, r, d / "svaj_loads.png"))]
     if np.any(np.isfinite(result.table["wear_depth"])):
-        paths["plot_wear"] = plot_wear(r, d / "wear_vs_angle.png")
+        calls.append((named_plot, ("plot_wear", plot_wear, r, d / "wear_vs_angle.png")))
     if "curvature_jump" in result.table and np.any(result.table["curvature_jump"] == 1):
-        paths["plot_junction"] = plot_junction_p0(r, d / "p0_curvature_jumps.png")
+        calls.append((named_plot, ("plot_junction", plot_junction_p0, r, d / "p0_curvature_jumps.png")))
     if result.surface_profile is not None and "x_hertz" in result.surface_profile:
-        paths["plot_surface"] = plot_surface_worst(result.surface_profile,
-                                                   d / "surface_stress_worst.png")
-    return paths
+        calls.append((plot_surface_sweep, (result.surface_profile, out)))
+    return calls
+
+
+def named_plot(name: str, function, *args) -> dict[str, str]:
+    """``{name: function(*args)}``: one plot of :func:`sweep_plot_calls`.
+
+    Parameters
+    ----------
+    name : str
+        The key of the plot in ``SweepResult.paths`` (``"plot_p0"``).
+    function : callable
+        A plot function of this module returning the path written.
+    *args
+        Its arguments.
+
+    Returns
+    -------
+    dict[str, str]
+        ``{name: path}``.
+    """
+    return {name: function(*args)}
+
+
+def plot_surface_sweep(profile: dict, out) -> dict[str, str]:
+    """The worst-angle surface plot of :func:`plot_sweep` alone (``out/plots``).
+
+    Parameters
+    ----------
+    profile : dict
+        ``SweepResult.surface_profile`` with its Hertz curve (``x_hertz``).
+    out : str or Path
+        Output directory.
+
+    Returns
+    -------
+    dict[str, str]
+        ``{"plot_surface": path}``.
+    """
+    return {"plot_surface": plot_surface_worst(profile, Path(out) / "plots" / "surface_stress_worst.png")}
