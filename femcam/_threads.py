@@ -21,6 +21,7 @@ from __future__ import annotations
 import ctypes
 import sys
 import threading
+from concurrent.futures import ThreadPoolExecutor
 
 _BLAS_PREFIXES = ("openblas_", "scipy_openblas_")
 _BLAS_SUFFIXES = ("", "64_")
@@ -137,3 +138,70 @@ class single_threaded_blas:  # noqa: N801 - used like a function
                         put(ctypes.c_int(n))
                 _saved = []
         return False
+
+
+class Background:
+    """Jobs run in background threads while the caller works, and taken back by key.
+
+    :meth:`submit` queues ``fn()`` under a key (nothing when there are no threads, or when the
+    key is queued already); :meth:`take` returns the result: the job's (waiting for it while it
+    runs), or ``fn()`` computed in the calling thread when the job was never queued or has not
+    started (it is then cancelled: the caller never waits for work it can do itself). A job's
+    exception is raised by :meth:`take`, as if ``fn()`` had run there; a job nobody takes is
+    dropped. A context manager: on exit the queued jobs are cancelled and the running ones
+    waited for (a job is one model build, a fraction of a second at the default mesh).
+
+    Why threads and not processes: the jobs are FE model builds (gmsh meshing through ctypes,
+    SuperLU factorisations and solves, numpy kernels), which release the GIL, and their
+    results (factorised bodies) cannot be pickled to another process.
+
+    Parameters
+    ----------
+    threads : int
+        Background threads (0: none; every :meth:`take` computes in the caller).
+
+    >>> with Background(1) as bg:
+    ...     bg.submit("x", lambda: 2 + 2)
+    ...     bg.take("x", lambda: 4)
+    4
+    """
+
+    def __init__(self, threads: int = 1):
+        self.threads = max(0, int(threads))
+        self._jobs: dict = {}
+        self._lock = threading.Lock()
+        self._pool = (ThreadPoolExecutor(self.threads, thread_name_prefix="femcam-background")
+                      if self.threads else None)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
+    def close(self) -> None:
+        """Cancel the queued jobs, wait for the running ones; later submits do nothing."""
+        with self._lock:
+            pool, self._pool = self._pool, None
+            jobs, self._jobs = self._jobs, {}
+        for f in jobs.values():
+            f.cancel()
+        if pool is not None:
+            pool.shutdown(wait=True)
+
+    def submit(self, key, fn) -> None:
+        """Queue ``fn()`` under ``key`` (hashable) unless it is queued already or there are no
+        threads."""
+        with self._lock:
+            if self._pool is not None and key not in self._jobs:
+                self._jobs[key] = self._pool.submit(fn)
+
+    def take(self, key, fn):
+        """The result of the job ``key``, or ``fn()`` here if it was never queued or has not
+        started (see the class docstring)."""
+        with self._lock:
+            fut = self._jobs.pop(key, None)
+        if fut is None or fut.cancel():
+            return fn()
+        return fut.result()
