@@ -303,7 +303,10 @@ class ModelCache:
         key = (_key(cp, rho, a, options), F, cp.mu, sliding, Q, rolling)
 
         def job():
-            solver = SolverOptions(stress_operators="per_solve")  # one load case: no operators
+            # one load case, only its p0 read: no stress operators, and a stress window of the
+            # surface nodes only (eval_depth 0; the contact solve does not use the window, so
+            # p0 is the same bit for bit, and the build ~10 % cheaper)
+            solver = SolverOptions(stress_operators="per_solve", eval_depth=0.0)
             dk = (_disk_key("fresh_p0", cp, rho, a, options, solver, (F, sliding, Q, rolling))
                   if self.disk is not None else None)
             p0 = self.disk.get(dk) if dk is not None else None
