@@ -21,7 +21,7 @@ from __future__ import annotations
 import ctypes
 import sys
 import threading
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import Future, ThreadPoolExecutor
 
 _BLAS_PREFIXES = ("openblas_", "scipy_openblas_")
 _BLAS_SUFFIXES = ("", "64_")
@@ -144,12 +144,14 @@ class Background:
     """Jobs run in background threads while the caller works, and taken back by key.
 
     :meth:`submit` queues ``fn()`` under a key (nothing when there are no threads, or when the
-    key is queued already); :meth:`take` returns the result: the job's (waiting for it while it
-    runs), or ``fn()`` computed in the calling thread when the job was never queued or has not
-    started (it is then cancelled: the caller never waits for work it can do itself). A job's
-    exception is raised by :meth:`take`, as if ``fn()`` had run there; a job nobody takes is
-    dropped. A context manager: on exit the queued jobs are cancelled and the running ones
-    waited for (a job is one model build, a fraction of a second at the default mesh).
+    key is queued already); :meth:`take` returns the result: the job's, or ``fn()`` computed in
+    the calling thread when the job was never queued or has not started (it is then cancelled:
+    the caller never waits for work it can do itself). While the job it takes is running, the
+    caller runs the oldest queued jobs itself (their results kept for their own :meth:`take`),
+    so neither thread idles while work is queued. A job's exception is raised by :meth:`take`,
+    as if ``fn()`` had run there; a job nobody takes is dropped. A context manager: on exit the
+    queued jobs are cancelled and the running ones waited for (a job is one model build, a
+    fraction of a second at the default mesh).
 
     Why threads and not processes: the jobs are FE model builds (gmsh meshing through ctypes,
     SuperLU factorisations and solves, numpy kernels), which release the GIL, and their
@@ -168,7 +170,7 @@ class Background:
 
     def __init__(self, threads: int = 1):
         self.threads = max(0, int(threads))
-        self._jobs: dict = {}
+        self._jobs: dict = {}   # key -> (Future, fn), in the order submitted
         self._lock = threading.Lock()
         self._pool = (ThreadPoolExecutor(self.threads, thread_name_prefix="femcam-background")
                       if self.threads else None)
@@ -185,7 +187,7 @@ class Background:
         with self._lock:
             pool, self._pool = self._pool, None
             jobs, self._jobs = self._jobs, {}
-        for f in jobs.values():
+        for f, _ in jobs.values():
             f.cancel()
         if pool is not None:
             pool.shutdown(wait=True)
@@ -195,13 +197,32 @@ class Background:
         threads."""
         with self._lock:
             if self._pool is not None and key not in self._jobs:
-                self._jobs[key] = self._pool.submit(fn)
+                self._jobs[key] = (self._pool.submit(fn), fn)
 
     def take(self, key, fn):
         """The result of the job ``key``, or ``fn()`` here if it was never queued or has not
         started (see the class docstring)."""
         with self._lock:
-            fut = self._jobs.pop(key, None)
+            fut, _ = self._jobs.pop(key, (None, None))
         if fut is None or fut.cancel():
             return fn()
+        while not fut.done() and self._help():
+            pass
         return fut.result()
+
+    def _help(self) -> bool:
+        """Run the oldest queued job in this thread (its result kept under its key); False when
+        none is queued."""
+        with self._lock:
+            for key, (f, fn) in self._jobs.items():
+                if f.cancel():
+                    mine = Future()
+                    self._jobs[key] = (mine, fn)
+                    break
+            else:
+                return False
+        try:
+            mine.set_result(fn())
+        except Exception as exc:  # noqa: BLE001 - raised by the take of its own key
+            mine.set_exception(exc)
+        return True

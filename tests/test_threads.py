@@ -54,6 +54,13 @@ def test_background_takes_results_steals_queued_jobs_and_reraises():
         assert ran_here == [1]
         release.set()
         assert bg.take("slow", lambda: "here") == "from the background"  # running: waited for
+        # while the job it takes runs, the caller runs the queued ones (kept for their take)
+        started.clear(), release.clear()
+        bg.submit("slow2", blocking)
+        assert started.wait(10)
+        bg.submit("releases", lambda: release.set() or "ran while waiting")
+        assert bg.take("slow2", lambda: "here") == "from the background"
+        assert bg.take("releases", lambda: "again") == "ran while waiting"
         bg.submit("bad", lambda: 1 / 0)
         with pytest.raises(ZeroDivisionError):  # raised in the caller, wherever the job ran
             bg.take("bad", lambda: 1 / 0)
