@@ -149,9 +149,10 @@ class Background:
     the caller never waits for work it can do itself). While the job it takes is running, the
     caller runs the oldest queued jobs itself (their results kept for their own :meth:`take`),
     so neither thread idles while work is queued. A job's exception is raised by :meth:`take`,
-    as if ``fn()`` had run there; a job nobody takes is dropped. A context manager: on exit the
-    queued jobs are cancelled and the running ones waited for (a job is one model build, a
-    fraction of a second at the default mesh).
+    as if ``fn()`` had run there; a job nobody takes is dropped. :meth:`defer` queues work done
+    for its effect (a cache file written) that is never dropped. A context manager: on exit the
+    queued jobs are cancelled, the running ones and the deferred work waited for (a job is one
+    model build, a fraction of a second at the default mesh).
 
     Why threads and not processes: the jobs are FE model builds (gmsh meshing through ctypes,
     SuperLU factorisations and solves, numpy kernels), which release the GIL, and their
@@ -198,6 +199,17 @@ class Background:
         with self._lock:
             if self._pool is not None and key not in self._jobs:
                 self._jobs[key] = (self._pool.submit(fn), fn)
+
+    def defer(self, fn) -> None:
+        """Run ``fn()`` in the background, for its effect (e.g. a file written): never
+        cancelled, waited for on exit (its exceptions dropped); run here at once when there
+        are no threads."""
+        with self._lock:
+            pool = self._pool
+            if pool is not None:
+                pool.submit(fn)
+                return
+        fn()
 
     def take(self, key, fn):
         """The result of the job ``key``, or ``fn()`` here if it was never queued or has not

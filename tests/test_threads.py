@@ -68,3 +68,13 @@ def test_background_takes_results_steals_queued_jobs_and_reraises():
     bg.submit("after close", lambda: 1)   # closed: nothing queued, the caller computes
     assert bg.take("after close", lambda: 2) == 2
     assert _threads.Background(0).take("x", lambda: 3) == 3
+
+
+def test_background_defer_is_never_dropped():
+    done = []
+    with _threads.Background(1) as bg:
+        bg.submit("long", lambda: __import__("time").sleep(0.05))
+        bg.defer(lambda: done.append("deferred"))   # queued behind "long", run before exit
+    assert done == ["deferred"]
+    _threads.Background(0).defer(lambda: done.append("at once"))
+    assert done == ["deferred", "at once"]

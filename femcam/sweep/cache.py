@@ -135,8 +135,9 @@ class ModelCache:
         t0 = time.perf_counter()
         m = build()
         dt = time.perf_counter() - t0
-        if dk is not None:
-            self.disk.put(dk, strip_model(m))
+        if dk is not None:  # pickled and hashed in the background when a thread is on
+            disk = self.disk
+            self.background.defer(lambda: disk.put(dk, strip_model(m)))
         return m, dt
 
     def prefetch_model(self, cp: ContactParams, rho_ref: float, a_ref: float,
