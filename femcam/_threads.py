@@ -1,4 +1,6 @@
-"""BLAS thread control without extra dependencies (used by ``femcam.fe`` and ``femcam.sweep``).
+"""BLAS thread control without extra dependencies (used by ``femcam.fe`` and ``femcam.sweep``),
+and :class:`Background`, jobs run ahead in background threads and taken back by key (the sweep's
+family phase builds its independent FE models on a second core with it).
 
 OpenBLAS reads ``OPENBLAS_NUM_THREADS`` only when it loads, so the running libraries are told
 directly through ``ctypes`` (the ``openblas_set_num_threads`` calls that threadpoolctl makes;
