@@ -69,13 +69,18 @@ def test_process_pool_equals_serial(serial, tmp_path):
 
 
 @pytest.mark.slow  # two cold family phases: ~3-6 s on 2 shared cores
-def test_background_builds_equal_one_thread():
-    """The family phase with its background build thread (workers "auto") against one thread
-    (workers=1): the same families, records and rows, bit for bit (same process, same models)."""
+def test_background_builds_equal_one_thread(monkeypatch):
+    """The family phase with its background build thread (workers "auto", the thread forced on
+    whatever the machine's load) against one thread (workers=1): the same families, records
+    and rows, bit for bit (same process, same models)."""
+    from femcam.sweep import run as run_module
+
     th = parse_angles_deg("0:360:15")
     out = {}
     for workers in (1, "auto"):
         default_cache().clear()
+        if workers == "auto":
+            monkeypatch.setattr(run_module, "_background_threads", lambda run: 1)
         r = sweep(STUDY, angles=th, chunk_size=8, workers=workers, model_cache=False)
         out[workers] = r
     a, b = out[1], out["auto"]

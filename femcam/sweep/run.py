@@ -7,6 +7,7 @@ planning, chunking, the executor and the on-disk store; the output files are wri
 
 from __future__ import annotations
 
+import os
 import time
 from pathlib import Path
 from types import SimpleNamespace
@@ -353,8 +354,19 @@ def _plan(run: SweepRun) -> None:
 
 def _background_threads(run: SweepRun) -> int:
     """Background build threads of the family phase: 1 with two or more usable cores, unless
-    the sweep was asked to stay in one process and thread (``workers=1``)."""
-    return 1 if run.workers != 1 and _cpu_count() >= 2 else 0
+    the sweep was asked to stay in one process and thread (``workers=1``); with ``"auto"`` only
+    while a core is idle (1-minute load average below cores - 0.5): on busy cores the two
+    threads only take turns, at ~5-10 % more CPU (docs/performance.md)."""
+    cores = _cpu_count()
+    if run.workers == 1 or cores < 2:
+        return 0
+    if run.workers == "auto":
+        try:
+            if os.getloadavg()[0] > cores - 0.5:
+                return 0
+        except OSError:  # no load average on this platform: use the core
+            pass
+    return 1
 
 
 def _fit_rows(run: SweepRun) -> np.ndarray:
