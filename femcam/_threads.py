@@ -156,9 +156,11 @@ class Background:
     queued jobs are cancelled, the running ones and the deferred work waited for (a job is one
     model build, a fraction of a second at the default mesh).
 
-    Why threads and not processes: the jobs are FE model builds (gmsh meshing through ctypes,
-    SuperLU factorisations and solves, numpy kernels), which release the GIL, and their
-    results (factorised bodies) cannot be pickled to another process.
+    Why threads and not processes: the jobs are FE model builds, whose results (factorised
+    bodies) cannot be pickled to another process; their SuperLU solves and numpy kernels
+    release the GIL and overlap, their meshing (one gmsh at a time), factorisations (scipy
+    runs one at a time) and sparse conversions do not, which bounds the gain
+    (docs/performance.md).
 
     Parameters
     ----------
