@@ -8,7 +8,7 @@ import math
 import threading
 import time
 from collections import OrderedDict
-from contextlib import contextmanager
+from contextlib import ExitStack, contextmanager
 
 from .. import _validate
 from .._threads import Background
@@ -20,6 +20,11 @@ from ..mesh import MeshOptions
 from ..mesh.session import gmsh_kept
 from .diskcache import DiskCache, content_key, finite_p0, restore_model, strip_model
 from .options import ContactParams, SweepOptions
+
+#: fresh checks: one load case, only its p0 read: no stress operators, and a stress window of
+#: the surface nodes only (eval_depth 0; the contact solve does not use the window, so p0 is the
+#: same bit for bit, and the build ~10 % cheaper)
+_FRESH_SOLVER = SolverOptions(stress_operators="per_solve", eval_depth=0.0)
 
 
 def _key(cp, rho_ref, a_ref, options):
@@ -66,6 +71,7 @@ class ModelCache:
         self._build_lock = threading.RLock()
         #: builds started ahead (:meth:`building_in_background`; none outside it)
         self.background = Background(0)
+        self._kept, self._kept_entered = None, False   # gmsh kept initialised meanwhile
 
     def model_for(self, cp: ContactParams, rho_ref: float, a_ref: float,
                   options: SweepOptions) -> ContactModel:
@@ -158,16 +164,41 @@ class ModelCache:
         with self._lock:
             if key in self._models:
                 return
-        self.background.submit(("model", key), lambda: self._load_or_build(
-            lambda: build_model(cp, rho_ref, a_ref, options),
-            lambda: _disk_key("family_model", cp, rho_ref, a_ref, options)))
+        dk = _disk_key("family_model", cp, rho_ref, a_ref, options) if self.disk is not None else None
+        self.submit_build(("model", key), lambda: self._load_or_build(
+            lambda: build_model(cp, rho_ref, a_ref, options), lambda: dk), dk)
+
+    def submit_build(self, key, job, disk_key: str | None = None) -> None:
+        """Queue ``job`` (a build) in the background under ``key``, unless :attr:`disk` holds
+        its entry ``disk_key`` (loading it where it is wanted costs milliseconds). gmsh is
+        initialised for the background builds here, in the submitting (main) thread, on the
+        first build queued (:func:`femcam.mesh.session.gmsh_kept`): a run that only loads
+        from the disk cache never imports gmsh (~0.1 s).
+
+        Parameters
+        ----------
+        key : hashable
+            The job's key (``background.take(key, ...)`` takes its result).
+        job : callable
+            ``job()`` builds (or loads) and returns the result.
+        disk_key : str, optional
+            Its entry in :attr:`disk` (None: not stored, always queued).
+        """
+        if not self.background.threads:
+            return
+        if disk_key is not None and self.disk is not None and self.disk.has(disk_key):
+            return
+        if self._kept is not None and not self._kept_entered:
+            self._kept.enter_context(gmsh_kept())
+            self._kept_entered = True
+        self.background.submit(key, job)
 
     @contextmanager
     def building_in_background(self, threads: int = 1):
-        """Let :meth:`prefetch_model`, :meth:`prefetch_fresh` and ``background.submit`` run
-        builds in ``threads`` background threads while the caller works (0: none; gmsh stays
-        initialised meanwhile, :func:`femcam.mesh.session.gmsh_kept`). On exit the builds not
-        started are dropped and a running one is waited for.
+        """Let :meth:`prefetch_model`, :meth:`prefetch_fresh` and :meth:`submit_build` run
+        builds in ``threads`` background threads while the caller works (0: none; from the first
+        build queued on, gmsh stays initialised, :func:`femcam.mesh.session.gmsh_kept`). On
+        exit the builds not started are dropped and a running one is waited for.
 
         Parameters
         ----------
@@ -182,12 +213,13 @@ class ModelCache:
         if threads < 1:
             yield self.background
             return
-        with gmsh_kept(), Background(threads) as bg:
+        with ExitStack() as kept, Background(threads) as bg:  # bg closes first, then gmsh
             old, self.background = self.background, bg
+            self._kept, self._kept_entered = kept, False
             try:
                 yield bg
             finally:
-                self.background = old
+                self.background, self._kept = old, None
 
     def solve(self, model: ContactModel, F: float, rho: float, mu: float, sliding: int,
               check: bool = True, Q: float | None = None, rolling: int = 0) -> ContactResult:
@@ -293,7 +325,7 @@ class ModelCache:
         with self._lock:
             if key in self._fresh_p0:
                 return
-        self.background.submit(("fresh", key), job)
+        self.submit_build(("fresh", key), job, job.disk_key)
 
     def _fresh_job(self, cp, rho, a, options, F, load) -> tuple:
         """The memo key of a fresh check and the function computing ``(p0, how)``: ``how``
@@ -304,12 +336,7 @@ class ModelCache:
         key = (_key(cp, rho, a, options), F, cp.mu, sliding, Q, rolling)
 
         def job():
-            # one load case, only its p0 read: no stress operators, and a stress window of the
-            # surface nodes only (eval_depth 0; the contact solve does not use the window, so
-            # p0 is the same bit for bit, and the build ~10 % cheaper)
-            solver = SolverOptions(stress_operators="per_solve", eval_depth=0.0)
-            dk = (_disk_key("fresh_p0", cp, rho, a, options, solver, (F, sliding, Q, rolling))
-                  if self.disk is not None else None)
+            solver, dk = _FRESH_SOLVER, job.disk_key
             p0 = self.disk.get(dk) if dk is not None else None
             if finite_p0(p0):
                 return p0, "loaded"
@@ -323,6 +350,8 @@ class ModelCache:
                 self.disk.put(dk, p0)
             return p0, "built"
 
+        job.disk_key = (_disk_key("fresh_p0", cp, rho, a, options, _FRESH_SOLVER, (F, sliding, Q, rolling))
+                        if self.disk is not None else None)
         return key, job
 
     def real_cam(self, key: tuple, build):

@@ -233,6 +233,7 @@ def _coarse_job(cp, rho_ref, a_ref, options, mesh2, F, cache) -> tuple:
             disk.put(dk, {k: float(v) for k, v in qH.items()})
         return qH
 
+    job.disk_key = dk
     return ("estimate_coarse", _key(cp, rho_ref, a_ref, options), load), job
 
 
@@ -262,7 +263,8 @@ def prefetch_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: 
         F = reference_load(cp, rho_ref, a_ref)
     except (FemcamError, ValueError, ArithmeticError):
         return   # family_estimate says NaN for it
-    cache.background.submit(*_coarse_job(cp, rho_ref, a_ref, options, mesh2, F, cache))
+    key, job = _coarse_job(cp, rho_ref, a_ref, options, mesh2, F, cache)
+    cache.submit_build(key, job, job.disk_key)
 
 
 def row_estimate(est: FamilyEstimate, a_row: float, a_model: float | None = None) -> dict:
