@@ -13,7 +13,8 @@ the rows above are cold runs. ``--cache`` times instead, paired run by run, the 
 compute-only sweep (``--method hertz --no-plots --vtk-every 0``), README command 1 cold (an
 empty cache) and warm (the cache the cold run just filled), and prints the medians and the
 ratios cold / Hertz-only and warm / Hertz-only (issue 27 targets: <= 3 and <= 1.5); each FE run's
-CSV passes the p0 check, and the warm CSV must equal the cold one (timing columns aside).
+CSV passes the p0 check, and the warm CSV must equal the cold one (timing columns aside). With
+several ``--root`` trees the trees alternate round by round (before/after ratios at one load).
 
 Each is run ``--runs`` times (default 5; with several ``--root`` trees, alternating run by run)
 into a fresh directory; the table gives the median wall
@@ -24,7 +25,8 @@ the study model's FE p0 within 0.3 % of Hertz at every angle answered with the a
 (``err_p0`` column, ``model = fe_arc``: 344 of 360), else the benchmark stops.
 
 Breakdown (one extra run of the default job in a driver process, ``--workers 1`` so that every
-phase runs in that process and can be timed): interpreter start, imports (femcam.cli and the
+phase runs in that process and can be timed; ``--breakdown-workers auto`` times the default, whose
+family phase builds in a background thread as well): interpreter start, imports (femcam.cli and the
 heavy libraries the sweep imports lazily: scikit-fem, gmsh, meshio, matplotlib), scene,
 analytic chain, families + verification (``SweepResult.timings["verify"]``), chunk solves
 (``timings["compute"]`` minus VTU), VTU writing (``femcam.io.write_fe_vtu`` calls),
@@ -170,41 +172,50 @@ def _rows_without_times(csv_path: Path) -> list[dict]:
     return [{k: v for k, v in r.items() if "time" not in k} for r in rows]
 
 
-def cache_runs(runs: int) -> None:
-    """Paired Hertz-only / cold / warm whole-process runs (module docstring)."""
+def cache_runs(runs: int, roots: list[Path] | None = None) -> None:
+    """Paired Hertz-only / cold / warm whole-process runs (module docstring); with several
+    ``roots`` the trees alternate round by round (a load spike from other users hits both)."""
+    roots = roots or [ROOT]
     hertz = ["--method", "hertz", "--no-plots", "--vtk-every", "0"]
     compute = ["--no-plots", "--vtk-every", "0"]
     plan = (("hertz", hertz, "h"), ("cold", [], "a"), ("warm", [], "a"),
             ("cold_compute", compute, "b"), ("warm_compute", compute, "b"))
-    t = {name: [] for name, _, _ in plan}
-    c = {k: [] for k in t}
+    t = {root: {name: [] for name, _, _ in plan} for root in roots}
+    c = {root: {name: [] for name, _, _ in plan} for root in roots}
+    loads = []
     for _ in range(runs):
-        with tempfile.TemporaryDirectory(prefix="femcam_mainjob_cache_") as cache:
-            for name, extra, cdir in plan:   # a and b: one cache each, filled by the cold run
-                csv_copy = Path(cache) / f"{name}.csv"
-                w, cpu, _, _ = run_once(extra, ROOT, cache=str(Path(cache) / cdir), keep=csv_copy)
-                t[name].append(w)
-                c[name].append(cpu)
-            for k in ("", "_compute"):
-                assert _rows_without_times(Path(cache) / f"cold{k}.csv") == _rows_without_times(
-                    Path(cache) / f"warm{k}.csv"), "warm rows differ from cold rows"
-    med = {k: statistics.median(v) for k, v in t.items()}
-    cmed = {k: statistics.median(v) for k, v in c.items()}
-    print("| run | wall median (s) | wall min-max (s) | CPU median (s) | wall / Hertz-only "
-          "| CPU / Hertz-only |")
-    print("|---|---|---|---|---|---|")
-    for k, label in (("hertz", "Hertz only, compute only"), ("cold", "README command 1, cold cache"),
-                     ("warm", "README command 1, warm cache"),
-                     ("cold_compute", "compute only (--no-plots --vtk-every 0), cold"),
-                     ("warm_compute", "compute only, warm")):
-        print(f"| {label} | {med[k]:.2f} | {min(t[k]):.2f}-{max(t[k]):.2f} | {cmed[k]:.2f} | "
-              f"{med[k] / med['hertz']:.2f} | {cmed[k] / cmed['hertz']:.2f} |")
-    print(f"\n{runs} paired rounds; warm rows equal cold rows (timing columns aside); "
+        loads.append(os.getloadavg()[0])
+        for root in roots:
+            with tempfile.TemporaryDirectory(prefix="femcam_mainjob_cache_") as cache:
+                for name, extra, cdir in plan:   # a and b: one cache each, filled by the cold run
+                    csv_copy = Path(cache) / f"{name}.csv"
+                    w, cpu, _, _ = run_once(extra, root, cache=str(Path(cache) / cdir), keep=csv_copy)
+                    t[root][name].append(w)
+                    c[root][name].append(cpu)
+                for k in ("", "_compute"):
+                    assert _rows_without_times(Path(cache) / f"cold{k}.csv") == _rows_without_times(
+                        Path(cache) / f"warm{k}.csv"), "warm rows differ from cold rows"
+    print("| femcam tree | run | wall median (s) | wall min-max (s) | CPU median (s) "
+          "| wall / Hertz-only | CPU / Hertz-only |")
+    print("|---|---|---|---|---|---|---|")
+    for root in roots:
+        med = {k: statistics.median(v) for k, v in t[root].items()}
+        cmed = {k: statistics.median(v) for k, v in c[root].items()}
+        name = "this tree" if root == ROOT else str(root)
+        for k, label in (("hertz", "Hertz only, compute only"), ("cold", "README command 1, cold cache"),
+                         ("warm", "README command 1, warm cache"),
+                         ("cold_compute", "compute only (--no-plots --vtk-every 0), cold"),
+                         ("warm_compute", "compute only, warm")):
+            print(f"| {name} | {label} | {med[k]:.2f} | {min(t[root][k]):.2f}-{max(t[root][k]):.2f} | "
+                  f"{cmed[k]:.2f} | {med[k] / med['hertz']:.2f} | {cmed[k] / cmed['hertz']:.2f} |")
+    print(f"\n{runs} paired rounds; warm rows equal cold rows (timing columns aside); 1-min load "
+          f"average at the start of each round: {', '.join(f'{x:.2f}' for x in loads)}; "
           f"load after: {load()}")
 
 
-def breakdown(extra: list[str] = ()) -> dict:
-    """One default run in the timing driver with --workers 1 (all phases in one process)."""
+def breakdown(extra: list[str] = (), workers: str = "1") -> dict:
+    """One default run in the timing driver with ``--workers`` (1: all phases in this one
+    thread and process)."""
     with tempfile.TemporaryDirectory(prefix="femcam_mainjob_") as d:
         t = time.perf_counter()
         py0 = subprocess.run([sys.executable, "-c", "pass"], check=True)
@@ -212,7 +223,7 @@ def breakdown(extra: list[str] = ()) -> dict:
         del py0
         t = time.perf_counter()
         p = subprocess.run([sys.executable, "-c", DRIVER, "sweep", str(SCENE), "--out", f"{d}/out",
-                            "--workers", "1", *extra], capture_output=True, text=True, cwd=ROOT,
+                            "--workers", workers, *extra], capture_output=True, text=True, cwd=ROOT,
                            env=env(ROOT, f"{d}/cache"))
         wall = time.perf_counter() - t
     if p.returncode != 0:
@@ -221,6 +232,7 @@ def breakdown(extra: list[str] = ()) -> dict:
     b = json.loads(line[len("BREAKDOWN "):])
     b["python start"] = t_py
     b["wall"] = wall
+    b["workers"] = workers
     return b
 
 
@@ -244,7 +256,7 @@ def print_breakdown(b: dict) -> None:
     rows += [(f"{k} (PNG)", v) for k, v in plots.items()]
     rows.append(("rest (argument parsing, printing, exit)",
                  b["wall"] - b["python start"] - sum(v for _, v in rows[1:])))
-    print(f"\nbreakdown, one run with --workers 1 (wall {b['wall']:.2f} s, load {load()}):\n")
+    print(f"\nbreakdown, one run with --workers {b['workers']} (wall {b['wall']:.2f} s, load {load()}):\n")
     print("| phase | wall s |")
     print("|---|---|")
     for k, v in rows:
@@ -273,6 +285,9 @@ def main() -> int:
     ap.add_argument("--runs", type=int, default=5)
     ap.add_argument("--no-breakdown", action="store_true")
     ap.add_argument("--breakdown-only", action="store_true")
+    ap.add_argument("--breakdown-workers", default="1",
+                    help="--workers of the breakdown run (1: every phase in one thread; auto: the "
+                         "default, background builds in the family phase)")
     ap.add_argument("--cache", action="store_true",
                     help="paired Hertz-only / cold / warm runs of the model cache (ratios)")
     ap.add_argument("--compute-only", action="store_true",
@@ -289,7 +304,7 @@ def main() -> int:
     print(f"machine: {machine()}")
     print(f"load average at start: {load()} (1/5/15 min)\n")
     if args.cache:
-        cache_runs(args.runs)
+        cache_runs(args.runs, roots)
         return 0
     print("| femcam tree | command | runs | wall median (s) | wall min-max (s) | CPU median (s) "
           "| peak RSS (MB) | max |p0 err| vs Hertz | load after |")
@@ -313,7 +328,8 @@ def main() -> int:
                   f"{statistics.median(c):.2f} | {max(r[2] for r in res):.0f} | "
                   f"{100 * max(r[3] for r in res):.3f} % | {load()} |", flush=True)
     if not args.no_breakdown:
-        print_breakdown(breakdown(mesh + (["--no-plots", "--vtk-every", "0"] if args.compute_only else [])))
+        print_breakdown(breakdown(mesh + (["--no-plots", "--vtk-every", "0"] if args.compute_only else []),
+                                  args.breakdown_workers))
     return 0
 
 

@@ -1,4 +1,6 @@
-"""BLAS thread control without extra dependencies (used by ``femcam.fe`` and ``femcam.sweep``).
+"""BLAS thread control without extra dependencies (used by ``femcam.fe`` and ``femcam.sweep``),
+and :class:`Background`, jobs run ahead in background threads and taken back by key (the sweep's
+family phase builds its independent FE models on a second core with it).
 
 OpenBLAS reads ``OPENBLAS_NUM_THREADS`` only when it loads, so the running libraries are told
 directly through ``ctypes`` (the ``openblas_set_num_threads`` calls that threadpoolctl makes;
@@ -21,6 +23,7 @@ from __future__ import annotations
 import ctypes
 import sys
 import threading
+from concurrent.futures import Future, ThreadPoolExecutor
 
 _BLAS_PREFIXES = ("openblas_", "scipy_openblas_")
 _BLAS_SUFFIXES = ("", "64_")
@@ -137,3 +140,105 @@ class single_threaded_blas:  # noqa: N801 - used like a function
                         put(ctypes.c_int(n))
                 _saved = []
         return False
+
+
+class Background:
+    """Jobs run in background threads while the caller works, and taken back by key.
+
+    :meth:`submit` queues ``fn()`` under a key (nothing when there are no threads, or when the
+    key is queued already); :meth:`take` returns the result: the job's, or ``fn()`` computed in
+    the calling thread when the job was never queued or has not started (it is then cancelled:
+    the caller never waits for work it can do itself). While the job it takes is running, the
+    caller runs the oldest queued jobs itself (their results kept for their own :meth:`take`),
+    so neither thread idles while work is queued. A job's exception is raised by :meth:`take`,
+    as if ``fn()`` had run there; a job nobody takes is dropped. :meth:`defer` queues work done
+    for its effect (a cache file written) that is never dropped. A context manager: on exit the
+    queued jobs are cancelled, the running ones and the deferred work waited for (a job is one
+    model build, a fraction of a second at the default mesh).
+
+    Why threads and not processes: the jobs are FE model builds, whose results (factorised
+    bodies) cannot be pickled to another process; their SuperLU solves and numpy kernels
+    release the GIL and overlap, their meshing (one gmsh at a time), factorisations (scipy
+    runs one at a time) and sparse conversions do not, which bounds the gain
+    (docs/performance.md).
+
+    Parameters
+    ----------
+    threads : int
+        Background threads (0: none; every :meth:`take` computes in the caller).
+
+    >>> with Background(1) as bg:
+    ...     bg.submit("x", lambda: 2 + 2)
+    ...     bg.take("x", lambda: 4)
+    4
+    """
+
+    def __init__(self, threads: int = 1):
+        self.threads = max(0, int(threads))
+        self._jobs: dict = {}   # key -> (Future, fn), in the order submitted
+        self._lock = threading.Lock()
+        self._pool = (ThreadPoolExecutor(self.threads, thread_name_prefix="femcam-background")
+                      if self.threads else None)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
+    def close(self) -> None:
+        """Cancel the queued jobs, wait for the running ones; later submits do nothing."""
+        with self._lock:
+            pool, self._pool = self._pool, None
+            jobs, self._jobs = self._jobs, {}
+        for f, _ in jobs.values():
+            f.cancel()
+        if pool is not None:
+            pool.shutdown(wait=True)
+
+    def submit(self, key, fn) -> None:
+        """Queue ``fn()`` under ``key`` (hashable) unless it is queued already or there are no
+        threads."""
+        with self._lock:
+            if self._pool is not None and key not in self._jobs:
+                self._jobs[key] = (self._pool.submit(fn), fn)
+
+    def defer(self, fn) -> None:
+        """Run ``fn()`` in the background, for its effect (e.g. a file written): never
+        cancelled, waited for on exit (its exceptions dropped); run here at once when there
+        are no threads."""
+        with self._lock:
+            pool = self._pool
+            if pool is not None:
+                pool.submit(fn)
+                return
+        fn()
+
+    def take(self, key, fn):
+        """The result of the job ``key``, or ``fn()`` here if it was never queued or has not
+        started (see the class docstring)."""
+        with self._lock:
+            fut, _ = self._jobs.pop(key, (None, None))
+        if fut is None or fut.cancel():
+            return fn()
+        while not fut.done() and self._help():
+            pass
+        return fut.result()
+
+    def _help(self) -> bool:
+        """Run the oldest queued job in this thread (its result kept under its key); False when
+        none is queued."""
+        with self._lock:
+            for key, (f, fn) in self._jobs.items():
+                if f.cancel():
+                    mine = Future()
+                    self._jobs[key] = (mine, fn)
+                    break
+            else:
+                return False
+        try:
+            mine.set_result(fn())
+        except Exception as exc:  # noqa: BLE001 - raised by the take of its own key
+            mine.set_exception(exc)
+        return True

@@ -223,3 +223,20 @@ def test_names_of_the_single_module_still_import():
         assert hasattr(M, name), name
     assert M._mesh_body is build.mesh_body and M._ccw is nodes.ccw
     assert M.gmsh_session is session.gmsh_session and M.COAT_MAX_ASPECT == coating.COAT_MAX_ASPECT
+
+
+def test_meshes_under_a_kept_gmsh_equal_fresh_sessions():
+    """``gmsh_kept`` (gmsh initialised once for the sweep's background builds): every mesh is the
+    one a freshly initialised gmsh gives, bit for bit, whatever was meshed before it (a kept gmsh
+    without the options reset carried them from mesh to mesh: other nodes)."""
+    from femcam.mesh.session import gmsh_kept
+
+    cases = [dict(rho=0.012, a_ref=9.6e-5, options=MeshOptions(a_over_h=6)),
+             dict(rho=-0.03, a_ref=1.2e-4, options=MeshOptions(a_over_h=3, growth=0.5))]
+    fresh = [build_contact_mesh(Rr=0.01, **c) for c in cases]
+    with gmsh_kept():
+        kept = [build_contact_mesh(Rr=0.01, **c) for c in cases[::-1]][::-1]
+    for f, k in zip(fresh, kept, strict=True):
+        for body in ("cam", "roller"):
+            np.testing.assert_array_equal(getattr(f, body).points, getattr(k, body).points)
+            np.testing.assert_array_equal(getattr(f, body).triangles, getattr(k, body).triangles)

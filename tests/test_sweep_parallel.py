@@ -68,6 +68,33 @@ def test_process_pool_equals_serial(serial, tmp_path):
     assert_same(r2.table, ref)
 
 
+@pytest.mark.slow  # two cold family phases: ~3-6 s on 2 shared cores
+def test_background_builds_equal_one_thread(monkeypatch):
+    """The family phase with its background build thread (workers "auto", the thread forced on
+    whatever the machine's load) against one thread (workers=1): the same families, records
+    and rows, bit for bit (same process, same models)."""
+    from femcam.sweep import run as run_module
+
+    th = parse_angles_deg("0:360:15")
+    out = {}
+    for workers in (1, "auto"):
+        default_cache().clear()
+        if workers == "auto":
+            monkeypatch.setattr(run_module, "_background_threads", lambda run: 1)
+        r = sweep(STUDY, angles=th, chunk_size=8, workers=workers, model_cache=False)
+        out[workers] = r
+    a, b = out[1], out["auto"]
+    for k in a.table:
+        if k not in SKIP:
+            x, y = np.asarray(a.table[k]), np.asarray(b.table[k])
+            assert x.dtype == y.dtype and np.array_equal(x, y, equal_nan=x.dtype.kind == "f"), k
+    timing = ("build_time", "check_time", "solve_time")
+    strip = [[{k: v for k, v in f.items() if k not in timing} for f in r.provenance["families"]]
+             for r in (a, b)]
+    assert strip[0] == strip[1]
+    assert a.provenance["estimates"] == b.provenance["estimates"]
+
+
 @pytest.mark.slow  # starts a Dask LocalCluster (~5-10 s on 2 shared cores); the process pool runs by default
 def test_dask_local_cluster_equals_serial(serial, tmp_path):
     distributed = pytest.importorskip("dask.distributed")

@@ -66,7 +66,9 @@ def register(subparsers) -> None:
                     "model families are built and verified before the chunks run, so the "
                     "chunks are only short contact solves per angle: a sweep without VTK "
                     "usually runs serially, while writing many VTU files pays on 2 "
-                    "processes; capped at the useful number (CPU cores, chunks)")
+                    "processes; capped at the useful number (CPU cores, chunks); auto and "
+                    "N >= 2 also build the family phase's models in a second thread (auto: "
+                    "while a core is idle)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="Dask scheduler address, e.g. tcp://host:8786 (needs femcam[dask])")
     p.add_argument("--resume", action="store_true",

@@ -289,8 +289,9 @@ class ContactModel:
         x = cm.cam.contact_x
         args = dict(x=x, plane=plane, element=element, solver=solver, a_ref=a_ref)
         jobs = (("cam", cm.cam, cam), ("roller", cm.roller, roller))
-        # one-off models (per_solve): the two bodies in two threads (SuperLU's factorisation and
-        # numpy's kernels release the GIL: on 2 cores the bodies build side by side). Models
+        # one-off models (per_solve): the two bodies in two threads (SuperLU's solves and numpy's
+        # kernels release the GIL and overlap on 2 cores; two SuperLU factorisations do not
+        # overlap: scipy runs one at a time, docs/performance.md). Models
         # built for many load cases (precompute: the sweep's families, kept in a cache) are
         # built in the main thread: in worker threads the a/h = 26 sweep's peak RSS grew from
         # 1.12 GB to 1.46 GB (glibc per-thread arenas; docs/performance.md)

@@ -1,5 +1,6 @@
 """One gmsh session at a time: :data:`GMSH_LOCK` and :func:`gmsh_session` (the only place gmsh
-is imported; used by the contact mesh and by :mod:`femcam.bodies`)."""
+is imported; used by the contact mesh and by :mod:`femcam.bodies`), and :func:`gmsh_kept` (gmsh
+initialised once for the background model builds of a sweep)."""
 
 from __future__ import annotations
 
@@ -42,12 +43,12 @@ def gmsh_session(what: str):
     with GMSH_LOCK:  # gmsh is one global, non-thread-safe state per process
         init_here = not gmsh.isInitialized()
         if init_here:
-            # interruptible=False: gmsh would install its own SIGINT handler (which ends the
-            # process silently on Ctrl-C, and which Python allows only in the main thread, while
-            # Dask runs tasks in worker threads); Python's KeyboardInterrupt stays in charge
-            kept = _python_handlers()
-            gmsh.initialize(["-nopopup"], readConfigFiles=False, interruptible=False)
-            _reinstall(kept)  # gmsh resets SIGTERM to its default (the process dies silently)
+            _initialize(gmsh)
+        elif _KEPT:
+            # a gmsh kept open by gmsh_kept carries the options of the last mesh into the next
+            # (the meshes then depended on the build order): every session starts from the
+            # defaults, as a freshly initialised gmsh does (same nodes, bit for bit)
+            gmsh.option.restoreDefaults()
         try:
             gmsh.option.setNumber("General.Terminal", 0)
             gmsh.option.setNumber("General.Verbosity", 1)
@@ -58,6 +59,52 @@ def gmsh_session(what: str):
             raise FemcamError(f"gmsh failed to mesh {what}: {exc}") from None
         finally:
             if init_here:
+                gmsh.finalize()
+
+
+#: open :func:`gmsh_kept` contexts that initialised gmsh
+_KEPT = 0
+
+
+def _initialize(gmsh) -> None:
+    """``gmsh.initialize`` with Python's signal handlers kept."""
+    # interruptible=False: gmsh would install its own SIGINT handler (which ends the process
+    # silently on Ctrl-C, and which Python allows only in the main thread, while Dask runs
+    # tasks in worker threads); Python's KeyboardInterrupt stays in charge
+    kept = _python_handlers()
+    gmsh.initialize(["-nopopup"], readConfigFiles=False, interruptible=False)
+    _reinstall(kept)  # gmsh resets SIGTERM to its default (the process dies silently)
+
+
+@contextmanager
+def gmsh_kept():
+    """gmsh initialised for a phase of many meshes, from the thread that enters (the main one).
+
+    A :func:`gmsh_session` opened meanwhile, in any thread, neither initialises nor finalises
+    gmsh: ``gmsh.initialize`` resets the process's SIGTERM handler, which Python can install
+    again only from the main thread, so meshes built in background threads
+    (:class:`femcam._threads.Background`) need gmsh initialised before. Each session then
+    starts from gmsh's default options (:func:`gmsh_session`). Nothing is done when gmsh is
+    initialised already (by the caller's own code).
+
+    Yields
+    ------
+    None
+    """
+    global _KEPT
+    import gmsh  # lazy: gmsh is a large native library, loaded only to build meshes
+
+    with GMSH_LOCK:
+        own = not gmsh.isInitialized()
+        if own:
+            _initialize(gmsh)
+            _KEPT += 1
+    try:
+        yield
+    finally:
+        if own:
+            with GMSH_LOCK:
+                _KEPT -= 1
                 gmsh.finalize()
 
 

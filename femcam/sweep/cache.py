@@ -8,15 +8,23 @@ import math
 import threading
 import time
 from collections import OrderedDict
+from contextlib import ExitStack, contextmanager
 
 from .. import _validate
+from .._threads import Background
 from ..errors import FemcamError
 from ..fe import ContactModel, ContactResult, SolverOptions
 from ..layers import Coating, build_coated_model
 from ..materials import effective_modulus
 from ..mesh import MeshOptions
+from ..mesh.session import gmsh_kept
 from .diskcache import DiskCache, content_key, finite_p0, restore_model, strip_model
 from .options import ContactParams, SweepOptions
+
+#: fresh checks: one load case, only its p0 read: no stress operators, and a stress window of
+#: the surface nodes only (eval_depth 0; the contact solve does not use the window, so p0 is the
+#: same bit for bit, and the build ~10 % cheaper)
+_FRESH_SOLVER = SolverOptions(stress_operators="per_solve", eval_depth=0.0)
 
 
 def _key(cp, rho_ref, a_ref, options):
@@ -27,8 +35,11 @@ def _key(cp, rho_ref, a_ref, options):
 class ModelCache:
     """The FE models of a process, their solved load cases and the fresh-model check results.
 
-    Thread-safe: Dask runs tasks in worker threads of one process, and gmsh (model building)
-    is not thread-safe, so every build and every change of the tables holds one lock.
+    Thread-safe: Dask runs tasks in worker threads of one process; every change of the tables
+    holds one lock, the builds of :meth:`model_for` another (a key is built once), and gmsh
+    (not thread-safe) is used under :data:`femcam.mesh.GMSH_LOCK`. Builds may run ahead in a
+    background thread (:meth:`building_in_background`, :meth:`prefetch_model`,
+    :meth:`prefetch_fresh`): the sweep's family phase uses both cores that way.
 
     Parameters
     ----------
@@ -57,6 +68,10 @@ class ModelCache:
         self.stats = {"built": 0, "build_time": 0.0, "loaded": 0, "checks_built": 0,
                       "checks_loaded": 0}
         self._lock = threading.RLock()
+        self._build_lock = threading.RLock()
+        #: builds started ahead (:meth:`building_in_background`; none outside it)
+        self.background = Background(0)
+        self._kept, self._kept_entered = None, False   # gmsh kept initialised meanwhile
 
     def model_for(self, cp: ContactParams, rho_ref: float, a_ref: float,
                   options: SweepOptions) -> ContactModel:
@@ -83,25 +98,24 @@ class ModelCache:
 
     def _get_or_build(self, key: tuple, build, memo: bool = False, disk_key=None):
         """The model under ``key`` (LRU: most recently used last), else from :attr:`disk` under
-        ``disk_key()`` (counted as loaded), else ``build()`` now (counted in :attr:`stats`, and
-        stored); ``memo``: keep its solved load cases (:meth:`solve`)."""
+        ``disk_key()`` (counted as loaded), else ``build()`` now or taken from the background
+        build :meth:`prefetch_model` started (counted in :attr:`stats`, and stored); ``memo``:
+        keep its solved load cases (:meth:`solve`). The tables' lock is not held while a model
+        is built (a background build and the solves of the caller go on side by side); builds
+        asked for here are serialised, so threads sharing the cache (Dask) build a key once."""
         with self._lock:
-            m = self._models.get(key)
+            m = self._lookup(key)
+        if m is not None:
+            return m
+        with self._build_lock:
+            with self._lock:
+                m = self._lookup(key)
             if m is not None:
-                self._models.move_to_end(key)
                 return m
-            dk = disk_key() if (disk_key is not None and self.disk is not None) else None
-            m = self.disk.get(dk) if dk is not None else None
-            if isinstance(m, ContactModel):
-                m = restore_model(m)
-                self.stats["loaded"] += 1
-            else:
-                t0 = time.perf_counter()
-                m = build()
-                self.stats["built"] += 1
-                self.stats["build_time"] += time.perf_counter() - t0
-                if dk is not None:
-                    self.disk.put(dk, strip_model(m))
+            m, dt = self.background.take(("model", key), lambda: self._load_or_build(build, disk_key))
+        with self._lock:
+            self.stats["loaded" if dt is None else "built"] += 1
+            self.stats["build_time"] += dt or 0.0
             self._models[key] = m
             if memo:
                 self._results[id(m)] = {}
@@ -109,6 +123,103 @@ class ModelCache:
                 _, old = self._models.popitem(last=False)
                 self._results.pop(id(old), None)
             return m
+
+    def _lookup(self, key: tuple):
+        """The model under ``key`` (now the most recently used) or None; hold :attr:`_lock`."""
+        m = self._models.get(key)
+        if m is not None:
+            self._models.move_to_end(key)
+        return m
+
+    def _load_or_build(self, build, disk_key) -> tuple:
+        """``(model, build time in s)`` built now and stored, or ``(model, None)`` loaded from
+        :attr:`disk`."""
+        dk = disk_key() if (disk_key is not None and self.disk is not None) else None
+        m = self.disk.get(dk) if dk is not None else None
+        if isinstance(m, ContactModel):
+            return restore_model(m), None
+        t0 = time.perf_counter()
+        m = build()
+        dt = time.perf_counter() - t0
+        if dk is not None:  # pickled and hashed in the background when a thread is on
+            disk = self.disk
+            self.background.defer(lambda: disk.put(dk, strip_model(m)))
+        return m, dt
+
+    def prefetch_model(self, cp: ContactParams, rho_ref: float, a_ref: float,
+                       options: SweepOptions) -> None:
+        """Start building (or loading) the model :meth:`model_for` will be asked for, in the
+        background thread of :meth:`building_in_background` (nothing outside it).
+
+        Parameters
+        ----------
+        cp : ContactParams
+            The contact parameters.
+        rho_ref, a_ref : float
+            Reference cam radius and half-width (m).
+        options : SweepOptions
+            ``a_over_h``.
+        """
+        key = _key(cp, rho_ref, a_ref, options)
+        with self._lock:
+            if key in self._models:
+                return
+        dk = _disk_key("family_model", cp, rho_ref, a_ref, options) if self.disk is not None else None
+        self.submit_build(("model", key), lambda: self._load_or_build(
+            lambda: build_model(cp, rho_ref, a_ref, options), lambda: dk), dk)
+
+    def submit_build(self, key, job, disk_key: str | None = None) -> None:
+        """Queue ``job`` (a build) in the background under ``key``, unless :attr:`disk` holds
+        its entry ``disk_key`` (loading it where it is wanted costs milliseconds). gmsh is
+        initialised for the background builds here, in the submitting (main) thread, on the
+        first build queued (:func:`femcam.mesh.session.gmsh_kept`): a run that only loads
+        from the disk cache never imports gmsh (~0.1 s).
+
+        Parameters
+        ----------
+        key : hashable
+            The job's key (``background.take(key, ...)`` takes its result).
+        job : callable
+            ``job()`` builds (or loads) and returns the result.
+        disk_key : str, optional
+            Its entry in :attr:`disk` (None: not stored, always queued).
+        """
+        if not self.background.threads:
+            return
+        if disk_key is not None and self.disk is not None and self.disk.has(disk_key):
+            return
+        if self._kept is not None and not self._kept_entered:
+            self._kept.enter_context(gmsh_kept())
+            self._kept_entered = True
+        self.background.submit(key, job)
+
+    @contextmanager
+    def building_in_background(self, threads: int = 1):
+        """Let :meth:`prefetch_model`, :meth:`prefetch_fresh` and :meth:`submit_build` run
+        builds in ``threads`` background threads while the caller works (0: none; from the first
+        build queued on, gmsh stays initialised, :func:`femcam.mesh.session.gmsh_kept`). On
+        exit the builds not started are dropped and a running one is waited for.
+
+        Parameters
+        ----------
+        threads : int
+            Background threads (0 or 1 on the 2-core machines femcam is measured on).
+
+        Yields
+        ------
+        femcam._threads.Background
+            The background jobs (also :attr:`background` meanwhile).
+        """
+        if threads < 1:
+            yield self.background
+            return
+        with ExitStack() as kept, Background(threads) as bg:  # bg closes first, then gmsh
+            old, self.background = self.background, bg
+            self._kept, self._kept_entered = kept, False
+            try:
+                yield bg
+            finally:
+                self.background, self._kept = old, None
 
     def solve(self, model: ContactModel, F: float, rho: float, mu: float, sliding: int,
               check: bool = True, Q: float | None = None, rolling: int = 0) -> ContactResult:
@@ -177,35 +288,71 @@ class ModelCache:
         float
             p0 (Pa); NaN if the fresh model cannot be built or solved.
         """
-        sliding, Q, rolling = load
-        sliding = cp.sliding if sliding is None else sliding
-        key = (_key(cp, rho, a, options), F, cp.mu, sliding, Q, rolling)
+        key, job = self._fresh_job(cp, rho, a, options, F, load)
         with self._lock:
             p0 = self._fresh_p0.get(key)
         if p0 is not None:
             return p0
-        solver = SolverOptions(stress_operators="per_solve")  # one load case: no stress operators
-        dk = (_disk_key("fresh_p0", cp, rho, a, options, solver, (F, sliding, Q, rolling))
-              if self.disk is not None else None)
-        p0 = self.disk.get(dk) if dk is not None else None
-        if finite_p0(p0):
-            self.stats["checks_loaded"] += 1
-        else:
-            try:
-                with self._lock:  # gmsh is not thread-safe
-                    fresh = build_model(cp, rho, a, options, solver)
-                p0 = float(fresh.solve(F=F, rho=rho, mu=cp.mu, sliding=sliding, check=False, Q=Q,
-                                       rolling=rolling if Q is not None else 0).p0_nodal)
-            except (FemcamError, ValueError, ArithmeticError):
-                return math.nan
-            self.stats["checks_built"] += 1
-            if dk is not None and finite_p0(p0):
-                self.disk.put(dk, p0)
+        p0, how = self.background.take(("fresh", key), job)
+        if how is None:
+            return p0
         with self._lock:
+            self.stats["checks_built" if how == "built" else "checks_loaded"] += 1
             self._fresh_p0[key] = p0
             while len(self._fresh_p0) > 1024:
                 self._fresh_p0.popitem(last=False)
         return p0
+
+    def prefetch_fresh(self, cp: ContactParams, rho: float, a: float, options: SweepOptions,
+                       F: float, load: tuple = (None, None, 0)) -> None:
+        """Start the fresh check :meth:`fresh_p0` will be asked for (same arguments) in the
+        background (nothing outside :meth:`building_in_background`).
+
+        Parameters
+        ----------
+        cp : ContactParams
+            Follower radius and face width (m), materials, plane, friction ``mu``.
+        rho, a : float
+            The load case's cam radius and Hertz half-width (m).
+        options : SweepOptions
+            ``a_over_h`` of the fresh mesh.
+        F : float
+            Contact force (N).
+        load : tuple
+            ``(sliding, Q, rolling)`` of the load case.
+        """
+        key, job = self._fresh_job(cp, rho, a, options, F, load)
+        with self._lock:
+            if key in self._fresh_p0:
+                return
+        self.submit_build(("fresh", key), job, job.disk_key)
+
+    def _fresh_job(self, cp, rho, a, options, F, load) -> tuple:
+        """The memo key of a fresh check and the function computing ``(p0, how)``: ``how``
+        ``"loaded"`` (from :attr:`disk`), ``"built"`` or None (p0 NaN: the fresh model could
+        not be built or solved; not remembered)."""
+        sliding, Q, rolling = load
+        sliding = cp.sliding if sliding is None else sliding
+        key = (_key(cp, rho, a, options), F, cp.mu, sliding, Q, rolling)
+
+        def job():
+            solver, dk = _FRESH_SOLVER, job.disk_key
+            p0 = self.disk.get(dk) if dk is not None else None
+            if finite_p0(p0):
+                return p0, "loaded"
+            try:
+                fresh = build_model(cp, rho, a, options, solver)
+                p0 = float(fresh.solve(F=F, rho=rho, mu=cp.mu, sliding=sliding, check=False, Q=Q,
+                                       rolling=rolling if Q is not None else 0).p0_nodal)
+            except (FemcamError, ValueError, ArithmeticError):
+                return math.nan, None
+            if dk is not None and finite_p0(p0):
+                self.disk.put(dk, p0)
+            return p0, "built"
+
+        job.disk_key = (_disk_key("fresh_p0", cp, rho, a, options, _FRESH_SOLVER, (F, sliding, Q, rolling))
+                        if self.disk is not None else None)
+        return key, job
 
     def real_cam(self, key: tuple, build):
         """A real-cam model of the models table (flat-faced sweeps; LRU as the family models).

@@ -338,6 +338,21 @@ class DiskCache:
         """
         return self.directory / f"{key}.pkl"
 
+    def has(self, key: str) -> bool:
+        """Whether an entry is stored under ``key`` (not checked: :meth:`get` checks it).
+
+        Parameters
+        ----------
+        key : str
+            :func:`content_key`.
+
+        Returns
+        -------
+        bool
+            False for a disabled cache.
+        """
+        return self.enabled and self.path(key).is_file()
+
     def get(self, key: str):
         """The stored object, or None (a miss, a disabled cache, or a corrupt entry: removed,
         said in one line).

@@ -50,12 +50,12 @@ from .. import _validate
 from ..errors import FemcamError
 from ..fe import SolverOptions
 from ..mesh import MeshOptions
-from .cache import ModelCache, _disk_key, build_model, default_cache, model_args
+from .cache import ModelCache, _disk_key, _key, build_model, default_cache, model_args
 from .options import ContactParams, SweepOptions, contact_params
 
 __all__ = ["QUANTITIES", "RATES", "FamilyEstimate", "coarse_mesh", "family_estimate",
            "estimate_families", "estimate_run", "estimate_text", "fill_row_estimate", "predict_a_over_h",
-           "reference_load", "row_estimate"]
+           "prefetch_estimate", "reference_load", "row_estimate"]
 
 #: quantities estimated: name -> (sweep column of the estimate, ContactResult reader)
 QUANTITIES = ("p0", "a", "vm", "tau1")
@@ -210,22 +210,61 @@ def family_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: Sw
 
 
 def _coarse_quantities(cp, rho_ref, a_ref, options, mesh2, F, cache) -> dict:
-    """The coarse level's quantities (:func:`_quantities`), from the persistent model cache when
-    an earlier run stored them under the same content key (the coarse mesh and the load in it)."""
+    """The coarse level's quantities (:func:`_quantities`): from the persistent model cache
+    when an earlier run stored them under the same content key (the coarse mesh and the load in
+    it), from the background build :func:`prefetch_estimate` started, or built now."""
+    return cache.background.take(*_coarse_job(cp, rho_ref, a_ref, options, mesh2, F, cache))
+
+
+def _coarse_job(cp, rho_ref, a_ref, options, mesh2, F, cache) -> tuple:
+    """The background key of one coarse level and the function computing its quantities."""
     solver = SolverOptions(stress_operators="per_solve")
     disk = getattr(cache, "disk", None)
-    dk = (_disk_key("estimate_coarse", cp, rho_ref, a_ref, options, solver,
-                    (F, cp.mu, cp.sliding, mesh2.a_over_h, mesh2.fine_half_width))
-          if disk is not None else None)
-    qH = disk.get(dk) if dk is not None else None
-    if isinstance(qH, dict) and set(qH) == set(QUANTITIES) and all(map(math.isfinite, qH.values())):
-        return qH
-    with cache._lock:  # gmsh is not thread-safe
+    load = (F, cp.mu, cp.sliding, mesh2.a_over_h, mesh2.fine_half_width)
+    dk = _disk_key("estimate_coarse", cp, rho_ref, a_ref, options, solver, load) if disk is not None else None
+
+    def job() -> dict:
+        qH = disk.get(dk) if dk is not None else None
+        if isinstance(qH, dict) and set(qH) == set(QUANTITIES) and all(map(math.isfinite, qH.values())):
+            return qH
         coarse_model = build_model(cp, rho_ref, a_ref, options, solver, mesh=mesh2)
-    qH = _quantities(coarse_model.solve(F=F, rho=rho_ref, mu=cp.mu, sliding=cp.sliding, check=False))
-    if dk is not None and all(map(math.isfinite, qH.values())):
-        disk.put(dk, {k: float(v) for k, v in qH.items()})
-    return qH
+        qH = _quantities(coarse_model.solve(F=F, rho=rho_ref, mu=cp.mu, sliding=cp.sliding, check=False))
+        if dk is not None and all(map(math.isfinite, qH.values())):
+            disk.put(dk, {k: float(v) for k, v in qH.items()})
+        return qH
+
+    job.disk_key = dk
+    return ("estimate_coarse", _key(cp, rho_ref, a_ref, options), load), job
+
+
+def prefetch_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions,
+                      cache: ModelCache | None = None) -> None:
+    """Start the coarse level of :func:`family_estimate` (same arguments) in the background
+    thread of ``cache`` (:meth:`~femcam.sweep.cache.ModelCache.building_in_background`;
+    nothing outside it): the sweep's family phase builds it while the family models are built
+    and scanned.
+
+    Parameters
+    ----------
+    cp : ContactParams
+        Contact parameters of the scene.
+    rho_ref, a_ref : float
+        The family's reference cam radius and half-width [m].
+    options : SweepOptions
+        ``a_over_h`` of the family model (below 4: no estimate, nothing started).
+    cache : ModelCache, optional
+        Its background thread (default: the process's cache).
+    """
+    cache = cache or default_cache()
+    if options.a_over_h < 4.0 or not cache.background.threads:
+        return
+    try:
+        mesh2 = coarse_mesh(options.a_over_h, model_args(cp, rho_ref, a_ref, options)["mesh"].fine_half_width)
+        F = reference_load(cp, rho_ref, a_ref)
+    except (FemcamError, ValueError, ArithmeticError):
+        return   # family_estimate says NaN for it
+    key, job = _coarse_job(cp, rho_ref, a_ref, options, mesh2, F, cache)
+    cache.submit_build(key, job, job.disk_key)
 
 
 def row_estimate(est: FamilyEstimate, a_row: float, a_model: float | None = None) -> dict:

@@ -7,6 +7,7 @@ planning, chunking, the executor and the on-disk store; the output files are wri
 
 from __future__ import annotations
 
+import os
 import time
 from pathlib import Path
 from types import SimpleNamespace
@@ -24,11 +25,11 @@ from ..scene.digest import physics_hash, physics_parts
 from ..viz.process import start_plot_process
 from .cache import default_cache
 from .diskcache import DiskCache, usage
-from .estimate import estimate_run
+from .estimate import estimate_run, prefetch_estimate
 from .extras import extras_provenance
 from .options import SweepOptions, contact_params
 from .outputs import SweepRun, scene_hash, scene_source, write_outputs
-from .parallel import AUTO_VTU_S, auto_workers, run_tasks
+from .parallel import AUTO_VTU_S, _cpu_count, auto_workers, run_tasks
 from .pipeline import ChunkTask, contact_mask, run_chunk
 from .realcam import auto_hertz_rows, contact_scene, jump_angles, real_cam_summary, scene_traction
 from .result import SweepResult
@@ -340,13 +341,36 @@ def _plan(run: SweepRun) -> None:
     if run.scene.follower.flat_face:  # binned real-cam models (femcam.sweep.realrows), no families
         return
     if not run.preplanned:
-        run.family, _, run.records = verify_families(run.rows0["Fc"], run.rows0["rho"], run.angles, cp,
-                                                     run.opts, fit, cache=default_cache(),
-                                                     traction=run.traction)
+        cache = default_cache()
+        # the models of the families, their fresh checks and their coarse estimate models are
+        # independent builds: a background thread builds ahead on a second core (--workers 1:
+        # none, everything in this thread), same rows (docs/performance.md)
+        with cache.building_in_background(_background_threads(run)):
+            run.family, _, run.records = verify_families(
+                run.rows0["Fc"], run.rows0["rho"], run.angles, cp, run.opts, fit, cache=cache,
+                traction=run.traction, prefetch=lambda r, a: prefetch_estimate(cp, r, a, run.opts, cache))
+            estimate_run(run, cache)
     run.verified_here = True
     if run.store is not None:
         run.store.save_plan({"family": run.family.tolist(),
                              "records": [r.to_dict() for r in run.records]})
+
+
+def _background_threads(run: SweepRun) -> int:
+    """Background build threads of the family phase: 1 with two or more usable cores, unless
+    the sweep was asked to stay in one process and thread (``workers=1``); with ``"auto"`` only
+    while a core is idle (1-minute load average below cores - 0.5): on busy cores the two
+    threads only take turns, at ~5-10 % more CPU (docs/performance.md)."""
+    cores = _cpu_count()
+    if run.workers == 1 or cores < 2:
+        return 0
+    if run.workers == "auto":
+        try:
+            if os.getloadavg()[0] > cores - 0.5:
+                return 0
+        except OSError:  # no load average on this platform: use the core
+            pass
+    return 1
 
 
 def _fit_rows(run: SweepRun) -> np.ndarray:

@@ -29,6 +29,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, field
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -233,12 +234,16 @@ def _same_case(rho, a, rho_ref, a_ref) -> bool:
 
 def verify_families(F, rho, theta, cp: ContactParams, options: SweepOptions,
                     contact: np.ndarray, n_checks: int = N_CHECKS, *,
-                    cache: ModelCache | None = None, traction=None):
+                    cache: ModelCache | None = None, traction=None, prefetch=None):
     """Plan the families and verify the reuse error against ``options.tolerance``.
 
     Runs in the calling process (deterministically: the result depends only on the angles and
     options). Family models built here stay in ``cache`` (default: this process's
-    :func:`default_cache`; forked workers inherit it).
+    :func:`default_cache`; forked workers inherit it). The groups are verified in waves (the
+    initial groups, then the halves of those that failed): each wave's models are built, scanned
+    and their first candidates' fresh checks started before any verdict, so that with the
+    cache's background thread on (:meth:`ModelCache.building_in_background`) the builds of
+    one wave run on both cores; the records do not depend on it.
 
     Parameters
     ----------
@@ -257,6 +262,10 @@ def verify_families(F, rho, theta, cp: ContactParams, options: SweepOptions,
     traction : femcam.sweep.realcam.Traction, optional
         Per-angle traction of the load cases (default: full sliding in ``cp.sliding``); the
         chunks solve the same load cases, so they reuse the scanned results.
+    prefetch : callable, optional
+        ``prefetch(rho_ref, a_ref)`` (m) is called for each group before its model is built,
+        e.g. to start the family's error estimate in the background
+        (:func:`femcam.sweep.estimate.prefetch_estimate`).
 
     Returns
     -------
@@ -277,15 +286,22 @@ def verify_families(F, rho, theta, cp: ContactParams, options: SweepOptions,
     k_all = curvature_ratio(rho[idx], cp.Rr)
     queue = initial_groups(a_all, k_all, float(options.tolerance))
     done: list[tuple[np.ndarray, FamilyRecord]] = []
-    while queue:
-        g = queue.pop(0)
-        rec = _verify_group(_Case(cache, cp, options, F, rho, theta, traction), n_checks, idx[g],
-                            a_all[g], k_all[g])
-        if rec.reuse_error <= float(options.tolerance):
-            done.append((g, rec))
-            continue
-        cache.forget(cp, rec.rho_ref, rec.a_ref, options)  # replaced by the two halves
-        queue[:0] = _split(g, a_all[g], k_all[g])
+    case = _Case(cache, cp, options, F, rho, theta, traction)
+    while queue:  # in waves: a wave's models, scans and first checks, then its verdicts
+        wave, queue = queue, []
+        refs = [family_reference(a_all[g], k_all[g], rho[idx[g]], cp.Rr) for g in wave]
+        for ref in refs[1:]:  # the first is built here now; the others meanwhile, if a
+            cache.prefetch_model(cp, *ref, options)  # background thread is on (else nothing)
+        for ref in refs if prefetch is not None else ():
+            prefetch(*ref)
+        staged = [_scan_group(case, n_checks, idx[g], a_all[g], k_all[g]) for g in wave]
+        for g, st in zip(wave, staged, strict=True):
+            rec = _finish_group(case, st)
+            if rec.reuse_error <= float(options.tolerance):
+                done.append((g, rec))
+                continue
+            cache.forget(cp, rec.rho_ref, rec.a_ref, options)  # replaced by the two halves
+            queue += _split(g, a_all[g], k_all[g])
     # deterministic ids: by reference half-width, then curvature
     done.sort(key=lambda t: (t[1].a_ref, t[1].kappa[0], t[1].kappa[1]))
     refs, records = {}, []
@@ -310,35 +326,50 @@ class _Case:
     traction: object
 
 
-def _verify_group(case: _Case, n_checks, rows, a, kap) -> FamilyRecord:
-    """Build one group's model, scan its load cases, check the worst with fresh models."""
+def _scan_group(case: _Case, n_checks, rows, a, kap) -> SimpleNamespace:
+    """Build (or take) one group's model, scan its load cases, pick the check candidates and
+    start the first one's fresh check in the background (:meth:`ModelCache.prefetch_fresh`;
+    nothing without a background thread); :func:`_finish_group` checks them."""
     cache, cp, F, rho = case.cache, case.cp, case.F, case.rho
     rho_ref, a_ref = family_reference(a, kap, rho[rows], cp.Rr)
     rec = FamilyRecord(id=-1, rho_ref=rho_ref, a_ref=a_ref, n_angles=int(rows.size),
                        a_ratio=(float(a.min() / a_ref), float(a.max() / a_ref)),
                        kappa=(float(kap.min()), float(kap.max())))
-    t0 = time.perf_counter()
-    built_before = cache.stats["built"]
+    built_before, time_before = cache.stats["built"], cache.stats["build_time"]
     model = cache.model_for(cp, rho_ref, a_ref, case.options)
-    rec.build_time = time.perf_counter() - t0 if cache.stats["built"] > built_before else 0.0
+    # the build's own time (it may have run in the background while this thread worked)
+    rec.build_time = cache.stats["build_time"] - time_before if cache.stats["built"] > built_before else 0.0
     covered = np.array([model.covers(F[i], rho[i]) for i in rows])
     rec.n_rebuilt = int(np.count_nonzero(~covered))  # solved with models of their own
     cov = np.flatnonzero(covered)
-    e_h, failed = _scan_family(cache, model, cp, rec, rows[cov], a[cov], kap[cov], F, rho,
-                               case.traction)
-    t1 = time.perf_counter()
-    if failed:
-        worst = math.inf
-    else:
+    n_distinct = len({(float(x), float(y)) for x, y in zip(a, kap, strict=True)})
+    rows, a, kap = rows[cov], a[cov], kap[cov]
+    e_h, failed = _scan_family(cache, model, cp, rec, rows, a, kap, F, rho, case.traction)
+    picks = []
+    if not failed:
         k_ref = cp.Rr / rho_ref if math.isfinite(rho_ref) else 0.0
-        picks = check_angles(a[cov], kap[cov], a_ref, k_ref, model.x, n_checks, e_hertz=e_h)
-        worst = _check(case, rec, model, rows[cov], a[cov], kap[cov], e_h, picks)
-    if np.any(np.isfinite(e_h)):
-        rec.p0_vs_hertz = (float(np.nanmin(e_h)), float(np.nanmax(e_h)))
+        picks = check_angles(a, kap, a_ref, k_ref, model.x, n_checks, e_hertz=e_h)
+    if picks:  # the first candidate is always checked fresh (_check)
+        i, j = int(rows[picks[0]]), picks[0]
+        if not _same_case(float(rho[i]), float(a[j]), rho_ref, a_ref):
+            cache.prefetch_fresh(cp, float(rho[i]), float(a[j]), case.options, float(F[i]),
+                                 traction_args(case.traction, i, cp.sliding))
+    return SimpleNamespace(rec=rec, model=model, rows=rows, a=a, kap=kap, e_h=e_h,
+                           failed=failed, picks=picks, n_distinct=n_distinct)
+
+
+def _finish_group(case: _Case, st: SimpleNamespace) -> FamilyRecord:
+    """Check the worst candidates of a scanned group (:func:`_scan_group`) with fresh models;
+    its record."""
+    rec = st.rec
+    t1 = time.perf_counter()
+    worst = math.inf if st.failed else _check(case, rec, st.model, st.rows, st.a, st.kap, st.e_h,
+                                              st.picks)
+    if np.any(np.isfinite(st.e_h)):
+        rec.p0_vs_hertz = (float(np.nanmin(st.e_h)), float(np.nanmax(st.e_h)))
     rec.check_time = time.perf_counter() - t1
-    distinct = {(float(x), float(y)) for x, y in zip(a, kap, strict=True)}
     # one load case: the family model is its fresh model
-    rec.reuse_error = 0.0 if len(distinct) == 1 else worst
+    rec.reuse_error = 0.0 if st.n_distinct == 1 else worst
     return rec
 
 
