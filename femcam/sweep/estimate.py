@@ -425,6 +425,33 @@ def estimate_run(run, cache: ModelCache | None = None) -> None:
     run.estimates = estimate_families(run.records, contact_params(run.scene), run.opts, cache)
 
 
+def reached_text(t, ok, choice: dict) -> str:
+    """``"; reached: p0 0.31 %, tau1 0.2 %"``: the largest estimate over the ``ok`` rows of each
+    quantity ``rtol`` controlled (``choice["rtol_on"]``).
+
+    Parameters
+    ----------
+    t : Mapping[str, ndarray]
+        The sweep table (``err_est_*`` relative).
+    ok : ndarray of bool
+        The ``ok`` rows.
+    choice : dict
+        ``provenance["options"]["rtol_choice"]``.
+
+    Returns
+    -------
+    str
+        The text ("" when no controlled quantity has a finite estimate).
+    """
+    parts = []
+    for q in choice.get("rtol_on", ["p0"]):
+        v = np.where(ok, np.asarray(t.get(f"err_est_{q}", np.full(ok.shape, np.nan)), float), np.nan)
+        if np.any(np.isfinite(v)):
+            met = "met" if np.nanmax(v) <= choice["rtol"] else "NOT met"
+            parts.append(f"{q} {100 * float(np.nanmax(v)):.3g} % ({met})")
+    return "; reached: " + ", ".join(parts) if parts else ""
+
+
 def estimate_text(result) -> str:
     """The largest error estimates of a sweep's FE rows, for the summary line and ``report.md``.
 
@@ -444,9 +471,13 @@ def estimate_text(result) -> str:
     if "err_est_p0" not in t:
         return ""
     ok = np.asarray(t["status"]).astype(str) == "ok"
-    names = {"p0": "p0", "a": "a", "vm": "von Mises", "tau1": "tau1"}
+    names = {"p0": "p0", "a": "a", "vm": "von Mises", "tau1": "tau1", "interface_tau": "interface shear",
+             "interface_sn": "interface normal", "bore_hoop": "bore hoop", "pin_p0": "pin p0",
+             "needle_Q": "needle load"}
     parts = []
     for q, name in names.items():
+        if f"err_est_{q}" not in t:
+            continue
         v = np.where(ok, np.asarray(t[f"err_est_{q}"], float), np.nan)
         if np.any(np.isfinite(v)):
             parts.append(f"{name} {100 * float(np.nanmax(v)):.3g} %")
@@ -459,6 +490,6 @@ def estimate_text(result) -> str:
         own = choice.get("family_a_over_h") or [choice["a_over_h"]]
         mesh = (f"a/h = {min(own):g}" if min(own) == max(own) else
                 f"a/h = {min(own):g}-{max(own):g} over {len(own)} families")
-        text += (f"; rtol {100 * choice['rtol']:g} % on p0: {mesh}, reuse "
-                 f"tolerance {100 * choice['tolerance']:g} %")
+        text += (f"; rtol {100 * choice['rtol']:g} % on {', '.join(choice.get('rtol_on', ['p0']))}: "
+                 f"{mesh}, reuse tolerance {100 * choice['tolerance']:g} %" + reached_text(t, ok, choice))
     return text
