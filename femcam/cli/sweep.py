@@ -118,8 +118,8 @@ _PARAMS = {"angles_deg": "angles", "mesh_size": "a_over_h", "tolerance": "tolera
 #: flag dest -> (scene table, key, default)
 SETTINGS = {dest: LIBRARY_SETTINGS[p] for dest, p in _PARAMS.items()}
 #: the flags' names in the library's messages about given values
-_NAMES = {"rtol": ("--rtol-pct", 100, "%"), "rtol_on": ("--rtol-on", 1, ""), "a_over_h": ("--mesh-size", 1, ""),
-          "angles_deg": ("--angles-deg", 1, "deg")}
+_NAMES = {"rtol": ("--rtol-pct", 100, "%"), "rtol_on": ("--rtol-on", 1, ""),
+          "a_over_h": ("--mesh-size", 1, ""), "angles_deg": ("--angles-deg", 1, "deg")}
 
 def _study(key: str, whole: bool = False, hi: float | None = None) -> Range:
     """The flag's range: the scene's (femcam.scene.schema.study_problem, one copy, with the
@@ -263,8 +263,8 @@ def _command_line(args) -> str:
     """The command, rebuilt from the parsed arguments (also right for ``main([...])`` calls)."""
     parts = ["femcam", "sweep", args.scene, "--out", args.out, "--angles-deg", args.angles_deg,
              "--workers", str(args.workers),
-             *(["--rtol-pct", f"{args.rtol_pct:g}", "--rtol-on", args.rtol_on] if args.rtol_pct is not None else
-               ["--mesh-size", f"{args.mesh_size:g}"]),
+             *(["--rtol-pct", f"{args.rtol_pct:g}", "--rtol-on", args.rtol_on]
+               if args.rtol_pct is not None else ["--mesh-size", f"{args.mesh_size:g}"]),
              "--tolerance", f"{args.tolerance:g}", "--chunk-size", str(args.chunk_size),
              "--vtk-every", str(args.vtk_every), "--method", args.method]
     if args.scheduler:

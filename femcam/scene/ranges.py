@@ -321,7 +321,8 @@ def reference_table(tables: dict, choices: dict) -> str:
                                                           "seglist": "array of tables",
                                                           "bool": "true or false"}.get(check, check))
             if check in ("str", "strlist") and key in choices:
-                acc = ("list of " if check == "strlist" else "") + " \\| ".join(f"`{c}`" for c in choices[key])
+                acc = (("list of " if check == "strlist" else "")
+                       + " \\| ".join(f"`{c}`" for c in choices[key]))
             rows.append(f"| `[{group or 'top level'}]` | `{key}` | {unit} | "
                         f"{'yes' if required else ''} | {acc} | {r.source.replace('|', '/') if r else ''} |")
     return "\n".join(rows) + "\n"

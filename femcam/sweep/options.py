@@ -19,7 +19,8 @@ from ..wear.options import follower_tip_radius
 #: to 10 %
 RTOL_RANGE = (2e-4, 0.1)
 
-__all__ = ["METHODS", "RTOL_ON", "RTOL_RANGE", "TOLERANCE_FLOOR", "ContactParams", "SweepOptions", "contact_params"]
+__all__ = ["METHODS", "RTOL_ON", "RTOL_RANGE", "TOLERANCE_FLOOR", "ContactParams", "SweepOptions",
+           "contact_params", "rtol_quantities"]
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -133,9 +133,10 @@ def ring_level_estimate(model: RingModel, mesh: MeshOptions | None = None,
     out["a_over_h"] = float(mesh.a_over_h)
     b = model.bearing
     inv_R = 1.0 / b.Ro + (0.0 if math.isinf(model.rho_ref) else 1.0 / model.rho_ref)
-    F = math.pi * effective_modulus(model.cam, b.ring, model.plane) * model.a_ref**2 * model.length * inv_R / 4
-    fine_ring = RingMeshOptions(n_bore=2 * ring_mesh.n_bore, h_max_over_wall=max(0.02, ring_mesh.h_max_over_wall / 2),
-                                growth=ring_mesh.growth)
+    E_star = effective_modulus(model.cam, b.ring, model.plane)
+    F = math.pi * E_star * model.a_ref**2 * model.length * inv_R / 4
+    fine_ring = RingMeshOptions(n_bore=2 * ring_mesh.n_bore, growth=ring_mesh.growth,
+                                h_max_over_wall=max(0.02, ring_mesh.h_max_over_wall / 2))
     try:
         other = RingModel.build(bearing=b, cam=model.cam, rho_ref=model.rho_ref, a_ref=model.a_ref,
                                 length=model.length, mesh=coarse_mesh(mesh.a_over_h, mesh.fine_half_width),
@@ -185,7 +186,8 @@ def contact_rows(rows) -> np.ndarray:
     return (status == "ok") | (status == "failed")
 
 
-def ring_estimate(rows, i: int, est: FamilyEstimate | None, n_ring: float, ring_est: dict | None = None) -> None:
+def ring_estimate(rows, i: int, est: FamilyEstimate | None, n_ring: float,
+                  ring_est: dict | None = None) -> None:
     """Row ``i``'s error estimates once the ring model answers it (module docstring): the ring
     model's own two-level estimate (:func:`ring_level_estimate`) carried to the row's ``n_ring``
     elements per half-width for ``p0`` and ``a``; the scaled stresses add the solid row's.

@@ -274,16 +274,17 @@ def choose_mesh(run, fit_rows, cache) -> None:
     n_all = [rec.a_over_h for rec in run.records]
     run.opts = run.opts.for_family(max(n_all) if n_all else PILOT_A_OVER_H)
     run.preplanned = True
-    run.rtol_info = {"rtol": rtol, "rtol_on": list(on), "a_over_h": run.opts.a_over_h, "tolerance": run.opts.tolerance,
+    run.rtol_info = {"rtol": rtol, "rtol_on": list(on), "a_over_h": run.opts.a_over_h,
+                     "tolerance": run.opts.tolerance,
                      "per_family": True, "family_a_over_h": n_all, "pilots": pilots, "levels": tried}
 
 
 def _pilot_estimates(cp: ContactParams, refs: dict, options, cache, on=("p0",)) -> dict:
-    """The pilot estimate (p0 and the quantities ``on``) at ``a/h = 8`` of every planned family: solved on the families with
-    the smallest and the largest ``Rr / rho`` (two fine and two coarse builds, whatever the
-    number of families), interpolated linearly in ``Rr / rho`` between them for the others
-    (marked ``a_over_h_coarse = 0``); the per-family refinement catches an interpolation that
-    falls short."""
+    """The pilot estimate (p0 and the quantities ``on``) at ``a/h = 8`` of every planned family:
+    solved on the families with the smallest and the largest ``Rr / rho`` (two fine and two
+    coarse builds, whatever the number of families), interpolated linearly in ``Rr / rho``
+    between them for the others (marked ``a_over_h_coarse = 0``); the per-family refinement
+    catches an interpolation that falls short."""
     kap = {f: (0.0 if math.isinf(r[0]) else cp.Rr / r[0]) for f, r in refs.items()}
     if not kap:
         return {}
