@@ -151,23 +151,6 @@ def ring_level_estimate(model: RingModel, mesh: MeshOptions | None = None,
     return out
 
 
-def scene_ring_estimate(scene) -> dict:
-    """:func:`ring_level_estimate` of the scene's ring model (:func:`femcam.sweep.providers.ring_model`),
-    once per process.
-
-    Parameters
-    ----------
-    scene : femcam.scene.Scene
-        A scene with a pin or needle roller support.
-
-    Returns
-    -------
-    dict[str, float]
-        As :func:`ring_level_estimate`.
-    """
-    return _cached("ring_estimate", scene, lambda: ring_level_estimate(ring_model(scene)))
-
-
 def contact_rows(rows) -> np.ndarray:
     """Rows with a contact solution to build on: ``ok``, or ``failed`` (the FE failed there, the
     contact exists); lift-off and undercut rows (the roller does not fit) get NaN.
@@ -277,7 +260,8 @@ def ring_headline(task, rows) -> np.ndarray:
         return done
     for k in SIDE_KEYS:
         rows[f"ring_{k}"] = np.asarray(r[k], float)
-    ring_est = scene_ring_estimate(task.scene)
+    # the ring model's two-level estimate, once per process (as the model)
+    ring_est = _cached("ring_estimate", task.scene, lambda: ring_level_estimate(model))
     ring_side_estimates(rows, ring_est)
     peak, fit, a = (np.asarray(r[k], float) for k in ("p0_peak", "p0", "a"))
     ok = (np.asarray(rows["status"]).astype(str) == "ok") & np.isfinite(peak)
