@@ -33,25 +33,23 @@ solid answer (the exact gap at a curvature jump, the partial-slip traction; the 
 frictionless on the osculating arc) stay in the scaled stresses; ``p0_fe`` is the ring
 model's own peak.
 
-Error estimates (``err_est_*``, :mod:`femcam.sweep.estimate`) on a ring row: the ring model's
-cam contact is meshed by the same contact-zone generator as the solid families (its fine zone
-``a_ref / 20``, the default :class:`~femcam.mesh.MeshOptions` of
-:func:`femcam.bodies.rows.build_for`, graded for the largest force), and the relative
-discretisation error of a contact depends on its elements per half-width (2D elasticity is scale
-invariant), so the row's solid family's two-level estimate is carried to the ring mesh's
-resolution ``n = 20 a_ring / a_ref_ring`` (``a_over_h_row``):
-``err_est_p0, err_est_a = e_ref (n_ref / n)^p`` (no reuse error: the ring model is solved at the
-row's own load). The scaled stresses carry three errors, ``err_est_vm = e_vm,solid + e_p0,ring
-+ e_p0,solid`` (likewise tau1). A ``hertz+ring`` row has no solid family, so no estimate (NaN).
-The estimate leaves out what the ring's global compliance adds to the contact's discretisation
-(bending of a thin wall is resolved by the ring mesh, :class:`~femcam.bodies.RingMeshOptions`,
-not by ``a/h``); checked on the thick ring on a tight pin against Hertz
+Error estimates (``err_est_*``, docs/estimate.md) on a ring row: ``p0_fe`` and ``a_fe`` are the
+ring model's, so the ring model's **own** two-level estimate answers them
+(:func:`ring_level_estimate`: one second ring model per process, its cam-contact zone coarse,
+``H = 2 h``, and its ring and pin fine, twice the bore vertices), carried to the row's resolution
+``n = 20 a_ring / a_ref_ring`` (``a_over_h_row``): ``e = e_ref (20 / n)^p`` (no reuse error: the
+ring model is solved at the row's own load). The scaled stresses carry three errors,
+``err_est_vm = e_vm,solid + e_p0,ring + e_p0,solid`` (likewise tau1; NaN on a ``hertz+ring`` row,
+whose stresses are Hertz's shape factors). The ring's own stresses get ``err_est_bore_hoop``,
+``err_est_pin_p0``, ``err_est_needle_Q`` from the refined ring (:func:`ring_side_estimates`).
+Checked on the thick ring on a tight pin against Hertz and against a ring of 512 bore vertices
 (``tests/test_sweep_ring.py``).
 
-Cost: no model beyond today's: the ring model was already built and solved for its bore and
-needle columns; those solves are now read by the headline as well (the solid-roller families
-still answer the stresses). With ``--method auto`` the rows Hertz answers need no FE model at
-all, so a ring scene then costs the ring model alone.
+Cost: the ring model was already built and solved for its bore and needle columns; those solves
+are now read by the headline as well (the solid-roller families still answer the stresses); the
+estimate adds one second ring model per process (+1.3 s CPU on a 36-angle needle sweep,
+docs/estimate.md). With ``--method auto`` the rows Hertz answers need no FE model at all, so a
+ring scene then costs the ring models alone.
 """
 
 from __future__ import annotations
