@@ -336,7 +336,7 @@ def predict_a_over_h(est: FamilyEstimate, target: float, quantity: str = "p0") -
     target : float
         Relative error to reach [-], > 0.
     quantity : str
-        One of :data:`QUANTITIES`.
+        One of :data:`RATES` (:data:`QUANTITIES`, :data:`LAYER_QUANTITIES`).
 
     Returns
     -------
@@ -344,7 +344,7 @@ def predict_a_over_h(est: FamilyEstimate, target: float, quantity: str = "p0") -
         Elements per half-width [-] (NaN when the estimate is NaN).
     """
     target = _validate.positive("target", target, "(relative error)")
-    _validate.choice("quantity", quantity, QUANTITIES)
+    _validate.choice("quantity", quantity, tuple(RATES))
     e0 = est.err[quantity]
     if not np.isfinite(e0):
         return math.nan
