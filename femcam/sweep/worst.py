@@ -255,7 +255,7 @@ ESTIMATED = {"p0_fe": "err_est_p0", "a_fe": "err_est_a", "vm_max": "err_est_vm",
 #: the providers' estimated columns: column -> (``err_est_*`` column, what, worst by ``max`` or
 #: ``min``) (the interface stresses of a coating, the ring's own stresses)
 ESTIMATED_EXTRA = {
-    "layer_interface_tau_max": ("err_est_interface_tau", "interface shear max |tau|", "max"),
+    "layer_interface_tau_max": ("err_est_interface_tau", "interface shear (largest magnitude)", "max"),
     "layer_interface_sn_min": ("err_est_interface_sn", "interface normal stress, most compressive", "min"),
     "ring_hoop_max": ("err_est_bore_hoop", "bore hoop stress, largest tensile", "max"),
     "ring_pin_p0": ("err_est_pin_p0", "pin contact peak pressure", "max"),
