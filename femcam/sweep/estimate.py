@@ -54,9 +54,9 @@ from ..mesh import MeshOptions
 from .cache import ModelCache, _disk_key, build_model, default_cache, model_args
 from .options import ContactParams, SweepOptions, contact_params
 
-__all__ = ["LAYER_QUANTITIES", "QUANTITIES", "RATES", "FamilyEstimate", "coarse_mesh", "family_estimate",
-           "estimate_families", "estimate_run", "estimate_text", "fill_row_estimate", "predict_a_over_h",
-           "reference_load", "row_estimate"]
+__all__ = ["LAYER_QUANTITIES", "QUANTITIES", "RATES", "FamilyEstimate", "coarse_mesh", "estimated",
+           "family_estimate", "estimate_families", "estimate_run", "estimate_text", "fill_row_estimate",
+           "layer_quantities", "predict_a_over_h", "reached_text", "reference_load", "row_estimate"]
 
 #: quantities estimated: name -> (sweep column of the estimate, ContactResult reader)
 QUANTITIES = ("p0", "a", "vm", "tau1")
@@ -228,11 +228,15 @@ def layer_quantities(r, cp: ContactParams) -> dict:
     -------
     dict[str, float]
         ``interface_tau`` (max ``|tau|``) and ``interface_sn`` (the most compressive normal
-        stress) [Pa].
+        stress) [Pa]; NaN when the solve has no interface to read (a
+        :class:`~femcam.errors.FemcamError` of :func:`femcam.layers.interface_stress`).
     """
     if cp.coat_body is None:
         return {}
-    it = interface_stress(r, cp.coat_body)
+    try:
+        it = interface_stress(r, cp.coat_body)
+    except FemcamError:   # no interface in the fine zone: the headline's estimates stand
+        return dict.fromkeys(LAYER_QUANTITIES, math.nan)
     return {"interface_tau": float(it.tau_abs_max), "interface_sn": float(it.sigma_n_min)}
 
 
