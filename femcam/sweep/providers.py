@@ -179,8 +179,6 @@ LAYER_ESTIMATES = (Column("err_est_interface_tau", "err_est_interface_tau_pct", 
                           "estimated discretisation error of interface_tau_max_MPa"),
                    Column("err_est_interface_sn", "err_est_interface_sn_pct", 100.0,
                           "estimated discretisation error of interface_sn_min_MPa"))
-LAYER_VALUES = LAYERS
-LAYERS = LAYER_VALUES + LAYER_ESTIMATES
 
 
 def axial_contact(rows) -> tuple[np.ndarray, np.ndarray]:
@@ -510,10 +508,11 @@ def layers_chunk(task, rows, solved) -> dict:
     -------
     dict[str, ndarray]
         ``layer_*`` columns under their SI names, SI values (:data:`LAYERS`; the CSV names
-        carry the unit), and the text column ``layer_source``.
+        carry the unit), the estimates :data:`LAYER_ESTIMATES` (relative; NaN on a
+        ``layer_model`` row) and the text column ``layer_source``.
     """
     n = task.theta.size
-    out = {c.si: np.full(n, np.nan) for c in LAYERS}
+    out = {c.si: np.full(n, np.nan) for c in LAYERS + LAYER_ESTIMATES}
     out["layer_source"] = np.full(n, "", dtype=object)
     status = np.asarray(rows["status"]).astype(str)
     contact = _contact_rows(rows)
@@ -526,14 +525,14 @@ def layers_chunk(task, rows, solved) -> dict:
                   case_body=lay["case"][0] if lay["case"] else "cam")
         for i in head:
             r = result_layer_row(solved[i], **kw)
-            for c in LAYER_VALUES:
+            for c in LAYERS:
                 out[c.si][i] = r[c.csv] / c.factor
             out["layer_source"][i] = "headline"
             _layer_estimate(task, rows, i, out)
     idx = np.setdiff1d(np.flatnonzero(contact), np.asarray(head, int))
     if idx.size:
         r = scene_layer_rows(task.scene, task.theta[idx], a_over_h=task.options.a_over_h)
-        for c in LAYER_VALUES:
+        for c in LAYERS:
             if c.csv in r:
                 out[c.si][idx] = np.asarray(r[c.csv], float) / c.factor
         out["layer_source"][idx] = "layer_model"
