@@ -78,6 +78,7 @@ def _cases():
                 out.append((group, key, "missing", None))
             if factor is None:  # text, list, segment array, boolean: numbers and lists are wrong
                 wrong = {"str": [5.0, [1.0]], "list": ["x", 5.0, ["a"]], "seglist": [5.0, "x"],
+                         "strlist": ["p0", 5.0, [1.0], [], ["nonsense"]],
                          "bool": ["yes", 1.0]}[check]
                 out += [(group, key, "wrong type", w) for w in wrong]
                 if key in _CHOICES:

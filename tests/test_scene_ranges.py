@@ -252,3 +252,19 @@ def test_scene_doc_holds_the_generated_key_table():
 
 def test_readme_points_to_the_scene_reference():
     assert "docs/scene.md" in (ROOT / "README.md").read_text(encoding="utf-8")
+
+
+def test_rtol_on_accepts_the_err_est_stems_and_refuses_others(tmp_path):
+    """``[fe] rtol_on``: a list of the err_est_* stems (femcam.scene.schema.RTOL_ON) loads as it
+    is; a name outside it, a bare string and an empty list are refused naming the key and the
+    accepted names."""
+    text = (EX / "seed002_study_model.toml").read_text(encoding="utf-8")
+    ok = tmp_path / "ok.toml"
+    ok.write_text(text + '\n[fe]\nrtol_pct = 0.5\nrtol_on = ["p0", "tau1"]\n', encoding="utf-8")
+    assert load_scene(ok).fe["rtol_on"] == ["p0", "tau1"]
+    for bad in ('["p0", "tau2"]', '"p0"', "[]"):
+        p = tmp_path / "bad.toml"
+        p.write_text(text + f"\n[fe]\nrtol_on = {bad}\n", encoding="utf-8")
+        with pytest.raises(SceneError) as ei:
+            load_scene(p)
+        assert "fe.rtol_on" in str(ei.value) and "'interface_tau'" in str(ei.value), str(ei.value)

@@ -25,7 +25,7 @@ from ..scene import load_scene, study_problem
 from ..scene.schema import STUDY_RANGES, STUDY_UNITS, STUDY_WHOLE
 from ..sweep import sweep
 from ..sweep.estimate import estimate_text
-from ..sweep.options import RTOL_RANGE, TOLERANCE_FLOOR
+from ..sweep.options import RTOL_ON, RTOL_RANGE, TOLERANCE_FLOOR
 from ..sweep.result import families_text, hertz_check_text
 from ..sweep.settings import SETTINGS as LIBRARY_SETTINGS
 from ..sweep.settings import resolve_settings
@@ -92,6 +92,10 @@ def register(subparsers) -> None:
                     "(0.5 means 0.5 %%): the sweep chooses the mesh (a/h) and a reuse tolerance "
                     "<= PCT/2 from a two-level error estimate; each row reports err_est_p0_pct "
                     "(default: [fe] rtol_pct, else none: --mesh-size decides)")
+    p.add_argument("--rtol-on", default=None, metavar="Q[,Q...]",
+                   help="the quantities --rtol-pct bounds, stems of the err_est_*_pct columns: "
+                        + ", ".join(RTOL_ON) + " (the interface ones on coated scenes); each "
+                        "family's mesh meets all of them (default: [fe] rtol_on, else p0)")
     p.add_argument("--method", choices=("fe", "hertz", "auto"), default=None,
                    help="fe: FE contact solve; hertz: analytic only; auto: the cheapest of Hertz, "
                         "FE arc gap, FE exact gap within --tolerance per angle "
@@ -116,8 +120,8 @@ _PARAMS = {"angles_deg": "angles", "mesh_size": "a_over_h", "tolerance": "tolera
 #: flag dest -> (scene table, key, default)
 SETTINGS = {dest: LIBRARY_SETTINGS[p] for dest, p in _PARAMS.items()}
 #: the flags' names in the library's messages about given values
-_NAMES = {"rtol": ("--rtol-pct", 100, "%"), "a_over_h": ("--mesh-size", 1, ""),
-          "angles_deg": ("--angles-deg", 1, "deg")}
+_NAMES = {"rtol": ("--rtol-pct", 100, "%"), "rtol_on": ("--rtol-on", 1, ""),
+          "a_over_h": ("--mesh-size", 1, ""), "angles_deg": ("--angles-deg", 1, "deg")}
 
 def _study(key: str, whole: bool = False, hi: float | None = None) -> Range:
     """The flag's range: the scene's (femcam.scene.schema.study_problem, one copy, with the
@@ -192,6 +196,7 @@ def resolve_args(args, scene) -> list[str]:
     args.mesh_size, args.chunk_size, args.vtk_every, args.plots = (st.a_over_h, st.chunk_size,
                                                                    st.vtk_every, st.plots)
     args.rtol_pct = None if st.rtol is None else 100.0 * st.rtol
+    args.rtol_on = ",".join(st.rtol_on)
     args.angles = st.angles
     return list(st.from_scene)
 
@@ -201,6 +206,7 @@ def _given(args) -> dict:
     given = {p: getattr(args, dest) for dest, p in _PARAMS.items()}
     given["angles_deg"] = given.pop("angles")
     given["rtol"] = None if args.rtol_pct is None else args.rtol_pct / 100.0
+    given["rtol_on"] = args.rtol_on
     return given
 
 
@@ -259,8 +265,8 @@ def _command_line(args) -> str:
     """The command, rebuilt from the parsed arguments (also right for ``main([...])`` calls)."""
     parts = ["femcam", "sweep", args.scene, "--out", args.out, "--angles-deg", args.angles_deg,
              "--workers", str(args.workers),
-             *(["--rtol-pct", f"{args.rtol_pct:g}"] if args.rtol_pct is not None else
-               ["--mesh-size", f"{args.mesh_size:g}"]),
+             *(["--rtol-pct", f"{args.rtol_pct:g}", "--rtol-on", args.rtol_on]
+               if args.rtol_pct is not None else ["--mesh-size", f"{args.mesh_size:g}"]),
              "--tolerance", f"{args.tolerance:g}", "--chunk-size", str(args.chunk_size),
              "--vtk-every", str(args.vtk_every), "--method", args.method]
     if args.scheduler:
@@ -302,6 +308,7 @@ def _run(args) -> int:
     try:
         res = sweep(scene, angles=None if given["angles_deg"] is None else args.angles,
                     method=given["method"], a_over_h=given["a_over_h"], rtol=given["rtol"],
+                    rtol_on=given["rtol_on"],
                     tolerance=given["tolerance"], chunk_size=given["chunk_size"], out=args.out,
                     resume=args.resume, workers=args.workers, scheduler=args.scheduler,
                     vtk_every=given["vtk_every"], progress=progress, plots=given["plots"],

@@ -123,7 +123,7 @@ class _Checker:
         object or None
             The value in SI; None when a problem was added.
         """
-        if check in ("str", "list", "seglist", "bool"):
+        if check in ("str", "list", "strlist", "seglist", "bool"):
             return self._plain(dk, k, v, check)
         x = self._number(dk, v, unit, factor, check)
         if x is None:
@@ -149,6 +149,14 @@ class _Checker:
                 self.add(dk, f"= {v!r}: must be one of {', '.join(map(repr, _CHOICES[k]))}")
                 return None
             return v
+        if check == "strlist":
+            bad = [x for x in v if not isinstance(x, str) or x not in _CHOICES.get(k, (x,))] \
+                if isinstance(v, list) else [v]
+            if bad or not v:
+                self.add(dk, f"= {_fmt(v)}: must be a non-empty list of "
+                         f"{', '.join(map(repr, _CHOICES[k])) if k in _CHOICES else 'strings'}")
+                return None
+            return [str(x) for x in v]
         if check == "list":
             ok = isinstance(v, list) and all(isinstance(x, int | float) and not isinstance(x, bool)
                                              for x in v)

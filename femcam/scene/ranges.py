@@ -317,10 +317,12 @@ def reference_table(tables: dict, choices: dict) -> str:
         for key, (unit, _, check, required) in spec.items():
             r = RANGES.get(group, {}).get(key)
             acc = (span(r, check) if r is not None else {"str": "text", "list": "list of numbers",
+                                                          "strlist": "list of strings",
                                                           "seglist": "array of tables",
                                                           "bool": "true or false"}.get(check, check))
-            if check == "str" and key in choices:
-                acc = " \\| ".join(f"`{c}`" for c in choices[key])
+            if check in ("str", "strlist") and key in choices:
+                acc = (("list of " if check == "strlist" else "")
+                       + " \\| ".join(f"`{c}`" for c in choices[key]))
             rows.append(f"| `[{group or 'top level'}]` | `{key}` | {unit} | "
                         f"{'yes' if required else ''} | {acc} | {r.source.replace('|', '/') if r else ''} |")
     return "\n".join(rows) + "\n"

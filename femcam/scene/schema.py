@@ -13,6 +13,7 @@ check           accepted value
 ``nu``          Poisson's ratio, in (-1, 0.5)
 ``str``         a string (one of ``_CHOICES`` where the key is listed there)
 ``list``        a list of numbers
+``strlist``     a list of strings (each one of ``_CHOICES`` where the key is listed there)
 ``seglist``     the ``[[program.segment]]`` array (checked by :mod:`femcam.scene.program`)
 ``bool``        true or false
 =============== ==============================================================
@@ -213,6 +214,9 @@ def si_named(table: dict) -> dict:
 METHODS = ("fe", "hertz", "auto")
 #: smallest accepted ``tolerance`` (relative p0 reuse error); see :mod:`femcam.sweep.plan`
 TOLERANCE_FLOOR = 1e-4
+#: the quantities ``[fe] rtol_on`` may control: the stems of the sweep's ``err_est_*`` columns
+#: that a family's mesh refines (:mod:`femcam.sweep.rtol`; the interface ones on coated scenes)
+RTOL_ON = ("p0", "a", "vm", "tau1", "interface_tau", "interface_sn")
 #: closed ranges of the real-valued study settings
 STUDY_RANGES = {"a_over_h": (2.0, 400.0), "tolerance": (TOLERANCE_FLOOR, 0.5)}
 #: what the study settings measure, as error messages write them after the value
@@ -226,7 +230,7 @@ _FLOOR_WHY = ("the reuse error is a discretisation effect of the order of the FE
               "angle needs its own model. Refine a_over_h for more accurate p0")
 _FE = {"a_over_h": ("(elements per contact half-width)", 1.0, "pos", False),
        "tolerance": ("(relative p0 reuse error)", 1.0, "pos", False),
-       "rtol_pct": ("%", 1.0, "pos", False)}
+       "rtol_pct": ("%", 1.0, "pos", False), "rtol_on": ("", None, "strlist", False)}
 _SWEEP = {"method": ("", None, "str", False), "angles_deg": ("", None, "str", False),
           "chunk_size": ("angles", 1.0, "num", False), "vtk_every": ("angles", 1.0, "num", False),
           "plots": ("", None, "bool", False)}
@@ -284,7 +288,7 @@ _CHOICES = {"kind": ("rise", "dwell", "fall"), "type": ("roller", "knife_edge", 
             "method": METHODS, "roller_model": ("srr", "inertia"),
             "roller_support": ("solid", "pin", "needles"), "shaft_fit": ("contact", "bonded"),
             "hardness_law": ("exponential", "linear"), "motion": ("translating", "oscillating"),
-            "direction": ("away_from_pivot", "toward_pivot")}
+            "direction": ("away_from_pivot", "toward_pivot"), "rtol_on": RTOL_ON}
 
 #: every key table by its table group (``*``: any body; the segment index dropped): the one
 #: list the range table (:data:`femcam.scene.ranges.RANGES`), the scene reference

@@ -49,13 +49,15 @@ import numpy as np
 from .. import _validate
 from ..errors import FemcamError
 from ..fe import SolverOptions
+from ..layers.interface import interface_stress
 from ..mesh import MeshOptions
 from .cache import ModelCache, _disk_key, _key, build_model, default_cache, model_args
 from .options import ContactParams, SweepOptions, contact_params
 
-__all__ = ["QUANTITIES", "RATES", "FamilyEstimate", "coarse_mesh", "family_estimate",
-           "estimate_families", "estimate_run", "estimate_text", "fill_row_estimate", "predict_a_over_h",
-           "prefetch_estimate", "reference_load", "row_estimate"]
+__all__ = ["LAYER_QUANTITIES", "QUANTITIES", "RATES", "FamilyEstimate", "coarse_mesh", "estimated",
+           "family_estimate", "estimate_families", "estimate_run", "estimate_text", "fill_row_estimate",
+           "layer_quantities", "predict_a_over_h", "prefetch_estimate", "reached_text", "reference_load",
+           "row_estimate"]
 
 #: quantities estimated: name -> (sweep column of the estimate, ContactResult reader)
 QUANTITIES = ("p0", "a", "vm", "tau1")
@@ -63,7 +65,13 @@ QUANTITIES = ("p0", "a", "vm", "tau1")
 #: even n_fine, a/h = 4 ... 20, docs/estimate.md): p0 nodal peak 1.68-1.89 (the smaller taken:
 #: a larger estimate), a 1.91; the stress maxima 2 (the nominal rate of a P2 field's recovered
 #: nodal stress; their measured differences are within a recovery noise of ~0.05 %)
-RATES = {"p0": 1.7, "a": 1.9, "vm": 2.0, "tau1": 2.0}
+RATES = {"p0": 1.7, "a": 1.9, "vm": 2.0, "tau1": 2.0, "interface_tau": 2.0, "interface_sn": 2.0}
+#: coated scenes: the interface stresses of the coated body estimated on the same two levels
+#: (``interface_tau``: ``max |tau|`` at the interface, ``interface_sn``: its most compressive
+#: normal stress, :func:`femcam.layers.interface_stress`); rate 2, the nominal rate of the
+#: recovered nodal stress of a P2 field (docs/estimate.md: measured against the layered
+#: half-space)
+LAYER_QUANTITIES = ("interface_tau", "interface_sn")
 
 
 @dataclass(frozen=True)
@@ -88,6 +96,28 @@ class FamilyEstimate:
     a_over_h_coarse: float
     err: dict
     reuse: float = 0.0
+
+    def carried(self, quantity: str, a_over_h_row: float) -> float:
+        """The estimate of ``quantity`` carried to a row solved at ``a_over_h_row`` elements per
+        its own half-width: ``e_ref (a_over_h / a_over_h_row)^p`` (2D elasticity is scale
+        invariant), without the reuse error.
+
+        Parameters
+        ----------
+        quantity : str
+            A key of ``err`` (:data:`RATES`).
+        a_over_h_row : float
+            Elements per the row's half-width [-].
+
+        Returns
+        -------
+        float
+            Relative error [-] (NaN when the estimate or the row's resolution is missing).
+        """
+        e = self.err.get(quantity, math.nan)
+        if not (a_over_h_row > 0 and math.isfinite(e)):
+            return math.nan
+        return e * (self.a_over_h / a_over_h_row) ** RATES[quantity]
 
     def to_dict(self) -> dict:
         """JSON-able form (provenance).
@@ -169,6 +199,48 @@ def _quantities(r) -> dict:
     return {"p0": r.p0_nodal, "a": r.a, "vm": r.von_mises_max.value, "tau1": r.tau1_max.value}
 
 
+def estimated(cp: ContactParams) -> tuple:
+    """The quantities a family estimate holds for a scene: :data:`QUANTITIES`, and
+    :data:`LAYER_QUANTITIES` when the contact FE carries a coating.
+
+    Parameters
+    ----------
+    cp : ContactParams
+        Contact parameters of the scene (``coat_body``).
+
+    Returns
+    -------
+    tuple of str
+    """
+    return QUANTITIES + (LAYER_QUANTITIES if cp.coat_body is not None else ())
+
+
+def layer_quantities(r, cp: ContactParams) -> dict:
+    """The interface stresses of a coated solve (:data:`LAYER_QUANTITIES`), ``{}`` when uncoated.
+
+    Parameters
+    ----------
+    r : femcam.fe.ContactResult
+        A solve of the coated model (with its model).
+    cp : ContactParams
+        Contact parameters (``coat_body``).
+
+    Returns
+    -------
+    dict[str, float]
+        ``interface_tau`` (max ``|tau|``) and ``interface_sn`` (the most compressive normal
+        stress) [Pa]; NaN when the solve has no interface to read (a
+        :class:`~femcam.errors.FemcamError` of :func:`femcam.layers.interface_stress`).
+    """
+    if cp.coat_body is None:
+        return {}
+    try:
+        it = interface_stress(r, cp.coat_body)
+    except FemcamError:   # no interface in the fine zone: the headline's estimates stand
+        return dict.fromkeys(LAYER_QUANTITIES, math.nan)
+    return {"interface_tau": float(it.tau_abs_max), "interface_sn": float(it.sigma_n_min)}
+
+
 def family_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions,
                     cache: ModelCache | None = None, reuse: float = 0.0) -> FamilyEstimate:
     """Two-level estimate of one family model's relative errors at its reference load.
@@ -196,16 +268,16 @@ def family_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: Sw
     # the contact FE and the widened fine zone of model_args, build_model), nested in its nodes
     mesh2 = coarse_mesh(options.a_over_h, model_args(cp, rho_ref, a_ref, options)["mesh"].fine_half_width)
     a2, r_h = mesh2.a_over_h, 2.0
-    nan = {q: math.nan for q in QUANTITIES}
+    nan = {q: math.nan for q in estimated(cp)}
     try:
         F = reference_load(cp, rho_ref, a_ref)
         fine = cache.solve(cache.model_for(cp, rho_ref, a_ref, options), F, rho_ref, cp.mu,
                            cp.sliding, check=False)
         qH = _coarse_quantities(cp, rho_ref, a_ref, options, mesh2, F, cache)
+        qh = {**_quantities(fine), **layer_quantities(fine, cp)}
     except (FemcamError, ValueError, ArithmeticError):
         return FamilyEstimate(a_ref, options.a_over_h, a2, nan, float(reuse))
-    qh = _quantities(fine)
-    err = {q: abs(qh[q] - qH[q]) / abs(qh[q]) / (r_h ** RATES[q] - 1.0) for q in QUANTITIES}
+    err = {q: abs(qh[q] - qH[q]) / abs(qh[q]) / (r_h ** RATES[q] - 1.0) for q in nan}
     return FamilyEstimate(a_ref, options.a_over_h, a2, err, float(reuse))
 
 
@@ -225,10 +297,11 @@ def _coarse_job(cp, rho_ref, a_ref, options, mesh2, F, cache) -> tuple:
 
     def job() -> dict:
         qH = disk.get(dk) if dk is not None else None
-        if isinstance(qH, dict) and set(qH) == set(QUANTITIES) and all(map(math.isfinite, qH.values())):
+        if isinstance(qH, dict) and set(qH) == set(estimated(cp)) and all(map(math.isfinite, qH.values())):
             return qH
         coarse_model = build_model(cp, rho_ref, a_ref, options, solver, mesh=mesh2)
-        qH = _quantities(coarse_model.solve(F=F, rho=rho_ref, mu=cp.mu, sliding=cp.sliding, check=False))
+        rH = coarse_model.solve(F=F, rho=rho_ref, mu=cp.mu, sliding=cp.sliding, check=False)
+        qH = {**_quantities(rH), **layer_quantities(rH, cp)}
         if dk is not None and all(map(math.isfinite, qH.values())):
             disk.put(dk, {k: float(v) for k, v in qH.items()})
         return qH
@@ -307,7 +380,7 @@ def predict_a_over_h(est: FamilyEstimate, target: float, quantity: str = "p0") -
     target : float
         Relative error to reach [-], > 0.
     quantity : str
-        One of :data:`QUANTITIES`.
+        One of :data:`RATES` (:data:`QUANTITIES`, :data:`LAYER_QUANTITIES`).
 
     Returns
     -------
@@ -315,7 +388,7 @@ def predict_a_over_h(est: FamilyEstimate, target: float, quantity: str = "p0") -
         Elements per half-width [-] (NaN when the estimate is NaN).
     """
     target = _validate.positive("target", target, "(relative error)")
-    _validate.choice("quantity", quantity, QUANTITIES)
+    _validate.choice("quantity", quantity, tuple(RATES))
     e0 = est.err[quantity]
     if not np.isfinite(e0):
         return math.nan
@@ -396,6 +469,33 @@ def estimate_run(run, cache: ModelCache | None = None) -> None:
     run.estimates = estimate_families(run.records, contact_params(run.scene), run.opts, cache)
 
 
+def reached_text(t, ok, choice: dict) -> str:
+    """``"; reached: p0 0.31 %, tau1 0.2 %"``: the largest estimate over the ``ok`` rows of each
+    quantity ``rtol`` controlled (``choice["rtol_on"]``).
+
+    Parameters
+    ----------
+    t : Mapping[str, ndarray]
+        The sweep table (``err_est_*`` relative).
+    ok : ndarray of bool
+        The ``ok`` rows.
+    choice : dict
+        ``provenance["options"]["rtol_choice"]``.
+
+    Returns
+    -------
+    str
+        The text ("" when no controlled quantity has a finite estimate).
+    """
+    parts = []
+    for q in choice.get("rtol_on", ["p0"]):
+        v = np.where(ok, np.asarray(t.get(f"err_est_{q}", np.full(ok.shape, np.nan)), float), np.nan)
+        if np.any(np.isfinite(v)):
+            met = "met" if np.nanmax(v) <= choice["rtol"] else "NOT met"
+            parts.append(f"{q} {100 * float(np.nanmax(v)):.3g} % ({met})")
+    return "; reached: " + ", ".join(parts) if parts else ""
+
+
 def estimate_text(result) -> str:
     """The largest error estimates of a sweep's FE rows, for the summary line and ``report.md``.
 
@@ -415,9 +515,13 @@ def estimate_text(result) -> str:
     if "err_est_p0" not in t:
         return ""
     ok = np.asarray(t["status"]).astype(str) == "ok"
-    names = {"p0": "p0", "a": "a", "vm": "von Mises", "tau1": "tau1"}
+    names = {"p0": "p0", "a": "a", "vm": "von Mises", "tau1": "tau1", "interface_tau": "interface shear",
+             "interface_sn": "interface normal", "bore_hoop": "bore hoop", "pin_p0": "pin p0",
+             "needle_Q": "needle load"}
     parts = []
     for q, name in names.items():
+        if f"err_est_{q}" not in t:
+            continue
         v = np.where(ok, np.asarray(t[f"err_est_{q}"], float), np.nan)
         if np.any(np.isfinite(v)):
             parts.append(f"{name} {100 * float(np.nanmax(v)):.3g} %")
@@ -430,6 +534,6 @@ def estimate_text(result) -> str:
         own = choice.get("family_a_over_h") or [choice["a_over_h"]]
         mesh = (f"a/h = {min(own):g}" if min(own) == max(own) else
                 f"a/h = {min(own):g}-{max(own):g} over {len(own)} families")
-        text += (f"; rtol {100 * choice['rtol']:g} % on p0: {mesh}, reuse "
-                 f"tolerance {100 * choice['tolerance']:g} %")
+        text += (f"; rtol {100 * choice['rtol']:g} % on {', '.join(choice.get('rtol_on', ['p0']))}: "
+                 f"{mesh}, reuse tolerance {100 * choice['tolerance']:g} %" + reached_text(t, ok, choice))
     return text

@@ -12,14 +12,15 @@ from dataclasses import dataclass, replace
 from .. import _validate
 from ..errors import InputError
 from ..materials import Material, effective_modulus
-from ..scene.schema import METHODS, STUDY_UNITS, STUDY_WHOLE, TOLERANCE_FLOOR, study_problem
+from ..scene.schema import METHODS, RTOL_ON, STUDY_UNITS, STUDY_WHOLE, TOLERANCE_FLOOR, study_problem
 from ..wear.options import follower_tip_radius
 
 #: accepted ``rtol`` (relative p0 error): 0.02 % (the reuse tolerance floor 1e-4 is half of it)
 #: to 10 %
 RTOL_RANGE = (2e-4, 0.1)
 
-__all__ = ["METHODS", "RTOL_RANGE", "TOLERANCE_FLOOR", "ContactParams", "SweepOptions", "contact_params"]
+__all__ = ["METHODS", "RTOL_ON", "RTOL_RANGE", "TOLERANCE_FLOOR", "ContactParams", "SweepOptions",
+           "contact_params", "rtol_quantities"]
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -48,6 +49,9 @@ class SweepOptions:
         Requested bound on the estimated relative p0 error of every FE row (a fraction, in
         [:data:`RTOL_RANGE`]; ``--rtol-pct`` and ``[fe] rtol_pct`` give it in percent); the
         sweep then chooses ``a_over_h`` (:mod:`femcam.sweep.rtol`). None: ``a_over_h`` as given.
+    rtol_on : tuple of str
+        The quantities whose estimate ``rtol`` bounds (``--rtol-on``, ``[fe] rtol_on``): stems of
+        the ``err_est_*`` columns in :data:`RTOL_ON`; default ``("p0",)``.
 
     Raises
     ------
@@ -61,6 +65,7 @@ class SweepOptions:
     chunk_size: int = 30
     vtk_every: int = 0
     rtol: float | None = None
+    rtol_on: tuple = ("p0",)
 
     def __post_init__(self):
         _validate.choice("method", self.method, METHODS)
@@ -74,6 +79,7 @@ class SweepOptions:
         if self.rtol is not None:
             object.__setattr__(self, "rtol", _validate.in_range("rtol", self.rtol, *RTOL_RANGE,
                                                                 "(relative p0 error)"))
+        object.__setattr__(self, "rtol_on", rtol_quantities(self.rtol_on))
 
     def for_family(self, a_over_h) -> SweepOptions:
         """These options with one model family's own ``a_over_h`` (``rtol`` chooses it per
@@ -106,7 +112,44 @@ class SweepOptions:
                "chunk_size": self.chunk_size, "vtk_every": self.vtk_every}
         if self.rtol is not None:
             out["rtol"] = self.rtol
+        if self.rtol_on != ("p0",):
+            out["rtol_on"] = list(self.rtol_on)
         return out
+
+
+def rtol_quantities(value, name: str = "rtol_on") -> tuple:
+    """The quantities an ``rtol`` controls, checked: a list (or a comma-separated string) of
+    names of :data:`RTOL_ON`, without repeats.
+
+    Parameters
+    ----------
+    value : str or sequence of str
+        ``"p0,vm"`` or ``["p0", "vm"]``.
+    name : str
+        The key or flag in messages (``rtol_on``, ``--rtol-on``, ``[fe] rtol_on``).
+
+    Returns
+    -------
+    tuple of str
+        The names in the given order.
+
+    Raises
+    ------
+    InputError
+        An empty list or a name outside :data:`RTOL_ON`, naming the key, the value and the
+        accepted names.
+
+    >>> rtol_quantities("p0, tau1")
+    ('p0', 'tau1')
+    """
+    items = value.split(",") if isinstance(value, str) else list(value)
+    names = tuple(dict.fromkeys(str(q).strip() for q in items if str(q).strip()))
+    bad = [q for q in names if q not in RTOL_ON]
+    if bad or not names:
+        raise InputError(f"{name} = {value!r} (quantities): "
+                         + (f"unknown {', '.join(map(repr, bad))}; " if bad else "empty; ")
+                         + f"accepted: {', '.join(RTOL_ON)} (the stems of the err_est_*_pct columns)")
+    return names
 
 
 @dataclass(frozen=True)

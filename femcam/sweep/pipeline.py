@@ -384,7 +384,7 @@ def _fe_angle(task: ChunkTask, cp: ContactParams, rows, flags, i: int,
     rows["family"][i] = fid
     fill_row_estimate(rows, i, task.estimates.get(fid), float(rows["a_hertz"][i]), model.a_ref,
                       opts.a_over_h)
-    if task.options.rtol is not None and rows["err_est_p0"][i] > task.options.rtol:
+    if task.options.rtol is not None and _rtol_missed(rows, i, task.estimates.get(fid), task.options):
         flags[i].append("rtol_not_met")
     if r.outside_hertz and "hertz_large_a" not in flags[i]:
         flags[i].append("hertz_large_a")
@@ -424,3 +424,16 @@ def _vtu_wear(task: ChunkTask, rows, i) -> dict | None:
     return {"k": float(task.wear_k), "v_slip": float(rows["v_slip"][i]),
             "V_cam": float(rows["V_cam"][i]), "wear_depth_per_rev": float(rows["wear_depth"][i]),
             "theta_deg": float(np.degrees(rows["theta"][i])), "Fc": float(rows["Fc"][i])}
+
+
+def _rtol_missed(rows, i: int, est, options) -> bool:
+    """Row ``i``'s estimate of a quantity ``rtol`` controls (``options.rtol_on``) is above
+    ``rtol``: the table's ``err_est_<q>``, or for the interface stresses (a provider's columns,
+    filled later) the family estimate carried to the row."""
+    for q in options.rtol_on:
+        col = rows.get(f"err_est_{q}")
+        e = col[i] if col is not None else (est.carried(q, float(rows["a_over_h_row"][i]))
+                                             if est is not None else np.nan)
+        if e > options.rtol:
+            return True
+    return False

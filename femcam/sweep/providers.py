@@ -151,8 +151,16 @@ HALFSPACE = tuple(Column(f"hs_{c.si}", c.csv, c.factor, c.description)
 #: key of the ring model's refusal in a chunk's rows (popped by :func:`ring_chunk`, which raises it)
 RING_ERROR = "__ring_error__"
 RING_HEADLINE_KEYS = ("theta", "p0", "a", "p0_peak", "p0_solid", "a_solid", "dp0", "da")
+#: two-level estimates of the ring's own stresses (:func:`femcam.sweep.ringhead.ring_level_estimate`;
+#: relative, the CSV in percent of the row's value)
+RING_ESTIMATES = (Column("err_est_bore_hoop", "err_est_bore_hoop_pct", 100.0,
+                         "estimated discretisation error of bore_hoop_max_MPa"),
+                  Column("err_est_pin_p0", "err_est_pin_p0_pct", 100.0,
+                         "estimated discretisation error of pin_p0_MPa"),
+                  Column("err_est_needle_Q", "err_est_needle_Q_pct", 100.0,
+                         "estimated discretisation error of needle_Qmax_on_N"))
 RING = tuple(Column(f"ring_{c.si}", c.csv, c.factor, c.description) for c in RING_COLUMNS.values()
-             if c.si not in RING_HEADLINE_KEYS)
+             if c.si not in RING_HEADLINE_KEYS) + RING_ESTIMATES
 CAM_DISK = tuple(Column(f"camdisk_{c.si}", c.csv, c.factor, c.description) for c in CAM_CSV_COLUMNS.values())
 #: internal names are SI (``layer_interface_tau_max`` in Pa, ``layer_case_z_at_max`` in m); the
 #: CSV name carries the unit
@@ -165,6 +173,12 @@ LAYERS = (Column("layer_interface_tau_max", "interface_tau_max_MPa", 1e-6),
           Column("layer_case_utilisation_max", "case_utilisation_max", 1.0),
           Column("layer_case_z_at_max", "case_z_at_max_mm", 1e3),
           Column("layer_case_margin", "case_margin", 1.0))
+#: two-level error estimates of the interface stresses of a coated FE row (relative; the CSV in
+#: percent of the row's own value; :data:`femcam.sweep.estimate.LAYER_QUANTITIES`)
+LAYER_ESTIMATES = (Column("err_est_interface_tau", "err_est_interface_tau_pct", 100.0,
+                          "estimated discretisation error of interface_tau_max_MPa"),
+                   Column("err_est_interface_sn", "err_est_interface_sn_pct", 100.0,
+                          "estimated discretisation error of interface_sn_min_MPa"))
 
 
 def axial_contact(rows) -> tuple[np.ndarray, np.ndarray]:
@@ -494,10 +508,11 @@ def layers_chunk(task, rows, solved) -> dict:
     -------
     dict[str, ndarray]
         ``layer_*`` columns under their SI names, SI values (:data:`LAYERS`; the CSV names
-        carry the unit), and the text column ``layer_source``.
+        carry the unit), the estimates :data:`LAYER_ESTIMATES` (relative; NaN on a
+        ``layer_model`` row) and the text column ``layer_source``.
     """
     n = task.theta.size
-    out = {c.si: np.full(n, np.nan) for c in LAYERS}
+    out = {c.si: np.full(n, np.nan) for c in LAYERS + LAYER_ESTIMATES}
     out["layer_source"] = np.full(n, "", dtype=object)
     status = np.asarray(rows["status"]).astype(str)
     contact = _contact_rows(rows)
@@ -513,6 +528,7 @@ def layers_chunk(task, rows, solved) -> dict:
             for c in LAYERS:
                 out[c.si][i] = r[c.csv] / c.factor
             out["layer_source"][i] = "headline"
+            _layer_estimate(task, rows, i, out)
     idx = np.setdiff1d(np.flatnonzero(contact), np.asarray(head, int))
     if idx.size:
         r = scene_layer_rows(task.scene, task.theta[idx], a_over_h=task.options.a_over_h)
@@ -521,6 +537,20 @@ def layers_chunk(task, rows, solved) -> dict:
                 out[c.si][idx] = np.asarray(r[c.csv], float) / c.factor
         out["layer_source"][idx] = "layer_model"
     return out
+
+
+def _layer_estimate(task, rows, i: int, out: dict) -> None:
+    """Row ``i``'s interface-stress estimates (:data:`LAYER_ESTIMATES`): its family's two-level
+    estimate carried to the row's own ``a_over_h_row`` (``e_ref (n_ref / n_row)^p``, as
+    :func:`femcam.sweep.estimate.row_estimate`); NaN without a family estimate."""
+    fam = rows["family"][i]
+    est = task.estimates.get(int(fam)) if np.isfinite(fam) else None
+    n_row = float(rows["a_over_h_row"][i])
+    if est is None or not n_row > 0:
+        return
+    for c in LAYER_ESTIMATES:
+        q = c.si.removeprefix("err_est_")
+        out[c.si][i] = est.carried(q, n_row)
 
 
 def coated_cam(scene) -> bool:

@@ -33,37 +33,39 @@ solid answer (the exact gap at a curvature jump, the partial-slip traction; the 
 frictionless on the osculating arc) stay in the scaled stresses; ``p0_fe`` is the ring
 model's own peak.
 
-Error estimates (``err_est_*``, :mod:`femcam.sweep.estimate`) on a ring row: the ring model's
-cam contact is meshed by the same contact-zone generator as the solid families (its fine zone
-``a_ref / 20``, the default :class:`~femcam.mesh.MeshOptions` of
-:func:`femcam.bodies.rows.build_for`, graded for the largest force), and the relative
-discretisation error of a contact depends on its elements per half-width (2D elasticity is scale
-invariant), so the row's solid family's two-level estimate is carried to the ring mesh's
-resolution ``n = 20 a_ring / a_ref_ring`` (``a_over_h_row``):
-``err_est_p0, err_est_a = e_ref (n_ref / n)^p`` (no reuse error: the ring model is solved at the
-row's own load). The scaled stresses carry three errors, ``err_est_vm = e_vm,solid + e_p0,ring
-+ e_p0,solid`` (likewise tau1). A ``hertz+ring`` row has no solid family, so no estimate (NaN).
-The estimate leaves out what the ring's global compliance adds to the contact's discretisation
-(bending of a thin wall is resolved by the ring mesh, :class:`~femcam.bodies.RingMeshOptions`,
-not by ``a/h``); checked on the thick ring on a tight pin against Hertz
+Error estimates (``err_est_*``, docs/estimate.md) on a ring row: ``p0_fe`` and ``a_fe`` are the
+ring model's, so the ring model's **own** two-level estimate answers them
+(:func:`ring_level_estimate`: one second ring model per process, its cam-contact zone coarse,
+``H = 2 h``, and its ring and pin fine, twice the bore vertices), carried to the row's resolution
+``n = 20 a_ring / a_ref_ring`` (``a_over_h_row``): ``e = e_ref (20 / n)^p`` (no reuse error: the
+ring model is solved at the row's own load). The scaled stresses carry three errors,
+``err_est_vm = e_vm,solid + e_p0,ring + e_p0,solid`` (likewise tau1; NaN on a ``hertz+ring`` row,
+whose stresses are Hertz's shape factors). The ring's own stresses get ``err_est_bore_hoop``,
+``err_est_pin_p0``, ``err_est_needle_Q`` from the refined ring (:func:`ring_side_estimates`).
+Checked on the thick ring on a tight pin against Hertz and against a ring of 512 bore vertices
 (``tests/test_sweep_ring.py``).
 
-Cost: no model beyond today's: the ring model was already built and solved for its bore and
-needle columns; those solves are now read by the headline as well (the solid-roller families
-still answer the stresses). With ``--method auto`` the rows Hertz answers need no FE model at
-all, so a ring scene then costs the ring model alone.
+Cost: the ring model was already built and solved for its bore and needle columns; those solves
+are now read by the headline as well (the solid-roller families still answer the stresses); the
+estimate adds one second ring model per process (+1.3 s CPU on a 36-angle needle sweep,
+docs/estimate.md). With ``--method auto`` the rows Hertz answers need no FE model at all, so a
+ring scene then costs the ring models alone.
 """
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
+from ..bodies import RingMeshOptions, RingModel, solve_ring
 from ..bodies.rows import CSV_COLUMNS as RING_COLUMNS
 from ..bodies.rows import ring_rows
 from ..errors import FemcamError
+from ..materials import effective_modulus
 from ..mesh import MeshOptions
-from .estimate import QUANTITIES, RATES, FamilyEstimate
-from .providers import RING_ERROR, RING_HEADLINE_KEYS, has_support, ring_model
+from .estimate import QUANTITIES, RATES, FamilyEstimate, coarse_mesh
+from .providers import RING_ERROR, RING_ESTIMATES, RING_HEADLINE_KEYS, _cached, has_support, ring_model
 
 #: elements per reference half-width of the ring model's contact mesh (``ring_model`` builds
 #: with the default MeshOptions, :func:`femcam.bodies.rows.build_for`)
@@ -76,6 +78,75 @@ SCALED_BY_A = ("vm_depth", "tau1_depth", "txz_range_depth", "stick_width")
 #: the ring's side columns (bore, pin, needles); the contact keys answer the headline
 #: (:data:`femcam.sweep.providers.RING_HEADLINE_KEYS`)
 SIDE_KEYS = tuple(k for k in RING_COLUMNS if k not in RING_HEADLINE_KEYS)
+
+
+#: the ring model's quantities of the two-level estimate (:func:`ring_level_estimate`) and the
+#: rates used: the contact's as the solid families' (:data:`femcam.sweep.estimate.RATES`); the
+#: ring's own (bore hoop stress, pin contact peak, needle load) 1, below the measured rates of
+#: these quantities under bore refinement (hoop under a needle 0.8, a concentrated load on the
+#: bore; docs/estimate.md), so the estimate stays on the safe side
+RING_RATES = {"p0": RATES["p0"], "a": RATES["a"], "bore_hoop": 1.0, "pin_p0": 1.0, "needle_Q": 1.0}
+#: the ring's own quantities (estimated on a refined bore, :func:`ring_level_estimate`)
+RING_SIDE = ("bore_hoop", "pin_p0", "needle_Q")
+
+
+def _ring_quantities(model: RingModel, F: float) -> dict:
+    """The ring model's estimated quantities at force ``F`` (N) on its reference curvature, the
+    load line on a needle (cage 0)."""
+    r = solve_ring(model, F=F, rho=model.rho_ref, cage=0.0)
+    return {"p0": float(np.max(r.p)), "a": r.a, "bore_hoop": r.hoop_max, "pin_p0": r.pin_p0,
+            "needle_Q": float(np.max(r.needle_Q)) if np.size(r.needle_Q) else math.nan}
+
+
+def ring_level_estimate(model: RingModel, mesh: MeshOptions | None = None,
+                        ring_mesh: RingMeshOptions | None = None) -> dict:
+    r"""The two-level estimate of the ring model that answers a ring row, from one second model
+    solved at the model's reference load (the force whose Hertz half-width is ``a_ref`` at
+    ``rho_ref``): its cam contact zone **coarse** (:func:`femcam.sweep.estimate.coarse_mesh`,
+    ``H = 2 h``: the contact's estimate as on the solid families) and its ring and pin **fine**
+    (twice the bore vertices, half the largest element: a thin wall admits no coarser bore, the
+    spacing must stay within half the wall). The two meshes hardly interact (measured: the bore
+    hoop stress moves by 0.02 % from contact a/h 6 to 10, the ring's p0 by 2e-8 from 128 to 256
+    bore vertices), so each quantity takes the level that changed its own mesh:
+
+    .. math:: e_{contact} = rac{|q_h - q_H|}{|q_h| (2^p - 1)}, \qquad
+              e_{ring} = rac{|q_h - q_{h/2}|\, 2^p}{|q_h| (2^p - 1)}
+
+    Parameters
+    ----------
+    model : RingModel
+        The ring model (built with ``mesh`` and ``ring_mesh``).
+    mesh, ring_mesh : MeshOptions, RingMeshOptions, optional
+        Its meshes (default: the defaults :func:`femcam.bodies.rows.build_for` builds with).
+
+    Returns
+    -------
+    dict[str, float]
+        Relative errors [-] at the reference load: ``p0``, ``a`` (cam contact), ``bore_hoop``,
+        ``pin_p0`` (pin support) and ``needle_Q`` (needles); NaN where a quantity does not apply
+        or the second model is refused; and ``a_over_h``, the model's elements per ``a_ref``.
+    """
+    mesh, ring_mesh = mesh or MeshOptions(), ring_mesh or RingMeshOptions()
+    out = dict.fromkeys(RING_RATES, math.nan)
+    out["a_over_h"] = float(mesh.a_over_h)
+    b = model.bearing
+    inv_R = 1.0 / b.Ro + (0.0 if math.isinf(model.rho_ref) else 1.0 / model.rho_ref)
+    E_star = effective_modulus(model.cam, b.ring, model.plane)
+    F = math.pi * E_star * model.a_ref**2 * model.length * inv_R / 4
+    fine_ring = RingMeshOptions(n_bore=2 * ring_mesh.n_bore, growth=ring_mesh.growth,
+                                h_max_over_wall=max(0.02, ring_mesh.h_max_over_wall / 2))
+    try:
+        other = RingModel.build(bearing=b, cam=model.cam, rho_ref=model.rho_ref, a_ref=model.a_ref,
+                                length=model.length, mesh=coarse_mesh(mesh.a_over_h, mesh.fine_half_width),
+                                ring_mesh=fine_ring, plane=model.plane)
+        qh, q2 = _ring_quantities(model, F), _ring_quantities(other, F)
+    except (FemcamError, ValueError, ArithmeticError):
+        return out
+    for q, p in RING_RATES.items():
+        if qh[q] != 0 and math.isfinite(qh[q]):
+            d = abs(qh[q] - q2[q]) / abs(qh[q]) / (2.0**p - 1.0)
+            out[q] = d * 2.0**p if q in RING_SIDE else d
+    return out
 
 
 def contact_rows(rows) -> np.ndarray:
@@ -96,9 +167,11 @@ def contact_rows(rows) -> np.ndarray:
     return (status == "ok") | (status == "failed")
 
 
-def ring_estimate(rows, i: int, est: FamilyEstimate | None, n_ring: float) -> None:
-    """Row ``i``'s error estimates once the ring model answers it (module docstring): the solid
-    family's estimate carried to the ring mesh's ``n_ring`` elements per half-width.
+def ring_estimate(rows, i: int, est: FamilyEstimate | None, n_ring: float,
+                  ring_est: dict | None = None) -> None:
+    """Row ``i``'s error estimates once the ring model answers it (module docstring): the ring
+    model's own two-level estimate (:func:`ring_level_estimate`) carried to the row's ``n_ring``
+    elements per half-width for ``p0`` and ``a``; the scaled stresses add the solid row's.
 
     Parameters
     ----------
@@ -107,20 +180,50 @@ def ring_estimate(rows, i: int, est: FamilyEstimate | None, n_ring: float) -> No
     i : int
         Row index.
     est : FamilyEstimate or None
-        The solid row's family estimate (None: a Hertz row, the estimates become NaN).
+        The solid row's family estimate (None: a Hertz row, the stress estimates become NaN).
     n_ring : float
         Elements per the row's half-width on the ring model's contact mesh [-].
+    ring_est : dict, optional
+        The ring model's estimate (:func:`ring_level_estimate`); None: the solid family's
+        estimate carried to ``n_ring`` (the rule before the ring's own estimate).
     """
     rows["a_over_h_row"][i] = n_ring
+    if ring_est is not None:
+        e = {q: ring_est[q] * (ring_est["a_over_h"] / n_ring) ** RING_RATES[q] for q in ("p0", "a")}
+    elif est is not None:
+        e = {q: est.err[q] * (est.a_over_h / n_ring) ** RATES[q] for q in ("p0", "a")}
+    else:
+        e = {"p0": np.nan, "a": np.nan}
     if est is None:
         for q in QUANTITIES:
             rows[f"err_est_{q}"][i] = np.nan
-        return
-    e = {q: est.err[q] * (est.a_over_h / n_ring) ** RATES[q] for q in QUANTITIES}
     p0_solid = rows["err_est_p0"][i]
     for q in ("vm", "tau1"):   # the solid stress x p0_ring / p0_solid
         rows[f"err_est_{q}"][i] = rows[f"err_est_{q}"][i] + e["p0"] + p0_solid
     rows["err_est_p0"][i], rows["err_est_a"][i] = e["p0"], e["a"]
+
+
+def ring_side_estimates(rows, ring_est: dict) -> None:
+    """The ring's own stress estimates (:data:`femcam.sweep.providers.RING_ESTIMATES`) on every
+    row with a finite ring value: the reference load's relative error, unchanged from row to row
+    (the ring and bore mesh do not follow the load, and the bore hoop stress and the needle loads
+    are close to linear in it).
+
+    Parameters
+    ----------
+    rows : dict[str, ndarray]
+        The chunk's table with the ``ring_*`` side columns (SI); modified in place.
+    ring_est : dict
+        :func:`ring_level_estimate`.
+    """
+    for c in RING_ESTIMATES:
+        q = c.si.removeprefix("err_est_")
+        value = np.asarray(rows[_RING_VALUE[q]], float)
+        rows[c.si] = np.where(np.isfinite(value), ring_est.get(q, np.nan), np.nan)
+
+
+#: estimated ring quantity -> the side column it estimates
+_RING_VALUE = {"bore_hoop": "ring_hoop_max", "pin_p0": "ring_pin_p0", "needle_Q": "ring_needle_Q_on"}
 
 
 def ring_headline(task, rows) -> np.ndarray:
@@ -155,6 +258,9 @@ def ring_headline(task, rows) -> np.ndarray:
         return done
     for k in SIDE_KEYS:
         rows[f"ring_{k}"] = np.asarray(r[k], float)
+    # the ring model's two-level estimate, once per process (as the model)
+    ring_est = _cached("ring_estimate", task.scene, lambda: ring_level_estimate(model))
+    ring_side_estimates(rows, ring_est)
     peak, fit, a = (np.asarray(r[k], float) for k in ("p0_peak", "p0", "a"))
     ok = (np.asarray(rows["status"]).astype(str) == "ok") & np.isfinite(peak)
     for i in np.flatnonzero(ok):
@@ -162,7 +268,7 @@ def ring_headline(task, rows) -> np.ndarray:
         a_s = rows["a_fe"][i] if np.isfinite(rows["a_fe"][i]) else rows["a_hertz"][i]
         k_p, k_a = peak[i] / p_s, a[i] / a_s
         fid = int(rows["family"][i]) if np.isfinite(rows["family"][i]) else -1
-        ring_estimate(rows, i, task.estimates.get(fid), RING_A_OVER_H * a[i] / model.a_ref)
+        ring_estimate(rows, i, task.estimates.get(fid), RING_A_OVER_H * a[i] / model.a_ref, ring_est)
         for name in SCALED_BY_P0:
             rows[name][i] *= k_p
         for name in SCALED_BY_A:

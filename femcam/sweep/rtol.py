@@ -33,7 +33,13 @@ its ``a_over_h`` (the model cache and the persistent cache key on it through
 ``a_over_h`` (``SweepOptions.a_over_h``, used by models outside the families: the layer and ring
 side columns) is the largest family's.
 
-Only p0 is controlled (the estimates of a, von Mises and tau1 are reported, not targeted).
+**Which quantities** (``rtol_on``, ``--rtol-on``, ``[fe] rtol_on``; default ``p0``): any of
+the ``err_est_*`` stems of :data:`femcam.sweep.options.RTOL_ON` (``p0``, ``a``, ``vm``, ``tau1``
+and, on a coated scene, ``interface_tau``, ``interface_sn``). Each family's ``a_over_h`` is the
+largest any chosen quantity needs: p0's target is ``rtol / 2`` (the reuse error takes the other
+half), the others' ``rtol`` (their row estimate holds no reuse part); the pilot interpolates
+each chosen quantity, and the refinement step checks them all. The ring model's estimates
+(:mod:`femcam.sweep.ringhead`) are reported, not controlled: the ring's mesh is not a family's.
 """
 
 from __future__ import annotations
@@ -45,7 +51,7 @@ import numpy as np
 from .. import _validate
 from ..mesh import MeshOptions
 from ..mesh.estimate import check_contact_elements
-from .estimate import RATES, FamilyEstimate, family_estimate, predict_a_over_h, row_estimate
+from .estimate import LAYER_QUANTITIES, RATES, FamilyEstimate, family_estimate, predict_a_over_h, row_estimate
 from .options import RTOL_RANGE, ContactParams, contact_params
 from .plan import hertz_half_width, plan_families
 from .verify import verify_families
@@ -83,7 +89,7 @@ def even_ceil(x: float, lo: float = MIN_A_OVER_H, hi: float = 400.0) -> float:
     return float(min(hi, max(lo, 2 * math.ceil(x / 2 - 1e-9))))
 
 
-def family_need(est: FamilyEstimate, a_rows, target: float) -> float:
+def family_need(est: FamilyEstimate, a_rows, target: float, quantity: str = "p0") -> float:
     r"""The ``a_over_h`` at which a family's p0 discretisation estimate meets ``target`` on all of
     its rows (the row with the smallest half-width has the largest estimate).
 
@@ -96,18 +102,20 @@ def family_need(est: FamilyEstimate, a_rows, target: float) -> float:
     a_rows : array_like, shape (m,)
         Hertz half-widths of the family's rows [m].
     target : float
-        Relative p0 error to reach [-].
+        Relative error to reach [-].
+    quantity : str
+        The estimated quantity (a key of :data:`femcam.sweep.estimate.RATES`).
 
     Returns
     -------
     float
         Even whole number >= 6 [-]; ``2 * PILOT_A_OVER_H`` when the estimate failed (NaN).
     """
-    target = _validate.positive("target", target, "(relative p0 error)")
+    target = _validate.positive("target", target, "(relative error)")
     a_rows = np.asarray(a_rows, dtype=float)
     a_rows = a_rows[np.isfinite(a_rows) & (a_rows > 0)]
-    scale = float(np.max(est.a_ref / a_rows)) ** RATES["p0"] if a_rows.size else 1.0
-    n = predict_a_over_h(est, target / scale)
+    scale = float(np.max(est.a_ref / a_rows)) ** RATES[quantity] if a_rows.size else 1.0
+    n = predict_a_over_h(est, target / scale, quantity) if quantity in est.err else np.nan
     return even_ceil(n if np.isfinite(n) else 2 * PILOT_A_OVER_H)
 
 
@@ -140,8 +148,8 @@ def rows_p0_estimate(F, rho, family, estimates: dict, cp: ContactParams) -> np.n
     return out
 
 
-def refine(a_over_h: float, worst: float, rtol: float) -> float:
-    """The next ``a_over_h`` when the worst row's p0 estimate ``worst`` exceeds ``rtol``.
+def refine(a_over_h: float, worst: float, rtol: float, quantity: str = "p0") -> float:
+    """The next ``a_over_h`` when the worst row's estimate ``worst`` of ``quantity`` exceeds ``rtol``.
 
     Parameters
     ----------
@@ -149,13 +157,15 @@ def refine(a_over_h: float, worst: float, rtol: float) -> float:
         Current elements per half-width [-].
     worst, rtol : float
         Worst row estimate and the requested bound (relative) [-].
+    quantity : str
+        The estimated quantity (its rate, :data:`femcam.sweep.estimate.RATES`).
 
     Returns
     -------
     float
         ``even_ceil(a_over_h (worst / rtol)^(1/p))`` and at least ``a_over_h + 2`` [-].
     """
-    return even_ceil(max(a_over_h + 2.0, a_over_h * (worst / rtol) ** (1.0 / RATES["p0"])))
+    return even_ceil(max(a_over_h + 2.0, a_over_h * (worst / rtol) ** (1.0 / RATES[quantity])))
 
 
 def rtol_settings(a_over_h, rtol, method: str, tolerance: float) -> tuple:
@@ -226,44 +236,55 @@ def choose_mesh(run, fit_rows, cache) -> None:
         raise _validate.fail("rtol_pct (--rtol-pct)", 100 * rtol, "%", "needs model families; a "
                              "flat-faced follower's binned real-cam models carry no estimate; give "
                              "[fe] a_over_h or --mesh-size instead")
+    on = run.opts.rtol_on
+    if cp.coat_body is None and any(q in LAYER_QUANTITIES for q in on):
+        raise _validate.fail("rtol_on (--rtol-on)", ",".join(on), "", "names an interface stress "
+                             f"({', '.join(LAYER_QUANTITIES)}) but the scene has no coating "
+                             "([materials.<body>.coating]); choose from p0, a, vm, tau1")
     F, rho = run.rows0["Fc"], run.rows0["rho"]
     fit = fit_rows(run)
     fam0, refs = plan_families(F, rho, cp, run.opts.tolerance, fit)
     pilots, groups, tried = [], [], []
-    for f, est in _pilot_estimates(cp, refs, run.opts, cache).items():
+    for f, est in _pilot_estimates(cp, refs, run.opts, cache, on).items():
         rows = fit & (fam0 == f)
-        n = family_need(est, hertz_half_width(F[rows], rho[rows], cp), rtol / 2.0)
+        a_rows = hertz_half_width(F[rows], rho[rows], cp)
+        n = max(family_need(est, a_rows, rtol / 2.0 if q == "p0" else rtol, q) for q in on)
         pilots.append({"rho_ref": refs[f][0], "a_ref": refs[f][1], "n_angles": int(rows.sum()),
-                       "err_p0": est.err["p0"], "solved": bool(est.a_over_h_coarse > 0), "a_over_h": n})
+                       "err_p0": est.err["p0"], "err": {q: est.err.get(q, math.nan) for q in on},
+                       "solved": bool(est.a_over_h_coarse > 0), "a_over_h": n})
         groups += _verified(run, cp, rows, n, cache)
     final = []
     for idx, rec, est in groups:
-        worst = _worst(F[idx], rho[idx], est, cp)
+        worst = _worst_on(F[idx], rho[idx], est, cp, on)
         tried.append({"rho_ref": rec.rho_ref, "a_ref": rec.a_ref, "a_over_h": rec.a_over_h,
-                      "worst_err_est_p0": worst})
-        if not worst > rtol:
+                      "worst_err_est_p0": _worst(F[idx], rho[idx], est, cp), "worst": worst})
+        over = {q: w for q, w in worst.items() if w > rtol}
+        if not over:
             final.append((idx, rec, est))
             continue
         mask = np.zeros(fit.shape, bool)
         mask[idx] = True
-        for g in _verified(run, cp, mask, refine(rec.a_over_h, worst, rtol), cache):
+        n_next = max(refine(rec.a_over_h, w, rtol, q) for q, w in over.items())
+        for g in _verified(run, cp, mask, n_next, cache):
             tried.append({"rho_ref": g[1].rho_ref, "a_ref": g[1].a_ref, "a_over_h": g[1].a_over_h,
-                          "worst_err_est_p0": _worst(F[g[0]], rho[g[0]], g[2], cp)})
+                          "worst_err_est_p0": _worst(F[g[0]], rho[g[0]], g[2], cp),
+                          "worst": _worst_on(F[g[0]], rho[g[0]], g[2], cp, on)})
             final.append(g)
     _number(run, final)
     n_all = [rec.a_over_h for rec in run.records]
     run.opts = run.opts.for_family(max(n_all) if n_all else PILOT_A_OVER_H)
     run.preplanned = True
-    run.rtol_info = {"rtol": rtol, "a_over_h": run.opts.a_over_h, "tolerance": run.opts.tolerance,
+    run.rtol_info = {"rtol": rtol, "rtol_on": list(on), "a_over_h": run.opts.a_over_h,
+                     "tolerance": run.opts.tolerance,
                      "per_family": True, "family_a_over_h": n_all, "pilots": pilots, "levels": tried}
 
 
-def _pilot_estimates(cp: ContactParams, refs: dict, options, cache) -> dict:
-    """The pilot p0 estimate at ``a/h = 8`` of every planned family: solved on the families with
-    the smallest and the largest ``Rr / rho`` (two fine and two coarse builds, whatever the
-    number of families), interpolated linearly in ``Rr / rho`` between them for the others
-    (marked ``a_over_h_coarse = 0``); the per-family refinement catches an interpolation that
-    falls short."""
+def _pilot_estimates(cp: ContactParams, refs: dict, options, cache, on=("p0",)) -> dict:
+    """The pilot estimate (p0 and the quantities ``on``) at ``a/h = 8`` of every planned family:
+    solved on the families with the smallest and the largest ``Rr / rho`` (two fine and two
+    coarse builds, whatever the number of families), interpolated linearly in ``Rr / rho``
+    between them for the others (marked ``a_over_h_coarse = 0``); the per-family refinement
+    catches an interpolation that falls short."""
     kap = {f: (0.0 if math.isinf(r[0]) else cp.Rr / r[0]) for f, r in refs.items()}
     if not kap:
         return {}
@@ -271,15 +292,15 @@ def _pilot_estimates(cp: ContactParams, refs: dict, options, cache) -> dict:
     pilot_opts = options.for_family(PILOT_A_OVER_H)
     solved = {f: family_estimate(cp, *refs[f], pilot_opts, cache) for f in picks}
     k = [kap[f] for f in picks]
-    e = [solved[f].err["p0"] for f in picks]
+    keys = dict.fromkeys(("p0", "a", "vm", "tau1", *on))
     out = {}
     for f in refs:
         if f in solved:
             out[f] = solved[f]
             continue
-        e_f = float(np.interp(kap[f], k, e))
-        out[f] = FamilyEstimate(refs[f][1], PILOT_A_OVER_H, 0.0, {"p0": e_f, "a": math.nan,
-                                                                   "vm": math.nan, "tau1": math.nan})
+        err = {q: (float(np.interp(kap[f], k, [solved[g].err.get(q, math.nan) for g in picks]))
+                   if q == "p0" or q in on else math.nan) for q in keys}
+        out[f] = FamilyEstimate(refs[f][1], PILOT_A_OVER_H, 0.0, err)
     return out
 
 
@@ -302,6 +323,21 @@ def _worst(F, rho, est: FamilyEstimate, cp: ContactParams) -> float:
     """The largest row p0 estimate of a family (NaN when none is finite)."""
     e = rows_p0_estimate(F, rho, np.zeros(np.shape(F), int), {0: est}, cp)
     return float(np.nanmax(e)) if np.any(np.isfinite(e)) else math.nan
+
+
+def _worst_on(F, rho, est: FamilyEstimate, cp: ContactParams, on) -> dict:
+    """The largest row estimate of each quantity ``on`` over a family's rows: p0 with the reuse
+    error (:func:`_worst`), the others carried to the smallest row half-width."""
+    a = hertz_half_width(np.asarray(F), np.asarray(rho), cp)
+    a = a[np.isfinite(a) & (a > 0)]
+    out = {}
+    for q in on:
+        if q == "p0":
+            out[q] = _worst(F, rho, est, cp)
+        else:
+            e = est.err.get(q, math.nan)
+            out[q] = float(e * np.max(est.a_ref / a) ** RATES[q]) if a.size else math.nan
+    return out
 
 
 def _number(run, groups: list) -> None:

@@ -65,7 +65,7 @@ def parse_angles_deg(spec: str) -> np.ndarray:
 
 
 def sweep(scene, *, angles=None, method: str | None = None, a_over_h=None, tolerance=None,
-          rtol=None, chunk_size: int | None = None, out=None, resume: bool = False,
+          rtol=None, rtol_on=None, chunk_size: int | None = None, out=None, resume: bool = False,
           workers: int | str = "auto", scheduler=None, client=None, vtk_every: int | None = None,
           progress: bool | None = None, plots: bool | None = None, command: str | None = None,
           scene_path=None, chunk_delay_s: float = 0.0, overwrite: bool = False,
@@ -101,6 +101,10 @@ def sweep(scene, *, angles=None, method: str | None = None, a_over_h=None, toler
         ``a_over_h`` and ``tolerance <= rtol / 2`` (:mod:`femcam.sweep.rtol`); default the
         scene's ``[fe] rtol_pct`` / 100 (dropped when ``a_over_h`` is given or the method is
         ``"hertz"``), else none.
+    rtol_on : str or sequence of str, optional
+        The quantities ``rtol`` bounds: stems of the ``err_est_*`` columns
+        (:data:`femcam.sweep.options.RTOL_ON`, e.g. ``("p0", "tau1")`` or ``"p0,tau1"``); every
+        family's mesh meets all of them; default the scene's ``[fe] rtol_on``, else ``("p0",)``.
     chunk_size : int, optional
         Angles per chunk (unit of parallel work and of the on-disk store); default the scene's
         ``[sweep] chunk_size``, else 30.
@@ -154,7 +158,7 @@ def sweep(scene, *, angles=None, method: str | None = None, a_over_h=None, toler
     """
     t_start = time.perf_counter()
     given = dict(angles=angles, method=method, a_over_h=a_over_h, tolerance=tolerance, rtol=rtol,
-                 chunk_size=chunk_size, vtk_every=vtk_every, plots=plots)
+                 rtol_on=rtol_on, chunk_size=chunk_size, vtk_every=vtk_every, plots=plots)
     run = _prepare(scene, given, out, resume, workers, scene_path, chunk_delay_s)
     run.overwrite = bool(overwrite)
     run.animate = bool(animate)
@@ -253,7 +257,7 @@ def _prepare(scene, given, out, resume, workers, scene_path, chunk_delay_s) -> S
     workers = _validate.workers("workers", workers)
     opts = SweepOptions(method=st.method, **({} if a_over_h is None else {"a_over_h": a_over_h}),
                         tolerance=tolerance, chunk_size=st.chunk_size,
-                        vtk_every=st.vtk_every if out is not None else 0, rtol=rtol)
+                        vtk_every=st.vtk_every if out is not None else 0, rtol=rtol, rtol_on=st.rtol_on)
     if opts.method != "hertz":  # refused before any work: a mesh too large for time and memory
         check_contact_elements(MeshOptions(a_over_h=opts.a_over_h))
     if resume and out is None:

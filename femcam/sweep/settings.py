@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import _validate
+from .options import rtol_quantities
 from .rtol import rtol_settings
 
 __all__ = ["SETTINGS", "SweepSettings", "resolve_settings"]
@@ -30,7 +31,8 @@ __all__ = ["SETTINGS", "SweepSettings", "resolve_settings"]
 SETTINGS = {"angles": ("sweep", "angles_deg", "0:360:1"), "a_over_h": ("fe", "a_over_h", 10.0),
             "tolerance": ("fe", "tolerance", 2e-3), "chunk_size": ("sweep", "chunk_size", 30),
             "vtk_every": ("sweep", "vtk_every", 10), "method": ("sweep", "method", "fe"),
-            "plots": ("sweep", "plots", True), "rtol": ("fe", "rtol_pct", None)}
+            "plots": ("sweep", "plots", True), "rtol": ("fe", "rtol_pct", None),
+            "rtol_on": ("fe", "rtol_on", ("p0",))}
 
 #: the unit of each parameter in messages
 _UNITS = {"a_over_h": "(elements per contact half-width)", "rtol": "(relative p0 error)"}
@@ -59,6 +61,8 @@ class SweepSettings:
         Angles per chunk; a ``.vtu`` every k angles (with an output directory).
     plots : bool
         Write the PNG plots (with an output directory).
+    rtol_on : tuple of str
+        The quantities ``rtol`` bounds (:data:`femcam.sweep.options.RTOL_ON`).
     sources : dict
         Parameter -> ``"argument"`` (a keyword or flag), ``"scene"`` or ``"default"``.
     from_scene : tuple of str
@@ -74,6 +78,7 @@ class SweepSettings:
     chunk_size: int
     vtk_every: int
     plots: bool
+    rtol_on: tuple = ("p0",)
     sources: dict = field(default_factory=dict)
     from_scene: tuple = ()
 
@@ -89,7 +94,8 @@ class SweepSettings:
         values = {"angles_deg": self.angles_deg if self.angles_deg is not None
                   else f"{self.angles.size} angles given", "method": self.method,
                   "a_over_h": self.a_over_h, "tolerance": self.tolerance, "rtol": self.rtol,
-                  "chunk_size": self.chunk_size, "vtk_every": self.vtk_every, "plots": self.plots}
+                  "chunk_size": self.chunk_size, "vtk_every": self.vtk_every, "plots": self.plots,
+                  "rtol_on": list(self.rtol_on)}
         return {"values": values, "sources": dict(self.sources)}
 
 
@@ -163,7 +169,9 @@ def resolve_settings(scene, given: Mapping, names: Mapping | None = None) -> Swe
     a_over_h = values["a_over_h"] if sources["a_over_h"] != "default" or values["rtol"] is None else None
     tolerance = values["tolerance"] if sources["tolerance"] != "default" else None
     a_over_h, tolerance, rtol = rtol_settings(a_over_h, values["rtol"], values["method"], tolerance)
-    return SweepSettings(angles=angles, angles_deg=spec, method=values["method"],
+    rtol_on = rtol_quantities(values["rtol_on"], {"argument": name("rtol_on")[0],
+                                                  "scene": "[fe] rtol_on"}.get(sources["rtol_on"], "rtol_on"))
+    return SweepSettings(rtol_on=rtol_on, angles=angles, angles_deg=spec, method=values["method"],
                          a_over_h=a_over_h, tolerance=tolerance,
                          rtol=rtol, chunk_size=values["chunk_size"], vtk_every=values["vtk_every"],
                          plots=bool(values["plots"]), sources=sources, from_scene=tuple(used))

@@ -55,9 +55,11 @@ Error estimates (:mod:`femcam.sweep.estimate`): ``err_est_p0_pct``, ``err_est_a_
 discretisation error of ``p0_fe``, ``a_fe``, ``vm_max``, ``tau1_max`` of an FE row (two-level
 estimate on its family's model, carried to the row's ``a_over_h_row``; p0 includes the family's
 reuse error); ``a_over_h_row``: elements per the row's Hertz half-width on the mesh that solved
-it (dimensionless). NaN on Hertz rows. Coated rows: the estimate on the coated family model;
-ring rows (``+ring``): the solid family's estimate carried to the ring model's contact mesh
-(``a_over_h_row`` is that mesh's; :mod:`femcam.sweep.ringhead`), NaN on ``hertz+ring``.
+it (dimensionless). NaN on Hertz rows. Coated rows: the estimate on the coated family model
+(the interface stresses' in the layers provider's ``err_est_interface_*_pct``); ring rows
+(``+ring``): p0 and a the ring model's own two-level estimate carried to its contact mesh
+(``a_over_h_row`` is that mesh's; the bore, pin and needle estimates in the bodies provider's
+``err_est_*_pct``; :mod:`femcam.sweep.ringhead`), the stresses NaN on ``hertz+ring``.
 
 ``flags`` is a ``;``-separated list of remarks on ``ok`` rows:
 

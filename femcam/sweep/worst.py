@@ -252,40 +252,58 @@ def refusals(table, keys: dict[str, str], column: str = "extras_error") -> list[
 #: headline columns whose FE rows carry an error estimate: column -> ``err_est_*`` column
 #: (:mod:`femcam.sweep.estimate`)
 ESTIMATED = {"p0_fe": "err_est_p0", "a_fe": "err_est_a", "vm_max": "err_est_vm", "tau1_max": "err_est_tau1"}
+#: the providers' estimated columns: column -> (``err_est_*`` column, what, worst by ``max`` or
+#: ``min``) (the interface stresses of a coating, the ring's own stresses)
+ESTIMATED_EXTRA = {
+    "layer_interface_tau_max": ("err_est_interface_tau", "interface shear (largest magnitude)", "max"),
+    "layer_interface_sn_min": ("err_est_interface_sn", "interface normal stress, most compressive", "min"),
+    "ring_hoop_max": ("err_est_bore_hoop", "bore hoop stress, largest tensile", "max"),
+    "ring_pin_p0": ("err_est_pin_p0", "pin contact peak pressure", "max"),
+    "ring_needle_Q_on": ("err_est_needle_Q", "most loaded needle", "max")}
 
 
 def estimate_rows(table, options: dict | None = None) -> list[dict]:
     """The error estimate of each headline quantity that has one: at the row of its worst value
     (the row of :func:`peak_rows`) and the largest over the ``ok`` FE rows, with the rtol asked
-    for and whether every row met it (p0 only: the quantity ``rtol`` controls).
+    for and whether every row met it (the quantities ``rtol`` controls, ``options["rtol_on"]``,
+    default p0); then the providers' estimated columns (:data:`ESTIMATED_EXTRA`).
 
     Parameters
     ----------
     table : Mapping[str, ndarray]
         The sweep table (SI columns, ``err_est_*`` relative, ``status``).
     options : dict, optional
-        ``provenance["options"]`` (its ``rtol``, relative, when the sweep chose the mesh).
+        ``provenance["options"]`` (its ``rtol``, relative, when the sweep chose the mesh, and
+        its ``rtol_choice["rtol_on"]``).
 
     Returns
     -------
     list of dict
         ``{"column", "what", "at_worst_pct", "max_pct", "n_rows", "rtol_pct", "met"}`` per
-        quantity with a finite estimate (percent; ``rtol_pct`` and ``met`` None except p0 with
-        an rtol); empty without estimates (method hertz).
+        quantity with a finite estimate (percent; ``rtol_pct`` and ``met`` None except for the
+        controlled quantities with an rtol); empty without estimates (method hertz).
     """
     if "err_est_p0" not in table:
         return []
     ok = np.asarray(table["status"]).astype(str) == "ok"
     worst = {r["column"]: r for r in peak_rows(table)}
     rtol = (options or {}).get("rtol")
+    on = ((options or {}).get("rtol_choice") or {}).get("rtol_on") or ["p0"]
+    for c, (e, what, sense) in ESTIMATED_EXTRA.items():
+        v = np.where(ok, np.asarray(table.get(c, np.full(ok.shape, np.nan)), float), np.nan)
+        if e in table and np.any(np.isfinite(v)):
+            worst[c] = {"what": what, "index": int(np.nanargmax(v) if sense == "max" else np.nanargmin(v))}
     out = []
-    for c, e in ESTIMATED.items():
+    for c, e in {**ESTIMATED, **{c: v[0] for c, v in ESTIMATED_EXTRA.items()}}.items():
+        if e not in table:
+            continue
         est = np.where(ok, np.asarray(table[e], float), np.nan)
         fin = np.isfinite(est)
         if c not in worst or not fin.any():
             continue
         at = float(est[worst[c]["index"]])
-        met = bool(np.all(est[fin] <= rtol)) if (rtol is not None and c == "p0_fe") else None
+        ctrl = rtol is not None and e.removeprefix("err_est_") in on
+        met = bool(np.all(est[fin] <= rtol)) if ctrl else None
         out.append({"column": c, "what": worst[c]["what"], "at_worst_pct": 100.0 * at,
                     "max_pct": 100.0 * float(np.max(est[fin])), "n_rows": int(fin.sum()),
                     "rtol_pct": 100.0 * rtol if met is not None else None, "met": met})
