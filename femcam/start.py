@@ -132,7 +132,7 @@ def check_scene(path) -> SceneCheck:
     rho = np.asarray(st.rho, float)
     i = int(np.nanargmin(np.abs(rho)))
     lift = None if sc.train is None and sc.dynamics is None else int(np.count_nonzero(st.liftoff))
-    return SceneCheck(name=sc.name, follower=str(sc.raw.get("follower", {}).get("type", "?")),
+    return SceneCheck(name=sc.name, follower=str(getattr(sc.follower, "kind", "?")),
                       n_segments=len(sc.program.segments), phi_max=phi, phi_max_theta=phi_theta,
                       rho_min=float(rho[i]), rho_min_theta=float(theta[i]),
                       undercut=[(float(a), float(b)) for a, b in sc.undercut_check()], liftoff=lift)

@@ -568,7 +568,25 @@ CASES: dict[str, Case] = {
                                        {"p0": NONNEG, "strength": POS, "N_ref": POS, "m": POS}),
     "femcam.tribology.wear_coefficient": Case(kw(k0=1e-15, lam=ARR * 1e3),
                                               {"k0": NONNEG, "lam": NONNEG}),   # a film ratio >= 0
+    # femcam.scene: the typed records of a scene (None: not given)
+    "femcam.scene.WearSettings": Case(kw(), {"K": opt(NONNEG), "k": opt(NONNEG), "srr": REAL + (2.5, -2.0),
+                                             "J": opt(POS), "T_drag": NONNEG, "cycles": opt(NONNEG)}),
+    "femcam.scene.Tribology": Case(kw(), {"oil_temperature_C": opt(REAL)}),
+    "femcam.scene.LubricantData": Case(kw(), {
+        "viscosity_Pa_s": opt(POS), "temperature_C": opt(REAL),
+        "viscosity_temperature_coefficient_per_K": opt(NONNEG), "kinematic_viscosity_40C": opt(POS),
+        "kinematic_viscosity_100C": opt(POS), "pressure_viscosity": opt(POS), "alpha_per_Pa": opt(POS),
+        "density_kg_per_m3": opt(POS)}),
+    "femcam.scene.SurfaceRoughness": Case(kw(), {k: opt(NONNEG) for k in ("cam_Ra", "roller_Ra", "cam_Rq",
+                                                                           "roller_Rq")}),
+    "femcam.scene.MaterialData": Case(kw(), {
+        "yield_strength": opt(POS), "thermal_conductivity_W_per_m_K": opt(POS), "density_kg_per_m3": opt(POS),
+        "specific_heat_J_per_kg_K": opt(POS), "contact_fatigue_strength": opt(POS),
+        "contact_fatigue_cycles": opt(POS), "contact_fatigue_exponent": opt(POS),
+        "shear_fatigue_limit": opt(POS), "scuffing_temperature_C": opt(REAL)}),
     # femcam.wear
+    "femcam.wear.wear_coefficient_info": Case(lazy(lambda: dict(wear=scene().wear, hardness=2e9)),
+                                              {"hardness": opt(POS)}),
     "femcam.wear.archard_volume": Case(kw(k=1e-15, L=500.0, S=1.0),
                                        {"k": NONNEG, "L": NONNEG, "S": NONNEG}),
     "femcam.wear.dimensional_coefficient": Case(kw(K=1e-8, H=2e9), {"K": NONNEG, "H": POS}),
@@ -736,8 +754,7 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.layers.result_layer_row",
         "femcam.layers.scene_layers", "femcam.mesh.gmsh_nodes", "femcam.mesh.mirror",
         "femcam.mesh.mesh_coated_body", "femcam.mesh.mesh_plain_body",
-        "femcam.sweep.run_chunk", "femcam.wear.wear_coefficient_info",
-        "femcam.wear.wear_options", "femcam.wear.format_table3", "femcam.wear.seed000_table",
+        "femcam.sweep.run_chunk", "femcam.wear.format_table3", "femcam.wear.seed000_table",
         "femcam.io.atomic_write_bytes", "femcam.io.atomic_write_text", "femcam.io.versions",
         "femcam.io.provenance", "femcam.io.csv_text", "femcam.io.write_csv",
         "femcam.io.read_csv", "femcam.io.write_npz", "femcam.io.write_pvd",

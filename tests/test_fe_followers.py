@@ -76,7 +76,7 @@ def test_seed003_knife_edge_fe_vs_hertz():
     radius Rb + r; rho = rho_pitch - r from the polar formula. FE p0 within 0.5 % of Hertz
     (smooth 3-4-5 law), full sliding with |Q| = mu Fc."""
     sc = load_scene(EX / "seed003_knife_edge.toml")
-    r_tip = sc.raw["follower"]["tip_radius_mm"] * 1e-3
+    r_tip = sc.origin["follower"]["tip_radius_mm"] * 1e-3
     th = np.radians([40.0, 100.0, 250.0])
     st = sc.analyse(th)
     Es = effective_modulus(sc.cam, sc.roller, sc.plane)
@@ -102,7 +102,7 @@ def test_flat_faced_fe_vs_hertz_and_edge_refusal():
     Es = effective_modulus(sc.cam, sc.roller, sc.plane)
     rc = build_real_cam(program=sc.program, follower=sc.follower, cam=sc.cam, roller=sc.roller,
                         length=sc.length, F_ref=float(st.Fc.max()), rho_ref=0.025,
-                        face_length=sc.raw["follower"]["face_length_mm"] * 1e-3, **FAST)
+                        face_length=sc.origin["follower"]["face_length_mm"] * 1e-3, **FAST)
     d = sc.program.derivatives(th)
     for k, t in enumerate(th):
         res = solve_angle(rc, t, float(st.Fc[k]), mu=sc.mu, force_exact=True)

@@ -201,7 +201,7 @@ def test_wear_of_both_bodies_is_archard_over_the_sliding_distance(load_raw):
     f, n = sc.follower, 360
     th = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
     wm, st, _ = scene_wear(sc, th, cycles=1.0)
-    k, _ = wear_coefficient_info(sc)
+    k, _ = wear_coefficient_info(sc.wear, sc.cam.hardness)
     slide = _fd_speeds(f, CamProgram([dataclasses.replace(sg, h=sg.h / f.L) for sg in sc.program.segments]),
                        th, sc.omega)[0]
     V = k * np.sum(st.Fc * np.abs(slide)) * (2 * math.pi / n) / sc.omega

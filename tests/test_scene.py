@@ -111,7 +111,7 @@ def test_seed000_scene_rise():
     np.testing.assert_allclose(st.v, 0.01 / np.pi * (1 - np.cos(2 * np.pi * u)), atol=1e-15)
     # constant load L = 500 N (preload), seen through the pressure angle
     np.testing.assert_allclose(st.Fc * np.cos(st.phi), 500.0, rtol=1e-5)
-    assert sc.cam.hardness == pytest.approx(2000e6) and sc.wear["K"] == pytest.approx(1e-8)
+    assert sc.cam.hardness == pytest.approx(2000e6) and sc.wear.K == pytest.approx(1e-8)
 
 
 def test_liftoff_weak_spring_high_speed(tmp_path):

@@ -3,6 +3,7 @@
 unit (``thickness_um`` holding metres). References are the values typed in the scene files
 times the unit factor written in the test."""
 
+import dataclasses
 import glob
 import math
 import pathlib
@@ -74,11 +75,11 @@ def test_tribology_holds_si_values_under_si_names(tmp_path):
                    "kinematic_viscosity_100C_mm2_per_s = 6.8\npressure_viscosity_per_GPa = 20.0\n"
                    "density_kg_per_m3 = 861.0")
     tri = scene.tribology
-    assert tri["lubricant"]["pressure_viscosity"] == pytest.approx(20e-9, rel=1e-12)
-    assert tri["lubricant"]["kinematic_viscosity_40C"] == pytest.approx(46e-6, rel=1e-12)
-    assert tri["surface"]["cam_Ra"] == pytest.approx(0.2e-6, rel=1e-12)
-    assert tri["materials"]["cam"]["yield_strength"] == pytest.approx(1700e6, rel=1e-12)
-    ai = assessment_inputs(scene)
+    assert tri.lubricant.pressure_viscosity == pytest.approx(20e-9, rel=1e-12)
+    assert tri.lubricant.kinematic_viscosity_40C == pytest.approx(46e-6, rel=1e-12)
+    assert tri.surface.cam_Ra == pytest.approx(0.2e-6, rel=1e-12)
+    assert tri.cam.yield_strength == pytest.approx(1700e6, rel=1e-12)
+    ai = assessment_inputs(scene.tribology)
     assert ai.lubricant.alpha == pytest.approx(20e-9, rel=1e-12)
     assert ai.lubricant.nu100 == pytest.approx(6.8e-6, rel=1e-12)
     rq = math.sqrt(math.pi / 2.0)  # Gaussian heights: Rq / Ra
@@ -89,13 +90,19 @@ def test_tribology_holds_si_values_under_si_names(tmp_path):
 
 @pytest.mark.parametrize("path", sorted(glob.glob(str(EX / "*.toml"))), ids=lambda p: pathlib.Path(p).stem)
 def test_no_edge_unit_key_holds_an_si_value(path):
-    """An edge-unit key in a dict the scene hands on holds the value as written (Scene.wear and
-    the sweep's angles_deg string are documented as written); every other value is SI-named."""
+    """An edge-unit key in a dict the scene hands on holds the value as written (the sweep's
+    angles_deg string is documented as written); every other value is SI-named, and the typed
+    records (Scene.tribology, Scene.wear) have no field named with an edge unit."""
     scene = load_scene(path)
-    for attr in ("layers", "tribology", "bodies", "finite_length", "fe", "sweep", "wear"):
-        raw_tab = scene.raw.get(attr, {})
+    for attr in ("layers", "bodies", "finite_length", "fe", "sweep"):
+        raw_tab = scene.origin.get(attr, {})
         for key, v in _edge_keys(getattr(scene, attr)):
             assert key.count(".") == 1 and raw_tab.get(key[1:]) == v, f"Scene.{attr}{key} = {v!r}"
+    tri = scene.tribology
+    for rec in (scene.wear, tri.lubricant, tri.surface, tri.cam, tri.roller, tri.pin, tri.shaft):
+        if rec is not None:
+            names = [f.name for f in dataclasses.fields(rec)]
+            assert not [n for n in names if n.endswith(EDGE)], f"{type(rec).__name__} {names}"
 
 
 def test_layer_columns_si_names_csv_names_unchanged():

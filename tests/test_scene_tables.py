@@ -19,7 +19,6 @@ from femcam.scene import load_scene
 from femcam.sweep.options import TOLERANCE_FLOOR, SweepOptions
 from femcam.sweep.settings import SETTINGS as LIBRARY_SETTINGS
 from femcam.sweep.settings import resolve_settings
-from femcam.wear.options import wear_options
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 STUDY = (EXAMPLES / "seed002_study_model.toml").read_text()
@@ -91,7 +90,8 @@ def test_valid_tables_are_kept(tmp_path):
     assert sc.fe == {"a_over_h": 20.0, "tolerance": 1e-3}
     assert sc.sweep == {"method": "hertz", "angles_deg": "-90:90:5", "chunk_size": 6, "vtk_every": 0,
                         "plots": False}
-    assert wear_options(sc) == pytest.approx({"k": 1e-18, "srr": 0.05})  # mm^3 = 1e-9 m^3, SI name
+    assert sc.wear.k == pytest.approx(1e-18) and sc.wear.srr == pytest.approx(0.05)  # mm^3 = 1e-9 m^3
+    assert sc.wear.K is None and sc.wear.J is None and sc.wear.cycles is None   # not given
 
 
 @pytest.fixture

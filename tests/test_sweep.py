@@ -27,6 +27,7 @@ from femcam.io import read_csv
 from femcam.loads import FollowerDynamics
 from femcam.mesh import MeshOptions
 from femcam.scene import Scene, load_scene
+from femcam.scene.wear import WearSettings
 from femcam.sweep import auto_workers, default_cache, parse_angles_deg, sweep
 from femcam.sweep.options import SweepOptions, contact_params
 from femcam.sweep.profile import worst_surface_profile
@@ -418,8 +419,8 @@ def test_wear_slip_uses_every_wear_key_like_the_wear_map(scene):
     inertia model's bearing drag T_drag_N_m), as femcam.wear.slip.roller_inertia gives it."""
     from femcam.wear.slip import roller_inertia
 
-    sc = dataclasses.replace(scene, wear={"roller_model": "inertia", "J_kg_m2": 5e-3,
-                                          "T_drag_N_m": 0.5})
+    sc = dataclasses.replace(scene, wear=WearSettings(roller_model="inertia", J=5e-3,
+                                                          T_drag=0.5))
     th = np.radians(np.arange(0.0, 360.0, 1.0))
     r = sweep(sc, angles=th, method="hertz")
     st = sc.analyse(th)

@@ -114,7 +114,7 @@ def test_halfspace_columns_and_axial_peak_wear(tmp_path):
         _close(cols[c.csv], direct[k], c.factor)
     assert list(cols["hs_flags"]) == [";".join(f) for f in direct["flags"]]
     # Archard per pass at the most loaded slice: h = k w_max v_slip / V_cam (independent form)
-    k = wear_coefficient_info(scene)[0]
+    k = wear_coefficient_info(scene.wear, scene.cam.hardness)[0]
     ok = cols["status"] == "ok"
     h_ref = k * direct["w_max"] * cols["v_slip_m_s"] / cols["V_cam_m_s"]
     np.testing.assert_allclose(cols["wear_depth_per_rev_nm"][ok], h_ref[ok] * 1e9, rtol=1e-8)
@@ -294,7 +294,7 @@ def test_wear_map_uses_the_coating_k_until_worn_through(tmp_path):
     from femcam.wear.scene import scene_wear
     bare = load_scene(EX + "seed002_study_model.toml")
     scene = _coated_scene(tmp_path, t=2.0, wear="wear_K = 1e-9\nhardness_MPa = 18000.0")
-    k_s = wear_coefficient_info(bare)[0]
+    k_s = wear_coefficient_info(bare.wear, bare.cam.hardness)[0]
     k_c = 1e-9 / 18000e6                      # K / H, m^3/(N m)
     th = np.radians(np.arange(0.0, 360.0, 1.0))
     ref, _, _ = scene_wear(bare, th, cycles=1.0)
@@ -317,7 +317,7 @@ def test_wear_map_coated_roller_uses_the_drift_averaged_rate(tmp_path):
     from femcam.wear.scene import scene_wear
     bare = load_scene(EX + "seed002_study_model.toml")
     scene = _coated_scene(tmp_path, body="roller", t=1.0, wear="wear_k_mm3_per_N_m = 1e-8")
-    k_s = wear_coefficient_info(bare)[0]
+    k_s = wear_coefficient_info(bare.wear, bare.cam.hardness)[0]
     th = np.radians(np.arange(0.0, 360.0, 1.0))
     N = 1e9
     ref, _, _ = scene_wear(bare, th, cycles=N)
@@ -335,7 +335,7 @@ def test_sweep_wear_column_uses_the_coating_k(tmp_path, monkeypatch):
     monkeypatch.setattr(extras, "PROVIDERS", tuple(p for p in extras.PROVIDERS if p.name == "coating_wear"))
     bare = load_scene(EX + "seed002_study_model.toml")
     scene = _coated_scene(tmp_path, t=2.0, wear="wear_k_mm3_per_N_m = 1e-8")
-    ratio = 1e-17 / wear_coefficient_info(bare)[0]
+    ratio = 1e-17 / wear_coefficient_info(bare.wear, bare.cam.hardness)[0]
     r0 = sweep(bare, angles=TH8, method="hertz", workers=1)
     r, cols = _sweep_csv(scene, TH8, tmp_path / "out")
     ok = cols["status"] == "ok"

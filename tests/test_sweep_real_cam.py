@@ -17,6 +17,7 @@ from halfspace_ref import envelope_height, halfspace_solve  # tests/ is on sys.p
 
 from femcam.errors import SceneError
 from femcam.scene import load_scene
+from femcam.scene.wear import WearSettings
 from femcam.sweep import sweep
 
 EX = Path(__file__).resolve().parents[1] / "examples"
@@ -113,14 +114,14 @@ def test_roller_traction_from_bearing_drag_partial_slip_and_sliding():
     th = np.radians([30.0, 45.0])
     F, mu, Rr = 1000.0, 0.1, 0.010
     a = 2 * math.sqrt(F / sc.length * (1 / (1 / Rr + 1 / 0.020)) / (math.pi * E_STEEL))
-    r = sweep(dataclasses.replace(sc, wear={"T_drag_N_m": 0.03}), angles=th, workers=1)
+    r = sweep(dataclasses.replace(sc, wear=WearSettings(T_drag=0.03)), angles=th, workers=1)
     Q = 0.03 / Rr
     np.testing.assert_allclose(r["Fc"], F, rtol=1e-9)  # dwell: the preload only
     np.testing.assert_allclose(r["Q"], Q, rtol=1e-6)
     np.testing.assert_allclose(r["Q_over_muFc"], Q / (mu * F), rtol=1e-6)
     assert set(r["slip_state"]) == {"partial slip"}
     np.testing.assert_allclose(r["stick_width"], 2 * a * math.sqrt(1 - Q / (mu * F)), atol=2 * a / 10)
-    s = sweep(dataclasses.replace(sc, wear={"T_drag_N_m": 2.0}), angles=th, workers=1)
+    s = sweep(dataclasses.replace(sc, wear=WearSettings(T_drag=2.0)), angles=th, workers=1)
     assert set(s["slip_state"]) == {"sliding"} and np.all(s.status == "ok")
     np.testing.assert_allclose(s["Q_over_muFc"], 1.0, rtol=1e-9)
     # [contact] sliding: the explicit override, full sliding in the fixed direction

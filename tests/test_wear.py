@@ -518,37 +518,47 @@ def test_knife_edge_wear_map_needs_tip_radius():
 
 # --------------------------------------------------------------------------- [wear] keys and k
 def test_wear_table_keys_and_k_source():
-    import dataclasses
-
     sc_mod = pytest.importorskip("femcam.scene")
-    from femcam.errors import SceneError
-    from femcam.wear.options import wear_coefficient_info, wear_options
+    from femcam.errors import InputError, SceneError
+    from femcam.scene.checker import _Checker
+    from femcam.scene.wear import WearSettings, wear_settings
+    from femcam.wear.options import wear_coefficient_info
+
+    def table(raw, hardness=None):  # the loader's check of a [wear] table, then its record
+        ck = _Checker("test.toml")
+        out = sc_mod.wear_table(ck, raw, hardness)
+        ck.raise_if_any()
+        return wear_settings(out)
 
     sc = sc_mod.load_scene(STUDY)
+    H = sc.cam.hardness
     with pytest.raises(SceneError, match=r"wear.k = 1e-17: unknown key; did you mean 'k_mm3_per_N_m' in "
                                          r"mm\^3/\(N m\)\?"):
-        wear_options(dataclasses.replace(sc, wear={"k": 1e-17}))
+        table({"k": 1e-17})
     with pytest.raises(SceneError, match=r"wear.srr = 3 \(dimensionless\): must be in \(-2, 2\)"):
-        wear_options(dataclasses.replace(sc, wear={"srr": 3}))
+        table({"srr": 3})
+    with pytest.raises(InputError, match=r"wear.srr = 3 \(dimensionless\): must be in \(-2, 2\)"):
+        WearSettings(srr=3)                                    # a record built in code
     with pytest.raises(SceneError, match=r"wear.K = 1e-08 \(dimensionless\): needs the cam hardness"):
-        wear_coefficient_info(dataclasses.replace(sc, wear={"K": 1e-8}))
+        wear_coefficient_info(WearSettings(K=1e-8), H)
     with pytest.raises(SceneError, match="not both"):
-        wear_options(dataclasses.replace(sc, wear={"K": 1e-8, "k_mm3_per_N_m": 1e-8}))
+        table({"K": 1e-8, "k_mm3_per_N_m": 1e-8}, 2e9)
+    with pytest.raises(InputError, match="not both"):
+        WearSettings(K=1e-8, k=1e-17)
     # defaults: seed 000's K = 1e-8, H = 2000 N/mm^2 -> 5e-18 m^3/(N m), and it says so
-    k, where = wear_coefficient_info(sc)
+    k, where = wear_coefficient_info(sc.wear, H)
     assert k == pytest.approx(1e-8 / 2000e6, rel=1e-15) and where.startswith("default")
-    k, where = wear_coefficient_info(dataclasses.replace(sc, wear={"k_mm3_per_N_m": 3e-9}))
+    k, where = wear_coefficient_info(table({"k_mm3_per_N_m": 3e-9}), H)
     assert k == pytest.approx(3e-18, rel=1e-15) and "scene [wear] k_mm3_per_N_m" in where
-    hard = dataclasses.replace(sc, cam=dataclasses.replace(sc.cam, hardness=6000e6), wear={"K": 3e-8})
-    k, where = wear_coefficient_info(hard)
+    k, where = wear_coefficient_info(table({"K": 3e-8}, 6000e6), 6000e6)
     assert k == pytest.approx(3e-8 / 6000e6, rel=1e-15) and "hardness_MPa = 6000" in where
-    k, where = wear_coefficient_info(dataclasses.replace(hard, wear={}))     # default K, scene H
+    k, where = wear_coefficient_info(WearSettings(), 6000e6)     # default K, scene H
     assert k == pytest.approx(1e-8 / 6000e6, rel=1e-15) and where.startswith("default K = 1e-08")
-    opts = wear_options(dataclasses.replace(sc, wear={"J_kg_m2": 2e-6, "cycles": 10}))
-    assert opts == {"J_kg_m2": pytest.approx(2e-6), "cycles": 10.0}    # SI values
+    opts = table({"J_kg_m2": 2e-6, "cycles": 10})
+    assert opts.J == pytest.approx(2e-6) and opts.cycles == 10.0    # SI values
     with pytest.raises(SceneError, match=r"wear.tip_radius_mm = 0.5 mm: retired; give the knife-edge "
                                          r"tip radius as \[follower\] tip_radius_mm"):
-        wear_options(dataclasses.replace(sc, wear={"tip_radius_mm": 0.5}))
+        table({"tip_radius_mm": 0.5})
 
 
 @pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
@@ -604,10 +614,15 @@ def test_scene_friction_zero_stays_zero_or_is_refused_by_the_inertia_model(study
 
     sc = study_scene
     assert type(sc.follower).__name__ == "RollerFollower"
-    assert slip_kwargs(dataclasses.replace(sc, mu=0.0))["mu"] == 0.0          # srr model: mu unused
-    assert slip_kwargs(dataclasses.replace(sc, mu=0.07))["mu"] == 0.07
-    inertia = {"roller_model": "inertia", "J_kg_m2": 5e-3}
-    assert slip_kwargs(dataclasses.replace(sc, mu=0.07, wear=inertia))["mu"] == 0.07
+    from femcam.scene.wear import WearSettings
+
+    def kw(s):
+        return slip_kwargs(s.wear, omega=s.omega, mu=s.mu, follower=s.follower)
+
+    assert kw(dataclasses.replace(sc, mu=0.0))["mu"] == 0.0          # srr model: mu unused
+    assert kw(dataclasses.replace(sc, mu=0.07))["mu"] == 0.07
+    inertia = WearSettings(roller_model="inertia", J=5e-3)
+    assert kw(dataclasses.replace(sc, mu=0.07, wear=inertia))["mu"] == 0.07
     with pytest.raises(InputError, match=r"contact\.friction = 0: the inertia-limited roller model "
                                          r"\(\[wear\] roller_model = 'inertia'\) needs friction > 0"):
-        slip_kwargs(dataclasses.replace(sc, mu=0.0, wear=inertia))
+        kw(dataclasses.replace(sc, mu=0.0, wear=inertia))

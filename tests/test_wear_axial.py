@@ -30,6 +30,11 @@ TH8 = np.radians(np.arange(0.0, 360.0, 45.0))
 TH36 = np.radians(np.arange(0.0, 360.0, 10.0))      # the CLI's coarsest step (10 deg)
 
 
+def _wear_of(scene):
+    """The arguments of wear_coefficient_info: the scene's [wear] record and cam hardness (Pa)."""
+    return scene.wear, scene.cam.hardness
+
+
 def _csv(path):
     lines = [ln for ln in Path(path).read_text().splitlines() if not ln.startswith("#")]
     return list(csv.DictReader(lines))
@@ -45,7 +50,7 @@ def test_crowned_wear_scales_with_the_axial_peak_load():
     r = finite_length_rows(scene, TH8)
     Fc = np.clip(st.Fc, 0.0, None)
     on = Fc > 0
-    k = wear_coefficient_info(scene)[0]
+    k = wear_coefficient_info(scene.wear, scene.cam.hardness)[0]
     np.testing.assert_allclose(ax.depth_pass[on], k * r["w_max"][on] * slip.v_slip[on] / slip.V_cam[on],
                                rtol=1e-9)
     np.testing.assert_allclose(ax.depth_pass[on] / hz.depth_pass[on], r["w_max"][on] * scene.length / Fc[on],
@@ -67,7 +72,7 @@ def test_cli_wear_map_of_a_crowned_roller_uses_the_axial_peak(tmp_path):
     rows = _csv(tmp_path / "wear_scene.csv")
     scene = load_scene(CROWNED)
     r = finite_length_rows(scene, TH36)
-    k = wear_coefficient_info(scene)[0]
+    k = wear_coefficient_info(scene.wear, scene.cam.hardness)[0]
     ref = [k * w * float(x["v_slip_m_s"]) / float(x["V_cam_m_s"]) * 1e9 for w, x in zip(r["w_max"], rows,
                                                                                         strict=True)]
     np.testing.assert_allclose([float(x["depth_pass_closed_nm"]) for x in rows], ref, rtol=1e-5)  # 6 digits
@@ -93,7 +98,7 @@ def test_cli_fe_source_sweeps_the_knife_edge_itself(tmp_path, monkeypatch):
                  "--step-deg", "10", "--cycles", "1", "--no-plots"]) == 0
     assert seen["scene"].follower.kind == "knife_edge" and seen["method"] == "fe"
     assert seen["scene"].tip_radius == pytest.approx(0.5e-3, rel=1e-12)
-    k = wear_coefficient_info(load_scene(KNIFE))[0]
+    k = wear_coefficient_info(*_wear_of(load_scene(KNIFE)))[0]
     rows = _csv(tmp_path / "wear_scene.csv")
     w = math.pi * 40e-6 * 900e6 / 2
     ref = [k * w * float(x["v_slip_m_s"]) / float(x["V_cam_m_s"]) * 1e9 if float(x["Fc_N"]) > 0 else 0.0

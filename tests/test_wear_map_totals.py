@@ -38,6 +38,11 @@ wear_k_mm3_per_N_m = {k_mm3}
 """
 
 
+def _wear_of(scene):
+    """The arguments of wear_coefficient_info: the scene's [wear] record and cam hardness (Pa)."""
+    return scene.wear, scene.cam.hardness
+
+
 def _coated(tmp_path, body, t_um, k_mm3):
     p = tmp_path / f"coated_{body}.toml"
     p.write_text(open(SCENE).read() + COAT.format(body=body, t=t_um, k_mm3=k_mm3))
@@ -90,7 +95,7 @@ def test_deepest_point_after_cycles_is_where_the_coating_wore_through():
 def test_uniform_coating_keeps_the_deepest_point(tmp_path):
     # the hard case: a uniform coating worn through at the deepest points but not elsewhere does
     # not move the deepest point (h(N) increases with d_s), and position and depth agree
-    k_s = wear_coefficient_info(load_scene(SCENE))[0]
+    k_s = wear_coefficient_info(*_wear_of(load_scene(SCENE)))[0]
     scene = _coated(tmp_path, "cam", 2.0, 5e-10)
     r = 5e-19 / k_s
     one, _, _ = scene_wear(load_scene(SCENE), TH, cycles=1.0)
@@ -109,7 +114,7 @@ def test_summary_volume_after_cycles_uses_the_coating(tmp_path, body):
     # everywhere after 1e8 (V = l S t (1 - 1/r) + N V_s, S the worn surface's length); V_s is
     # Archard's k sum F v_slip dt per revolution. rtol 1e-5: the map conserves Archard's volume to
     # its conservation_error (2.7e-6 at 2 degree steps, measured), not to round-off.
-    k_s = wear_coefficient_info(load_scene(SCENE))[0]
+    k_s = wear_coefficient_info(*_wear_of(load_scene(SCENE)))[0]
     r = 1e-17 / k_s
     scene = _coated(tmp_path, body, 1.0, 1e-8)
     for N in (1e7, 1e8):
@@ -149,7 +154,7 @@ def test_cli_wear_map_writes_the_coated_totals(tmp_path, capsys):
     # t + (N - t / d_c) d_s of its own per-revolution depth d_s (the layered law, written out).
     from femcam.cli import main
 
-    k_s = wear_coefficient_info(load_scene(SCENE))[0]
+    k_s = wear_coefficient_info(*_wear_of(load_scene(SCENE)))[0]
     r = 1e-17 / k_s
     p = tmp_path / "coated_cam.toml"
     p.write_text(open(SCENE).read() + COAT.format(body="cam", t=1.0, k_mm3=1e-8))

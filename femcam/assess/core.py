@@ -81,6 +81,11 @@ WORST = {"film (lambda)": ("lam", "min"), "contact temperature": ("T_contact", "
          "surface fatigue": ("sf_surface_fatigue", "min"), "pitting life": ("N_pitting", "min")}
 
 
+def _where(scene) -> str:
+    """The scene as an error names it: its file, else its name."""
+    return scene.source_path or scene.name
+
+
 def _geometry(scene):
     """``(scene for the kinematics, R2 in m, tip radius or None)`` per follower type."""
     if getattr(scene.follower, "draws_circle", False):  # R2 = Rr: a roller, on a slide or an arm, or a pad
@@ -119,7 +124,7 @@ def _speeds(scene, sc, st, theta, Fc, tip):
     """Surface speeds ``(V_cam, V_follower)`` at ``theta``. The inertia-limited roller model needs
     one whole revolution: for any other set of angles (a sweep chunk) it is solved on 720 angles
     and interpolated (periodic, linear)."""
-    kw = slip_kwargs(scene)
+    kw = slip_kwargs(scene.wear, omega=scene.omega, mu=scene.mu, follower=scene.follower)
     full = theta.size >= 4 and np.allclose(np.diff(theta), theta[1] - theta[0]) and \
         abs(theta[-1] - theta[0] + (theta[1] - theta[0]) - 2.0 * math.pi) < 1e-9
     if kw["roller_model"] != "inertia" or not getattr(scene.follower, "translating_roller", False) or full:
@@ -242,7 +247,8 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
     InputError
         A sharp knife-edge follower (no tip radius).
     """
-    inp = inputs or assessment_inputs(scene, lubricated=lubricated)
+    _validate.record("scene", scene, "a femcam.scene.Scene", "tribology", "analyse")
+    inp = inputs or assessment_inputs(scene.tribology, lubricated=lubricated, where=_where(scene))
     table = getattr(table, "table", table)                   # a SweepResult or its table mapping
     theta = np.atleast_1d(_validate.finite_array("theta", theta, "rad"))
     n = _validate.angle_count("theta", f"{theta.size} angles", theta.size, 3600.0, "the assessment",
@@ -258,7 +264,7 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
     flags = [("liftoff", np.asarray(st.liftoff, bool)), ("hertz_validity", ~np.asarray(valid, bool))]
     if omitted_physics(scene):
         flags.append(("omits_coating", Fc > 0))
-    k0 = wear_coefficient_info(scene)[0]
+    k0 = wear_coefficient_info(scene.wear, scene.cam.hardness)[0]
     regime = np.full(n, "dry", dtype=object)
     if inp.lubricant is not None:
         eta0 = float(inp.lubricant.viscosity(inp.T_oil))
@@ -407,7 +413,8 @@ def assess(scene, theta=None, *, table=None, lubricated: bool = True) -> Assessm
     """
     if theta is None:
         theta = np.linspace(0.0, 2.0 * math.pi, 360, endpoint=False)
-    inp = assessment_inputs(scene, lubricated=lubricated)
+    _validate.record("scene", scene, "a femcam.scene.Scene", "tribology", "analyse")
+    inp = assessment_inputs(scene.tribology, lubricated=lubricated, where=_where(scene))
     rows = assess_rows(scene, theta, table, inputs=inp)
     notes = tuple(f"{crit}: skipped, needs {', '.join(keys)}" for crit, keys in inp.skipped.items())
     fe_rows = np.asarray(rows["source"]) == "fe"
@@ -491,8 +498,8 @@ def wear_factor(scene, theta, table=None, tip_radius=None):
     theta = _validate.finite_array("theta", theta, "rad")
     tip_radius = _validate.optional(_validate.positive, "tip_radius", tip_radius, "m")
     _validate.record("scene", scene, "a femcam.scene.Scene", "follower", "analyse")
-    k = wear_coefficient_info(scene)[0]
-    if "lubricant" not in scene.tribology or not k > 0:
+    k = wear_coefficient_info(scene.wear, scene.cam.hardness)[0]
+    if scene.tribology.lubricant is None or not k > 0:
         return None, None
     if tip_radius is not None:
         scene = dataclasses.replace(scene, tip_radius=tip_radius)

@@ -11,9 +11,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from .. import _validate
 from .._repr import compact_repr
 from ..errors import InputError, SceneError
 from ..scene.schema import SI_NAMES
+from ..scene.tribology import LubricantData, SurfaceRoughness, Tribology, given
 from ..tribology.film import RQ_PER_RA
 from ..tribology.lubricants import OILS, Lubricant, lubricant
 
@@ -84,11 +86,12 @@ _EXPO_UNITS = {"viscosity_Pa_s": "Pa s", "temperature_C": "degC",
                "viscosity_temperature_coefficient_per_K": "1/K"}
 
 
-def _viscosity_law(lub: dict, base: dict, problems: list) -> dict:
+def _viscosity_law(lub: LubricantData, base: dict, problems: list) -> dict:
     """Keyword arguments of the viscosity law of :class:`Lubricant` ({} and a problem if none)."""
     expo = [k for k in ("viscosity_Pa_s", "temperature_C", "viscosity_temperature_coefficient_per_K")
-            if k in lub]
-    walther = [k for k in ("kinematic_viscosity_40C", "kinematic_viscosity_100C") if k in lub]  # m^2/s
+            if getattr(lub, k) is not None]
+    walther = [k for k in ("kinematic_viscosity_40C", "kinematic_viscosity_100C")
+               if getattr(lub, k) is not None]  # m^2/s
     visc = {}
     if expo and walther:
         problems.append("lubricant: give either viscosity_Pa_s + temperature_C + "
@@ -99,14 +102,14 @@ def _viscosity_law(lub: dict, base: dict, problems: list) -> dict:
             problems.append(f"lubricant: has {', '.join(expo)}; the exponential law also needs "
                             f"{', '.join(need)}")
         else:
-            visc = dict(eta_ref=lub["viscosity_Pa_s"], T_ref_C=lub["temperature_C"],
-                        beta_T=lub["viscosity_temperature_coefficient_per_K"])
+            visc = dict(eta_ref=lub.viscosity_Pa_s, T_ref_C=lub.temperature_C,
+                        beta_T=lub.viscosity_temperature_coefficient_per_K)
     elif walther:
         if len(walther) < 2:
             problems.append("lubricant: the ASTM D341 law needs both kinematic_viscosity_40C_mm2_per_s and "
                             "kinematic_viscosity_100C_mm2_per_s (mm^2/s)")
         else:
-            visc = dict(nu40=lub["kinematic_viscosity_40C"], nu100=lub["kinematic_viscosity_100C"])
+            visc = dict(nu40=lub.kinematic_viscosity_40C, nu100=lub.kinematic_viscosity_100C)
     elif "nu40" in base:
         visc = dict(nu40=base["nu40"], nu100=base["nu100"])
     else:
@@ -116,19 +119,24 @@ def _viscosity_law(lub: dict, base: dict, problems: list) -> dict:
     return visc
 
 
-def _lubricant(lub: dict, problems: list) -> Lubricant | None:
+def _first(*values):
+    """The first value that is not None (None if all are)."""
+    return next((v for v in values if v is not None), None)
+
+
+def _lubricant(lub: LubricantData, problems: list) -> Lubricant | None:
     base = {}
-    if "name" in lub and lub["name"] in OILS:
-        o = lubricant(lub["name"])
+    if lub.name in OILS:
+        o = lubricant(lub.name)
         base = dict(nu40=o.nu40, nu100=o.nu100, rho=o.rho, alpha=o.alpha, source=o.source)
-    elif "name" in lub and not any(k.startswith(("viscosity", "kinematic")) for k in lub):
-        problems.append(f"lubricant.name = {lub['name']!r}: not a table oil ({', '.join(map(repr, OILS))}); "
+    elif lub.name is not None and not any(k.startswith(("viscosity", "kinematic")) for k in given(lub)):
+        problems.append(f"lubricant.name = {lub.name!r}: not a table oil ({', '.join(map(repr, OILS))}); "
                         "or give its data (viscosity keys, pressure_viscosity_per_GPa, density_kg_per_m3)")
         return None
-    if "pressure_viscosity" in lub and "alpha_per_Pa" in lub:  # both 1/Pa
+    if lub.pressure_viscosity is not None and lub.alpha_per_Pa is not None:  # both 1/Pa
         problems.append("lubricant: give pressure_viscosity_per_GPa (1/GPa) or alpha_per_Pa (1/Pa), not both")
-    alpha = lub.get("pressure_viscosity", lub.get("alpha_per_Pa", base.get("alpha")))
-    rho = lub.get("density_kg_per_m3", base.get("rho"))
+    alpha = _first(lub.pressure_viscosity, lub.alpha_per_Pa, base.get("alpha"))
+    rho = _first(lub.density_kg_per_m3, base.get("rho"))
     visc = _viscosity_law(lub, base, problems)
     if alpha is None:
         problems.append("lubricant.pressure_viscosity_per_GPa: missing (1/GPa; or alpha_per_Pa in 1/Pa)")
@@ -137,23 +145,24 @@ def _lubricant(lub: dict, problems: list) -> Lubricant | None:
     if problems or not visc:
         return None
     try:
-        return Lubricant(name=lub.get("name", "scene oil"), alpha=alpha, rho=rho,
-                         source=lub.get("source", base.get("source", "")), **visc)
+        return Lubricant(name=_first(lub.name, "scene oil"), alpha=alpha, rho=rho,
+                         source=_first(lub.source, base.get("source", "")), **visc)
     except InputError as exc:
         problems.append(f"lubricant: {exc}")
         return None
 
 
-def _roughness(surf: dict, problems: list) -> float | None:
+def _roughness(surf: SurfaceRoughness, problems: list) -> float | None:
     rq = []
     for body in ("cam", "roller"):
         ra, q = f"{body}_Ra", f"{body}_Rq"  # m (scene keys *_Ra_um, *_Rq_um)
-        if ra in surf and q in surf:
+        Ra, Rq = getattr(surf, ra), getattr(surf, q)
+        if Ra is not None and Rq is not None:
             problems.append(f"surface: give {ra}_um or {q}_um (um), not both")
-        elif q in surf:
-            rq.append(surf[q])
-        elif ra in surf:
-            rq.append(RQ_PER_RA * surf[ra])          # Gaussian heights: Rq = sqrt(pi/2) Ra
+        elif Rq is not None:
+            rq.append(Rq)
+        elif Ra is not None:
+            rq.append(RQ_PER_RA * Ra)          # Gaussian heights: Rq = sqrt(pi/2) Ra
         else:
             problems.append(f"surface.{ra}_um: missing (um; or {q}_um)")
     if len(rq) < 2:
@@ -165,15 +174,17 @@ def _roughness(surf: dict, problems: list) -> float | None:
     return sigma
 
 
-def assessment_inputs(scene, *, lubricated: bool = True) -> AssessInputs:
-    """Collect the assessment inputs of ``scene`` (see the module docstring).
+def assessment_inputs(tribology: Tribology, *, lubricated: bool = True, where: str = "scene") -> AssessInputs:
+    """Collect the assessment inputs of a scene's ``tribology`` (see the module docstring).
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        Scene whose ``tribology`` holds the checked SI assessment keys.
+    tribology : femcam.scene.tribology.Tribology
+        The scene's assessment data (``Scene.tribology``, SI).
     lubricated : bool
         Require and read the lubricant, roughness and oil temperature.
+    where : str
+        The scene named in the error (its file, or its name).
 
     Returns
     -------
@@ -185,35 +196,34 @@ def assessment_inputs(scene, *, lubricated: bool = True) -> AssessInputs:
     SceneError
         One error listing every missing or contradictory key of a lubricated assessment.
     """
-    tri = dict(getattr(scene, "tribology", None) or {})
+    tri = _validate.instance("tribology", tribology, Tribology, "a femcam.scene.tribology.Tribology")
     problems: list[str] = []
     lub = sigma = T_oil = None
     if lubricated:
-        if "lubricant" not in tri:
+        if tri.lubricant is None:
             problems.append("[lubricant]: missing table; a lubricated assessment needs name (one of "
                             f"{', '.join(map(repr, OILS))}) or viscosity_Pa_s, temperature_C, "
                             "viscosity_temperature_coefficient_per_K, pressure_viscosity_per_GPa, "
                             "density_kg_per_m3")
         else:
-            lub = _lubricant(tri["lubricant"], problems)
-        if "surface" not in tri:
+            lub = _lubricant(tri.lubricant, problems)
+        if tri.surface is None:
             problems.append("[surface]: missing table; give cam_Ra_um and roller_Ra_um (um; or *_Rq_um)")
         else:
-            sigma = _roughness(tri["surface"], problems)
-        if "oil_temperature_C" not in tri:
+            sigma = _roughness(tri.surface, problems)
+        if tri.oil_temperature_C is None:
             problems.append("operating.oil_temperature_C: missing (degC), the inlet/bulk temperature")
-        T_oil = tri.get("oil_temperature_C")
+        T_oil = tri.oil_temperature_C
         for key, T in (("operating.oil_temperature_C", T_oil),
-                       ("lubricant.temperature_C", tri.get("lubricant", {}).get("temperature_C"))):
+                       ("lubricant.temperature_C", getattr(tri.lubricant, "temperature_C", None))):
             if T is not None and T <= -273.15:
                 problems.append(f"{key} = {T:g} degC: must be above absolute zero (-273.15 degC)")
     if problems:
-        where = getattr(scene, "source_path", "") or getattr(scene, "name", "scene")
         n = len(problems)
         raise SceneError(f"scene {where}: {n} problem{'s' if n > 1 else ''} for the assessment\n  "
                          + "\n  ".join(problems))
-    mats = tri.get("materials", {})
-    props = {b: {_BY_SI_NAME[k]: v for k, v in mats.get(b, {}).items()} for b in ("cam", "roller")}
+    props = {b: {_BY_SI_NAME[k]: getattr(getattr(tri, b), k) for k in given(getattr(tri, b))}
+             for b in ("cam", "roller")}
     skipped = {}
     for crit, keys in CRITERIA.items():
         miss = [f"[materials.{b}] {k}" for k in keys for b in ("cam", "roller")

@@ -63,10 +63,8 @@ def has_cam_bore(scene) -> bool:
 
 
 def _cam_yield(scene):
-    mats = (getattr(scene, "tribology", None) or {}).get("materials", {}) or {}
-    cam = mats.get("cam", {}) if isinstance(mats, dict) else {}
-    y = cam.get("yield_strength") if isinstance(cam, dict) else None  # Pa (scene SI name)
-    return float(y) if isinstance(y, int | float) else None
+    """The cam's yield strength (Pa, ``[materials.cam] yield_strength_MPa``), or None."""
+    return scene.tribology.cam.yield_strength
 
 
 def disk_from_scene(scene, *, n_outline: int = 720, fit: str | None = None,

@@ -40,7 +40,7 @@ from ..sweep import sweep
 from ..viz.wear import plot_evolution, plot_wear_comparison, plot_wear_map, plot_wear_polar
 from ..wear.axial import scene_wear_map
 from ..wear.evolution import convergence_table, evolution_case, evolution_problem
-from ..wear.options import describe_k, wear_coefficient_info, wear_options
+from ..wear.options import describe_k, wear_coefficient_info
 from ..wear.scene import scene_tip_radius, tip_scene
 from ..wear.seed000 import PAPER_LAWS, format_table3, seed000_table, table_rows_for_csv
 from ._common import NAMED_LAWS, add_overwrite, add_scene_out, check_law, out_dir, plain, refuse_non_empty
@@ -170,10 +170,10 @@ def _map(args) -> int:
         if args.laws is not None else [None]
     refuse_non_empty(args.out, args.overwrite)  # the rule of femcam sweep
     scene = load_scene(args.scene)
-    opts = wear_options(scene)
-    cycles = args.cycles if args.cycles is not None else float(opts.get("cycles", 1e6))
+    cycles = args.cycles if args.cycles is not None else (scene.wear.cycles if scene.wear.cycles is not None
+                                                           else 1e6)
     theta = np.radians(np.arange(0.0, 360.0, step))
-    k, k_where = wear_coefficient_info(scene)
+    k, k_where = wear_coefficient_info(scene.wear, scene.cam.hardness)
     print(describe_k(k, k_where))
     out = out_dir(args.out)
     head = provenance(scene_path=args.scene, command=shlex.join(sys.argv), cycles=cycles,

@@ -42,7 +42,7 @@ from ..hertz.conformity import shape_factors
 from ..hertz.contact import HertzValidityWarning
 from ..profile import cam_profile, pitch_curvature
 from ..wear.map import wear_depth_per_angle
-from ..wear.options import slip_kwargs, wear_coefficient_info, wear_options
+from ..wear.options import slip_kwargs, wear_coefficient_info
 from ..wear.slip import follower_slip
 
 __all__ = ["OBJECTIVES", "OBJECTIVE_UNITS", "CONSTRAINT_UNITS", "angle_grid", "evaluate"]
@@ -182,8 +182,7 @@ def _wear(scene, d, Fc, a, p0) -> np.ndarray:
     """Archard cam wear depth per revolution at each angle's contact (m): femcam.wear's closed
     form ``k w v_slip / V_cam`` with the scene's k and slip model (pointwise models only: the
     inertia-limited roller integrates over the revolution, which a design grid is not)."""
-    opts = wear_options(scene)
-    kw = slip_kwargs(scene, opts)
+    kw = slip_kwargs(scene.wear, omega=scene.omega, mu=scene.mu, follower=scene.follower)
     if kw["roller_model"] != "srr":
         raise InputError(f"[wear] roller_model = {kw['roller_model']!r}: the wear objective needs the "
                          "pointwise slide-to-roll model ('srr')")
@@ -194,7 +193,7 @@ def _wear(scene, d, Fc, a, p0) -> np.ndarray:
     q = d.s1 - f.e
     s2_floor = (r * r + q * (2.0 * d.s1 - f.e) - (r * r + q * q) ** 1.5 / (f.Rr + _RHO_FLOOR)) / r
     slip = follower_slip(f, d.theta, d.s, d.s1, np.maximum(d.s2, s2_floor), Fc=Fc, **kw)
-    k, _where = wear_coefficient_info(scene)
+    k, _where = wear_coefficient_info(scene.wear, scene.cam.hardness)
     return wear_depth_per_angle(d.theta, a, p0, Fc, slip, k)
 
 
@@ -213,7 +212,7 @@ def check_objective(scene, objective: str) -> None:
     InputError
         ``"lambda"`` without ``[lubricant]`` data; ``"residual_vibration"`` with a rigid train.
     """
-    if objective == "lambda" and "lubricant" not in (scene.tribology or {}):
+    if objective == "lambda" and scene.tribology.lubricant is None:
         raise InputError("objective = 'lambda': the film parameter needs the scene's lubricant data "
                          "([lubricant], [surface] roughness and oil_temperature_C, femcam.assess); "
                          "this scene has no [lubricant] table")

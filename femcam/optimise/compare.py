@@ -68,7 +68,7 @@ def compare_laws(scene, *, optimum=None, laws=STANDARD_LAWS, constraints=None) -
         variants.append(("optimum", optimum.apply(scene)))
     rows = {k: [] for k in ("law", "p0_max", "phi_max", "rho_min", "a_max", "margin_phi", "margin_rho",
                             "margin_liftoff", "wear_max", "lambda_min", "residual_vibration")}
-    lubricated = "lubricant" in (scene.tribology or {})
+    lubricated = scene.tribology.lubricant is not None
     for name, sc in variants:
         theta, _ = angle_grid(sc.program, DENSE)
         try:

@@ -17,8 +17,9 @@ import json
 
 import numpy as np
 
-#: fields that do not change what is computed: free text, the file, the raw TOML, study settings
-NOT_PHYSICS = {"Scene": ("name", "description", "source", "source_path", "raw", "fe", "sweep",
+#: fields that do not change what is computed: free text, the file, the TOML as written (its
+#: physics is in the typed fields), study settings
+NOT_PHYSICS = {"Scene": ("name", "description", "source", "source_path", "origin", "fe", "sweep",
                           "overrides"),
                "Material": ("name",)}
 

@@ -17,11 +17,12 @@ from .cross import cross_key_problems
 from .dynamics import _dynamics
 from .follower import _finite_length, _follower, arm_fold, arm_program, arm_self_locking
 from .materials import _materials
+from .origin import freeze
 from .program import _program
 from .schema import _OPERATING, _TABLES, _TOP
 from .state import Scene
 from .study import _study
-from .wear import _scene_wear
+from .wear import _scene_wear, wear_settings
 
 try:  # Python >= 3.11
     import tomllib
@@ -69,7 +70,7 @@ def load_scene(path) -> Scene:
     co = _contact(ck, raw)
     arm_self_locking(ck, program, follower, co.get("friction"))
     study = _study(ck, raw)
-    _scene_wear(ck, raw, mats)
+    wear = _scene_wear(ck, raw, mats)
     cross_key_problems(ck, raw)
     ck.raise_if_any()
     program = arm_program(program, follower)  # an arm's lifts (rad) -> roller-centre arc travel (m)
@@ -78,7 +79,7 @@ def load_scene(path) -> Scene:
                  program=program, follower=follower, dynamics=dyn, omega=omega, cam=mats["cam"],
                  roller=mats["roller"], length=fo["face_width_mm"], mu=co.get("friction", 0.0),
                  plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=study["fe"],
-                 wear=dict(raw.get("wear", {})), source_path=str(path), raw=raw, train=train,
+                 wear=wear_settings(wear), source_path=str(path), origin=freeze(raw), train=train,
                  tribology=tribo, finite_length=finite, bodies=bodies, layers=layers,
                  steps_per_rev=steps_per_rev, sweep=study["sweep"], tip_radius=fo.get("tip_radius_mm"),
                  face_length=fo.get("face_length_mm"))

@@ -52,7 +52,7 @@ def _body_material(ck: _Checker, mats: dict, k: str, alias: str, given) -> None:
     """Check [materials.<alias>] and put body ``k``'s Material (and assessment extras) in ``mats``."""
     m = ck.table(given, f"materials.{alias}", _MATERIAL, extra=("coating", "case"))
     extra = si_named({x: m[x] for x in _MATERIAL_EXTRA if x in m})
-    if extra:  # assessment data (femcam.assess), kept in Scene.tribology["materials"]
+    if extra:  # assessment data (femcam.assess): Scene.tribology's MaterialData (femcam.scene.tribology)
         mats.setdefault("extra", {})[k] = extra
     if "E_GPa" in m and "nu" in m:
         mats[k] = _material(ck, alias, m, given)

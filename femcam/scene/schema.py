@@ -128,7 +128,7 @@ _DYNAMICS.update(_ARM_DYNAMICS)
 # ---- [materials.<body>] (cam, roller alias follower, pin, shaft) ---------------------------------
 _MATERIAL = {"E_GPa": ("GPa", 1e9, "pos", True), "nu": ("(dimensionless)", 1.0, "nu", True),
              "hardness_MPa": ("MPa", 1e6, "pos", False), "name": ("", None, "str", False)}
-# assessment data (femcam.assess), kept in Scene.tribology["materials"]
+# assessment data (femcam.assess), kept in Scene.tribology (femcam.scene.tribology.MaterialData)
 _MATERIAL_EXTRA = {"yield_strength_MPa": ("MPa", 1e6, "pos", False),
                    "thermal_conductivity_W_per_m_K": ("W/(m K)", 1.0, "pos", False),
                    "density_kg_per_m3": ("kg/m^3", 1.0, "pos", False),

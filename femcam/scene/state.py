@@ -22,6 +22,9 @@ from ..kinematics import CamProgram, law
 from ..loads import ArmDynamics, FollowerDynamics, LoadResult, arm_contact_force, arm_lever, contact_force
 from ..materials import Material
 from ..profile import CamProfile, bool_intervals, cam_profile
+from .origin import FrozenMapping, freeze
+from .tribology import Tribology
+from .wear import WearSettings
 
 #: angles of the dense undercut check of Scene.analyse over one revolution (0.05 deg apart)
 UNDERCUT_CHECK_N = 7200
@@ -143,8 +146,8 @@ class Scene:
         The checked study settings of [fe] (``a_over_h``, ``tolerance``: dimensionless) and
         [sweep] (``method``, ``angles_deg``, ``chunk_size``, ``vtk_every`` in angles,
         ``plots``): ``femcam sweep`` uses them where no flag is given.
-    wear : dict
-        The [wear] table as written (checked at load; SI values: :mod:`femcam.wear.options`).
+    wear : femcam.scene.wear.WearSettings
+        The [wear] table in SI (:mod:`femcam.wear.options` reads it).
     finite_length : dict
         The femcam.halfspace keys in SI (``roller_width``, ``cam_width``, ``crown_radius``,
         ``crown_drop``, ``edge_radius`` in m, ``misalignment`` in rad, ``crown``); empty when
@@ -156,12 +159,12 @@ class Scene:
         ``surface_hardness`` in Pa, ``wear_k`` in m^3/(N m)).
     source_path : str
         The scene file ("" if built in code).
-    tribology : dict
-        Checked SI values of the assessment keys: ``lubricant``, ``surface`` (``cam_Ra`` ... in
-        m), ``oil_temperature_C`` (degC), ``materials`` (per body, ``yield_strength`` ... in Pa),
-        under the SI names of :data:`femcam.scene.schema.SI_NAMES`.
-    raw : dict
-        The parsed TOML.
+    tribology : femcam.scene.tribology.Tribology
+        The assessment data in SI: ``lubricant``, ``surface`` (``cam_Ra`` ... in m),
+        ``oil_temperature_C`` (degC), each body's material data (``yield_strength`` ... in Pa).
+    origin : femcam.scene.origin.FrozenMapping
+        The TOML as written, read-only (empty if built in code): for provenance (copying,
+        hashing or varying the scene file), never read for physics.
     train : femcam.dynamics.TrainModel or None
         The elastic follower train of ``[dynamics] model = one_dof | two_dof`` (an arm's is
         referred to the roller's arc travel, femcam.dynamics.arm_train); None: rigid.
@@ -192,21 +195,29 @@ class Scene:
     description: str = ""
     source: str = ""
     fe: dict = field(default_factory=dict)
-    wear: dict = field(default_factory=dict)
+    wear: WearSettings = field(default_factory=WearSettings)
     finite_length: dict = field(default_factory=dict)
     layers: dict = field(default_factory=dict)
     source_path: str = ""
-    tribology: dict = field(default_factory=dict)
-    raw: dict = field(default_factory=dict, repr=False)
+    tribology: Tribology = field(default_factory=Tribology)
+    origin: FrozenMapping = field(default_factory=FrozenMapping, repr=False)
     train: TrainModel | None = None
     steps_per_rev: int | None = None
     bodies: dict = field(default_factory=dict)
     sweep: dict = field(default_factory=dict)
     tip_radius: float | None = None
     face_length: float | None = None
-    #: what the program was changed to after loading (:meth:`with_law`): ``{"law": name, **params}``,
-    #: written into the copy of the scene file a sweep keeps (femcam.scene.override)
-    overrides: dict = field(default_factory=dict, repr=False, compare=False)
+    #: what the program was changed to after loading (:meth:`with_law`): ``(("law", name),
+    #: (param, value), ...)`` (values frozen: lists as tuples), written into the copy of the scene
+    #: file a sweep keeps (femcam.scene.override)
+    overrides: tuple = field(default=(), repr=False, compare=False)
+
+    def __post_init__(self):
+        _validate.instance("Scene.tribology", self.tribology, Tribology)
+        _validate.instance("Scene.wear", self.wear, WearSettings)
+        if not isinstance(self.origin, FrozenMapping):  # the TOML as written, made read-only
+            object.__setattr__(self, "origin", freeze(dict(self.origin)))
+        object.__setattr__(self, "overrides", tuple((str(k), freeze(v)) for k, v in self.overrides))
 
     @property
     def rpm(self) -> float:
@@ -384,5 +395,5 @@ class Scene:
         """
         lw = law(name, **params)
         segs = [s if s.law is None else dataclasses.replace(s, law=lw) for s in self.program.segments]
-        return dataclasses.replace(self, program=CamProgram(segs),
-                                   overrides={**self.overrides, "law": name, **params})
+        given = {**dict(self.overrides), "law": name, **params}
+        return dataclasses.replace(self, program=CamProgram(segs), overrides=tuple(given.items()))

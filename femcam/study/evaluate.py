@@ -103,9 +103,9 @@ def _contact_radius(scene) -> float:
 
 def _assessment(scene, theta) -> tuple:
     """(smallest safety factor, smallest lambda) of the assessment, NaN where not available."""
-    if not scene.tribology:  # no assessment data: nothing to assess (a third of the time saved)
+    if scene.tribology.empty:  # no assessment data: nothing to assess (a third of the time saved)
         return math.nan, math.nan
-    lub = bool(scene.tribology.get("lubricant"))
+    lub = scene.tribology.lubricant is not None
     try:
         A = assess(scene, theta, lubricated=lub)
     except FemcamError:

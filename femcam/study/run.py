@@ -22,6 +22,7 @@ from .. import _validate
 from ..errors import InputError, SceneError
 from ..io import provenance
 from ..scene import Scene, load_scene
+from ..scene.origin import thaw
 from ..sweep.parallel import run_tasks
 from . import variants as _v
 from .constraints import NAMES, Constraints, feasibility, infeasible_reason, margins
@@ -42,7 +43,7 @@ OBJECTIVES = ("p0_max", "von_mises_max", "tau1_max", "cam_radius_max")
 def _base(scene):
     """``(raw mapping, scene path, scene text)`` of the base scene (a path is loaded and checked)."""
     if isinstance(scene, Scene):
-        if not scene.raw:
+        if not scene.origin:
             raise InputError("scene: a Scene built in code has no file mapping to vary; pass the scene file")
         path = scene.source_path
     else:
@@ -51,7 +52,7 @@ def _base(scene):
     text = ""
     if path and Path(path).is_file():
         text = Path(path).read_text(encoding="utf-8")
-    return scene.raw, path, text
+    return thaw(scene.origin), path, text
 
 
 def _probe(raw: dict, spec: StudySpec, path: str) -> None:
@@ -111,7 +112,7 @@ def run_study(scene, spec: StudySpec, *, constraints: Constraints | None = None,
     Parameters
     ----------
     scene : str or Path or femcam.scene.Scene
-        The base scene file (or a loaded scene with its file mapping, ``Scene.raw``).
+        The base scene file (or a loaded scene with its file mapping, ``Scene.origin``).
     spec : StudySpec
         What varies (grid or Latin hypercube).
     constraints : Constraints, optional

@@ -147,7 +147,7 @@ PROVIDERS: tuple[Provider, ...] = (
              "finite-length contact along the roller:\naxial peak pressure and most loaded slice",
              keys="[follower] crown, crown_*, edge_radius_mm, misalignment_deg, roller_width_mm; "
                   "[cam] face_width_mm"),
-    Provider("assess", lambda s: "lubricant" in (getattr(s, "tribology", None) or {}), ASSESS,
+    Provider("assess", lambda s: s.tribology.lubricant is not None, ASSESS,
              ASSESS_TEXT, assess_chunk, ASSESS_PANELS,
              keys="[lubricant], [surface] and the materials' strength keys"),
     Provider("bodies", has_support, RING, (), ring_chunk, RING_PANELS,

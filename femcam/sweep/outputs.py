@@ -15,6 +15,7 @@ from ..errors import FemcamError, InputError
 from ..hertz.conformity import shape_factors
 from ..io import atomic_write_text, vtu_name, write_csv, write_npz, write_pvd
 from ..scene import Scene
+from ..scene.origin import thaw
 from ..scene.override import with_overrides
 from ..viz.animate import animate_pvd
 from ..viz.process import PlotProcess, warn_missing
@@ -77,7 +78,7 @@ def scene_source(scene, scene_path):
                 text = Path(p).read_text(encoding="utf-8")
             except (OSError, UnicodeDecodeError):
                 return Path(p), ""
-            ov = dict(scene.overrides)  # e.g. --law: the copy must reproduce the run
+            ov = thaw(dict(scene.overrides))  # e.g. --law: the copy must reproduce the run
             if ov.get("law"):
                 text = with_overrides(text, {}, law=ov.pop("law"), control_points=ov.get("control_points"))
             return Path(p), text

@@ -240,7 +240,7 @@ def scene_traction(scene, theta) -> Traction:
     roll = rolling_direction(scene.program, f, theta)
     if not scene.mu > 0:
         return Traction(np.zeros(n), roll.astype(int), "mu = 0: no traction")
-    kw = slip_kwargs(scene)
+    kw = slip_kwargs(scene.wear, omega=scene.omega, mu=scene.mu, follower=scene.follower)
     J, T_drag = _roller_J(scene, kw["J"]), float(kw["T_drag"])
     grid = np.radians(np.arange(0.0, 360.0, TRACTION_STEP_DEG))
     g = scene.analyse(grid)

@@ -122,7 +122,8 @@ def slip_for_angles(scene, theta, st):
         Arrays of shape (n,) (m/s).
     """
 
-    kw = slip_kwargs(scene)  # the checked [wear] table, as femcam wear map / evolution_case
+    # the checked [wear] table, as femcam wear map / evolution_case
+    kw = slip_kwargs(scene.wear, omega=scene.omega, mu=scene.mu, follower=scene.follower)
     model = kw["roller_model"]
     theta = np.asarray(theta, float)
     if model != "inertia" or _uniform_revolution(theta):
@@ -166,7 +167,7 @@ def wear_setup(scene, theta, st) -> WearSetup:
         ``k`` [m^3/(N m)] and the slip at the ``n`` angles, or NaN/None and the reason.
     """
     try:
-        k = float(wear_coefficient_info(scene)[0])
+        k = float(wear_coefficient_info(scene.wear, scene.cam.hardness)[0])
         slip = slip_for_angles(scene, theta, st)
     except FemcamError as exc:
         msg = f"wear columns not computed: {type(exc).__name__}: {exc}"

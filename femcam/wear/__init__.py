@@ -40,7 +40,7 @@ from .map import (
     wear_depth_per_angle,
     wear_map,
 )
-from .options import wear_coefficient_info, wear_options
+from .options import wear_coefficient_info
 from .seed000 import Seed000Inputs, Seed000Table, format_table3, rms_velocity, seed000_table
 from .slip import (
     SlipResult,
@@ -57,7 +57,7 @@ __all__ = [
     "ConvergenceTable", "EvolutionCase", "EvolutionResult", "convergence_table", "evolution_case", "evolve",
     "worn_curvature",
     "WearInputWarning", "WearMap", "depth_per_pass", "drift_sum", "surface_depth", "wear_depth_per_angle",
-    "wear_map", "wear_coefficient_info", "wear_options",
+    "wear_map", "wear_coefficient_info",
     "Seed000Inputs", "Seed000Table", "format_table3", "rms_velocity", "seed000_table",
     "SlipResult", "flat_faced", "follower_slip", "knife_edge", "radiused_tip", "roller_inertia",
     "roller_srr",

@@ -130,8 +130,9 @@ def scene_wear_axial(scene, theta, *, cycles: float = 1e6, fe=None, k_factor=Non
     st = scene.analyse(theta)
     Fc = np.clip(st.Fc, 0.0, None)
     table = axial_table(scene, theta, fe)
-    slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **slip_kwargs(scene))
-    k, _where = wear_coefficient_info(scene)
+    kw = slip_kwargs(scene.wear, omega=scene.omega, mu=scene.mu, follower=scene.follower)
+    slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **kw)
+    k, _where = wear_coefficient_info(scene.wear, scene.cam.hardness)
     wm = wear_map(table, slip, k=k, length=scene.length, cycles=cycles, pressure="axial_peak",
                   k_factor=k_factor, regime=regime)
     return with_coating(scene, wm), st, slip

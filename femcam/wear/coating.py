@@ -184,5 +184,5 @@ def coating_wear(scene) -> CoatingWear | None:
             src = (f"[materials.{body}.coating] wear_K = {c['wear_K']:g} / hardness_MPa = "
                    f"{c['hardness'] / 1e6:g}")
         return CoatingWear(body=body, thickness=c["thickness"], k_coating=k,
-                           k_substrate=wear_coefficient_info(scene)[0], source=src)
+                           k_substrate=wear_coefficient_info(scene.wear, scene.cam.hardness)[0], source=src)
     return None

@@ -78,7 +78,7 @@ from .._repr import compact_repr
 from ..hertz import LineContact
 from ..loads import contact_force
 from .map import WearMap, drift_sum, wear_map
-from .options import slip_kwargs, wear_coefficient_info, wear_options
+from .options import slip_kwargs, wear_coefficient_info
 from .slip import SlipResult, follower_slip
 
 
@@ -236,13 +236,13 @@ def evolution_case(scene, theta, *, k: float | None = None) -> EvolutionCase:
                       "profile evolution is implemented for roller followers only (a radiused "
                       "knife-edge tip wears to a conformal flat that Hertz does not describe; a "
                       "flat face is not modelled); run without --evolve-blocks")
-    opts = wear_options(scene)
     if k is None:
-        k = wear_coefficient_info(scene)[0]
+        k = wear_coefficient_info(scene.wear, scene.cam.hardness)[0]
     k = _validate.nonnegative("k", k, "m^3/(N m)")
     st = scene.analyse(theta)
     Fc = np.clip(st.Fc, 0.0, None)
-    slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **slip_kwargs(scene, opts))
+    kw = slip_kwargs(scene.wear, omega=scene.omega, mu=scene.mu, follower=scene.follower)
+    slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **kw)
     return EvolutionCase(theta=np.asarray(st.theta, float), s=st.s, s1=st.s1, s2=st.s2, phi=st.phi,
                          rho=st.rho, slip=slip, dynamics=scene.dynamics, omega=scene.omega,
                          Rr=scene.follower.Rr, length=scene.length, cam=scene.cam, roller=scene.roller,

@@ -2,9 +2,9 @@
 
 :func:`femcam.scene.load_scene` checks ``[wear]`` with the other tables (unknown key, value,
 expected unit, a "did you mean" hint: :func:`femcam.scene.wear_table`, whose schema is
-:data:`WEAR_KEYS`); :func:`wear_options` checks it again for a scene built in code or edited
-with ``dataclasses.replace`` and raises one :class:`~femcam.errors.SceneError` listing every
-problem.
+:data:`WEAR_KEYS`) into the typed record :class:`femcam.scene.wear.WearSettings`
+(``Scene.wear``, SI), which checks its values again when built in code; the functions here
+take that record.
 
 Keys (all optional)
 -------------------
@@ -28,10 +28,10 @@ seed 000's H = 2000 N/mm^2. The returned text says which case applied.
 
 from __future__ import annotations
 
-from ..errors import InputError
-from ..scene import wear_table
-from ..scene.checker import _Checker
+from .. import _validate
+from ..errors import InputError, SceneError
 from ..scene.schema import _WEAR
+from ..scene.wear import WearSettings
 from .archard import dimensional_coefficient
 
 #: key -> (unit shown to the user, SI factor, check, required) -- the scene loader's schema
@@ -42,43 +42,16 @@ DEFAULT_K = 1e-8
 DEFAULT_H = 2000e6
 
 
-def wear_options(scene) -> dict:
-    """The scene's ``[wear]`` table checked and converted to SI (keys as in the table).
-
-    Raises :class:`~femcam.errors.SceneError` (an ``InputError``) naming every unknown key or
-    bad value with the expected unit, e.g. ``wear.k = 1e-17: unknown key; did you mean
-    'k_mm3_per_N_m' in mm^3/(N m)? (units go in the key name)``.
+def wear_coefficient_info(wear: WearSettings, hardness: float | None) -> tuple[float, str]:
+    """``(k, where)``: the dimensional wear coefficient (m^3/(N m)) a scene's ``[wear]`` asks
+    for, and a sentence saying where it came from (scene key or default).
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        The scene (its ``wear`` table, cam hardness [Pa], source path).
-
-    Returns
-    -------
-    dict of str -> float or str
-        The checked ``[wear]`` keys with SI values under SI names (``k`` in m^3/(N m), ``J_kg_m2``
-        in kg m^2, ``T_drag_N_m`` in N m, ``tip_radius`` in m, ``cycles`` in revolutions).
-
-    Raises
-    ------
-    SceneError
-        Every unknown key or bad value.
-    """
-    ck = _Checker(scene.source_path or scene.name)
-    out = wear_table(ck, dict(scene.wear or {}), scene.cam.hardness)
-    ck.raise_if_any()
-    return out
-
-
-def wear_coefficient_info(scene) -> tuple[float, str]:
-    """``(k, where)``: the dimensional wear coefficient (m^3/(N m)) the scene asks for, and a
-    sentence saying where it came from (scene key or default).
-
-    Parameters
-    ----------
-    scene : femcam.scene.Scene
-        The scene (its ``wear`` table, cam hardness [Pa], source path).
+    wear : femcam.scene.wear.WearSettings
+        The scene's ``[wear]`` table in SI (``Scene.wear``).
+    hardness : float or None
+        Cam hardness [Pa] (``Scene.cam.hardness``); None: not given.
 
     Returns
     -------
@@ -90,16 +63,19 @@ def wear_coefficient_info(scene) -> tuple[float, str]:
     Raises
     ------
     SceneError
-        A bad ``[wear]`` table.
+        ``K`` without a cam hardness (K alone has no unit of wear).
     """
-    opts = wear_options(scene)
-    hardness = scene.cam.hardness
-    if "k" in opts:
-        k = opts["k"]
-        return k, f"scene [wear] k_mm3_per_N_m = {k * 1e9:g} mm^3/(N m)"
-    if "K" in opts:
-        k = dimensional_coefficient(opts["K"], hardness)
-        return k, (f"scene [wear] K = {opts['K']:g} / [materials.cam] hardness_MPa = "
+    wear = _validate.instance("wear", wear, WearSettings, "a femcam.scene.wear.WearSettings")
+    hardness = _validate.optional(_validate.positive, "hardness", hardness, "Pa")
+    if wear.k is not None:
+        return wear.k, f"scene [wear] k_mm3_per_N_m = {wear.k * 1e9:g} mm^3/(N m)"
+    if wear.K is not None:
+        if not hardness:
+            raise SceneError(f"wear.K = {wear.K:g} (dimensionless): needs the cam hardness "
+                             "[materials.cam] hardness_MPa (MPa), k = K/H; or give k_mm3_per_N_m "
+                             "(mm^3/(N m))")
+        k = dimensional_coefficient(wear.K, hardness)
+        return k, (f"scene [wear] K = {wear.K:g} / [materials.cam] hardness_MPa = "
                    f"{hardness / 1e6:g} MPa")
     if hardness:
         return dimensional_coefficient(DEFAULT_K, hardness), (
@@ -110,22 +86,26 @@ def wear_coefficient_info(scene) -> tuple[float, str]:
         "no [wear] K or k_mm3_per_N_m and no [materials.cam] hardness_MPa")
 
 
-def slip_kwargs(scene, opts: dict | None = None) -> dict:
-    """Keyword arguments of :func:`~femcam.wear.slip.follower_slip` from the scene (``omega``,
-    ``mu``) and its checked ``[wear]`` table ``opts`` (default: :func:`wear_options`).
+def slip_kwargs(wear: WearSettings, *, omega: float, mu: float, follower) -> dict:
+    """Keyword arguments of :func:`~femcam.wear.slip.follower_slip` from a scene's ``[wear]``
+    settings, its speed, friction and follower.
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        The scene (``omega`` [rad/s], ``mu`` [-]).
-    opts : dict, optional
-        Checked SI ``[wear]`` table; default :func:`wear_options` of ``scene``.
+    wear : femcam.scene.wear.WearSettings
+        The scene's ``[wear]`` table in SI (``Scene.wear``).
+    omega : float
+        Cam speed [rad/s].
+    mu : float
+        Friction coefficient [-] (the scene's, 0 included).
+    follower : object
+        The follower (its ``translating_roller`` flag).
 
     Returns
     -------
     dict
-        ``omega`` [rad/s], ``roller_model``, ``srr`` [-], ``mu`` [-] (the scene's friction, 0
-        included), ``J`` [kg m^2] or None, ``T_drag`` [N m].
+        ``omega`` [rad/s], ``roller_model``, ``srr`` [-], ``mu`` [-], ``J`` [kg m^2] or None,
+        ``T_drag`` [N m].
 
     Raises
     ------
@@ -133,18 +113,16 @@ def slip_kwargs(scene, opts: dict | None = None) -> dict:
         A roller follower with ``roller_model = "inertia"`` and friction 0: only friction spins
         the roller, so without it its speed is not set by the scene (refused with that reason).
     """
-    if opts is None:
-        opts = wear_options(scene)
-    model = opts.get("roller_model", "srr")
-    if model == "inertia" and scene.mu == 0 and getattr(scene.follower, "translating_roller", False):
+    wear = _validate.instance("wear", wear, WearSettings, "a femcam.scene.wear.WearSettings")
+    if wear.roller_model == "inertia" and mu == 0 and getattr(follower, "translating_roller", False):
         # J dOmega/dt = mu Fc Rr - T_drag sign(Omega): with mu = 0 any constant spin (T_drag = 0)
         # is a periodic answer, or the roller coasts to rest: the scene does not set the speed
         raise InputError("contact.friction = 0: the inertia-limited roller model ([wear] roller_model "
                          "= 'inertia') needs friction > 0 (only friction spins the roller; without it "
                          "the roller speed is not set by the scene): give [contact] friction or use "
                          "roller_model = 'srr'")
-    return dict(omega=scene.omega, roller_model=model, srr=opts.get("srr", 0.02),
-                mu=scene.mu, J=opts.get("J_kg_m2"), T_drag=opts.get("T_drag_N_m", 0.0))
+    return dict(omega=omega, roller_model=wear.roller_model, srr=wear.srr, mu=mu, J=wear.J,
+                T_drag=wear.T_drag)
 
 
 def describe_k(k: float, where: str) -> str:

@@ -20,7 +20,7 @@ from ..hertz import LineContact
 from ..profile import RollerFollower
 from .coating import coating_wear
 from .map import WearMap, wear_map
-from .options import follower_tip_radius, slip_kwargs, wear_coefficient_info, wear_options
+from .options import follower_tip_radius, slip_kwargs, wear_coefficient_info
 from .slip import SlipResult, follower_slip
 
 
@@ -106,7 +106,6 @@ def scene_wear(scene, theta, *, cycles: float = 1e6, tip_radius: float | None = 
         ``scene.analyse(theta)`` of the (tip) scene.
     slip : femcam.wear.slip.SlipResult
     """
-    opts = wear_options(scene)
     tip_radius = scene_tip_radius(scene, tip_radius)
     sc = tip_scene(scene, tip_radius)
     st = sc.analyse(theta)
@@ -118,9 +117,10 @@ def scene_wear(scene, theta, *, cycles: float = 1e6, tip_radius: float | None = 
         R2 = sc.follower.Rr if sc.follower.draws_circle else math.inf
         hc = LineContact(F=Fc, length=sc.length, R1=st.rho, R2=R2, cam=sc.cam, roller=sc.roller)
         table, pressure = {"theta": theta, "a": hc.a, "p0": hc.p0, "Fc": Fc}, "hertz"
-    slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **slip_kwargs(scene, opts),
+    kw = slip_kwargs(scene.wear, omega=scene.omega, mu=scene.mu, follower=scene.follower)
+    slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **kw,
                          tip_radius=tip_radius if sc is not scene else None)
-    k, _where = wear_coefficient_info(scene)
+    k, _where = wear_coefficient_info(scene.wear, scene.cam.hardness)
     wm = wear_map(table, slip, k=k, length=scene.length, cycles=cycles, pressure=pressure,
                   k_factor=k_factor, regime=regime)
     return with_coating(scene, wm), st, slip
