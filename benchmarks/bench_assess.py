@@ -27,9 +27,10 @@ SCENE = "examples/seed002_assess.toml"
 
 def check(scene) -> None:
     from femcam.assess import assess_rows
+    from femcam.scene import contact_case
     from femcam.tribology import shakedown_limit
 
-    r = assess_rows(scene, np.radians([300.0]))
+    r = assess_rows(contact_case(scene, np.radians([300.0])))
     E_star = 210e9 / (2 * 0.91)
     w, R = 1.5e5, 0.005
     a = math.sqrt(4 * w * R / (math.pi * E_star))
@@ -58,7 +59,7 @@ def main() -> None:
     args = ap.parse_args()
     t0 = time.perf_counter()
     from femcam.assess import assess_rows
-    from femcam.scene import load_scene
+    from femcam.scene import contact_case, load_scene
     from femcam.sweep import sweep
 
     scene = load_scene(SCENE)
@@ -67,7 +68,7 @@ def main() -> None:
     table = sweep(scene, angles=theta, method="hertz", progress=False)
     t_sweep = time.perf_counter() - t
     t = time.perf_counter()
-    rows = assess_rows(scene, theta, table)                    # first assessment in this process
+    rows = assess_rows(contact_case(scene, theta), table)      # first assessment in this process
     after = time.perf_counter() - t
     warm = min(_timed(assess_rows, scene, theta) for _ in range(5))
     cold = _cold()
@@ -90,7 +91,7 @@ def main() -> None:
         from femcam.assess import assess
         from femcam.viz.assess import plot_assessment
 
-        res = assess(scene, theta)
+        res = assess(contact_case(scene, theta))
         for name, path in plot_assessment(res, args.figures).items():
             print(f"figure {name}: {path}")
         for crit, (v, th, _) in res.worst.items():
@@ -106,7 +107,7 @@ def _flat_figure(out) -> None:
     from pathlib import Path
 
     from femcam.assess import assess
-    from femcam.scene import load_scene
+    from femcam.scene import contact_case, load_scene
     from femcam.viz.assess import plot_lambda
 
     text = open(SCENE).read().replace('law = "bezier5"', 'law = "cycloidal"')
@@ -115,7 +116,7 @@ def _flat_figure(out) -> None:
     with tempfile.TemporaryDirectory() as d:
         p = Path(d) / "flat.toml"
         p.write_text(text)
-        res = assess(load_scene(p), np.radians(np.arange(0.0, 360.0, 0.5)))
+        res = assess(contact_case(load_scene(p), np.radians(np.arange(0.0, 360.0, 0.5))))
     r = res.rows
     off = r["U"] <= 0
     print(f"flat-faced: U <= 0 (film collapsed, flagged no_entrainment) at {int(off.sum())} of {off.size} "
@@ -129,10 +130,10 @@ def _cold() -> float:
     import subprocess
     import sys
 
-    code = ("import time, numpy as np\nfrom femcam.scene import load_scene\n"
+    code = ("import time, numpy as np\nfrom femcam.scene import contact_case, load_scene\n"
             "from femcam.assess import assess_rows\n"
             f"sc = load_scene({SCENE!r})\nth = np.radians(np.arange(0.0, 360.0, 1.0))\n"
-            "t = time.perf_counter(); assess_rows(sc, th); print(time.perf_counter() - t)")
+            "t = time.perf_counter(); assess_rows(contact_case(sc, th)); print(time.perf_counter() - t)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     return float(out.stdout.strip())
 

@@ -23,7 +23,7 @@ import numpy as np
 
 from femcam.assess import assess_rows
 from femcam.halfspace.rows import finite_length_rows
-from femcam.scene import load_scene
+from femcam.scene import contact_case, load_scene
 from femcam.sweep import extras, sweep
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -39,7 +39,7 @@ CASES = [  # (scene, provider, bare replacement, step_deg)
 def check(name, scene, theta, table):
     """The sweep's columns equal the provider's direct call (CSV-independent, SI)."""
     if name == "assess":
-        d = assess_rows(scene, theta)
+        d = assess_rows(contact_case(scene, theta))
         assert np.allclose(table["assess_lam"], d["lam"], rtol=1e-12, equal_nan=True)
     if name == "halfspace":   # each angle alone (the provider's cold start), every 30th angle
         for i in range(0, theta.size, 30):

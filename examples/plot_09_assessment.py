@@ -25,11 +25,11 @@ import numpy as np
 
 from femcam.assess import assess
 from femcam.hertz import max_shear
-from femcam.scene import load_scene
+from femcam.scene import contact_case, load_scene
 
 HERE = Path(__file__).parent if "__file__" in globals() else Path.cwd()  # sphinx-gallery: cwd
 sc = load_scene(HERE / "seed002_assess.toml")
-res = assess(sc)
+res = assess(contact_case(sc))
 r = res.rows
 deg = np.degrees(r["theta"])
 for criterion, (value, theta, _) in res.worst.items():

@@ -13,7 +13,7 @@ from femcam import _validate
 from femcam.assess import assess
 from femcam.cli import main
 from femcam.errors import InputError
-from femcam.scene import load_scene
+from femcam.scene import contact_case, load_scene
 
 EXAMPLE = "examples/seed002_assess.toml"
 
@@ -34,5 +34,5 @@ def test_the_api_refuses_too(tmp_path):
     with pytest.raises(InputError, match=r"^theta = .*more than the 1,000,000 .*GB"):
         scene.analyse(np.zeros(_validate.MAX_ANGLES + 1))
     with pytest.raises(InputError, match=r"^theta = .*more than the 400,000 .*GB"):
-        assess(scene, np.zeros(_validate.MAX_ASSESS_ANGLES + 1))
+        assess(contact_case(scene, np.zeros(_validate.MAX_ASSESS_ANGLES + 1)))
     assert scene.analyse(np.zeros(3)).Fc.shape == (3,)

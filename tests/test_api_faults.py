@@ -112,6 +112,14 @@ def state():
     return scene().analyse(TH)
 
 
+def _case_fields():
+    """The fields of a valid ContactCase (the study model's contact at TH)."""
+    from femcam.scene import contact_case
+
+    c = contact_case(scene(), TH)
+    return {f.name: getattr(c, f.name) for f in dataclasses.fields(c)}
+
+
 def steel():
     from femcam.materials import STEEL
 
@@ -236,12 +244,6 @@ CASES: dict[str, Case] = {
         fault_base=lazy(lambda: dict(path=Path("unused.vtu"), model=bare(object), C=[0.0, 0.02],
                                      n=[0.0, 1.0], F=1000.0, theta=0.5))),
     # femcam.assess
-    "femcam.assess.assess": Case(lazy(lambda: dict(scene=scene("seed002_assess"), theta=TH)),
-                                 {"theta": opt(REAL)}),
-    "femcam.assess.assess_rows": Case(lazy(lambda: dict(scene=scene("seed002_assess"), theta=TH)),
-                                      {"theta": REAL}),
-    "femcam.assess.wear_factor": Case(lazy(lambda: dict(scene=scene(), theta=TH)),
-                                      {"theta": REAL, "tip_radius": opt(POS)}),
     # femcam.bodies
     "femcam.bodies.CamDisk": Case(lazy(lambda: dict(outline=circle_outline(), Rb=0.01)),
                                   {"outline": REAL, "Rb": POS, "Rs": opt(POS),
@@ -572,6 +574,9 @@ CASES: dict[str, Case] = {
     "femcam.scene.WearSettings": Case(kw(), {"K": opt(NONNEG), "k": opt(NONNEG), "srr": REAL + (2.5, -2.0),
                                              "J": opt(POS), "T_drag": NONNEG, "cycles": opt(NONNEG)}),
     "femcam.scene.Tribology": Case(kw(), {"oil_temperature_C": opt(REAL)}),
+    "femcam.scene.contact_case": Case(lazy(lambda: dict(scene=scene("seed003_knife_edge"), theta=TH,
+                                                        tip_radius=5e-4)), {"theta": opt(REAL), "tip_radius": opt(POS)}),
+    "femcam.scene.ContactCase": Case(lazy(_case_fields), {"length": POS, "mu": NONNEG, "tip_radius": opt(POS)}),
     "femcam.scene.LubricantData": Case(kw(), {
         "viscosity_Pa_s": opt(POS), "temperature_C": opt(REAL),
         "viscosity_temperature_coefficient_per_K": opt(NONNEG), "kinematic_viscosity_40C": opt(POS),
@@ -747,6 +752,7 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.wear.SlipResult", "femcam.loads.LoadResult")},
     **{n: RECORDS for n in (
         "femcam.effective_modulus", "femcam.assess.assessment_inputs", "femcam.assess.sweep_table",
+        "femcam.assess.assess", "femcam.assess.assess_rows", "femcam.assess.wear_factor",
         "femcam.assess.csv_columns", "femcam.assess.worst_angles",
         "femcam.bodies.to_csv_columns", "femcam.halfspace.has_finite_length",
         "femcam.halfspace.to_csv_columns", "femcam.kinematics.CamProgram",

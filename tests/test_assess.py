@@ -12,7 +12,7 @@ from femcam.assess import assess, assess_rows
 from femcam.cli import main
 from femcam.errors import InputError, SceneError
 from femcam.io import read_meta
-from femcam.scene import load_scene
+from femcam.scene import contact_case, load_scene
 from femcam.scene.digest import physics_parts
 from femcam.viz.html import png_data_uri
 
@@ -44,7 +44,7 @@ def test_seed002_base_circle_by_hand(tmp_path):
     ASTM D341 viscosity at 70 C; flash temperature by AGMA 925's form (K = 0.80, 2 %); surface
     fatigue by ISO 6336 (sigma_Hlim / p0, Z_NT slope 13.2)."""
     sc = load_scene(EXAMPLE)
-    r = assess_rows(sc, np.radians([300.0]))
+    r = assess_rows(contact_case(sc, np.radians([300.0])))
     E_star = 210e9 / (2 * (1 - 0.3**2))
     w, R = 1500.0 / 0.01, 0.005
     a = math.sqrt(4 * w * R / (math.pi * E_star))
@@ -73,7 +73,7 @@ def test_seed002_base_circle_by_hand(tmp_path):
 
 
 def test_seed002_assessment_summary():
-    res = assess(load_scene(EXAMPLE))
+    res = assess(contact_case(load_scene(EXAMPLE)))
     assert set(res.worst) >= {"film (lambda)", "contact temperature", "shakedown", "surface fatigue"}
     assert res.notes == ()
     lam = res.rows["lam"]
@@ -103,7 +103,7 @@ def test_flat_faced_entrainment_reverses_and_film_collapses(tmp_path):
     flagged no_entrainment."""
     sc = _scene(tmp_path, _flat)
     theta = np.radians(np.arange(0, 360, 1.0))
-    r = assess_rows(sc, theta)
+    r = assess_rows(contact_case(sc, theta))
     d = sc.program.derivatives(theta)
     U = 0.5 * OMEGA * (0.020 + d.s + 2 * d.s2)
     np.testing.assert_allclose(r["U"], U, rtol=1e-9, atol=1e-12)
@@ -130,11 +130,11 @@ def test_knife_edge_needs_tip_radius_and_slides_fully(tmp_path):
         return re.sub(r"\[follower\].*?face_width_mm = 10.0\n", KNIFE, text, flags=re.S)
 
     with pytest.raises(InputError, match="tip_radius_mm"):
-        assess_rows(_scene(tmp_path, knife), np.radians([300.0]))
+        assess_rows(contact_case(_scene(tmp_path, knife), np.radians([300.0])))
     sc = _scene(tmp_path, lambda t: knife(t).replace("face_width_mm = 10.0\n",
                                                      "face_width_mm = 10.0\ntip_radius_mm = 2.0\n"),
                 "k.toml")
-    r = assess_rows(sc, np.radians([300.0]))             # base circle: v_slip = omega Rb
+    r = assess_rows(contact_case(sc, np.radians([300.0])))             # base circle: v_slip = omega Rb
     np.testing.assert_allclose(r["v_slide"][0], OMEGA * 0.020, rtol=1e-9)
     np.testing.assert_allclose(r["R"][0], 0.020 * 0.002 / 0.022, rtol=1e-9)
     assert r["dT_flash"][0] > 0
@@ -142,7 +142,7 @@ def test_knife_edge_needs_tip_radius_and_slides_fully(tmp_path):
 
 def test_huge_load_is_computed_and_flagged(tmp_path):
     sc = _scene(tmp_path, lambda t: t.replace("preload_N = 1500.0", "preload_N = 3.0e6"))
-    r = assess_rows(sc, np.radians([300.0]))
+    r = assess_rows(contact_case(sc, np.radians([300.0])))
     assert np.isfinite(r["h_min"][0]) and r["h_min"][0] > 0
     assert "W_range" in r["flags"][0] and "hertz_validity" in r["flags"][0]
     assert r["sf_yield"][0] < 1                              # and it yields, of course
@@ -151,18 +151,18 @@ def test_huge_load_is_computed_and_flagged(tmp_path):
 def test_fe_table_replaces_hertz(tmp_path):
     sc = load_scene(EXAMPLE)
     theta = np.radians([0.0, 50.0, 300.0])
-    h = assess_rows(sc, theta)
+    h = assess_rows(contact_case(sc, theta))
     p_fe = np.array([h["p0"][0] / 1.1, np.nan, h["p0"][2] / 1.1])
     table = {"theta": theta, "a_fe": h["a"] * 1.1, "p0_fe": p_fe}
     table["a_fe"][1] = np.nan                                 # a failed FE angle keeps Hertz
-    r = assess_rows(sc, theta, table)
+    r = assess_rows(contact_case(sc, theta), table)
     assert list(r["source"]) == ["fe", "hertz", "fe"]
     p_used = np.where(np.isfinite(p_fe), p_fe, h["p0"])
     np.testing.assert_allclose(r["sf_surface_fatigue"], 1500e6 / p_used, rtol=1e-12)
     # FE stress maxima: first yield k / tau1_max (Tresca k = Y/2); the orthogonal shear range over
     # one pass is the FE subsurface txz_range_max, utilisation (dtau/2)/tau_e
     table.update(tau1_max=np.full(3, 500e6), txz_range_max=np.full(3, 400e6))
-    r = assess_rows(sc, theta, table)
+    r = assess_rows(contact_case(sc, theta), table)
     np.testing.assert_allclose(r["sf_yield"][[0, 2]], 850e6 / 500e6, rtol=1e-12)
     np.testing.assert_allclose(r["sf_subsurface"][[0, 2]], 350e6 / 200e6, rtol=1e-12)
     np.testing.assert_allclose(r["sf_yield"][1], h["sf_yield"][1], rtol=1e-12)   # Hertz where FE failed
@@ -174,7 +174,7 @@ def test_missing_lubricant_data_is_one_clear_error(tmp_path):
         return text.replace("oil_temperature_C = 70.0", "")
 
     with pytest.raises(SceneError) as e:
-        assess_rows(_scene(tmp_path, strip), np.radians([0.0]))
+        assess_rows(contact_case(_scene(tmp_path, strip), np.radians([0.0])))
     msg = str(e.value)
     for key in ("[lubricant]", "[surface]", "oil_temperature_C", "pressure_viscosity_per_GPa"):
         assert key in msg, (key, msg)
@@ -183,7 +183,7 @@ def test_missing_lubricant_data_is_one_clear_error(tmp_path):
         return text.replace('name = "ISO VG 46 mineral"', "viscosity_Pa_s = 0.02")
 
     with pytest.raises(SceneError) as e:
-        assess_rows(_scene(tmp_path, partial, "p.toml"), np.radians([0.0]))
+        assess_rows(contact_case(_scene(tmp_path, partial, "p.toml"), np.radians([0.0])))
     msg = str(e.value)
     for key in ("temperature_C (degC)", "viscosity_temperature_coefficient_per_K (1/K)",
                 "lubricant.pressure_viscosity_per_GPa", "lubricant.density_kg_per_m3"):
@@ -193,8 +193,8 @@ def test_missing_lubricant_data_is_one_clear_error(tmp_path):
         _scene(tmp_path, lambda t: t.replace("oil_temperature_C = 70.0", "oil_temperature_C = -300"),
                "t.toml")
     with pytest.raises(SceneError, match="not a table oil"):
-        assess_rows(_scene(tmp_path, lambda t: t.replace("ISO VG 46 mineral", "SAE 5W-30"), "n.toml"),
-                    np.radians([0.0]))
+        assess_rows(contact_case(_scene(tmp_path, lambda t: t.replace("ISO VG 46 mineral", "SAE 5W-30"),
+                                        "n.toml"), np.radians([0.0])))
 
 
 def test_scene_keys_checked_with_units(tmp_path):
@@ -211,7 +211,7 @@ def test_scene_keys_checked_with_units(tmp_path):
 
 def test_missing_material_data_skips_criteria_and_says_so(tmp_path):
     sc = _scene(tmp_path, lambda t: t.replace("shear_fatigue_limit_MPa = 350.0", ""))
-    res = assess(sc, np.radians(np.arange(0, 360, 10.0)))
+    res = assess(contact_case(sc, np.radians(np.arange(0, 360, 10.0))))
     need = "subsurface fatigue: skipped, needs [materials.cam] shear_fatigue_limit_MPa"
     assert any(need in n for n in res.notes), res.notes
     assert np.all(np.isnan(res.rows["sf_subsurface"]))
@@ -263,12 +263,12 @@ def test_wear_map_uses_k_of_lambda_and_says_the_regime(tmp_path):
     theta = np.radians(np.arange(0, 360, 2.0))
     wet = load_scene(EXAMPLE)
     dry = _scene(tmp_path, lambda t: t.split("\n[lubricant]")[0])
-    k_factor, regime = wear_factor(wet, theta)
-    assert wear_factor(dry, theta) == (None, None)
+    k_factor, regime = wear_factor(contact_case(wet, theta))
+    assert wear_factor(contact_case(dry, theta)) == (None, None)
     wm_wet, _, _ = scene_wear(wet, theta, cycles=1.0, k_factor=k_factor, regime=regime)
     wm_dry, _, _ = scene_wear(dry, theta, cycles=1.0)
     assert wm_dry.regime is None and wm_dry.k_factor is None
-    lam = assess_rows(wet, theta)["lam"]
+    lam = assess_rows(contact_case(wet, theta))["lam"]
 
     def F(x):
         return quad(lambda s: (s - x) ** 2.5 * math.exp(-s * s / 2), x, np.inf)[0]
@@ -282,7 +282,7 @@ def test_cli_assess_from_a_sweep_npz_and_bad_angles(tmp_path, capsys):
     """--sweep takes the angles and FE a/p0 of a sweep's sweep.npz (written here by hand)."""
     sc = load_scene(EXAMPLE)
     theta = np.radians(np.arange(0.0, 360.0, 30.0))
-    h = assess_rows(sc, theta)
+    h = assess_rows(contact_case(sc, theta))
     sw = tmp_path / "sw"
     sw.mkdir()
     prov = {"scene_physics_parts": physics_parts(sc)}   # the scene the sweep records (its check)
@@ -304,8 +304,8 @@ def test_inertia_roller_model_on_a_sweep_chunk(tmp_path):
     """The inertia-limited roller needs a whole revolution; on a chunk of angles the speeds are
     those of the whole-revolution solution (interpolated, exact at its 0.5 deg grid points)."""
     sc = _scene(tmp_path, lambda t: t + '\n[wear]\nroller_model = "inertia"\n')
-    full = assess_rows(sc, np.radians(np.arange(0.0, 360.0, 0.5)))
-    chunk = assess_rows(sc, np.radians([10.0, 74.0, 200.5]))
+    full = assess_rows(contact_case(sc, np.radians(np.arange(0.0, 360.0, 0.5))))
+    chunk = assess_rows(contact_case(sc, np.radians([10.0, 74.0, 200.5])))
     idx = [20, 148, 401]
     np.testing.assert_allclose(chunk["u_follower"], full["u_follower"][idx], rtol=1e-12)
     np.testing.assert_allclose(chunk["lam"], full["lam"][idx], rtol=1e-12)
@@ -318,8 +318,8 @@ def test_inertia_roller_model_on_a_sweep_chunk(tmp_path):
 def test_dry_assessment_of_a_scene_without_tribology_data():
     """lubricated=False on seed 002's study model (no lubricant, no material extras): no film,
     every criterion skipped with the keys that would enable it, dry k everywhere."""
-    res = assess(load_scene("examples/seed002_study_model.toml"), np.radians(np.arange(0, 360, 30.0)),
-                 lubricated=False)
+    res = assess(contact_case(load_scene("examples/seed002_study_model.toml"),
+                              np.radians(np.arange(0, 360, 30.0))), lubricated=False)
     r = res.rows
     assert set(r["regime"]) == {"dry"} and np.all(np.isnan(r["lam"]))
     assert np.all(np.isnan(r["sf_shakedown"])) and np.all(np.isnan(r["dT_flash"]))

@@ -14,7 +14,8 @@ import numpy as np
 
 from femcam.assess import assess
 from femcam.cli import main
-from femcam.scene import load_scene
+from femcam.layers.from_scene import scene_coatings
+from femcam.scene import contact_case, load_scene
 from femcam.sweep.headline import omitted_physics as headline_omitted
 
 EXAMPLE = Path("examples/seed002_assess.toml")
@@ -40,14 +41,15 @@ def test_the_assessment_of_a_coated_scene_flags_every_contact_row(tmp_path):
     # FE sweep's coated model carries the coating: no flag there)
     assert [f for f, _ in headline_omitted(scene, "hertz")] == ["headline_omits_coating"]
     assert headline_omitted(scene, "fe") == ()
-    res = assess(scene, np.radians([0.0, 60.0, 90.0]))
+    res = assess(contact_case(scene, np.radians([0.0, 60.0, 90.0])), coatings=scene_coatings(scene))
     on = res.rows["Fc"] > 0
     assert on.all()
     assert all("omits_coating" in f.split(";") for f in res.rows["flags"])
     assert len(res.omitted) == 1
     assert res.omitted[0].startswith("the assessment treats the coated body as homogeneous: "
                                      "the roller's 2.5 um coating (E 170 GPa)")
-    plain = assess(load_scene(EXAMPLE), np.radians([0.0, 60.0]))
+    plain_scene = load_scene(EXAMPLE)
+    plain = assess(contact_case(plain_scene, np.radians([0.0, 60.0])), coatings=scene_coatings(plain_scene))
     assert plain.omitted == () and not any("omits_coating" in f for f in plain.rows["flags"])
 
 

@@ -28,7 +28,7 @@ from femcam.cli import main
 from femcam.fe import ContactModel, MeshOptions
 from femcam.hertz import LineContact, max_shear_range
 from femcam.materials import STEEL
-from femcam.scene import load_scene
+from femcam.scene import contact_case, load_scene
 from femcam.sweep import sweep
 
 EXAMPLE = "examples/seed002_assess.toml"
@@ -160,7 +160,7 @@ def test_fe_fed_and_hertz_fed_subsurface_safety_agree(fe_sweep):
     t = r.table
     assert set(t["status"]) == {"ok"} and np.all(np.abs(t["err_p0"]) < 2e-3)
     scene = load_scene(EXAMPLE)
-    hertz = assess_rows(scene, TH)
+    hertz = assess_rows(contact_case(scene, TH))
     assert set(t["assess_source"]) == {"fe"}
     np.testing.assert_allclose(t["assess_sf_subsurface"], hertz["sf_subsurface"], rtol=1e-2,
                                err_msg="FE-fed vs Hertz-fed subsurface fatigue safety")
@@ -174,7 +174,7 @@ def test_assess_of_the_sweep_folder_equals_the_inline_assessment(fe_sweep, tmp_p
     """`femcam assess --sweep DIR` and the sweep's inline assessment compute the same thing, and
     both feed the FE subsurface range to the orthogonal-shear criterion."""
     r, out = fe_sweep
-    res = assess(load_scene(EXAMPLE), TH, table=r)
+    res = assess(contact_case(load_scene(EXAMPLE), TH), table=r)
     np.testing.assert_allclose(res.rows["dtau_orth"], r.table["txz_range_max"], rtol=1e-12)
     np.testing.assert_allclose(res.rows["sf_subsurface"], r.table["assess_sf_subsurface"], rtol=1e-12)
     assert main(["assess", EXAMPLE, "--sweep", str(out), "--out", str(tmp_path / "a"), "--no-plots"]) == 0
@@ -201,7 +201,7 @@ def test_sweep_folder_without_the_range_falls_back_to_hertz(fe_sweep, tmp_path, 
     assert main(["assess", EXAMPLE, "--sweep", str(old), "--out", str(tmp_path / "a"), "--no-plots"]) == 0
     text = capsys.readouterr().out
     assert "note:" in text and "txz_range_max" in text
-    res = assess(load_scene(EXAMPLE), TH, table={k: v for k, v in arrays.items()})
+    res = assess(contact_case(load_scene(EXAMPLE), TH), table={k: v for k, v in arrays.items()})
     np.testing.assert_allclose(res.rows["dtau_orth"], max_shear_range(0.1).value * res.rows["p0"], rtol=1e-12)
     assert any("txz_range_max" in n for n in res.notes)
 
@@ -212,10 +212,10 @@ def test_fe_row_without_a_range_keeps_hertz_and_is_flagged():
     with a range takes it as dtau_orth, utilisation (dtau/2)/tau_e with tau_e = 350 MPa."""
     scene = load_scene(EXAMPLE)
     th = np.radians([0.0, 74.0])
-    h = assess_rows(scene, th)
+    h = assess_rows(contact_case(scene, th))
     table = {"a_fe": h["a"], "p0_fe": h["p0"] * 1.01, "tau1_max": 0.3 * h["p0"],
              "txz_range_max": np.array([np.nan, 0.49 * h["p0"][1]])}
-    r = assess_rows(scene, th, table)
+    r = assess_rows(contact_case(scene, th), table)
     # rtol 1e-8: the range is exactly 0.5 p0 (Johnson 1985 §4.2.3); femcam's search reaches it to 2e-9
     np.testing.assert_allclose(r["dtau_orth"], [0.5 * 1.01 * h["p0"][0], 0.49 * h["p0"][1]], rtol=1e-8)
     np.testing.assert_allclose(r["sf_subsurface"], 350e6 / (0.5 * r["dtau_orth"]), rtol=1e-12)

@@ -16,7 +16,7 @@ import pytest
 from femcam.assess import assess, sweep_table
 from femcam.cli import main
 from femcam.errors import InputError
-from femcam.scene import load_scene
+from femcam.scene import contact_case, load_scene
 from femcam.sweep import sweep
 
 EXAMPLE = Path("examples/seed002_assess.toml")
@@ -56,13 +56,13 @@ def test_a_damaged_column_is_refused_with_one_line(tmp_path, swept, capsys, colu
 
 def test_rows_that_fall_back_to_hertz_are_counted(tmp_path, swept, capsys):
     scene = load_scene(EXAMPLE)
-    hertz = assess(scene, np.radians([60.0, 90.0]))
+    hertz = assess(contact_case(scene, np.radians([60.0, 90.0])))
 
     def one_fe_row(a):   # the FE answered the first row only (its Hertz values, as if FE)
         a["a_fe"][0], a["p0_fe"][0] = hertz.rows["a"][0], hertz.rows["p0"][0]
 
     part = _damaged(tmp_path, swept, one_fe_row)
-    res = assess(scene, table=sweep_table(part, scene), theta=np.radians([60.0, 90.0]))
+    res = assess(contact_case(scene, np.radians([60.0, 90.0])), table=sweep_table(part, scene))
     assert list(res.rows["source"]) == ["fe", "hertz"]
     assert any(n.startswith("contact: 1 of 2 angles fall back to Hertz") for n in res.notes)
     out = tmp_path / "o"

@@ -13,7 +13,7 @@ from femcam.errors import InputError
 from femcam.kinematics import law
 from femcam.optimise import optimise
 from femcam.optimise.chain import residual_vibration
-from femcam.scene import load_scene
+from femcam.scene import contact_case, load_scene
 
 ASSESS = "examples/seed002_assess.toml"
 DYNAMIC = "examples/seed002_dynamic.toml"
@@ -52,10 +52,10 @@ def test_lambda_objective_raises_lambda_min_and_matches_assess():
     assert lam_opt >= lam_start
     # independent: the assessment's own lambda of the optimal design on a uniform 0.1 deg grid
     th = np.linspace(0.0, 2.0 * math.pi, 3601)
-    lam = np.asarray(assess(_variant(sc, r), th).rows["lam"], float)
+    lam = np.asarray(assess(contact_case(_variant(sc, r), th)).rows["lam"], float)
     np.testing.assert_allclose(np.nanmin(lam), lam_opt, rtol=1e-9,
                                err_msg="lambda_min of the optimum against femcam.assess.assess")
-    lam0 = np.asarray(assess(sc, th).rows["lam"], float)
+    lam0 = np.asarray(assess(contact_case(sc, th)).rows["lam"], float)
     np.testing.assert_allclose(np.nanmin(lam0), lam_start, rtol=1e-9)
 
 

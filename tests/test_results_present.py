@@ -16,7 +16,7 @@ import pytest
 from femcam._repr import MAX_REPR, compact_repr
 from femcam.fe.result import ContactResult
 from femcam.io import csv_text
-from femcam.scene import load_scene
+from femcam.scene import contact_case, load_scene
 from femcam.sweep import SweepResult, sweep
 
 EX = Path(__file__).resolve().parents[1] / "examples"
@@ -120,7 +120,7 @@ def test_assessment_repr_and_dataframe():
     from femcam.assess import assess, csv_columns
 
     theta = np.radians(np.arange(0.0, 360.0, 30.0))
-    a = assess(load_scene(EX / "seed002_assess.toml"), theta)
+    a = assess(contact_case(load_scene(EX / "seed002_assess.toml"), theta))
     c, (v, t, _) = next(iter(a.worst.items()))
     _short(repr(a), r"^Assessment\('", "12 angles", re.escape(f"{c} {v:.4g} at {math.degrees(t):.1f} deg"))
     df = a.to_dataframe()

@@ -24,7 +24,7 @@ from femcam.halfspace.rows import COLUMNS as HS_COLUMNS
 from femcam.halfspace.rows import finite_length_rows
 from femcam.io import read_csv
 from femcam.layers import scene_layer_rows
-from femcam.scene import load_scene
+from femcam.scene import contact_case, load_scene
 from femcam.sweep import extras, providers, sweep
 from femcam.wear.options import wear_coefficient_info
 
@@ -66,7 +66,7 @@ def test_plain_scene_has_no_extra_columns(tmp_path):
 def test_assess_columns_equal_direct_call(tmp_path):
     scene = load_scene(EX + "seed002_assess.toml")
     r, cols = _sweep_csv(scene, TH8, tmp_path, chunk_size=3)
-    direct = assess_rows(scene, TH8)          # method hertz: no FE a/p0, Hertz as the direct call
+    direct = assess_rows(contact_case(scene, TH8))    # method hertz: no FE a/p0, Hertz as the direct call
     for si, csv, f in ((c.si, c.csv, c.factor) for c in ASSESS_COLUMNS):
         if si in ("theta", "Fc"):
             continue
@@ -96,7 +96,7 @@ def test_assess_uses_fe_contact_of_the_sweep(tmp_path):
     scene = load_scene(EX + "seed002_assess.toml")
     th = np.radians([0.0, 130.0])
     r, cols = _sweep_csv(scene, th, tmp_path, method="fe")
-    direct = assess_rows(scene, th, table=r.table)
+    direct = assess_rows(contact_case(scene, th), table=r.table)
     _close(cols["assess_p0_MPa"], direct["p0"], 1e-6)
     _close(cols["assess_p0_MPa"], cols["p0_fe_MPa"])        # FE p0 replaces Hertz where finite
     _close(cols["sf_yield"], direct["sf_yield"])
@@ -384,6 +384,6 @@ def test_undercut_rows_are_left_out_of_the_providers():
     task = types.SimpleNamespace(scene=scene, theta=TH8[:4])
     out = providers.assess_chunk(task, rows)
     keep = np.array([0, 2, 3])
-    direct = assess_rows(scene, TH8[:4][keep])
+    direct = assess_rows(contact_case(scene, TH8[:4][keep]))
     assert np.isnan(out["assess_lam"][1]) and out["assess_regime"][1] == ""
     np.testing.assert_allclose(out["assess_lam"][keep], direct["lam"], rtol=1e-12)

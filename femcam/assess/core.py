@@ -1,12 +1,16 @@
 """Per-angle assessment of a cam-follower scene: film, flash temperature, yield, shakedown,
 contact fatigue, scuffing and the wear coefficient of the lubrication regime.
 
-Chain per cam angle (vectorised): :meth:`Scene.analyse` (kinematics, profile, contact force) ->
+The functions take the scene's contact as a :class:`femcam.scene.case.ContactCase`
+(``contact_case(scene, theta)``) and the coated bodies (``(body, coating)`` pairs) from the caller.
+
+Chain per cam angle (vectorised): :meth:`Scene.analyse` (kinematics, profile, contact force; the
+case's ``state``) ->
 :func:`femcam.wear.slip.follower_slip` (surface speeds ``u1 = V_cam``, ``u2 = V_follower``; roller
 slip model of the scene's ``[wear]``) -> :class:`femcam.hertz.LineContact` (or the FE ``a``/``p0``
 of a sweep table) -> :mod:`femcam.tribology` formulas.
 
-Followers: roller (``R2 = Rr``, slip model), knife-edge with a tip radius (``[wear]
+Followers: roller (``R2 = Rr``, slip model), knife-edge with a tip radius (``[follower]
 tip_radius_mm``; the cam cut for the radiused tip, full sliding; a sharp tip is refused: it has no
 contact width), flat-faced (``R2 = inf``; the entrainment speed ``(u1 + u2)/2`` passes through zero
 where ``rho + s'' = 0``... and the film collapses there, flagged ``no_entrainment``).
@@ -21,7 +25,6 @@ coated body were homogeneous, :func:`omitted_physics`).
 
 from __future__ import annotations
 
-import dataclasses
 import math
 import warnings
 from dataclasses import dataclass
@@ -33,11 +36,11 @@ from .._columns import Column
 from .._repr import compact_repr, dataframe
 from ..errors import InputError
 from ..hertz import HertzValidityWarning, LineContact
-from ..layers.from_scene import coating_phrase, scene_coatings
-from ..profile import RollerFollower
+from ..layers.from_scene import coating_phrase
+from ..scene.case import ContactCase
 from ..tribology import fatigue, film, flash
 from ..tribology.regime import wear_coefficient
-from ..wear.options import follower_tip_radius, slip_kwargs, wear_coefficient_info
+from ..wear.options import slip_kwargs, wear_coefficient_info
 from ..wear.slip import follower_slip
 from .inputs import AssessInputs, assessment_inputs
 
@@ -81,25 +84,23 @@ WORST = {"film (lambda)": ("lam", "min"), "contact temperature": ("T_contact", "
          "surface fatigue": ("sf_surface_fatigue", "min"), "pitting life": ("N_pitting", "min")}
 
 
-def _where(scene) -> str:
-    """The scene as an error names it: its file, else its name."""
-    return scene.source_path or scene.name
+def _case(case) -> ContactCase:
+    return _validate.instance("case", case, ContactCase, "a femcam.scene.case.ContactCase "
+                              "(femcam.scene.case.contact_case(scene, theta))")
 
 
-def _geometry(scene):
-    """``(scene for the kinematics, R2 in m, tip radius or None)`` per follower type."""
-    if getattr(scene.follower, "draws_circle", False):  # R2 = Rr: a roller, on a slide or an arm, or a pad
-        return scene, scene.follower.Rr, None
-    if getattr(scene.follower, "flat_face", False):
-        return scene, math.inf, None
-    tip = follower_tip_radius(scene)
-    if tip is None:
+def _geometry(case: ContactCase):
+    """``(R2 in m, tip radius or None)`` per follower type (a knife edge's case state is the cam
+    cut for its radiused tip)."""
+    if getattr(case.follower, "draws_circle", False):  # R2 = Rr: a roller, on a slide or an arm, or a pad
+        return case.follower.Rr, None
+    if getattr(case.follower, "flat_face", False):
+        return math.inf, None
+    if case.tip_radius is None:
         raise InputError("follower type = knife_edge: a sharp tip has no contact width, so film, "
                          "pressure and temperatures are undefined; give the tip radius: scene [follower] "
                          "tip_radius_mm (mm)")
-
-    f = scene.follower
-    return dataclasses.replace(scene, follower=RollerFollower(Rb=f.Rb, Rr=tip, e=f.e)), tip, tip
+    return case.tip_radius, case.tip_radius
 
 
 def _contact(sc, st, R2, table, n):
@@ -120,19 +121,19 @@ def _contact(sc, st, R2, table, n):
     return Fc, a, p0, w, np.broadcast_to(hc.R, (n,)), hc.E_star, np.broadcast_to(hc.valid, (n,)), source
 
 
-def _speeds(scene, sc, st, theta, Fc, tip):
+def _speeds(case: ContactCase, st, theta, Fc, tip):
     """Surface speeds ``(V_cam, V_follower)`` at ``theta``. The inertia-limited roller model needs
-    one whole revolution: for any other set of angles (a sweep chunk) it is solved on 720 angles
-    and interpolated (periodic, linear)."""
-    kw = slip_kwargs(scene.wear, omega=scene.omega, mu=scene.mu, follower=scene.follower)
+    one whole revolution: for any other set of angles (a sweep chunk) it is solved on the case's
+    ``revolution`` angles and interpolated (periodic, linear)."""
+    kw = slip_kwargs(case.wear, omega=case.omega, mu=case.mu, follower=case.follower)
     full = theta.size >= 4 and np.allclose(np.diff(theta), theta[1] - theta[0]) and \
         abs(theta[-1] - theta[0] + (theta[1] - theta[0]) - 2.0 * math.pi) < 1e-9
-    if kw["roller_model"] != "inertia" or not getattr(scene.follower, "translating_roller", False) or full:
-        r = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, tip_radius=tip, **kw)
+    if kw["roller_model"] != "inertia" or case.revolution is None or full:
+        r = follower_slip(case.follower, theta, st.s, st.s1, st.s2, Fc=Fc, tip_radius=tip, **kw)
         return r.V_cam, r.V_follower
-    grid = np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False)
-    sg = sc.analyse(grid)
-    r = follower_slip(scene.follower, grid, sg.s, sg.s1, sg.s2, Fc=np.where(sg.liftoff, 0.0, sg.Fc), **kw)
+    sg = case.revolution
+    grid = sg.theta
+    r = follower_slip(case.follower, grid, sg.s, sg.s1, sg.s2, Fc=np.where(sg.liftoff, 0.0, sg.Fc), **kw)
     th = np.mod(theta, 2.0 * math.pi)
     return (np.interp(th, grid, r.V_cam, period=2.0 * math.pi),
             np.interp(th, grid, r.V_follower, period=2.0 * math.pi))
@@ -205,9 +206,9 @@ def _fe_stresses(inp, table, source, out, flags):
             out["sf_subsurface"] = np.where(out["util_subsurface"] > 0, 1.0 / out["util_subsurface"], np.inf)
 
 
-def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
-                inputs: AssessInputs | None = None) -> dict:
-    """Assessment columns at cam angles ``theta`` (rad): dict of arrays, SI names of :data:`COLUMNS`
+def assess_rows(case: ContactCase, table=None, *, lubricated: bool = True,
+                inputs: AssessInputs | None = None, coatings=()) -> dict:
+    """Assessment columns at the case's cam angles: dict of arrays, SI names of :data:`COLUMNS`
     plus the text columns ``regime``, ``flags``, ``source`` (``hertz``/``fe``).
 
     ``table``: optional sweep table (mapping with ``a_fe``, ``p0_fe`` per angle in m, Pa; optional
@@ -222,17 +223,19 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        The cam-follower scene (kinematics, profile, loads, materials, ``tribology`` data).
-    theta : float or array_like, shape (n,)
-        Cam angles [rad].
+    case : femcam.scene.case.ContactCase
+        The scene's contact at cam angles ``theta`` [rad] (state, materials, friction, speed,
+        ``tribology`` and ``wear`` data): ``contact_case(scene, theta)``.
     table : mapping or SweepResult, optional
         Sweep table with per-angle ``a_fe`` [m], ``p0_fe`` [Pa] and optionally ``tau1_max``,
         ``txz_range_max`` [Pa]; None: Hertz only.
     lubricated : bool
         Assess the EHL film (needs ``[lubricant]``, ``[surface]``, ``oil_temperature_C``).
     inputs : AssessInputs, optional
-        Pre-checked inputs; default :func:`assessment_inputs` of ``scene``.
+        Pre-checked inputs; default :func:`assessment_inputs` of ``case.tribology``.
+    coatings : sequence of (str, coating)
+        The scene's coated bodies (:func:`femcam.layers.from_scene.scene_coatings`): their
+        contact rows are flagged ``omits_coating``.
 
     Returns
     -------
@@ -247,24 +250,24 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
     InputError
         A sharp knife-edge follower (no tip radius).
     """
-    _validate.record("scene", scene, "a femcam.scene.Scene", "tribology", "analyse")
-    inp = inputs or assessment_inputs(scene.tribology, lubricated=lubricated, where=_where(scene))
-    table = getattr(table, "table", table)                   # a SweepResult or its table mapping
-    theta = np.atleast_1d(_validate.finite_array("theta", theta, "rad"))
+    case = _case(case)
+    theta = case.theta
     n = _validate.angle_count("theta", f"{theta.size} angles", theta.size, 3600.0, "the assessment",
                               _validate.MAX_ASSESS_ANGLES)
-    sc, R2, tip = _geometry(scene)
-    st = sc.analyse(theta)
-    Fc, a, p0, w, R, E_star, valid, source = _contact(sc, st, R2, table, n)
-    u1, u2 = _speeds(scene, sc, st, theta, Fc, tip)
+    inp = inputs or assessment_inputs(case.tribology, lubricated=lubricated, where=case.where)
+    table = getattr(table, "table", table)                   # a SweepResult or its table mapping
+    R2, tip = _geometry(case)
+    st = case.state
+    Fc, a, p0, w, R, E_star, valid, source = _contact(case, st, R2, table, n)
+    u1, u2 = _speeds(case, st, theta, Fc, tip)
     out = {c.si: np.full(n, np.nan) for c in COLUMNS}
     out.update(theta=theta, Fc=Fc, cam_x=st.profile.x, cam_y=st.profile.y)
     out.update(R=R, a=a, p0=p0, u_cam=u1, u_follower=u2, U=0.5 * (u1 + u2),
                v_slide=np.abs(u1 - u2))
     flags = [("liftoff", np.asarray(st.liftoff, bool)), ("hertz_validity", ~np.asarray(valid, bool))]
-    if omitted_physics(scene):
+    if omitted_physics(coatings):
         flags.append(("omits_coating", Fc > 0))
-    k0 = wear_coefficient_info(scene.wear, scene.cam.hardness)[0]
+    k0 = wear_coefficient_info(case.wear, case.cam.hardness)[0]
     regime = np.full(n, "dry", dtype=object)
     if inp.lubricant is not None:
         eta0 = float(inp.lubricant.viscosity(inp.T_oil))
@@ -276,8 +279,8 @@ def assess_rows(scene, theta, table=None, *, lubricated: bool = True,
         flags += [(nm, m & (Fc > 0)) for nm, m in f["flags"]]
     else:
         out["k_wear"] = np.full(n, k0)
-    _thermal(inp, scene.mu, w, a, u1, u2, inp.T_oil, out, flags)
-    _strength(inp, scene.mu, p0, out)
+    _thermal(inp, case.mu, w, a, u1, u2, inp.T_oil, out, flags)
+    _strength(inp, case.mu, p0, out)
     if table is not None:
         _fe_stresses(inp, table, source, out, flags)
     out["regime"] = np.where(Fc > 0, regime, "no contact")
@@ -387,19 +390,21 @@ def worst_angles(rows: dict) -> dict:
     return res
 
 
-def assess(scene, theta=None, *, table=None, lubricated: bool = True) -> Assessment:
-    """Assess ``scene`` at ``theta`` (rad; default 360 angles over one revolution).
+def assess(case: ContactCase, *, table=None, lubricated: bool = True, coatings=()) -> Assessment:
+    """Assess a scene's contact at the case's cam angles (``contact_case(scene)``: 360 angles
+    over one revolution).
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        The scene to assess.
-    theta : array_like, shape (n,), optional
-        Cam angles [rad]; default 360 angles over one revolution.
+    case : femcam.scene.case.ContactCase
+        The scene's contact at cam angles [rad] (:func:`femcam.scene.case.contact_case`).
     table : mapping or SweepResult, optional
         Sweep table whose FE values replace Hertz's (see :func:`assess_rows`).
     lubricated : bool
         Assess the EHL film (needs the lubricant data).
+    coatings : sequence of (str, coating)
+        The scene's coated bodies (:func:`femcam.layers.from_scene.scene_coatings`), which the
+        assessment leaves out (:func:`omitted_physics`).
 
     Returns
     -------
@@ -411,11 +416,9 @@ def assess(scene, theta=None, *, table=None, lubricated: bool = True) -> Assessm
     SceneError
         A lubricated assessment without its lubricant, roughness or oil temperature data.
     """
-    if theta is None:
-        theta = np.linspace(0.0, 2.0 * math.pi, 360, endpoint=False)
-    _validate.record("scene", scene, "a femcam.scene.Scene", "tribology", "analyse")
-    inp = assessment_inputs(scene.tribology, lubricated=lubricated, where=_where(scene))
-    rows = assess_rows(scene, theta, table, inputs=inp)
+    case = _case(case)
+    inp = assessment_inputs(case.tribology, lubricated=lubricated, where=case.where)
+    rows = assess_rows(case, table, inputs=inp, coatings=coatings)
     notes = tuple(f"{crit}: skipped, needs {', '.join(keys)}" for crit, keys in inp.skipped.items())
     fe_rows = np.asarray(rows["source"]) == "fe"
     if table is not None and not np.all(fe_rows):
@@ -426,22 +429,22 @@ def assess(scene, theta=None, *, table=None, lubricated: bool = True) -> Assessm
         notes += ("subsurface fatigue: the sweep table has no txz_range_max (a sweep written before "
                   "femcam computed the FE range of txz over one pass): dtau_orth is Hertz's range "
                   "(McEwen) at the FE p0 on every FE row; re-run the sweep for the FE field",)
-    return Assessment(scene_name=scene.name, rows=rows, inputs=inp, worst=worst_angles(rows), notes=notes,
-                      omitted=omitted_physics(scene))
+    return Assessment(scene_name=case.name, rows=rows, inputs=inp, worst=worst_angles(rows), notes=notes,
+                      omitted=omitted_physics(coatings))
 
 
-def omitted_physics(scene) -> tuple[str, ...]:
-    """What ``scene`` holds that the assessment leaves out, one sentence each: a coating (the
-    scene test of :func:`femcam.layers.from_scene.scene_coatings`, the one the sweep's
-    ``headline_omits_coating`` uses). The film, the flash temperature and the strength and
+def omitted_physics(coatings) -> tuple[str, ...]:
+    """What a scene with these coated bodies holds that the assessment leaves out, one sentence
+    each: a coating (from :func:`femcam.layers.from_scene.scene_coatings`, the scene test the
+    sweep's ``headline_omits_coating`` uses). The film, the flash temperature and the strength and
     fatigue data are the substrate's; the contact and its stresses are the coated model's where
     they come from an FE sweep table (``femcam sweep``, whose headline FE carries the coating),
     Hertz's of homogeneous bodies otherwise. Every contact row carries the flag ``omits_coating``.
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        The scene assessed.
+    coatings : sequence of (str, coating)
+        The scene's coated bodies, ``(body, coating)`` pairs (thickness [m], modulus [Pa]).
 
     Returns
     -------
@@ -452,7 +455,7 @@ def omitted_physics(scene) -> tuple[str, ...]:
                  "not in its film, flash temperature or fatigue data (the substrate's are used; flag "
                  "omits_coating), nor in its contact unless that comes from a femcam sweep's FE (the "
                  "coated model); the coating's own stresses are the coating_* and interface_* columns "
-                 "of femcam sweep" for body, c in scene_coatings(scene))
+                 "of femcam sweep" for body, c in coatings)
 
 
 def csv_columns(rows: dict) -> dict:
@@ -473,20 +476,17 @@ def csv_columns(rows: dict) -> dict:
     return out
 
 
-def wear_factor(scene, theta, table=None, tip_radius=None):
+def wear_factor(case: ContactCase, table=None):
     """The Archard coefficient's lubrication factor and regime per angle, for the wear map.
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        The scene (its ``[wear]`` coefficient and ``[lubricant]``).
-    theta : ndarray, shape (n,)
-        Cam angles [rad].
+    case : femcam.scene.case.ContactCase
+        The scene's contact at cam angles [rad] (its ``[wear]`` coefficient, ``[lubricant]``
+        and knife-edge tip radius [m]).
     table : dict, optional
         A sweep table (FE ``a_fe`` [m] / ``p0_fe`` [Pa] used where finite), as for
         :func:`assess_rows`.
-    tip_radius : float, optional
-        Knife-edge tip radius [m].
 
     Returns
     -------
@@ -495,13 +495,9 @@ def wear_factor(scene, theta, table=None, tip_radius=None):
     regime : ndarray of str, shape (n,), or None
         ``boundary`` / ``mixed`` / ``full`` per angle (``no contact`` where ``Fc = 0``).
     """
-    theta = _validate.finite_array("theta", theta, "rad")
-    tip_radius = _validate.optional(_validate.positive, "tip_radius", tip_radius, "m")
-    _validate.record("scene", scene, "a femcam.scene.Scene", "follower", "analyse")
-    k = wear_coefficient_info(scene.wear, scene.cam.hardness)[0]
-    if scene.tribology.lubricant is None or not k > 0:
+    case = _case(case)
+    k = wear_coefficient_info(case.wear, case.cam.hardness)[0]
+    if case.tribology.lubricant is None or not k > 0:
         return None, None
-    if tip_radius is not None:
-        scene = dataclasses.replace(scene, tip_radius=tip_radius)
-    r = assess_rows(scene, theta, table)
+    r = assess_rows(case, table)
     return r["k_wear"] / k, r["regime"]

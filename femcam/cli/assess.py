@@ -20,7 +20,9 @@ import sys
 from .. import _validate
 from ..assess import assess, csv_columns, sweep_table
 from ..io import atomic_write_text, provenance, write_table
+from ..layers.from_scene import scene_coatings
 from ..scene import load_scene
+from ..scene.case import contact_case
 from ..viz.assess import plot_assessment, report_markdown
 from ..viz.html import markdown_page
 from ._common import add_no_plots, add_overwrite, add_scene_out, out_dir, plain, refuse_non_empty
@@ -72,7 +74,7 @@ def _run(args) -> int:
                           args.sweep if table is not None else args.angles_deg, theta.size, 3600.0,
                           "femcam assess", _validate.MAX_ASSESS_ANGLES)
     refuse_non_empty(args.out, args.overwrite)  # the rule of every subcommand, before the work
-    res = assess(scene, theta, table=table)
+    res = assess(contact_case(scene, theta), table=table, coatings=scene_coatings(scene))
     out = out_dir(args.out)
     prov = provenance(scene_path=args.scene, command=shlex.join(["femcam", "assess", *sys.argv[2:]]))
     write_table(out / "assessment.csv", csv_columns(res.rows), prov,

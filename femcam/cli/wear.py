@@ -36,6 +36,7 @@ from ..halfspace.rows import has_finite_length
 from ..io import provenance, write_rows, write_table
 from ..kinematics import LAW_NAMES
 from ..scene import load_scene
+from ..scene.case import contact_case
 from ..sweep import sweep
 from ..viz.wear import plot_evolution, plot_wear_comparison, plot_wear_map, plot_wear_polar
 from ..wear.axial import scene_wear_map
@@ -187,7 +188,8 @@ def _map(args) -> int:
         if args.source == "fe":  # the FE pressure: a sweep of the scene (a knife edge as itself)
             fe = sweep(_fe_scene(sc, tip), angles=theta, method="fe",
                        progress=None, **sc.fe)  # the scene's [fe] settings; progress on a terminal
-        k_factor, regime = wear_factor(sc, theta, fe.table if fe is not None else None, tip)
+        k_factor, regime = wear_factor(contact_case(sc, theta, tip_radius=tip),
+                                       fe.table if fe is not None else None)
         with phase(f"wear map: {label}"):
             wm, st, slip = scene_wear_map(sc, theta, cycles=cycles, tip_radius=tip, fe=fe,
                                           k_factor=k_factor, regime=regime)  # axial peak if crowned

@@ -40,7 +40,9 @@ from ..errors import InputError, PhysicsError
 from ..hertz import LineContact
 from ..hertz.conformity import shape_factors
 from ..hertz.contact import HertzValidityWarning
+from ..layers.from_scene import scene_coatings
 from ..profile import cam_profile, pitch_curvature
+from ..scene.case import contact_case
 from ..wear.map import wear_depth_per_angle
 from ..wear.options import slip_kwargs, wear_coefficient_info
 from ..wear.slip import follower_slip
@@ -279,7 +281,7 @@ def _assessment(scene, theta, objective, safety_min, lambda_min) -> dict:
     ``theta``, the ``utilisation`` objective 1/sf and the margins; an undercut trial design (the
     assessment refuses it) gets sf = lambda = 0: every margin -1."""
     try:
-        rows = assess(scene, theta).rows
+        rows = assess(contact_case(scene, theta), coatings=scene_coatings(scene)).rows
         sf = np.array([np.asarray(rows[c], float) if c in rows else np.full(theta.size, np.nan)
                        for c in SF_COLUMNS])
         lam = np.asarray(rows.get("lam", np.full(theta.size, np.nan)), float)

@@ -63,6 +63,7 @@ Only numpy/scipy and the standard library (``tomllib``) are imported.
 """
 
 from .bodies import roller_support_problems
+from .case import ContactCase, contact_case
 from .checker import MAX_PROBLEMS
 from .load import load_scene
 from .schema import METHODS, STUDY_RANGES, STUDY_WHOLE, TOLERANCE_FLOOR, study_problem
@@ -71,6 +72,6 @@ from .tribology import LubricantData, MaterialData, SurfaceRoughness, Tribology
 from .wear import WearSettings, wear_table
 
 __all__ = ["MAX_PROBLEMS", "METHODS", "STUDY_RANGES", "STUDY_WHOLE", "TOLERANCE_FLOOR",
-           "UNDERCUT_CHECK_N", "LubricantData", "MaterialData", "Scene", "SceneState", "SurfaceRoughness",
-           "Tribology", "WearSettings", "load_scene", "roller_support_problems", "study_problem",
-           "wear_table"]
+           "UNDERCUT_CHECK_N", "ContactCase", "LubricantData", "MaterialData", "Scene", "SceneState",
+           "SurfaceRoughness", "Tribology", "WearSettings", "contact_case", "load_scene",
+           "roller_support_problems", "study_problem", "wear_table"]

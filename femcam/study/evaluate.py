@@ -38,6 +38,8 @@ from ..dynamics import jump_speed
 from ..errors import FemcamError, InputError
 from ..hertz import HertzValidityWarning, LineContact
 from ..hertz.conformity import shape_factors
+from ..layers.from_scene import scene_coatings
+from ..scene.case import contact_case
 from ..wear.scene import scene_wear
 from .spec import whole
 
@@ -107,7 +109,7 @@ def _assessment(scene, theta) -> tuple:
         return math.nan, math.nan
     lub = scene.tribology.lubricant is not None
     try:
-        A = assess(scene, theta, lubricated=lub)
+        A = assess(contact_case(scene, theta), lubricated=lub, coatings=scene_coatings(scene))
     except FemcamError:
         return math.nan, math.nan
     not_sf = ("film (lambda)", "contact temperature", "pitting life")

@@ -30,6 +30,8 @@ from ..halfspace.rows import COLUMNS as HS_COLUMNS
 from ..halfspace.rows import finite_length_rows, strip_for_scene
 from ..io import vtu_name, write_global_cam_vtu
 from ..layers import result_layer_row, scene_layer_rows, scene_layers
+from ..layers.from_scene import scene_coatings
+from ..scene.case import contact_case
 from ..wear.coating import coating_wear
 from ..wear.map import wear_depth_per_angle
 from .cache import default_cache
@@ -338,7 +340,9 @@ def assess_chunk(task, rows) -> dict:
     out.update({t: np.full(n, "", dtype=object) for t in ASSESS_TEXT})
     if idx.size == 0:
         return out
-    r = assess_rows(task.scene, task.theta[idx], table={k: np.asarray(v)[idx] for k, v in table.items()})
+    r = assess_rows(contact_case(task.scene, task.theta[idx]),
+                    table={k: np.asarray(v)[idx] for k, v in table.items()},
+                    coatings=scene_coatings(task.scene))
     for c in ASSESS_COLUMNS:
         if c.si not in ASSESS_SKIP:
             out[assess_name(c.si)][idx] = r[c.si]

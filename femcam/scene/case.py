@@ -1,0 +1,151 @@
+"""One scene's contact at cam angles as a typed record (:class:`ContactCase`): what the physics
+packages (femcam.assess) read instead of the whole :class:`~femcam.scene.Scene`.
+
+:func:`contact_case` is the adapter: it runs the analytic chain of the scene at the angles (for
+a knife edge with a tip radius, of the cam cut for the radiused tip: a roller of that radius
+that does not turn, Johnson 1985 §4.3) and hands on the records a contact computation needs.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import _validate
+from ..materials import Material
+from ..profile import RollerFollower
+from .state import Scene, SceneState
+from .tribology import Tribology
+from .wear import WearSettings
+
+#: uniform angles over one revolution of :attr:`ContactCase.revolution` (the inertia-limited
+#: roller model integrates the roller's spin over a whole revolution)
+REVOLUTION_N = 720
+#: the angles of :func:`contact_case` when none are given (one revolution, 1 deg apart)
+DEFAULT_N = 360
+
+
+@dataclass(frozen=True, kw_only=True)
+class ContactCase:
+    """A scene's contact at cam angles (keyword-only; built by :func:`contact_case`), SI units.
+
+    Parameters
+    ----------
+    name : str
+        The scene's name.
+    where : str
+        The scene as errors name it (its file, or its name).
+    follower : object
+        The scene's follower (m; a knife edge stays a knife edge, see ``state``).
+    cam, roller : femcam.materials.Material
+        Cam and follower materials (Pa).
+    length : float
+        Axial contact length (m).
+    mu : float
+        Friction coefficient (dimensionless).
+    plane : str
+        ``"strain"`` or ``"stress"``.
+    omega : float
+        Cam speed (rad/s).
+    tip_radius : float or None
+        Knife-edge tip radius (m); None: not a knife edge, or not given.
+    tribology : femcam.scene.tribology.Tribology
+        The assessment data.
+    wear : femcam.scene.wear.WearSettings
+        The ``[wear]`` settings.
+    state : femcam.scene.SceneState
+        The analytic chain at the case's angles (rad); for a knife edge with a tip radius, of
+        the cam cut for the radiused tip.
+    revolution : femcam.scene.SceneState or None
+        The same on :data:`REVOLUTION_N` uniform angles over one revolution, for the
+        inertia-limited roller model (``wear.roller_model == "inertia"`` on a translating
+        roller); None otherwise.
+    """
+
+    name: str
+    where: str
+    follower: object
+    cam: Material
+    roller: Material
+    length: float
+    mu: float
+    plane: str
+    omega: float
+    tip_radius: float | None
+    tribology: Tribology
+    wear: WearSettings
+    state: SceneState
+    revolution: SceneState | None = None
+
+    def __post_init__(self):
+        _validate.instance("tribology", self.tribology, Tribology, "a femcam.scene.tribology.Tribology")
+        _validate.instance("wear", self.wear, WearSettings, "a femcam.scene.wear.WearSettings")
+        _validate.instance("state", self.state, SceneState, "a femcam.scene.SceneState")
+        _validate.optional(_validate.instance, "revolution", self.revolution, SceneState,
+                           "a femcam.scene.SceneState or None")
+        _validate.instance("cam", self.cam, Material, "a femcam.materials.Material")
+        _validate.instance("roller", self.roller, Material, "a femcam.materials.Material")
+        _validate.record("follower", self.follower, "a femcam follower (femcam.profile)", "kind", "Rb")
+        _validate.positive("length", self.length, "m")
+        _validate.nonnegative("mu", self.mu)
+        _validate.optional(_validate.positive, "tip_radius", self.tip_radius, "m")
+
+    def __repr__(self) -> str:
+        """The scene name, the follower kind and the angles (a compact line)."""
+        return (f"ContactCase({self.name!r}, {getattr(self.follower, 'kind', '?')}, "
+                f"{self.state.theta.size} angles)")
+
+    @property
+    def theta(self) -> np.ndarray:
+        """The case's cam angles (rad)."""
+        return self.state.theta
+
+
+def contact_case(scene: Scene, theta=None, *, tip_radius: float | None = None) -> ContactCase:
+    """The :class:`ContactCase` of ``scene`` at cam angles ``theta``.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene.
+    theta : float or array_like of float, optional
+        Cam angles (rad); default :data:`DEFAULT_N` uniform angles over one revolution.
+    tip_radius : float, optional
+        Knife-edge tip radius (m); default the scene's ``[follower] tip_radius_mm``.
+
+    Returns
+    -------
+    ContactCase
+        The records and the analysed state.
+
+    Raises
+    ------
+    InputError
+        A tip radius that is not > 0 (knife edge) or given for another follower; more angles
+        than :meth:`Scene.analyse` takes.
+    UndercutError
+        An undercut cam.
+    """
+    _validate.record("scene", scene, "a femcam.scene.Scene", "analyse", "tribology", "wear")
+    if theta is None:
+        theta = np.linspace(0.0, 2.0 * math.pi, DEFAULT_N, endpoint=False)
+    f = scene.follower
+    if tip_radius is not None and not f.needs_tip:
+        raise _validate.fail("tip_radius", tip_radius, "m", f"applies to knife-edge followers only "
+                             f"(this scene's follower is a {f.kind} follower)")
+    tip = _validate.optional(_validate.positive, "tip_radius", tip_radius if tip_radius is not None
+                             else scene.tip_radius, "m")
+    geo = scene
+    if f.needs_tip and tip is not None:  # the cam cut for the radiused tip
+        geo = dataclasses.replace(scene, follower=RollerFollower(Rb=f.Rb, Rr=tip, e=f.e))
+    revolution = None
+    if scene.wear.roller_model == "inertia" and getattr(f, "translating_roller", False):
+        revolution = geo.analyse(np.linspace(0.0, 2.0 * math.pi, REVOLUTION_N, endpoint=False))
+    return ContactCase(name=scene.name, where=scene.source_path or scene.name, follower=f, cam=scene.cam,
+                       roller=scene.roller, length=scene.length, mu=scene.mu, plane=scene.plane,
+                       omega=scene.omega, tip_radius=tip if f.needs_tip else None,
+                       tribology=scene.tribology, wear=scene.wear, state=geo.analyse(theta),
+                       revolution=revolution)
