@@ -103,13 +103,13 @@ def _geometry(case: ContactCase):
     return case.tip_radius, case.tip_radius
 
 
-def _contact(sc, st, R2, table, n):
+def _contact(case: ContactCase, st, R2, table, n):
     """Hertz (or FE from ``table``) ``a, p0, w, R, E_star, valid`` per angle."""
     Fc = np.where(st.liftoff, 0.0, np.clip(st.Fc, 0.0, None))
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", HertzValidityWarning)   # reported per angle in flags
-        hc = LineContact(F=Fc, length=sc.length, R1=st.rho, R2=R2, cam=sc.cam, roller=sc.roller,
-                         mu=sc.mu, plane=sc.plane)
+        hc = LineContact(F=Fc, length=case.length, R1=st.rho, R2=R2, cam=case.cam, roller=case.roller,
+                         mu=case.mu, plane=case.plane)
     a, p0 = np.broadcast_to(hc.a, (n,)).copy(), np.broadcast_to(hc.p0, (n,)).copy()
     source = np.full(n, "hertz", dtype=object)
     if table is not None and "a_fe" in table and "p0_fe" in table:
@@ -117,7 +117,7 @@ def _contact(sc, st, R2, table, n):
         use = np.isfinite(a_fe) & np.isfinite(p_fe) & (a_fe > 0)
         a, p0 = np.where(use, a_fe, a), np.where(use, p_fe, p0)
         source[use] = "fe"
-    w = Fc / sc.length
+    w = Fc / case.length
     return Fc, a, p0, w, np.broadcast_to(hc.R, (n,)), hc.E_star, np.broadcast_to(hc.valid, (n,)), source
 
 
