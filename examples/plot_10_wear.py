@@ -26,7 +26,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from femcam.kinematics import law
-from femcam.scene import load_scene
+from femcam.scene import contact_case, load_scene
 from femcam.wear import format_table3, seed000_table
 from femcam.wear.scene import scene_wear
 
@@ -35,7 +35,7 @@ sc = load_scene(HERE / "seed002_study_model.toml")
 theta = np.radians(np.arange(0.0, 360.0, 0.5))
 fig, ax = plt.subplots(figsize=(6.4, 3.8), constrained_layout=True)
 for name in ("bezier5", "bezier7", "bezier9"):
-    wm, st, slip = scene_wear(sc.with_law(name), theta)
+    wm, st, slip = scene_wear(contact_case(sc.with_law(name), theta))
     print(f"{name}: max cam wear {wm.max_depth * 1e9:.2f} nm after {wm.cycles:.0e} revolutions at "
           f"{np.degrees(wm.theta_max):.1f} deg; volume {wm.volume_cam * 1e18:.2f} um^3 per revolution "
           f"(Archard {wm.volume_archard * 1e18:.2f} um^3)")

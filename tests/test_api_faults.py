@@ -574,9 +574,11 @@ CASES: dict[str, Case] = {
     "femcam.scene.WearSettings": Case(kw(), {"K": opt(NONNEG), "k": opt(NONNEG), "srr": REAL + (2.5, -2.0),
                                              "J": opt(POS), "T_drag": NONNEG, "cycles": opt(NONNEG)}),
     "femcam.scene.Tribology": Case(kw(), {"oil_temperature_C": opt(REAL)}),
-    "femcam.scene.contact_case": Case(lazy(lambda: dict(scene=scene("seed003_knife_edge"), theta=TH,
-                                                        tip_radius=5e-4)), {"theta": opt(REAL), "tip_radius": opt(POS)}),
-    "femcam.scene.ContactCase": Case(lazy(_case_fields), {"length": POS, "mu": NONNEG, "tip_radius": opt(POS)}),
+    "femcam.scene.contact_case": Case(
+        lazy(lambda: dict(scene=scene("seed003_knife_edge"), theta=TH, tip_radius=5e-4)),
+        {"theta": opt(REAL), "tip_radius": opt(POS)}),
+    "femcam.scene.ContactCase": Case(lazy(_case_fields),
+                                     {"length": POS, "mu": NONNEG, "tip_radius": opt(POS)}),
     "femcam.scene.LubricantData": Case(kw(), {
         "viscosity_Pa_s": opt(POS), "temperature_C": opt(REAL),
         "viscosity_temperature_coefficient_per_K": opt(NONNEG), "kinematic_viscosity_40C": opt(POS),

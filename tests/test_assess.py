@@ -265,8 +265,8 @@ def test_wear_map_uses_k_of_lambda_and_says_the_regime(tmp_path):
     dry = _scene(tmp_path, lambda t: t.split("\n[lubricant]")[0])
     k_factor, regime = wear_factor(contact_case(wet, theta))
     assert wear_factor(contact_case(dry, theta)) == (None, None)
-    wm_wet, _, _ = scene_wear(wet, theta, cycles=1.0, k_factor=k_factor, regime=regime)
-    wm_dry, _, _ = scene_wear(dry, theta, cycles=1.0)
+    wm_wet, _, _ = scene_wear(contact_case(wet, theta), cycles=1.0, k_factor=k_factor, regime=regime)
+    wm_dry, _, _ = scene_wear(contact_case(dry, theta), cycles=1.0)
     assert wm_dry.regime is None and wm_dry.k_factor is None
     lam = assess_rows(contact_case(wet, theta))["lam"]
 

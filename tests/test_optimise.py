@@ -96,10 +96,11 @@ def test_compare_table_identities(scene):
 
 
 def test_wear_objective_is_femcam_wear_map_depth(scene):
+    from femcam.scene import contact_case
     from femcam.wear.scene import scene_wear
 
     t = compare_laws(scene, laws=("bezier5",))
-    wm, _, _ = scene_wear(scene, np.linspace(0.0, 2.0 * np.pi, 720, endpoint=False), cycles=1.0)
+    wm, _, _ = scene_wear(contact_case(scene, np.linspace(0.0, 2.0 * np.pi, 720, endpoint=False)), cycles=1.0)
     # same closed form (k w v_slip / V_cam), different samples: the map's 0.5 deg grid misses the
     # peak by 4e-4 (4e-6 with 7200 angles, measured), the fine grid is 0.05 deg in u
     np.testing.assert_allclose(t["wear_max"][0], wm.max_depth, rtol=2e-3,

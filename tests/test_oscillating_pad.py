@@ -194,13 +194,14 @@ def test_wear_of_both_bodies_is_archard_over_the_sliding_distance(load_raw):
     """Archard on both bodies: the worn volume per revolution of the cam and of the pad equals
     k * sum(Fc |v_s| dt), with v_s from the finite differences of the material points (not the
     class) on the same 1 deg grid; the pad coordinate is open (the contact swings over ~8 mm)."""
+    from femcam.scene import contact_case
     from femcam.wear.options import wear_coefficient_info
     from femcam.wear.scene import scene_wear
 
     sc = load_raw()
     f, n = sc.follower, 360
     th = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
-    wm, st, _ = scene_wear(sc, th, cycles=1.0)
+    wm, st, _ = scene_wear(contact_case(sc, th), cycles=1.0)
     k, _ = wear_coefficient_info(sc.wear, sc.cam.hardness)
     slide = _fd_speeds(f, CamProgram([dataclasses.replace(sg, h=sg.h / f.L) for sg in sc.program.segments]),
                        th, sc.omega)[0]

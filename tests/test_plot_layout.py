@@ -9,7 +9,7 @@ import pytest
 
 import femcam.viz.analytic as va
 import femcam.viz.wear as vw
-from femcam.scene import load_scene
+from femcam.scene import contact_case, load_scene
 from femcam.wear.scene import scene_wear
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -19,7 +19,7 @@ EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 def case():
     sc = load_scene(EXAMPLES / "seed002_study_model.toml")
     theta = np.radians(np.arange(0.0, 360.0, 2.0))
-    wm, st, _ = scene_wear(sc, theta, cycles=1e6)
+    wm, st, _ = scene_wear(contact_case(sc, theta), cycles=1e6)
     return sc, st, wm
 
 

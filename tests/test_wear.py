@@ -490,15 +490,16 @@ def test_tip_radius_refused_for_a_roller():
 @pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_knife_edge_wear_map_needs_tip_radius():
     sc_mod = pytest.importorskip("femcam.scene")
+    from femcam.scene import contact_case
     from femcam.wear.scene import scene_wear
 
     sc = sc_mod.load_scene(str(EXAMPLES / "seed003_knife_edge.toml"))
     assert sc.tip_radius == pytest.approx(2e-3)  # [follower] tip_radius_mm = 2.0
     with pytest.raises(InputError, match=r"\[follower\] tip_radius_mm"):
-        scene_wear(dataclasses.replace(sc, tip_radius=None), TH)
+        scene_wear(contact_case(dataclasses.replace(sc, tip_radius=None), TH))
     rt = 1e-3
     TH2 = TH[::2]
-    wm, st, slip = scene_wear(sc, TH2, tip_radius=rt, cycles=1.0)
+    wm, st, slip = scene_wear(contact_case(sc, TH2, tip_radius=rt), cycles=1.0)
     assert slip.model.startswith("knife-edge with tip radius 1 mm")
     # conservation on cam and tip: l int h = k int Fc v_slip dt (Simpson on the angle grid)
     from scipy.integrate import simpson

@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from femcam.halfspace.rows import finite_length_rows
-from femcam.scene import load_scene
+from femcam.scene import contact_case, load_scene
 from femcam.wear.axial import scene_wear_axial
 from femcam.wear.options import wear_coefficient_info
 from femcam.wear.scene import scene_wear
@@ -46,7 +46,7 @@ def test_crowned_wear_scales_with_the_axial_peak_load():
     w_max l / Fc angle by angle, w_max from the half-space solution computed here."""
     scene = load_scene(CROWNED)
     ax, st, slip = scene_wear_axial(scene, TH8, cycles=1.0)
-    hz, _, _ = scene_wear(scene, TH8, cycles=1.0)
+    hz, _, _ = scene_wear(contact_case(scene, TH8), cycles=1.0)
     r = finite_length_rows(scene, TH8)
     Fc = np.clip(st.Fc, 0.0, None)
     on = Fc > 0

@@ -116,10 +116,11 @@ def test_worn_curvature_against_polar_curve():
 def test_single_block_equals_linear_map_times_n(seed002):
     """(1) One block of N revolutions = the existing map's depth per revolution x N (cam and roller,
     the roller with its drift), computed through femcam wear map's own path."""
+    from femcam.scene import contact_case
     from femcam.wear.scene import scene_wear
 
     N = 1e6
-    wm, _st, _slip = scene_wear(seed002, TH2, cycles=N)
+    wm, _st, _slip = scene_wear(contact_case(seed002, TH2), cycles=N)
     r = ev.evolve(ev.evolution_case(seed002, TH2), N, N)
     np.testing.assert_allclose(r.depth_cam, wm.depth_cam * N, rtol=1e-12, atol=0)
     np.testing.assert_allclose(r.depth_follower, wm.depth_follower_cycles, rtol=1e-12,

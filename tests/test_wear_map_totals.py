@@ -22,8 +22,9 @@ import re
 import numpy as np
 import pytest
 
-from femcam.scene import load_scene
+from femcam.scene import contact_case, load_scene
 from femcam.wear import map as wear_map_module
+from femcam.wear.coating import coating_wear
 from femcam.wear.options import wear_coefficient_info
 from femcam.wear.scene import scene_wear
 
@@ -66,7 +67,8 @@ def test_deepest_point_after_cycles_is_where_the_coating_wore_through():
     # deepest one-revolution point of the thin half (its h = t2 (1 - 1/r) + N d2 = 0.55 N d2 beats
     # the intact half's h <= N r d1 = 0.1 N d1 since d2 > d1 / 5.5 here)
     N, r = 1e9, 0.1
-    bare, _, _ = scene_wear(load_scene(SCENE), TH, cycles=N)
+    plain = load_scene(SCENE)
+    bare, _, _ = scene_wear(contact_case(plain, TH), cycles=N, coating=coating_wear(plain))
     for x, d_s, period, field in (
             (bare.x_cam, bare.depth_cam, bare.perimeter, "depth_cam_cycles"),
             (bare.x_follower, bare.depth_follower_total / N, bare.follower_period, "depth_follower_cycles")):
@@ -98,9 +100,10 @@ def test_uniform_coating_keeps_the_deepest_point(tmp_path):
     k_s = wear_coefficient_info(*_wear_of(load_scene(SCENE)))[0]
     scene = _coated(tmp_path, "cam", 2.0, 5e-10)
     r = 5e-19 / k_s
-    one, _, _ = scene_wear(load_scene(SCENE), TH, cycles=1.0)
+    plain = load_scene(SCENE)
+    one, _, _ = scene_wear(contact_case(plain, TH), cycles=1.0, coating=coating_wear(plain))
     N = 2e-6 / (r * np.median(one.depth_cam))
-    wm, _, _ = scene_wear(scene, TH, cycles=N)
+    wm, _, _ = scene_wear(contact_case(scene, TH), cycles=N, coating=coating_wear(scene))
     h = _layered(one.depth_cam, r, 2e-6, N)
     assert np.any(h < 2e-6) and np.any(h > 2e-6)
     assert wm.x_max == one.x_cam[np.argmax(h)] == one.x_cam[np.argmax(one.depth_cam)]
@@ -118,7 +121,7 @@ def test_summary_volume_after_cycles_uses_the_coating(tmp_path, body):
     r = 1e-17 / k_s
     scene = _coated(tmp_path, body, 1.0, 1e-8)
     for N in (1e7, 1e8):
-        wm, _, _ = scene_wear(scene, TH, cycles=N)
+        wm, _, _ = scene_wear(contact_case(scene, TH), cycles=N, coating=coating_wear(scene))
         V_s = wm.volume_archard
         S = wm.perimeter if body == "cam" else wm.follower_period
         depth = wm.depth_cam_total if body == "cam" else wm.depth_follower_total

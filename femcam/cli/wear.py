@@ -36,13 +36,12 @@ from ..halfspace.rows import has_finite_length
 from ..io import provenance, write_rows, write_table
 from ..kinematics import LAW_NAMES
 from ..scene import load_scene
-from ..scene.case import contact_case
+from ..scene.case import contact_case, tip_scene
 from ..sweep import sweep
 from ..viz.wear import plot_evolution, plot_wear_comparison, plot_wear_map, plot_wear_polar
 from ..wear.axial import scene_wear_map
 from ..wear.evolution import convergence_table, evolution_case, evolution_problem
 from ..wear.options import describe_k, wear_coefficient_info
-from ..wear.scene import scene_tip_radius, tip_scene
 from ..wear.seed000 import PAPER_LAWS, format_table3, seed000_table, table_rows_for_csv
 from ._common import NAMED_LAWS, add_overwrite, add_scene_out, check_law, out_dir, plain, refuse_non_empty
 from ._flags import Range, add_number
@@ -215,7 +214,7 @@ def _fe_scene(scene, tip):
     sweep cuts the cam for its radiused tip and lets the tip slide) with ``--tip-radius-mm`` as
     its tip radius; any other follower as it is."""
     if scene.follower.needs_tip:
-        return dataclasses.replace(scene, tip_radius=scene_tip_radius(scene, tip))
+        return dataclasses.replace(scene, tip_radius=tip if tip is not None else scene.tip_radius)
     return tip_scene(scene, tip)   # itself; refuses a tip radius on another follower, naming it
 
 

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _validate
+from ..errors import InputError
 from ..materials import Material
 from ..profile import RollerFollower
 from .state import Scene, SceneState
@@ -104,6 +105,40 @@ class ContactCase:
         return self.state.theta
 
 
+def tip_scene(scene: Scene, tip_radius: float | None) -> Scene:
+    """The scene whose cam is cut for a radiused knife-edge tip.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene.
+    tip_radius : float or None
+        Tip radius (m); knife-edge followers only.
+
+    Returns
+    -------
+    femcam.scene.Scene
+        A knife-edge scene with a roller of radius ``tip_radius`` (which the slip model keeps
+        from turning); any other follower: the scene itself.
+
+    Raises
+    ------
+    InputError
+        A tip radius for a follower that is not a knife edge, or none for a knife edge.
+    """
+    if not scene.follower.needs_tip:
+        if tip_radius is not None:
+            raise InputError(f"tip radius = {tip_radius * 1e3:g} mm: applies to knife-edge followers only "
+                             f"(this scene's follower is a {scene.follower.kind} follower)")
+        return scene
+    if tip_radius is None:
+        raise InputError("follower type = knife_edge: a sharp tip has no contact width, so the contact "
+                         "pressure and the wear depth are undefined; give the tip radius: scene [follower] "
+                         "tip_radius_mm (mm) or --tip-radius-mm (mm)")
+    f = scene.follower
+    return dataclasses.replace(scene, follower=RollerFollower(Rb=f.Rb, Rr=tip_radius, e=f.e))
+
+
 def contact_case(scene: Scene, theta=None, *, tip_radius: float | None = None) -> ContactCase:
     """The :class:`ContactCase` of ``scene`` at cam angles ``theta``.
 
@@ -114,7 +149,8 @@ def contact_case(scene: Scene, theta=None, *, tip_radius: float | None = None) -
     theta : float or array_like of float, optional
         Cam angles (rad); default :data:`DEFAULT_N` uniform angles over one revolution.
     tip_radius : float, optional
-        Knife-edge tip radius (m); default the scene's ``[follower] tip_radius_mm``.
+        Knife-edge tip radius (m); default the scene's ``[follower] tip_radius_mm`` (a knife
+        edge without one: the state of the sharp edge, ``tip_radius`` None).
 
     Returns
     -------
@@ -133,14 +169,10 @@ def contact_case(scene: Scene, theta=None, *, tip_radius: float | None = None) -
     if theta is None:
         theta = np.linspace(0.0, 2.0 * math.pi, DEFAULT_N, endpoint=False)
     f = scene.follower
-    if tip_radius is not None and not f.needs_tip:
-        raise _validate.fail("tip_radius", tip_radius, "m", f"applies to knife-edge followers only "
-                             f"(this scene's follower is a {f.kind} follower)")
-    tip = _validate.optional(_validate.positive, "tip_radius", tip_radius if tip_radius is not None
-                             else scene.tip_radius, "m")
-    geo = scene
-    if f.needs_tip and tip is not None:  # the cam cut for the radiused tip
-        geo = dataclasses.replace(scene, follower=RollerFollower(Rb=f.Rb, Rr=tip, e=f.e))
+    tip = _validate.optional(_validate.positive, "tip_radius", tip_radius, "m")
+    if tip is None and f.needs_tip:
+        tip = scene.tip_radius
+    geo = tip_scene(scene, tip) if tip is not None else scene  # a knife edge: the cam cut for its tip
     revolution = None
     if scene.wear.roller_model == "inertia" and getattr(f, "translating_roller", False):
         revolution = geo.analyse(np.linspace(0.0, 2.0 * math.pi, REVOLUTION_N, endpoint=False))

@@ -40,6 +40,7 @@ from ..hertz import HertzValidityWarning, LineContact
 from ..hertz.conformity import shape_factors
 from ..layers.from_scene import scene_coatings
 from ..scene.case import contact_case
+from ..wear.coating import coating_wear
 from ..wear.scene import scene_wear
 from .spec import whole
 
@@ -134,7 +135,7 @@ def _jump(scene, factor_hi: float) -> tuple:
 def _wear(scene, theta) -> tuple:
     """(largest cam wear depth after one revolution in m, note) of the Archard map."""
     try:
-        wm = scene_wear(scene, theta, cycles=1.0)[0]
+        wm = scene_wear(contact_case(scene, theta), cycles=1.0, coating=coating_wear(scene))[0]
     except FemcamError as exc:
         return math.nan, f"wear not computed: {exc}".replace("\n", " ")
     return float(wm.max_depth), ""

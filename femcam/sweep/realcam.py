@@ -30,7 +30,7 @@ that answers each angle, and the three followers (:mod:`femcam.fe.choice`, docs/
   Hertz answer the angles whose Hertz estimate is within the tolerance
   (:func:`hertz_within_tolerance`, :func:`auto_hertz_rows`) and builds no model for them.
 * **Knife-edge**: the kinematics and the contact are those of the cam cut for the radiused tip
-  (``[follower] tip_radius_mm``; :func:`femcam.wear.scene.tip_scene`). **Flat-faced**: the
+  (``[follower] tip_radius_mm``; :func:`femcam.scene.case.tip_scene`). **Flat-faced**: the
   per-angle :func:`femcam.fe.choice.solve_angle` on models binned by half-width and cam radius
   (:mod:`femcam.sweep.realrows`); a contact past the face end is the row status
   ``edge_contact`` (never Hertz).
@@ -55,8 +55,8 @@ from ..materials import effective_modulus
 from ..profile import (
     cam_profile,
 )
+from ..scene.case import tip_scene
 from ..wear.options import follower_tip_radius, slip_kwargs
-from ..wear.scene import tip_scene
 from ..wear.slip import roller_inertia
 
 #: angles inserted per side of a curvature jump (over the straddle span)

@@ -29,6 +29,8 @@ import math
 import numpy as np
 
 from ..halfspace.rows import finite_length_rows, has_finite_length
+from ..scene.case import contact_case
+from .coating import coating_wear
 from .map import WearMap, wear_map
 from .options import slip_kwargs, wear_coefficient_info
 from .scene import scene_wear, with_coating
@@ -135,7 +137,7 @@ def scene_wear_axial(scene, theta, *, cycles: float = 1e6, fe=None, k_factor=Non
     k, _where = wear_coefficient_info(scene.wear, scene.cam.hardness)
     wm = wear_map(table, slip, k=k, length=scene.length, cycles=cycles, pressure="axial_peak",
                   k_factor=k_factor, regime=regime)
-    return with_coating(scene, wm), st, slip
+    return with_coating(wm, coating_wear(scene)), st, slip
 
 
 def scene_wear_map(scene, theta, *, cycles: float = 1e6, tip_radius: float | None = None, fe=None,
@@ -171,5 +173,5 @@ def scene_wear_map(scene, theta, *, cycles: float = 1e6, tip_radius: float | Non
     """
     if has_finite_length(scene):
         return scene_wear_axial(scene, theta, cycles=cycles, fe=fe, k_factor=k_factor, regime=regime)
-    return scene_wear(scene, theta, cycles=cycles, tip_radius=tip_radius, fe=fe, k_factor=k_factor,
-                      regime=regime)
+    return scene_wear(contact_case(scene, theta, tip_radius=tip_radius), cycles=cycles, fe=fe,
+                      k_factor=k_factor, regime=regime, coating=coating_wear(scene))
