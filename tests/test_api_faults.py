@@ -112,6 +112,13 @@ def state():
     return scene().analyse(TH)
 
 
+def _contact_case():
+    """The study model's contact over one revolution (5 deg apart)."""
+    from femcam.scene import contact_case
+
+    return contact_case(scene(), np.radians(np.arange(0.0, 360.0, 5.0)))
+
+
 def _case_fields():
     """The fields of a valid ContactCase (the study model's contact at TH)."""
     from femcam.scene import contact_case
@@ -174,9 +181,10 @@ def cp():
 
 @functools.cache
 def evolution_case():
+    from femcam.scene import contact_case
     from femcam.wear import evolution_case as ec
 
-    return ec(scene(), np.radians(np.arange(0.0, 360.0, 5.0)))
+    return ec(contact_case(scene(), np.radians(np.arange(0.0, 360.0, 5.0))))
 
 
 def synthesis_result_stub():
@@ -602,8 +610,7 @@ CASES: dict[str, Case] = {
         lazy(lambda: dict(case=evolution_case(), cycles=1e5, max_blocks=2)),
         {"cycles": POS, "max_blocks": INT_POS, "n_grid": opt(INT_POS)}, slow=True),
     "femcam.wear.evolution_case": Case(
-        lazy(lambda: dict(scene=scene(), theta=np.radians(np.arange(0.0, 360.0, 5.0)))),
-        {"theta": REAL, "k": opt(NONNEG)}),
+        lazy(lambda: dict(contact=_contact_case())), {"k": opt(NONNEG)}),
     "femcam.wear.evolve": Case(
         lazy(lambda: dict(case=evolution_case(), cycles=1e5, block=1e5, n_grid=2000)),
         {"cycles": NONNEG, "block": POS, "n_grid": opt(INT_POS)}, slow=True),

@@ -8,6 +8,7 @@ import pytest
 
 from femcam.errors import InputError
 from femcam.io import read_meta
+from femcam.scene import contact_case
 from femcam.wear import evolution as ev
 from femcam.wear import slip as wslip
 
@@ -116,12 +117,11 @@ def test_worn_curvature_against_polar_curve():
 def test_single_block_equals_linear_map_times_n(seed002):
     """(1) One block of N revolutions = the existing map's depth per revolution x N (cam and roller,
     the roller with its drift), computed through femcam wear map's own path."""
-    from femcam.scene import contact_case
     from femcam.wear.scene import scene_wear
 
     N = 1e6
     wm, _st, _slip = scene_wear(contact_case(seed002, TH2), cycles=N)
-    r = ev.evolve(ev.evolution_case(seed002, TH2), N, N)
+    r = ev.evolve(ev.evolution_case(contact_case(seed002, TH2)), N, N)
     np.testing.assert_allclose(r.depth_cam, wm.depth_cam * N, rtol=1e-12, atol=0)
     np.testing.assert_allclose(r.depth_follower, wm.depth_follower_cycles, rtol=1e-12,
                                atol=1e-12 * wm.max_depth_follower)
@@ -132,7 +132,7 @@ def test_small_k_matches_linear_map(seed002):
     """(3) k -> 0: the evolved depth tends to the linear one, the relative change linear in k."""
     rel = []
     for k in (5e-18, 5e-17):
-        r = ev.evolve(ev.evolution_case(seed002, TH2, k=k), 1e6, 2.5e5, n_grid=2000)
+        r = ev.evolve(ev.evolution_case(contact_case(seed002, TH2), k=k), 1e6, 2.5e5, n_grid=2000)
         rel.append(np.max(np.abs(r.depth_cam - r.depth_linear)) / r.max_depth_linear)
     assert rel[0] < 1e-6
     assert 8.0 < rel[1] / rel[0] < 12.0, rel
@@ -141,7 +141,7 @@ def test_small_k_matches_linear_map(seed002):
 def test_volume_bookkeeping_with_evolving_force(seed002):
     """(4) l int h dx = sum over blocks of dN k sum_j F_j v_slip,j dt, with each block's force
     (rectangle rule here, the map's exact step integral there)."""
-    case = ev.evolution_case(seed002, TH2, k=5e-14)        # 1e4 x the default: ~0.16 mm
+    case = ev.evolution_case(contact_case(seed002, TH2), k=5e-14)        # 1e4 x the default: ~0.16 mm
     N, M = 1e6, 4
     r = ev.evolve(case, N, N / M, n_grid=2000)
     dt = (TH2[1] - TH2[0]) / seed002.omega
@@ -154,7 +154,7 @@ def test_volume_bookkeeping_with_evolving_force(seed002):
 
 
 def test_seed002_large_k_converges_first_order(seed002):
-    case = ev.evolution_case(seed002, np.radians(np.arange(0.0, 360.0, 3.0)), k=5e-14)
+    case = ev.evolution_case(contact_case(seed002, np.radians(np.arange(0.0, 360.0, 3.0))), k=5e-14)
     ct = ev.convergence_table(case, 1e6, 8, n_grid=1200)
     d = ct.diff_next[:-1]
     assert np.all(d[1:] < d[:-1])
@@ -180,7 +180,7 @@ def test_knife_edge_and_bad_block_count_refused():
     sc_mod = pytest.importorskip("femcam.scene")
     sc = sc_mod.load_scene(str(EXAMPLES / "seed003_knife_edge.toml"))
     with pytest.raises(InputError, match="follower type = 'knife_edge': profile evolution is implemented"):
-        ev.evolution_case(sc, TH2)
+        ev.evolution_case(contact_case(sc, TH2))
     with pytest.raises(InputError, match=r"blocks = 0 \(number of blocks\): must be an integer >= 1"):
         ev.block_counts(0)
 

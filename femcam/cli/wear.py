@@ -317,7 +317,7 @@ def _plots(scene, results, out) -> None:
 def _evolution(scene, label, theta, cycles, args, out, head) -> None:
     """``--evolve-blocks K``: convergence table CSV and evolved-vs-linear PNG of one law."""
     with phase("wear map: profile evolution"):
-        ct = convergence_table(evolution_case(scene, theta), cycles, args.evolve_blocks)
+        ct = convergence_table(evolution_case(contact_case(scene, theta)), cycles, args.evolve_blocks)
     header, rows = ct.rows()
     fin = ct.finest
     write_rows(out / f"wear_{label}_evolution.csv", header, rows,

@@ -16,6 +16,7 @@ import numpy as np
 
 from .. import _validate
 from ..errors import InputError
+from ..loads import ArmDynamics, FollowerDynamics
 from ..materials import Material
 from ..profile import RollerFollower
 from .state import Scene, SceneState
@@ -51,6 +52,8 @@ class ContactCase:
         ``"strain"`` or ``"stress"``.
     omega : float
         Cam speed (rad/s).
+    dynamics : femcam.loads.FollowerDynamics or femcam.loads.ArmDynamics
+        The follower train's rigid dynamics (kg, N/m, N, N s/m; an arm's about its pivot).
     tip_radius : float or None
         Knife-edge tip radius (m); None: not a knife edge, or not given.
     tribology : femcam.scene.tribology.Tribology
@@ -75,6 +78,7 @@ class ContactCase:
     mu: float
     plane: str
     omega: float
+    dynamics: FollowerDynamics | ArmDynamics
     tip_radius: float | None
     tribology: Tribology
     wear: WearSettings
@@ -89,6 +93,8 @@ class ContactCase:
                            "a femcam.scene.SceneState or None")
         _validate.instance("cam", self.cam, Material, "a femcam.materials.Material")
         _validate.instance("roller", self.roller, Material, "a femcam.materials.Material")
+        _validate.instance("dynamics", self.dynamics, FollowerDynamics | ArmDynamics,
+                           "a femcam.loads.FollowerDynamics or ArmDynamics")
         _validate.record("follower", self.follower, "a femcam follower (femcam.profile)", "kind", "Rb")
         _validate.positive("length", self.length, "m")
         _validate.nonnegative("mu", self.mu)
@@ -178,6 +184,6 @@ def contact_case(scene: Scene, theta=None, *, tip_radius: float | None = None) -
         revolution = geo.analyse(np.linspace(0.0, 2.0 * math.pi, REVOLUTION_N, endpoint=False))
     return ContactCase(name=scene.name, where=scene.source_path or scene.name, follower=f, cam=scene.cam,
                        roller=scene.roller, length=scene.length, mu=scene.mu, plane=scene.plane,
-                       omega=scene.omega, tip_radius=tip if f.needs_tip else None,
+                       omega=scene.omega, dynamics=scene.dynamics, tip_radius=tip if f.needs_tip else None,
                        tribology=scene.tribology, wear=scene.wear, state=geo.analyse(theta),
                        revolution=revolution)

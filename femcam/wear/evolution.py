@@ -77,6 +77,7 @@ from .. import _validate
 from .._repr import compact_repr
 from ..hertz import LineContact
 from ..loads import contact_force
+from ..scene.case import ContactCase
 from .map import WearMap, drift_sum, wear_map
 from .options import slip_kwargs, wear_coefficient_info
 from .slip import SlipResult, follower_slip
@@ -203,19 +204,18 @@ class EvolutionCase:
 
 
 
-def evolution_case(scene, theta, *, k: float | None = None) -> EvolutionCase:
-    """The :class:`EvolutionCase` of a roller-follower scene at angles ``theta`` (rad).
+def evolution_case(contact: ContactCase, *, k: float | None = None) -> EvolutionCase:
+    """The :class:`EvolutionCase` of a roller-follower scene's contact.
 
-    Slip from the scene's ``[wear]`` table (as ``femcam wear map``); ``k`` (m^3/(N m)) defaults
-    to the scene's wear coefficient (:func:`~femcam.wear.options.wear_coefficient_info`).
+    Slip from the scene's ``[wear]`` settings (as ``femcam wear map``); ``k`` (m^3/(N m))
+    defaults to the scene's wear coefficient (:func:`~femcam.wear.options.wear_coefficient_info`).
     Other followers raise :class:`~femcam.errors.InputError`.
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A roller-follower scene.
-    theta : array_like, shape (n,)
-        Cam angles, uniform over one revolution, endpoint excluded [rad].
+    contact : femcam.scene.case.ContactCase
+        A roller-follower scene's contact at cam angles uniform over one revolution, endpoint
+        excluded [rad] (``contact_case(scene, theta)``).
     k : float, optional
         Archard wear coefficient [m^3/(N m)]; default the scene's.
 
@@ -229,24 +229,25 @@ def evolution_case(scene, theta, *, k: float | None = None) -> EvolutionCase:
     InputError
         A follower other than a roller, or ``k < 0``.
     """
-    _validate.record("scene", scene, "a femcam.scene.Scene", "follower", "analyse")
-    if not getattr(scene.follower, "translating_roller", False):
-        kind = type(scene.follower).__name__
-        raise _validate.fail("follower type", getattr(scene.follower, "kind", kind), "",
+    c = _validate.instance("contact", contact, ContactCase, "a femcam.scene.case.ContactCase "
+                           "(femcam.scene.case.contact_case(scene, theta))")
+    if not getattr(c.follower, "translating_roller", False):
+        kind = type(c.follower).__name__
+        raise _validate.fail("follower type", getattr(c.follower, "kind", kind), "",
                       "profile evolution is implemented for roller followers only (a radiused "
                       "knife-edge tip wears to a conformal flat that Hertz does not describe; a "
                       "flat face is not modelled); run without --evolve-blocks")
     if k is None:
-        k = wear_coefficient_info(scene.wear, scene.cam.hardness)[0]
+        k = wear_coefficient_info(c.wear, c.cam.hardness)[0]
     k = _validate.nonnegative("k", k, "m^3/(N m)")
-    st = scene.analyse(theta)
+    st = c.state
     Fc = np.clip(st.Fc, 0.0, None)
-    kw = slip_kwargs(scene.wear, omega=scene.omega, mu=scene.mu, follower=scene.follower)
-    slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **kw)
+    kw = slip_kwargs(c.wear, omega=c.omega, mu=c.mu, follower=c.follower)
+    slip = follower_slip(c.follower, st.theta, st.s, st.s1, st.s2, Fc=Fc, **kw)
     return EvolutionCase(theta=np.asarray(st.theta, float), s=st.s, s1=st.s1, s2=st.s2, phi=st.phi,
-                         rho=st.rho, slip=slip, dynamics=scene.dynamics, omega=scene.omega,
-                         Rr=scene.follower.Rr, length=scene.length, cam=scene.cam, roller=scene.roller,
-                         k=k, name=scene.name)
+                         rho=st.rho, slip=slip, dynamics=c.dynamics, omega=c.omega,
+                         Rr=c.follower.Rr, length=c.length, cam=c.cam, roller=c.roller,
+                         k=k, name=c.name)
 
 
 # --------------------------------------------------------------------------- result
