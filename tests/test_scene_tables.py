@@ -135,7 +135,7 @@ def test_sweep_takes_settings_from_the_scene(tmp_path, captured, capsys):
 
 def test_flags_override_the_scene(tmp_path, captured):
     args = ["sweep", str(_scene(tmp_path, SETTINGS)), "--out", str(tmp_path / "o"), "--angles-deg", "0:10:10",
-            "--mesh-size", "8", "--tolerance", "0.01", "--method", "fe", "--chunk-size", "5",
+            "--a-over-h", "8", "--tolerance", "0.01", "--method", "fe", "--chunk-size", "5",
             "--vtk-every", "3", "--plots"]
     assert main(args) == 0
     kw = captured[-1]

@@ -18,7 +18,7 @@ import json
 import numpy as np
 
 #: fields that do not change what is computed: free text, the file, the raw TOML, study settings
-NOT_PHYSICS = {"Scene": ("name", "description", "source", "source_path", "raw", "fe", "sweep",
+NOT_PHYSICS = {"Scene": ("name", "description", "source", "source_path", "raw", "study",
                           "overrides"),
                "Material": ("name",)}
 

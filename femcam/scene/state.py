@@ -22,6 +22,7 @@ from ..kinematics import CamProgram, law
 from ..loads import ArmDynamics, FollowerDynamics, LoadResult, arm_contact_force, arm_lever, contact_force
 from ..materials import Material
 from ..profile import CamProfile, bool_intervals, cam_profile
+from .study import StudySettings
 
 #: angles of the dense undercut check of Scene.analyse over one revolution (0.05 deg apart)
 UNDERCUT_CHECK_N = 7200
@@ -139,10 +140,11 @@ class Scene:
         (full sliding in this direction at every angle).
     description, source : str
         Free text of the scene file.
-    fe, sweep : dict
-        The checked study settings of [fe] (``a_over_h``, ``tolerance``: dimensionless) and
-        [sweep] (``method``, ``angles_deg``, ``chunk_size``, ``vtk_every`` in angles,
-        ``plots``): ``femcam sweep`` uses them where no flag is given.
+    study : femcam.scene.study.StudySettings
+        The checked study settings of [fe] and [sweep] (``a_over_h``, ``tolerance``, ``rtol``
+        dimensionless; ``method``, ``angles_deg`` in deg, ``chunk_size``, ``vtk_every`` in
+        angles, ``plots``; None where not given): a sweep uses them where its options leave
+        None (:mod:`femcam.sweep.settings`).
     wear : dict
         The [wear] table as written (checked at load; SI values: :mod:`femcam.wear.options`).
     finite_length : dict
@@ -191,7 +193,7 @@ class Scene:
     sliding: str | None = None
     description: str = ""
     source: str = ""
-    fe: dict = field(default_factory=dict)
+    study: StudySettings = field(default_factory=StudySettings)
     wear: dict = field(default_factory=dict)
     finite_length: dict = field(default_factory=dict)
     layers: dict = field(default_factory=dict)
@@ -201,7 +203,6 @@ class Scene:
     train: TrainModel | None = None
     steps_per_rev: int | None = None
     bodies: dict = field(default_factory=dict)
-    sweep: dict = field(default_factory=dict)
     tip_radius: float | None = None
     face_length: float | None = None
     #: what the program was changed to after loading (:meth:`with_law`): ``{"law": name, **params}``,
