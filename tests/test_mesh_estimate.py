@@ -67,7 +67,7 @@ def test_sweep_mesh_size_100_refused_on_the_cli(tmp_path, capsys):
 
 
 def test_sweep_api_refuses_too(monkeypatch):
-    """``femcam.sweep(..., a_over_h=100)`` is refused before the analytic chain or any mesh
+    """``femcam.sweep(scene, SweepOptions(a_over_h=100))`` is refused before the analytic chain or any mesh
     (the scene range of a_over_h stays [2, 400]: the cap is the mesh's, not the setting's)."""
     from femcam import SweepOptions, sweep
     from femcam.scene import load_scene
@@ -76,7 +76,8 @@ def test_sweep_api_refuses_too(monkeypatch):
     sc = load_scene(EX + "seed002_study_model.toml")   # no cam disk: nothing else meshes
     with pytest.raises(InputError, match="cap of 80,000 elements"):
         sweep(sc, SweepOptions(angles=np.radians([0.0, 1.0]), a_over_h=100))
-    res = sweep(sc, SweepOptions(angles=np.radians([0.0, 1.0]), a_over_h=100, method="hertz"))  # no mesh: no cap
+    # no mesh: no cap
+    res = sweep(sc, SweepOptions(angles=np.radians([0.0, 1.0]), a_over_h=100, method="hertz"))
     assert res.n_angles == 2
 
 

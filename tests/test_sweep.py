@@ -341,7 +341,8 @@ def test_rebuilt_flag_uses_a_model_of_its_own(scene, monkeypatch):
 
     monkeypatch.setattr(ContactModel, "covers", covers)
     default_cache().clear()
-    r = sweep(scene, SweepOptions(angles=th), RunOptions(model_cache=False))  # every model built here (build times below)
+    # every model built here (build times below)
+    r = sweep(scene, SweepOptions(angles=th), RunOptions(model_cache=False))
     assert [("rebuilt" in f.split(";")) for f in r["flags"]] == [False, True, False]
     assert np.all(r.status == "ok")
     # build time accounting: the family models were built (and recorded per family) during the

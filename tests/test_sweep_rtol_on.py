@@ -17,7 +17,7 @@ import pytest
 from femcam.errors import InputError
 from femcam.scene import load_scene
 from femcam.sweep import RunOptions, SweepOptions, sweep
-from femcam.sweep.options import RTOL_ON, SweepOptions
+from femcam.sweep.options import RTOL_ON
 
 STUDY = Path(__file__).resolve().parents[1] / "examples" / "seed002_study_model.toml"
 

@@ -67,8 +67,9 @@ from .checker import MAX_PROBLEMS
 from .load import load_scene
 from .schema import METHODS, STUDY_RANGES, STUDY_WHOLE, TOLERANCE_FLOOR, study_problem
 from .state import UNDERCUT_CHECK_N, Scene, SceneState
+from .study import StudySettings
 from .wear import wear_table
 
 __all__ = ["MAX_PROBLEMS", "METHODS", "STUDY_RANGES", "STUDY_WHOLE", "TOLERANCE_FLOOR",
-           "UNDERCUT_CHECK_N", "Scene", "SceneState", "load_scene", "roller_support_problems",
-           "study_problem", "wear_table"]
+           "UNDERCUT_CHECK_N", "Scene", "SceneState", "StudySettings", "load_scene",
+           "roller_support_problems", "study_problem", "wear_table"]

@@ -11,7 +11,7 @@ from dataclasses import dataclass, fields
 from .. import _validate
 from ..errors import InputError
 from .checker import _Checker
-from .schema import _FE, _SWEEP
+from .schema import _FE, _SWEEP, METHODS, RTOL_ON, STUDY_UNITS, STUDY_WHOLE, study_problem
 
 __all__ = ["StudySettings"]
 
@@ -49,7 +49,7 @@ class StudySettings:
     Raises
     ------
     InputError
-        A value of the wrong kind (a boolean where a number belongs, a non-boolean ``plots``).
+        A value of the wrong kind or out of its range (the scene's rules), naming the key.
     """
 
     a_over_h: float | None = None
@@ -63,16 +63,25 @@ class StudySettings:
     plots: bool | None = None
 
     def __post_init__(self):
-        for key in ("a_over_h", "tolerance", "rtol"):
+        for key, unit in STUDY_UNITS.items():   # a_over_h, tolerance, chunk_size, vtk_every
             value = getattr(self, key)
             if value is not None:
-                object.__setattr__(self, key, _validate.number(key, value))
-        for key in ("chunk_size", "vtk_every"):
-            value = getattr(self, key)
-            if value is not None:
-                object.__setattr__(self, key, _validate.integer(key, value, 0, "angles"))
+                x = _validate.number(key, value, unit)
+                problem = study_problem(key, x)
+                if problem:
+                    raise _validate.fail(key, value, unit, problem)
+                object.__setattr__(self, key, int(x) if key in STUDY_WHOLE else x)
+        if self.rtol is not None:
+            object.__setattr__(self, "rtol", _validate.positive("rtol", self.rtol, "(relative error)"))
+        if self.method is not None:
+            _validate.choice("method", self.method, METHODS)
         if self.rtol_on is not None:
-            object.__setattr__(self, "rtol_on", tuple(str(q) for q in self.rtol_on))
+            names = (self.rtol_on,) if isinstance(self.rtol_on, str) else tuple(self.rtol_on)
+            for q in names:
+                _validate.choice("rtol_on", q, RTOL_ON)
+            object.__setattr__(self, "rtol_on", names)
+        if self.angles_deg is not None:
+            _validate.angles_deg("angles_deg", self.angles_deg)
         if self.plots is not None and not isinstance(self.plots, bool):
             raise _validate.fail("plots", self.plots, "", "must be true or false")
 
