@@ -145,3 +145,15 @@ def test_check_refuses_what_the_sweep_refuses(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "[fe] rtol_pct = 0.5 %: cannot be given with [fe] a_over_h" in err
     assert len(err.strip().splitlines()) == 1
+
+
+def test_mesh_size_flag_is_gone(tmp_path, capsys):
+    """One name per quantity: the scene key [fe] a_over_h is the flag --a-over-h; the old
+    --mesh-size is an unknown argument (argparse's exit 2), not an abbreviation of another flag."""
+    path = _scene(tmp_path, HERTZ)
+    with pytest.raises(SystemExit) as exc:
+        main(["sweep", str(path), "--out", str(tmp_path / "o"), "--mesh-size", "8"])
+    assert exc.value.code == 2
+    assert "unrecognized arguments: --mesh-size 8" in capsys.readouterr().err
+    assert main(["sweep", str(path), "--out", str(tmp_path / "o"), "--a-over-h", "8",
+                 "--progress", "off"]) == 0

@@ -179,7 +179,7 @@ def resolve_args(args, scene) -> list[str]:
         The parsed flags; the :data:`SETTINGS` and ``rtol_pct`` are set in place to the
         resolved values (scene units: deg spec, a/h, relative tolerance, percent).
     scene : femcam.scene.Scene
-        The scene (its ``fe`` and ``sweep`` tables).
+        The scene (its ``study``: the [fe] and [sweep] settings).
 
     Returns
     -------

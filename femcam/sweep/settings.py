@@ -1,9 +1,10 @@
 """The settings of a sweep and where each one came from: one copy for the API and the CLI.
 
-``femcam.sweep(scene, ...)`` and ``femcam sweep SCENE`` resolve their settings here, so that the
-two compute the same rows. Precedence, setting by setting: a value given (a keyword argument that
-is not None, or a command-line flag) wins; else the scene's ``[fe]`` / ``[sweep]`` key; else
-femcam's default (:data:`SETTINGS`, the one place each default is written; ``femcam sweep
+``femcam.sweep(scene, SweepOptions(...))`` and ``femcam sweep SCENE`` resolve their settings
+here, so that the two compute the same rows. Precedence, setting by setting: a value given (a
+field of :class:`femcam.sweep.options.SweepOptions` that is not None, or a command-line flag)
+wins; else the scene's ``[fe]`` / ``[sweep]`` key (:class:`femcam.scene.study.StudySettings`);
+else femcam's default (:data:`SETTINGS`, the one place each default is written; ``femcam sweep
 --help`` shows them).
 
 ``rtol`` (scene ``[fe] rtol_pct``, in percent) chooses the mesh, so it excludes ``a_over_h``:
@@ -67,7 +68,7 @@ class SweepSettings:
     rtol_on : tuple of str
         The quantities ``rtol`` bounds (:data:`femcam.sweep.options.RTOL_ON`).
     sources : dict
-        Parameter -> ``"argument"`` (a keyword or flag), ``"scene"`` or ``"default"``.
+        Parameter -> ``"argument"`` (an option or flag), ``"scene"`` or ``"default"``.
     from_scene : tuple of str
         ``[table] key = value`` of each setting taken from the scene, in :data:`SETTINGS` order.
     """
