@@ -3,6 +3,7 @@
 unit (``thickness_um`` holding metres). References are the values typed in the scene files
 times the unit factor written in the test."""
 
+import dataclasses
 import glob
 import math
 import pathlib
@@ -92,10 +93,14 @@ def test_no_edge_unit_key_holds_an_si_value(path):
     """An edge-unit key in a dict the scene hands on holds the value as written (Scene.wear and
     the sweep's angles_deg string are documented as written); every other value is SI-named."""
     scene = load_scene(path)
-    for attr in ("layers", "tribology", "bodies", "finite_length", "fe", "sweep", "wear"):
+    for attr in ("layers", "tribology", "bodies", "finite_length", "wear"):
         raw_tab = scene.raw.get(attr, {})
         for key, v in _edge_keys(getattr(scene, attr)):
             assert key.count(".") == 1 and raw_tab.get(key[1:]) == v, f"Scene.{attr}{key} = {v!r}"
+    # the [fe]/[sweep] record: only the angle spec keeps its edge unit, as written
+    study = {k: v for k, v in dataclasses.asdict(scene.study).items() if v is not None}
+    assert [k for k in study if k.endswith(EDGE)] == (["angles_deg"] if "angles_deg" in study else [])
+    assert study.get("angles_deg") == scene.raw.get("sweep", {}).get("angles_deg")
 
 
 def test_layer_columns_si_names_csv_names_unchanged():
