@@ -60,12 +60,12 @@ def main() -> None:
     t0 = time.perf_counter()
     from femcam.assess import assess_rows
     from femcam.scene import contact_case, load_scene
-    from femcam.sweep import sweep
+    from femcam.sweep import RunOptions, SweepOptions, sweep
 
     scene = load_scene(SCENE)
     theta = np.radians(np.arange(0.0, 360.0, 1.0))
     t = time.perf_counter()
-    table = sweep(scene, angles=theta, method="hertz", progress=False)
+    table = sweep(scene, SweepOptions(angles=theta, method="hertz"), RunOptions(progress=False))
     t_sweep = time.perf_counter() - t
     t = time.perf_counter()
     rows = assess_rows(contact_case(scene, theta), table)      # first assessment in this process

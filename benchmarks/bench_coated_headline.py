@@ -26,7 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from femcam.scene import load_scene
-from femcam.sweep import default_cache, sweep
+from femcam.sweep import RunOptions, SweepOptions, default_cache, sweep
 
 SCENE = Path(__file__).resolve().parents[1] / "examples" / "seed002_study_model.toml"
 E_C, NU_C = 100e9, 0.3
@@ -69,7 +69,7 @@ def main(argv):
         default_cache().clear()
         b0 = default_cache().stats["built"]
         t0 = time.perf_counter()
-        r = sweep(s, angles=np.array([theta]), workers=1, a_over_h=10.0)
+        r = sweep(s, SweepOptions(angles=np.array([theta]), a_over_h=10.0), RunOptions(workers=1))
         wall = time.perf_counter() - t0
         built = default_cache().stats["built"] - b0
         assert r["status"][0] == "ok", r["message"][0]

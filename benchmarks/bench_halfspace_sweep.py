@@ -31,7 +31,7 @@ import numpy as np
 
 from femcam.halfspace.rows import finite_length_rows, strip_for_scene
 from femcam.scene import load_scene
-from femcam.sweep import sweep
+from femcam.sweep import RunOptions, SweepOptions, sweep
 
 ROOT = Path(__file__).resolve().parents[1]
 SCENE = ROOT / "examples" / "seed002_crowned.toml"
@@ -40,8 +40,8 @@ TH = np.radians(np.arange(360.0))
 
 def check(scene) -> float:
     th = TH[::4]
-    r1 = sweep(scene, angles=th, method="hertz", workers=1, chunk_size=30)
-    r2 = sweep(scene, angles=th, method="hertz", workers=2, chunk_size=30)
+    r1 = sweep(scene, SweepOptions(angles=th, method="hertz", chunk_size=30), RunOptions(workers=1))
+    r2 = sweep(scene, SweepOptions(angles=th, method="hertz", chunk_size=30), RunOptions(workers=2))
     for k in ("hs_p_axial_peak", "hs_w_max", "hs_y_centre", "hs_iterations"):
         assert np.array_equal(r1.table[k], r2.table[k], equal_nan=True), k
     cold = [finite_length_rows(scene, [t]) for t in th]

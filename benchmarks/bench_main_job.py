@@ -292,14 +292,14 @@ def main() -> int:
                     help="paired Hertz-only / cold / warm runs of the model cache (ratios)")
     ap.add_argument("--compute-only", action="store_true",
                     help="time only the compute-only command (--no-plots --vtk-every 0)")
-    ap.add_argument("--mesh-size", type=float, default=None,
-                    help="a/h of the sweep (--mesh-size; target 3: 360 angles at the p rms target)")
+    ap.add_argument("--a-over-h", type=float, default=None,
+                    help="a/h of the sweep (--a-over-h; target 3: 360 angles at the p rms target)")
     ap.add_argument("--root", type=Path, action="append", default=None,
                     help="femcam source tree(s) to time (e.g. an unpacked earlier commit for a "
                          "before/after table); default this tree")
     args = ap.parse_args()
     roots = args.root or [ROOT]
-    mesh = [] if args.mesh_size is None else ["--mesh-size", f"{args.mesh_size:g}"]
+    mesh = [] if args.a_over_h is None else ["--a-over-h", f"{args.a_over_h:g}"]
     print("# femcam main job, whole process (README command 1)")
     print(f"machine: {machine()}")
     print(f"load average at start: {load()} (1/5/15 min)\n")

@@ -11,7 +11,7 @@ cleared before each run, alternating the two scenes twice.
 
 Second part, **whole process** (issue 25's target: within 20 %): ``python -m femcam sweep`` of the
 example against the same translating equivalent written as a scene file (``lift_mm``,
-``offset_mm``, ``mass_kg``, ...), both at ``--mesh-size 10`` on 72 angles, ``--no-plots``; FE p0
+``offset_mm``, ``mass_kg``, ...), both at ``--a-over-h 10`` on 72 angles, ``--no-plots``; FE p0
 within 0.5 % of Hertz in both CSVs first, then ``PAIRS`` paired runs (alternating order): the
 median wall and CPU (user + system of the child process) time of each and the medians of the
 paired ratios. On a shared machine the CPU ratio is the steadier figure.
@@ -38,7 +38,7 @@ import tomllib
 SCENE = "examples/rff_valve_train.toml"
 #: paired whole-process runs
 PAIRS = 5
-SWEEP_FLAGS = ["--angles-deg", "0:360:5", "--method", "fe", "--mesh-size", "10", "--no-plots", "-q",
+SWEEP_FLAGS = ["--angles-deg", "0:360:5", "--method", "fe", "--a-over-h", "10", "--no-plots", "-q",
                "--workers", "1"]
 
 
@@ -59,7 +59,7 @@ def translating_equivalent(sc):
 
 def main() -> None:
     from femcam.scene import load_scene
-    from femcam.sweep import default_cache, sweep
+    from femcam.sweep import SweepOptions, default_cache, sweep
 
     osc = load_scene(SCENE)
     cases = {"oscillating": osc, "translating equivalent": translating_equivalent(osc)}
@@ -69,7 +69,7 @@ def main() -> None:
         for name, sc in cases.items():
             default_cache().clear()
             t0 = time.perf_counter()
-            r = sweep(sc, angles=angles, method="fe")
+            r = sweep(sc, SweepOptions(angles=angles, method="fe"))
             times[name].append(time.perf_counter() - t0)
             err = np.nanmax(np.abs(r["p0_fe"] / r["p0_hertz"] - 1.0))
             assert err < 5e-3, f"{name}: FE p0 off Hertz by {err:.3%}"

@@ -179,7 +179,7 @@ def sweep_table(quick, plots=False):
     import dataclasses
 
     from femcam.fe.angles import curvature_jumps as jumps_of
-    from femcam.sweep import sweep
+    from femcam.sweep import RunOptions, SweepOptions, sweep
     from femcam.sweep.cache import default_cache
 
     sc = load_scene(ROOT / "examples" / "shm_dwell_junction.toml")
@@ -192,7 +192,7 @@ def sweep_table(quick, plots=False):
     for method, trac, scene in cases:
         default_cache().clear()
         t0 = time.perf_counter()
-        r = sweep(scene, angles=ang, method=method, workers=1)
+        r = sweep(scene, SweepOptions(angles=ang, method=method), RunOptions(workers=1))
         res[(method, trac)] = (r, time.perf_counter() - t0, os.getloadavg()[0])
     r = res[("fe", "mechanism")][0]
     refs = []
@@ -227,7 +227,7 @@ def sweep_table(quick, plots=False):
     if plots:
         from femcam.viz.sweep import plot_junction_p0
 
-        rr = sweep(sc, angles=np.radians([89.0, 91.0]), workers=1)
+        rr = sweep(sc, SweepOptions(angles=np.radians([89.0, 91.0])), RunOptions(workers=1))
         deg = np.degrees(rr["theta"][rr["curvature_jump"] == 1])
         ref = [halfspace_p0(lambda x, t=t: exact_gap(sc.program, sc.follower, t, x, kind="vertical"),
                             F / sc.length, Es, 3e-4)
@@ -242,14 +242,15 @@ def sweep_follower_plots():
     import shutil
     import tempfile
 
-    from femcam.sweep import sweep
+    from femcam.sweep import RunOptions, SweepOptions, sweep
 
     for fname, png in (("seed003_knife_edge.toml", "sweep_knife_edge_p0.png"),
                        ("flat_faced.toml", "sweep_flat_faced_p0.png")):
         with tempfile.TemporaryDirectory() as d:
             t0 = time.perf_counter()
-            r = sweep(ROOT / "examples" / fname, angles=np.radians(np.arange(0.0, 360.0, 5.0)),
-                      out=d, plots=True, workers=1)
+            r = sweep(ROOT / "examples" / fname,
+                      SweepOptions(angles=np.radians(np.arange(0.0, 360.0, 5.0)), plots=True),
+                      RunOptions(out=d, workers=1))
             print(f"{fname}: {r.n_angles} angles in {time.perf_counter() - t0:.1f} s (load "
                   f"{os.getloadavg()[0]:.2f}), models {r.provenance['options']['models']}, max |FE p0 / "
                   f"Hertz - 1| = {100 * np.nanmax(np.abs(r['err_p0'])):.3f} %")

@@ -158,12 +158,13 @@ def fe_sweep(n, rtol=None):
     """A cold 360-angle FE sweep at a/h = n (or chosen for ``rtol``): time, timings, max |p0|
     and |a| errors vs Hertz and the largest p0 estimate over the arc-gap rows, the table, and the
     a/h used."""
-    from femcam.sweep import sweep
+    from femcam.sweep import RunOptions, SweepOptions, sweep
     from femcam.sweep.cache import default_cache
 
     default_cache().clear()  # cold model cache: every family built
     t = time.perf_counter()
-    res = sweep(STUDY, workers=1, **({"a_over_h": n} if rtol is None else {"rtol": rtol}))
+    res = sweep(STUDY, SweepOptions(**({"a_over_h": n} if rtol is None else {"rtol": rtol})),
+                RunOptions(workers=1))
     tt = time.perf_counter() - t
     tab = res.table
     # arc-gap rows only (as bench_main_job.py): the exact-gap rows at the cam's curvature jumps
@@ -189,13 +190,13 @@ def hs_sweep(tab, n):
 # -------------------------------------------------------------- memory
 MEM_CODE = """
 import sys, tempfile, time, numpy as np
-from femcam.sweep import sweep
+from femcam.sweep import RunOptions, SweepOptions, sweep
 n, method, a_over_h = int(sys.argv[1]), sys.argv[2], float(sys.argv[3])
 th = np.linspace(0, 2 * np.pi, n, endpoint=False)
 with tempfile.TemporaryDirectory() as d:
     t = time.perf_counter()
-    r = sweep(sys.argv[4], angles=th, method=method, a_over_h=a_over_h, out=d, chunk_size=1000,
-              workers=1)
+    r = sweep(sys.argv[4], SweepOptions(angles=th, method=method, a_over_h=a_over_h, chunk_size=1000),
+              RunOptions(out=d, workers=1))
     t = time.perf_counter() - t
 # VmHWM, not ru_maxrss: Linux keeps ru_maxrss across exec, so a child would report its parent's
 with open("/proc/self/status") as f:

@@ -108,14 +108,14 @@ import time, json, sys
 t0 = time.perf_counter()
 import numpy as np
 from femcam.scene import load_scene
-from femcam.sweep import sweep, parse_angles_deg
+from femcam.sweep import RunOptions, SweepOptions, sweep, parse_angles_deg
 args = json.loads(sys.argv[2])
 sc = load_scene(args["scene"])
 if args["law"]:
     sc = sc.with_law(args["law"])
 t1 = time.perf_counter()
-r = sweep(sc, angles=parse_angles_deg(args["angles"]), a_over_h=args["a_over_h"],
-          workers=args["workers"], tolerance=args["tolerance"])
+r = sweep(sc, SweepOptions(angles=parse_angles_deg(args["angles"]), a_over_h=args["a_over_h"],
+                          tolerance=args["tolerance"]), RunOptions(workers=args["workers"]))
 t2 = time.perf_counter()
 np.savez(sys.argv[1], **{k: np.asarray(v) for k, v in r.table.items()})
 print(json.dumps({"sweep": t2 - t1, "process": t2 - t0, "verify": r.timings.get("verify", 0.0),
@@ -160,14 +160,14 @@ def naive(scene, theta, a_over_h=10.0):
     """Fresh model per angle (exact rho and Hertz a), timed per angle; the tangential traction is
     the sweep's (the mechanism's Q, partial slip), so the reuse error compares like with like."""
     from femcam.sweep.cache import build_model
-    from femcam.sweep.options import SweepOptions, contact_params
+    from femcam.sweep.options import ResolvedOptions, contact_params
     from femcam.sweep.plan import hertz_half_width
     from femcam.sweep.realcam import scene_traction, traction_args
 
     cp = contact_params(scene)
     st = scene.analyse(theta)
     tr = scene_traction(scene, theta)
-    opts = SweepOptions(a_over_h=a_over_h)
+    opts = ResolvedOptions(a_over_h=a_over_h)
     rows = []
     t0 = time.perf_counter()
     for i, (F, rho) in enumerate(zip(st.Fc, st.rho, strict=True)):

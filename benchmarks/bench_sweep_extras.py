@@ -24,7 +24,7 @@ import numpy as np
 from femcam.assess import assess_rows
 from femcam.halfspace.rows import finite_length_rows
 from femcam.scene import contact_case, load_scene
-from femcam.sweep import extras, sweep
+from femcam.sweep import RunOptions, SweepOptions, extras, sweep
 
 ROOT = Path(__file__).resolve().parents[1]
 QUICK = "--quick" in sys.argv
@@ -57,10 +57,14 @@ def run(step_override=None):
         theta = np.radians(np.arange(0.0, 360.0, step))
         with tempfile.TemporaryDirectory() as d, tempfile.TemporaryDirectory() as d0:
             t0 = time.perf_counter()
-            sweep(bare, angles=theta, method="hertz", workers=1, out=d0, plots=True)
+            sweep(bare,
+                  SweepOptions(angles=theta, method="hertz", plots=True),
+                  RunOptions(workers=1, out=d0))
             t_bare = time.perf_counter() - t0
             t0 = time.perf_counter()
-            r = sweep(scene, angles=theta, method="hertz", workers=1, out=d, plots=True)
+            r = sweep(scene,
+                      SweepOptions(angles=theta, method="hertz", plots=True),
+                      RunOptions(workers=1, out=d))
             t_with = time.perf_counter() - t0
             check(prov, scene, theta, r.table)
             png = r.paths.get(f"plot_extras_{prov}")

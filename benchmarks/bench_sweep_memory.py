@@ -30,12 +30,12 @@ ROOT = Path(__file__).resolve().parents[1]
 CHILD = r"""
 import json, resource, sys, time
 import numpy as np
-from femcam.sweep import sweep
+from femcam.sweep import RunOptions, SweepOptions, sweep
 n, out = int(sys.argv[1]), sys.argv[2]
 th = np.linspace(0.0, 2 * np.pi, n, endpoint=False)
 t0 = time.perf_counter()
-sweep(str(sys.argv[3]), angles=th, method="hertz", out=out, chunk_size=1000, vtk_every=0,
-      plots=False, workers=1)
+sweep(str(sys.argv[3]), SweepOptions(angles=th, method="hertz", chunk_size=1000, vtk_every=0,
+                                     plots=False), RunOptions(out=out, workers=1))
 dt = time.perf_counter() - t0
 rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024  # before the check below
 csv = np.genfromtxt(f"{out}/sweep.csv", delimiter=",", names=True, comments="#", dtype=None,

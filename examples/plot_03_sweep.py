@@ -30,7 +30,9 @@ import femcam
 
 HERE = Path(__file__).parent if "__file__" in globals() else Path.cwd()  # sphinx-gallery: cwd
 out = Path(os.environ.get("FEMCAM_EXAMPLE_OUT") or tempfile.mkdtemp(prefix="femcam_")) / "sweep"
-res = femcam.sweep(HERE / "seed002_study_model.toml", out=out, vtk_every=30, plots=False)
+res = femcam.sweep(HERE / "seed002_study_model.toml",
+                   femcam.SweepOptions(vtk_every=30, plots=False),
+                   femcam.RunOptions(out=out))
 t = res.table                                  # SI columns, one entry per angle
 theta_deg = np.degrees(t["theta"])
 print(f"{len(theta_deg)} angles, models used: {res.provenance['options']['models']}")

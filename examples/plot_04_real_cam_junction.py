@@ -27,8 +27,8 @@ import numpy as np
 import femcam
 
 HERE = Path(__file__).parent if "__file__" in globals() else Path.cwd()  # sphinx-gallery: cwd
-res = femcam.sweep(HERE / "shm_dwell_junction.toml", angles=np.radians(np.arange(80.0, 100.1, 2.0)),
-                   plots=False)
+res = femcam.sweep(HERE / "shm_dwell_junction.toml",
+                   femcam.SweepOptions(angles=np.radians(np.arange(80.0, 100.1, 2.0)), plots=False))
 t = res.table
 deg = np.degrees(t["theta"])
 jump = t["curvature_jump"] == 1

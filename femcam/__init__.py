@@ -49,6 +49,7 @@ __all__ = [
     "Material",
     "STEEL",
     "effective_modulus",
+    "RunOptions",
     "Scene",
     "SweepOptions",
     "SweepResult",
@@ -59,12 +60,14 @@ __all__ = [
 
 #: the top-level names that load their package on first use: name -> module
 _LAZY = {"sweep": "femcam.sweep.run", "SweepOptions": "femcam.sweep.options",
+         "RunOptions": "femcam.sweep.options",
          "SweepResult": "femcam.sweep.result", "load_scene": "femcam.scene",
          "Scene": "femcam.scene"}
 
 
 def __getattr__(name):
-    """``sweep``, ``SweepOptions``, ``SweepResult``, ``load_scene``, ``Scene`` on first use:
+    """``sweep``, ``SweepOptions``, ``RunOptions``, ``SweepResult``, ``load_scene``, ``Scene`` on
+    first use:
     ``import femcam`` and ``femcam --version`` stay free of scipy's solvers and the scene
     machinery (PEP 562)."""
     if name not in _LAZY:

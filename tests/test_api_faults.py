@@ -498,8 +498,14 @@ CASES: dict[str, Case] = {
     "femcam.sweep.ModelCache": Case(kw(max_models=4), {"max_models": INT_POS}),
     "femcam.sweep.Progress": Case(kw(total=10, enabled=False), {"total": INT_NONNEG,
                                                                "delay_s": NONNEG}),
-    "femcam.SweepOptions": Case(kw(), {"a_over_h": POS, "tolerance": POS,
-                                             "chunk_size": INT_POS, "vtk_every": INT_NONNEG}),
+    "femcam.scene.StudySettings": Case(kw(), {"a_over_h": opt(POS), "tolerance": opt(POS),
+                                              "rtol": opt(POS), "chunk_size": opt(INT_POS),
+                                              "vtk_every": opt(INT_NONNEG)}),
+    "femcam.SweepOptions": Case(lazy(lambda: dict(angles=TH[:2])),
+                                {"a_over_h": opt(POS), "tolerance": opt(POS), "rtol": opt(POS),
+                                 "chunk_size": opt(INT_POS), "vtk_every": opt(INT_NONNEG),
+                                 "angles": opt(REAL)}),
+    "femcam.RunOptions": Case(kw(workers=2), {"workers": opt(INT_POS), "chunk_delay_s": NONNEG}),
     "femcam.sweep.auto_workers": Case(kw(n_tasks=4, n_solves=100, t_solve=0.01, n_families=2,
                                          t_build=1.0, cpus=2),
                                       {"n_tasks": INT_NONNEG, "n_solves": INT_NONNEG,
@@ -512,10 +518,10 @@ CASES: dict[str, Case] = {
         {"F": NONNEG, "rho": RADIUS, "tolerance": POS}),
     "femcam.sweep.run_tasks": Case(kw(fn=abs, tasks=[-1, 2], workers=1), {"workers": opt(INT_POS)},
                                    call=lambda *a, **k: list(_sweep_run_tasks(*a, **k))),
-    "femcam.sweep": Case(lazy(lambda: dict(scene=scene(), angles=TH[:2], method="hertz")),
-                               {"a_over_h": opt(POS), "rtol": opt(POS), "tolerance": opt(POS),
-                                "chunk_size": opt(INT_POS),
-                                "angles": opt(REAL)}, slow=True),
+    # the numbers are the two option records' (above); the records themselves:
+    # tests/test_sweep_api_cli.py::test_old_keywords_are_gone_and_options_are_typed
+    "femcam.sweep": Case(lazy(lambda: dict(scene=scene(), options=_sweep_user_options())), {},
+                         slow=True),
     "femcam.sweep.verify_families": Case(
         lazy(lambda: dict(F=state().Fc, rho=state().rho, theta=TH, cp=cp(),
                           options=_sweep_options(), contact=np.ones(12, bool))),
@@ -695,9 +701,13 @@ def _mesh_options():
 
 
 def _sweep_options():
-    from femcam.sweep import SweepOptions
+    from femcam.sweep.options import ResolvedOptions
 
-    return SweepOptions()
+    return ResolvedOptions()
+
+
+def _sweep_user_options():
+    return femcam.SweepOptions(angles=TH[:2], method="hertz")
 
 
 def _seed003():

@@ -29,7 +29,7 @@ from femcam.fe import ContactModel, MeshOptions
 from femcam.hertz import LineContact, max_shear_range
 from femcam.materials import STEEL
 from femcam.scene import contact_case, load_scene
-from femcam.sweep import sweep
+from femcam.sweep import RunOptions, SweepOptions, sweep
 
 EXAMPLE = "examples/seed002_assess.toml"
 
@@ -144,8 +144,9 @@ TH = np.radians([60.0, 74.0, 85.0])   # near the peak pressure (74 deg), where f
 @pytest.fixture(scope="module")
 def fe_sweep(tmp_path_factory):
     out = tmp_path_factory.mktemp("sweep")
-    r = sweep(EXAMPLE, angles=TH, method="fe", a_over_h=10, workers=1, out=out, plots=False,
-              vtk_every=0, scene_path=EXAMPLE)
+    r = sweep(EXAMPLE,
+              SweepOptions(angles=TH, method="fe", a_over_h=10, plots=False, vtk_every=0),
+              RunOptions(workers=1, out=out, scene_path=EXAMPLE))
     return r, out
 
 

@@ -17,7 +17,7 @@ from femcam.assess import assess, sweep_table
 from femcam.cli import main
 from femcam.errors import InputError
 from femcam.scene import contact_case, load_scene
-from femcam.sweep import sweep
+from femcam.sweep import RunOptions, SweepOptions, sweep
 
 EXAMPLE = Path("examples/seed002_assess.toml")
 
@@ -25,8 +25,9 @@ EXAMPLE = Path("examples/seed002_assess.toml")
 @pytest.fixture(scope="module")
 def swept(tmp_path_factory):
     out = tmp_path_factory.mktemp("sweep_damage") / "sw"
-    sweep(str(EXAMPLE), angles=np.radians([60.0, 90.0]), method="hertz", workers=1, plots=False,
-          vtk_every=0, out=out)
+    sweep(str(EXAMPLE),
+          SweepOptions(angles=np.radians([60.0, 90.0]), method="hertz", plots=False, vtk_every=0),
+          RunOptions(workers=1, out=out))
     return out
 
 

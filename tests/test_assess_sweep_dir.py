@@ -20,7 +20,7 @@ from femcam.cli import main
 from femcam.errors import InputError
 from femcam.scene import load_scene
 from femcam.scene.digest import physics_hash
-from femcam.sweep import sweep
+from femcam.sweep import RunOptions, SweepOptions, sweep
 
 EXAMPLE = Path("examples/seed002_assess.toml")
 
@@ -39,8 +39,9 @@ def _write(tmp_path, name: str, changes=()) -> Path:
 def swept(tmp_path_factory):
     tmp = tmp_path_factory.mktemp("sweep_dir")
     out = tmp / "sw"
-    sweep(str(EXAMPLE), angles=np.radians([0.0, 90.0]), method="hertz", workers=1, plots=False,
-          vtk_every=0, out=out)
+    sweep(str(EXAMPLE),
+          SweepOptions(angles=np.radians([0.0, 90.0]), method="hertz", plots=False, vtk_every=0),
+          RunOptions(workers=1, out=out))
     return out
 
 

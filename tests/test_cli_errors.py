@@ -281,9 +281,9 @@ def test_subcommands_share_scene_out_and_law_flags():
 @pytest.mark.parametrize("flag, value, expected", [
     # ranges typed from docs/sweep.md's settings table (a_over_h 2..400, tolerance 1e-4..0.5) and
     # from the meaning of the counts (at least 1 angle a chunk; 0 = no VTK)
-    ("--mesh-size", "1", "--mesh-size = 1 (elements per contact half-width, a/h): must be in [2, 400]; "
+    ("--a-over-h", "1", "--a-over-h = 1 (elements per contact half-width, a/h): must be in [2, 400]; "
                          "10 (default)"),
-    ("--mesh-size", "inf", "--mesh-size = inf (elements per contact half-width, a/h): must be finite"),
+    ("--a-over-h", "inf", "--a-over-h = inf (elements per contact half-width, a/h): must be finite"),
     ("--tolerance", "1e-05", "--tolerance = 1e-05 (relative p0 reuse error): must be >= 0.0001: "),
     ("--tolerance", "0.9", "--tolerance = 0.9 (relative p0 reuse error): must be in [0.0001, 0.5]"),
     ("--chunk-size", "0", "--chunk-size = 0 angles: must be a whole number >= 1"),
@@ -291,7 +291,7 @@ def test_subcommands_share_scene_out_and_law_flags():
 ])
 def test_sweep_flag_ranges_name_the_flag(flag, value, expected, tmp_path, capsys):
     """The sweep flags are checked by the scene schema's one range check, in the flag's words
-    (a scene key it mentions, a_over_h, appears as --mesh-size)."""
+    (a scene key it mentions, a_over_h, appears as --a-over-h)."""
     assert main(["sweep", SCENE, "--out", str(tmp_path / "o"), flag, value]) == 1
     err = _one_line(capsys, "sweep")
     assert expected in err

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from femcam.scene import load_scene
-from femcam.sweep import parse_angles_deg, sweep
+from femcam.sweep import RunOptions, SweepOptions, parse_angles_deg, sweep
 
 ROOT = Path(__file__).resolve().parents[1]
 SCENE = ROOT / "examples" / "seed002_study_model.toml"
@@ -38,8 +38,9 @@ def test_command_line_files_and_stdout_are_complete(tmp_path):
     assert p.returncode == 0, p.stderr
     assert p.stdout.startswith("femcam sweep: 8 angles")
     assert p.stdout.rstrip().endswith(str(tmp_path / "cli" / "report.html"))  # last path line
-    api = sweep(load_scene(SCENE), out=tmp_path / "api", angles=parse_angles_deg("0:360:45"),
-                method="hertz", vtk_every=1, progress=False)
+    api = sweep(load_scene(SCENE),
+                SweepOptions(angles=parse_angles_deg("0:360:45"), method="hertz", vtk_every=1),
+                RunOptions(out=tmp_path / "api", progress=False))
     assert _rows(tmp_path / "cli" / "sweep.csv") == _rows(tmp_path / "api" / "sweep.csv")
     for sub in ("vtk", "plots"):
         cli = sorted(x.name for x in (tmp_path / "cli" / sub).iterdir())

@@ -299,7 +299,7 @@ def test_elastic_arm_feeds_the_sweep_and_femcam_dynamics(monkeypatch, tmp_path, 
     """The Hertz sweep's Fc column is Scene.analyse's dynamic force; `femcam dynamics` prints the
     arm's natural frequency sqrt((K_t + k_psi)/I)/(2 pi) (closed form of the one_dof arm)."""
     from femcam.cli import main
-    from femcam.sweep import sweep
+    from femcam.sweep import SweepOptions, sweep
 
     text = EXAMPLE.read_text(encoding="utf-8").replace(
         "damping_N_m_s_per_rad = 0.0", 'damping_N_m_s_per_rad = 0.0\nmodel = "one_dof"\n'
@@ -308,7 +308,7 @@ def test_elastic_arm_feeds_the_sweep_and_femcam_dynamics(monkeypatch, tmp_path, 
     path.write_text(text, encoding="utf-8")
     sc = load_scene(path)
     th = np.radians([0.0, 20.0, 60.0, 120.0])
-    r = sweep(sc, angles=th, method="hertz")
+    r = sweep(sc, SweepOptions(angles=th, method="hertz"))
     np.testing.assert_allclose(r.table["Fc"], sc.analyse(th).Fc, rtol=1e-12)
     assert main(["dynamics", str(path), "--out", str(tmp_path / "dyn"), "--no-plots"]) == 0
     out = capsys.readouterr().out

@@ -57,26 +57,27 @@ def test_cap_bisection_is_the_largest_accepted():
 
 
 def test_sweep_mesh_size_100_refused_on_the_cli(tmp_path, capsys):
-    """``femcam sweep --mesh-size 100`` on seed 002 grew past 17 GB; now one line, no work."""
+    """``femcam sweep --a-over-h 100`` on seed 002 grew past 17 GB; now one line, no work."""
     out = tmp_path / "o"
-    assert main(["sweep", EX + "seed002_cam_on_shaft.toml", "--out", str(out), "--mesh-size", "100",
+    assert main(["sweep", EX + "seed002_cam_on_shaft.toml", "--out", str(out), "--a-over-h", "100",
                  "--angles-deg", "0:4:1"]) == 1
     err = capsys.readouterr().err.strip()
-    assert err.startswith("femcam sweep: error: --mesh-size = 100") and "use --mesh-size <= 66" in err
+    assert err.startswith("femcam sweep: error: --a-over-h = 100") and "use --a-over-h <= 66" in err
     assert not out.exists()
 
 
 def test_sweep_api_refuses_too(monkeypatch):
-    """``femcam.sweep(..., a_over_h=100)`` is refused before the analytic chain or any mesh
+    """``femcam.sweep(scene, SweepOptions(a_over_h=100))`` is refused before the analytic chain or any mesh
     (the scene range of a_over_h stays [2, 400]: the cap is the mesh's, not the setting's)."""
-    from femcam import sweep
+    from femcam import SweepOptions, sweep
     from femcam.scene import load_scene
 
     _no_gmsh(monkeypatch)
     sc = load_scene(EX + "seed002_study_model.toml")   # no cam disk: nothing else meshes
     with pytest.raises(InputError, match="cap of 80,000 elements"):
-        sweep(sc, angles=np.radians([0.0, 1.0]), a_over_h=100)
-    res = sweep(sc, angles=np.radians([0.0, 1.0]), a_over_h=100, method="hertz")  # no mesh: no cap
+        sweep(sc, SweepOptions(angles=np.radians([0.0, 1.0]), a_over_h=100))
+    # no mesh: no cap
+    res = sweep(sc, SweepOptions(angles=np.radians([0.0, 1.0]), a_over_h=100, method="hertz"))
     assert res.n_angles == 2
 
 

@@ -260,7 +260,7 @@ def test_surface_speed_on_the_base_circle_and_a_dwell():
 def test_assessment_columns_of_an_arm(load_raw):
     """The assessment (film, fatigue) runs on the arm's state: the cam surface speed on the base
     circle is omega Rb, and the safety factors are numbers."""
-    from femcam.sweep import sweep
+    from femcam.sweep import SweepOptions, sweep
 
     assess = tomllib.loads((EXAMPLE.parent / "seed002_assess.toml").read_text(encoding="utf-8"))
 
@@ -269,6 +269,6 @@ def test_assessment_columns_of_an_arm(load_raw):
         for k in ("materials", "lubricant", "surface"):
             raw[k] = assess[k]
     sc = load_raw(change)
-    t = sweep(sc, angles=np.radians([20.0, 200.0]), method="hertz").table
+    t = sweep(sc, SweepOptions(angles=np.radians([20.0, 200.0]), method="hertz")).table
     assert t["assess_u_cam"][1] == pytest.approx(sc.omega * sc.follower.Rb, rel=1e-12)
     assert np.all(np.isfinite(t["assess_sf_yield"])) and np.all(np.isfinite(t["assess_h_c"]))

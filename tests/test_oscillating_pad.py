@@ -170,12 +170,12 @@ def test_scene_slip_and_hertz_against_closed_forms(load_raw):
     """The pad scene: full sliding at omega Rb on the base circle (the wear slip), Hertz p0 with
     the pad radius as the second body (closed form, Johnson 1985 eq. 4.45 with the base circle's
     rho = Rb), traction full sliding."""
-    from femcam.sweep import sweep
+    from femcam.sweep import SweepOptions, sweep
     from femcam.sweep.realcam import scene_traction
 
     sc = load_raw()
     th = np.radians([200.0, 300.0, 20.0])       # base circle twice, then the rise
-    t = sweep(sc, angles=th, method="hertz").table
+    t = sweep(sc, SweepOptions(angles=th, method="hertz")).table
     st = sc.analyse(th)
     E_star = 210e9 / (2 * (1 - 0.3**2))
     R = 1 / (1 / 0.018 + 1 / 0.012)
@@ -214,7 +214,7 @@ def test_wear_of_both_bodies_is_archard_over_the_sliding_distance(load_raw):
 def test_assessment_film_uses_the_entrainment_speed(load_raw):
     """The assessment's film and flash temperature take the pad's surface speeds: U (and the
     sliding speed) against the finite-difference speeds of the contact's travel over each body."""
-    from femcam.sweep import sweep
+    from femcam.sweep import SweepOptions, sweep
 
     assess = tomllib.loads((EXAMPLE.parent / "seed002_assess.toml").read_text(encoding="utf-8"))
 
@@ -224,7 +224,7 @@ def test_assessment_film_uses_the_entrainment_speed(load_raw):
             raw[k] = assess[k]
     sc = load_raw(change)
     th = np.radians([20.0, 50.0, 110.0, 200.0])
-    t = sweep(sc, angles=th, method="hertz").table
+    t = sweep(sc, SweepOptions(angles=th, method="hertz")).table
     f = sc.follower
     _, _, u_cam, u_pad = _fd_speeds(
         f, CamProgram([dataclasses.replace(sg, h=sg.h / f.L) for sg in sc.program.segments]), th, sc.omega)
@@ -252,10 +252,10 @@ def test_exact_gap_in_the_arm_frame_is_the_arc_gap_near_the_contact(load_raw, pa
 @pytest.mark.slow
 def test_fe_sweep_of_the_pad_against_hertz(load_raw):
     """FE (arc and exact gap, full sliding mu = 0.08) against Hertz within 1 %."""
-    from femcam.sweep import sweep
+    from femcam.sweep import SweepOptions, sweep
 
     sc = load_raw()
-    t = sweep(sc, angles=np.radians([0.0, 20.0, 60.0, 200.0]), method="fe", a_over_h=10).table
+    t = sweep(sc, SweepOptions(angles=np.radians([0.0, 20.0, 60.0, 200.0]), method="fe", a_over_h=10)).table
     assert np.all(t["status"] == "ok")
     np.testing.assert_allclose(t["p0_fe"], t["p0_hertz"], rtol=1e-2,
                                err_msg="FE p0 of the sliding pad vs Hertz (Johnson 1985 §4.2)")

@@ -38,5 +38,5 @@ def test_scene_snippet_loads_and_is_the_study_model(text, tmp_path):
     assert sc.omega == pytest.approx(20 * np.pi, rel=1e-15)  # 600 rpm
     for k in ("s", "phi", "rho", "Fc"):
         np.testing.assert_allclose(getattr(a, k), getattr(b, k), rtol=1e-12, atol=0, err_msg=k)
-    assert sc.fe == {"a_over_h": 10.0, "tolerance": 2e-3}
-    assert sc.sweep["angles_deg"] == "0:360:1" and sc.sweep["plots"] is True
+    assert (sc.study.a_over_h, sc.study.tolerance, sc.study.rtol) == (10.0, 2e-3, None)
+    assert sc.study.angles_deg == "0:360:1" and sc.study.plots is True

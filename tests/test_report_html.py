@@ -21,7 +21,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from femcam.sweep import SweepResult, sweep
+from femcam.sweep import RunOptions, SweepOptions, SweepResult, sweep
 from femcam.sweep.report import report_html, scene_inputs
 from femcam.sweep.table import COLUMNS
 from femcam.sweep.worst import ITEMS, PEAKS
@@ -78,8 +78,10 @@ class Page(HTMLParser):
 @pytest.fixture(scope="module")
 def run(tmp_path_factory):
     out = tmp_path_factory.mktemp("report")
-    r = sweep(EXAMPLE, angles=np.radians(np.arange(0.0, 360.0, 45.0)), method="hertz", workers=1,
-              out=out, plots=True, vtk_every=4, progress=False, scene_path=EXAMPLE)
+    r = sweep(EXAMPLE,
+              SweepOptions(angles=np.radians(np.arange(0.0, 360.0, 45.0)),  method="hertz",  plots=True,
+                           vtk_every=4),
+              RunOptions(workers=1, out=out, progress=False, scene_path=EXAMPLE))
     return r, out, Page((out / "report.html").read_text(encoding="utf-8"))
 
 
@@ -154,8 +156,10 @@ def test_worst_values_are_the_npz_columns_at_the_stated_angle(run):
                                                ("seed002_assess.toml", None)])
 def test_provider_worst_values_match_the_npz(tmp_path, example, provider):
     out = tmp_path / "out"
-    sweep(f"examples/{example}", angles=np.radians([0.0, 90.0, 180.0, 270.0]), method="hertz",
-          workers=1, out=out, plots=False, vtk_every=0, progress=False)
+    sweep(f"examples/{example}",
+          SweepOptions(angles=np.radians([0.0, 90.0, 180.0, 270.0]),  method="hertz",  plots=False,
+                       vtk_every=0),
+          RunOptions(workers=1, out=out, progress=False))
     text = (out / "report.html").read_text(encoding="utf-8")
     page = Page(text)
     shown = _check_worst(out, page)
@@ -243,8 +247,10 @@ def test_refused_part_is_the_first_thing_on_the_page(run):
 @pytest.mark.slow
 def test_fe_validation_figures_match_the_npz(tmp_path):
     out = tmp_path / "fe"
-    sweep(EXAMPLE, angles=np.radians([60.0, 210.0, 300.0]), method="fe", a_over_h=4, workers=1,
-          out=out, plots=True, vtk_every=1, progress=False, scene_path=EXAMPLE)
+    sweep(EXAMPLE,
+          SweepOptions(angles=np.radians([60.0, 210.0, 300.0]),  method="fe",  a_over_h=4,  plots=True,
+                       vtk_every=1),
+          RunOptions(workers=1, out=out, progress=False, scene_path=EXAMPLE))
     z, page = _npz(out), Page((out / "report.html").read_text(encoding="utf-8"))
     text = " ".join(page.text)
     ok = z["status"].astype(str) == "ok"
@@ -285,8 +291,10 @@ def test_error_estimates_per_headline_quantity_match_the_npz(tmp_path):
     largest over the ok rows, read from sweep.npz here (err_est_* relative -> percent, .3g), in
     report.html's table and report.md's; p0 says the requested rtol and that every row met it."""
     out = tmp_path / "est"
-    sweep(EXAMPLE, angles=np.radians([60.0, 150.0, 210.0, 300.0]), rtol=0.005, workers=1, out=out,
-          plots=False, vtk_every=0, progress=False, scene_path=EXAMPLE)
+    sweep(EXAMPLE,
+          SweepOptions(angles=np.radians([60.0, 150.0, 210.0, 300.0]),  rtol=0.005,  plots=False,
+                       vtk_every=0),
+          RunOptions(workers=1, out=out, progress=False, scene_path=EXAMPLE))
     z, text = _npz(out), (out / "report.html").read_text(encoding="utf-8")
     md = (out / "report.md").read_text()
     ok = z["status"].astype(str) == "ok"

@@ -17,7 +17,7 @@ from femcam._repr import MAX_REPR, compact_repr
 from femcam.fe.result import ContactResult
 from femcam.io import csv_text
 from femcam.scene import contact_case, load_scene
-from femcam.sweep import SweepResult, sweep
+from femcam.sweep import RunOptions, SweepOptions, SweepResult, sweep
 
 EX = Path(__file__).resolve().parents[1] / "examples"
 STUDY = EX / "seed002_study_model.toml"
@@ -37,8 +37,9 @@ def state():
 @pytest.fixture(scope="module")
 def hertz_dir(tmp_path_factory):
     d = tmp_path_factory.mktemp("sweep")
-    sweep(load_scene(STUDY), angles=np.radians([40.0, 50.0, 60.0]), method="hertz", out=d,
-          plots=False, vtk_every=0, progress=None)
+    sweep(load_scene(STUDY),
+          SweepOptions(angles=np.radians([40.0, 50.0, 60.0]), method="hertz", plots=False, vtk_every=0),
+          RunOptions(out=d, progress=None))
     return d
 
 

@@ -36,5 +36,5 @@ def test_segment_laws_and_multiline_control_points_are_replaced(tmp_path):
     q.write_text(with_overrides(text, {("sweep", "method"): "hertz"}, law="cycloidal"))
     sc = load_scene(q)
     assert repr(sc.program) == repr(load_scene(p).with_law("cycloidal").program)
-    assert sc.sweep["method"] == "hertz"
+    assert sc.study.method == "hertz"
     assert "# control_points = [0.0, 0.0," in q.read_text()   # kept, as a comment

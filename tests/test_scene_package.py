@@ -37,7 +37,7 @@ def _load(tmp_path, extra):
 
 @pytest.mark.parametrize("method", ["fe", "hertz", "auto"])
 def test_scene_accepts_every_sweep_method(tmp_path, method):
-    assert _load(tmp_path, f'[sweep]\nmethod = "{method}"').sweep["method"] == method
+    assert _load(tmp_path, f'[sweep]\nmethod = "{method}"').study.method == method
     assert SweepOptions(method=method).method == method
 
 
@@ -49,7 +49,7 @@ def test_scene_and_sweep_options_agree(tmp_path, key, good, bad):
     table = "fe" if key in ("a_over_h", "tolerance") else "sweep"
     for v in good:
         assert getattr(SweepOptions(**{key: v}), key) == v
-        assert getattr(_load(tmp_path, f"[{table}]\n{key} = {v}"), table)[key] == v
+        assert getattr(_load(tmp_path, f"[{table}]\n{key} = {v}").study, key) == v
     for v in bad:
         with pytest.raises(InputError, match=f"^{key} = "):
             SweepOptions(**{key: v})

@@ -261,7 +261,7 @@ def test_rtol_on_accepts_the_err_est_stems_and_refuses_others(tmp_path):
     text = (EX / "seed002_study_model.toml").read_text(encoding="utf-8")
     ok = tmp_path / "ok.toml"
     ok.write_text(text + '\n[fe]\nrtol_pct = 0.5\nrtol_on = ["p0", "tau1"]\n', encoding="utf-8")
-    assert load_scene(ok).fe["rtol_on"] == ["p0", "tau1"]
+    assert load_scene(ok).study.rtol_on == ("p0", "tau1")
     for bad in ('["p0", "tau2"]', '"p0"', "[]"):
         p = tmp_path / "bad.toml"
         p.write_text(text + f"\n[fe]\nrtol_on = {bad}\n", encoding="utf-8")

@@ -94,7 +94,7 @@ def test_no_edge_unit_key_holds_an_si_value(path):
     angles_deg string is documented as written); every other value is SI-named, and the typed
     records (Scene.tribology, Scene.wear) have no field named with an edge unit."""
     scene = load_scene(path)
-    for attr in ("layers", "bodies", "finite_length", "fe", "sweep"):
+    for attr in ("layers", "bodies", "finite_length"):
         raw_tab = scene.origin.get(attr, {})
         for key, v in _edge_keys(getattr(scene, attr)):
             assert key.count(".") == 1 and raw_tab.get(key[1:]) == v, f"Scene.{attr}{key} = {v!r}"
@@ -103,6 +103,10 @@ def test_no_edge_unit_key_holds_an_si_value(path):
         if rec is not None:
             names = [f.name for f in dataclasses.fields(rec)]
             assert not [n for n in names if n.endswith(EDGE)], f"{type(rec).__name__} {names}"
+    # the [fe]/[sweep] record: only the angle spec keeps its edge unit, as written
+    study = {k: v for k, v in dataclasses.asdict(scene.study).items() if v is not None}
+    assert [k for k in study if k.endswith(EDGE)] == (["angles_deg"] if "angles_deg" in study else [])
+    assert study.get("angles_deg") == scene.origin.get("sweep", {}).get("angles_deg")
 
 
 def test_layer_columns_si_names_csv_names_unchanged():

@@ -15,9 +15,8 @@ import pytest
 import femcam.cli.sweep as cli_sweep
 from femcam.cli import main
 from femcam.errors import InputError, SceneError
-from femcam.scene import load_scene
+from femcam.scene import StudySettings, load_scene
 from femcam.sweep.options import TOLERANCE_FLOOR, SweepOptions
-from femcam.sweep.settings import SETTINGS as LIBRARY_SETTINGS
 from femcam.sweep.settings import resolve_settings
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -87,16 +86,23 @@ def test_valid_tables_are_kept(tmp_path):
     text = ("[fe]\na_over_h = 20\ntolerance = 1e-3\n[sweep]\nmethod = \"hertz\"\nangles_deg = \"-90:90:5\"\n"
             "chunk_size = 6\nvtk_every = 0\nplots = false\n[wear]\nk_mm3_per_N_m = 1e-9\nsrr = 0.05\n")
     sc = load_scene(_scene(tmp_path, text))
-    assert sc.fe == {"a_over_h": 20.0, "tolerance": 1e-3}
-    assert sc.sweep == {"method": "hertz", "angles_deg": "-90:90:5", "chunk_size": 6, "vtk_every": 0,
-                        "plots": False}
+    assert sc.study == StudySettings(a_over_h=20.0, tolerance=1e-3, method="hertz",
+                                     angles_deg="-90:90:5", chunk_size=6, vtk_every=0, plots=False)
+    assert sc.study.given() == {"a_over_h": 20.0, "tolerance": 1e-3, "method": "hertz",
+                                "angles_deg": "-90:90:5", "chunk_size": 6, "vtk_every": 0, "plots": False}
+    assert isinstance(sc.study.chunk_size, int) and sc.study.rtol is None
+    # the scene's percent is the record's fraction (SI inside): 0.5 % -> 0.005
+    (tmp_path / "pct").mkdir()
+    pct = load_scene(_scene(tmp_path / "pct", "[fe]\nrtol_pct = 0.5\nrtol_on = [\"p0\", \"tau1\"]\n"))
+    assert pct.study.rtol == pytest.approx(0.005, rel=1e-15) and pct.study.rtol_on == ("p0", "tau1")
+    assert StudySettings().given() == {}
     assert sc.wear.k == pytest.approx(1e-18) and sc.wear.srr == pytest.approx(0.05)  # mm^3 = 1e-9 m^3
     assert sc.wear.K is None and sc.wear.J is None and sc.wear.cycles is None   # not given
 
 
 @pytest.fixture
 def captured(monkeypatch):
-    """Replace the sweep the CLI calls by one that records its keyword arguments."""
+    """Replace the sweep the CLI calls by one that records its run options and resolved settings."""
     calls = []
 
     class _R:  # just enough of a SweepResult for the CLI's printout
@@ -107,10 +113,10 @@ def captured(monkeypatch):
             return dict.fromkeys(("n_liftoff", "n_undercut", "n_failed", "Fc_max", "p0_hertz_max",
                                   "vm_max", "tau1_max"), 0)
 
-    def fake(scene, **kw):
+    def fake(scene, options, run):
         # the CLI hands its flags over as given; the library resolves them (scene, default)
-        st = resolve_settings(scene, {k: kw.get(k) for k in LIBRARY_SETTINGS})
-        calls.append({**kw, "angles": st.angles, "a_over_h": st.a_over_h, "tolerance": st.tolerance,
+        st = resolve_settings(scene, options.given())
+        calls.append({**vars(run), "angles": st.angles, "a_over_h": st.a_over_h, "tolerance": st.tolerance,
                       "method": st.method, "chunk_size": st.chunk_size, "vtk_every": st.vtk_every,
                       "plots": st.plots})
         return _R()
@@ -135,7 +141,7 @@ def test_sweep_takes_settings_from_the_scene(tmp_path, captured, capsys):
 
 def test_flags_override_the_scene(tmp_path, captured):
     args = ["sweep", str(_scene(tmp_path, SETTINGS)), "--out", str(tmp_path / "o"), "--angles-deg", "0:10:10",
-            "--mesh-size", "8", "--tolerance", "0.01", "--method", "fe", "--chunk-size", "5",
+            "--a-over-h", "8", "--tolerance", "0.01", "--method", "fe", "--chunk-size", "5",
             "--vtk-every", "3", "--plots"]
     assert main(args) == 0
     kw = captured[-1]

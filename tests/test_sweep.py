@@ -28,8 +28,8 @@ from femcam.loads import FollowerDynamics
 from femcam.mesh import MeshOptions
 from femcam.scene import Scene, load_scene
 from femcam.scene.wear import WearSettings
-from femcam.sweep import auto_workers, default_cache, parse_angles_deg, sweep
-from femcam.sweep.options import SweepOptions, contact_params
+from femcam.sweep import RunOptions, SweepOptions, auto_workers, default_cache, parse_angles_deg, sweep
+from femcam.sweep.options import ResolvedOptions, contact_params
 from femcam.sweep.profile import worst_surface_profile
 from femcam.sweep.store import ChunkStore
 from femcam.sweep.table import empty_rows
@@ -107,19 +107,19 @@ def test_bad_angle_spec_is_clear(spec, words):
 
 def test_bad_options_are_input_errors(scene):
     with pytest.raises(InputError, match="method"):
-        sweep(scene, angles=[0.0], method="magic")
+        sweep(scene, SweepOptions(angles=[0.0], method="magic"))
     with pytest.raises(InputError, match="angles"):
-        sweep(scene, angles=[0.0, np.nan], method="hertz")
+        sweep(scene, SweepOptions(angles=[0.0, np.nan], method="hertz"))
     with pytest.raises(InputError, match="a_over_h"):
-        sweep(scene, angles=[0.0], a_over_h=0.5)
+        sweep(scene, SweepOptions(angles=[0.0], a_over_h=0.5))
     with pytest.raises(InputError, match=r"tolerance = 1e-05 \(relative p0 reuse error\): must be >= 0.0001"):
-        sweep(scene, angles=[0.0], tolerance=1e-5)
+        sweep(scene, SweepOptions(angles=[0.0], tolerance=1e-5))
     with pytest.raises(InputError, match="workers"):
-        sweep(scene, angles=[0.0], workers="many", method="hertz")
+        sweep(scene, SweepOptions(angles=[0.0], method="hertz"), RunOptions(workers="many"))
     with pytest.raises(InputError, match=r"workers = 2.5 processes: must be an integer >= 1"):
-        sweep(scene, angles=[0.0], workers=2.5, method="hertz")
+        sweep(scene, SweepOptions(angles=[0.0], method="hertz"), RunOptions(workers=2.5))
     with pytest.raises(InputError, match=r"chunk_delay_s = -1 s: must be >= 0"):
-        sweep(scene, angles=[0.0], chunk_delay_s=-1, method="hertz")
+        sweep(scene, SweepOptions(angles=[0.0], method="hertz"), RunOptions(chunk_delay_s=-1))
 
 
 def test_auto_workers_uses_processes_only_when_they_pay():
@@ -139,7 +139,7 @@ def test_auto_workers_uses_processes_only_when_they_pay():
 def test_hertz_sweep_matches_closed_form_and_textbook_maxima(scene):
     sc = dataclasses.replace(scene, mu=0.0)
     th = np.radians(np.arange(0.0, 360.0, 5.0))
-    r = sweep(sc, angles=th, method="hertz")
+    r = sweep(sc, SweepOptions(angles=th, method="hertz"))
     assert np.all(r.status == "ok")
     # Fc from seed 002 eq. 11 written out (independent of femcam.loads)
     st = sc.analyse(th)
@@ -163,7 +163,7 @@ def test_hertz_sweep_matches_closed_form_and_textbook_maxima(scene):
 
 def test_hertz_sweep_with_friction_uses_surface_formulas(scene):
     th = np.radians([0.0, 45.0, 200.0])
-    r = sweep(scene, angles=th, method="hertz")
+    r = sweep(scene, SweepOptions(angles=th, method="hertz"))
     mu = scene.mu
     p0 = r["p0_hertz"]
     # seed 002 eqs. 5-8: tensile peak 2 mu p0 at the trailing edge, |txz| max = mu p0
@@ -178,7 +178,7 @@ def fe_sample(scene):
     # [contact] sliding = "+x": the explicit full-sliding override, so that McEwen's full-sliding
     # closed forms are the reference (without it the roller carries the mechanism's small Q)
     th = np.radians(np.arange(0.0, 360.0, 30.0))
-    return sweep(dataclasses.replace(scene, sliding="+x"), angles=th, chunk_size=5)
+    return sweep(dataclasses.replace(scene, sliding="+x"), SweepOptions(angles=th, chunk_size=5))
 
 
 def test_fe_sweep_equals_hertz_within_fe_tolerance(scene, fe_sample):
@@ -236,7 +236,7 @@ def test_estimated_checks_hold_the_tolerance(scene):
 
     scene = dataclasses.replace(scene, sliding="+x")  # full sliding, as the fresh reference
     th = np.radians(np.arange(0.0, 360.0, 3.0))
-    r = sweep(scene, angles=th)
+    r = sweep(scene, SweepOptions(angles=th))
     est = [(f, c) for f in r.families for c in f.get("estimated", ())]
     assert est, "the study model's families should have estimated candidates"
     for f, (th_deg, _, _, e) in est:
@@ -259,7 +259,7 @@ def test_liftoff_rows_do_not_crash(scene):
     Fc = (d.m * st.a + d.c * st.v + d.k * st.s + d.Fpl) / np.cos(st.phi)  # seed 002 eq. 11
     lift = Fc <= 0
     assert lift.any() and (~lift).any()
-    r = sweep(sc, angles=th, chunk_size=9)
+    r = sweep(sc, SweepOptions(angles=th, chunk_size=9))
     np.testing.assert_array_equal(r.status == "liftoff", lift)
     assert np.all(r.status[~lift] == "ok")
     # no contact: zero width, zero pressure, zero stress, zero wear; undefined ratios and depths
@@ -286,7 +286,7 @@ def test_failed_angle_is_recorded_and_sweep_continues(scene, monkeypatch):
     default_cache().clear()  # no cached results of the real solve
     th = np.radians([0.0, 40.0, 80.0])
     bad_F["F"] = float(scene.analyse(th).Fc[1])
-    r = sweep(scene, angles=th)
+    r = sweep(scene, SweepOptions(angles=th))
     assert list(r.status) == ["ok", "failed", "ok"]
     assert "ConvergenceError: active set cycled" in r["message"][1]
     assert np.isnan(r["p0_fe"][1]) and np.isfinite(r["p0_hertz"][1])
@@ -310,7 +310,7 @@ def test_undercut_and_nearly_conformal_rows(scene, monkeypatch):
     monkeypatch.setattr(pl, "arc_error_estimate", lambda sc, th, a, R: (np.zeros(len(th)),) * 2)
     Rr = scene.follower.Rr
     th = np.radians([0.0, 10.0, 20.0, 30.0])
-    r = sweep(Wrapped.of(scene, {1: -0.9 * Rr, 2: -1.005 * Rr}), angles=th)
+    r = sweep(Wrapped.of(scene, {1: -0.9 * Rr, 2: -1.005 * Rr}), SweepOptions(angles=th))
     assert r.status[1] == "undercut"
     assert "roller does not fit the concave cam" in r["message"][1]
     for k in ("p0_hertz", "p0_fe", "a_fe", "vm_max", "wear_depth"):
@@ -342,7 +342,8 @@ def test_rebuilt_flag_uses_a_model_of_its_own(scene, monkeypatch):
 
     monkeypatch.setattr(ContactModel, "covers", covers)
     default_cache().clear()
-    r = sweep(scene, angles=th, model_cache=False)  # every model built here (build times below)
+    # every model built here (build times below)
+    r = sweep(scene, SweepOptions(angles=th), RunOptions(model_cache=False))
     assert [("rebuilt" in f.split(";")) for f in r["flags"]] == [False, True, False]
     assert np.all(r.status == "ok")
     # build time accounting: the family models were built (and recorded per family) during the
@@ -358,8 +359,8 @@ def test_rebuilt_flag_uses_a_model_of_its_own(scene, monkeypatch):
 def test_tight_tolerance_gives_more_families_and_holds(scene):
     th = np.radians(np.arange(0.0, 100.0, 12.5))  # the rise: a varies by ~40 %
     scene = dataclasses.replace(scene, sliding="+x")  # full sliding, as the fresh reference
-    loose = sweep(scene, angles=th, a_over_h=6, tolerance=5e-3)
-    tight = sweep(scene, angles=th, a_over_h=6, tolerance=5e-4)
+    loose = sweep(scene, SweepOptions(angles=th, a_over_h=6, tolerance=5e-3))
+    tight = sweep(scene, SweepOptions(angles=th, a_over_h=6, tolerance=5e-4))
     assert len(tight.families) > len(loose.families)
     for res, tol in ((loose, 5e-3), (tight, 5e-4)):
         assert res.reuse_error <= tol
@@ -381,12 +382,12 @@ def test_worst_angle_profile_reuses_the_family_model(scene):
     # the profile is recomputed with the arc gap and full sliding in the scene's direction: the
     # "+x" override and angles answered by the family's arc-gap model
     scene = dataclasses.replace(scene, sliding="+x")
-    r = sweep(scene, angles=np.radians([40.0, 60.0, 80.0]))
+    r = sweep(scene, SweepOptions(angles=np.radians([40.0, 60.0, 80.0])))
     assert set(r["model"]) == {"fe_arc"}
     cache = default_cache()
     built = cache.stats["built"]
     prof = worst_surface_profile(r.table, r.method, contact_params(scene), r.families,
-                                 SweepOptions(), cache)
+                                 ResolvedOptions(), cache)
     assert cache.stats["built"] == built, "the profile must not build a model"
     i = r.worst_index("p0_fe")
     assert prof["fe_model"] == f"family {int(r['family'][i])}"
@@ -397,7 +398,7 @@ def test_wear_column_is_archard_per_pass_closed_form(scene):
     """Hertz rows: dh per revolution = k (int p dx) (v_slip / V_cam), int p dx = Fc / l; the
     roller's slide-to-roll model SRR = 0.02 gives v_slip / V_cam = 2 SRR / (2 + SRR)."""
     th = np.radians(np.arange(0.0, 360.0, 7.5))
-    r = sweep(scene, angles=th, method="hertz")
+    r = sweep(scene, SweepOptions(angles=th, method="hertz"))
     sc = scene
     st = sc.analyse(th)
     d = sc.dynamics
@@ -422,7 +423,7 @@ def test_wear_slip_uses_every_wear_key_like_the_wear_map(scene):
     sc = dataclasses.replace(scene, wear=WearSettings(roller_model="inertia", J=5e-3,
                                                           T_drag=0.5))
     th = np.radians(np.arange(0.0, 360.0, 1.0))
-    r = sweep(sc, angles=th, method="hertz")
+    r = sweep(sc, SweepOptions(angles=th, method="hertz"))
     st = sc.analyse(th)
     f = sc.follower
     ref = roller_inertia(th, st.s, st.s1, st.s2, np.clip(st.Fc, 0.0, None), Rb=f.Rb, Rr=f.Rr,
@@ -456,7 +457,7 @@ def test_bezier_5_7_9_peak_p0_ordering_and_ratios(scene):
     peak, ref = {}, {}
     for name in ("bezier5", "bezier7", "bezier9"):
         sc = scene.with_law(name)
-        r = sweep(sc, angles=th, method="hertz", chunk_size=th.size)
+        r = sweep(sc, SweepOptions(angles=th, method="hertz", chunk_size=th.size))
         assert np.all(r.status == "ok")
         peak[name] = np.nanmax(r["p0_hertz"])
         ref[name] = _peak_p0_from_primitives(sc)
@@ -482,8 +483,9 @@ def test_outputs_provenance_and_pvd(scene, tmp_path):
     th = np.radians(np.arange(0.0, 360.0, 45.0))
     old = os.umask(0o022)
     try:
-        r = sweep(STUDY, angles=th, out=tmp_path, vtk_every=2, chunk_size=3, plots=True,
-                  command="femcam sweep test")
+        r = sweep(STUDY,
+                  SweepOptions(angles=th, vtk_every=2, chunk_size=3, plots=True),
+                  RunOptions(out=tmp_path, command="femcam sweep test"))
     finally:
         os.umask(old)
     # ordinary file modes (0o666 & ~umask), not mkstemp's private 0600
@@ -560,15 +562,18 @@ def test_store_refuses_a_different_sweep_and_ignores_partial_files(tmp_path):
 @pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_fe_resume_reuses_the_stored_family_plan(scene, tmp_path):
     th = np.radians([0.0, 30.0, 60.0, 90.0])
-    full = sweep(scene, angles=th, out=tmp_path, chunk_size=2, vtk_every=0, plots=False)
+    full = sweep(scene,
+                 SweepOptions(angles=th, chunk_size=2, vtk_every=0, plots=False),
+                 RunOptions(out=tmp_path))
     plan_path = tmp_path / "chunks" / "plan.json"
     plan = json.loads(plan_path.read_text())
     assert plan["family"] == [int(f) for f in full["family"]]
     plan["records"][0]["check_time"] = 12345.0  # a marker: a resume must not re-verify
     plan_path.write_text(json.dumps(plan))
     (tmp_path / "chunks" / "chunk_00001.npz").unlink()
-    again = sweep(scene, angles=th, out=tmp_path, chunk_size=2, resume=True, vtk_every=0,
-                  plots=False)
+    again = sweep(scene,
+                  SweepOptions(angles=th, chunk_size=2, vtk_every=0, plots=False),
+                  RunOptions(out=tmp_path, resume=True))
     assert (again.n_chunks_computed, again.n_chunks_resumed) == (1, 1)
     assert again.families[0]["check_time"] == 12345.0
     np.testing.assert_array_equal(again["family"], full["family"])
@@ -581,16 +586,20 @@ def test_fe_resume_reuses_the_stored_family_plan(scene, tmp_path):
 @pytest.mark.slow  # several seconds; the default suite stays under 90 s
 def test_resume_in_process_reuses_chunks(scene, tmp_path):
     th = np.radians(np.arange(0.0, 360.0, 20.0))
-    full = sweep(scene, angles=th, out=tmp_path, method="hertz", chunk_size=4, vtk_every=0)
+    full = sweep(scene,
+                 SweepOptions(angles=th, method="hertz", chunk_size=4, vtk_every=0),
+                 RunOptions(out=tmp_path))
     (tmp_path / "chunks" / "chunk_00002.npz").unlink()
-    again = sweep(scene, angles=th, out=tmp_path, method="hertz", chunk_size=4, resume=True,
-                  vtk_every=0)
+    again = sweep(scene,
+                  SweepOptions(angles=th, method="hertz", chunk_size=4, vtk_every=0),
+                  RunOptions(out=tmp_path, resume=True))
     assert (again.n_chunks_computed, again.n_chunks_resumed) == (1, 4)
     for k in ("p0_hertz", "vm_max", "Fc"):
         np.testing.assert_array_equal(again[k], full[k])
     with pytest.raises(InputError, match="different sweep"):
-        sweep(scene, angles=th[:-1], out=tmp_path, method="hertz", chunk_size=4, resume=True,
-                  vtk_every=0)
+        sweep(scene,
+              SweepOptions(angles=th[:-1], method="hertz", chunk_size=4, vtk_every=0),
+              RunOptions(out=tmp_path, resume=True))
 
 
 def test_cli_in_process(tmp_path, capsys):
@@ -605,7 +614,7 @@ def test_cli_in_process(tmp_path, capsys):
     assert rc == 1
     assert "--angles-deg = '0:360' deg: must be start:stop:step" in capsys.readouterr().err
     # errors name the flags, with units, not the API parameters
-    for flag, val, words in (("--mesh-size", "0", "--mesh-size = 0 (elements per contact half-width"),
+    for flag, val, words in (("--a-over-h", "0", "--a-over-h = 0 (elements per contact half-width"),
                              ("--tolerance", "1e-5", "--tolerance = 1e-05 (relative p0 reuse error)"),
                              ("--workers", "0", "--workers = 0 processes"),
                              ("--vtk-every", "-1", "--vtk-every = -1 angles")):
@@ -645,7 +654,7 @@ def test_progress_bar_on_tty_plain_lines_elsewhere():
 def test_sharp_knife_edge_scene_is_refused_clearly():
     sc = load_scene(ROOT / "examples" / "seed003_knife_edge.toml")
     with pytest.raises(InputError, match=r"tip_radius_mm.*\[follower\]"):
-        sweep(dataclasses.replace(sc, tip_radius=None), angles=[0.0], method="hertz")
+        sweep(dataclasses.replace(sc, tip_radius=None), SweepOptions(angles=[0.0], method="hertz"))
 
 
 @pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
@@ -654,7 +663,9 @@ def test_top_level_sweep_and_hertz_vtk_series(scene, tmp_path):
     import femcam
 
     th = np.radians([0.0, 90.0, 180.0])
-    r = femcam.sweep(scene, angles=th, method="hertz", out=tmp_path, vtk_every=1)
+    r = femcam.sweep(scene,
+                     femcam.SweepOptions(angles=th, method="hertz", vtk_every=1),
+                     femcam.RunOptions(out=tmp_path))
     reader = pv.get_reader(r.paths["pvd"])
     assert len(reader.time_values) == 3
     reader.set_active_time_value(90.0)

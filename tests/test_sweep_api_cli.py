@@ -41,10 +41,10 @@ def _rows(out: Path) -> list[dict]:
     return [{k: v for k, v in r.items() if not k.startswith(WALL_CLOCK)} for r in rows]
 
 
-def _both(tmp_path, scene, api_kw=None, flags=()):
+def _both(tmp_path, scene, options=None, flags=()):
     """(API result, API rows, CLI rows) of the same scene, settings and overrides."""
-    r = femcam.sweep(str(scene), out=tmp_path / "api", progress=False, model_cache=False,
-                     **(api_kw or {}))
+    r = femcam.sweep(str(scene), options,
+                     femcam.RunOptions(out=tmp_path / "api", progress=False, model_cache=False))
     code = main(["sweep", str(scene), "--out", str(tmp_path / "cli"), "--progress", "off",
                  "--no-cache", *flags])
     assert code == 0
@@ -63,7 +63,8 @@ def test_hertz_rows_equal_with_scene_settings(tmp_path):
 
 
 def test_explicit_keyword_overrides_the_scene_like_the_flag(tmp_path):
-    r, api, cli = _both(tmp_path, _scene(tmp_path, HERTZ), dict(angles=np.radians([0.0, 90.0]), chunk_size=1),
+    r, api, cli = _both(tmp_path, _scene(tmp_path, HERTZ),
+                        femcam.SweepOptions(angles=np.radians([0.0, 90.0]), chunk_size=1),
                         ("--angles-deg", "0:90:90", "--chunk-size", "1"))
     assert len(api) == 2 and api == cli
     assert r.provenance["options"]["chunk_size"] == 1
@@ -75,6 +76,39 @@ def test_fe_rows_equal_with_scene_settings(tmp_path):
     assert len(api) == 3 and api == cli
     assert r.method == "fe" and r.provenance["options"]["a_over_h"] == 6.0
     assert np.isfinite(r.table["p0_fe"]).all()
+
+
+@pytest.mark.parametrize("study", [HERTZ, FE], ids=["hertz", "fe"])
+def test_sweep_of_a_path_without_options_equals_the_cli(tmp_path, monkeypatch, study):
+    """``femcam.sweep(path)``, no options at all (in memory, the default model cache), computes
+    the rows of ``femcam sweep path``: every numeric column of the two tables bit-identical but
+    the wall-clock ones (the CLI's own table, taken from the sweep it runs)."""
+    import femcam.cli.sweep as cli_sweep
+
+    monkeypatch.setenv("FEMCAM_CACHE_DIR", str(tmp_path / "cache"))
+    path = _scene(tmp_path, study)
+    r = femcam.sweep(path)
+    seen = []
+    monkeypatch.setattr(cli_sweep, "sweep", lambda *a, **k: seen.append(femcam.sweep(*a, **k)) or seen[-1])
+    assert main(["sweep", str(path), "--out", str(tmp_path / "cli"), "--progress", "off"]) == 0
+    cli = seen[0].table
+    numeric = [k for k, v in r.table.items() if np.asarray(v).dtype.kind in "fiub"
+               and not k.startswith(WALL_CLOCK)]
+    assert "p0_hertz" in numeric and len(numeric) > 10 and sorted(cli) == sorted(r.table)
+    for k in numeric:
+        np.testing.assert_array_equal(np.asarray(cli[k]), np.asarray(r.table[k]), err_msg=k)
+
+
+def test_old_keywords_are_gone_and_options_are_typed(tmp_path):
+    """No keyword style besides the two records: a stray keyword is Python's TypeError, a
+    record of the wrong kind an InputError naming the parameter."""
+    path = _scene(tmp_path, HERTZ)
+    with pytest.raises(TypeError):
+        femcam.sweep(path, angles=[0.0])
+    with pytest.raises(InputError, match="options = 'dict': must be a SweepOptions"):
+        femcam.sweep(path, {"angles": [0.0]})
+    with pytest.raises(InputError, match="run = 'SweepOptions': must be a RunOptions"):
+        femcam.sweep(path, femcam.SweepOptions(), femcam.SweepOptions())
 
 
 def test_defaults_without_scene_settings(tmp_path):
@@ -111,3 +145,15 @@ def test_check_refuses_what_the_sweep_refuses(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "[fe] rtol_pct = 0.5 %: cannot be given with [fe] a_over_h" in err
     assert len(err.strip().splitlines()) == 1
+
+
+def test_mesh_size_flag_is_gone(tmp_path, capsys):
+    """One name per quantity: the scene key [fe] a_over_h is the flag --a-over-h; the old
+    --mesh-size is an unknown argument (argparse's exit 2), not an abbreviation of another flag."""
+    path = _scene(tmp_path, HERTZ)
+    with pytest.raises(SystemExit) as exc:
+        main(["sweep", str(path), "--out", str(tmp_path / "o"), "--mesh-size", "8"])
+    assert exc.value.code == 2
+    assert "unrecognized arguments: --mesh-size 8" in capsys.readouterr().err
+    assert main(["sweep", str(path), "--out", str(tmp_path / "o"), "--a-over-h", "8",
+                 "--progress", "off"]) == 0

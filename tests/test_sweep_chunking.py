@@ -18,15 +18,16 @@ import pytest
 
 from femcam.layers.from_scene import model_grading
 from femcam.scene import load_scene
-from femcam.sweep import providers, sweep
+from femcam.sweep import RunOptions, SweepOptions, providers, sweep
 
 EX = "examples/"
 TIMING = ("fe_time", "build_time")
 
 
 def _table(scene, theta, chunk_size):
-    r = sweep(scene, angles=theta, method="hertz", chunk_size=chunk_size, workers=1, plots=False,
-              vtk_every=0)
+    r = sweep(scene,
+              SweepOptions(angles=theta, method="hertz", chunk_size=chunk_size, plots=False, vtk_every=0),
+              RunOptions(workers=1))
     return r.table
 
 
@@ -92,7 +93,9 @@ def test_fe_sweep_of_the_crowned_roller_does_not_depend_on_chunk_size():
     # most loaded slice, whose load comes from the half-space rows
     scene = load_scene(EX + "seed002_crowned.toml")
     th = np.radians([0.0, 50.0, 130.0])
-    t = [sweep(scene, angles=th, method="fe", chunk_size=c, workers=1, plots=False, vtk_every=0).table
+    t = [sweep(scene,
+               SweepOptions(angles=th, method="fe", chunk_size=c, plots=False, vtk_every=0),
+               RunOptions(workers=1)).table
          for c in (1, 3)]
     assert np.all(np.isfinite(np.asarray(t[0]["p0_peak_slice"], float)))
     _assert_identical(t[0], t[1], [c for c in t[0] if c not in TIMING])

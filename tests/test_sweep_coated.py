@@ -27,7 +27,7 @@ from femcam.layers.coating import Coating
 from femcam.materials import Material
 from femcam.mesh import MeshOptions
 from femcam.scene import load_scene
-from femcam.sweep import sweep
+from femcam.sweep import RunOptions, SweepOptions, sweep
 
 RB, RR, L = 0.020, 0.010, 0.010
 #: a dwell on the base circle: s = v = a = 0, so Fc = preload and rho = Rb
@@ -98,7 +98,7 @@ def _hertz(F, E1, nu1, E2, nu2, rho=RB, Rr=RR, length=L):
 
 
 def _dwell_row(sc, a_over_h, preload_N):
-    r = sweep(sc, angles=np.radians([DWELL_DEG]), workers=1, a_over_h=a_over_h)
+    r = sweep(sc, SweepOptions(angles=np.radians([DWELL_DEG]), a_over_h=a_over_h), RunOptions(workers=1))
     assert r["status"][0] == "ok", r["message"][0]
     assert r["Fc"][0] == pytest.approx(preload_N, rel=1e-9) and r["rho"][0] == pytest.approx(RB, rel=1e-9)
     return r
@@ -171,9 +171,11 @@ def test_method_auto_gives_a_coated_scene_to_the_fe(tmp_path):
     uncoated dwell with Hertz; with a coating (Hertz's error estimate knows none) the coated FE
     answers, and its layer columns come from that solve."""
     th = np.radians([DWELL_DEG])
-    plain = sweep(_scene(tmp_path), angles=th, workers=1, a_over_h=6.0, method="auto")
+    plain = sweep(_scene(tmp_path),
+                  SweepOptions(angles=th, a_over_h=6.0, method="auto"),
+                  RunOptions(workers=1))
     sc = _scene(tmp_path, tables=_coating("cam", 30.0, 100.0, 0.3))
-    r = sweep(sc, angles=th, workers=1, a_over_h=6.0, method="auto")
+    r = sweep(sc, SweepOptions(angles=th, a_over_h=6.0, method="auto"), RunOptions(workers=1))
     assert plain["model"][0] == "hertz"
     assert r["model"][0] == "fe_arc+coating" and r["layer_source"][0] == "headline"
     assert np.isfinite(r["layer_interface_tau_max"][0]) and "headline_omits_coating" not in r["flags"][0]
@@ -289,8 +291,10 @@ def test_rtol_on_the_interface_shear_of_a_coated_row(tmp_path):
     F = 3000.0
     a0, _ = _hertz(F, STEEL.E, STEEL.nu, STEEL.E, STEEL.nu)
     sc = _scene(tmp_path, preload_N=F, tables=_coating("roller", 0.5 * a0 * 1e6, 420.0, 0.3))
-    r = sweep(sc, angles=np.radians([DWELL_DEG, 340.0]), workers=1, rtol=0.005,
-              rtol_on=("p0", "interface_tau"), model_cache=False)
+    r = sweep(sc,
+              SweepOptions(angles=np.radians([DWELL_DEG, 340.0]),  rtol=0.005,
+                           rtol_on=("p0", "interface_tau")),
+              RunOptions(workers=1, model_cache=False))
     assert set(r["model"]) == {"fe_arc+coating"}
     assert np.all(r["err_est_interface_tau"] <= 0.005) and np.all(r["err_est_p0"] <= 0.005)
     assert np.all(np.isfinite(r["err_est_interface_sn"]))

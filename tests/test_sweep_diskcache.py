@@ -23,15 +23,15 @@ import pytest
 
 import femcam
 from femcam.cli import main
-from femcam.sweep import SweepOptions, default_cache, sweep
+from femcam.sweep import RunOptions, SweepOptions, default_cache, sweep
 from femcam.sweep import cache as cache_mod
 from femcam.sweep.cache import ModelCache
 from femcam.sweep.diskcache import DiskCache, content_key, default_dir
-from femcam.sweep.options import ContactParams, contact_params
+from femcam.sweep.options import ContactParams, ResolvedOptions, contact_params
 from femcam.sweep.plan import hertz_half_width
 
 STUDY = Path(__file__).resolve().parents[1] / "examples" / "seed002_study_model.toml"
-FAST = SweepOptions(a_over_h=4)
+FAST = ResolvedOptions(a_over_h=4)
 RHO = 0.02   # cam radius of the family model (m)
 F = 1500.0   # contact force (N)
 
@@ -120,7 +120,7 @@ CHANGES = {
     "roller_radius": (lambda cp, mp: (dataclasses.replace(cp, Rr=1.01 * cp.Rr), RHO, FAST),
                       lambda m, cp: m.Rr == 1.01 * cp.Rr),
     "cam_radius": (lambda cp, mp: (cp, 1.01 * RHO, FAST), lambda m, cp: m.rho_ref == 1.01 * RHO),
-    "mesh_a_over_h": (lambda cp, mp: (cp, RHO, SweepOptions(a_over_h=5)),
+    "mesh_a_over_h": (lambda cp, mp: (cp, RHO, ResolvedOptions(a_over_h=5)),
                       lambda m, cp: m.mesh.options.a_over_h == 5),
     "mesh_option": (lambda cp, mp: (_mesh_option(mp), (cp, RHO, FAST))[1],
                     lambda m, cp: m.mesh.options.fine_half_width == 3.0),
@@ -237,13 +237,14 @@ def _table(r):
 @pytest.mark.slow  # three small FE sweeps, ~3 s
 def test_sweep_rows_warm_equal_cold_and_no_cache_builds(study_scene, tmp_path, capsys):
     th = np.radians([30.0, 60.0, 90.0, 120.0])
-    kw = dict(angles=th, a_over_h=4, cache_dir=tmp_path / "c", workers=1)
+    opts = SweepOptions(angles=th, a_over_h=4)
+    run = RunOptions(cache_dir=tmp_path / "c", workers=1)
     default_cache().clear()
-    cold = sweep(study_scene, **kw)
+    cold = sweep(study_scene, opts, run)
     default_cache().clear()          # a new process: nothing in memory
-    warm = sweep(study_scene, **kw)
+    warm = sweep(study_scene, opts, run)
     default_cache().clear()
-    off = sweep(study_scene, **kw, model_cache=False)
+    off = sweep(study_scene, opts, dataclasses.replace(run, model_cache=False))
     mc = [r.provenance["options"]["model_cache"] for r in (cold, warm, off)]
     assert mc[0]["built"] >= 1 and mc[0]["loaded"] == 0
     assert mc[1]["built"] == 0 and mc[1]["loaded"] == mc[0]["built"]
@@ -256,7 +257,7 @@ def test_sweep_rows_warm_equal_cold_and_no_cache_builds(study_scene, tmp_path, c
         np.testing.assert_array_equal(to[k], tc[k], err_msg=k)
     # the CLI: --no-cache builds, and the summary line says so
     default_cache().clear()
-    code = main(["sweep", str(STUDY), "--angles-deg", "30:90:30", "--mesh-size", "4",
+    code = main(["sweep", str(STUDY), "--angles-deg", "30:90:30", "--a-over-h", "4",
                  "--no-plots", "--vtk-every", "0", "--no-cache", "--out", str(tmp_path / "o")])
     out = capsys.readouterr().out
     assert code == 0 and "model cache off (--no-cache)" in out

@@ -31,10 +31,10 @@ from femcam.errors import InputError
 from femcam.io import write_fe_vtu
 from femcam.materials import STEEL
 from femcam.scene import load_scene
-from femcam.sweep import sweep
+from femcam.sweep import RunOptions, SweepOptions, sweep
 from femcam.sweep.cache import ModelCache
 from femcam.sweep.estimate import coarse_mesh, family_estimate, row_estimate
-from femcam.sweep.options import SweepOptions, contact_params
+from femcam.sweep.options import ResolvedOptions, contact_params
 from femcam.sweep.rtol import even_ceil, rtol_settings
 
 EX = Path(__file__).resolve().parents[1] / "examples"
@@ -85,7 +85,7 @@ def test_even_ceil_and_rtol_settings():
     with pytest.raises(InputError, match="rtol"):
         rtol_settings(None, 0.005, "hertz", 2e-3)
     with pytest.raises(InputError, match="rtol"):
-        sweep(load_scene(STUDY), angles=np.radians([0.0]), a_over_h=10.0, rtol=0.005)
+        sweep(load_scene(STUDY), SweepOptions(angles=np.radians([0.0]), a_over_h=10.0, rtol=0.005))
 
 
 def _effectivity(a_over_h):
@@ -94,7 +94,7 @@ def _effectivity(a_over_h):
     cp = contact_params(load_scene(STUDY))
     a, p0 = hertz(1500.0, cp.length, 1 / (1 / cp.Rr + 1 / 0.02))
     cache = ModelCache()
-    opts = SweepOptions(a_over_h=a_over_h)
+    opts = ResolvedOptions(a_over_h=a_over_h)
     est = family_estimate(cp, 0.02, a, opts, cache)
     r = cache.solve(cache.model_for(cp, 0.02, a, opts), 1500.0, 0.02, cp.mu, cp.sliding, check=False)
     return est, abs(r.p0_nodal / p0 - 1), abs(r.a / a - 1)
@@ -161,7 +161,9 @@ def test_rtol_half_percent_on_the_study_model():
     <= 0.5 % and not below half the true error (measured on all 360 angles: a/h = 8 chosen,
     true <= 0.223 %, estimates <= 0.315 %)."""
     sc = load_scene(STUDY)
-    r = sweep(sc, angles=np.radians(np.arange(0.0, 360.0, 5.0)), rtol=0.005, workers=1)
+    r = sweep(sc,
+              SweepOptions(angles=np.radians(np.arange(0.0, 360.0, 5.0)), rtol=0.005),
+              RunOptions(workers=1))
     t = r.table
     arc = (t["status"] == "ok") & (t["model"] == "fe_arc")
     F, rho = t["Fc"][arc], t["rho"][arc]
@@ -180,7 +182,9 @@ def test_rtol_tenth_percent_on_the_study_model():
     """--rtol 0.1 %: every arc-gap row's true p0 error vs Hertz <= 0.1 % (measured on all 360
     angles: a/h = 18, true <= 0.048 %, estimates <= 0.062 %)."""
     sc = load_scene(STUDY)
-    r = sweep(sc, angles=np.radians(np.arange(0.0, 360.0, 15.0)), rtol=0.001, workers=1)
+    r = sweep(sc,
+              SweepOptions(angles=np.radians(np.arange(0.0, 360.0, 15.0)), rtol=0.001),
+              RunOptions(workers=1))
     t = r.table
     arc = (t["status"] == "ok") & (t["model"] == "fe_arc")
     p0 = np.array([hertz(f, sc.length, 1 / (1 / sc.follower.Rr + 1 / q))[1]
@@ -209,7 +213,7 @@ def test_curvature_jump_estimate_vs_exact_gap_halfspace():
     from halfspace_ref import envelope_height, halfspace_solve  # tests/ is on sys.path
 
     sc = load_scene(EX / "shm_dwell_junction.toml")
-    r = sweep(sc, angles=np.radians([89.0, 91.0]), workers=1)
+    r = sweep(sc, SweepOptions(angles=np.radians([89.0, 91.0])), RunOptions(workers=1))
     Rr, Rb = 0.010, 0.020
     rows = np.flatnonzero((r["model"] == "fe_exact") & (r.status == "ok"))
     assert rows.size >= 21
@@ -228,11 +232,11 @@ def test_curvature_jump_estimate_vs_exact_gap_halfspace():
 
 
 def test_cli_refuses_rtol_with_mesh_size(tmp_path, capsys):
-    """--rtol-pct chooses the mesh: with --mesh-size it is refused before any work; a scene with
+    """--rtol-pct chooses the mesh: with --a-over-h it is refused before any work; a scene with
     both [fe] rtol_pct and [fe] a_over_h likewise."""
     from femcam.cli import main
     code = main(["sweep", str(STUDY), "--out", str(tmp_path / "o"), "--rtol-pct", "0.5",
-                 "--mesh-size", "10"])
+                 "--a-over-h", "10"])
     assert code != 0 and "--rtol-pct" in capsys.readouterr().err
     scene = tmp_path / "s.toml"
     scene.write_text(STUDY.read_text() + "\n[fe]\nrtol_pct = 0.5\na_over_h = 10\n")
@@ -339,7 +343,7 @@ def test_pilot_is_solved_at_the_curvature_extremes_and_interpolated_between(monk
 
     monkeypatch.setattr(rt, "family_estimate", fake)
     refs = {0: (cp.Rr / 0.2, 1e-4), 1: (cp.Rr / 0.6, 1e-4), 2: (cp.Rr / 1.0, 1e-4)}
-    est = rt._pilot_estimates(cp, refs, SweepOptions(), None)
+    est = rt._pilot_estimates(cp, refs, ResolvedOptions(), None)
     assert sorted(round(k, 6) for k, _ in calls) == [0.2, 1.0] and {n for _, n in calls} == {8.0}
     assert est[1].err["p0"] == pytest.approx(1e-3 + (0.6 - 0.2) / (1.0 - 0.2) * 3e-3)
     a = np.array([1e-4])

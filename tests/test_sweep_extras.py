@@ -25,7 +25,7 @@ from femcam.halfspace.rows import finite_length_rows
 from femcam.io import read_csv
 from femcam.layers import scene_layer_rows
 from femcam.scene import contact_case, load_scene
-from femcam.sweep import extras, providers, sweep
+from femcam.sweep import RunOptions, SweepOptions, extras, providers, sweep
 from femcam.wear.options import wear_coefficient_info
 
 EX = "examples/"
@@ -34,8 +34,8 @@ RTOL = 1e-9                                        # CSV: 10 significant digits
 
 
 def _sweep_csv(scene, theta, tmp_path, **kw):
-    kw = {"method": "hertz", "workers": 1, "plots": False, "vtk_every": 0, **kw}
-    r = sweep(scene, angles=theta, out=tmp_path, **kw)
+    kw = {"method": "hertz", "plots": False, "vtk_every": 0, **kw}
+    r = sweep(scene, SweepOptions(angles=theta, **kw), RunOptions(out=tmp_path, workers=1))
     cols, _ = read_csv(r.paths["csv"])
     return r, cols
 
@@ -212,10 +212,9 @@ def test_refused_provider_gives_nan_columns_and_the_reason(tmp_path, monkeypatch
 
 def test_resume_keeps_the_extra_columns(tmp_path):
     scene = load_scene(EX + "seed002_assess.toml")
-    kw = {"method": "hertz", "workers": 1, "out": tmp_path, "chunk_size": 3, "plots": False,
-          "vtk_every": 0}
-    r1 = sweep(scene, angles=TH8, **kw)
-    r2 = sweep(scene, angles=TH8, resume=True, **kw)
+    opts = SweepOptions(angles=TH8, method="hertz", chunk_size=3, plots=False, vtk_every=0)
+    r1 = sweep(scene, opts, RunOptions(workers=1, out=tmp_path))
+    r2 = sweep(scene, opts, RunOptions(workers=1, out=tmp_path, resume=True))
     assert r2.n_chunks_resumed == 3 and r2.n_chunks_computed == 0
     for name in ("assess_lam", "assess_sf_yield", "assess_regime", "extras_error"):
         assert name in r2.table
@@ -338,7 +337,7 @@ def test_sweep_wear_column_uses_the_coating_k(tmp_path, monkeypatch):
     bare = load_scene(EX + "seed002_study_model.toml")
     scene = _coated_scene(tmp_path, t=2.0, wear="wear_k_mm3_per_N_m = 1e-8")
     ratio = 1e-17 / wear_coefficient_info(bare.wear, bare.cam.hardness)[0]
-    r0 = sweep(bare, angles=TH8, method="hertz", workers=1)
+    r0 = sweep(bare, SweepOptions(angles=TH8, method="hertz"), RunOptions(workers=1))
     r, cols = _sweep_csv(scene, TH8, tmp_path / "out")
     ok = cols["status"] == "ok"
     np.testing.assert_allclose(cols["wear_depth_per_rev_nm"][ok], r0.table["wear_depth"][ok] * ratio * 1e9,
@@ -352,7 +351,9 @@ def test_sweep_wear_column_uses_the_coating_k(tmp_path, monkeypatch):
 @pytest.mark.slow  # over 1 s; the default suite keeps its budget (CI runs it in the slow pass)
 def test_plots_of_the_extra_columns(tmp_path):
     scene = load_scene(EX + "seed002_assess.toml")
-    r = sweep(scene, angles=TH8, method="hertz", workers=1, out=tmp_path, plots=True, vtk_every=0)
+    r = sweep(scene,
+              SweepOptions(angles=TH8, method="hertz", plots=True, vtk_every=0),
+              RunOptions(workers=1, out=tmp_path))
     p = r.paths["plot_extras_assess"]
     assert p.endswith("extras_assess.png")
     with open(p, "rb") as f:
@@ -366,8 +367,8 @@ def test_extra_columns_parallel_equal_serial():
     scene = dataclasses.replace(load_scene(EX + "seed002_assess.toml"),
                                 finite_length=load_scene(EX + "seed002_crowned.toml").finite_length)
     th = TH8
-    r1 = sweep(scene, angles=th, method="hertz", workers=1, chunk_size=2)
-    r2 = sweep(scene, angles=th, method="hertz", workers=2, chunk_size=2)
+    r1 = sweep(scene, SweepOptions(angles=th, method="hertz", chunk_size=2), RunOptions(workers=1))
+    r2 = sweep(scene, SweepOptions(angles=th, method="hertz", chunk_size=2), RunOptions(workers=2))
     cols, text = extras.extra_columns(scene)
     for c in cols:   # the same arithmetic in another process: equal to rounding
         np.testing.assert_allclose(r2.table[c.si], r1.table[c.si], rtol=1e-12, equal_nan=True)
@@ -380,7 +381,7 @@ def test_undercut_rows_are_left_out_of_the_providers():
     assessment is NaN there and the other rows equal the direct call at their angles."""
     import types
     scene = load_scene(EX + "seed002_assess.toml")
-    r = sweep(scene, angles=TH8[:4], method="hertz", workers=1)
+    r = sweep(scene, SweepOptions(angles=TH8[:4], method="hertz"), RunOptions(workers=1))
     rows = {k: np.array(v, dtype=object if v.dtype.kind in "US" else float) for k, v in r.table.items()}
     rows["status"][1] = "undercut"
     task = types.SimpleNamespace(scene=scene, theta=TH8[:4])

@@ -24,7 +24,7 @@ import pytest
 from femcam.cli import main
 from femcam.errors import FemcamError, InputError
 from femcam.scene import load_scene
-from femcam.sweep import parse_angles_deg, sweep
+from femcam.sweep import RunOptions, SweepOptions, parse_angles_deg, sweep
 from femcam.sweep.store import CHUNK_SCENE_KEY, DirLock
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -115,8 +115,9 @@ def test_api_non_empty_out_names_resume_and_overwrite(tmp_path):
     msg = (f"out = '{tmp_path}': the directory is not empty; pass resume=True to continue the sweep "
            "in it, overwrite=True to replace its results, or choose another out")
     with pytest.raises(InputError) as e:
-        sweep(load_scene(STUDY), angles=parse_angles_deg("0:90:30"), method="hertz", out=tmp_path,
-              progress=False, plots=False)
+        sweep(load_scene(STUDY),
+              SweepOptions(angles=parse_angles_deg("0:90:30"), method="hertz", plots=False),
+              RunOptions(out=tmp_path, progress=False))
     assert str(e.value) == msg
     assert not (tmp_path / "sweep.csv").exists()
 
@@ -128,18 +129,21 @@ def test_resume_refuses_a_chunk_of_another_scene(tmp_path):
     scene = load_scene(STUDY)
     other = scene.with_law("bezier7")
     a, b = tmp_path / "a", tmp_path / "b"
-    sweep(scene, angles=th, chunk_size=4, method="hertz", out=a, workers=1, vtk_every=0,
-          plots=False)
-    sweep(other, angles=th, chunk_size=4, method="hertz", out=b, workers=1, vtk_every=0,
-          plots=False)
+    sweep(scene,
+          SweepOptions(angles=th, chunk_size=4, method="hertz", vtk_every=0, plots=False),
+          RunOptions(out=a, workers=1))
+    sweep(other,
+          SweepOptions(angles=th, chunk_size=4, method="hertz", vtk_every=0, plots=False),
+          RunOptions(out=b, workers=1))
     with np.load(a / "chunks" / "chunk_00001.npz") as za, \
             np.load(b / "chunks" / "chunk_00001.npz") as zb:
         assert str(za[CHUNK_SCENE_KEY]) != str(zb[CHUNK_SCENE_KEY])
         assert not np.array_equal(za["Fc"], zb["Fc"])  # the two scenes really differ
     (b / "chunks" / "chunk_00001.npz").replace(a / "chunks" / "chunk_00001.npz")
     with pytest.raises(InputError, match="chunk_00001.npz was computed for another scene"):
-        sweep(scene, angles=th, chunk_size=4, method="hertz", out=a, resume=True, workers=1,
-              vtk_every=0, plots=False)
+        sweep(scene,
+              SweepOptions(angles=th, chunk_size=4, method="hertz", vtk_every=0, plots=False),
+              RunOptions(out=a, resume=True, workers=1))
 
 
 # -- 4. gmsh from several threads --------------------------------------------------------------
@@ -185,8 +189,9 @@ def test_dask_threaded_worker_relative_out_files_come_back(tmp_path, monkeypatch
                                   dashboard_address=None) as cluster:
         monkeypatch.chdir(cdir)
         th = parse_angles_deg("0:360:30")
-        res = sweep(STUDY, angles=th, chunk_size=3, out="rel", vtk_every=1, client=cluster,
-                    plots=False)
+        res = sweep(STUDY,
+                    SweepOptions(angles=th, chunk_size=3, vtk_every=1, plots=False),
+                    RunOptions(out="rel", client=cluster))
         n_ok = int(np.count_nonzero(res.ok))
         vtus = sorted(p.name for p in (cdir / "rel" / "vtk").glob("*.vtu"))
         assert n_ok > 0 and len(vtus) == n_ok
@@ -196,8 +201,9 @@ def test_dask_threaded_worker_relative_out_files_come_back(tmp_path, monkeypatch
 
         monkeypatch.setattr(par, "_write_back", lambda task, files: None)  # files lost
         with pytest.raises(FemcamError, match=".vtu files are missing"):
-            sweep(STUDY, angles=th, chunk_size=3, out="rel2", vtk_every=1, client=cluster,
-                  plots=False)
+            sweep(STUDY,
+                  SweepOptions(angles=th, chunk_size=3, vtk_every=1, plots=False),
+                  RunOptions(out="rel2", client=cluster))
 
 
 # -- 5. Ctrl-C -----------------------------------------------------------------------------------
@@ -248,8 +254,9 @@ def test_sweep_reloads_with_report(tmp_path):
     from femcam.sweep import SweepResult
 
     th = parse_angles_deg("0:360:45")
-    res = sweep(STUDY, angles=th, method="hertz", out=tmp_path, workers=1, vtk_every=0,
-                plots=False)
+    res = sweep(STUDY,
+                SweepOptions(angles=th, method="hertz", vtk_every=0, plots=False),
+                RunOptions(out=tmp_path, workers=1))
     back = SweepResult.load(tmp_path)
     assert back.method == "hertz" and back.n_angles == th.size == 8
     np.testing.assert_array_equal(back.theta, th)
@@ -272,7 +279,7 @@ def test_api_defaults_match_the_cli_and_a_sweep_reloads_and_replots(tmp_path):
 
     th = parse_angles_deg("0:360:15")  # 24 angles: the 10th-angle series is rows 0, 10, 20
     api, cli = tmp_path / "api", tmp_path / "cli"
-    res = sweep(STUDY, angles=th, method="hertz", out=api, workers=1)
+    res = sweep(STUDY, SweepOptions(angles=th, method="hertz"), RunOptions(out=api, workers=1))
     assert main(["sweep", str(STUDY), "--out", str(cli), "--angles-deg", "0:360:15",
                  "--method", "hertz", "--workers", "1", "--progress", "off"]) == 0
     tree = {d: sorted(str(p.relative_to(d)) for p in d.rglob("*")
@@ -379,7 +386,7 @@ def test_animate_writes_one_gif_frame_per_vtu(tmp_path, capsys):
     with Image.open(tmp_path / "animation.gif") as gif:
         assert gif.n_frames == n_vtu == 4
     with pytest.raises(InputError, match="animate"):
-        sweep(STUDY, angles=[0.0], method="hertz", animate=True)
+        sweep(STUDY, SweepOptions(angles=[0.0], method="hertz", animate=True))
 
 
 @pytest.mark.slow

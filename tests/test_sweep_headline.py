@@ -37,7 +37,7 @@ from femcam.io import vtu_name
 from femcam.materials import Material
 from femcam.profile import OscillatingRollerFollower, RollerFollower
 from femcam.scene import load_scene
-from femcam.sweep import sweep
+from femcam.sweep import RunOptions, SweepOptions, sweep
 from femcam.sweep.headline import SURF_EDGE_TOL, edge_flags, omitted_physics
 
 EX = Path(__file__).resolve().parents[1] / "examples"
@@ -187,8 +187,9 @@ def test_headline_is_the_answering_models(path, tmp_path):
     (Hertz rows: Hertz; FE rows: the peak of that solve's pressure), and the flags name the
     physics the headline model omits (also in the summary sentences and report.md)."""
     sc = load_scene(path)
-    r = sweep(sc, angles=_angles(sc), workers=1, a_over_h=A_OVER_H, out=tmp_path, vtk_every=1,
-              plots=False)
+    r = sweep(sc,
+              SweepOptions(angles=_angles(sc), a_over_h=A_OVER_H, vtk_every=1, plots=False),
+              RunOptions(workers=1, out=tmp_path))
     assert check_headline(sc, path, r, tmp_path) >= 1
     sentences = r.provenance.get("extras", {}).get("headline", [])
     assert {s.split(":")[0] for s in sentences} == _omitted_from_toml(path) | _answered_from_toml(path)
@@ -203,8 +204,10 @@ def test_hertz_rows_of_method_auto_and_exact_gap_rows(tmp_path):
     path = EX / "shm_dwell_junction.toml"
     sc = load_scene(path)
     jump = curvature_jumps(sc.program, sc.follower)[0].theta
-    r = sweep(sc, angles=np.array([math.radians(30.0), jump]), method="auto", workers=1,
-              a_over_h=A_OVER_H, out=tmp_path, vtk_every=1, plots=False)
+    r = sweep(sc,
+              SweepOptions(angles=np.array([math.radians(30.0), jump]),  method="auto",  a_over_h=A_OVER_H,
+                           vtk_every=1,  plots=False),
+              RunOptions(workers=1, out=tmp_path))
     models = set(r["model"][r.status == "ok"])
     assert {"hertz", "fe_exact"} <= models, models
     check_headline(sc, path, r, tmp_path)
@@ -286,8 +289,8 @@ def test_layer_stresses_without_strengths_through_the_sweep(tmp_path):
             layers[b]["coating"] = {k: v for k, v in layers[b]["coating"].items() if v is not None}
     bare = dataclasses.replace(sc, layers=layers)
     th = _angles(sc)
-    with_s = sweep(sc, angles=th, workers=1, a_over_h=A_OVER_H)
-    without = sweep(bare, angles=th, workers=1, a_over_h=A_OVER_H)
+    with_s = sweep(sc, SweepOptions(angles=th, a_over_h=A_OVER_H), RunOptions(workers=1))
+    without = sweep(bare, SweepOptions(angles=th, a_over_h=A_OVER_H), RunOptions(workers=1))
     for name in ("layer_interface_tau_max", "layer_interface_sn_min", "layer_coating_sx_max"):
         assert np.all(np.isfinite(without[name])), name
         np.testing.assert_allclose(without[name], with_s[name], rtol=1e-12, err_msg=name)
@@ -302,7 +305,7 @@ def test_cli_summary_says_what_the_headline_omits(tmp_path, capsys):
     from femcam.cli import main
 
     args = ["sweep", str(EX / "seed002_coated.toml"), "--angles-deg", "60:61:1", "--no-plots",
-            "--vtk-every", "0", "--mesh-size", "6", "--workers", "1"]
+            "--vtk-every", "0", "--a-over-h", "6", "--workers", "1"]
     assert main(args + ["--out", str(tmp_path / "h"), "--method", "hertz"]) == 0
     printed = capsys.readouterr().out
     assert "headline_omits_coating: the roller's 2.5 um coating (E 170 GPa)" in printed

@@ -8,7 +8,7 @@ import pytest
 
 from femcam.errors import InputError
 from femcam.scene import load_scene
-from femcam.sweep import SweepResult, sweep
+from femcam.sweep import RunOptions, SweepOptions, SweepResult, sweep
 
 SCENE = Path(__file__).resolve().parents[1] / "examples" / "seed002_study_model.toml"
 
@@ -16,8 +16,10 @@ SCENE = Path(__file__).resolve().parents[1] / "examples" / "seed002_study_model.
 @pytest.fixture(scope="module")
 def hertz_sweep(tmp_path_factory):
     out = tmp_path_factory.mktemp("h") / "out"
-    res = sweep(SCENE, angles=np.radians(np.arange(0.0, 360.0, 30.0)), method="hertz", out=out,
-                vtk_every=0, plots=False, progress=False, workers=1)
+    res = sweep(SCENE,
+                SweepOptions(angles=np.radians(np.arange(0.0, 360.0, 30.0)),  method="hertz",  vtk_every=0,
+                             plots=False),
+                RunOptions(out=out, progress=False, workers=1))
     return out, res
 
 
@@ -44,11 +46,13 @@ def test_npz_counts_and_ids_are_integers_and_reload_as_nan(hertz_sweep):
 def test_resume_refusal_names_only_what_differs(hertz_sweep, tmp_path):
     out = tmp_path / "r"
     theta = np.radians(np.arange(0.0, 360.0, 30.0))
-    sweep(SCENE, angles=theta, method="hertz", out=out, vtk_every=0, plots=False, progress=False,
-          workers=1)
+    sweep(SCENE,
+          SweepOptions(angles=theta, method="hertz", vtk_every=0, plots=False),
+          RunOptions(out=out, progress=False, workers=1))
     with pytest.raises(InputError) as info:  # same angles and chunks, another tolerance
-        sweep(SCENE, angles=theta, method="hertz", tolerance=5e-3, out=out, resume=True,
-              vtk_every=0, plots=False, progress=False, workers=1)
+        sweep(SCENE,
+              SweepOptions(angles=theta, method="hertz", tolerance=5e-3, vtk_every=0, plots=False),
+              RunOptions(out=out, resume=True, progress=False, workers=1))
     msg = str(info.value)
     assert "tolerance" in msg and "chunk bounds" not in msg, msg
 
@@ -126,12 +130,11 @@ def test_long_sweep_table_stays_on_disk_and_writes_the_same_files(tmp_path, monk
     from femcam.sweep.store import StoredTable
 
     th = np.radians(np.arange(0.0, 360.0, 7.0))
-    kw = dict(angles=th, method="hertz", chunk_size=11, vtk_every=0, plots=False, progress=False,
-              workers=1)
-    mem = sweep(SCENE, out=tmp_path / "mem", **kw)
+    opts = SweepOptions(angles=th, method="hertz", chunk_size=11, vtk_every=0, plots=False)
+    mem = sweep(SCENE, opts, RunOptions(out=tmp_path / "mem", progress=False, workers=1))
     monkeypatch.setattr(run, "STREAM_ANGLES", 1)
     monkeypatch.setattr(run, "ANALYTIC_BLOCK", 5)  # the analytic phase in blocks, as from 20 000
-    disk = sweep(SCENE, out=tmp_path / "disk", **kw)
+    disk = sweep(SCENE, opts, RunOptions(out=tmp_path / "disk", progress=False, workers=1))
     assert isinstance(disk.table, StoredTable) and isinstance(mem.table, dict)
     sc = load_scene(SCENE)
     w = disk["Fc"] / sc.length

@@ -19,7 +19,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from femcam.sweep import default_cache, parse_angles_deg, sweep
+from femcam.sweep import RunOptions, SweepOptions, default_cache, parse_angles_deg, sweep
 from femcam.sweep.table import WALL_CLOCK
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -46,24 +46,27 @@ def assert_same(r1, r2):
 @pytest.fixture(scope="module")
 def serial():
     th = parse_angles_deg("0:360:15")
-    return th, sweep(STUDY, angles=th, chunk_size=4).table
+    return th, sweep(STUDY, SweepOptions(angles=th, chunk_size=4)).table
 
 
 @pytest.mark.slow  # several seconds; the default suite stays under 90 s
 def test_process_pool_equals_serial(serial, tmp_path):
     th, ref = serial
     # the usual path: families verified in this process, forked workers inherit the models
-    r = sweep(STUDY, angles=th, chunk_size=4, workers=2)
+    r = sweep(STUDY, SweepOptions(angles=th, chunk_size=4), RunOptions(workers=2))
     assert_same(r.table, ref)
     assert r.provenance["options"]["workers"] == 2
     # workers that build and solve everything themselves: resume the stored plan with an
     # empty model cache (nothing verified, nothing cached in this process)
-    sweep(STUDY, angles=th, chunk_size=4, out=tmp_path, workers=1, vtk_every=0, plots=False)
+    sweep(STUDY,
+          SweepOptions(angles=th, chunk_size=4, vtk_every=0, plots=False),
+          RunOptions(out=tmp_path, workers=1))
     for p in (tmp_path / "chunks").glob("chunk_*.npz"):
         p.unlink()
     default_cache().clear()
-    r2 = sweep(STUDY, angles=th, chunk_size=4, out=tmp_path, resume=True, workers=2,
-               vtk_every=0, plots=False)
+    r2 = sweep(STUDY,
+               SweepOptions(angles=th, chunk_size=4, vtk_every=0, plots=False),
+               RunOptions(out=tmp_path, resume=True, workers=2))
     assert (r2.n_chunks_computed, r2.n_chunks_resumed) == (6, 0)
     assert_same(r2.table, ref)
 
@@ -81,7 +84,9 @@ def test_background_builds_equal_one_thread(monkeypatch):
         default_cache().clear()
         if workers == "auto":
             monkeypatch.setattr(run_module, "_background_threads", lambda run: 1)
-        r = sweep(STUDY, angles=th, chunk_size=8, workers=workers, model_cache=False)
+        r = sweep(STUDY,
+                  SweepOptions(angles=th, chunk_size=8),
+                  RunOptions(workers=workers, model_cache=False))
         out[workers] = r
     a, b = out[1], out["auto"]
     for k in a.table:
@@ -101,10 +106,10 @@ def test_dask_local_cluster_equals_serial(serial, tmp_path):
     th, ref = serial
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                   dashboard_address=None) as cluster:
-        r = sweep(STUDY, angles=th, chunk_size=4, client=cluster)
+        r = sweep(STUDY, SweepOptions(angles=th, chunk_size=4), RunOptions(client=cluster))
         assert_same(r.table, ref)
         with distributed.Client(cluster) as client:
-            r2 = sweep(STUDY, angles=th, chunk_size=6, client=client)
+            r2 = sweep(STUDY, SweepOptions(angles=th, chunk_size=6), RunOptions(client=client))
         assert_same(r2.table, ref)
         # the CLI path: --scheduler ADDRESS
         from femcam.cli import main
@@ -153,10 +158,11 @@ def test_killed_subprocess_resumes_in_process(tmp_path):
     assert 1 <= n_done < 6, "the sweep should have been killed midway"
     assert not (out / "sweep.csv").exists()
     th = parse_angles_deg("0:360:20")
-    res = sweep(STUDY, angles=th, chunk_size=3, method="hertz", out=out, resume=True, workers=1,
-                vtk_every=0)
+    res = sweep(STUDY,
+                SweepOptions(angles=th, chunk_size=3, method="hertz", vtk_every=0),
+                RunOptions(out=out, resume=True, workers=1))
     assert (res.n_chunks_resumed, res.n_chunks_computed) == (n_done, 6 - n_done)
-    ref = sweep(STUDY, angles=th, chunk_size=3, method="hertz", workers=1)
+    ref = sweep(STUDY, SweepOptions(angles=th, chunk_size=3, method="hertz"), RunOptions(workers=1))
     assert_same(res.table, ref.table)
     # the files written after the resume hold the same numbers (NPZ counts and ids: int64, -1
     # where the table has NaN; SweepResult.load maps them back)
@@ -200,7 +206,7 @@ def test_killed_subprocess_resumes_to_identical_results(tmp_path):
     assert res.returncode == 0, res.stderr
     assert f"({n_done} chunks resumed, {6 - n_done} computed)" in res.stdout
 
-    ref = sweep(STUDY, angles=parse_angles_deg("0:360:20"), chunk_size=3)
+    ref = sweep(STUDY, SweepOptions(angles=parse_angles_deg("0:360:20"), chunk_size=3))
     with np.load(out / "sweep.npz") as z:
         resumed = {k: z[k] for k in z.files if k not in ("provenance_json", "scene_toml",
                                                           "scene_repr")}

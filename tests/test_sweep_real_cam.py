@@ -18,7 +18,7 @@ from halfspace_ref import envelope_height, halfspace_solve  # tests/ is on sys.p
 from femcam.errors import SceneError
 from femcam.scene import load_scene
 from femcam.scene.wear import WearSettings
-from femcam.sweep import sweep
+from femcam.sweep import RunOptions, SweepOptions, sweep
 
 EX = Path(__file__).resolve().parents[1] / "examples"
 E_STEEL = 210e9 / (2 * (1 - 0.3**2))  # plane strain E* of steel on steel (E = 210 GPa, nu = 0.3)
@@ -32,7 +32,7 @@ def hertz_p0(F, L, R_eff):
 @pytest.fixture(scope="module")
 def junction_sweep():
     sc = load_scene(EX / "shm_dwell_junction.toml")
-    return sc, sweep(sc, angles=np.radians([89.0, 91.0]), workers=1)
+    return sc, sweep(sc, SweepOptions(angles=np.radians([89.0, 91.0])), RunOptions(workers=1))
 
 
 @pytest.fixture(scope="module")
@@ -114,18 +114,20 @@ def test_roller_traction_from_bearing_drag_partial_slip_and_sliding():
     th = np.radians([30.0, 45.0])
     F, mu, Rr = 1000.0, 0.1, 0.010
     a = 2 * math.sqrt(F / sc.length * (1 / (1 / Rr + 1 / 0.020)) / (math.pi * E_STEEL))
-    r = sweep(dataclasses.replace(sc, wear=WearSettings(T_drag=0.03)), angles=th, workers=1)
+    r = sweep(dataclasses.replace(sc, wear=WearSettings(T_drag=0.03)), SweepOptions(angles=th),
+              RunOptions(workers=1))
     Q = 0.03 / Rr
     np.testing.assert_allclose(r["Fc"], F, rtol=1e-9)  # dwell: the preload only
     np.testing.assert_allclose(r["Q"], Q, rtol=1e-6)
     np.testing.assert_allclose(r["Q_over_muFc"], Q / (mu * F), rtol=1e-6)
     assert set(r["slip_state"]) == {"partial slip"}
     np.testing.assert_allclose(r["stick_width"], 2 * a * math.sqrt(1 - Q / (mu * F)), atol=2 * a / 10)
-    s = sweep(dataclasses.replace(sc, wear=WearSettings(T_drag=2.0)), angles=th, workers=1)
+    s = sweep(dataclasses.replace(sc, wear=WearSettings(T_drag=2.0)), SweepOptions(angles=th),
+              RunOptions(workers=1))
     assert set(s["slip_state"]) == {"sliding"} and np.all(s.status == "ok")
     np.testing.assert_allclose(s["Q_over_muFc"], 1.0, rtol=1e-9)
     # [contact] sliding: the explicit override, full sliding in the fixed direction
-    o = sweep(dataclasses.replace(sc, sliding="-x"), angles=th, workers=1)
+    o = sweep(dataclasses.replace(sc, sliding="-x"), SweepOptions(angles=th), RunOptions(workers=1))
     np.testing.assert_allclose(o["Q"], -mu * F, rtol=1e-9)
     assert o.provenance["options"]["traction"].startswith("[contact] sliding")
 
@@ -134,7 +136,7 @@ def test_method_auto_answers_with_the_cheapest_model():
     """Base circle: Hertz's error (a/R)^2 ~ 1e-4 % is within the 0.2 % tolerance, Hertz answers
     (p0 = Hertz written out, no FE); the curvature-jump rows need the exact gap."""
     sc = load_scene(EX / "shm_dwell_junction.toml")
-    r = sweep(sc, angles=np.radians([45.0, 89.0, 91.0]), method="auto", workers=1)
+    r = sweep(sc, SweepOptions(angles=np.radians([45.0, 89.0, 91.0]), method="auto"), RunOptions(workers=1))
     deg = np.degrees(r["theta"])
     i45 = int(np.argmin(np.abs(deg - 45.0)))
     assert r["model"][i45] == "hertz" and np.isnan(r["p0_fe"][i45])
@@ -185,13 +187,14 @@ def test_flat_faced_sweep_and_edge_contact():
     A 15 mm face: at mid-rise the contact offset s' = 2h/beta = 9.55 mm passes the face end
     (7.5 mm): status edge_contact naming the angle range, no Hertz answer."""
     sc = load_scene(EX / "flat_faced.toml")
-    r = sweep(sc, angles=np.radians([150.0, 330.0]), workers=1)
+    r = sweep(sc, SweepOptions(angles=np.radians([150.0, 330.0])), RunOptions(workers=1))
     assert np.all(r.status == "ok"), r["message"]
     np.testing.assert_allclose(r["p0_fe"], [hertz_p0(700.0, 0.010, 0.030), hertz_p0(500.0, 0.010, 0.020)],
                                rtol=3e-3)
     np.testing.assert_allclose(r["Q"][1], 0.1 * 500.0, rtol=1e-9)
-    e = sweep(dataclasses.replace(sc, face_length=0.015), angles=np.radians([60.0, 150.0]), method="auto",
-              workers=1)
+    e = sweep(dataclasses.replace(sc, face_length=0.015),
+              SweepOptions(angles=np.radians([60.0, 150.0]), method="auto"),
+              RunOptions(workers=1))
     assert list(e.status) == ["edge_contact", "ok"]
     assert "edge contact" in e["message"][0] and "deg" in e["message"][0]
     assert np.isnan(e["p0_hertz"][0]) and e["model"][0] == ""
@@ -241,14 +244,14 @@ def test_worst_profile_is_the_rows_own_solve_with_its_traction():
     surface sx maximum is the row's sx_max (the same solve: 1e-9), the title states the traction,
     and for |Q| << mu Fc the Hertz curve is the frictionless one, sx = -p0 sqrt(1 - x^2/a^2)
     (Johnson 1985 eq. 4.45), labelled so."""
-    from femcam.sweep.options import SweepOptions, contact_params
+    from femcam.sweep.options import ResolvedOptions, contact_params
     from femcam.sweep.profile import worst_surface_profile
 
     sc = load_scene(EX / "seed002_study_model.toml")
-    r = sweep(sc, angles=np.radians([180.0, 210.0, 240.0]), workers=1)
+    r = sweep(sc, SweepOptions(angles=np.radians([180.0, 210.0, 240.0])), RunOptions(workers=1))
     i = r.worst_index("p0_fe")
     assert r["slip_state"][i] == "stick" and abs(r["Q_over_muFc"][i]) < 1e-3
-    prof = worst_surface_profile(r.table, "fe", contact_params(sc), r.families, SweepOptions(), scene=sc)
+    prof = worst_surface_profile(r.table, "fe", contact_params(sc), r.families, ResolvedOptions(), scene=sc)
     assert prof["sx_fe"].max() == pytest.approx(r["surf_sx_max"][i], rel=1e-9)
     assert "stick" in prof["traction"] and "Q/(mu Fc)" in prof["traction"]
     assert "frictionless" in prof["hertz_label"]
@@ -283,7 +286,7 @@ def test_profile_hertz_curve_with_cattaneo_partial_slip():
 def test_worst_profile_of_method_auto_includes_the_hertz_rows():
     """Method auto: the worst angle is by the row's answer (Hertz p0 where Hertz answered), not
     only among the FE rows; a Hertz row gets the Hertz curve and no FE points."""
-    from femcam.sweep.options import SweepOptions, contact_params
+    from femcam.sweep.options import ResolvedOptions, contact_params
     from femcam.sweep.profile import worst_surface_profile
 
     cp = contact_params(load_scene(EX / "seed002_study_model.toml"))
@@ -291,7 +294,7 @@ def test_worst_profile_of_method_auto_includes_the_hertz_rows():
          "status": np.array(["ok", "ok"]), "model": np.array(["hertz", "fe_arc"]),
          "p0_fe": np.array([np.nan, 9e8]), "p0_hertz": np.array([1.1e9, 9e8]),
          "Q_over_muFc": np.array([0.0, 0.0]), "slip_state": np.array(["stick", "stick"])}
-    prof = worst_surface_profile(t, "fe", cp, [], SweepOptions())
+    prof = worst_surface_profile(t, "fe", cp, [], ResolvedOptions())
     assert prof["theta_deg"] == pytest.approx(10.0) and "x_fe" not in prof
     p0 = hertz_p0(1600.0, 0.010, 1 / (1 / 0.02 + 1 / 0.010))
     assert -prof["sx_hertz"].min() == pytest.approx(p0, rel=1e-6)  # grid point at x = 0

@@ -17,7 +17,7 @@ import pytest
 
 from femcam.cli import main
 from femcam.io import read_csv
-from femcam.sweep import SweepResult, sweep
+from femcam.sweep import RunOptions, SweepOptions, SweepResult, sweep
 
 EX = Path("examples")
 
@@ -97,7 +97,9 @@ def test_refused_part_is_said_and_fails_the_run(tmp_path, capsys, case):
     # the API: the reloaded result and a fresh in-memory sweep carry the refusal
     refused = SweepResult.load(out).refused
     assert [p for p, _ in refused] == [part] and words in refused[0][1]
-    r = sweep(str(scene), angles=np.radians([0.0]), method="hertz", workers=1, plots=False)
+    r = sweep(str(scene),
+              SweepOptions(angles=np.radians([0.0]), method="hertz", plots=False),
+              RunOptions(workers=1))
     assert [p for p, _ in r.refused] == [part]
 
 

@@ -28,7 +28,7 @@ from femcam.bodies import RingMeshOptions, RingModel, solve_ring
 from femcam.bodies.rows import bearing_from_scene
 from femcam.mesh import MeshOptions
 from femcam.scene import load_scene
-from femcam.sweep import sweep
+from femcam.sweep import RunOptions, SweepOptions, sweep
 from femcam.sweep.extras import extra_columns
 from femcam.sweep.headline import answered_by, omitted_physics
 
@@ -73,7 +73,9 @@ def test_thick_ring_on_a_tight_pin_gives_the_solid_roller(tmp_path):
                     pin_clearance_um=1.0, needle_count=None, needle_radius_mm=None)
     sc = load_scene(path)
     for method in ("hertz", "fe"):
-        r = sweep(sc, angles=np.radians([THETA_DEG]), workers=1, a_over_h=6, method=method)
+        r = sweep(sc,
+                  SweepOptions(angles=np.radians([THETA_DEG]), a_over_h=6, method=method),
+                  RunOptions(workers=1))
         assert r["model"][0] == f"{'hertz' if method == 'hertz' else 'fe_arc'}+ring"
         a_h, p0_h = _hertz(float(r["Fc"][0]), sc.length, float(r["rho"][0]), 0.010)
         assert r["p0_fe"][0] == pytest.approx(p0_h, rel=5e-3), "tight thick ring = solid roller"
@@ -107,7 +109,7 @@ def test_thin_ring_on_needles_the_headline_is_the_ring_models(tmp_path):
     path = _variant(tmp_path, roller_bore_mm=9.0, pin_radius_mm=6.99, needle_count=20)
     sc = load_scene(path)
     th = np.radians([THETA_DEG])
-    r = sweep(sc, angles=th, workers=1, a_over_h=6)
+    r = sweep(sc, SweepOptions(angles=th, a_over_h=6), RunOptions(workers=1))
     F, rho = float(r["Fc"][0]), float(r["rho"][0])
     a_h, p0_h = _hertz(F, sc.length, rho, 0.010)
     assert r["model"][0] == "fe_arc+ring"
@@ -124,7 +126,9 @@ def test_thin_ring_on_needles_the_headline_is_the_ring_models(tmp_path):
     # global-local: the solid roller's stresses scaled by p0_ring / p0_solid, depths by a
     solid = sweep(load_scene(_variant(tmp_path, roller_support="solid", roller_bore_mm=None,
                                       pin_radius_mm=None, pin_clearance_um=None, needle_count=None,
-                                      needle_radius_mm=None)), angles=th, workers=1, a_over_h=6)
+                                      needle_radius_mm=None)),
+                  SweepOptions(angles=th, a_over_h=6),
+                  RunOptions(workers=1))
     assert solid["model"][0] == "fe_arc"
     k_p = r["p0_fe"][0] / solid["p0_fe"][0]
     k_a = r["a_fe"][0] / solid["a_fe"][0]
@@ -160,7 +164,7 @@ def test_finite_length_summary_says_which_p0_is_which(tmp_path, capsys):
     from femcam.cli import main
 
     assert main(["sweep", str(EX / "seed002_crowned.toml"), "--out", str(tmp_path / "o"),
-                 "--angles-deg", "44:45:1", "--no-plots", "--vtk-every", "0", "--mesh-size", "6",
+                 "--angles-deg", "44:45:1", "--no-plots", "--vtk-every", "0", "--a-over-h", "6",
                  "--workers", "1"]) == 0
     printed = capsys.readouterr().out
     assert "(peak of the solved pressure, 2D at the mean load Fc / length)" in printed

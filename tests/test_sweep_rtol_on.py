@@ -16,8 +16,8 @@ import pytest
 
 from femcam.errors import InputError
 from femcam.scene import load_scene
-from femcam.sweep import sweep
-from femcam.sweep.options import RTOL_ON, SweepOptions
+from femcam.sweep import RunOptions, SweepOptions, sweep
+from femcam.sweep.options import RTOL_ON
 
 STUDY = Path(__file__).resolve().parents[1] / "examples" / "seed002_study_model.toml"
 
@@ -53,8 +53,9 @@ def test_unknown_quantity_is_refused_naming_key_value_and_the_accepted_list(tmp_
 def test_interface_quantity_on_an_uncoated_scene_is_refused():
     """interface_tau needs a coating: refused naming rtol_on and the scene's missing table."""
     with pytest.raises(InputError, match=r"rtol_on.*interface_tau.*no coating"):
-        sweep(load_scene(STUDY), angles=np.radians([0.0, 90.0]), rtol=0.005,
-              rtol_on=("p0", "interface_tau"), workers=1, model_cache=False)
+        sweep(load_scene(STUDY),
+              SweepOptions(angles=np.radians([0.0, 90.0]), rtol=0.005, rtol_on=("p0", "interface_tau")),
+              RunOptions(workers=1, model_cache=False))
 
 
 @pytest.mark.slow

@@ -9,6 +9,7 @@ sweep without plots writes.
 
 from __future__ import annotations
 
+import dataclasses
 import os
 import sys
 
@@ -16,7 +17,7 @@ import pytest
 
 import femcam.viz.sweep as vs
 from femcam.scene import load_scene
-from femcam.sweep import sweep
+from femcam.sweep import RunOptions, SweepOptions, sweep
 from femcam.viz._mpl import pyplot
 from femcam.viz.process import PlotProcess, start_plot_process
 from femcam.viz.sweep import plot_sweep
@@ -25,7 +26,7 @@ pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="fo
 
 SCENE = "examples/seed002_study_model.toml"
 pyplot()  # imported here once: every forked lane inherits it (the tests stay short)
-HERTZ = dict(angles=[0.0, 0.5, 1.0, 1.5], method="hertz", vtk_every=0, progress=False)
+HERTZ = SweepOptions(angles=[0.0, 0.5, 1.0, 1.5], method="hertz", vtk_every=0)
 
 
 def _boom(*_):
@@ -75,7 +76,7 @@ def test_two_lanes_keep_the_order_and_survive_each_other():
 def test_plots_equal_those_drawn_in_process(tmp_path):
     """The PNGs of a sweep (drawn by the plot process) equal, byte for byte, those
     plot_sweep draws in this process from the same result."""
-    r = sweep(load_scene(SCENE), out=tmp_path / "a", **HERTZ)
+    r = sweep(load_scene(SCENE), HERTZ, RunOptions(out=tmp_path / "a", progress=False))
     assert r.surface_profile is not None
     again = plot_sweep(r, tmp_path / "b")
     assert {k: os.path.basename(v) for k, v in again.items()} == {
@@ -90,8 +91,9 @@ def test_killed_plot_process_loses_no_other_output(tmp_path, monkeypatch):
     in the report), one warning names the missing plots and the command that redraws them."""
     monkeypatch.setattr(vs, "plot_maxima", _die)  # the forked child inherits the patch
     with pytest.warns(RuntimeWarning, match=r"some plots are missing: .*ended early.*femcam plot"):
-        r = sweep(load_scene(SCENE), out=tmp_path / "o", **HERTZ)
-    bare = sweep(load_scene(SCENE), out=tmp_path / "bare", plots=False, **HERTZ)
+        r = sweep(load_scene(SCENE), HERTZ, RunOptions(out=tmp_path / "o", progress=False))
+    bare = sweep(load_scene(SCENE), dataclasses.replace(HERTZ, plots=False),
+                 RunOptions(out=tmp_path / "bare", progress=False))
     for f in ("sweep.csv", "sweep.npz", "report.md", "report.html"):
         assert (tmp_path / "o" / f).stat().st_size > 0
     assert {k for k in r.paths if not k.startswith("plot_")} == set(bare.paths)

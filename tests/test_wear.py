@@ -357,7 +357,7 @@ def fe_study(study_scene):
     sw = pytest.importorskip("femcam.sweep")
     sc = study_scene
     th = np.radians(np.arange(0.0, 360.0, 15.0))
-    res = sw.sweep(sc, angles=th, method="fe", progress=False)
+    res = sw.sweep(sc, sw.SweepOptions(angles=th, method="fe"), sw.RunOptions(progress=False))
     st = sc.analyse(th)
     slip = wslip.follower_slip(sc.follower, th, st.s, st.s1, st.s2, omega=sc.omega, srr=0.02)
     return sc, res, slip
@@ -417,7 +417,7 @@ def test_fe_failed_angles_are_skipped_with_a_warning(fe_study):
 def test_fe_pressure_from_a_hertz_sweep_is_refused(fe_study):
     sc, res, slip = fe_study
     sw = pytest.importorskip("femcam.sweep")
-    hz = sw.sweep(sc, angles=res.theta, method="hertz")
+    hz = sw.sweep(sc, sw.SweepOptions(angles=res.theta, method="hertz"))
     with pytest.raises(InputError, match="method='hertz'"):
         wmap.wear_map(hz, slip, k=5e-18, length=sc.length, pressure="fe")
 

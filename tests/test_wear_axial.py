@@ -87,8 +87,8 @@ def test_cli_fe_source_sweeps_the_knife_edge_itself(tmp_path, monkeypatch):
 
     seen = {}
 
-    def fake_sweep(scene, *, angles, method, **kw):
-        seen["scene"], seen["method"] = scene, method
+    def fake_sweep(scene, options, run=None):
+        angles, seen["scene"], seen["method"] = options.angles, scene, options.method
         a, p0 = np.full(angles.size, 40e-6), np.full(angles.size, 900e6)
         tab = {"theta": angles, "a_fe": a, "p0_fe": p0, "Fc": np.full(angles.size, 500.0)}
         return types.SimpleNamespace(table=tab, **tab)

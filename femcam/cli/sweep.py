@@ -7,7 +7,7 @@ DIR/sweep.npz (SI, plus the scene file's text), DIR/scene.toml (a copy of the sc
 
 Settings: a flag given on the command line wins; else the scene's [fe] a_over_h, tolerance,
 rtol_pct and [sweep] method, angles_deg, chunk_size, vtk_every, plots; else the defaults shown
-below. --rtol-pct chooses the mesh: it is refused together with --mesh-size (and [fe] rtol_pct
+below. --rtol-pct chooses the mesh: it is refused together with --a-over-h (and [fe] rtol_pct
 together with [fe] a_over_h); a flag of one beats the scene's other.
 """
 
@@ -25,7 +25,7 @@ from ..scene import load_scene, study_problem
 from ..scene.schema import STUDY_RANGES, STUDY_UNITS, STUDY_WHOLE
 from ..sweep import sweep
 from ..sweep.estimate import estimate_text
-from ..sweep.options import RTOL_ON, RTOL_RANGE, TOLERANCE_FLOOR
+from ..sweep.options import RTOL_ON, RTOL_RANGE, TOLERANCE_FLOOR, RunOptions, SweepOptions
 from ..sweep.result import families_text, hertz_check_text
 from ..sweep.settings import SETTINGS as LIBRARY_SETTINGS
 from ..sweep.settings import resolve_settings
@@ -91,7 +91,7 @@ def register(subparsers) -> None:
                help="requested bound on the estimated p0 error of every FE row, in percent "
                     "(0.5 means 0.5 %%): the sweep chooses the mesh (a/h) and a reuse tolerance "
                     "<= PCT/2 from a two-level error estimate; each row reports err_est_p0_pct "
-                    "(default: [fe] rtol_pct, else none: --mesh-size decides)")
+                    "(default: [fe] rtol_pct, else none: --a-over-h decides)")
     p.add_argument("--rtol-on", default=None, metavar="Q[,Q...]",
                    help="the quantities --rtol-pct bounds, stems of the err_est_*_pct columns: "
                         + ", ".join(RTOL_ON) + " (the interface ones on coated scenes); each "
@@ -115,13 +115,13 @@ def register(subparsers) -> None:
 
 #: flag dest -> the library's parameter (:data:`femcam.sweep.settings.SETTINGS`: scene table,
 #: key and default, written once there; the --help text is made from it)
-_PARAMS = {"angles_deg": "angles", "mesh_size": "a_over_h", "tolerance": "tolerance",
+_PARAMS = {"angles_deg": "angles", "a_over_h": "a_over_h", "tolerance": "tolerance",
            "chunk_size": "chunk_size", "vtk_every": "vtk_every", "method": "method", "plots": "plots"}
 #: flag dest -> (scene table, key, default)
 SETTINGS = {dest: LIBRARY_SETTINGS[p] for dest, p in _PARAMS.items()}
 #: the flags' names in the library's messages about given values
 _NAMES = {"rtol": ("--rtol-pct", 100, "%"), "rtol_on": ("--rtol-on", 1, ""),
-          "a_over_h": ("--mesh-size", 1, ""), "angles_deg": ("--angles-deg", 1, "deg")}
+          "a_over_h": ("--a-over-h", 1, ""), "angles_deg": ("--angles-deg", 1, "deg")}
 
 def _study(key: str, whole: bool = False, hi: float | None = None) -> Range:
     """The flag's range: the scene's (femcam.scene.schema.study_problem, one copy, with the
@@ -137,14 +137,14 @@ def _study_problem(dest: str, x: float) -> str | None:
     if not problem:
         return None
     hint = _FLAG_CHECKS[dest][1]
-    problem = problem.replace("a_over_h", "--mesh-size")
+    problem = problem.replace("a_over_h", "--a-over-h")
     return f"{problem}; {hint}" if hint else problem
 
 
 #: the numeric flags a scene can set: (flag, range, metavar, help, note after the default);
 #: chunk_size and vtk_every are capped at 1e6 angles (a revolution at 0.001 deg is 360,000)
 _SCENE_FLAGS = (
-    ("--mesh-size", _study("a_over_h"), "A_OVER_H",
+    ("--a-over-h", _study("a_over_h"), "A_OVER_H",
      "FE element size in the contact zone, h = a / A_OVER_H", ""),
     ("--tolerance", _study("tolerance"), "TOL",
      "bound on the relative p0 difference between an angle solved with its family's shared model "
@@ -179,7 +179,7 @@ def resolve_args(args, scene) -> list[str]:
         The parsed flags; the :data:`SETTINGS` and ``rtol_pct`` are set in place to the
         resolved values (scene units: deg spec, a/h, relative tolerance, percent).
     scene : femcam.scene.Scene
-        The scene (its ``fe`` and ``sweep`` tables).
+        The scene (its ``study``: the [fe] and [sweep] settings).
 
     Returns
     -------
@@ -189,11 +189,11 @@ def resolve_args(args, scene) -> list[str]:
     Raises
     ------
     InputError
-        ``--rtol-pct`` with ``--mesh-size``, or ``[fe] rtol_pct`` with ``[fe] a_over_h``.
+        ``--rtol-pct`` with ``--a-over-h``, or ``[fe] rtol_pct`` with ``[fe] a_over_h``.
     """
     st = resolve_settings(scene, _given(args), names=_NAMES)
     args.angles_deg, args.method, args.tolerance = st.angles_deg, st.method, st.tolerance
-    args.mesh_size, args.chunk_size, args.vtk_every, args.plots = (st.a_over_h, st.chunk_size,
+    args.a_over_h, args.chunk_size, args.vtk_every, args.plots = (st.a_over_h, st.chunk_size,
                                                                    st.vtk_every, st.plots)
     args.rtol_pct = None if st.rtol is None else 100.0 * st.rtol
     args.rtol_on = ",".join(st.rtol_on)
@@ -236,7 +236,7 @@ def useful_workers(requested, n_angles: int, chunk_size: int) -> tuple:
 #: flag dest -> (unit shown in the message, CLI hint appended to the condition); the ranges
 #: themselves are femcam.scene.schema.study_problem (one copy; each flag's scene key is in SETTINGS)
 _FLAG_CHECKS = {
-    "mesh_size": (STUDY_UNITS["a_over_h"], "10 (default) keeps p0 within 0.3 % of Hertz"),
+    "a_over_h": (STUDY_UNITS["a_over_h"], "10 (default) keeps p0 within 0.3 % of Hertz"),
     "tolerance": (STUDY_UNITS["tolerance"], ""),
     "chunk_size": (STUDY_UNITS["chunk_size"], ""),
     "vtk_every": (STUDY_UNITS["vtk_every"], "0 = no VTK"),
@@ -247,7 +247,7 @@ def _check_args(args) -> None:
     """Validate the options with the flags' own names (before the API sees them).
 
     The condition is :func:`femcam.scene.schema.study_problem`'s, with the scene key
-    ``a_over_h`` it may mention written as its flag ``--mesh-size``.
+    ``a_over_h`` it may mention written as its flag ``--a-over-h``.
     """
     for dest, (unit, _hint) in _FLAG_CHECKS.items():
         flag, value = "--" + dest.replace("_", "-"), getattr(args, dest)
@@ -255,7 +255,7 @@ def _check_args(args) -> None:
         if problem:
             raise _validate.fail(flag, value, unit, problem)
     if args.method != "hertz":  # the FE mesh's size, estimated before any work (the library's cap)
-        check_contact_elements(MeshOptions(a_over_h=args.mesh_size), "--mesh-size")
+        check_contact_elements(MeshOptions(a_over_h=args.a_over_h), "--a-over-h")
     args.workers = _validate.workers("--workers", args.workers)
     if args.cache_dir is not None and not args.cache_dir.strip():
         raise _validate.fail("--cache-dir", args.cache_dir, "", "must name a directory")
@@ -266,7 +266,7 @@ def _command_line(args) -> str:
     parts = ["femcam", "sweep", args.scene, "--out", args.out, "--angles-deg", args.angles_deg,
              "--workers", str(args.workers),
              *(["--rtol-pct", f"{args.rtol_pct:g}", "--rtol-on", args.rtol_on]
-               if args.rtol_pct is not None else ["--mesh-size", f"{args.mesh_size:g}"]),
+               if args.rtol_pct is not None else ["--a-over-h", f"{args.a_over_h:g}"]),
              "--tolerance", f"{args.tolerance:g}", "--chunk-size", str(args.chunk_size),
              "--vtk-every", str(args.vtk_every), "--method", args.method]
     if args.scheduler:
@@ -306,15 +306,16 @@ def _run(args) -> int:
         scene = scene.with_law(args.law)
     progress = {"auto": None, "on": True, "off": False}[args.progress]
     try:
-        res = sweep(scene, angles=None if given["angles_deg"] is None else args.angles,
-                    method=given["method"], a_over_h=given["a_over_h"], rtol=given["rtol"],
-                    rtol_on=given["rtol_on"],
-                    tolerance=given["tolerance"], chunk_size=given["chunk_size"], out=args.out,
-                    resume=args.resume, workers=args.workers, scheduler=args.scheduler,
-                    vtk_every=given["vtk_every"], progress=progress, plots=given["plots"],
-                    command=_command_line(args), scene_path=args.scene,
-                    chunk_delay_s=args.chunk_delay_s, overwrite=args.overwrite,
-                    animate=args.animate, model_cache=args.model_cache, cache_dir=args.cache_dir)
+        res = sweep(scene, SweepOptions(
+            angles=None if given["angles_deg"] is None else args.angles, method=given["method"],
+            a_over_h=given["a_over_h"], rtol=given["rtol"], rtol_on=given["rtol_on"],
+            tolerance=given["tolerance"], chunk_size=given["chunk_size"],
+            vtk_every=given["vtk_every"], plots=given["plots"], animate=args.animate),
+            RunOptions(out=args.out, resume=args.resume, workers=args.workers,
+                       scheduler=args.scheduler, progress=progress, command=_command_line(args),
+                       scene_path=args.scene, chunk_delay_s=args.chunk_delay_s,
+                       overwrite=args.overwrite, model_cache=args.model_cache,
+                       cache_dir=args.cache_dir))
     except KeyboardInterrupt as exc:  # Ctrl-C: one line (what was saved, how to resume)
         nl = "\n" if sys.stderr.isatty() else ""  # end a progress bar's line
         print(f"{nl}femcam sweep: {exc or 'interrupted'}", file=sys.stderr)

@@ -37,7 +37,7 @@ from ..io import provenance, write_rows, write_table
 from ..kinematics import LAW_NAMES
 from ..scene import load_scene
 from ..scene.case import contact_case, tip_scene
-from ..sweep import sweep
+from ..sweep import SweepOptions, sweep
 from ..viz.wear import plot_evolution, plot_wear_comparison, plot_wear_map, plot_wear_polar
 from ..wear.axial import scene_wear_map
 from ..wear.evolution import convergence_table, evolution_case, evolution_problem
@@ -185,8 +185,8 @@ def _map(args) -> int:
         label = name or "scene"
         fe = None
         if args.source == "fe":  # the FE pressure: a sweep of the scene (a knife edge as itself)
-            fe = sweep(_fe_scene(sc, tip), angles=theta, method="fe",
-                       progress=None, **sc.fe)  # the scene's [fe] settings; progress on a terminal
+            # the scene's [fe] settings apply as in femcam sweep; progress on a terminal
+            fe = sweep(_fe_scene(sc, tip), SweepOptions(angles=theta, method="fe"))
         k_factor, regime = wear_factor(contact_case(sc, theta, tip_radius=tip),
                                        fe.table if fe is not None else None)
         with phase(f"wear map: {label}"):

@@ -25,7 +25,7 @@ from .options import BodyMesh, MeshOptions
 #: largest in-plane / through-thickness element size ratio in the coating band's fine zone
 COAT_MAX_ASPECT = 40.0
 
-#: largest a_over_h the scene and --mesh-size accept (femcam.scene.ranges)
+#: largest a_over_h the scene and --a-over-h accept (femcam.scene.ranges)
 A_OVER_H_MAX = 400.0
 
 #: growth ratio of the element size along the side strips of the band
@@ -43,7 +43,7 @@ def _layers(lay: BodyLayout, opts: MeshOptions) -> int:
                              f"is too thin for the mesh: {n} layers of {t / n * 1e6:.3g} um under a "
                              f"fine-zone spacing h = {h * 1e6:.3g} um give an element aspect ratio "
                              f"{h / (t / n):.0f} > {COAT_MAX_ASPECT:g}; use a_over_h >= {need:.0f} "
-                             "([fe] a_over_h or --mesh-size)"
+                             "([fe] a_over_h or --a-over-h)"
                              + (f", beyond its limit {A_OVER_H_MAX:g}: the contact FE cannot resolve "
                                 "a coating this thin" if need > A_OVER_H_MAX else ""))
     if t > 0.25 * lay.L:

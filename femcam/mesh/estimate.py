@@ -119,7 +119,7 @@ def check_contact_elements(options: MeshOptions, name: str = "a_over_h",
     options : MeshOptions
         The mesh options.
     name : str, optional
-        The parameter named in the refusal (``a_over_h``, ``[fe] a_over_h``, ``--mesh-size``).
+        The parameter named in the refusal (``a_over_h``, ``[fe] a_over_h``, ``--a-over-h``).
     L_over_a : float, optional
         Body size over the reference half-width (-).
 

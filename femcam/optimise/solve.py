@@ -19,7 +19,7 @@ import numpy as np
 from .. import _validate
 from ..errors import FemcamError, InputError, SceneError
 from ..scene import load_scene
-from ..sweep import sweep
+from ..sweep import RunOptions, SweepOptions, sweep
 from .chain import (
     CONSTRAINT_UNITS,
     OBJECTIVE_UNITS,
@@ -288,7 +288,9 @@ def _verify_fe(scene, theta_worst: float) -> FECheck:
     """FE sweep at the worst angle and +-2 deg; never raises for a femcam physics failure."""
     theta = theta_worst + np.radians([-2.0, 0.0, 2.0])
     try:
-        r = sweep(scene, angles=theta, method="fe", workers=1, progress=False, plots=False)
+        r = sweep(scene,
+                  SweepOptions(angles=theta, method="fe", plots=False),
+                  RunOptions(workers=1, progress=False))
     except FemcamError as exc:
         reason = " ".join(str(exc).split())       # the mesher's/solver's own text, on one line
         return FECheck(theta=tuple(theta), p0_hertz=(), p0_fe=(), rel_diff=math.nan, status=(),

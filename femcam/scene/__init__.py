@@ -43,7 +43,7 @@ Schema (all keys; ``?`` = optional; see ``docs/profile.md`` for the full table):
                        (pin and needles, default: the roller's); [cam]? bore_mm (shaft bore
                        RADIUS), shaft_fit? ("contact"|"bonded"), shaft_clearance_um? (shaft
                        radius = bore - clearance), [materials.shaft]?
-    [fe]?              a_over_h?, tolerance? (femcam sweep's --mesh-size, --tolerance)
+    [fe]?              a_over_h?, tolerance? (femcam sweep's --a-over-h, --tolerance)
     [sweep]?           method?, angles_deg? ("0:360:1"), chunk_size?, vtk_every?, plots?
     [wear]?            K | k_mm3_per_N_m, roller_model?, srr?, J_kg_m2?, T_drag_N_m?, cycles?
                        (femcam.wear.options)
@@ -68,10 +68,11 @@ from .checker import MAX_PROBLEMS
 from .load import load_scene
 from .schema import METHODS, STUDY_RANGES, STUDY_WHOLE, TOLERANCE_FLOOR, study_problem
 from .state import UNDERCUT_CHECK_N, Scene, SceneState
+from .study import StudySettings
 from .tribology import LubricantData, MaterialData, SurfaceRoughness, Tribology
 from .wear import WearSettings, wear_table
 
 __all__ = ["MAX_PROBLEMS", "METHODS", "STUDY_RANGES", "STUDY_WHOLE", "TOLERANCE_FLOOR",
            "UNDERCUT_CHECK_N", "ContactCase", "LubricantData", "MaterialData", "Scene", "SceneState",
-           "SurfaceRoughness", "Tribology", "WearSettings", "contact_case", "load_scene",
+           "StudySettings", "SurfaceRoughness", "Tribology", "WearSettings", "contact_case", "load_scene",
            "roller_support_problems", "study_problem", "wear_table"]

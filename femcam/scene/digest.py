@@ -19,7 +19,7 @@ import numpy as np
 
 #: fields that do not change what is computed: free text, the file, the TOML as written (its
 #: physics is in the typed fields), study settings
-NOT_PHYSICS = {"Scene": ("name", "description", "source", "source_path", "origin", "fe", "sweep",
+NOT_PHYSICS = {"Scene": ("name", "description", "source", "source_path", "origin", "study",
                           "overrides"),
                "Material": ("name",)}
 

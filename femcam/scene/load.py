@@ -78,10 +78,10 @@ def load_scene(path) -> Scene:
     return Scene(name=top["name"], description=top.get("description", ""), source=top.get("source", ""),
                  program=program, follower=follower, dynamics=dyn, omega=omega, cam=mats["cam"],
                  roller=mats["roller"], length=fo["face_width_mm"], mu=co.get("friction", 0.0),
-                 plane=co.get("plane", "strain"), sliding=co.get("sliding"), fe=study["fe"],
+                 plane=co.get("plane", "strain"), sliding=co.get("sliding"), study=study,
                  wear=wear_settings(wear), source_path=str(path), origin=freeze(raw), train=train,
                  tribology=tribo, finite_length=finite, bodies=bodies, layers=layers,
-                 steps_per_rev=steps_per_rev, sweep=study["sweep"], tip_radius=fo.get("tip_radius_mm"),
+                 steps_per_rev=steps_per_rev, tip_radius=fo.get("tip_radius_mm"),
                  face_length=fo.get("face_length_mm"))
 
 

@@ -23,6 +23,7 @@ from ..loads import ArmDynamics, FollowerDynamics, LoadResult, arm_contact_force
 from ..materials import Material
 from ..profile import CamProfile, bool_intervals, cam_profile
 from .origin import FrozenMapping, freeze
+from .study import StudySettings
 from .tribology import Tribology
 from .wear import WearSettings
 
@@ -142,10 +143,11 @@ class Scene:
         (full sliding in this direction at every angle).
     description, source : str
         Free text of the scene file.
-    fe, sweep : dict
-        The checked study settings of [fe] (``a_over_h``, ``tolerance``: dimensionless) and
-        [sweep] (``method``, ``angles_deg``, ``chunk_size``, ``vtk_every`` in angles,
-        ``plots``): ``femcam sweep`` uses them where no flag is given.
+    study : femcam.scene.study.StudySettings
+        The checked study settings of [fe] and [sweep] (``a_over_h``, ``tolerance``, ``rtol``
+        dimensionless; ``method``, ``angles_deg`` in deg, ``chunk_size``, ``vtk_every`` in
+        angles, ``plots``; None where not given): a sweep uses them where its options leave
+        None (:mod:`femcam.sweep.settings`).
     wear : femcam.scene.wear.WearSettings
         The [wear] table in SI (:mod:`femcam.wear.options` reads it).
     finite_length : dict
@@ -194,7 +196,7 @@ class Scene:
     sliding: str | None = None
     description: str = ""
     source: str = ""
-    fe: dict = field(default_factory=dict)
+    study: StudySettings = field(default_factory=StudySettings)
     wear: WearSettings = field(default_factory=WearSettings)
     finite_length: dict = field(default_factory=dict)
     layers: dict = field(default_factory=dict)
@@ -204,7 +206,6 @@ class Scene:
     train: TrainModel | None = None
     steps_per_rev: int | None = None
     bodies: dict = field(default_factory=dict)
-    sweep: dict = field(default_factory=dict)
     tip_radius: float | None = None
     face_length: float | None = None
     #: what the program was changed to after loading (:meth:`with_law`): ``(("law", name),

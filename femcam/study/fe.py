@@ -12,7 +12,7 @@ import numpy as np
 
 from .. import _validate
 from ..errors import FemcamError, InputError
-from ..sweep import sweep
+from ..sweep import RunOptions, SweepOptions, sweep
 from .spec import MAX_VARIANTS, whole
 
 #: what chooses the FE candidates
@@ -112,8 +112,10 @@ def fe_check(task: tuple) -> dict:
     scene, theta0, opts = task
     angles = np.mod(theta0 + np.asarray(opts.offsets, float), 2.0 * math.pi)
     try:
-        r = sweep(scene, angles=angles, method="fe", a_over_h=opts.a_over_h, tolerance=opts.tolerance,
-                  workers=1, progress=False, plots=False)
+        r = sweep(scene,
+                  SweepOptions(angles=angles,  method="fe",  a_over_h=opts.a_over_h,
+                               tolerance=opts.tolerance,  plots=False),
+                  RunOptions(workers=1, progress=False))
     except FemcamError as exc:
         return {"p0_fe": math.nan, "theta_fe": math.nan, "status": "failed",
                 "reason": f"FE: {type(exc).__name__}: {exc}".replace("\n", " ")}

@@ -1,12 +1,14 @@
 """FE sweep over cam angle: per-angle pipeline, chunked/resumable store, parallel executors.
 
 >>> from femcam import sweep            # doctest: +SKIP
->>> r = sweep("examples/seed002_study_model.toml", out="out", workers=2)  # doctest: +SKIP
+>>> from femcam import RunOptions                                        # doctest: +SKIP
+>>> r = sweep("examples/seed002_study_model.toml", run=RunOptions(out="out", workers=2))  # doctest: +SKIP
 
 ``femcam.sweep`` is the function (:func:`femcam.sweep.run.sweep`); this package is imported by
 name: ``from femcam.sweep import SweepResult`` or ``from femcam.sweep.table import COLUMNS``.
 
-Modules: :mod:`~femcam.sweep.options` (:class:`SweepOptions`, the scene adapter),
+Modules: :mod:`~femcam.sweep.options` (:class:`SweepOptions`, :class:`RunOptions`, the scene
+adapter),
 :mod:`~femcam.sweep.pipeline` (per-angle chain, one chunk), model families
 (:mod:`~femcam.sweep.plan`, the first guess, and :mod:`~femcam.sweep.verify`, the reuse error
 checked against ``tolerance``), :mod:`~femcam.sweep.cache` (:class:`ModelCache`: the process's
@@ -25,7 +27,8 @@ import importlib
 
 #: public name -> the module that defines it
 _WHERE = {"COLUMNS": ".table", "ModelCache": ".cache", "Progress": "femcam._progress",
-          "SweepOptions": ".options", "SweepResult": ".result", "auto_workers": ".parallel",
+          "RunOptions": ".options", "SweepOptions": ".options", "SweepResult": ".result",
+          "auto_workers": ".parallel",
           "default_cache": ".cache", "parse_angles_deg": ".run", "plan_families": ".plan",
           "run_chunk": ".pipeline", "run_tasks": ".parallel", "sweep": ".run",
           "verify_families": ".verify"}

@@ -19,7 +19,7 @@ from ..materials import effective_modulus
 from ..mesh import MeshOptions
 from ..mesh.session import gmsh_kept
 from .diskcache import DiskCache, content_key, finite_p0, restore_model, strip_model
-from .options import ContactParams, SweepOptions
+from .options import ContactParams, ResolvedOptions
 
 #: fresh checks: one load case, only its p0 read: no stress operators, and a stress window of
 #: the surface nodes only (eval_depth 0; the contact solve does not use the window, so p0 is the
@@ -74,7 +74,7 @@ class ModelCache:
         self._kept, self._kept_entered = None, False   # gmsh kept initialised meanwhile
 
     def model_for(self, cp: ContactParams, rho_ref: float, a_ref: float,
-                  options: SweepOptions) -> ContactModel:
+                  options: ResolvedOptions) -> ContactModel:
         """The FE model of a family (references ``rho_ref``, ``a_ref`` in m), cached or built now.
 
         Parameters
@@ -83,7 +83,7 @@ class ModelCache:
             The scene's follower radius and face width (m), materials, plane (part of the key).
         rho_ref, a_ref : float
             Reference cam radius and half-width (m) the mesh is built for.
-        options : SweepOptions
+        options : ResolvedOptions
             ``a_over_h`` (elements per contact half-width) of the mesh.
 
         Returns
@@ -147,7 +147,7 @@ class ModelCache:
         return m, dt
 
     def prefetch_model(self, cp: ContactParams, rho_ref: float, a_ref: float,
-                       options: SweepOptions) -> None:
+                       options: ResolvedOptions) -> None:
         """Start building (or loading) the model :meth:`model_for` will be asked for, in the
         background thread of :meth:`building_in_background` (nothing outside it).
 
@@ -157,7 +157,7 @@ class ModelCache:
             The contact parameters.
         rho_ref, a_ref : float
             Reference cam radius and half-width (m).
-        options : SweepOptions
+        options : ResolvedOptions
             ``a_over_h``.
         """
         key = _key(cp, rho_ref, a_ref, options)
@@ -265,7 +265,7 @@ class ModelCache:
                 memo[key] = r
         return r
 
-    def fresh_p0(self, cp: ContactParams, rho: float, a: float, options: SweepOptions,
+    def fresh_p0(self, cp: ContactParams, rho: float, a: float, options: ResolvedOptions,
                  F: float, load: tuple = (None, None, 0)) -> float:
         """FE p0 of a model built fresh for one load case (remembered per load case).
 
@@ -275,7 +275,7 @@ class ModelCache:
             Follower radius and face width (m), materials, plane, friction ``mu``.
         rho, a : float
             The load case's cam radius and Hertz half-width (m): the fresh mesh is graded to them.
-        options : SweepOptions
+        options : ResolvedOptions
             ``a_over_h`` (elements per contact half-width) of the fresh mesh.
         F : float
             Contact force (N).
@@ -303,7 +303,7 @@ class ModelCache:
                 self._fresh_p0.popitem(last=False)
         return p0
 
-    def prefetch_fresh(self, cp: ContactParams, rho: float, a: float, options: SweepOptions,
+    def prefetch_fresh(self, cp: ContactParams, rho: float, a: float, options: ResolvedOptions,
                        F: float, load: tuple = (None, None, 0)) -> None:
         """Start the fresh check :meth:`fresh_p0` will be asked for (same arguments) in the
         background (nothing outside :meth:`building_in_background`).
@@ -314,7 +314,7 @@ class ModelCache:
             Follower radius and face width (m), materials, plane, friction ``mu``.
         rho, a : float
             The load case's cam radius and Hertz half-width (m).
-        options : SweepOptions
+        options : ResolvedOptions
             ``a_over_h`` of the fresh mesh.
         F : float
             Contact force (N).
@@ -371,7 +371,7 @@ class ModelCache:
         """
         return self._get_or_build(key, build)
 
-    def forget(self, cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions) -> None:
+    def forget(self, cp: ContactParams, rho_ref: float, a_ref: float, options: ResolvedOptions) -> None:
         """Drop the model of references ``(rho_ref, a_ref)`` and its solved cases.
 
         Parameters
@@ -380,7 +380,7 @@ class ModelCache:
             The contact parameters the model was built for.
         rho_ref, a_ref : float
             Its reference cam radius and half-width (m).
-        options : SweepOptions
+        options : ResolvedOptions
             Its ``a_over_h``.
         """
         with self._lock:
@@ -414,7 +414,7 @@ def default_cache() -> ModelCache:
     return _PROCESS_CACHE
 
 
-def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions,
+def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: ResolvedOptions,
                 solver: SolverOptions | None = None, mesh: MeshOptions | None = None) -> ContactModel:
     """A fresh :class:`femcam.fe.ContactModel` (mesh + factorisation).
 
@@ -423,7 +423,7 @@ def build_model(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepO
     cp : ContactParams
     rho_ref, a_ref : float
         Reference cam radius and half-width (m).
-    options : SweepOptions
+    options : ResolvedOptions
         ``a_over_h``.
     solver : SolverOptions, optional
         Default ``SolverOptions()`` (stress operators precomputed: a family model solved at
@@ -476,7 +476,7 @@ def coated_zone_factor(cp: ContactParams) -> float:
     return max(1.0, math.sqrt(cp.E_star / effective_modulus(*as_coat, cp.plane)))
 
 
-def model_args(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions,
+def model_args(cp: ContactParams, rho_ref: float, a_ref: float, options: ResolvedOptions,
                solver: SolverOptions | None = None) -> dict:
     """The keyword arguments of :meth:`femcam.fe.ContactModel.build` for a sweep's model (the
     one place they are chosen: :func:`build_model` builds with them, the persistent cache keys
@@ -488,7 +488,7 @@ def model_args(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOp
         The contact (radii, materials, length, plane, coating).
     rho_ref, a_ref : float
         Reference cam radius and half-width (m).
-    options : SweepOptions
+    options : ResolvedOptions
         ``a_over_h``.
     solver : SolverOptions, optional
         Default ``SolverOptions()``.

@@ -52,7 +52,7 @@ from ..fe import SolverOptions
 from ..layers.interface import interface_stress
 from ..mesh import MeshOptions
 from .cache import ModelCache, _disk_key, _key, build_model, default_cache, model_args
-from .options import ContactParams, SweepOptions, contact_params
+from .options import ContactParams, ResolvedOptions, contact_params
 
 __all__ = ["LAYER_QUANTITIES", "QUANTITIES", "RATES", "FamilyEstimate", "coarse_mesh", "estimated",
            "family_estimate", "estimate_families", "estimate_run", "estimate_text", "fill_row_estimate",
@@ -241,7 +241,7 @@ def layer_quantities(r, cp: ContactParams) -> dict:
     return {"interface_tau": float(it.tau_abs_max), "interface_sn": float(it.sigma_n_min)}
 
 
-def family_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions,
+def family_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: ResolvedOptions,
                     cache: ModelCache | None = None, reuse: float = 0.0) -> FamilyEstimate:
     """Two-level estimate of one family model's relative errors at its reference load.
 
@@ -251,7 +251,7 @@ def family_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: Sw
         Contact parameters of the scene.
     rho_ref, a_ref : float
         The family's reference cam radius and half-width [m].
-    options : SweepOptions
+    options : ResolvedOptions
         ``a_over_h`` of the family model (>= 4).
     cache : ModelCache, optional
         Where the family model is taken from (default: the process's cache).
@@ -310,7 +310,7 @@ def _coarse_job(cp, rho_ref, a_ref, options, mesh2, F, cache) -> tuple:
     return ("estimate_coarse", _key(cp, rho_ref, a_ref, options), load), job
 
 
-def prefetch_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: SweepOptions,
+def prefetch_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: ResolvedOptions,
                       cache: ModelCache | None = None) -> None:
     """Start the coarse level of :func:`family_estimate` (same arguments) in the background
     thread of ``cache`` (:meth:`~femcam.sweep.cache.ModelCache.building_in_background`;
@@ -323,7 +323,7 @@ def prefetch_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: 
         Contact parameters of the scene.
     rho_ref, a_ref : float
         The family's reference cam radius and half-width [m].
-    options : SweepOptions
+    options : ResolvedOptions
         ``a_over_h`` of the family model (below 4: no estimate, nothing started).
     cache : ModelCache, optional
         Its background thread (default: the process's cache).
@@ -421,7 +421,7 @@ def fill_row_estimate(rows: dict, i: int, est: FamilyEstimate | None, a_row: flo
         rows[f"err_est_{q}"][i] = e
 
 
-def estimate_families(records, cp: ContactParams, options: SweepOptions,
+def estimate_families(records, cp: ContactParams, options: ResolvedOptions,
                       cache: ModelCache | None = None) -> dict:
     """Two-level estimates of every verified family (one coarse model build each).
 
@@ -431,7 +431,7 @@ def estimate_families(records, cp: ContactParams, options: SweepOptions,
         The verified families (``id``, ``rho_ref``, ``a_ref`` in m, ``reuse_error``).
     cp : ContactParams
         Contact parameters of the scene.
-    options : SweepOptions
+    options : ResolvedOptions
         ``a_over_h`` of the family models; below 4 no estimate is made (the coarse level
         would fall below 2 elements per half-width).
     cache : ModelCache, optional

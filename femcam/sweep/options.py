@@ -1,13 +1,19 @@
-"""Numerical options of a sweep, and the scene adapter: the few contact parameters it needs.
+"""The options of a sweep, and the scene adapter: the few contact parameters it needs.
 
-The accepted methods and ranges are the scene's (:data:`METHODS`, :data:`TOLERANCE_FLOOR` and
-:func:`femcam.scene.schema.study_problem`, one copy used by the ``[fe]``/``[sweep]`` tables and
-by :class:`SweepOptions`).
+:class:`SweepOptions` says what a sweep computes (None: the scene's ``[fe]``/``[sweep]`` value,
+else femcam's default, :mod:`femcam.sweep.settings`), :class:`RunOptions` how it runs (output
+directory, workers, cache, progress); :class:`ResolvedOptions` are the numerical options after
+that resolution, as the pipeline reads them. The accepted methods and ranges are the scene's
+(:data:`METHODS`, :data:`TOLERANCE_FLOOR` and :func:`femcam.scene.schema.study_problem`, one
+copy used by the ``[fe]``/``[sweep]`` tables and by both option records).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields, replace
+from pathlib import Path
+
+import numpy as np
 
 from .. import _validate
 from ..errors import InputError
@@ -19,13 +25,199 @@ from ..wear.options import follower_tip_radius
 #: to 10 %
 RTOL_RANGE = (2e-4, 0.1)
 
-__all__ = ["METHODS", "RTOL_ON", "RTOL_RANGE", "TOLERANCE_FLOOR", "ContactParams", "SweepOptions",
-           "contact_params", "rtol_quantities"]
+__all__ = ["METHODS", "RTOL_ON", "RTOL_RANGE", "TOLERANCE_FLOOR", "ContactParams", "ResolvedOptions",
+           "RunOptions", "SweepOptions", "contact_params", "rtol_quantities"]
+
+
+def _study_value(key: str, value):
+    """A study setting checked by :func:`study_problem` (``int`` for the whole-number ones)."""
+    unit = STUDY_UNITS[key]
+    x = _validate.number(key, value, unit)
+    problem = study_problem(key, x)
+    if problem:
+        raise _validate.fail(key, value, unit, problem)
+    return int(x) if key in STUDY_WHOLE else x
+
+
+def _flag(name: str, value) -> bool:
+    """A boolean option: True or False (numbers and strings refused)."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise _validate.fail(name, value, "", "must be True or False")
+    return bool(value)
+
+
+@dataclass(frozen=True, kw_only=True, eq=False)
+class SweepOptions:
+    """What a sweep computes; each option left at None takes the scene's ``[fe]`` / ``[sweep]``
+    value, else femcam's default (:mod:`femcam.sweep.settings`, the rule ``femcam sweep`` applies
+    to its flags: the two compute the same rows).
+
+    Parameters
+    ----------
+    angles : array_like or None
+        Cam angles [rad], at least one, finite; default the scene's ``[sweep] angles_deg``, else
+        0, 1, ..., 359 deg.
+    method : str or None
+        ``"fe"`` (FE contact solve), ``"hertz"`` (analytic only) or ``"auto"`` (the cheapest of
+        Hertz, FE arc gap, FE exact gap within ``tolerance`` per angle, :data:`METHODS`);
+        default ``[sweep] method``, else ``"fe"``.
+    a_over_h : float or None
+        Elements per contact half-width, ``h = a / a_over_h`` [-], in [2, 400]; default ``[fe]
+        a_over_h``, else 10 (refused together with ``rtol``).
+    tolerance : float or None
+        Bound on the model-reuse error ``|p0(family model) / p0(fresh model) - 1|`` [-], in
+        [1e-4, 0.5]; default ``[fe] tolerance``, else 2e-3 (with ``rtol``: ``<= rtol / 2``).
+    rtol : float or None
+        Bound on every FE row's estimated relative error [-] (a fraction, in :data:`RTOL_RANGE`):
+        the sweep chooses ``a_over_h`` (:mod:`femcam.sweep.rtol`); default ``[fe] rtol_pct`` /
+        100 (dropped when ``a_over_h`` is given or the method is ``"hertz"``), else none.
+    rtol_on : str or sequence of str or None
+        The quantities ``rtol`` bounds: stems of the ``err_est_*`` columns (:data:`RTOL_ON`, e.g.
+        ``("p0", "tau1")`` or ``"p0,tau1"``); default ``[fe] rtol_on``, else ``("p0",)``.
+    chunk_size : int or None
+        Angles per chunk (unit of parallel work and of the on-disk store) [angles], >= 1;
+        default ``[sweep] chunk_size``, else 30.
+    vtk_every : int or None
+        With an output directory, a ``.vtu`` every k-th angle and ``sweep.pvd`` [angles] (0:
+        none); default ``[sweep] vtk_every``, else 10.
+    plots : bool or None
+        With an output directory, write the PNG plots; default ``[sweep] plots``, else True.
+    animate : bool or None
+        With an output directory and VTK output, also write ``animation.gif`` (von Mises over
+        cam angle); default False.
+
+    Raises
+    ------
+    InputError
+        A given value of the wrong kind or out of range, naming the option, value and unit.
+    """
+
+    angles: np.ndarray | None = None
+    method: str | None = None
+    a_over_h: float | None = None
+    tolerance: float | None = None
+    rtol: float | None = None
+    rtol_on: tuple | None = None
+    chunk_size: int | None = None
+    vtk_every: int | None = None
+    plots: bool | None = None
+    animate: bool | None = None
+
+    def __post_init__(self):
+        if self.angles is not None:
+            th = _validate.finite_array("angles", self.angles, "rad").ravel()
+            if th.size == 0:
+                raise _validate.fail("angles", "[]", "rad", "must contain at least one angle")
+            th.flags.writeable = False
+            object.__setattr__(self, "angles", th)
+        if self.method is not None:
+            _validate.choice("method", self.method, METHODS)
+        for key in STUDY_UNITS:
+            if getattr(self, key) is not None:
+                object.__setattr__(self, key, _study_value(key, getattr(self, key)))
+        if self.rtol is not None:
+            object.__setattr__(self, "rtol", _validate.in_range("rtol", self.rtol, *RTOL_RANGE,
+                                                                "(relative p0 error)"))
+        if self.rtol_on is not None:
+            object.__setattr__(self, "rtol_on", rtol_quantities(self.rtol_on))
+        for key in ("plots", "animate"):
+            if getattr(self, key) is not None:
+                object.__setattr__(self, key, _flag(key, getattr(self, key)))
+
+    def given(self) -> dict:
+        """The options given (not None), as :func:`femcam.sweep.settings.resolve_settings` reads
+        them.
+
+        Returns
+        -------
+        dict
+            Option name -> value (the fields' units; ``animate`` left out: no scene key).
+        """
+        return {f.name: getattr(self, f.name) for f in fields(self)
+                if f.name != "animate" and getattr(self, f.name) is not None}
+
+
+@dataclass(frozen=True, kw_only=True, eq=False)
+class RunOptions:
+    """How a sweep runs: where it writes, with how many processes, what it reuses and reports.
+    None of these changes a computed row.
+
+    Parameters
+    ----------
+    out : str or Path or None
+        Output directory; None keeps everything in memory. Locked while the sweep runs; a
+        non-empty directory is refused unless ``resume`` or ``overwrite``.
+    resume : bool
+        Continue a killed sweep in ``out`` (finished chunks loaded, the rest computed; each
+        chunk checked against the manifest's scene hash).
+    overwrite : bool
+        Allow a fresh sweep into a non-empty ``out`` (its earlier results are replaced).
+    workers : int or str
+        Local worker processes [processes] (1: serial in this process), or ``"auto"``
+        (default): processes only when the expected saving is worth it
+        (:func:`femcam.sweep.auto_workers`); ignored with ``scheduler`` / ``client``.
+    scheduler : str or None
+        Dask scheduler address (``tcp://host:8786``).
+    client : dask.distributed.Client or None
+        A Dask ``Client`` (or ``LocalCluster``) to run the chunks on.
+    progress : bool or None
+        Progress on stderr (None: only when stderr is a terminal).
+    chunk_delay_s : float
+        Seconds [s] to sleep after each chunk, >= 0 (a test aid: "kill after k chunks" becomes
+        deterministic).
+    model_cache : bool
+        Load family models and fresh checks from the persistent model cache and store what is
+        built (False: ``--no-cache``; :mod:`femcam.sweep.diskcache`).
+    cache_dir : str or Path or None
+        The model cache's directory (default :func:`femcam.sweep.diskcache.default_dir`).
+    command : str or None
+        The command line recorded in the provenance.
+    scene_path : str or Path or None
+        The scene file, recorded and hashed (default the path given to
+        :func:`femcam.sweep`, if any).
+
+    Raises
+    ------
+    InputError
+        A bad worker count, a negative delay, a non-boolean flag, a path that is not one, or
+        ``resume`` without ``out``.
+    """
+
+    out: str | Path | None = None
+    resume: bool = False
+    overwrite: bool = False
+    workers: int | str = "auto"
+    scheduler: str | None = None
+    client: object = None
+    progress: bool | None = None
+    chunk_delay_s: float = 0.0
+    model_cache: bool = True
+    cache_dir: str | Path | None = None
+    command: str | None = None
+    scene_path: str | Path | None = None
+
+    def __post_init__(self):
+        for key in ("resume", "overwrite", "model_cache"):
+            object.__setattr__(self, key, _flag(key, getattr(self, key)))
+        if self.progress is not None:
+            object.__setattr__(self, "progress", _flag("progress", self.progress))
+        object.__setattr__(self, "workers", _validate.workers("workers", self.workers))
+        object.__setattr__(self, "chunk_delay_s",
+                           _validate.nonnegative("chunk_delay_s", self.chunk_delay_s, "s"))
+        for key in ("out", "cache_dir", "scene_path"):
+            value = getattr(self, key)
+            if value is not None and not (isinstance(value, (str, Path)) and str(value).strip()):
+                raise _validate.fail(key, value, "", "must be a path (str or Path)")
+        if self.out is not None:
+            object.__setattr__(self, "out", Path(self.out))
+        if self.resume and self.out is None:
+            raise _validate.fail("resume", True, "", "needs an output directory (out)")
 
 
 @dataclass(frozen=True, kw_only=True)
-class SweepOptions:
-    """Numerical options of a sweep (recorded in the manifest and the provenance).
+class ResolvedOptions:
+    """The numerical options of a sweep after resolution (recorded in the manifest and the
+    provenance; what the pipeline, the families and the model cache read).
 
     Parameters
     ----------
@@ -34,7 +226,7 @@ class SweepOptions:
         (analytic only) or ``"auto"`` (the cheapest model within the tolerance: Hertz, FE arc
         gap, FE exact gap) (:data:`METHODS`).
     a_over_h : float
-        FE element size in the contact zone, ``h = a / a_over_h`` (``--mesh-size``;
+        FE element size in the contact zone, ``h = a / a_over_h`` (``--a-over-h``;
         dimensionless), in :data:`femcam.scene.STUDY_RANGES` ([2, 400]).
     tolerance : float
         Bound on the reuse error ``|p0(family model) / p0(fresh model) - 1|`` (``--tolerance``),
@@ -69,19 +261,14 @@ class SweepOptions:
 
     def __post_init__(self):
         _validate.choice("method", self.method, METHODS)
-        for key, unit in STUDY_UNITS.items():
-            value = getattr(self, key)
-            x = _validate.number(key, value, unit)
-            problem = study_problem(key, x)
-            if problem:
-                raise _validate.fail(key, value, unit, problem)
-            object.__setattr__(self, key, int(x) if key in STUDY_WHOLE else x)
+        for key in STUDY_UNITS:
+            object.__setattr__(self, key, _study_value(key, getattr(self, key)))
         if self.rtol is not None:
             object.__setattr__(self, "rtol", _validate.in_range("rtol", self.rtol, *RTOL_RANGE,
                                                                 "(relative p0 error)"))
         object.__setattr__(self, "rtol_on", rtol_quantities(self.rtol_on))
 
-    def for_family(self, a_over_h) -> SweepOptions:
+    def for_family(self, a_over_h) -> ResolvedOptions:
         """These options with one model family's own ``a_over_h`` (``rtol`` chooses it per
         family, :mod:`femcam.sweep.rtol`; :class:`femcam.sweep.verify.FamilyRecord.a_over_h`).
 
@@ -92,7 +279,7 @@ class SweepOptions:
 
         Returns
         -------
-        SweepOptions
+        ResolvedOptions
             ``self`` or a copy with ``a_over_h`` replaced (the model cache keys on it).
         """
         if a_over_h is None or a_over_h != a_over_h or float(a_over_h) == self.a_over_h:

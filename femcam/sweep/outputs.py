@@ -22,7 +22,7 @@ from ..viz.process import PlotProcess, warn_missing
 from ..viz.sweep import plot_surface_sweep, plot_sweep, sweep_plot_calls
 from .cache import default_cache
 from .extras import extra_columns, extras_files, plot_extras
-from .options import SweepOptions, contact_params
+from .options import ResolvedOptions, contact_params
 from .profile import worst_surface_profile
 from .report import report_html
 from .result import SweepResult, plot_data_arrays, report_markdown
@@ -99,7 +99,7 @@ class SweepRun:
         Its file, if any.
     angles : ndarray, shape (n,)
         Cam angles [rad] (curvature jumps resolved).
-    opts : SweepOptions
+    opts : ResolvedOptions
         Numerical options.
     workers : int or str
         Worker processes, or ``"auto"``.
@@ -160,7 +160,7 @@ class SweepRun:
     scene: Scene
     scene_path: object
     angles: np.ndarray
-    opts: SweepOptions
+    opts: ResolvedOptions
     workers: int | str
     out: Path | None
     resume: bool

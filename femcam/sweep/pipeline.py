@@ -52,7 +52,7 @@ from .diskcache import attach
 from .estimate import fill_row_estimate
 from .extras import fill_extras
 from .headline import COATED, omitted_physics
-from .options import ContactParams, SweepOptions, contact_params
+from .options import ContactParams, ResolvedOptions, contact_params
 from .plan import hertz_half_width
 from .realcam import Traction, arc_error_estimate, contact_scene, hertz_within_tolerance, traction_args
 from .realrows import (
@@ -126,7 +126,7 @@ class ChunkTask:
     scene : femcam.scene.Scene
     theta : ndarray, shape (n,)
         Cam angles (rad).
-    options : SweepOptions
+    options : ResolvedOptions
     family : ndarray of int, shape (n,)
         Family id per angle (-1: none).
     refs : dict[int, tuple[float, float]]
@@ -160,7 +160,7 @@ class ChunkTask:
     index: int
     scene: object
     theta: np.ndarray
-    options: SweepOptions
+    options: ResolvedOptions
     family: np.ndarray = field(default_factory=lambda: np.zeros(0, int))
     refs: dict = field(default_factory=dict)
     a_over_h: dict = field(default_factory=dict)
@@ -175,7 +175,7 @@ class ChunkTask:
     estimates: dict = field(default_factory=dict)
     disk: tuple | None = None
 
-    def family_options(self, fid: int) -> SweepOptions:
+    def family_options(self, fid: int) -> ResolvedOptions:
         """The options family ``fid``'s model was built with (its own ``a_over_h``).
 
         Parameters
@@ -185,7 +185,7 @@ class ChunkTask:
 
         Returns
         -------
-        SweepOptions
+        ResolvedOptions
         """
         return self.options.for_family(self.a_over_h.get(int(fid)))
 

@@ -24,7 +24,7 @@ import numpy as np
 from ..hertz.conformity import roller_does_not_fit
 from ..hertz.surface import surface_stress
 from .cache import ModelCache, default_cache
-from .options import ContactParams, SweepOptions
+from .options import ContactParams, ResolvedOptions
 from .pipeline import line_contact
 from .plan import hertz_half_width
 from .realcam import scene_traction, traction_args
@@ -35,7 +35,7 @@ FRICTIONLESS_Q = 1e-3  # |Q| / (mu F) below which the Hertz curve is drawn frict
 
 
 def worst_surface_profile(table: dict, method: str, cp: ContactParams, families: list[dict],
-                          options: SweepOptions, cache: ModelCache | None = None,
+                          options: ResolvedOptions, cache: ModelCache | None = None,
                           scene=None) -> dict:
     """Surface stresses along x at the angle of highest p0 (the row's answer: FE p0, or Hertz
     p0 for the rows Hertz answered): Hertz lines (+ FE points for an FE row).
@@ -49,7 +49,7 @@ def worst_surface_profile(table: dict, method: str, cp: ContactParams, families:
     cp : ContactParams
     families : list of dict
         Family records (``id``, ``rho_ref``, ``a_ref``), empty for a Hertz sweep.
-    options : SweepOptions
+    options : ResolvedOptions
         ``a_over_h`` and ``tolerance`` of the sweep's models.
     cache : ModelCache, optional
         Where the sweep's models are (default: this process's).

@@ -328,7 +328,7 @@ def auto_hertz_rows(scene, cp, options, theta, F, rho, contact, jump) -> np.ndar
         The scene.
     cp : ContactParams
         Its contact parameters (``Rr``, ``length``, ``E_star``).
-    options : SweepOptions
+    options : ResolvedOptions
         ``method`` and ``tolerance``.
     theta : ndarray, shape (n,)
         Cam angles [rad].

@@ -30,7 +30,7 @@ The families are then numbered as :func:`~femcam.sweep.verify.verify_families` n
 its ``a_over_h`` (the model cache and the persistent cache key on it through
 :func:`femcam.sweep.cache.model_args`), each row its ``a_over_h_row``, and the provenance's
 ``rtol_choice`` the pilot of every planned family and every level tried. The sweep's
-``a_over_h`` (``SweepOptions.a_over_h``, used by models outside the families: the layer and ring
+``a_over_h`` (``ResolvedOptions.a_over_h``, used by models outside the families: the layer and ring
 side columns) is the largest family's.
 
 **Which quantities** (``rtol_on``, ``--rtol-on``, ``[fe] rtol_on``; default ``p0``): any of
@@ -235,7 +235,7 @@ def choose_mesh(run, fit_rows, cache) -> None:
     if run.scene.follower.flat_face:
         raise _validate.fail("rtol_pct (--rtol-pct)", 100 * rtol, "%", "needs model families; a "
                              "flat-faced follower's binned real-cam models carry no estimate; give "
-                             "[fe] a_over_h or --mesh-size instead")
+                             "[fe] a_over_h or --a-over-h instead")
     on = run.opts.rtol_on
     if cp.coat_body is None and any(q in LAYER_QUANTITIES for q in on):
         raise _validate.fail("rtol_on (--rtol-on)", ",".join(on), "", "names an interface stress "

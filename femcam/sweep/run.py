@@ -1,4 +1,4 @@
-"""``sweep(scene, *, angles=..., ...) -> SweepResult``: the main job of femcam.
+"""``sweep(scene, options, run) -> SweepResult``: the main job of femcam.
 
 Orchestration only: the analytic chain for all angles (vectorised, in this process), family
 planning, chunking, the executor and the on-disk store; the output files are written by
@@ -27,7 +27,7 @@ from .cache import default_cache
 from .diskcache import DiskCache, usage
 from .estimate import estimate_run, prefetch_estimate
 from .extras import extras_provenance
-from .options import SweepOptions, contact_params
+from .options import ResolvedOptions, RunOptions, SweepOptions, contact_params
 from .outputs import SweepRun, scene_hash, scene_source, write_outputs
 from .parallel import AUTO_VTU_S, _cpu_count, auto_workers, run_tasks
 from .pipeline import ChunkTask, contact_mask, run_chunk
@@ -64,88 +64,28 @@ def parse_angles_deg(spec: str) -> np.ndarray:
     return _validate.angles_deg("--angles-deg", spec)
 
 
-def sweep(scene, *, angles=None, method: str | None = None, a_over_h=None, tolerance=None,
-          rtol=None, rtol_on=None, chunk_size: int | None = None, out=None, resume: bool = False,
-          workers: int | str = "auto", scheduler=None, client=None, vtk_every: int | None = None,
-          progress: bool | None = None, plots: bool | None = None, command: str | None = None,
-          scene_path=None, chunk_delay_s: float = 0.0, overwrite: bool = False,
-          animate: bool = False, model_cache: bool = True, cache_dir=None) -> SweepResult:
+def sweep(scene, options: SweepOptions | None = None, run: RunOptions | None = None) -> SweepResult:
     """Sweep a scene over cam angles: kinematics, loads, Hertz and FE contact at every angle.
 
-    A setting left at None takes the scene's ``[fe]`` / ``[sweep]`` value, else femcam's
-    default; a setting given overrides the scene, as a flag of ``femcam sweep`` does (one
-    resolution for both, :func:`femcam.sweep.settings.resolve_settings`: the two compute the
-    same rows). The settings and their sources are in ``provenance["options"]["settings"]``.
+    What is computed is ``options``; each option left at None takes the scene's ``[fe]`` /
+    ``[sweep]`` value (:attr:`femcam.scene.Scene.study`), else femcam's default, as each flag of
+    ``femcam sweep`` does (one resolution for both, :func:`femcam.sweep.settings.resolve_settings`:
+    ``sweep(path)`` and ``femcam sweep path`` compute the same rows). How it runs (output
+    directory, workers, cache, progress) is ``run``. The settings and their sources are in
+    ``provenance["options"]["settings"]``.
 
     Parameters
     ----------
     scene : femcam.scene.Scene or str or Path
         A scene, or the path of a scene TOML file.
-    angles : array_like, optional
-        Cam angles (rad); default the scene's ``[sweep] angles_deg``, else 0, 1, ..., 359
-        degrees.
-    method : str, optional
-        ``"fe"`` (FE contact solve), ``"hertz"`` (analytic only, fast) or ``"auto"``
-        (the cheapest of Hertz, FE arc gap, FE exact gap within ``tolerance`` per angle;
-        :mod:`femcam.sweep.realcam`); default the scene's ``[sweep] method``, else ``"fe"``.
-    a_over_h : float, optional
-        FE element size in the contact zone ``h = a / a_over_h`` (default the scene's ``[fe]
-        a_over_h``, else 10; refused with rtol).
-    tolerance : float, optional
-        Bound on the relative p0 difference between an angle solved with its family's model and
-        with a model built fresh for it (the reuse error), >= 1e-4; default 2e-3, with ``rtol``
-        ``rtol / 2`` (at most); the scene's ``[fe] tolerance`` when not given; families split
-        until it holds (:mod:`femcam.sweep.verify`).
-    rtol : float, optional
-        Bound on every FE row's estimated relative p0 error (2e-4 to 0.1): the sweep chooses
-        ``a_over_h`` and ``tolerance <= rtol / 2`` (:mod:`femcam.sweep.rtol`); default the
-        scene's ``[fe] rtol_pct`` / 100 (dropped when ``a_over_h`` is given or the method is
-        ``"hertz"``), else none.
-    rtol_on : str or sequence of str, optional
-        The quantities ``rtol`` bounds: stems of the ``err_est_*`` columns
-        (:data:`femcam.sweep.options.RTOL_ON`, e.g. ``("p0", "tau1")`` or ``"p0,tau1"``); every
-        family's mesh meets all of them; default the scene's ``[fe] rtol_on``, else ``("p0",)``.
-    chunk_size : int, optional
-        Angles per chunk (unit of parallel work and of the on-disk store); default the scene's
-        ``[sweep] chunk_size``, else 30.
-    out : str or Path, optional
-        Output directory; ``None`` keeps everything in memory. Locked while the sweep runs (a
-        second sweep into it is refused); a non-empty directory is refused unless ``resume``
-        or ``overwrite``.
-    resume : bool
-        Continue a killed sweep in ``out`` (loads finished chunks, computes the rest; each
-        chunk is checked against the manifest's scene hash).
-    workers : int or str
-        Local worker processes (``1`` = serial in this process), or ``"auto"`` (default):
-        processes only when the expected saving is worth it (:func:`auto_workers`); ignored
-        with ``scheduler``/``client``.
-    scheduler, client : str or dask.distributed.Client, optional
-        Dask scheduler address, or a ``Client``/``LocalCluster``.
-    vtk_every : int, optional
-        With ``out``, write one ``.vtu`` every k angles and ``sweep.pvd`` (0 = none); default
-        the scene's ``[sweep] vtk_every``, else 10.
-    progress : bool, optional
-        Stderr progress bar (default: only when stderr is a TTY).
-    plots : bool, optional
-        With ``out``, write the PNG plots (:mod:`femcam.viz.sweep`); default the scene's
-        ``[sweep] plots``, else True.
-    command : str, optional
-        Command line recorded in the provenance.
-    scene_path : str or Path, optional
-        The scene file (recorded and hashed).
-    chunk_delay_s : float
-        Seconds to sleep after each chunk (>= 0; a test aid that makes "kill after k chunks"
-        deterministic).
-    overwrite : bool
-        Allow a fresh sweep into a non-empty ``out`` (its earlier results are replaced).
-    animate : bool
-        With ``out`` and VTK output, also write ``DIR/animation.gif``: von Mises over cam angle
-        (:func:`femcam.viz.animate.animate_pvd`).
-    model_cache : bool
-        Load family models and fresh-check results from the persistent model cache, store what
-        is built (False: ``--no-cache``; :mod:`femcam.sweep.diskcache`, docs/sweep.md).
-    cache_dir : str or Path, optional
-        Its directory (``--cache-dir``; default :func:`femcam.sweep.diskcache.default_dir`).
+    options : SweepOptions, optional
+        Angles [rad], method, ``a_over_h``, ``tolerance``, ``rtol``, ``rtol_on``, chunk size,
+        VTK stride, plots, animation (:class:`femcam.sweep.options.SweepOptions`); default all
+        from the scene, else femcam's defaults.
+    run : RunOptions, optional
+        Output directory, resume / overwrite, workers or Dask, progress, model cache, the
+        recorded command line and scene path (:class:`femcam.sweep.options.RunOptions`);
+        default in memory, ``workers="auto"``.
 
     Returns
     -------
@@ -153,23 +93,32 @@ def sweep(scene, *, angles=None, method: str | None = None, a_over_h=None, toler
 
     Raises
     ------
+    InputError
+        ``options`` or ``run`` of another type, or settings that cannot go together (``rtol``
+        with ``a_over_h``, ``animate`` without VTK output).
     SweepInterrupted
         On Ctrl-C (a ``KeyboardInterrupt`` saying what was saved and how to resume).
+
+    Examples
+    --------
+    >>> from femcam import RunOptions, SweepOptions, sweep        # doctest: +SKIP
+    >>> r = sweep("examples/seed002_study_model.toml", SweepOptions(method="hertz"),
+    ...           RunOptions(out="out", workers=2))               # doctest: +SKIP
     """
     t_start = time.perf_counter()
-    given = dict(angles=angles, method=method, a_over_h=a_over_h, tolerance=tolerance, rtol=rtol,
-                 rtol_on=rtol_on, chunk_size=chunk_size, vtk_every=vtk_every, plots=plots)
-    run = _prepare(scene, given, out, resume, workers, scene_path, chunk_delay_s)
-    run.overwrite = bool(overwrite)
-    run.animate = bool(animate)
-    run.disk = DiskCache(cache_dir, enabled=model_cache)
+    options = SweepOptions() if options is None else _validate.instance("options", options, SweepOptions)
+    ro = RunOptions() if run is None else _validate.instance("run", run, RunOptions)
+    run = _prepare(scene, options, ro)
+    run.overwrite = ro.overwrite
+    run.animate = bool(options.animate)
+    run.disk = DiskCache(ro.cache_dir, enabled=ro.model_cache)
     if run.animate and not run.opts.vtk_every:
-        raise _validate.fail("animate", animate, "", "needs the VTK series: an output directory "
+        raise _validate.fail("animate", True, "", "needs the VTK series: an output directory "
                              "(out) and vtk_every > 0 (--vtk-every)")
     plots = run.out is not None and run.settings.plots
     run.plotter = start_plot_process() if plots else None  # imports matplotlib meanwhile
     try:
-        return _sweep(run, scheduler, client, progress, plots, command, t_start)
+        return _sweep(run, ro.scheduler, ro.client, ro.progress, plots, ro.command, t_start)
     except KeyboardInterrupt:
         raise SweepInterrupted(_interrupt_message(run)) from None
     finally:
@@ -246,29 +195,26 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
     return result
 
 
-def _prepare(scene, given, out, resume, workers, scene_path, chunk_delay_s) -> SweepRun:
+def _prepare(scene, options: SweepOptions, ro: RunOptions) -> SweepRun:
     """Load the scene file; resolve the settings (given > scene > default,
     :func:`femcam.sweep.settings.resolve_settings`, as the CLI does); check the inputs."""
+    scene_path, out = ro.scene_path, ro.out
     if isinstance(scene, (str, Path)):
-        scene_path = scene
+        scene_path = scene if scene_path is None else scene_path
         scene = load_scene(scene)
-    st = resolve_settings(scene, given)
+    st = resolve_settings(scene, options.given())
     angles, a_over_h, tolerance, rtol = st.angles, st.a_over_h, st.tolerance, st.rtol
-    workers = _validate.workers("workers", workers)
-    opts = SweepOptions(method=st.method, **({} if a_over_h is None else {"a_over_h": a_over_h}),
+    opts = ResolvedOptions(method=st.method, **({} if a_over_h is None else {"a_over_h": a_over_h}),
                         tolerance=tolerance, chunk_size=st.chunk_size,
                         vtk_every=st.vtk_every if out is not None else 0, rtol=rtol, rtol_on=st.rtol_on)
     if opts.method != "hertz":  # refused before any work: a mesh too large for time and memory
         check_contact_elements(MeshOptions(a_over_h=opts.a_over_h))
-    if resume and out is None:
-        raise _validate.fail("resume", resume, "", "needs an output directory (out)")
-    delay = _validate.nonnegative("chunk_delay_s", chunk_delay_s, "s")
     angles, jump = jump_angles(scene, angles)  # curvature jumps resolved (femcam.sweep.realcam)
     n = angles.size
     bounds = [(i, min(i + opts.chunk_size, n)) for i in range(0, n, opts.chunk_size)]
-    return SweepRun(scene=scene, scene_path=scene_path, angles=angles, opts=opts, workers=workers,
-                out=Path(out) if out is not None else None, resume=bool(resume), bounds=bounds,
-                delay_s=delay, jump=jump, settings=st)
+    return SweepRun(scene=scene, scene_path=scene_path, angles=angles, opts=opts, workers=ro.workers,
+                    out=out, resume=ro.resume, bounds=bounds, delay_s=ro.chunk_delay_s, jump=jump,
+                    settings=st)
 
 
 def _analytic(run: SweepRun) -> None:

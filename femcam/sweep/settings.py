@@ -1,9 +1,10 @@
 """The settings of a sweep and where each one came from: one copy for the API and the CLI.
 
-``femcam.sweep(scene, ...)`` and ``femcam sweep SCENE`` resolve their settings here, so that the
-two compute the same rows. Precedence, setting by setting: a value given (a keyword argument that
-is not None, or a command-line flag) wins; else the scene's ``[fe]`` / ``[sweep]`` key; else
-femcam's default (:data:`SETTINGS`, the one place each default is written; ``femcam sweep
+``femcam.sweep(scene, SweepOptions(...))`` and ``femcam sweep SCENE`` resolve their settings
+here, so that the two compute the same rows. Precedence, setting by setting: a value given (a
+field of :class:`femcam.sweep.options.SweepOptions` that is not None, or a command-line flag)
+wins; else the scene's ``[fe]`` / ``[sweep]`` key (:class:`femcam.scene.study.StudySettings`);
+else femcam's default (:data:`SETTINGS`, the one place each default is written; ``femcam sweep
 --help`` shows them).
 
 ``rtol`` (scene ``[fe] rtol_pct``, in percent) chooses the mesh, so it excludes ``a_over_h``:
@@ -34,6 +35,9 @@ SETTINGS = {"angles": ("sweep", "angles_deg", "0:360:1"), "a_over_h": ("fe", "a_
             "plots": ("sweep", "plots", True), "rtol": ("fe", "rtol_pct", None),
             "rtol_on": ("fe", "rtol_on", ("p0",))}
 
+#: a field of :class:`femcam.scene.study.StudySettings` -> its parameter here (the same name
+#: but the angles, given by the scene as their spec)
+_FIELD = {"angles_deg": "angles"}
 #: the unit of each parameter in messages
 _UNITS = {"a_over_h": "(elements per contact half-width)", "rtol": "(relative p0 error)"}
 
@@ -64,7 +68,7 @@ class SweepSettings:
     rtol_on : tuple of str
         The quantities ``rtol`` bounds (:data:`femcam.sweep.options.RTOL_ON`).
     sources : dict
-        Parameter -> ``"argument"`` (a keyword or flag), ``"scene"`` or ``"default"``.
+        Parameter -> ``"argument"`` (an option or flag), ``"scene"`` or ``"default"``.
     from_scene : tuple of str
         ``[table] key = value`` of each setting taken from the scene, in :data:`SETTINGS` order.
     """
@@ -112,7 +116,7 @@ def resolve_settings(scene, given: Mapping, names: Mapping | None = None) -> Swe
     Parameters
     ----------
     scene : femcam.scene.Scene
-        The scene (its ``fe`` and ``sweep`` tables, scene units).
+        The scene (its ``study``: :class:`femcam.scene.study.StudySettings`).
     given : mapping
         Parameter -> value as given, None (or absent) where not given: the keys of
         :data:`SETTINGS` (``angles`` in rad, ``rtol`` a fraction) and ``angles_deg``
@@ -134,11 +138,15 @@ def resolve_settings(scene, given: Mapping, names: Mapping | None = None) -> Swe
     Examples
     --------
     >>> from types import SimpleNamespace
-    >>> s = resolve_settings(SimpleNamespace(fe={"a_over_h": 20.0}, sweep={}), {"method": "hertz"})
+    >>> from femcam.scene.study import StudySettings
+    >>> scene = SimpleNamespace(study=StudySettings(a_over_h=20.0))
+    >>> s = resolve_settings(scene, {"method": "hertz"})
     >>> s.a_over_h, s.method, s.sources["a_over_h"], s.sources["method"], s.sources["tolerance"]
     (20.0, 'hertz', 'scene', 'argument', 'default')
     """
-    tabs = {t: dict(getattr(scene, t, None) or {}) for t in ("fe", "sweep")}
+    study = getattr(scene, "study", None)
+    fixed = study.given() if study is not None else {}   # field -> value (SI, rtol a fraction)
+    fixed = {_FIELD.get(p, p): v for p, v in fixed.items()}
     given = {k: v for k, v in given.items() if v is not None}
     if "angles_deg" in given and "angles" not in given:
         given["angles"] = str(given.pop("angles_deg"))
@@ -147,21 +155,19 @@ def resolve_settings(scene, given: Mapping, names: Mapping | None = None) -> Swe
     def name(p):
         return (names or {}).get(p, (p, 1, _UNITS.get(p, "")))
 
-    _mesh_keys(tabs["fe"], given, name)
+    _mesh_keys(fixed, given, name)
     values, sources, used = {}, {}, []
     for p, (table, key, default) in SETTINGS.items():
         if p in given:
             values[p], sources[p] = given[p], "argument"
-        elif key in tabs[table]:
-            values[p], sources[p] = tabs[table][key], "scene"
-            used.append(f"[{table}] {key} = {_shown(tabs[table][key])}")
+        elif p in fixed:
+            values[p], sources[p] = fixed[p], "scene"
+            used.append(f"[{table}] {key} = {_shown(fixed[p] * 100 if p == 'rtol' else fixed[p])}")
         else:
             values[p], sources[p] = default, "default"
-    if sources["rtol"] == "scene":
-        values["rtol"] = float(values["rtol"]) / 100.0   # scene percent -> fraction
-        if values["method"] == "hertz":    # the scene's rtol is for its FE runs
-            values["rtol"], sources["rtol"] = None, "default"
-            used.pop()
+    if sources["rtol"] == "scene" and values["method"] == "hertz":   # the scene's rtol is for its FE runs
+        values["rtol"], sources["rtol"] = None, "default"
+        used.pop()
     spec = values["angles"] if isinstance(values["angles"], str) else None
     label = {"argument": name("angles_deg")[0], "scene": "[sweep] angles_deg"}.get(sources["angles"],
                                                                                   "angles_deg")
@@ -179,7 +185,7 @@ def resolve_settings(scene, given: Mapping, names: Mapping | None = None) -> Swe
 
 def _mesh_keys(fe: dict, given: dict, name) -> None:
     """``rtol`` against ``a_over_h``: both given, or both in the scene, refused; one given drops
-    the scene's other key from ``fe`` (in place)."""
+    the scene's other key from ``fe`` (the scene's settings, in place)."""
     if "rtol" in given and "a_over_h" in given:
         (nr, fr, ur), (na, fa, _) = name("rtol"), name("a_over_h")
         r = _validate.number("rtol", given["rtol"], _UNITS["rtol"]) * fr
@@ -187,11 +193,11 @@ def _mesh_keys(fe: dict, given: dict, name) -> None:
         raise _validate.fail(nr, r, ur, f"cannot be given with {na} = {a:g}: {nr} chooses the mesh "
                              "(a_over_h); give one")
     if "rtol" in given or "a_over_h" in given:
-        fe.pop("a_over_h" if "rtol" in given else "rtol_pct", None)  # one given beats the other key
-    if "rtol_pct" in fe and "a_over_h" in fe:
-        raise _validate.fail("[fe] rtol_pct", fe["rtol_pct"], "%", "cannot be given with [fe] a_over_h "
-                             "in the same scene: rtol_pct chooses the mesh; give one of them (or "
-                             "override one: a_over_h / rtol, --mesh-size / --rtol-pct)")
+        fe.pop("a_over_h" if "rtol" in given else "rtol", None)  # one given beats the other key
+    if "rtol" in fe and "a_over_h" in fe:
+        raise _validate.fail("[fe] rtol_pct", fe["rtol"] * 100, "%", "cannot be given with "
+                             "[fe] a_over_h in the same scene: rtol_pct chooses the mesh; give one of "
+                             "them (or override one: a_over_h / rtol, --a-over-h / --rtol-pct)")
 
 
 def _angles(value, label: str) -> np.ndarray:

@@ -36,7 +36,7 @@ import numpy as np
 from .. import _validate
 from ..errors import FemcamError
 from .cache import ModelCache, default_cache
-from .options import ContactParams, SweepOptions
+from .options import ContactParams, ResolvedOptions
 from .plan import contact_rows, curvature_ratio, family_reference, hertz_half_width, initial_groups
 from .realcam import traction_args
 
@@ -232,7 +232,7 @@ def _same_case(rho, a, rho_ref, a_ref) -> bool:
     return same_rho and abs(a / a_ref - 1.0) <= 1e-12
 
 
-def verify_families(F, rho, theta, cp: ContactParams, options: SweepOptions,
+def verify_families(F, rho, theta, cp: ContactParams, options: ResolvedOptions,
                     contact: np.ndarray, n_checks: int = N_CHECKS, *,
                     cache: ModelCache | None = None, traction=None, prefetch=None):
     """Plan the families and verify the reuse error against ``options.tolerance``.
@@ -251,7 +251,7 @@ def verify_families(F, rho, theta, cp: ContactParams, options: SweepOptions,
         Contact force (N), cam radius of curvature (m) and cam angle (rad) of every angle.
     cp : ContactParams
         The scene's contact parameters.
-    options : SweepOptions
+    options : ResolvedOptions
         ``tolerance`` and ``a_over_h``.
     contact : ndarray of bool, shape (n,)
         Angles with contact (and a roller that fits).
@@ -319,7 +319,7 @@ class _Case:
 
     cache: ModelCache
     cp: ContactParams
-    options: SweepOptions
+    options: ResolvedOptions
     F: np.ndarray
     rho: np.ndarray
     theta: np.ndarray

@@ -313,7 +313,7 @@ def plot_sweep(result, out) -> dict[str, str]:
     ----------
     result : femcam.sweep.SweepResult
         With ``hertz_factors`` and ``surface_profile`` for the Hertz lines and the worst-angle
-        plot (``sweep(..., plots=True)`` computes them).
+        plot (``sweep(scene, SweepOptions(plots=True), RunOptions(out=...))`` computes them).
     out : str or Path
         Output directory.
 
