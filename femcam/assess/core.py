@@ -445,7 +445,7 @@ def omitted_physics(scene) -> tuple[str, ...]:
                  "not in its film, flash temperature or fatigue data (the substrate's are used; flag "
                  "omits_coating), nor in its contact unless that comes from a femcam sweep's FE (the "
                  "coated model); the coating's own stresses are the coating_* and interface_* columns "
-                 "of femcam sweep" for body, c in scene_coatings(scene))
+                 "of femcam sweep" for body, c in scene_coatings(scene.layers))
 
 
 def csv_columns(rows: dict) -> dict:

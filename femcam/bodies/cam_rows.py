@@ -31,6 +31,7 @@ from .. import _validate
 from .._columns import Column
 from ..errors import InputError
 from ..materials import effective_modulus
+from ..scene.bodies import RealBodies
 from .cam_geometry import CamDisk, outline_from_scene
 from .cam_global import CamGlobalModel
 from .cam_model import CamMeshOptions
@@ -46,20 +47,20 @@ CAM_CSV_COLUMNS = {c.si: c for c in (
 )}
 
 
-def has_cam_bore(scene) -> bool:
+def has_cam_bore(bodies: RealBodies) -> bool:
     """True when the scene gives ``[cam] bore_mm`` (the cam disk on its shaft).
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        The scene.
+    bodies : femcam.scene.bodies.RealBodies
+        The scene's real bodies (``Scene.bodies``).
 
     Returns
     -------
     bool
-        Whether the scene's bodies hold a cam bore.
+        Whether the bodies hold a cam on its shaft.
     """
-    return "cam_bore" in (getattr(scene, "bodies", None) or {})
+    return bodies.cam is not None
 
 
 def _cam_yield(scene):
@@ -97,13 +98,15 @@ def disk_from_scene(scene, *, n_outline: int = 720, fit: str | None = None,
     InputError
         No ``Rb`` and no ``[cam] bore_mm``, or a disk that does not fit.
     """
-    g = getattr(scene, "bodies", None) or {}
-    if Rb is None and "cam_bore" not in g:
+    g = scene.bodies.cam
+    if Rb is None and g is None:
         raise InputError("scene has no [cam] bore_mm: the cam is today's local body (no disk model)")
-    Rb = g["cam_bore"] if Rb is None else Rb
-    fit = g.get("shaft_fit", "contact") if fit is None else fit
-    return CamDisk(outline=outline_from_scene(scene, n_outline), Rb=Rb, Rs=Rb - g.get("shaft_clearance", 0.0),
-                   fit=fit, cam=scene.cam, shaft=g.get("shaft", scene.cam), cam_yield=_cam_yield(scene))
+    Rb = g.bore if Rb is None else Rb
+    fit = (g.fit if g is not None else "contact") if fit is None else fit
+    clearance = g.clearance if g is not None else 0.0
+    shaft = g.shaft if g is not None and g.shaft is not None else scene.cam
+    return CamDisk(outline=outline_from_scene(scene, n_outline), Rb=Rb, Rs=Rb - clearance,
+                   fit=fit, cam=scene.cam, shaft=shaft, cam_yield=_cam_yield(scene))
 
 
 def solve_global(model: CamGlobalModel, C: np.ndarray, n: np.ndarray, F: np.ndarray) -> dict:

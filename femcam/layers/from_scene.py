@@ -14,59 +14,61 @@ from ..fe import ContactModel, SolverOptions
 from ..hertz import LineContact
 from ..materials import Material
 from ..mesh import MeshOptions
+from ..scene.layers import CoatingSpec
 from .case import Case
 from .coating import Coating, build_coated_model
 from .interface import layer_rows
 
 
-def scene_coatings(scene) -> tuple[tuple[str, dict], ...]:
-    """The coated bodies of ``scene``: ``(body, coating table)`` pairs (SI values under SI names:
-    ``thickness`` [m], ``E`` [Pa], ...). The one scene test of "is a body coated" used by the
+def scene_coatings(layers) -> tuple[tuple[str, CoatingSpec], ...]:
+    """The coated bodies of a scene: ``(body, coating)`` pairs (SI: ``thickness`` [m], ``E``
+    [Pa], ...). The one scene test of "is a body coated" used by the
     sweep's headline flag (:func:`femcam.sweep.headline.omitted_physics`) and by the assessment
     (:func:`femcam.assess.assess_rows`, ``omits_coating``), whose contact models are homogeneous.
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A loaded scene.
+    layers : tuple of femcam.scene.layers.BodyLayers
+        The scene's coatings and cases (``Scene.layers``).
 
     Returns
     -------
-    tuple of (str, dict)
+    tuple of (str, femcam.scene.layers.CoatingSpec)
         One pair per ``[materials.<body>.coating]`` table (empty for an uncoated scene).
     """
-    return tuple((body, tabs["coating"]) for body, tabs in (getattr(scene, "layers", None) or {}).items()
-                 if "coating" in tabs)
+    return tuple((b.body, b.coating) for b in layers if b.coating is not None)
 
 
-def coating_phrase(body: str, c: dict) -> str:
+def coating_phrase(body: str, c: CoatingSpec) -> str:
     """``"the roller's 2.5 um coating (E 170 GPa)"``: a coating as the flags' sentences name it.
 
     Parameters
     ----------
     body : str
         The coated body (``cam`` or ``roller``).
-    c : dict
-        Its coating table (SI: ``thickness`` [m], ``E`` [Pa]).
+    c : femcam.scene.layers.CoatingSpec
+        Its coating (SI: ``thickness`` [m], ``E`` [Pa]).
 
     Returns
     -------
     str
         The phrase (thickness in um, E in GPa).
     """
-    return f"the {body}'s {c['thickness'] * 1e6:g} um coating (E {c['E'] / 1e9:g} GPa)"
+    return f"the {body}'s {c.thickness * 1e6:g} um coating (E {c.E / 1e9:g} GPa)"
 
 
-def scene_layers(scene) -> dict:
-    """Coating and case of ``scene`` from its ``[materials.<body>.coating|case]`` tables.
+def scene_layers(layers, follower) -> dict:
+    """Coating and case of a scene from its ``[materials.<body>.coating|case]`` records.
 
     One coated body per model (the FE mesh has one coating band); a case must be shallower than
     half the body size (cam: base radius; roller: roller radius).
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A loaded scene (``scene.layers`` holds SI values under SI names).
+    layers : tuple of femcam.scene.layers.BodyLayers
+        The scene's coatings and cases (``Scene.layers``, SI).
+    follower : femcam.profile follower
+        The scene's follower (its ``Rb`` and, for a roller, ``Rr``; m).
 
     Returns
     -------
@@ -79,25 +81,20 @@ def scene_layers(scene) -> dict:
         More than one coated body, or a case too deep for its body.
     """
     out = {"coating": None, "case": None}
-    coated = [b for b, t in scene.layers.items() if "coating" in t]
+    coated = [body for body, _ in scene_coatings(layers)]
     if len(coated) > 1:
         raise InputError(f"coatings on {coated}: femcam models one coated body per scene")
-    for body, tabs in scene.layers.items():
-        if "coating" in tabs:
-            c = tabs["coating"]
-            out["coating"] = (body, Coating(
-                thickness=c["thickness"], material=Material(E=c["E"], nu=c["nu"],
-                                                            name=c.get("name", "coating")),
-                interface_shear_strength=c.get("interface_shear_strength"),
-                hardness=c.get("hardness")))
-        if "case" in tabs:
-            c = tabs["case"]
-            case = Case(depth=c["depth"], surface_hardness=c.get("surface_hardness"),
-                        core_hardness=c.get("core_hardness"), surface_yield=c.get("surface_yield"),
-                        core_yield=c.get("core_yield"), law=c.get("hardness_law", "exponential"))
-            size = scene.follower.Rb if body == "cam" else getattr(scene.follower, "Rr", math.inf)
-            case.check_body(size, body)
-            out["case"] = (body, case)
+    for b in layers:
+        if (c := b.coating) is not None:
+            out["coating"] = (b.body, Coating(
+                thickness=c.thickness, material=Material(E=c.E, nu=c.nu, name=c.name),
+                interface_shear_strength=c.interface_shear_strength, hardness=c.hardness))
+        if (c := b.case) is not None:
+            case = Case(depth=c.depth, surface_hardness=c.surface_hardness,
+                        core_hardness=c.core_hardness, surface_yield=c.surface_yield,
+                        core_yield=c.core_yield, law=c.hardness_law)
+            case.check_body(follower.Rb if b.body == "cam" else getattr(follower, "Rr", math.inf), b.body)
+            out["case"] = (b.body, case)
     return out
 
 
@@ -206,7 +203,7 @@ def scene_layer_rows(scene, theta, *, a_over_h: float = 10.0) -> dict:
     """
     if not hasattr(scene.follower, "Rr"):
         raise InputError("scene_layer_rows: the FE contact model needs a roller follower")
-    lay = scene_layers(scene)
+    lay = scene_layers(scene.layers, scene.follower)
     if lay["coating"] is None and lay["case"] is None:
         raise InputError(f"scene {scene.name!r} has no [materials.<body>.coating] or .case table")
     theta = _validate.finite_array("theta", theta, "rad").ravel()

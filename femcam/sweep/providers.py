@@ -74,7 +74,7 @@ def ring_model(scene):
     def build():
         st = scene.analyse(_GRID)
         Fc = np.where(np.asarray(st.Fc) > 0, st.Fc, np.nan)
-        return build_for(scene, Fc, np.asarray(st.rho, float))
+        return build_for(scene.bodies.roller, scene.pair, Fc, np.asarray(st.rho, float))
     return _cached("ring", scene, build)
 
 
@@ -518,7 +518,7 @@ def layers_chunk(task, rows, solved) -> dict:
     contact = _contact_rows(rows)
     head = [i for i in np.flatnonzero(contact) if i in solved and status[i] == "ok"]
     if head:
-        lay = scene_layers(task.scene)
+        lay = scene_layers(task.scene.layers, task.scene.follower)
         kw = dict(coating=lay["coating"][1] if lay["coating"] else None,
                   coat_body=lay["coating"][0] if lay["coating"] else "roller",
                   case=lay["case"][1] if lay["case"] else None,
@@ -598,7 +598,7 @@ def coating_wear_chunk(task, rows) -> dict:
 
 def has_support(scene) -> bool:
     """True when the roller runs on a pin or needles (``[follower] roller_support`` is not
-    ``solid``; ``scene.bodies["support"]``).
+    ``solid``; ``scene.bodies.roller``).
 
     Parameters
     ----------
@@ -610,7 +610,7 @@ def has_support(scene) -> bool:
     bool
         The ``bodies`` provider applies.
     """
-    return (getattr(scene, "bodies", None) or {}).get("support", "solid") != "solid"
+    return scene.bodies.roller is not None
 
 
 MPA = 1e-6
