@@ -29,7 +29,7 @@ from femcam.scene import load_scene
 
 HERE = Path(__file__).parent if "__file__" in globals() else Path.cwd()  # sphinx-gallery: cwd
 sc = load_scene(HERE / "seed002_coated.toml")
-layers = scene_layers(sc)
+layers = scene_layers(sc.layers, sc.follower)
 coat_body, coating = layers["coating"]
 case_body, case = layers["case"]
 print(f"coating on the {coat_body}: {coating.material.name}, t = {coating.thickness * 1e6:.1f} um, "

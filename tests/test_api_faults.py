@@ -258,14 +258,16 @@ CASES: dict[str, Case] = {
                                            {"Ro": POS, "Ri": POS, "Rp": NONNEG, "c": NONNEG,
                                             "Z": INT_NONNEG, "r_n": NONNEG}),
     "femcam.bodies.build_for": Case(
-        lazy(lambda: dict(scene=scene("seed002_needle_roller"), Fc=1500.0, rho=0.02)),
+        lazy(lambda: dict(support=scene("seed002_needle_roller").bodies.roller,
+                          pair=scene("seed002_needle_roller").pair, Fc=1500.0, rho=0.02)),
         {"Fc": MISSING, "rho": RADIUS}, slow=True),
     "femcam.bodies.cam_disk_rows": Case(
         lazy(lambda: dict(scene=scene("seed002_cam_on_shaft"), theta=TH[:1], Fc=F12[:1])),
         {"theta": REAL, "Fc": MISSING}, slow=True),
     "femcam.bodies.needle_approach": Case(kw(Q=150e3, length=0.01), {"Q": REAL, "length": POS}),
     "femcam.bodies.ring_rows": Case(
-        lazy(lambda: dict(scene=scene("seed002_needle_roller"), theta=TH[:1], Fc=F12[:1],
+        lazy(lambda: dict(support=scene("seed002_needle_roller").bodies.roller,
+                          pair=scene("seed002_needle_roller").pair, theta=TH[:1], Fc=F12[:1],
                           rho=np.full(1, 0.02))),
         {"theta": REAL, "Fc": MISSING, "rho": RADIUS}, slow=True),
     "femcam.bodies.solve_cam_disk": Case(
@@ -746,6 +748,10 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.io.write_table", "femcam.io.atomic_write_path", "femcam.io.write_arrays",
         "femcam.io.write_ring_vtu", "femcam.io.write_cam_vtu", "femcam.io.write_msh")},
     "femcam.mesh.mesh_body": "takes an open gmsh session; its numbers are checked by body_layout",
+    **{n: "a typed record the checked scene loader builds (load_scene checks its values)" for n in (
+        "femcam.scene.BodyLayers", "femcam.scene.CamShaft", "femcam.scene.CaseSpec",
+        "femcam.scene.CoatingSpec", "femcam.scene.ContactPair", "femcam.scene.FiniteLength",
+        "femcam.scene.RealBodies", "femcam.scene.RollerSupport")},
     "femcam.scene.roller_support_problems": "the scene's support check (h4-scene's femcam/scene); the "
                                             "API entry with argument checks is bodies.bearing_problems",
     "femcam.mesh.gmsh_session": "a context manager named by a string",

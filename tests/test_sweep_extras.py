@@ -144,9 +144,10 @@ def test_needle_roller_sweep_writes_ring_results(tmp_path):
     r, cols = _sweep_csv(scene, th, tmp_path)
     grid = np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False)
     g = scene.analyse(grid)
-    model = build_for(scene, np.where(g.Fc > 0, g.Fc, np.nan), g.rho)   # graded as the provider says
+    model = build_for(scene.bodies.roller, scene.pair, np.where(g.Fc > 0, g.Fc, np.nan),
+                      g.rho)   # graded as the provider says
     st = scene.analyse(th)
-    direct = ring_rows(scene, th, st.Fc, st.rho, model=model)
+    direct = ring_rows(scene.bodies.roller, scene.pair, th, st.Fc, st.rho, model=model)
     side = {c.csv for c in providers.RING}
     for k, c in RING_COLUMNS.items():
         csv = c.csv

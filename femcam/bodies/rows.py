@@ -2,8 +2,9 @@
 
 ``ring_rows(support, pair, theta, Fc, rho)`` builds ONE :class:`~femcam.bodies.model.RingModel`
 for the scene's roller support (the ring is axisymmetric and the model is graded for the
-largest load) and solves every angle on it. It returns a dict of SI arrays; :data:`CSV_COLUMNS` gives the CSV name (unit in
-the name) and the factor from SI for each key. Angles where ``Fc <= 0`` (lift-off) give NaN.
+largest load) and solves every angle on it. It returns a dict of SI arrays; :data:`CSV_COLUMNS`
+gives the CSV name (unit in the name) and the factor from SI for each key. Angles where
+``Fc <= 0`` (lift-off) give NaN.
 
 For needles every angle is solved at the two extreme cage positions (``cage = 0``: a needle on
 the load line; ``cage = pi / Z``: the load line between two needles); the bore stress and the

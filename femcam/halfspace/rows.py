@@ -110,8 +110,9 @@ def strip_for_scene(scene, *, nx: int = 64, ny: int = 128, tol: float = 1e-5) ->
         st = scene.analyse(np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False))
         i = int(np.argmax(st.Fc))
         Q, Rd = float(st.Fc[i]), float(1.0 / (1.0 / st.rho[i] + 1.0 / Rr))
-    return FiniteLengthContact(prof, cam_width=fl.cam_width if fl is not None else scene.length, E_star=E_star,
-                               design_load=Q, design_radius=Rd, nx=nx, ny=ny, tol=tol)
+    cam_width = scene.length if fl is None else fl.cam_width
+    return FiniteLengthContact(prof, cam_width=cam_width, E_star=E_star, design_load=Q,
+                               design_radius=Rd, nx=nx, ny=ny, tol=tol)
 
 
 def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float = 1e-5,
