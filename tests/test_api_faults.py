@@ -405,8 +405,10 @@ CASES: dict[str, Case] = {
         {"F": NONNEG, "rho": RADIUS, "mu": NONNEG}, slow=True,
         fault_base=lazy(lambda: dict(model=bare(object), F=1500.0, rho=0.02, mu=0.1))),
     "femcam.layers.scene_layer_rows": Case(
-        lazy(lambda: dict(scene=scene("seed002_coated"), theta=TH[:1])),
-        {"theta": REAL, "a_over_h": POS}, slow=True),
+        lazy(lambda: dict(layers=scene("seed002_coated").layers, pair=scene("seed002_coated").pair,
+                          follower=scene("seed002_coated").follower, theta=TH[:1], Fc=F12[:1],
+                          rho=np.full(1, 0.02))),
+        {"theta": REAL, "Fc": MISSING, "rho": RADIUS, "a_over_h": POS}, slow=True),
     "femcam.layers.shear_strength_from_hardness": Case(kw(H=6e9), {"H": POS}),
     # femcam.mesh
     "femcam.mesh.body_layout": Case(

@@ -185,7 +185,8 @@ def test_layer_columns_equal_direct_call(tmp_path):
     scene = load_scene(EX + "seed002_coated.toml")
     th = np.radians([0.0, 130.0])
     r, cols = _sweep_csv(scene, th, tmp_path)
-    direct = scene_layer_rows(scene, th, a_over_h=10.0)
+    st = scene.analyse(th)
+    direct = scene_layer_rows(scene.layers, scene.pair, scene.follower, th, st.Fc, st.rho, a_over_h=10.0)
     # method hertz: no FE solve answered the rows, so the layer columns come from the layered
     # model of each angle (method fe takes them from the headline solve: tests/test_sweep_coated.py)
     assert set(cols["layer_source"]) == {"layer_model"}

@@ -24,6 +24,9 @@ class ContactPair:
         Plane model (``[contact] plane``).
     mu : float
         Friction coefficient (-; ``[contact] friction``).
+    sliding : {"+x", "-x"} or None
+        Direction of the friction traction on the cam (``[contact] sliding``); None: not given
+        (``+x`` where a direction is needed).
     """
 
     cam: Material
@@ -31,3 +34,4 @@ class ContactPair:
     length: float
     plane: str = "strain"
     mu: float = 0.0
+    sliding: str | None = None

@@ -216,7 +216,7 @@ class Scene:
     def pair(self) -> ContactPair:
         """The contact pair (materials, length in m, plane, friction) the physics packages take."""
         return ContactPair(cam=self.cam, roller=self.roller, length=self.length, plane=self.plane,
-                           mu=self.mu)
+                           mu=self.mu, sliding=self.sliding)
 
     @cached_property
     def _dense_undercut(self) -> tuple:

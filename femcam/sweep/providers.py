@@ -531,7 +531,9 @@ def layers_chunk(task, rows, solved) -> dict:
             _layer_estimate(task, rows, i, out)
     idx = np.setdiff1d(np.flatnonzero(contact), np.asarray(head, int))
     if idx.size:
-        r = scene_layer_rows(task.scene, task.theta[idx], a_over_h=task.options.a_over_h)
+        st = task.scene.analyse(task.theta[idx])
+        r = scene_layer_rows(task.scene.layers, task.scene.pair, task.scene.follower, task.theta[idx],
+                             st.Fc, st.rho, a_over_h=task.options.a_over_h)
         for c in LAYERS:
             if c.csv in r:
                 out[c.si][idx] = np.asarray(r[c.csv], float) / c.factor
