@@ -32,7 +32,8 @@ from .._columns import Column
 from ..errors import InputError
 from ..materials import effective_modulus
 from ..scene.bodies import RealBodies
-from .cam_geometry import CamDisk, outline_from_scene
+from ..scene.pair import ContactPair
+from .cam_geometry import CamDisk, outline_from_state, require_roller
 from .cam_global import CamGlobalModel
 from .cam_model import CamMeshOptions
 from .cam_solve import shaft_arc
@@ -105,8 +106,15 @@ def disk_from_scene(scene, *, n_outline: int = 720, fit: str | None = None,
     fit = (g.fit if g is not None else "contact") if fit is None else fit
     clearance = g.clearance if g is not None else 0.0
     shaft = g.shaft if g is not None and g.shaft is not None else scene.cam
-    return CamDisk(outline=outline_from_scene(scene, n_outline), Rb=Rb, Rs=Rb - clearance,
+    return CamDisk(outline=_outline(scene, n_outline), Rb=Rb, Rs=Rb - clearance,
                    fit=fit, cam=scene.cam, shaft=shaft, cam_yield=_cam_yield(scene))
+
+
+def _outline(scene, n: int) -> np.ndarray:
+    """The scene's cam outline at ``n`` equally spaced angles over one revolution (m; a roller
+    follower only)."""
+    require_roller(scene.follower)
+    return outline_from_state(scene.analyse(np.linspace(0.0, 2 * math.pi, int(n), endpoint=False)))
 
 
 def solve_global(model: CamGlobalModel, C: np.ndarray, n: np.ndarray, F: np.ndarray) -> dict:
@@ -200,7 +208,7 @@ def cam_disk_rows(scene, theta, Fc, *, model: CamGlobalModel | None = None,
     st = scene.analyse(theta[on]) if on.size else None
     disk = model.disk if model is not None else disk_from_scene(scene)
     if on.size:
-        check_web_against_contact(disk, scene, Fc[on], st.rho)
+        check_web_against_contact(disk, scene.pair, scene.follower.Rr, Fc[on], st.rho)
     model = model or CamGlobalModel.build(disk=disk, length=scene.length, cam_mesh=cam_mesh,
                                           plane=scene.plane)
     out = {k: np.full(theta.shape, np.nan) for k in CAM_CSV_COLUMNS}
@@ -252,7 +260,7 @@ def yield_flags(disk: CamDisk, hoop_max, hoop_angle) -> np.ndarray:
 WEB_OVER_A_MIN = 10.0
 
 
-def check_web_against_contact(disk: CamDisk, scene, Fc, rho) -> None:
+def check_web_against_contact(disk: CamDisk, pair: ContactPair, Rr: float, Fc, rho) -> None:
     """Refuse a web thinner than :data:`WEB_OVER_A_MIN` Hertz half-widths (Johnson 1985 eq. 4.45;
     ``a`` of the largest contact over the angles) with the numbers.
 
@@ -260,8 +268,10 @@ def check_web_against_contact(disk: CamDisk, scene, Fc, rho) -> None:
     ----------
     disk : CamDisk
         The cam disk (its web).
-    scene : femcam.scene.Scene
-        The scene (roller radius, materials, face width, plane).
+    pair : femcam.scene.pair.ContactPair
+        The contact pair (``Scene.pair``: materials, face width, plane).
+    Rr : float
+        Roller radius [m].
     Fc : ndarray, shape (k,)
         Contact forces [N], > 0.
     rho : ndarray, shape (k,)
@@ -272,10 +282,9 @@ def check_web_against_contact(disk: CamDisk, scene, Fc, rho) -> None:
     InputError
         ``r_min - Rb < WEB_OVER_A_MIN * a_max`` (named by ``cam.bore_mm``).
     """
-    Rr = scene.follower.Rr
     inv_R = 1.0 / Rr + np.where(np.isinf(rho), 0.0, 1.0 / np.where(np.isinf(rho), 1.0, rho))
-    Es = effective_modulus(scene.cam, scene.roller, scene.plane)
-    a = np.sqrt(4 * np.asarray(Fc) / scene.length / (math.pi * Es * np.maximum(inv_R, 1e-300)))
+    Es = effective_modulus(pair.cam, pair.roller, pair.plane)
+    a = np.sqrt(4 * np.asarray(Fc) / pair.length / (math.pi * Es * np.maximum(inv_R, 1e-300)))
     a_max = float(np.nanmax(np.where(inv_R > 0, a, np.nan), initial=0.0))
     if disk.web < WEB_OVER_A_MIN * a_max:
         raise InputError(f"cam.bore_mm = {disk.Rb * 1e3:g} mm: the web r_min - Rb = {disk.web * 1e3:.3g} mm "

@@ -481,7 +481,7 @@ def cam_disk_vtus(task, model, Fc) -> None:
         if not (np.isfinite(Fc[i]) and Fc[i] > 0):
             path.unlink(missing_ok=True)
             continue
-        C, n, _, _ = contact_frame(task.scene, float(task.theta[i]))
+        C, n, _, _ = contact_frame(task.scene.analyse(task.theta[i:i + 1]))
         write_global_cam_vtu(path, model, C, n, float(Fc[i]), theta=float(task.theta[i]))
 
 
