@@ -347,6 +347,9 @@ CASES: dict[str, Case] = {
     "femcam.halfspace.finite_length_rows": Case(
         lazy(lambda: dict(scene=scene("seed002_crowned"), theta=TH[:2], nx=16, ny=16)),
         {"theta": REAL, "nx": INT_POS, "ny": INT_POS, "tol": POS}),
+    "femcam.halfspace.has_finite_length": Case(
+        lazy(lambda: dict(finite=scene("seed002_crowned").finite_length, length=0.01)),
+        {"length": POS}),
     "femcam.halfspace.strip_for_scene": Case(
         lazy(lambda: dict(scene=scene("seed002_crowned"), nx=16, ny=16)),
         {"nx": INT_POS, "ny": INT_POS, "tol": POS}),
@@ -734,7 +737,7 @@ NOT_AN_INPUT: dict[str, str] = {
     **{n: RECORDS for n in (
         "femcam.effective_modulus", "femcam.assess.assessment_inputs", "femcam.assess.sweep_table",
         "femcam.assess.csv_columns", "femcam.assess.worst_angles",
-        "femcam.bodies.to_csv_columns", "femcam.halfspace.has_finite_length",
+        "femcam.bodies.to_csv_columns",
         "femcam.halfspace.to_csv_columns", "femcam.kinematics.CamProgram",
         "femcam.kinematics.junction_report", "femcam.layers.interface_stress",
         "femcam.layers.result_layer_row",

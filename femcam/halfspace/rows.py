@@ -230,6 +230,7 @@ def has_finite_length(finite, length: float) -> bool:
         The finite-length (half-space) contact applies: the sweep's ``halfspace`` provider and
         the wear map's most loaded slice.
     """
+    length = _validate.positive("length", length, "m")
     if finite is None:
         return False
     return bool(finite.shaped) or any(w != length for w in (finite.roller_width, finite.cam_width))
