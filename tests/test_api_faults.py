@@ -347,9 +347,6 @@ CASES: dict[str, Case] = {
     "femcam.halfspace.finite_length_rows": Case(
         lazy(lambda: dict(scene=scene("seed002_crowned"), theta=TH[:2], nx=16, ny=16)),
         {"theta": REAL, "nx": INT_POS, "ny": INT_POS, "tol": POS}),
-    "femcam.halfspace.has_finite_length": Case(
-        lazy(lambda: dict(finite=scene("seed002_crowned").finite_length, length=0.01)),
-        {"length": POS}),
     "femcam.halfspace.strip_for_scene": Case(
         lazy(lambda: dict(scene=scene("seed002_crowned"), nx=16, ny=16)),
         {"nx": INT_POS, "ny": INT_POS, "tol": POS}),
@@ -757,6 +754,8 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.scene.BodyLayers", "femcam.scene.CamShaft", "femcam.scene.CaseSpec",
         "femcam.scene.CoatingSpec", "femcam.scene.ContactPair", "femcam.scene.FiniteLength",
         "femcam.scene.RealBodies", "femcam.scene.RollerSupport")},
+    "femcam.halfspace.has_finite_length": "takes the scene's FiniteLength record (None: not given) "
+                                          "and its contact length, both made by the checked loader",
     "femcam.scene.roller_support_problems": "the scene's support check (h4-scene's femcam/scene); the "
                                             "API entry with argument checks is bodies.bearing_problems",
     "femcam.mesh.gmsh_session": "a context manager named by a string",
