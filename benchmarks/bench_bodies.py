@@ -97,17 +97,17 @@ def support_table(n_angles: int) -> list[tuple]:
     rs = solve_contact(st.Fc[k], st.rho[k], 0.01, sc.cam, sc.roller, sc.length)
     out.append(("solid (femcam.fe)", rs.n_dofs, rs.timings, time.perf_counter() - t0, math.nan, math.nan,
                 f"p0 vs Hertz {abs(rs.p0 / rs.hertz_p0 - 1):.1e}"))
-    pin_bodies = dict(sc.bodies, support="pin", Rp=sc.bodies["Ri"] - 10e-6, c=10e-6, Z=0, r_n=0.0)
-    for label, scene in (("pin, c = 10 um", dataclasses.replace(sc, bodies=pin_bodies)),
-                         ("needles, Z = 18", sc)):
+    needles = sc.bodies.roller
+    pin = dataclasses.replace(needles, support="pin", Rp=needles.Ri - 10e-6, c=10e-6, Z=0, r_n=0.0)
+    for label, support in (("pin, c = 10 um", pin), ("needles, Z = 18", needles)):
         t0 = time.perf_counter()
-        m = build_for(scene, st.Fc, st.rho)
+        m = build_for(support, sc.pair, st.Fc, st.rho)
         r = solve_ring(m, F=st.Fc[k], rho=st.rho[k])
         t_cold = time.perf_counter() - t0
         t1 = time.perf_counter()
-        rows = ring_rows(scene, theta, st.Fc, st.rho, model=m)
+        rows = ring_rows(support, sc.pair, theta, st.Fc, st.rho, model=m)
         t_sweep = time.perf_counter() - t1
-        solves = n_angles * (2 if scene.bodies["support"] == "needles" else 1)
+        solves = n_angles * (2 if support.support == "needles" else 1)
         out.append((label, m.n_dofs, m.timings, t_cold, t_sweep, t_sweep / solves,
                     f"p0 vs Hertz {abs(r.p0 / r.hertz_p0 - 1):.1e}; bore max "
                     f"{np.nanmax(rows['hoop_max']) / 1e6:.0f} MPa"))

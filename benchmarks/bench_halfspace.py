@@ -33,6 +33,7 @@ from femcam.halfspace.crown import RollerProfile, log_drop
 from femcam.halfspace.rows import finite_length_rows, strip_for_scene
 from femcam.halfspace.strip import FiniteLengthContact
 from femcam.scene import load_scene
+from femcam.scene.finite import FiniteLength
 
 ROOT = Path(__file__).resolve().parents[1]
 SCENE = ROOT / "examples" / "seed002_study_model.toml"
@@ -59,10 +60,9 @@ def check() -> dict:
     return {"sphere p0": e_p0, "sphere a": e_a, "mid-length 2D p0": e_2d}
 
 
-def crowned(sc, crown, drop=None):
-    fl = {"crown": crown}
-    if drop is not None:
-        fl["crown_drop"] = drop
+def crowned(sc, crown, drop=None, misalignment=None):
+    fl = FiniteLength(roller_width=sc.length, cam_width=sc.length, crown=crown, crown_drop=drop,
+                      misalignment=misalignment)
     return dataclasses.replace(sc, finite_length=fl)
 
 
@@ -140,8 +140,7 @@ def figures(sc, rows, drop, outdir: Path):
     for c in rows:
         pk = []
         for g in tilts:
-            s2 = crowned(sc, c, drop if c == "circular" else None)
-            s2.finite_length["misalignment"] = math.radians(g)
+            s2 = crowned(sc, c, drop if c == "circular" else None, math.radians(g))
             pk.append(strip_for_scene(s2).solve(F, R).p_max)
         peaks[c] = np.array(pk)
     plot_crown_comparison(res["none"].y, {c: r.p_line for c, r in res.items()}, tilts, peaks,

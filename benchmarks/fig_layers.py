@@ -30,7 +30,8 @@ def angles_figure(step_deg: float, a_over_h: float):
     sc = load_scene(ROOT / "examples" / "seed002_coated.toml")
     th = np.radians(np.arange(0.0, 360.0, step_deg))
     t0 = time.perf_counter()
-    r = scene_layer_rows(sc, th, a_over_h=a_over_h)
+    st = sc.analyse(th)
+    r = scene_layer_rows(sc.layers, sc.pair, sc.follower, th, st.Fc, st.rho, a_over_h=a_over_h)
     dt = time.perf_counter() - t0
     print(f"{th.size} angles, {r['models']} models, {dt:.1f} s, load {os.getloadavg()[0]:.2f}")
     i = np.nanargmax(r["interface_tau_max_MPa"])

@@ -40,8 +40,8 @@ def main() -> int:
     F, rho = float(st.Fc[k]), float(st.rho[k])
     print(f"peak cam force {F:.1f} N at theta = {math.degrees(theta[k]):.0f} deg, rho = {rho * 1e3:.2f} mm; "
           f"load avg {os.getloadavg()[0]:.2f}")
-    m = build_for(sc, st.Fc, st.rho)
-    r = solve_ring(m, F=F, rho=rho, cage=math.pi / sc.bodies["Z"])
+    m = build_for(sc.bodies.roller, sc.pair, st.Fc, st.rho)
+    r = solve_ring(m, F=F, rho=rho, cage=math.pi / sc.bodies.roller.Z)
     print(f"needle roller, load between needles: bore hoop max {r.hoop_max / 1e6:.1f} MPa at "
           f"{math.degrees(r.hoop_theta) + 90:.1f} deg from the load line; Q_max {r.needle_Q_max:.0f} N")
     with tempfile.TemporaryDirectory() as d:
@@ -52,7 +52,7 @@ def main() -> int:
     studies = {}
     for label, support in (("needles (r_n = 1 mm, full complement)", "needles"), ("pin, c = 10 um", "pin")):
         s = wall_study(Ro=0.01, walls=walls, support=support, F=F, rho=rho, length=sc.length, cam=sc.cam,
-                       ring=sc.roller, pin=sc.bodies["pin"], c=10e-6)
+                       ring=sc.roller, pin=sc.bodies.roller.pin, c=10e-6)
         studies[label] = s
         print(f"\n{label}\n| wall (mm) | bore hoop max (MPa) | p0 vs solid (%) | a vs solid (%) | "
               "Q_max (N) | DOFs |\n|---|---|---|---|---|---|")

@@ -30,7 +30,7 @@ HERE = Path(__file__).parent if "__file__" in globals() else Path.cwd()  # sphin
 sc = load_scene(HERE / "seed002_needle_roller.toml")
 theta = np.radians(np.arange(0.0, 360.0, 30.0))
 st = sc.analyse(theta)                      # contact force Fc (N) and cam radius rho (m)
-model = build_for(sc, st.Fc, st.rho)
+model = build_for(sc.bodies.roller, sc.pair, st.Fc, st.rho)
 i = int(np.argmax(st.Fc))
 F, rho = float(st.Fc[i]), float(st.rho[i])
 Z = model.bearing.Z
@@ -87,7 +87,7 @@ for ax in (ax1, ax2):
 # time): the bore hoop maximum and the most loaded needle follow the contact force. In
 # ``femcam sweep`` the same rows answer the headline: ``p0_fe_MPa`` is ``ring_rows``' peak
 # ``p0_peak`` (model ``fe_arc+ring``), and the bore and needle columns sit beside it.
-rows = ring_rows(sc, theta, st.Fc, st.rho, model=model)
+rows = ring_rows(sc.bodies.roller, sc.pair, theta, st.Fc, st.rho, model=model)
 deg = np.degrees(rows["theta"])
 fig, ax = plt.subplots(figsize=(6.4, 3.6), constrained_layout=True)
 ax.plot(deg, rows["hoop_max"] / 1e6, "o-", label="bore hoop max (MPa)")

@@ -29,7 +29,7 @@ from femcam.scene import load_scene
 
 HERE = Path(__file__).parent if "__file__" in globals() else Path.cwd()  # sphinx-gallery: cwd
 sc = load_scene(HERE / "seed002_coated.toml")
-layers = scene_layers(sc)
+layers = scene_layers(sc.layers, sc.follower)
 coat_body, coating = layers["coating"]
 case_body, case = layers["case"]
 print(f"coating on the {coat_body}: {coating.material.name}, t = {coating.thickness * 1e6:.1f} um, "
@@ -99,7 +99,9 @@ for ax in (ax1, ax2):
 # -------------------
 # ``scene_layer_rows`` gives the sweep's layer columns per angle (one FE solve each, on models
 # graded per load bin); every 60 deg keeps it to a few solves.
-rows = scene_layer_rows(sc, np.radians(np.arange(0.0, 360.0, 60.0)))
+theta = np.radians(np.arange(0.0, 360.0, 60.0))
+st = sc.analyse(theta)
+rows = scene_layer_rows(sc.layers, sc.pair, sc.follower, theta, st.Fc, st.rho)
 for k in range(len(rows["theta_deg"])):
     print(f"{rows['theta_deg'][k]:5.0f} deg  F = {rows['F_N'][k]:6.1f} N  interface tau max = "
           f"{rows['interface_tau_max_MPa'][k]:5.1f} MPa (U = {rows['interface_utilisation'][k]:.2f})  "

@@ -268,14 +268,16 @@ CASES: dict[str, Case] = {
                                            {"Ro": POS, "Ri": POS, "Rp": NONNEG, "c": NONNEG,
                                             "Z": INT_NONNEG, "r_n": NONNEG}),
     "femcam.bodies.build_for": Case(
-        lazy(lambda: dict(scene=scene("seed002_needle_roller"), Fc=1500.0, rho=0.02)),
+        lazy(lambda: dict(support=scene("seed002_needle_roller").bodies.roller,
+                          pair=scene("seed002_needle_roller").pair, Fc=1500.0, rho=0.02)),
         {"Fc": MISSING, "rho": RADIUS}, slow=True),
     "femcam.bodies.cam_disk_rows": Case(
         lazy(lambda: dict(scene=scene("seed002_cam_on_shaft"), theta=TH[:1], Fc=F12[:1])),
         {"theta": REAL, "Fc": MISSING}, slow=True),
     "femcam.bodies.needle_approach": Case(kw(Q=150e3, length=0.01), {"Q": REAL, "length": POS}),
     "femcam.bodies.ring_rows": Case(
-        lazy(lambda: dict(scene=scene("seed002_needle_roller"), theta=TH[:1], Fc=F12[:1],
+        lazy(lambda: dict(support=scene("seed002_needle_roller").bodies.roller,
+                          pair=scene("seed002_needle_roller").pair, theta=TH[:1], Fc=F12[:1],
                           rho=np.full(1, 0.02))),
         {"theta": REAL, "Fc": MISSING, "rho": RADIUS}, slow=True),
     "femcam.bodies.solve_cam_disk": Case(
@@ -413,8 +415,10 @@ CASES: dict[str, Case] = {
         {"F": NONNEG, "rho": RADIUS, "mu": NONNEG}, slow=True,
         fault_base=lazy(lambda: dict(model=bare(object), F=1500.0, rho=0.02, mu=0.1))),
     "femcam.layers.scene_layer_rows": Case(
-        lazy(lambda: dict(scene=scene("seed002_coated"), theta=TH[:1])),
-        {"theta": REAL, "a_over_h": POS}, slow=True),
+        lazy(lambda: dict(layers=scene("seed002_coated").layers, pair=scene("seed002_coated").pair,
+                          follower=scene("seed002_coated").follower, theta=TH[:1], Fc=F12[:1],
+                          rho=np.full(1, 0.02))),
+        {"theta": REAL, "Fc": MISSING, "rho": RADIUS, "a_over_h": POS}, slow=True),
     "femcam.layers.shear_strength_from_hardness": Case(kw(H=6e9), {"H": POS}),
     # femcam.mesh
     "femcam.mesh.body_layout": Case(
@@ -773,7 +777,7 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.effective_modulus", "femcam.assess.assessment_inputs", "femcam.assess.sweep_table",
         "femcam.assess.assess", "femcam.assess.assess_rows", "femcam.assess.wear_factor",
         "femcam.assess.csv_columns", "femcam.assess.worst_angles",
-        "femcam.bodies.to_csv_columns", "femcam.halfspace.has_finite_length",
+        "femcam.bodies.to_csv_columns",
         "femcam.halfspace.to_csv_columns", "femcam.kinematics.CamProgram",
         "femcam.kinematics.junction_report", "femcam.layers.interface_stress",
         "femcam.layers.result_layer_row",
@@ -788,6 +792,12 @@ NOT_AN_INPUT: dict[str, str] = {
         "femcam.io.write_table", "femcam.io.atomic_write_path", "femcam.io.write_arrays",
         "femcam.io.write_ring_vtu", "femcam.io.write_cam_vtu", "femcam.io.write_msh")},
     "femcam.mesh.mesh_body": "takes an open gmsh session; its numbers are checked by body_layout",
+    **{n: "a typed record the checked scene loader builds (load_scene checks its values)" for n in (
+        "femcam.scene.BodyLayers", "femcam.scene.CamShaft", "femcam.scene.CaseSpec",
+        "femcam.scene.CoatingSpec", "femcam.scene.ContactPair", "femcam.scene.FiniteLength",
+        "femcam.scene.RealBodies", "femcam.scene.RollerSupport")},
+    "femcam.halfspace.has_finite_length": "takes the scene's FiniteLength record (None: not given) "
+                                          "and its contact length, both made by the checked loader",
     "femcam.scene.roller_support_problems": "the scene's support check (h4-scene's femcam/scene); the "
                                             "API entry with argument checks is bodies.bearing_problems",
     "femcam.mesh.gmsh_session": "a context manager named by a string",

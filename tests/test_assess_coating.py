@@ -41,7 +41,7 @@ def test_the_assessment_of_a_coated_scene_flags_every_contact_row(tmp_path):
     # FE sweep's coated model carries the coating: no flag there)
     assert [f for f, _ in headline_omitted(scene, "hertz")] == ["headline_omits_coating"]
     assert headline_omitted(scene, "fe") == ()
-    res = assess(contact_case(scene, np.radians([0.0, 60.0, 90.0])), coatings=scene_coatings(scene))
+    res = assess(contact_case(scene, np.radians([0.0, 60.0, 90.0])), coatings=scene_coatings(scene.layers))
     on = res.rows["Fc"] > 0
     assert on.all()
     assert all("omits_coating" in f.split(";") for f in res.rows["flags"])
@@ -49,7 +49,8 @@ def test_the_assessment_of_a_coated_scene_flags_every_contact_row(tmp_path):
     assert res.omitted[0].startswith("the assessment treats the coated body as homogeneous: "
                                      "the roller's 2.5 um coating (E 170 GPa)")
     plain_scene = load_scene(EXAMPLE)
-    plain = assess(contact_case(plain_scene, np.radians([0.0, 60.0])), coatings=scene_coatings(plain_scene))
+    plain = assess(contact_case(plain_scene, np.radians([0.0, 60.0])),
+                   coatings=scene_coatings(plain_scene.layers))
     assert plain.omitted == () and not any("omits_coating" in f for f in plain.rows["flags"])
 
 

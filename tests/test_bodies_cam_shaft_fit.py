@@ -29,7 +29,7 @@ def _scene(tmp_path, cam_lines: str, bore: str = BORE):
 
 def test_default_fit_is_unilateral_contact_line_to_line(tmp_path):
     sc = load_scene(EXAMPLE)
-    assert sc.bodies["shaft_fit"] == "contact" and sc.bodies["shaft_clearance"] == 0.0
+    assert sc.bodies.cam.fit == "contact" and sc.bodies.cam.clearance == 0.0
     d = disk_from_scene(sc)
     assert d.fit == "contact" and d.Rs == d.Rb == pytest.approx(6e-3, rel=1e-12)
 

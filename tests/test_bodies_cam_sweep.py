@@ -109,7 +109,7 @@ def test_a_small_bore_moves_the_contact_by_the_hub_twist_and_is_not_flagged_for_
     sc = load_scene(EXAMPLE)
     th = peak_angle(sc)
     c = check_local_body(sc, th, tolerance=2e-3, disk=disk_from_scene(sc, Rb=2e-3))
-    C, n, rho, F = contact_frame(sc, th)
+    C, n, rho, F = contact_frame(sc.analyse(np.array([th])))
     T = F * abs(C[0] * n[1] - C[1] * n[0])
     mu = 210e9 / (2 * 1.3)
     dphi = T / (4 * math.pi * mu * sc.length) * (1 / 2e-3**2 - 1 / float(np.hypot(*C)) ** 2)

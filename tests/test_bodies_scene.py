@@ -27,17 +27,17 @@ def _write(tmp_path, old, new):
 
 def test_example_scene_states_a_fitting_needle_roller():
     sc = load_scene(EXAMPLE)
-    g = sc.bodies
-    assert g["support"] == "needles" and g["Z"] == 18
+    g = sc.bodies.roller
+    assert g.support == "needles" and g.Z == 18 and sc.bodies.cam is None
     # the stated geometry: Ri = Rp + 2 r_n + c, and 18 needles fit on the pitch circle
-    assert math.isclose(g["Rp"] + 2 * g["r_n"] + g["c"], g["Ri"], rel_tol=1e-12)
-    assert 2 * (g["Ri"] - g["r_n"]) * math.sin(math.pi / 18) > 2 * g["r_n"]
-    assert g["pin"].name == "100Cr6"
+    assert math.isclose(g.Rp + 2 * g.r_n + g.c, g.Ri, rel_tol=1e-12)
+    assert 2 * (g.Ri - g.r_n) * math.sin(math.pi / 18) > 2 * g.r_n
+    assert g.pin.name == "100Cr6"
 
 
 def test_solid_roller_default_has_no_bodies():
     sc = load_scene(EXAMPLE.parent / "seed002_study_model.toml")
-    assert sc.bodies == {}
+    assert sc.bodies.roller is None and sc.bodies.cam is None
 
 
 def test_all_bad_body_keys_are_reported_in_one_scene_error(tmp_path):
@@ -82,8 +82,9 @@ def test_ring_rows_columns_units_and_liftoff():
     st = sc.analyse(theta)
     Fc = st.Fc.copy()
     Fc[2] = 0.0
-    m = build_for(sc, Fc, st.rho, mesh=MeshOptions(a_over_h=8), ring_mesh=RingMeshOptions(n_bore=72))
-    rows = ring_rows(sc, theta, Fc, st.rho, model=m)
+    m = build_for(sc.bodies.roller, sc.pair, Fc, st.rho, mesh=MeshOptions(a_over_h=8),
+                  ring_mesh=RingMeshOptions(n_bore=72))
+    rows = ring_rows(sc.bodies.roller, sc.pair, theta, Fc, st.rho, model=m)
     assert set(rows) == set(CSV_COLUMNS) | {"needle_loads_on", "needle_loads_between"}
     assert np.all(np.isnan([rows[k][2] for k in CSV_COLUMNS if k != "theta"]))
     # the distributions balance the cam force along the load line (statics, Stribeck geometry)

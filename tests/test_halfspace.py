@@ -256,11 +256,12 @@ CROWNED = EXAMPLES / "seed002_crowned.toml"
 def test_crowned_scene_keys_in_si():
     sc = load_scene(CROWNED)
     fl = sc.finite_length
-    assert fl["roller_width"] == pytest.approx(0.010) and fl["cam_width"] == pytest.approx(0.012)
-    assert fl["crown"] == "logarithmic" and fl["misalignment"] == pytest.approx(math.radians(0.02))
+    assert fl.roller_width == pytest.approx(0.010) and fl.cam_width == pytest.approx(0.012)
+    assert fl.crown == "logarithmic" and fl.misalignment == pytest.approx(math.radians(0.02))
     assert sc.length == pytest.approx(0.010)               # the 2D contact length is unchanged
     plain = load_scene(EXAMPLES / "seed002_study_model.toml").finite_length   # defaults: face width
-    assert plain["roller_width"] == plain["cam_width"] == pytest.approx(0.010) and "crown" not in plain
+    assert plain.roller_width == plain.cam_width == pytest.approx(0.010) and plain.crown is None
+    assert not plain.shaped
 
 
 def _bad(tmp_path, old, new):

@@ -317,7 +317,8 @@ def test_scene_coating_and_case_keys(tmp_path):
     from femcam.scene import load_scene
 
     ex = Path(__file__).parent.parent / "examples" / "seed002_coated.toml"
-    lay = scene_layers(load_scene(ex))
+    sc = load_scene(ex)
+    lay = scene_layers(sc.layers, sc.follower)
     body, coat = lay["coating"]
     assert body == "roller" and coat.thickness == pytest.approx(2.5e-6)
     assert coat.material.E == pytest.approx(170e9) and coat.interface_shear_strength == pytest.approx(250e6)

@@ -1,4 +1,4 @@
-"""Units only at the edges: the dicts a loaded scene hands on (``Scene.layers``,
+"""Units only at the edges: the dicts and records a loaded scene hands on (``Scene.layers``,
 ``Scene.tribology``, ...) hold SI values under SI names, never under a key that names an edge
 unit (``thickness_um`` holding metres). References are the values typed in the scene files
 times the unit factor written in the test."""
@@ -31,10 +31,17 @@ def _scene(tmp_path, name, old, new):
 
 
 def _edge_keys(d, where=""):
-    """``(path, value)`` of every key ending in an edge-unit suffix, nested dicts walked."""
+    """``(path, value)`` of every key ending in an edge-unit suffix, nested dicts and records
+    (their fields by name) walked."""
+    if dataclasses.is_dataclass(d) and not isinstance(d, type):
+        d = {f.name: getattr(d, f.name) for f in dataclasses.fields(d)}
+    elif isinstance(d, tuple):   # Scene.layers: one record per body
+        d = dict(enumerate(d))
+    elif not isinstance(d, dict):
+        return []
     out = []
     for k, v in d.items():
-        if isinstance(v, dict):
+        if isinstance(v, dict) or (dataclasses.is_dataclass(v) and not isinstance(v, type)):
             out += _edge_keys(v, f"{where}.{k}")
         elif isinstance(k, str) and k.endswith(EDGE):
             out.append((f"{where}.{k}", v))
@@ -43,16 +50,17 @@ def _edge_keys(d, where=""):
 
 def test_layers_hold_si_values_under_si_names():
     scene = load_scene(EX / "seed002_coated.toml")
-    coat, case = scene.layers["roller"]["coating"], scene.layers["cam"]["case"]
+    by_body = {b.body: b for b in scene.layers}
+    coat, case = by_body["roller"].coating, by_body["cam"].case
     # seed002_coated.toml: thickness_um = 2.5, E_GPa = 170, hardness_MPa = 18000,
     # interface_shear_strength_MPa = 250; depth_mm = 0.3, 700 / 300 HV
-    assert coat["thickness"] == pytest.approx(2.5e-6, rel=1e-12)
-    assert coat["E"] == pytest.approx(170e9, rel=1e-12)
-    assert coat["hardness"] == pytest.approx(18e9, rel=1e-12)
-    assert coat["interface_shear_strength"] == pytest.approx(250e6, rel=1e-12)
-    assert case["depth"] == pytest.approx(0.3e-3, rel=1e-12)
-    assert case["surface_hardness"] == pytest.approx(700 * HV, rel=1e-12)
-    lay = scene_layers(scene)
+    assert coat.thickness == pytest.approx(2.5e-6, rel=1e-12)
+    assert coat.E == pytest.approx(170e9, rel=1e-12)
+    assert coat.hardness == pytest.approx(18e9, rel=1e-12)
+    assert coat.interface_shear_strength == pytest.approx(250e6, rel=1e-12)
+    assert case.depth == pytest.approx(0.3e-3, rel=1e-12)
+    assert case.surface_hardness == pytest.approx(700 * HV, rel=1e-12)
+    lay = scene_layers(scene.layers, scene.follower)
     body, c = lay["coating"]
     assert body == "roller" and c.thickness == pytest.approx(2.5e-6, rel=1e-12)
     assert c.interface_shear_strength == pytest.approx(250e6, rel=1e-12)
@@ -63,7 +71,7 @@ def test_coating_wear_k_under_its_si_name(tmp_path):
     scene = _scene(tmp_path, "seed002_coated.toml", "interface_shear_strength_MPa = 250.0",
                    "interface_shear_strength_MPa = 250.0\nwear_k_mm3_per_N_m = 2e-7\n"
                    "[wear]\nk_mm3_per_N_m = 1e-6")
-    assert scene.layers["roller"]["coating"]["wear_k"] == pytest.approx(2e-7 * 1e-9, rel=1e-12)
+    assert {b.body: b for b in scene.layers}["roller"].coating.wear_k == pytest.approx(2e-7 * 1e-9, rel=1e-12)
     cw = coating_wear(scene)
     assert cw.k_coating == pytest.approx(2e-16, rel=1e-12)
     assert cw.thickness == pytest.approx(2.5e-6, rel=1e-12)

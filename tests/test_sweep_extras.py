@@ -144,9 +144,10 @@ def test_needle_roller_sweep_writes_ring_results(tmp_path):
     r, cols = _sweep_csv(scene, th, tmp_path)
     grid = np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False)
     g = scene.analyse(grid)
-    model = build_for(scene, np.where(g.Fc > 0, g.Fc, np.nan), g.rho)   # graded as the provider says
+    model = build_for(scene.bodies.roller, scene.pair, np.where(g.Fc > 0, g.Fc, np.nan),
+                      g.rho)   # graded as the provider says
     st = scene.analyse(th)
-    direct = ring_rows(scene, th, st.Fc, st.rho, model=model)
+    direct = ring_rows(scene.bodies.roller, scene.pair, th, st.Fc, st.rho, model=model)
     side = {c.csv for c in providers.RING}
     for k, c in RING_COLUMNS.items():
         csv = c.csv
@@ -184,7 +185,8 @@ def test_layer_columns_equal_direct_call(tmp_path):
     scene = load_scene(EX + "seed002_coated.toml")
     th = np.radians([0.0, 130.0])
     r, cols = _sweep_csv(scene, th, tmp_path)
-    direct = scene_layer_rows(scene, th, a_over_h=10.0)
+    st = scene.analyse(th)
+    direct = scene_layer_rows(scene.layers, scene.pair, scene.follower, th, st.Fc, st.rho, a_over_h=10.0)
     # method hertz: no FE solve answered the rows, so the layer columns come from the layered
     # model of each angle (method fe takes them from the headline solve: tests/test_sweep_coated.py)
     assert set(cols["layer_source"]) == {"layer_model"}

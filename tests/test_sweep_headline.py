@@ -282,11 +282,9 @@ def test_layer_stresses_without_strengths_through_the_sweep(tmp_path):
     hardness and interface strength (only the utilisations need them): the same stresses as
     with the strengths (they do not enter the solve), utilisations NaN."""
     sc = load_scene(EX / "seed002_coated.toml")
-    layers = {b: {k: (dict(v, hardness=None, interface_shear_strength=None) if k == "coating" else v)
-                  for k, v in t.items()} for b, t in sc.layers.items()}
-    for b in layers:
-        if "coating" in layers[b]:
-            layers[b]["coating"] = {k: v for k, v in layers[b]["coating"].items() if v is not None}
+    layers = tuple(b if b.coating is None else dataclasses.replace(
+        b, coating=dataclasses.replace(b.coating, hardness=None, interface_shear_strength=None))
+        for b in sc.layers)
     bare = dataclasses.replace(sc, layers=layers)
     th = _angles(sc)
     with_s = sweep(sc, SweepOptions(angles=th, a_over_h=A_OVER_H), RunOptions(workers=1))

@@ -25,7 +25,7 @@ import numpy as np
 import pytest
 
 from femcam.bodies import RingMeshOptions, RingModel, solve_ring
-from femcam.bodies.rows import bearing_from_scene
+from femcam.bodies.rows import bearing_from
 from femcam.mesh import MeshOptions
 from femcam.scene import load_scene
 from femcam.sweep import RunOptions, SweepOptions, sweep
@@ -115,7 +115,7 @@ def test_thin_ring_on_needles_the_headline_is_the_ring_models(tmp_path):
     assert r["model"][0] == "fe_arc+ring"
     assert r["p0_fe"][0] < p0_h * (1 - 5e-3), "a thin ring carries the cam softer than a solid roller"
     # the same bearing on another mesh; the sweep reports the cage with the larger bore stress
-    m = RingModel.build(bearing=bearing_from_scene(sc), cam=sc.cam, rho_ref=rho, a_ref=a_h,
+    m = RingModel.build(bearing=bearing_from(sc.bodies.roller, sc.roller), cam=sc.cam, rho_ref=rho, a_ref=a_h,
                         length=sc.length, mesh=MeshOptions(a_over_h=30),
                         ring_mesh=RingMeshOptions(n_bore=192))
     res = [solve_ring(m, F=F, rho=rho, cage=c) for c in (0.0, math.pi / 20)]
@@ -196,7 +196,7 @@ def test_ring_model_estimate_against_the_solid_roller_and_a_finer_ring(tmp_path)
     a_h, p0_h = _hertz(F, sc.length, rho, 0.010)
     est, true = {}, {}
     for n in (6.0, 20.0):
-        m = build_for(sc, np.array([F]), np.array([rho]), mesh=MeshOptions(a_over_h=n))
+        m = build_for(sc.bodies.roller, sc.pair, np.array([F]), np.array([rho]), mesh=MeshOptions(a_over_h=n))
         est[n] = ring_level_estimate(m, MeshOptions(a_over_h=n))
         q = _ring_quantities(m, F)   # at the model's reference load: F itself
         true[n] = {"p0": abs(q["p0"] / p0_h - 1), "a": abs(q["a"] / a_h - 1)}
@@ -207,7 +207,8 @@ def test_ring_model_estimate_against_the_solid_roller_and_a_finer_ring(tmp_path)
     slope = lambda d: np.log(d[6.0] / d[20.0]) / np.log(20.0 / 6.0)  # noqa: E731
     s_est, s_true = slope({n: est[n]["p0"] for n in est}), slope({n: true[n]["p0"] for n in true})
     assert abs(s_est - s_true) <= 0.5 and 1.4 <= s_est <= 2.4, (s_est, s_true)
-    fine = build_for(sc, np.array([F]), np.array([rho]), mesh=MeshOptions(a_over_h=20.0),
+    fine = build_for(sc.bodies.roller, sc.pair, np.array([F]), np.array([rho]),
+                     mesh=MeshOptions(a_over_h=20.0),
                      ring_mesh=RingMeshOptions(n_bore=512, h_max_over_wall=0.0625))
     qf = _ring_quantities(fine, F)
     for k in ("bore_hoop", "pin_p0"):

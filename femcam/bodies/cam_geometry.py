@@ -147,47 +147,49 @@ class CamDisk:
         return self.Rb - self.Rs
 
 
-def outline_from_scene(scene, n: int = 720) -> np.ndarray:
-    """The cam surface in the cam frame over one revolution (roller followers).
+def outline_from_state(state) -> np.ndarray:
+    """The cam surface in the cam frame from the analytic chain over one revolution.
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A scene with a roller follower.
-    n : int, optional
-        Number of equally spaced cam angles over [0, 2 pi).
+    state : femcam.scene.SceneState
+        ``Scene.analyse`` at equally spaced cam angles over [0, 2 pi) (a roller follower).
 
     Returns
     -------
     ndarray, shape (2, n)
         Cam surface points ``(x, y)`` [m], cam centre at 0.
+    """
+    return np.stack([state.profile.x, state.profile.y])
+
+
+def require_roller(follower) -> None:
+    """Refuse a follower that is not a translating roller (the cam disk model needs one).
+
+    Parameters
+    ----------
+    follower : femcam.profile follower
+        The scene's follower.
 
     Raises
     ------
     InputError
-        The follower is not a roller.
+        The follower is not a translating roller (its ``kind`` named).
     """
-    _require_roller(scene)
-    th = np.linspace(0.0, 2 * math.pi, int(n), endpoint=False)
-    p = scene.analyse(th).profile
-    return np.stack([p.x, p.y])
-
-
-def _require_roller(scene):
-    if not getattr(scene.follower, "translating_roller", False):
-        kind = getattr(scene.follower, "kind", "")
+    if not getattr(follower, "translating_roller", False):
+        kind = getattr(follower, "kind", "")
         raise InputError(f"follower type = {kind!r}: the cam disk model needs a roller follower")
 
 
-def contact_frame(scene, theta: float) -> tuple[np.ndarray, np.ndarray, float, float]:
+def contact_frame(state, i: int = 0) -> tuple[np.ndarray, np.ndarray, float, float]:
     """Contact point, normal, curvature radius and force at one cam angle.
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A scene with a roller follower.
-    theta : float
-        Cam angle [rad].
+    state : femcam.scene.SceneState
+        ``Scene.analyse`` of a roller-follower scene.
+    i : int, optional
+        Index of the angle in ``state``.
 
     Returns
     -------
@@ -200,12 +202,10 @@ def contact_frame(scene, theta: float) -> tuple[np.ndarray, np.ndarray, float, f
     Fc : float
         Contact force [N].
     """
-    _require_roller(scene)
-    st = scene.analyse(np.array([float(theta)]))
-    p = st.profile
-    C = np.array([p.x[0], p.y[0]])
-    d = np.array([p.pitch_x[0], p.pitch_y[0]]) - C
-    return C, d / np.hypot(*d), float(st.rho[0]), float(st.Fc[0])
+    p = state.profile
+    C = np.array([p.x[i], p.y[i]])
+    d = np.array([p.pitch_x[i], p.pitch_y[i]]) - C
+    return C, d / np.hypot(*d), float(state.rho[i]), float(state.Fc[i])
 
 
 def to_contact_frame(xy: np.ndarray, C: np.ndarray, n: np.ndarray) -> np.ndarray:

@@ -31,7 +31,9 @@ from .. import _validate
 from .._columns import Column
 from ..errors import InputError
 from ..materials import effective_modulus
-from .cam_geometry import CamDisk, outline_from_scene
+from ..scene.bodies import RealBodies
+from ..scene.pair import ContactPair
+from .cam_geometry import CamDisk, outline_from_state, require_roller
 from .cam_global import CamGlobalModel
 from .cam_model import CamMeshOptions
 from .cam_solve import shaft_arc
@@ -46,20 +48,20 @@ CAM_CSV_COLUMNS = {c.si: c for c in (
 )}
 
 
-def has_cam_bore(scene) -> bool:
+def has_cam_bore(bodies: RealBodies) -> bool:
     """True when the scene gives ``[cam] bore_mm`` (the cam disk on its shaft).
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        The scene.
+    bodies : femcam.scene.bodies.RealBodies
+        The scene's real bodies (``Scene.bodies``).
 
     Returns
     -------
     bool
-        Whether the scene's bodies hold a cam bore.
+        Whether the bodies hold a cam on its shaft.
     """
-    return "cam_bore" in (getattr(scene, "bodies", None) or {})
+    return bodies.cam is not None
 
 
 def _cam_yield(scene):
@@ -95,13 +97,22 @@ def disk_from_scene(scene, *, n_outline: int = 720, fit: str | None = None,
     InputError
         No ``Rb`` and no ``[cam] bore_mm``, or a disk that does not fit.
     """
-    g = getattr(scene, "bodies", None) or {}
-    if Rb is None and "cam_bore" not in g:
+    g = scene.bodies.cam
+    if Rb is None and g is None:
         raise InputError("scene has no [cam] bore_mm: the cam is today's local body (no disk model)")
-    Rb = g["cam_bore"] if Rb is None else Rb
-    fit = g.get("shaft_fit", "contact") if fit is None else fit
-    return CamDisk(outline=outline_from_scene(scene, n_outline), Rb=Rb, Rs=Rb - g.get("shaft_clearance", 0.0),
-                   fit=fit, cam=scene.cam, shaft=g.get("shaft", scene.cam), cam_yield=_cam_yield(scene))
+    Rb = g.bore if Rb is None else Rb
+    fit = (g.fit if g is not None else "contact") if fit is None else fit
+    clearance = g.clearance if g is not None else 0.0
+    shaft = g.shaft if g is not None and g.shaft is not None else scene.cam
+    return CamDisk(outline=_outline(scene, n_outline), Rb=Rb, Rs=Rb - clearance,
+                   fit=fit, cam=scene.cam, shaft=shaft, cam_yield=_cam_yield(scene))
+
+
+def _outline(scene, n: int) -> np.ndarray:
+    """The scene's cam outline at ``n`` equally spaced angles over one revolution (m; a roller
+    follower only)."""
+    require_roller(scene.follower)
+    return outline_from_state(scene.analyse(np.linspace(0.0, 2 * math.pi, int(n), endpoint=False)))
 
 
 def solve_global(model: CamGlobalModel, C: np.ndarray, n: np.ndarray, F: np.ndarray) -> dict:
@@ -195,7 +206,7 @@ def cam_disk_rows(scene, theta, Fc, *, model: CamGlobalModel | None = None,
     st = scene.analyse(theta[on]) if on.size else None
     disk = model.disk if model is not None else disk_from_scene(scene)
     if on.size:
-        check_web_against_contact(disk, scene, Fc[on], st.rho)
+        check_web_against_contact(disk, scene.pair, scene.follower.Rr, Fc[on], st.rho)
     model = model or CamGlobalModel.build(disk=disk, length=scene.length, cam_mesh=cam_mesh,
                                           plane=scene.plane)
     out = {k: np.full(theta.shape, np.nan) for k in CAM_CSV_COLUMNS}
@@ -247,7 +258,7 @@ def yield_flags(disk: CamDisk, hoop_max, hoop_angle) -> np.ndarray:
 WEB_OVER_A_MIN = 10.0
 
 
-def check_web_against_contact(disk: CamDisk, scene, Fc, rho) -> None:
+def check_web_against_contact(disk: CamDisk, pair: ContactPair, Rr: float, Fc, rho) -> None:
     """Refuse a web thinner than :data:`WEB_OVER_A_MIN` Hertz half-widths (Johnson 1985 eq. 4.45;
     ``a`` of the largest contact over the angles) with the numbers.
 
@@ -255,8 +266,10 @@ def check_web_against_contact(disk: CamDisk, scene, Fc, rho) -> None:
     ----------
     disk : CamDisk
         The cam disk (its web).
-    scene : femcam.scene.Scene
-        The scene (roller radius, materials, face width, plane).
+    pair : femcam.scene.pair.ContactPair
+        The contact pair (``Scene.pair``: materials, face width, plane).
+    Rr : float
+        Roller radius [m].
     Fc : ndarray, shape (k,)
         Contact forces [N], > 0.
     rho : ndarray, shape (k,)
@@ -267,10 +280,9 @@ def check_web_against_contact(disk: CamDisk, scene, Fc, rho) -> None:
     InputError
         ``r_min - Rb < WEB_OVER_A_MIN * a_max`` (named by ``cam.bore_mm``).
     """
-    Rr = scene.follower.Rr
     inv_R = 1.0 / Rr + np.where(np.isinf(rho), 0.0, 1.0 / np.where(np.isinf(rho), 1.0, rho))
-    Es = effective_modulus(scene.cam, scene.roller, scene.plane)
-    a = np.sqrt(4 * np.asarray(Fc) / scene.length / (math.pi * Es * np.maximum(inv_R, 1e-300)))
+    Es = effective_modulus(pair.cam, pair.roller, pair.plane)
+    a = np.sqrt(4 * np.asarray(Fc) / pair.length / (math.pi * Es * np.maximum(inv_R, 1e-300)))
     a_max = float(np.nanmax(np.where(inv_R > 0, a, np.nan), initial=0.0))
     if disk.web < WEB_OVER_A_MIN * a_max:
         raise InputError(f"cam.bore_mm = {disk.Rb * 1e3:g} mm: the web r_min - Rb = {disk.web * 1e3:.3g} mm "

@@ -16,7 +16,7 @@ import numpy as np
 from ..hertz.contact import effective_radius, half_width
 from ..materials import effective_modulus
 from ..mesh import surface_height
-from .cam_geometry import contact_frame
+from .cam_geometry import contact_frame, require_roller
 from .cam_global import CamGlobalModel
 from .cam_model import CamDiskModel
 from .cam_rows import disk_from_scene, solve_global
@@ -69,7 +69,8 @@ def refined_at(scene, disk, theta: float, **kw):
     result : CamDiskResult
         Its solution.
     """
-    C, n, rho, F = contact_frame(scene, theta)
+    require_roller(scene.follower)
+    C, n, rho, F = contact_frame(scene.analyse(np.array([float(theta)])))
     a_ref = float(half_width(F / scene.length, effective_radius(scene.follower.Rr, rho),
                              effective_modulus(scene.cam, scene.roller, scene.plane)))
     m = CamDiskModel.build(disk=disk, C=C, n=n, rho=rho, Rr=scene.follower.Rr, roller=scene.roller,
@@ -168,7 +169,7 @@ def check_sentence(c: dict) -> tuple[str, bool]:
 
 
 def _contact_at(scene, theta):
-    C, n, _, _ = contact_frame(scene, theta)
+    C, n, _, _ = contact_frame(scene.analyse(np.array([float(theta)])))
     return C[:, None], n[:, None]
 
 

@@ -1,9 +1,10 @@
 """Sweep-facing: ring, pin and needle results per cam angle from one reusable model.
 
-``ring_rows(scene, theta, Fc, rho)`` builds ONE :class:`~femcam.bodies.model.RingModel` for the
-scene (the ring is axisymmetric and the model is graded for the largest load) and solves every
-angle on it. It returns a dict of SI arrays; :data:`CSV_COLUMNS` gives the CSV name (unit in
-the name) and the factor from SI for each key. Angles where ``Fc <= 0`` (lift-off) give NaN.
+``ring_rows(support, pair, theta, Fc, rho)`` builds ONE :class:`~femcam.bodies.model.RingModel`
+for the scene's roller support (the ring is axisymmetric and the model is graded for the
+largest load) and solves every angle on it. It returns a dict of SI arrays; :data:`CSV_COLUMNS`
+gives the CSV name (unit in the name) and the factor from SI for each key. Angles where
+``Fc <= 0`` (lift-off) give NaN.
 
 For needles every angle is solved at the two extreme cage positions (``cage = 0``: a needle on
 the load line; ``cage = pi / Z``: the load line between two needles); the bore stress and the
@@ -44,8 +45,10 @@ import numpy as np
 from .. import _validate
 from .._columns import Column
 from ..errors import InputError
-from ..materials import effective_modulus
+from ..materials import Material, effective_modulus
 from ..mesh import MeshOptions
+from ..scene.bodies import RollerSupport
+from ..scene.pair import ContactPair
 from .geometry import RollerBearing
 from .model import RingMeshOptions, RingModel
 from .solve import solve_ring
@@ -63,43 +66,44 @@ CSV_COLUMNS = {c.si: c for c in (
 )}
 
 
-def bearing_from_scene(scene) -> RollerBearing:
-    """The :class:`RollerBearing` of a scene with ``roller_support = "pin"|"needles"``.
+def bearing_from(support: RollerSupport, ring: Material) -> RollerBearing:
+    """The :class:`RollerBearing` of a roller on a pin or needles.
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        The scene (its ``bodies`` table, in SI, and the roller material).
+    support : femcam.scene.bodies.RollerSupport
+        The scene's roller support (``Scene.bodies.roller``; m, Pa).
+    ring : femcam.materials.Material
+        The roller's material (Pa), the ring's.
 
     Returns
     -------
     RollerBearing
-        Ring on the roller's material; pin and needles on ``[materials.pin]`` (default: the
-        roller's).
+        Ring on ``ring``; pin and needles on ``support.pin`` (default: ``ring``).
 
     Raises
     ------
     InputError
-        A solid roller (no ring model), or a bad geometry.
+        No support (the solid roller has no ring model), or a bad geometry.
     """
-    g = getattr(scene, "bodies", {}) or {}
-    if g.get("support", "solid") == "solid":
-        raise InputError("scene roller_support = 'solid': the solid roller has no ring model "
-                         "(use femcam.fe / femcam.hertz)")
-    pin = g.get("pin", scene.roller)
-    return RollerBearing(Ro=g["Ro"], Ri=g["Ri"], support=g["support"], Rp=g["Rp"], c=g["c"],
-                         Z=g.get("Z", 0), r_n=g.get("r_n", 0.0), ring=scene.roller, pin=pin,
-                         needle=pin)
+    if not isinstance(support, RollerSupport):
+        raise InputError(f"support = {type(support).__name__}: the solid roller has no ring model "
+                         "(roller_support = 'pin' | 'needles'; otherwise use femcam.fe / femcam.hertz)")
+    pin = support.pin or ring
+    return RollerBearing(Ro=support.Ro, Ri=support.Ri, support=support.support, Rp=support.Rp,
+                         c=support.c, Z=support.Z, r_n=support.r_n, ring=ring, pin=pin, needle=pin)
 
 
-def build_for(scene, Fc, rho, *, mesh: MeshOptions | None = None,
+def build_for(support: RollerSupport, pair: ContactPair, Fc, rho, *, mesh: MeshOptions | None = None,
               ring_mesh: RingMeshOptions | None = None) -> RingModel:
     """A ring model graded for the largest contact force and the cam radius there.
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A scene with a pin or needle roller support.
+    support : femcam.scene.bodies.RollerSupport
+        The roller on a pin or needles (``Scene.bodies.roller``).
+    pair : femcam.scene.pair.ContactPair
+        The contact pair (``Scene.pair``: materials, length in m, plane).
     Fc : ndarray, shape (n,)
         Contact forces over the face width [N] (NaN skipped by the maximum).
     rho : ndarray, shape (n,)
@@ -121,14 +125,15 @@ def build_for(scene, Fc, rho, *, mesh: MeshOptions | None = None,
     if not np.any(Fc > 0):
         raise _validate.fail("Fc", f"max {np.nanmax(Fc, initial=-np.inf):g}", "N",
                              "needs a positive contact force at one angle at least")
-    b = bearing_from_scene(scene)
+    _validate.instance("pair", pair, ContactPair, "a femcam.scene ContactPair (Scene.pair)")
+    b = bearing_from(support, pair.roller)
     k = int(np.nanargmax(np.where(Fc > 0, Fc, np.nan)))
     F, r = float(Fc[k]), float(rho[k])
     inv_R = 1.0 / b.Ro + (0.0 if math.isinf(r) else 1.0 / r)
-    a_ref = math.sqrt(4 * F / scene.length / (inv_R * math.pi *
-                                               effective_modulus(scene.cam, b.ring, scene.plane)))
-    return RingModel.build(bearing=b, cam=scene.cam, rho_ref=r, a_ref=a_ref, length=scene.length,
-                           mesh=mesh, ring_mesh=ring_mesh, plane=scene.plane)
+    a_ref = math.sqrt(4 * F / pair.length / (inv_R * math.pi *
+                                              effective_modulus(pair.cam, b.ring, pair.plane)))
+    return RingModel.build(bearing=b, cam=pair.cam, rho_ref=r, a_ref=a_ref, length=pair.length,
+                           mesh=mesh, ring_mesh=ring_mesh, plane=pair.plane)
 
 
 def _one(model, F, r, needles, Z):
@@ -147,14 +152,16 @@ def _one(model, F, r, needles, Z):
             "needle_Q_between": res[-1].needle_Q_max if needles else math.nan}
 
 
-def ring_rows(scene, theta, Fc, rho, *, model: RingModel | None = None,
+def ring_rows(support: RollerSupport, pair: ContactPair, theta, Fc, rho, *, model: RingModel | None = None,
               mesh: MeshOptions | None = None, ring_mesh: RingMeshOptions | None = None) -> dict:
     """Per-angle ring/pin/needle results from one model.
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A scene with a pin or needle roller support.
+    support : femcam.scene.bodies.RollerSupport
+        The roller on a pin or needles (``Scene.bodies.roller``).
+    pair : femcam.scene.pair.ContactPair
+        The contact pair (``Scene.pair``).
     theta : array_like of float, shape (n,)
         Cam angles [rad].
     Fc : array_like of float, shape (n,)
@@ -178,14 +185,15 @@ def ring_rows(scene, theta, Fc, rho, *, model: RingModel | None = None,
     Raises
     ------
     InputError
-        Shapes that differ, non-finite ``theta``, or a solid roller.
+        Shapes that differ, non-finite ``theta``, or no support (a solid roller).
     """
     theta = _validate.finite_array("theta", theta, "rad")
     Fc = _validate.data_array("Fc", Fc, "N")  # NaN or <= 0: no contact at that angle
     rho = _validate.radius_array("rho", rho, "m")
     if not (theta.shape == Fc.shape == rho.shape):
         raise InputError(f"theta, Fc, rho: shapes {theta.shape}, {Fc.shape}, {rho.shape} must match")
-    model = model or build_for(scene, np.where(Fc > 0, Fc, np.nan), rho, mesh=mesh, ring_mesh=ring_mesh)
+    model = model or build_for(support, pair, np.where(Fc > 0, Fc, np.nan), rho, mesh=mesh,
+                               ring_mesh=ring_mesh)
     b = model.bearing
     needles = b.support == "needles"
     out = {k: np.full(theta.shape, np.nan) for k in CSV_COLUMNS}

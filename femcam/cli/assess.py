@@ -74,7 +74,7 @@ def _run(args) -> int:
                           args.sweep if table is not None else args.angles_deg, theta.size, 3600.0,
                           "femcam assess", _validate.MAX_ASSESS_ANGLES)
     refuse_non_empty(args.out, args.overwrite)  # the rule of every subcommand, before the work
-    res = assess(contact_case(scene, theta), table=table, coatings=scene_coatings(scene))
+    res = assess(contact_case(scene, theta), table=table, coatings=scene_coatings(scene.layers))
     out = out_dir(args.out)
     prov = provenance(scene_path=args.scene, command=shlex.join(["femcam", "assess", *sys.argv[2:]]))
     write_table(out / "assessment.csv", csv_columns(res.rows), prov,

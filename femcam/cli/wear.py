@@ -196,7 +196,7 @@ def _map(args) -> int:
         _write_angle_csv(out / f"wear_{label}.csv", head, theta, cycles, wm, st, slip)
         _write_surface_csv(out / f"wear_{label}_surface.csv", head, cycles, wm)
         _write_follower_csv(out / f"wear_{label}_follower.csv", head, cycles, wm, slip, sc)
-    source = "axial_peak" if has_finite_length(scene) else args.source
+    source = "axial_peak" if has_finite_length(scene.finite_length, scene.length) else args.source
     _write_summary(out / "wear_summary.csv", head, cycles, k, k_where, results, source,
                    scene_law_label(scene))
     if not args.no_plots:

@@ -78,7 +78,7 @@ def strip_for_scene(scene, *, nx: int = 64, ny: int = 128, tol: float = 1e-5) ->
     Parameters
     ----------
     scene : femcam.scene.Scene
-        A scene with a roller follower; its ``finite_length`` dict (SI) sets the roller profile.
+        A scene with a roller follower; its ``finite_length`` record (SI) sets the roller profile.
     nx, ny : int
         Cells across the contact (rolling direction) and along the axis [-].
     tol : float
@@ -102,19 +102,17 @@ def strip_for_scene(scene, *, nx: int = 64, ny: int = 128, tol: float = 1e-5) ->
         raise InputError(f"follower = {type(scene.follower).__name__}: the finite-length half-space "
                          "contact needs a roller follower (a knife edge or flat face is not a line contact "
                          "of two cylinders)")
-    fl = dict(scene.finite_length or {})
-    width = fl.get("roller_width", scene.length)
-    prof = RollerProfile(width=width, crown=fl.get("crown", "none"), crown_radius=fl.get("crown_radius"),
-                         crown_drop=fl.get("crown_drop"), edge_radius=fl.get("edge_radius", 0.0),
-                         misalignment=fl.get("misalignment", 0.0))
+    fl = scene.finite_length
+    prof = fl.roller_profile() if fl is not None else RollerProfile(width=scene.length)
     E_star = effective_modulus(scene.cam, scene.roller, "strain")
     Q = Rd = None
     if prof.crown == "logarithmic":
         st = scene.analyse(np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False))
         i = int(np.argmax(st.Fc))
         Q, Rd = float(st.Fc[i]), float(1.0 / (1.0 / st.rho[i] + 1.0 / Rr))
-    return FiniteLengthContact(prof, cam_width=fl.get("cam_width", scene.length), E_star=E_star,
-                               design_load=Q, design_radius=Rd, nx=nx, ny=ny, tol=tol)
+    cam_width = scene.length if fl is None else fl.cam_width
+    return FiniteLengthContact(prof, cam_width=cam_width, E_star=E_star, design_load=Q,
+                               design_radius=Rd, nx=nx, ny=ny, tol=tol)
 
 
 def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float = 1e-5,
@@ -213,16 +211,18 @@ def to_csv_columns(rows: dict) -> dict:
     return {COLUMNS[k].csv: np.asarray(v) * COLUMNS[k].factor for k, v in rows.items() if k in COLUMNS}
 
 
-def has_finite_length(scene) -> bool:
+def has_finite_length(finite, length: float) -> bool:
     """True when the scene asks for the finite-length contact: a crown, edge radius or
     misalignment key, or a roller or cam width that differs from the 2D contact length. (The
-    scene fills ``finite_length`` with both widths for every roller scene with a face width, so
-    non-empty alone does not mean asked for.)
+    scene gives both widths for every roller scene with a face width, so a record alone does
+    not mean asked for.)
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        The scene.
+    finite : femcam.scene.finite.FiniteLength or None
+        The scene's finite-length keys (``Scene.finite_length``; m, rad).
+    length : float
+        The 2D contact length (m; ``Scene.length``).
 
     Returns
     -------
@@ -230,8 +230,7 @@ def has_finite_length(scene) -> bool:
         The finite-length (half-space) contact applies: the sweep's ``halfspace`` provider and
         the wear map's most loaded slice.
     """
-    fl = getattr(scene, "finite_length", None) or {}
-    if not fl:
+    length = _validate.positive("length", length, "m")
+    if finite is None:
         return False
-    widths = (fl.get("roller_width", scene.length), fl.get("cam_width", scene.length))
-    return bool(set(fl) - {"roller_width", "cam_width"}) or any(w != scene.length for w in widths)
+    return bool(finite.shaped) or any(w != length for w in (finite.roller_width, finite.cam_width))

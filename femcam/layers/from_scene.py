@@ -1,5 +1,6 @@
-"""Coatings and cases from a scene's ``[materials.<body>.coating|case]`` tables, and the
-per-angle layer checks of a scene (sweep-facing: one row per cam angle)."""
+"""Coatings and cases from a scene's ``[materials.<body>.coating|case]`` records
+(``Scene.layers``), and the per-angle layer checks of a scene (sweep-facing: one row per cam
+angle), from the records and the contact force and cam curvature at the angles."""
 
 from __future__ import annotations
 
@@ -14,59 +15,62 @@ from ..fe import ContactModel, SolverOptions
 from ..hertz import LineContact
 from ..materials import Material
 from ..mesh import MeshOptions
+from ..scene.layers import CoatingSpec
+from ..scene.pair import ContactPair
 from .case import Case
 from .coating import Coating, build_coated_model
 from .interface import layer_rows
 
 
-def scene_coatings(scene) -> tuple[tuple[str, dict], ...]:
-    """The coated bodies of ``scene``: ``(body, coating table)`` pairs (SI values under SI names:
-    ``thickness`` [m], ``E`` [Pa], ...). The one scene test of "is a body coated" used by the
+def scene_coatings(layers) -> tuple[tuple[str, CoatingSpec], ...]:
+    """The coated bodies of a scene: ``(body, coating)`` pairs (SI: ``thickness`` [m], ``E``
+    [Pa], ...). The one scene test of "is a body coated" used by the
     sweep's headline flag (:func:`femcam.sweep.headline.omitted_physics`) and by the assessment
     (:func:`femcam.assess.assess_rows`, ``omits_coating``), whose contact models are homogeneous.
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A loaded scene.
+    layers : tuple of femcam.scene.layers.BodyLayers
+        The scene's coatings and cases (``Scene.layers``).
 
     Returns
     -------
-    tuple of (str, dict)
+    tuple of (str, femcam.scene.layers.CoatingSpec)
         One pair per ``[materials.<body>.coating]`` table (empty for an uncoated scene).
     """
-    return tuple((body, tabs["coating"]) for body, tabs in (getattr(scene, "layers", None) or {}).items()
-                 if "coating" in tabs)
+    return tuple((b.body, b.coating) for b in layers if b.coating is not None)
 
 
-def coating_phrase(body: str, c: dict) -> str:
+def coating_phrase(body: str, c: CoatingSpec) -> str:
     """``"the roller's 2.5 um coating (E 170 GPa)"``: a coating as the flags' sentences name it.
 
     Parameters
     ----------
     body : str
         The coated body (``cam`` or ``roller``).
-    c : dict
-        Its coating table (SI: ``thickness`` [m], ``E`` [Pa]).
+    c : femcam.scene.layers.CoatingSpec
+        Its coating (SI: ``thickness`` [m], ``E`` [Pa]).
 
     Returns
     -------
     str
         The phrase (thickness in um, E in GPa).
     """
-    return f"the {body}'s {c['thickness'] * 1e6:g} um coating (E {c['E'] / 1e9:g} GPa)"
+    return f"the {body}'s {c.thickness * 1e6:g} um coating (E {c.E / 1e9:g} GPa)"
 
 
-def scene_layers(scene) -> dict:
-    """Coating and case of ``scene`` from its ``[materials.<body>.coating|case]`` tables.
+def scene_layers(layers, follower) -> dict:
+    """Coating and case of a scene from its ``[materials.<body>.coating|case]`` records.
 
     One coated body per model (the FE mesh has one coating band); a case must be shallower than
     half the body size (cam: base radius; roller: roller radius).
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A loaded scene (``scene.layers`` holds SI values under SI names).
+    layers : tuple of femcam.scene.layers.BodyLayers
+        The scene's coatings and cases (``Scene.layers``, SI).
+    follower : femcam.profile follower
+        The scene's follower (its ``Rb`` and, for a roller, ``Rr``; m).
 
     Returns
     -------
@@ -79,25 +83,20 @@ def scene_layers(scene) -> dict:
         More than one coated body, or a case too deep for its body.
     """
     out = {"coating": None, "case": None}
-    coated = [b for b, t in scene.layers.items() if "coating" in t]
+    coated = [body for body, _ in scene_coatings(layers)]
     if len(coated) > 1:
         raise InputError(f"coatings on {coated}: femcam models one coated body per scene")
-    for body, tabs in scene.layers.items():
-        if "coating" in tabs:
-            c = tabs["coating"]
-            out["coating"] = (body, Coating(
-                thickness=c["thickness"], material=Material(E=c["E"], nu=c["nu"],
-                                                            name=c.get("name", "coating")),
-                interface_shear_strength=c.get("interface_shear_strength"),
-                hardness=c.get("hardness")))
-        if "case" in tabs:
-            c = tabs["case"]
-            case = Case(depth=c["depth"], surface_hardness=c.get("surface_hardness"),
-                        core_hardness=c.get("core_hardness"), surface_yield=c.get("surface_yield"),
-                        core_yield=c.get("core_yield"), law=c.get("hardness_law", "exponential"))
-            size = scene.follower.Rb if body == "cam" else getattr(scene.follower, "Rr", math.inf)
-            case.check_body(size, body)
-            out["case"] = (body, case)
+    for b in layers:
+        if (c := b.coating) is not None:
+            out["coating"] = (b.body, Coating(
+                thickness=c.thickness, material=Material(E=c.E, nu=c.nu, name=c.name),
+                interface_shear_strength=c.interface_shear_strength, hardness=c.hardness))
+        if (c := b.case) is not None:
+            case = Case(depth=c.depth, surface_hardness=c.surface_hardness,
+                        core_hardness=c.core_hardness, surface_yield=c.surface_yield,
+                        core_yield=c.core_yield, law=c.hardness_law)
+            case.check_body(follower.Rb if b.body == "cam" else getattr(follower, "Rr", math.inf), b.body)
+            out["case"] = (b.body, case)
     return out
 
 
@@ -145,9 +144,9 @@ def model_grading(a: float, rho: float, Rr: float) -> tuple[float, float]:
     return Rr / ((j + 0.5) * K_BIN), math.exp((i + 0.5) * A_BIN)
 
 
-def _build(scene, lay, rho_ref, a_ref, a_over_h):
+def _build(pair, Rr, lay, rho_ref, a_ref, a_over_h):
     """The layer model graded for ``(rho_ref, a_ref)`` (the last :data:`_MODELS_MAX` kept per process)."""
-    key = (repr(scene), rho_ref, a_ref, a_over_h)
+    key = (repr(pair), Rr, repr(lay), rho_ref, a_ref, a_over_h)
     with _LOCK:
         if key in _MODELS:
             _MODELS[key] = _MODELS.pop(key)   # most recently used last
@@ -155,14 +154,14 @@ def _build(scene, lay, rho_ref, a_ref, a_over_h):
     mesh = MeshOptions(a_over_h=a_over_h)
     solver = SolverOptions()
     if lay["coating"] is None:
-        model = ContactModel.build(Rr=scene.follower.Rr, rho_ref=rho_ref, cam=scene.cam, roller=scene.roller,
-                                   length=scene.length, a_ref=a_ref, mesh=mesh, solver=solver,
-                                   plane=scene.plane)
+        model = ContactModel.build(Rr=Rr, rho_ref=rho_ref, cam=pair.cam, roller=pair.roller,
+                                   length=pair.length, a_ref=a_ref, mesh=mesh, solver=solver,
+                                   plane=pair.plane)
     else:
         body, coat = lay["coating"]
-        model = build_coated_model(Rr=scene.follower.Rr, rho_ref=rho_ref, cam=scene.cam, roller=scene.roller,
-                                   length=scene.length, a_ref=a_ref, coating=coat, body=body,
-                                   mesh=mesh, solver=solver, plane=scene.plane)
+        model = build_coated_model(Rr=Rr, rho_ref=rho_ref, cam=pair.cam, roller=pair.roller,
+                                   length=pair.length, a_ref=a_ref, coating=coat, body=body,
+                                   mesh=mesh, solver=solver, plane=pair.plane)
     with _LOCK:
         while len(_MODELS) >= _MODELS_MAX:
             _MODELS.pop(next(iter(_MODELS)))
@@ -170,14 +169,15 @@ def _build(scene, lay, rho_ref, a_ref, a_over_h):
     return model
 
 
-def _hertz_a(scene, F, rho) -> float:
-    """Hertz half-width [m] of the scene's contact at ``(F, rho)``."""
-    return float(LineContact(F=F, length=scene.length, R1=rho, R2=scene.follower.Rr, cam=scene.cam,
-                             roller=scene.roller, plane=scene.plane).a)
+def _hertz_a(pair, Rr, F, rho) -> float:
+    """Hertz half-width [m] of the pair's contact at ``(F, rho)`` on a roller of radius ``Rr``."""
+    return float(LineContact(F=F, length=pair.length, R1=rho, R2=Rr, cam=pair.cam,
+                             roller=pair.roller, plane=pair.plane).a)
 
 
-def scene_layer_rows(scene, theta, *, a_over_h: float = 10.0) -> dict:
-    """Layer checks of ``scene`` at cam angles ``theta`` (rad): ``theta_deg``, ``F_N``,
+def scene_layer_rows(layers, pair: ContactPair, follower, theta, Fc, rho, *,
+                     a_over_h: float = 10.0) -> dict:
+    """Layer checks of a scene at cam angles ``theta`` (rad): ``theta_deg``, ``F_N``,
     ``rho_mm``, ``models`` (models built) and the :func:`~femcam.layers.layer_rows` columns.
     Each angle is solved with the model of its load case's bin (:func:`model_grading`; the last
     two models kept per process), or one of its own where that model does not cover it, so an angle's row does
@@ -186,10 +186,18 @@ def scene_layer_rows(scene, theta, *, a_over_h: float = 10.0) -> dict:
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A loaded scene with a coating and/or a case table and a roller follower.
+    layers : tuple of femcam.scene.layers.BodyLayers
+        The scene's coatings and cases (``Scene.layers``), a coating and/or a case.
+    pair : femcam.scene.pair.ContactPair
+        The contact pair (``Scene.pair``: materials, length, plane, friction, sliding).
+    follower : femcam.profile follower
+        A roller follower (its ``Rr`` and ``Rb``; m).
     theta : array_like of float, shape (n,)
         Cam angles [rad].
+    Fc : array_like of float, shape (n,)
+        Contact force at ``theta`` [N] (``Scene.analyse``); ``<= 0`` or NaN (lift-off): a NaN row.
+    rho : array_like of float, shape (n,)
+        Cam radius of curvature at ``theta`` [m] (< 0 concave, inf flat).
     a_over_h : float, optional
         Mesh grading: contact half-width over element size [-].
 
@@ -202,32 +210,37 @@ def scene_layer_rows(scene, theta, *, a_over_h: float = 10.0) -> dict:
     Raises
     ------
     InputError
-        Not a roller follower, or no coating or case table.
+        Not a roller follower, no coating or case table, or arrays that do not match.
     """
-    if not hasattr(scene.follower, "Rr"):
+    if not hasattr(follower, "Rr"):
         raise InputError("scene_layer_rows: the FE contact model needs a roller follower")
-    lay = scene_layers(scene)
+    _validate.instance("pair", pair, ContactPair, "a femcam.scene ContactPair (Scene.pair)")
+    lay = scene_layers(layers, follower)
     if lay["coating"] is None and lay["case"] is None:
-        raise InputError(f"scene {scene.name!r} has no [materials.<body>.coating] or .case table")
+        raise InputError("scene_layer_rows: the scene has no [materials.<body>.coating] or .case table")
     theta = _validate.finite_array("theta", theta, "rad").ravel()
+    Fc = _validate.data_array("Fc", Fc, "N").ravel()   # NaN or <= 0: no contact at that angle
+    rho_all = _validate.radius_array("rho", rho, "m").ravel()
+    if not (theta.shape == Fc.shape == rho_all.shape):
+        raise InputError(f"theta, Fc, rho: shapes {theta.shape}, {Fc.shape}, {rho_all.shape} must match")
     a_over_h = _validate.positive("a_over_h", a_over_h, "")
-    st = scene.analyse(theta)
-    sliding = -1 if scene.sliding == "-x" else 1
+    Rr = follower.Rr
+    sliding = -1 if pair.sliding == "-x" else 1
     cases = []   # (grading, j, F, rho, a) of the angles in contact, solved bin by bin
     for j in range(theta.size):
-        F, rho = float(st.Fc[j]), float(st.rho[j])
-        if not (st.liftoff[j] or F <= 0):
-            a = _hertz_a(scene, F, rho)
-            cases.append((model_grading(a, rho, scene.follower.Rr), j, F, rho, a))
+        F, rho = float(Fc[j]), float(rho_all[j])
+        if F > 0:
+            a = _hertz_a(pair, Rr, F, rho)
+            cases.append((model_grading(a, rho, Rr), j, F, rho, a))
     rows, used = None, set()
     for grading, j, F, rho, a in sorted(cases, key=lambda c: (c[0], c[1])):
         key = grading
-        model = _build(scene, lay, *key, a_over_h)
+        model = _build(pair, Rr, lay, *key, a_over_h)
         if not model.covers(F, rho):   # the bin's model does not cover it: one of its own
             key = (rho, a)
-            model = _build(scene, lay, *key, a_over_h)
+            model = _build(pair, Rr, lay, *key, a_over_h)
         used.add(key)
-        r = layer_rows(model, [F], [rho], [scene.mu], sliding=sliding,
+        r = layer_rows(model, [F], [rho], [pair.mu], sliding=sliding,
                        coating=lay["coating"][1] if lay["coating"] else None,
                        coat_body=lay["coating"][0] if lay["coating"] else "roller",
                        case=lay["case"][1] if lay["case"] else None,
@@ -237,6 +250,5 @@ def scene_layer_rows(scene, theta, *, a_over_h: float = 10.0) -> dict:
         for k, v in r.items():
             rows[k][j] = v[0]
     rows = rows or {}
-    rows.update(theta_deg=np.degrees(theta), F_N=np.asarray(st.Fc, float),
-                rho_mm=np.asarray(st.rho, float) * 1e3, models=len(used))
+    rows.update(theta_deg=np.degrees(theta), F_N=Fc.astype(float), rho_mm=rho_all * 1e3, models=len(used))
     return rows

@@ -281,7 +281,7 @@ def _assessment(scene, theta, objective, safety_min, lambda_min) -> dict:
     ``theta``, the ``utilisation`` objective 1/sf and the margins; an undercut trial design (the
     assessment refuses it) gets sf = lambda = 0: every margin -1."""
     try:
-        rows = assess(contact_case(scene, theta), coatings=scene_coatings(scene)).rows
+        rows = assess(contact_case(scene, theta), coatings=scene_coatings(scene.layers)).rows
         sf = np.array([np.asarray(rows[c], float) if c in rows else np.full(theta.size, np.nan)
                        for c in SF_COLUMNS])
         lam = np.asarray(rows.get("lam", np.full(theta.size, np.nan)), float)

@@ -55,17 +55,21 @@ Modules: ``schema`` (the key tables and units, the study-setting ranges), ``rang
 ``checker`` (the
 problem collector, did-you-mean), ``load`` (TOML reading, :func:`load_scene`), one module per
 table group (``program``, ``follower`` with ``[cam]``, ``dynamics``, ``materials``, ``contact``
-with ``[lubricant]``/``[surface]``/coatings and cases, ``bodies``, ``study`` for
-``[fe]``/``[sweep]``, ``wear``) and ``state`` (:class:`Scene`, :class:`SceneState`,
-:meth:`Scene.analyse`, the undercut check).
+with ``[lubricant]``/``[surface]``, ``layers`` for coatings and cases, ``bodies``, ``study`` for
+``[fe]``/``[sweep]``, ``wear``), the typed records they hand on (``bodies``: ``RealBodies``;
+``layers``: ``BodyLayers``; ``finite``: ``FiniteLength``; ``pair``: ``ContactPair``) and
+``state`` (:class:`Scene`, :class:`SceneState`, :meth:`Scene.analyse`, the undercut check).
 
 Only numpy/scipy and the standard library (``tomllib``) are imported.
 """
 
-from .bodies import roller_support_problems
+from .bodies import CamShaft, RealBodies, RollerSupport, roller_support_problems
 from .case import ContactCase, contact_case
 from .checker import MAX_PROBLEMS
+from .finite import FiniteLength
+from .layers import BodyLayers, CaseSpec, CoatingSpec
 from .load import load_scene
+from .pair import ContactPair
 from .schema import METHODS, STUDY_RANGES, STUDY_WHOLE, TOLERANCE_FLOOR, study_problem
 from .state import UNDERCUT_CHECK_N, Scene, SceneState
 from .study import StudySettings
@@ -73,6 +77,8 @@ from .tribology import LubricantData, MaterialData, SurfaceRoughness, Tribology
 from .wear import WearSettings, wear_table
 
 __all__ = ["MAX_PROBLEMS", "METHODS", "STUDY_RANGES", "STUDY_WHOLE", "TOLERANCE_FLOOR",
-           "UNDERCUT_CHECK_N", "ContactCase", "LubricantData", "MaterialData", "Scene", "SceneState",
-           "StudySettings", "SurfaceRoughness", "Tribology", "WearSettings", "contact_case", "load_scene",
+           "UNDERCUT_CHECK_N", "BodyLayers", "CamShaft", "CaseSpec", "CoatingSpec", "ContactCase",
+           "ContactPair", "FiniteLength", "LubricantData", "MaterialData", "RealBodies",
+           "RollerSupport", "Scene", "SceneState", "StudySettings", "SurfaceRoughness", "Tribology",
+           "WearSettings", "contact_case", "load_scene",
            "roller_support_problems", "study_problem", "wear_table"]

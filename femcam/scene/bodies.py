@@ -1,15 +1,95 @@
 """Real bodies (:mod:`femcam.bodies`; docs/bodies.md): the roller as a ring on a pin or needles
 (``[follower] roller_support``) and the cam on a shaft (``[cam] bore_mm``).
 
-Radii in mm, the clearance in um; the checked values are SI.
+Radii in mm, the clearance in um; the checked values are SI, handed on as the typed records
+:class:`RealBodies` (:class:`RollerSupport`, :class:`CamShaft`) that femcam.bodies reads.
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
+from ..materials import Material
 from .checker import _Checker, _fmt
-from .schema import _BODY_MATERIALS, _FOLLOWER, _SUPPORT_KEYS
+from .schema import _FOLLOWER, _SUPPORT_KEYS
+
+
+@dataclass(frozen=True, kw_only=True)
+class RollerSupport:
+    """The roller as a ring on a pin or on needles, in SI (built by the scene loader from
+    ``[follower] roller_support``, ``roller_radius_mm``, ``roller_bore_mm``, ``pin_radius_mm``,
+    ``pin_clearance_um``, ``needle_count``, ``needle_radius_mm`` and ``[materials.pin]``, after
+    :func:`roller_support_problems` found none).
+
+    Parameters
+    ----------
+    support : {"pin", "needles"}
+        What carries the ring.
+    Ro : float
+        Roller (ring) outer radius (m).
+    Ri : float
+        Roller bore radius (m).
+    Rp : float
+        Pin radius (m).
+    c : float
+        Radial clearance (m).
+    Z : int
+        Number of needles (0 for a pin).
+    r_n : float
+        Needle radius (m; 0 for a pin).
+    pin : femcam.materials.Material or None
+        ``[materials.pin]`` (Pa), also the needles'; None: the roller's material.
+    """
+
+    support: str
+    Ro: float
+    Ri: float
+    Rp: float
+    c: float
+    Z: int = 0
+    r_n: float = 0.0
+    pin: Material | None = None
+
+
+@dataclass(frozen=True, kw_only=True)
+class CamShaft:
+    """The cam as a disk on its shaft, in SI (built by the scene loader from ``[cam] bore_mm``,
+    ``shaft_fit``, ``shaft_clearance_um`` and ``[materials.shaft]``).
+
+    Parameters
+    ----------
+    bore : float
+        Shaft bore radius of the cam (m).
+    fit : {"contact", "bonded"}
+        Shaft-bore fit.
+    clearance : float
+        Radial shaft clearance (m; shaft radius ``bore - clearance``).
+    shaft : femcam.materials.Material or None
+        ``[materials.shaft]`` (Pa); None: the cam's material.
+    """
+
+    bore: float
+    fit: str = "contact"
+    clearance: float = 0.0
+    shaft: Material | None = None
+
+
+@dataclass(frozen=True, kw_only=True)
+class RealBodies:
+    """The real bodies of a scene (femcam.bodies; docs/bodies.md): both None for the solid
+    roller and the cam as a local body.
+
+    Parameters
+    ----------
+    roller : RollerSupport or None
+        The roller on a pin or needles; None: ``roller_support = "solid"``.
+    cam : CamShaft or None
+        The cam on its shaft; None: no ``[cam] bore_mm``.
+    """
+
+    roller: RollerSupport | None = None
+    cam: CamShaft | None = None
 
 
 def roller_support_problems(*, Ro, Ri, support, Rp, c, Z, r_n) -> list[str]:
@@ -71,9 +151,9 @@ def roller_support_problems(*, Ro, Ri, support, Rp, c, Z, r_n) -> list[str]:
     return out
 
 
-def _check_bodies(ck: _Checker, raw: dict, fo: dict, mats: dict) -> dict:
-    """The real-body keys: which apply, their geometry, the pin/shaft materials. Returns the SI
-    dict stored in ``Scene.bodies`` (empty for today's solid roller and local cam body)."""
+def _check_bodies(ck: _Checker, raw: dict, fo: dict, mats: dict) -> RealBodies:
+    """The real-body keys: which apply, their geometry, the pin/shaft materials. Returns the
+    record stored in ``Scene.bodies`` (both parts None for the solid roller and local cam body)."""
     fraw = raw.get("follower", {}) if isinstance(raw.get("follower"), dict) else {}
     support = fo.get("roller_support", "solid")
     given = [k for k in _SUPPORT_KEYS["needles"] if k in fraw]
@@ -85,25 +165,26 @@ def _check_bodies(ck: _Checker, raw: dict, fo: dict, mats: dict) -> dict:
         if k not in fraw:
             ck.add(f"follower.{k}", f"missing: required with roller_support = {support!r} "
                    f"(unit: {_FOLLOWER[k][0]})")
-    out = {}
+    roller = cam = None
     if needed and all(k in fo for k in needed) and "roller_radius_mm" in fo:
         geo = dict(Ro=fo["roller_radius_mm"], Ri=fo["roller_bore_mm"], support=support,
                    Rp=fo["pin_radius_mm"], c=fo["pin_clearance_um"], Z=fo.get("needle_count", 0.0),
                    r_n=fo.get("needle_radius_mm", 0.0))
-        for msg in roller_support_problems(**geo):
+        problems = roller_support_problems(**geo)
+        for msg in problems:
             ck.add("follower", msg)
-        out.update(geo, Z=int(geo["Z"]))
+        if not problems:
+            roller = RollerSupport(**(geo | {"Z": int(geo["Z"])}), pin=mats.get("pin"))
     # [cam] is checked once, by _finite_length (one _CAM schema); here only valid values are used
     craw = raw.get("cam", {}) if isinstance(raw.get("cam"), dict) else {}
     bore = _valid_number(craw.get("bore_mm"), positive=True)
     if bore is not None and "base_radius_mm" in fo and bore * 1e-3 >= fo["base_radius_mm"]:
         ck.add("cam.bore_mm", f"= {_fmt(craw['bore_mm'])} mm: the shaft bore radius must be < "
                f"base_radius_mm = {fo['base_radius_mm'] * 1e3:g} mm")
+    fit = _shaft_fit(ck, craw, bore)
     if bore is not None:
-        out["cam_bore"] = bore * 1e-3
-    out.update(_shaft_fit(ck, craw, bore))
-    out.update({k: v for k, v in mats.items() if k in _BODY_MATERIALS})
-    return out
+        cam = CamShaft(bore=bore * 1e-3, **fit, shaft=mats.get("shaft"))
+    return RealBodies(roller=roller, cam=cam)
 
 
 def _valid_number(v, *, positive: bool):
@@ -163,8 +244,8 @@ def shaft_fit_problems(*, bore_mm, fit, clearance_um) -> list[str]:
 
 
 def _shaft_fit(ck: _Checker, craw: dict, bore) -> dict:
-    """The checked ``[cam] shaft_fit``, ``shaft_clearance_um`` as ``{"shaft_fit": str,
-    "shaft_clearance": m}`` (defaults "contact", 0 with a bore; {} without one)."""
+    """The checked ``[cam] shaft_fit``, ``shaft_clearance_um`` as ``{"fit": str, "clearance": m}``
+    (defaults "contact", 0 with a bore; {} without one or on a problem)."""
     fit = craw.get("shaft_fit") if craw.get("shaft_fit") in ("contact", "bonded") else None
     c = _valid_number(craw.get("shaft_clearance_um"), positive=False)
     problems = shaft_fit_problems(bore_mm=bore, fit=fit, clearance_um=c)
@@ -173,4 +254,4 @@ def _shaft_fit(ck: _Checker, craw: dict, bore) -> dict:
         ck.add(key, rest)
     if bore is None or problems:
         return {}
-    return {"shaft_fit": fit or "contact", "shaft_clearance": (c or 0.0) * 1e-6}
+    return {"fit": fit or "contact", "clearance": (c or 0.0) * 1e-6}

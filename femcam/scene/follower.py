@@ -12,7 +12,6 @@ import math
 import numpy as np
 
 from ..errors import InputError
-from ..halfspace.crown import RollerProfile
 from ..kinematics import CamProgram
 from ..profile import (
     DIRECTIONS,
@@ -22,6 +21,7 @@ from ..profile import (
     make_follower,
 )
 from .checker import _Checker, _fmt
+from .finite import FiniteLength
 from .schema import _ARM, _CAM, _FINITE, _FINITE_SI, _FOLLOWER, _FOLLOWER_ONLY
 from .state import _dense_theta
 
@@ -208,24 +208,23 @@ def _follower_only_keys(ck: _Checker, raw, ftype) -> bool:
 
 
 
-def _finite_length(ck: _Checker, raw: dict, fo: dict, ftype) -> dict:
-    """Check the finite-length keys; returns them in SI (``roller_width``, ``cam_width``, ``crown``,
-    ``crown_radius``, ``crown_drop``, ``edge_radius``, ``misalignment``) or {} on a problem."""
+def _finite_length(ck: _Checker, raw: dict, fo: dict, ftype) -> FiniteLength | None:
+    """Check the finite-length keys; returns them in SI as a :class:`FiniteLength`, or None
+    (no face width, a follower without a roller, or a problem)."""
     cam = ck.table(raw.get("cam", {}), "cam", _CAM)
     graw = raw.get("follower", {}) if isinstance(raw.get("follower"), dict) else {}
     given = [k for k in _FINITE if k in graw]
     if given and ftype in ("knife_edge", "flat_faced"):
         ck.add(f"follower.{given[0]}", f"= {_fmt(graw[given[0]])}: a {ftype} follower has no roller")
-        return {}
+        return None
     if any(k in graw and k not in fo for k in _FINITE) or "face_width_mm" not in fo:
-        return {}
+        return None
     out = {v: fo[k] for k, v in _FINITE_SI.items() if k in fo}
     out.setdefault("roller_width", fo["face_width_mm"])
     out["cam_width"] = cam.get("face_width_mm", fo["face_width_mm"])
-    kw = {k: out[k] for k in ("crown", "crown_radius", "crown_drop", "edge_radius", "misalignment")
-          if k in out}
+    finite = FiniteLength(**out)
     try:
-        RollerProfile(width=out["roller_width"], **kw)
+        finite.roller_profile()
     except InputError as exc:
         msg = str(exc)
         for k, v in _FINITE_SI.items():  # name the scene key and unit, not the SI parameter
@@ -233,7 +232,7 @@ def _finite_length(ck: _Checker, raw: dict, fo: dict, ftype) -> dict:
                 unit = _FINITE[k][0]
                 ck.add(f"follower.{k}", f"= {_fmt(graw.get(k, fo.get(k)))}{' ' + unit if unit else ''}: "
                        f"{msg.split(': ', 1)[-1]}")
-                return {}
+                return None
         ck.add("follower", msg)
-        return {}
-    return out
+        return None
+    return finite

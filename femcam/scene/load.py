@@ -12,10 +12,11 @@ from .._files import read_regular
 from ..errors import SceneError
 from .bodies import _check_bodies
 from .checker import _Checker
-from .contact import _contact, _layers, _tribology
+from .contact import _contact, _tribology
 from .cross import cross_key_problems
 from .dynamics import _dynamics
 from .follower import _finite_length, _follower, arm_fold, arm_program, arm_self_locking
+from .layers import _layers
 from .materials import _materials
 from .origin import freeze
 from .program import _program

@@ -22,7 +22,11 @@ from ..kinematics import CamProgram, law
 from ..loads import ArmDynamics, FollowerDynamics, LoadResult, arm_contact_force, arm_lever, contact_force
 from ..materials import Material
 from ..profile import CamProfile, bool_intervals, cam_profile
+from .bodies import RealBodies
+from .finite import FiniteLength
+from .layers import BodyLayers
 from .origin import FrozenMapping, freeze
+from .pair import ContactPair
 from .study import StudySettings
 from .tribology import Tribology
 from .wear import WearSettings
@@ -150,15 +154,11 @@ class Scene:
         None (:mod:`femcam.sweep.settings`).
     wear : femcam.scene.wear.WearSettings
         The [wear] table in SI (:mod:`femcam.wear.options` reads it).
-    finite_length : dict
-        The femcam.halfspace keys in SI (``roller_width``, ``cam_width``, ``crown_radius``,
-        ``crown_drop``, ``edge_radius`` in m, ``misalignment`` in rad, ``crown``); empty when
-        not given or invalid.
-    layers : dict
-        Coatings and cases per body (``{body: {"coating": {...}, "case": {...}}}``, SI, checked;
-        :func:`femcam.layers.scene_layers` builds them), under the SI names of
-        :data:`femcam.scene.schema.SI_NAMES` (``thickness``, ``depth`` in m, ``E``, ``hardness``,
-        ``surface_hardness`` in Pa, ``wear_k`` in m^3/(N m)).
+    finite_length : femcam.scene.finite.FiniteLength or None
+        The finite-length contact keys (femcam.halfspace) in SI; None without a face width.
+    layers : tuple of femcam.scene.layers.BodyLayers
+        Coating and case per body (SI, checked; :func:`femcam.layers.scene_layers` builds the
+        models' ``Coating`` and ``Case`` from them); empty for uncoated, unhardened bodies.
     source_path : str
         The scene file ("" if built in code).
     tribology : femcam.scene.tribology.Tribology
@@ -172,10 +172,9 @@ class Scene:
         referred to the roller's arc travel, femcam.dynamics.arm_train); None: rigid.
     steps_per_rev : int or None
         Time steps per revolution of the train response (None: its default).
-    bodies : dict
-        Real bodies (femcam.bodies): roller support geometry (``Ro``, ``Ri``, ``Rp``, ``c``,
-        ``r_n`` in m, ``Z`` needles, ``support``), ``cam_bore`` (m) and the ``"pin"`` /
-        ``"shaft"`` Materials; empty for the solid roller.
+    bodies : femcam.scene.bodies.RealBodies
+        Real bodies (femcam.bodies): the roller on a pin or needles and the cam on its shaft
+        (m, Pa); both None for the solid roller and the cam as a local body.
     tip_radius : float or None
         Knife-edge tip radius (m, ``[follower] tip_radius_mm``); None when not given
         (femcam.fe.followers).
@@ -198,14 +197,14 @@ class Scene:
     source: str = ""
     study: StudySettings = field(default_factory=StudySettings)
     wear: WearSettings = field(default_factory=WearSettings)
-    finite_length: dict = field(default_factory=dict)
-    layers: dict = field(default_factory=dict)
+    finite_length: FiniteLength | None = None
+    layers: tuple[BodyLayers, ...] = ()
     source_path: str = ""
     tribology: Tribology = field(default_factory=Tribology)
     origin: FrozenMapping = field(default_factory=FrozenMapping, repr=False)
     train: TrainModel | None = None
     steps_per_rev: int | None = None
-    bodies: dict = field(default_factory=dict)
+    bodies: RealBodies = field(default_factory=RealBodies)
     tip_radius: float | None = None
     face_length: float | None = None
     #: what the program was changed to after loading (:meth:`with_law`): ``(("law", name),
@@ -224,6 +223,12 @@ class Scene:
     def rpm(self) -> float:
         """Cam speed (rpm)."""
         return self.omega * 60.0 / (2.0 * math.pi)
+
+    @property
+    def pair(self) -> ContactPair:
+        """The contact pair (materials, length in m, plane, friction) the physics packages take."""
+        return ContactPair(cam=self.cam, roller=self.roller, length=self.length, plane=self.plane,
+                           mu=self.mu, sliding=self.sliding)
 
     @cached_property
     def _dense_undercut(self) -> tuple:

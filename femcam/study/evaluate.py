@@ -110,7 +110,7 @@ def _assessment(scene, theta) -> tuple:
         return math.nan, math.nan
     lub = scene.tribology.lubricant is not None
     try:
-        A = assess(contact_case(scene, theta), lubricated=lub, coatings=scene_coatings(scene))
+        A = assess(contact_case(scene, theta), lubricated=lub, coatings=scene_coatings(scene.layers))
     except FemcamError:
         return math.nan, math.nan
     not_sf = ("film (lambda)", "contact temperature", "pitting life")

@@ -142,8 +142,8 @@ class Provider:
 
 #: the table, in the order the providers run (halfspace before assess: the axial peak)
 PROVIDERS: tuple[Provider, ...] = (
-    Provider("halfspace", has_finite_length, HALFSPACE, ("hs_flags", "fe_load_basis"),
-             halfspace_chunk, HS_PANELS,
+    Provider("halfspace", lambda s: has_finite_length(s.finite_length, s.length), HALFSPACE,
+             ("hs_flags", "fe_load_basis"), halfspace_chunk, HS_PANELS,
              "finite-length contact along the roller:\naxial peak pressure and most loaded slice",
              keys="[follower] crown, crown_*, edge_radius_mm, misalignment_deg, roller_width_mm; "
                   "[cam] face_width_mm"),
@@ -153,9 +153,10 @@ PROVIDERS: tuple[Provider, ...] = (
     Provider("bodies", has_support, RING, (), ring_chunk, RING_PANELS,
              keys="[follower] roller_support, roller_bore_mm, pin_radius_mm, pin_clearance_um, "
                   "needle_count, needle_radius_mm"),
-    Provider("cam_disk", has_cam_bore, CAM_DISK, ("camdisk_flags",), cam_disk_chunk, CAM_DISK_PANELS,
+    Provider("cam_disk", lambda s: has_cam_bore(s.bodies), CAM_DISK, ("camdisk_flags",), cam_disk_chunk,
+             CAM_DISK_PANELS,
              keys="[cam] bore_mm, shaft_fit, shaft_clearance_um"),
-    Provider("layers", lambda s: bool(getattr(s, "layers", None)), LAYERS + LAYER_ESTIMATES,
+    Provider("layers", lambda s: bool(s.layers), LAYERS + LAYER_ESTIMATES,
              ("layer_source",), layers_chunk, LAYER_PANELS,
              keys="[materials.<body>.coating] and [materials.<body>.case]", solved=True),
     Provider("coating_wear", coated_cam, (), (), coating_wear_chunk,

@@ -95,7 +95,7 @@ def coating_in_headline(scene, method: str = "fe") -> bool:
     bool
         The coated model answers the headline (False for an uncoated scene).
     """
-    return (bool(scene_coatings(scene)) and method != "hertz"
+    return (bool(scene_coatings(scene.layers)) and method != "hertz"
             and not getattr(scene.follower, "flat_face", False))
 
 
@@ -126,13 +126,13 @@ def omitted_physics(scene, method: str = "fe") -> tuple[tuple[str, str], ...]:
         sentence.
     """
     out = []
-    for body, c in () if coating_in_headline(scene, method) else scene_coatings(scene):
+    for body, c in () if coating_in_headline(scene, method) else scene_coatings(scene.layers):
         out.append(("headline_omits_coating",
                     f"headline_omits_coating: {coating_phrase(body, c)} is not in the contact "
                     "model that answers here (method hertz, or a flat-faced follower's real-cam "
                     "FE: homogeneous bodies); its own stresses are the interface_* and coating_* "
                     "columns"))
-    if has_finite_length(scene):
+    if has_finite_length(scene.finite_length, scene.length):
         out.append(("headline_2d_mean_load",
                     "headline_2d_mean_load: finite length, two answers side by side: p0_fe_MPa, "
                     "a_fe_um and the stress columns are the 2D contact at the MEAN load Fc / length; "
@@ -159,10 +159,10 @@ def answered_by(scene) -> tuple[str, ...]:
     """
     out = []
     if has_support(scene):
-        out.append(f"headline_ring: the roller runs on {scene.bodies['support']}; p0_fe, a_fe and "
+        out.append(f"headline_ring: the roller runs on {scene.bodies.roller.support}; p0_fe, a_fe and "
                    "err_* are the ring model's contact (model ...+ring), its stresses the solid "
                    "roller's scaled to it (global-local); p0_hertz is the solid roller's Hertz")
-    if has_cam_bore(scene):
+    if has_cam_bore(scene.bodies):
         out.append("headline_cam_disk: the cam sits on its shaft; the contact columns are the "
                    "local cam body's (global-local), checked once against the fully refined "
                    "disk at the peak force (cam disk check below); the disk is in the cam_bore_* "

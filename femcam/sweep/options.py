@@ -430,11 +430,10 @@ def contact_params(scene) -> ContactParams:
                          "[follower] tip_radius_mm = ... (mm)")
     R = scene.follower.contact_radius(tip)  # Rr, the tip radius or inf (flat face)
     coat = {}
-    for body, tabs in (getattr(scene, "layers", None) or {}).items():
-        if "coating" in tabs:
-            c = tabs["coating"]
-            coat = dict(coat_body=str(body), coat_thickness=float(c["thickness"]),
-                        coat_E=float(c["E"]), coat_nu=float(c["nu"]))
+    for b in scene.layers:
+        if (c := b.coating) is not None:
+            coat = dict(coat_body=str(b.body), coat_thickness=float(c.thickness),
+                        coat_E=float(c.E), coat_nu=float(c.nu))
     return ContactParams(R, float(scene.length), scene.cam, scene.roller, float(scene.mu),
                          str(scene.plane), sliding, kind=kind,
                          face_length=getattr(scene, "face_length", None), **coat)

@@ -76,7 +76,7 @@ def ring_model(scene):
     def build():
         st = scene.analyse(_GRID)
         Fc = np.where(np.asarray(st.Fc) > 0, st.Fc, np.nan)
-        return build_for(scene, Fc, np.asarray(st.rho, float))
+        return build_for(scene.bodies.roller, scene.pair, Fc, np.asarray(st.rho, float))
     return _cached("ring", scene, build)
 
 
@@ -342,7 +342,7 @@ def assess_chunk(task, rows) -> dict:
         return out
     r = assess_rows(contact_case(task.scene, task.theta[idx]),
                     table={k: np.asarray(v)[idx] for k, v in table.items()},
-                    coatings=scene_coatings(task.scene))
+                    coatings=scene_coatings(task.scene.layers))
     for c in ASSESS_COLUMNS:
         if c.si not in ASSESS_SKIP:
             out[assess_name(c.si)][idx] = r[c.si]
@@ -485,7 +485,7 @@ def cam_disk_vtus(task, model, Fc) -> None:
         if not (np.isfinite(Fc[i]) and Fc[i] > 0):
             path.unlink(missing_ok=True)
             continue
-        C, n, _, _ = contact_frame(task.scene, float(task.theta[i]))
+        C, n, _, _ = contact_frame(task.scene.analyse(task.theta[i:i + 1]))
         write_global_cam_vtu(path, model, C, n, float(Fc[i]), theta=float(task.theta[i]))
 
 
@@ -522,7 +522,7 @@ def layers_chunk(task, rows, solved) -> dict:
     contact = _contact_rows(rows)
     head = [i for i in np.flatnonzero(contact) if i in solved and status[i] == "ok"]
     if head:
-        lay = scene_layers(task.scene)
+        lay = scene_layers(task.scene.layers, task.scene.follower)
         kw = dict(coating=lay["coating"][1] if lay["coating"] else None,
                   coat_body=lay["coating"][0] if lay["coating"] else "roller",
                   case=lay["case"][1] if lay["case"] else None,
@@ -535,7 +535,9 @@ def layers_chunk(task, rows, solved) -> dict:
             _layer_estimate(task, rows, i, out)
     idx = np.setdiff1d(np.flatnonzero(contact), np.asarray(head, int))
     if idx.size:
-        r = scene_layer_rows(task.scene, task.theta[idx], a_over_h=task.options.a_over_h)
+        st = task.scene.analyse(task.theta[idx])
+        r = scene_layer_rows(task.scene.layers, task.scene.pair, task.scene.follower, task.theta[idx],
+                             st.Fc, st.rho, a_over_h=task.options.a_over_h)
         for c in LAYERS:
             if c.csv in r:
                 out[c.si][idx] = np.asarray(r[c.csv], float) / c.factor
@@ -602,7 +604,7 @@ def coating_wear_chunk(task, rows) -> dict:
 
 def has_support(scene) -> bool:
     """True when the roller runs on a pin or needles (``[follower] roller_support`` is not
-    ``solid``; ``scene.bodies["support"]``).
+    ``solid``; ``scene.bodies.roller``).
 
     Parameters
     ----------
@@ -614,7 +616,7 @@ def has_support(scene) -> bool:
     bool
         The ``bodies`` provider applies.
     """
-    return (getattr(scene, "bodies", None) or {}).get("support", "solid") != "solid"
+    return scene.bodies.roller is not None
 
 
 MPA = 1e-6

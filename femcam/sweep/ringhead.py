@@ -252,7 +252,8 @@ def ring_headline(task, rows) -> np.ndarray:
     Fc = np.where(contact_rows(rows), rows["Fc"], 0.0)   # ring_rows: Fc <= 0 -> NaN row
     try:
         model = ring_model(task.scene)
-        r = ring_rows(task.scene, task.theta, Fc, rows["rho"], model=model)
+        r = ring_rows(task.scene.bodies.roller, task.scene.pair, task.theta, Fc, rows["rho"],
+                      model=model)
     except FemcamError as exc:   # the bodies provider reports it (extras_error, refusals)
         rows[RING_ERROR] = exc
         return done

@@ -165,13 +165,13 @@ def scene_wear_map(scene, theta, *, cycles: float = 1e6, tip_radius: float | Non
     Returns
     -------
     wear_map : femcam.wear.map.WearMap
-        The map (the most loaded slice's when ``has_finite_length(scene)``).
+        The map (the most loaded slice's when ``has_finite_length(scene.finite_length, scene.length)``).
     state : femcam.scene.SceneState
         ``scene.analyse(theta)``.
     slip : femcam.wear.slip.SlipResult
         Sliding and transport speeds [m/s] at ``theta``.
     """
-    if has_finite_length(scene):
+    if has_finite_length(scene.finite_length, scene.length):
         return scene_wear_axial(scene, theta, cycles=cycles, fe=fe, k_factor=k_factor, regime=regime)
     return scene_wear(contact_case(scene, theta, tip_radius=tip_radius), cycles=cycles, fe=fe,
                       k_factor=k_factor, regime=regime, coating=coating_wear(scene))

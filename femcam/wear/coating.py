@@ -172,17 +172,16 @@ def coating_wear(scene) -> CoatingWear | None:
     CoatingWear or None
         The first coated body's wear data (SI), or None.
     """
-    for body, tabs in (getattr(scene, "layers", None) or {}).items():
-        c = tabs.get("coating") if isinstance(tabs, dict) else None
-        if not c or not ("wear_k" in c or "wear_K" in c):
+    for body, c in ((b.body, b.coating) for b in scene.layers if b.coating is not None):
+        if c.wear_k is None and c.wear_K is None:
             continue
-        if "wear_k" in c:  # SI names (femcam.scene.schema.SI_NAMES): m^3/(N m), Pa, m
-            k, src = c["wear_k"], (f"[materials.{body}.coating] wear_k_mm3_per_N_m = "
-                                   f"{c['wear_k'] * 1e9:g}")
+        if c.wear_k is not None:  # SI: m^3/(N m), Pa, m
+            k, src = c.wear_k, (f"[materials.{body}.coating] wear_k_mm3_per_N_m = "
+                                f"{c.wear_k * 1e9:g}")
         else:
-            k = c["wear_K"] / c["hardness"]
-            src = (f"[materials.{body}.coating] wear_K = {c['wear_K']:g} / hardness_MPa = "
-                   f"{c['hardness'] / 1e6:g}")
-        return CoatingWear(body=body, thickness=c["thickness"], k_coating=k,
+            k = c.wear_K / c.hardness
+            src = (f"[materials.{body}.coating] wear_K = {c.wear_K:g} / hardness_MPa = "
+                   f"{c.hardness / 1e6:g}")
+        return CoatingWear(body=body, thickness=c.thickness, k_coating=k,
                            k_substrate=wear_coefficient_info(scene.wear, scene.cam.hardness)[0], source=src)
     return None
