@@ -22,7 +22,11 @@ Counts:
 * column declarations as bare tuples (:func:`bare_columns`): a tuple literal ``(si, csv,
   factor)`` or a dict value ``csv: (csv, factor)`` whose CSV name ends in a unit of
   ``femcam._columns.UNITS`` and whose factor is a number expression, and a comprehension that
-  builds ``(name, csv, f)`` triples; declarations are :class:`femcam._columns.Column`.
+  builds ``(name, csv, f)`` triples; declarations are :class:`femcam._columns.Column`;
+* string-keyed chunk-table writes (:func:`chunk_table_writes`): in ``femcam/sweep/``, an
+  assignment (plain or augmented, also one element of a tuple target) to a subscript of the name
+  ``rows`` (``rows["p0_fe"][i] = ...``, ``rows[name] = ...``); the chunk table is
+  :class:`femcam.sweep.chunk.ChunkRows`, written by attribute.
 """
 
 from __future__ import annotations
@@ -188,6 +192,47 @@ def bare_columns(root: Path) -> list[str]:
     return out
 
 
+def _subscript_of_rows(node) -> bool:
+    """``rows[...]`` or ``rows[...][...]`` (any depth of subscripts on the name ``rows``)."""
+    if not isinstance(node, ast.Subscript):
+        return False
+    while isinstance(node, ast.Subscript):
+        node = node.value
+    return isinstance(node, ast.Name) and node.id == "rows"
+
+
+def _binds_other_rows(fn) -> bool:
+    """A function whose ``rows`` is its own dict or list (``rows: dict[str, int] = {}``)."""
+    for node in ast.walk(fn):
+        if isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name) \
+                and node.target.id == "rows":
+            return True
+        if isinstance(node, ast.Assign) and isinstance(node.value, ast.Dict | ast.List | ast.DictComp) \
+                and any(isinstance(t, ast.Name) and t.id == "rows" for t in node.targets):
+            return True
+    return False
+
+
+def chunk_table_writes(root: Path) -> list[str]:
+    """String-keyed chunk-table writes in ``femcam/sweep`` (module docstring), as ``path:line``;
+    a function whose ``rows`` is a dict or list of its own is not counted."""
+    out = set()
+    for rel, text in _files(root):
+        if not rel.startswith("femcam/sweep/"):
+            continue
+        for fn in ast.walk(ast.parse(text)):
+            if not isinstance(fn, ast.FunctionDef) or _binds_other_rows(fn):
+                continue
+            for node in ast.walk(fn):
+                targets = node.targets if isinstance(node, ast.Assign) else \
+                    [node.target] if isinstance(node, ast.AugAssign) else []
+                for t in targets:
+                    for e in t.elts if isinstance(t, ast.Tuple) else [t]:
+                        if _subscript_of_rows(e):
+                            out.add(f"{rel}:{e.lineno}:{e.col_offset} rows[...] write")
+    return sorted(out)
+
+
 def writers(root: Path) -> list[str]:
     """Writer calls outside femcam/io (:mod:`test_writers`)."""
     sys.path.insert(0, str(HERE))
@@ -204,7 +249,8 @@ def numbers(root: Path) -> dict[str, int]:
             "follower dispatch sites outside the follower classes": len(follower_dispatch(root)),
             "files with a function taking the scene": len(set(scene_files(root))),
             "sweep package modules": n_mod, "sweep import depth": depth,
-            "column declarations as bare tuples": len(bare_columns(root))}
+            "column declarations as bare tuples": len(bare_columns(root)),
+            "string-keyed chunk-table writes": len(chunk_table_writes(root))}
 
 
 if __name__ == "__main__":
@@ -212,5 +258,6 @@ if __name__ == "__main__":
     for k, v in numbers(root).items():
         print(f"{k}: {v}")
     if "-v" in sys.argv:
-        for line in compat_aliases(root) + follower_dispatch(root) + writers(root) + bare_columns(root):
+        for line in (compat_aliases(root) + follower_dispatch(root) + writers(root) + bare_columns(root)
+                     + chunk_table_writes(root)):
             print("  ", line)

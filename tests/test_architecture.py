@@ -200,3 +200,15 @@ def test_columns_declared_with_the_column_type():
     from style_numbers import bare_columns
 
     assert bare_columns(ROOT) == []
+
+
+def test_chunk_table_written_by_attribute():
+    """Issue 24 item 4: the sweep's chunk table is typed (``femcam.sweep.chunk.ChunkRows``):
+    no ``rows["..."] = ...`` / ``rows[name][i] = ...`` write is left in ``femcam/sweep``
+    (tests/style_numbers.py, docs/architecture.md)."""
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from style_numbers import chunk_table_writes
+
+    assert chunk_table_writes(ROOT) == []

@@ -29,10 +29,11 @@ from femcam.mesh import MeshOptions
 from femcam.scene import Scene, load_scene
 from femcam.scene.wear import WearSettings
 from femcam.sweep import RunOptions, SweepOptions, auto_workers, default_cache, parse_angles_deg, sweep
+from femcam.sweep.chunk import ChunkRows
 from femcam.sweep.options import ResolvedOptions, contact_params
 from femcam.sweep.profile import worst_surface_profile
 from femcam.sweep.store import ChunkStore
-from femcam.sweep.table import empty_rows
+from femcam.sweep.table import NUMERIC
 
 ROOT = Path(__file__).resolve().parents[1]
 STUDY = ROOT / "examples" / "seed002_study_model.toml"
@@ -547,9 +548,11 @@ def test_outputs_provenance_and_pvd(scene, tmp_path):
 def test_store_refuses_a_different_sweep_and_ignores_partial_files(tmp_path):
     s = ChunkStore(tmp_path, {"scene_sha256": "x", "n": 3}, [(0, 2), (2, 3)])
     assert s.open(resume=False) == set()
-    rows = {k: np.zeros(2) for k in empty_rows(0)}
+    rows = ChunkRows(2)
+    for k in NUMERIC:
+        setattr(rows, k, np.zeros(2))
     for k in ("status", "flags", "message"):
-        rows[k] = np.array(["ok", "ok"])
+        setattr(rows, k, np.array(["ok", "ok"]))
     s.write(0, rows)
     (tmp_path / "chunk_00001.npz").write_bytes(b"PK\x03\x04 truncated")  # a torn file
     (tmp_path / "chunk_00001.npz.abc.tmp").write_bytes(b"partial")

@@ -26,6 +26,7 @@ from femcam.io import read_csv
 from femcam.layers import scene_layer_rows
 from femcam.scene import contact_case, load_scene
 from femcam.sweep import RunOptions, SweepOptions, extras, providers, sweep
+from femcam.sweep.chunk import ChunkRows
 from femcam.wear.options import wear_coefficient_info
 
 EX = "examples/"
@@ -384,8 +385,9 @@ def test_undercut_rows_are_left_out_of_the_providers():
     import types
     scene = load_scene(EX + "seed002_assess.toml")
     r = sweep(scene, SweepOptions(angles=TH8[:4], method="hertz"), RunOptions(workers=1))
-    rows = {k: np.array(v, dtype=object if v.dtype.kind in "US" else float) for k, v in r.table.items()}
-    rows["status"][1] = "undercut"
+    rows = ChunkRows.from_arrays({k: np.array(v, dtype=object if v.dtype.kind in "US" else float)
+                                  for k, v in r.table.items()})
+    rows.status[1] = "undercut"
     task = types.SimpleNamespace(scene=scene, theta=TH8[:4])
     out = providers.assess_chunk(task, rows)
     keep = np.array([0, 2, 3])

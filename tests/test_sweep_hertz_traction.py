@@ -11,6 +11,7 @@ References written here, never femcam output:
   max sigma_x = +2 r p0 at X = -1, max |tau_xz| = r p0, min sigma_z = -p0.
 """
 
+import copy
 import math
 
 import numpy as np
@@ -18,10 +19,10 @@ import pytest
 from scipy.optimize import minimize
 
 from femcam.materials import Material
+from femcam.sweep.chunk import ChunkRows
 from femcam.sweep.options import ContactParams
 from femcam.sweep.realcam import Traction
 from femcam.sweep.realrows import RATIO_STEPS, hertz_answer, hertz_row_traction
-from femcam.sweep.table import empty_rows
 
 NU = 0.3
 MAT = Material(E=210e9, nu=NU)
@@ -71,9 +72,9 @@ def reference_max(q, r):
 
 def _rows(Q_over_F, mu):
     n = len(Q_over_F)
-    rows = empty_rows(n)
+    rows = ChunkRows(n)
     F = np.linspace(100.0, 500.0, n)
-    rows["Fc"][:], rows["a_hertz"][:], rows["p0_hertz"][:] = F, A, P0
+    rows.Fc[:], rows.a_hertz[:], rows.p0_hertz[:] = F, A, P0
     cp = ContactParams(Rr=0.01, length=0.01, cam=MAT, roller=MAT, mu=mu, plane="strain", sliding=1)
     tr = Traction(np.asarray(Q_over_F, float) * F, np.ones(n, int), "test")
     flags = [[] for _ in range(n)]
@@ -98,8 +99,8 @@ def test_subsurface_maxima_use_the_row_traction_ratio(answered, i, r):
         val, z = reference_max(q, r)
         # both maximisers converge to ~1e-10 p0; the depth of a flat maximum is fixed only to
         # ~sqrt(value error / curvature): 1e-6 p0 on the value, 1e-4 a on the depth
-        assert rows[f"{col}_max"][i] / P0 == pytest.approx(val, abs=1e-6), (q, r)
-        assert rows[f"{col}_depth"][i] / A == pytest.approx(z, abs=1e-4), (q, r)
+        assert getattr(rows, f"{col}_max")[i] / P0 == pytest.approx(val, abs=1e-6), (q, r)
+        assert getattr(rows, f"{col}_depth")[i] / A == pytest.approx(z, abs=1e-4), (q, r)
 
 
 @pytest.mark.parametrize("i, r", [(0, 0.05), (1, MU), (2, 0.0), (3, 0.0123), (4, MU)])
@@ -108,10 +109,10 @@ def test_surface_extremes_use_the_row_traction_ratio(answered, i, r):
     # off the ratio grid the ratio is taken within mu / (2 RATIO_STEPS): each extreme moves by
     # its slope (d/dr of the closed forms: 4r/sqrt(1+4r^2) <= 2, 2, 1) times that
     tol = 1e-6 + 2.0 * MU / (2 * RATIO_STEPS) * (i == 3)
-    assert rows["surf_sx_min"][i] / P0 == pytest.approx(-math.sqrt(1 + 4 * r * r), abs=tol)
-    assert rows["surf_sx_max"][i] / P0 == pytest.approx(2 * r, abs=tol)
-    assert rows["surf_txz_absmax"][i] / P0 == pytest.approx(r, abs=tol)
-    assert rows["surf_sz_min"][i] / P0 == pytest.approx(-1.0, abs=1e-6)
+    assert rows.surf_sx_min[i] / P0 == pytest.approx(-math.sqrt(1 + 4 * r * r), abs=tol)
+    assert rows.surf_sx_max[i] / P0 == pytest.approx(2 * r, abs=tol)
+    assert rows.surf_txz_absmax[i] / P0 == pytest.approx(r, abs=tol)
+    assert rows.surf_sz_min[i] / P0 == pytest.approx(-1.0, abs=1e-6)
 
 
 def test_off_grid_ratio_is_within_the_grid_bound(answered):
@@ -121,17 +122,17 @@ def test_off_grid_ratio_is_within_the_grid_bound(answered):
     h = MU / (2 * RATIO_STEPS)
     val = reference_max("von_mises", 0.0123)[0]
     spread = max(abs(reference_max("von_mises", 0.0123 + s * h)[0] - val) for s in (-1, 1))
-    assert rows["vm_max"][3] / P0 == pytest.approx(val, abs=spread + 1e-6)
+    assert rows.vm_max[3] / P0 == pytest.approx(val, abs=spread + 1e-6)
 
 
 def test_traction_columns_and_states(answered):
     rows, flags = answered
-    F = rows["Fc"]
-    np.testing.assert_allclose(rows["Q"], [0.05 * F[0], MU * F[1], 0.0, -0.0123 * F[3], MU * F[4]],
+    F = rows.Fc
+    np.testing.assert_allclose(rows.Q, [0.05 * F[0], MU * F[1], 0.0, -0.0123 * F[3], MU * F[4]],
                                rtol=1e-12)
-    assert list(rows["slip_state"]) == ["partial slip", "sliding", "none", "partial slip", "sliding"]
+    assert list(rows.slip_state) == ["partial slip", "sliding", "none", "partial slip", "sliding"]
     # Cattaneo-Mindlin stick zone 2 a sqrt(1 - |Q|/(mu F)) (Johnson 1985 §7.2)
-    assert rows["stick_width"][0] == pytest.approx(2 * A * math.sqrt(1 - 0.05 / MU), rel=1e-12)
+    assert rows.stick_width[0] == pytest.approx(2 * A * math.sqrt(1 - 0.05 / MU), rel=1e-12)
     assert all(f == [] for f in flags)
 
 
@@ -140,10 +141,10 @@ def test_frictionless_row_with_mechanism_Q_is_flagged():
     says so."""
     rows, flags = _rows([0.02, 0.0], 0.0)
     assert flags == [["Q_without_friction"], []]
-    assert rows["Q"][0] == 0.0 and rows["slip_state"][0] == "none"
+    assert rows.Q[0] == 0.0 and rows.slip_state[0] == "none"
     val, z = reference_max("von_mises", 0.0)
-    assert rows["vm_max"][0] / P0 == pytest.approx(val, abs=1e-6)
-    assert rows["vm_depth"][0] / A == pytest.approx(z, abs=1e-4)
+    assert rows.vm_max[0] / P0 == pytest.approx(val, abs=1e-6)
+    assert rows.vm_depth[0] / A == pytest.approx(z, abs=1e-4)
 
 
 def test_row_traction_for_the_analytic_vtu(answered):
@@ -152,5 +153,6 @@ def test_row_traction_for_the_analytic_vtu(answered):
     assert hertz_row_traction(rows, 0, cp) == pytest.approx((0.05, 1))
     assert hertz_row_traction(rows, 3, cp) == pytest.approx((0.0123, -1))
     assert hertz_row_traction(rows, 2, cp) == (0.0, -1)          # no traction: cp's direction
-    rows = dict(rows, Q=np.full(5, np.nan))
+    rows = copy.copy(rows)                                       # the fixture's rows, shallow
+    rows.Q = np.full(5, np.nan)
     assert hertz_row_traction(rows, 1, cp) == (MU, -1)           # no Q: full sliding

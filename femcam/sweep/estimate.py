@@ -395,13 +395,13 @@ def predict_a_over_h(est: FamilyEstimate, target: float, quantity: str = "p0") -
     return est.a_over_h * (max(e0, 1e-300) / target) ** (1.0 / RATES[quantity])
 
 
-def fill_row_estimate(rows: dict, i: int, est: FamilyEstimate | None, a_row: float,
+def fill_row_estimate(rows, i: int, est: FamilyEstimate | None, a_row: float,
                       a_model: float, a_over_h: float) -> None:
     """Write row ``i``'s estimates (``err_est_*``, relative) and ``a_over_h_row`` into ``rows``.
 
     Parameters
     ----------
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table (SI).
     i : int
         Row index.
@@ -414,11 +414,11 @@ def fill_row_estimate(rows: dict, i: int, est: FamilyEstimate | None, a_row: flo
     a_over_h : float
         Elements per ``a_model`` of that model [-].
     """
-    rows["a_over_h_row"][i] = a_over_h * a_row / a_model if a_model > 0 else math.nan
+    rows.a_over_h_row[i] = a_over_h * a_row / a_model if a_model > 0 else math.nan
     if est is None:
         return
     for q, e in row_estimate(est, a_row, a_model).items():
-        rows[f"err_est_{q}"][i] = e
+        getattr(rows, f"err_est_{q}")[i] = e
 
 
 def estimate_families(records, cp: ContactParams, options: ResolvedOptions,

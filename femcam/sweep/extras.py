@@ -246,7 +246,7 @@ def fill_extras(task, rows, solved: dict | None = None) -> None:
     ----------
     task : femcam.sweep.pipeline.ChunkTask
         ``scene``, ``theta``, ``options``, ``slip``, ``wear_k`` of the chunk.
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table with the contact and wear columns filled.
     solved : dict[int, femcam.fe.ContactResult], optional
         The FE solves that answered the chunk's rows (row index -> result), for the providers
@@ -255,7 +255,7 @@ def fill_extras(task, rows, solved: dict | None = None) -> None:
     ps = providers_for(task.scene)
     if not ps:
         return
-    n = rows["theta"].size
+    n = rows.theta.size
     errors = []
     for p in ps:
         try:
@@ -264,13 +264,13 @@ def fill_extras(task, rows, solved: dict | None = None) -> None:
             errors.append(f"{p.name}: {type(exc).__name__}: {exc}")
             vals = {}
         for c in p.columns:
-            rows[c.si] = np.asarray(vals.get(c.si, np.full(n, np.nan)), float)
+            setattr(rows, c.si, np.asarray(vals.get(c.si, np.full(n, np.nan)), float))
         for t in p.text:
-            rows[t] = np.asarray(vals.get(t, np.full(n, "")), dtype=object)
+            setattr(rows, t, np.asarray(vals.get(t, np.full(n, "")), dtype=object))
         for k in ("wear_depth", "wear_source"):
             if k in vals:
-                rows[k] = vals[k]
-    rows[ERROR_COLUMN] = np.full(n, " | ".join(errors), dtype=object)
+                setattr(rows, k, vals[k])
+    setattr(rows, ERROR_COLUMN, np.full(n, " | ".join(errors), dtype=object))
 
 
 def _peak(table, name, ok, how=np.nanmax):

@@ -48,6 +48,7 @@ from ..hertz.conformity import (
 from ..io import vtu_name, write_fe_vtu, write_hertz_vtu
 from ..wear.slip import SlipResult
 from .cache import ModelCache, default_cache
+from .chunk import ChunkRows
 from .diskcache import attach
 from .estimate import fill_row_estimate
 from .extras import fill_extras
@@ -66,7 +67,7 @@ from .realrows import (
     hertz_stress,
 )
 from .ringhead import ring_headline
-from .table import TEXT_COLUMNS, empty_rows
+from .table import TEXT_COLUMNS
 from .wear import fill_wear
 
 #: result columns that are 0 (not NaN) at lift-off: no contact has zero width and zero pressure
@@ -105,11 +106,11 @@ def _hertz_rows(rows, flags, idx, cp: ContactParams, F, rho, method: str):
     eps = gap_nonparabolicity(a_h, rho[idx], cp.Rr)
     for i in idx[(rho[idx] < 0) & (eps > NEARLY_CONFORMAL_GAP)]:
         flags[i].append("nearly_conformal")
-    rows["a_hertz"][idx] = hc.a
-    rows["p0_hertz"][idx] = hc.p0
+    rows.a_hertz[idx] = hc.a
+    rows.p0_hertz[idx] = hc.p0
     if method == "hertz":
         hertz_stress(rows, idx, cp, hc.p0, hc.a)
-        rows["model"][idx] = "hertz"
+        rows.model[idx] = "hertz"
 
 
 # ---------------------------------------------------------------------------------------------
@@ -190,7 +191,7 @@ class ChunkTask:
         return self.options.for_family(self.a_over_h.get(int(fid)))
 
 
-def analytic_rows(scene, theta) -> tuple[dict, object]:
+def analytic_rows(scene, theta) -> tuple[ChunkRows, object]:
     """Rows with the kinematics/profile/load columns filled, and the scene state.
 
     Parameters
@@ -201,38 +202,36 @@ def analytic_rows(scene, theta) -> tuple[dict, object]:
 
     Returns
     -------
-    rows : dict[str, ndarray]
-        The table (:func:`femcam.sweep.table.empty_rows`) with ``theta, s, v, a, j, phi, rho,
+    rows : ChunkRows
+        The chunk's table (:class:`~femcam.sweep.chunk.ChunkRows`) with ``theta, s, v, a, j, phi, rho,
         Fc`` (SI) filled (knife-edge: of the cam cut for the tip radius).
     state : femcam.scene.SceneState
     """
     theta = np.asarray(theta, dtype=float)
     st = contact_scene(scene).analyse(theta)  # knife-edge: the cam cut for the radiused tip
-    rows = empty_rows(theta.size)
-    rows["theta"][:] = theta
+    rows = ChunkRows(theta.size)
+    rows.theta[:] = theta
     for name in ("s", "v", "a", "j", "phi", "rho", "Fc"):
-        rows[name][:] = np.asarray(getattr(st, name), dtype=float)
+        getattr(rows, name)[:] = np.asarray(getattr(st, name), dtype=float)
     return rows, st
 
 
-def contact_mask(rows, st) -> np.ndarray:
+def contact_mask(st) -> np.ndarray:
     """Angles in contact: no lift-off and ``Fc > 0``.
 
     Parameters
     ----------
-    rows : dict[str, ndarray]
-        The table with ``Fc`` (N).
     st : femcam.scene.SceneState
-        With ``liftoff`` (bool, shape (n,)).
+        With ``liftoff`` (bool, shape (n,)) and ``Fc`` (N, shape (n,)).
 
     Returns
     -------
     ndarray of bool, shape (n,)
     """
-    return ~np.asarray(st.liftoff, dtype=bool) & (rows["Fc"] > 0.0)
+    return ~np.asarray(st.liftoff, dtype=bool) & (np.asarray(st.Fc, dtype=float) > 0.0)
 
 
-def run_chunk(task: ChunkTask) -> dict:
+def run_chunk(task: ChunkTask) -> ChunkRows:
     """Compute the rows of one chunk (runs in a worker process).
 
     In worker processes and Dask worker threads BLAS runs single-threaded (the parallelism is
@@ -245,7 +244,7 @@ def run_chunk(task: ChunkTask) -> dict:
 
     Returns
     -------
-    dict[str, ndarray]
+    ChunkRows
         The chunk's rows (SI, see :mod:`femcam.sweep.table`).
     """
     if multiprocessing.parent_process() is None and threading.current_thread() is threading.main_thread():
@@ -254,38 +253,38 @@ def run_chunk(task: ChunkTask) -> dict:
         return _run_chunk(task)
 
 
-def _run_chunk(task: ChunkTask) -> dict:
+def _run_chunk(task: ChunkTask) -> ChunkRows:
     opts = task.options
     attach(default_cache(), task.disk)
     cp = contact_params(task.scene)
     rows, st = analytic_rows(task.scene, task.theta)
-    n = rows["theta"].size
-    contact = contact_mask(rows, st)
+    n = rows.theta.size
+    contact = contact_mask(st)
     flags = [[] for _ in range(n)]
 
     # lift-off: no contact -- zero width, zero pressure, zero stress
     lift = np.flatnonzero(~contact)
-    rows["status"][lift] = "liftoff"
+    rows.status[lift] = "liftoff"
     for name in ZERO_AT_LIFTOFF:
-        rows[name][lift] = 0.0
+        getattr(rows, name)[lift] = 0.0
     # the roller does not fit the concave cam: no contact solution at all
-    nofit = contact & roller_does_not_fit(rows["rho"], cp.Rr)
+    nofit = contact & roller_does_not_fit(rows.rho, cp.Rr)
     for i in np.flatnonzero(nofit):
-        rows["status"][i] = "undercut"
-        rows["message"][i] = undercut_message(float(rows["rho"][i]), cp.Rr)
+        rows.status[i] = "undercut"
+        rows.message[i] = undercut_message(float(rows.rho[i]), cp.Rr)
     good = np.flatnonzero(contact & ~nofit)
     if task.jump is not None:
-        rows["curvature_jump"][:] = task.jump
-    rows["fe_time"][:] = 0.0
-    rows["build_time"][:] = 0.0
-    _hertz_rows(rows, flags, good, cp, rows["Fc"], rows["rho"], opts.method)
+        rows.curvature_jump[:] = task.jump
+    rows.fe_time[:] = 0.0
+    rows.build_time[:] = 0.0
+    _hertz_rows(rows, flags, good, cp, rows.Fc, rows.rho, opts.method)
     if task.scene.follower.flat_face:  # past the face end: an edge contact, never Hertz
         good = flat_edge_rows(task.scene, cp, rows, good)
     vtk_fe, solved = {}, {}
     if opts.method == "hertz":
-        rows["a_fe"][:] = np.nan
-        rows["p0_fe"][:] = np.nan
-        rows["status"][good] = "ok"
+        rows.a_fe[:] = np.nan
+        rows.p0_fe[:] = np.nan
+        rows.status[good] = "ok"
     else:
         fe = _choose_models(task, cp, rows, flags, good)
         if task.scene.follower.flat_face:
@@ -296,19 +295,19 @@ def _run_chunk(task: ChunkTask) -> dict:
                       if task.vtk_dir is not None and task.vtk_mask is not None and task.vtk_mask[i]}
     ring = ring_headline(task, rows)  # a roller on a pin or needles: the ring answers
     fill_wear(rows, task.slip, task.wear_k, "fe" if ring.any() else opts.method)
-    rows["wear_source"] = np.where(ring & (rows["wear_source"] == "fe"), "ring", rows["wear_source"])
+    rows.wear_source = np.where(ring & (rows.wear_source == "fe"), "ring", rows.wear_source)
     # extra column providers (femcam.sweep.extras), after contact and wear; the layers take
     # their columns from the solves that answered the headline
     fill_extras(task, rows, solved)
     solved = None
     _write_vtus(task, cp, rows, vtk_fe)  # last: not part of any timing column
     omitted = [flag for flag, _ in omitted_physics(task.scene, opts.method)]
-    for i in np.flatnonzero(rows["status"] == "ok"):   # never silently (femcam.sweep.extras)
+    for i in np.flatnonzero(rows.status == "ok"):   # never silently (femcam.sweep.extras)
         flags[i].extend(omitted)
     for i in range(n):
-        rows["flags"][i] = ";".join(flags[i])
+        rows.flags[i] = ";".join(flags[i])
     for name in TEXT_COLUMNS:
-        rows[name] = np.asarray(rows[name]).astype(str)
+        setattr(rows, name, np.asarray(getattr(rows, name)).astype(str))
     if task.delay_s > 0:
         time.sleep(task.delay_s)
     return rows
@@ -317,9 +316,9 @@ def _run_chunk(task: ChunkTask) -> dict:
 def _choose_models(task: ChunkTask, cp: ContactParams, rows, flags, good) -> np.ndarray:
     """The error estimates of rows ``good``; method ``auto``: Hertz answers the rows within the
     tolerance (not in a curvature jump's span). Returns the rows the FE answers."""
-    e_arc, e_h = arc_error_estimate(task.scene, rows["theta"][good], rows["a_hertz"][good], cp.Rr)
-    rows["est_err_arc"][good] = e_arc / 100.0
-    rows["est_err_hertz"][good] = e_h / 100.0
+    e_arc, e_h = arc_error_estimate(task.scene, rows.theta[good], rows.a_hertz[good], cp.Rr)
+    rows.est_err_arc[good] = e_arc / 100.0
+    rows.est_err_hertz[good] = e_h / 100.0
     if task.options.method != "auto" or (cp.coat_body is not None and not task.scene.follower.flat_face):
         return good   # a coated body: Hertz (homogeneous) is not the scene's model
     hz = (task.hertz[good] if task.hertz is not None else
@@ -338,23 +337,23 @@ def _fe_rows(task: ChunkTask, cp: ContactParams, rows, flags, good, cache: Model
         try:
             solved[int(i)] = _fe_angle(task, cp, rows, flags, int(i), cache)
         except (FemcamError, ValueError, ArithmeticError, RuntimeError, MemoryError) as exc:
-            rows["status"][i] = "failed"
+            rows.status[i] = "failed"
             msg = f"{type(exc).__name__}: {exc}"
             if os.environ.get("FEMCAM_DEBUG"):
                 msg += " | " + traceback.format_exc().replace("\n", " | ")
-            rows["message"][i] = msg
-        rows["build_time"][i] = cache.stats["build_time"] - b0
-    ok = rows["status"] == "ok"
+            rows.message[i] = msg
+        rows.build_time[i] = cache.stats["build_time"] - b0
+    ok = rows.status == "ok"
     with np.errstate(invalid="ignore", divide="ignore"):
-        rows["err_a"][:] = np.where(ok, rows["a_fe"] / rows["a_hertz"] - 1.0, np.nan)
-        rows["err_p0"][:] = np.where(ok, rows["p0_fe"] / rows["p0_hertz"] - 1.0, np.nan)
+        rows.err_a[:] = np.where(ok, rows.a_fe / rows.a_hertz - 1.0, np.nan)
+        rows.err_p0[:] = np.where(ok, rows.p0_fe / rows.p0_hertz - 1.0, np.nan)
     return solved
 
 
 def _fe_angle(task: ChunkTask, cp: ContactParams, rows, flags, i: int,
               cache: ModelCache) -> ContactResult:
     """Solve row ``i`` with its family's model (or a model of its own) and fill the row."""
-    F, rho = float(rows["Fc"][i]), float(rows["rho"][i])
+    F, rho = float(rows.Fc[i]), float(rows.rho[i])
     fid = int(task.family[i])
     opts = task.family_options(fid)
     model = cache.model_for(cp, *task.refs[fid], opts)
@@ -367,32 +366,32 @@ def _fe_angle(task: ChunkTask, cp: ContactParams, rows, flags, i: int,
     jump = bool(task.jump[i]) if task.jump is not None else False
     tol_pct = 100.0 * task.options.tolerance
     res = None
-    if jump or 100.0 * rows["est_err_arc"][i] > tol_pct:  # the exact gap where the choice needs it
-        res = exact_solve(task.scene, cp, model, float(rows["theta"][i]), F, Q=Q, jump=jump,
+    if jump or 100.0 * rows.est_err_arc[i] > tol_pct:  # the exact gap where the choice needs it
+        res = exact_solve(task.scene, cp, model, float(rows.theta[i]), F, Q=Q, jump=jump,
                           tol_pct=tol_pct)
     if res is not None:
         r = res.result
         fill_choice(rows, i, res)
     else:
         r = cache.solve(model, F, rho, cp.mu, sl, check=not own, Q=Q, rolling=roll)
-        rows["model"][i] = "fe_arc"
+        rows.model[i] = "fe_arc"
     if cp.coat_body is not None:   # the coating band is in this model (sweep.cache.build_model)
-        rows["model"][i] = rows["model"][i] + COATED
-    rows["fe_time"][i] = r.timings["contact"] + r.timings.get("recovery", 0.0)
+        rows.model[i] = rows.model[i] + COATED
+    rows.fe_time[i] = r.timings["contact"] + r.timings.get("recovery", 0.0)
     flags[i].extend(fe_fill(rows, i, r))
-    rows["Q_over_muFc"][i] = r.Q / (cp.mu * F) if cp.mu > 0 else np.nan
-    rows["family"][i] = fid
-    fill_row_estimate(rows, i, task.estimates.get(fid), float(rows["a_hertz"][i]), model.a_ref,
+    rows.Q_over_muFc[i] = r.Q / (cp.mu * F) if cp.mu > 0 else np.nan
+    rows.family[i] = fid
+    fill_row_estimate(rows, i, task.estimates.get(fid), float(rows.a_hertz[i]), model.a_ref,
                       opts.a_over_h)
     if task.options.rtol is not None and _rtol_missed(rows, i, task.estimates.get(fid), task.options):
         flags[i].append("rtol_not_met")
     if r.outside_hertz and "hertz_large_a" not in flags[i]:
         flags[i].append("hertz_large_a")
     if r.converged:
-        rows["status"][i] = "ok"
+        rows.status[i] = "ok"
     else:
-        rows["status"][i] = "failed"
-        rows["message"][i] = (f"FE contact solve did not converge ({r.iterations} iterations, "
+        rows.status[i] = "failed"
+        rows.message[i] = (f"FE contact solve did not converge ({r.iterations} iterations, "
                               f"residual {r.residual:.3g})")
     return r
 
@@ -404,14 +403,14 @@ def _write_vtus(task: ChunkTask, cp: ContactParams, rows, vtk_fe: dict) -> None:
         return
     for i, r in vtk_fe.items():
         write_fe_vtu(Path(task.vtk_dir) / vtu_name(task.theta[i]), r, wear=_vtu_wear(task, rows, i))
-    analytic = (rows["status"] == "ok") & np.isin(rows["model"], ("hertz", "hertz+ring"))
+    analytic = (rows.status == "ok") & np.isin(rows.model, ("hertz", "hertz+ring"))
     if task.options.method == "hertz":
-        analytic = rows["status"] == "ok"
+        analytic = rows.status == "ok"
     for i in np.flatnonzero(task.vtk_mask & analytic):
         if int(i) not in vtk_fe:
             # method auto: the traction the row carries (|Q|/Fc), as its stress columns
             mu, d = (cp.mu, cp.sliding) if task.options.method == "hertz" else hertz_row_traction(rows, i, cp)
-            hc = LineContact(F=rows["Fc"][i], length=cp.length, R1=rows["rho"][i], R2=cp.Rr,
+            hc = LineContact(F=rows.Fc[i], length=cp.length, R1=rows.rho[i], R2=cp.Rr,
                              cam=cp.cam, roller=cp.roller, mu=mu, plane=cp.plane, direction=d)
             write_hertz_vtu(Path(task.vtk_dir) / vtu_name(task.theta[i]), hc,
                             wear=_vtu_wear(task, rows, i))
@@ -421,9 +420,9 @@ def _vtu_wear(task: ChunkTask, rows, i) -> dict | None:
     """Wear data for the VTU of row ``i``: k, v_slip, V_cam, depth per revolution, angle."""
     if task.slip is None or not np.isfinite(task.wear_k):
         return None
-    return {"k": float(task.wear_k), "v_slip": float(rows["v_slip"][i]),
-            "V_cam": float(rows["V_cam"][i]), "wear_depth_per_rev": float(rows["wear_depth"][i]),
-            "theta_deg": float(np.degrees(rows["theta"][i])), "Fc": float(rows["Fc"][i])}
+    return {"k": float(task.wear_k), "v_slip": float(rows.v_slip[i]),
+            "V_cam": float(rows.V_cam[i]), "wear_depth_per_rev": float(rows.wear_depth[i]),
+            "theta_deg": float(np.degrees(rows.theta[i])), "Fc": float(rows.Fc[i])}
 
 
 def _rtol_missed(rows, i: int, est, options) -> bool:
@@ -432,7 +431,7 @@ def _rtol_missed(rows, i: int, est, options) -> bool:
     filled later) the family estimate carried to the row."""
     for q in options.rtol_on:
         col = rows.get(f"err_est_{q}")
-        e = col[i] if col is not None else (est.carried(q, float(rows["a_over_h_row"][i]))
+        e = col[i] if col is not None else (est.carried(q, float(rows.a_over_h_row[i]))
                                              if est is not None else np.nan)
         if e > options.rtol:
             return True

@@ -150,8 +150,6 @@ HALFSPACE = tuple(Column(f"hs_{c.si}", c.csv, c.factor, c.description)
 #: the ring model's cam contact answers the headline (``p0_fe``, ``p0_fit``, ``a_fe``, ``err_*``;
 #: :mod:`femcam.sweep.ringhead`): those keys of :data:`femcam.bodies.rows.CSV_COLUMNS` are no
 #: side columns; the bore, pin and needle columns are
-#: key of the ring model's refusal in a chunk's rows (popped by :func:`ring_chunk`, which raises it)
-RING_ERROR = "__ring_error__"
 RING_HEADLINE_KEYS = ("theta", "p0", "a", "p0_peak", "p0_solid", "a_solid", "dp0", "da")
 #: two-level estimates of the ring's own stresses (:func:`femcam.sweep.ringhead.ring_level_estimate`;
 #: relative, the CSV in percent of the row's value)
@@ -183,14 +181,16 @@ LAYER_ESTIMATES = (Column("err_est_interface_tau", "err_est_interface_tau_pct", 
                           "estimated discretisation error of interface_sn_min_MPa"))
 
 
-def axial_contact(rows) -> tuple[np.ndarray, np.ndarray]:
+def axial_contact(p_axial_peak, w_max) -> tuple[np.ndarray, np.ndarray]:
     """``(a, p0)`` (m, Pa) of the most loaded slice of a finite-length contact: ``p0 =
     p_axial_peak`` and ``a = 2 w_max / (pi p_axial_peak)``, so ``pi a p0 / 2 = w_max``.
 
     Parameters
     ----------
-    rows : dict[str, ndarray]
-        ``hs_p_axial_peak`` [Pa] and ``hs_w_max`` [N/m], shape (n,).
+    p_axial_peak : array_like, shape (n,)
+        Axial peak pressure (the chunk's ``hs_p_axial_peak``) [Pa].
+    w_max : array_like, shape (n,)
+        Load per length of the most loaded slice (``hs_w_max``) [N/m].
 
     Returns
     -------
@@ -199,12 +199,12 @@ def axial_contact(rows) -> tuple[np.ndarray, np.ndarray]:
     p0 : ndarray, shape (n,)
         Peak pressure [Pa] (NaN there too).
 
-    >>> a, p0 = axial_contact({"hs_p_axial_peak": np.array([1e9]), "hs_w_max": np.array([1e5])})
+    >>> a, p0 = axial_contact(np.array([1e9]), np.array([1e5]))
     >>> round(float(a[0]) * 1e6, 3), float(p0[0])
     (63.662, 1000000000.0)
     """
-    p = np.asarray(rows["hs_p_axial_peak"], float)
-    w = np.asarray(rows["hs_w_max"], float)
+    p = np.asarray(p_axial_peak, float)
+    w = np.asarray(w_max, float)
     ok = np.isfinite(p) & np.isfinite(w) & (p > 0)
     a = np.where(ok, 2.0 * w / (np.pi * np.where(ok, p, 1.0)), np.nan)
     return a, np.where(ok, p, np.nan)
@@ -214,16 +214,16 @@ def _fe_slice(task, rows, out) -> None:
     """The 2D FE at the most loaded slice: ``F = w_max * length`` at every ``ok`` row (method
     fe), with the family's model where it covers that load, else a model of the angle's own (as
     the chunk runner does), through the process's :class:`~femcam.sweep.cache.ModelCache`."""
-    n = rows["theta"].size
+    n = rows.theta.size
     for c in FE_SLICE:
         out[c.si] = np.full(n, np.nan)
     out["fe_load_basis"] = np.full(n, "", dtype=object)
     if task.options.method != "fe":
         return
     cp, cache = contact_params(task.scene), default_cache()
-    status = np.asarray(rows["status"]).astype(str)
+    status = np.asarray(rows.status).astype(str)
     for i in np.flatnonzero((status == "ok") & np.isfinite(out["hs_w_max"])):
-        F, rho = float(out["hs_w_max"][i]) * cp.length, float(rows["rho"][i])
+        F, rho = float(out["hs_w_max"][i]) * cp.length, float(rows.rho[i])
         try:
             r = _solve_slice(task, cp, cache, i, F, rho)
         except (FemcamError, ValueError, ArithmeticError, RuntimeError, MemoryError) as exc:
@@ -289,7 +289,7 @@ def halfspace_chunk(task, rows) -> dict:
     ----------
     task : femcam.sweep.pipeline.ChunkTask
         The chunk (scene, ``theta`` [rad], options, slip, ``wear_k``).
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table with the contact and wear columns filled (SI).
 
     Returns
@@ -301,12 +301,12 @@ def halfspace_chunk(task, rows) -> dict:
     out = halfspace_rows(task.scene, task.theta)
     _fe_slice(task, rows, out)
     if task.slip is not None and math.isfinite(task.wear_k):
-        a, p0 = axial_contact(out)
-        use = np.isfinite(a) & (np.asarray(rows["status"]).astype(str) == "ok")
-        depth = wear_depth_per_angle(rows["theta"], np.where(use, a, 0.0), np.where(use, p0, 0.0),
-                                     np.where(use, rows["Fc"], 0.0), task.slip, task.wear_k)
-        out["wear_depth"] = np.where(use, depth, rows["wear_depth"])
-        out["wear_source"] = np.where(use, "axial_peak", np.asarray(rows["wear_source"]).astype(str))
+        a, p0 = axial_contact(out["hs_p_axial_peak"], out["hs_w_max"])
+        use = np.isfinite(a) & (np.asarray(rows.status).astype(str) == "ok")
+        depth = wear_depth_per_angle(rows.theta, np.where(use, a, 0.0), np.where(use, p0, 0.0),
+                                     np.where(use, rows.Fc, 0.0), task.slip, task.wear_k)
+        out["wear_depth"] = np.where(use, depth, rows.wear_depth)
+        out["wear_source"] = np.where(use, "axial_peak", np.asarray(rows.wear_source).astype(str))
     return out
 
 
@@ -318,7 +318,7 @@ def assess_chunk(task, rows) -> dict:
     ----------
     task : femcam.sweep.pipeline.ChunkTask
         The chunk (scene, ``theta`` [rad], options, slip, ``wear_k``).
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table with the contact and wear columns filled (SI).
 
     Returns
@@ -327,15 +327,15 @@ def assess_chunk(task, rows) -> dict:
         ``assess_*`` columns (SI, :data:`femcam.assess.COLUMNS`) and the text
         columns ``assess_regime``, ``assess_flags``, ``assess_source``.
     """
-    table = {"a_fe": rows["a_fe"], "p0_fe": rows["p0_fe"], "tau1_max": rows["tau1_max"],
-             "txz_range_max": rows["txz_range_max"]}
+    table = {"a_fe": rows.a_fe, "p0_fe": rows.p0_fe, "tau1_max": rows.tau1_max,
+             "txz_range_max": rows.txz_range_max}
     axial = "hs_p_axial_peak" in rows
     if axial:  # finite length: the most loaded slice, Hertz shape factors at its p0
-        a, p0 = axial_contact(rows)
-        table = {"a_fe": a, "p0_fe": p0, "tau1_max": rows["tau1_max_peak_slice"],
-                 "txz_range_max": rows["txz_range_max_peak_slice"]}
+        a, p0 = axial_contact(rows.hs_p_axial_peak, rows.hs_w_max)
+        table = {"a_fe": a, "p0_fe": p0, "tau1_max": rows.tau1_max_peak_slice,
+                 "txz_range_max": rows.txz_range_max_peak_slice}
     n = task.theta.size
-    idx = np.flatnonzero(np.asarray(rows["status"]).astype(str) != "undercut")
+    idx = np.flatnonzero(np.asarray(rows.status).astype(str) != "undercut")
     out = {assess_name(c.si): np.full(n, np.nan) for c in ASSESS_COLUMNS if c.si not in ASSESS_SKIP}
     out.update({t: np.full(n, "", dtype=object) for t in ASSESS_TEXT})
     if idx.size == 0:
@@ -357,7 +357,7 @@ def assess_chunk(task, rows) -> dict:
 def _contact_rows(rows) -> np.ndarray:
     """Rows with a contact solution to build on: ``ok``, or ``failed`` (the FE failed there, the
     contact exists); lift-off and undercut rows (the roller does not fit) get NaN."""
-    status = np.asarray(rows["status"]).astype(str)
+    status = np.asarray(rows.status).astype(str)
     return (status == "ok") | (status == "failed")
 
 
@@ -370,7 +370,7 @@ def ring_chunk(task, rows) -> dict:
     ----------
     task : femcam.sweep.pipeline.ChunkTask
         The chunk (scene, ``theta`` [rad], options, slip, ``wear_k``).
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table with the contact, wear and ``ring_*`` columns filled (SI).
 
     Returns
@@ -383,7 +383,7 @@ def ring_chunk(task, rows) -> dict:
     FemcamError
         The ring model's refusal kept by the headline step (the provider's columns stay NaN).
     """
-    exc = rows.pop(RING_ERROR, None)
+    exc, rows.ring_error = rows.ring_error, None
     if exc is not None:
         raise exc
     n = task.theta.size
@@ -398,7 +398,7 @@ def cam_disk_chunk(task, rows) -> dict:
     ----------
     task : femcam.sweep.pipeline.ChunkTask
         The chunk (scene, ``theta`` [rad], options, slip, ``wear_k``).
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table with the contact and wear columns filled (SI).
 
     Returns
@@ -406,7 +406,7 @@ def cam_disk_chunk(task, rows) -> dict:
     dict[str, ndarray]
         ``camdisk_*`` columns (SI) and ``camdisk_flags``.
     """
-    Fc = np.where(_contact_rows(rows), rows["Fc"], 0.0)   # cam_disk_rows: Fc <= 0 -> NaN row
+    Fc = np.where(_contact_rows(rows), rows.Fc, 0.0)   # cam_disk_rows: Fc <= 0 -> NaN row
     model = cam_disk_model(task.scene)
     r = cam_disk_rows(task.scene, task.theta, Fc, model=model)
     out = {f"camdisk_{k}": np.asarray(r[k], float) for k in CAM_CSV_COLUMNS}
@@ -503,7 +503,7 @@ def layers_chunk(task, rows, solved) -> dict:
     ----------
     task : femcam.sweep.pipeline.ChunkTask
         The chunk (scene, ``theta`` [rad], options, slip, ``wear_k``).
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table with the contact and wear columns filled (SI).
     solved : dict[int, femcam.fe.ContactResult]
         The FE solves that answered the chunk's rows (row index -> result).
@@ -518,7 +518,7 @@ def layers_chunk(task, rows, solved) -> dict:
     n = task.theta.size
     out = {c.si: np.full(n, np.nan) for c in LAYERS + LAYER_ESTIMATES}
     out["layer_source"] = np.full(n, "", dtype=object)
-    status = np.asarray(rows["status"]).astype(str)
+    status = np.asarray(rows.status).astype(str)
     contact = _contact_rows(rows)
     head = [i for i in np.flatnonzero(contact) if i in solved and status[i] == "ok"]
     if head:
@@ -549,9 +549,9 @@ def _layer_estimate(task, rows, i: int, out: dict) -> None:
     """Row ``i``'s interface-stress estimates (:data:`LAYER_ESTIMATES`): its family's two-level
     estimate carried to the row's own ``a_over_h_row`` (``e_ref (n_ref / n_row)^p``, as
     :func:`femcam.sweep.estimate.row_estimate`); NaN without a family estimate."""
-    fam = rows["family"][i]
+    fam = rows.family[i]
     est = task.estimates.get(int(fam)) if np.isfinite(fam) else None
-    n_row = float(rows["a_over_h_row"][i])
+    n_row = float(rows.a_over_h_row[i])
     if est is None or not n_row > 0:
         return
     for c in LAYER_ESTIMATES:
@@ -585,7 +585,7 @@ def coating_wear_chunk(task, rows) -> dict:
     ----------
     task : femcam.sweep.pipeline.ChunkTask
         The chunk (scene, ``theta`` [rad], options, slip, ``wear_k``).
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table with the contact and wear columns filled (SI).
 
     Returns
@@ -595,8 +595,8 @@ def coating_wear_chunk(task, rows) -> dict:
         where positive, and ``wear_source``.
     """
     cw = coating_wear(task.scene)
-    depth = np.asarray(rows["wear_depth"], float)
-    src = np.asarray(rows["wear_source"]).astype(str)
+    depth = np.asarray(rows.wear_depth, float)
+    src = np.asarray(rows.wear_source).astype(str)
     on = np.isfinite(depth) & (depth > 0)
     return {"wear_depth": np.where(on, depth * cw.ratio, depth),
             "wear_source": np.where(on, np.char.add(src, ";coating"), src)}

@@ -44,7 +44,7 @@ def fe_fill(rows, i, r: ContactResult) -> list[str]:
 
     Parameters
     ----------
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table (SI columns, modified in place).
     i : int
         Row index.
@@ -56,27 +56,27 @@ def fe_fill(rows, i, r: ContactResult) -> list[str]:
     list of str
         The row's flags from this solve (:func:`edge_flags`).
     """
-    rows["a_fe"][i] = r.a
-    rows["p0_fe"][i] = r.p0_nodal   # the peak of the solved pressure, not the fit
-    rows["p0_fit"][i] = r.p0
-    rows["vm_max"][i] = r.von_mises_max.value
-    rows["vm_depth"][i] = r.von_mises_max.z
-    rows["tau1_max"][i] = r.tau1_max.value
-    rows["tau1_depth"][i] = r.tau1_max.z
+    rows.a_fe[i] = r.a
+    rows.p0_fe[i] = r.p0_nodal   # the peak of the solved pressure, not the fit
+    rows.p0_fit[i] = r.p0
+    rows.vm_max[i] = r.von_mises_max.value
+    rows.vm_depth[i] = r.von_mises_max.z
+    rows.tau1_max[i] = r.tau1_max.value
+    rows.tau1_depth[i] = r.tau1_max.z
     tr = r.txz_range
-    rows["txz_range_max"][i] = tr.value if tr.inside else np.nan
-    rows["txz_range_depth"][i] = tr.z if tr.inside else np.nan
+    rows.txz_range_max[i] = tr.value if tr.inside else np.nan
+    rows.txz_range_depth[i] = tr.z if tr.inside else np.nan
     if r.sx.size:
-        rows["surf_sx_min"][i] = r.sx.min()
-        rows["surf_sx_max"][i] = r.sx.max()
-        rows["surf_sz_min"][i] = r.sz.min()
-        rows["surf_txz_absmax"][i] = np.abs(r.txz).max()
-    rows["iterations"][i] = r.iterations
-    rows["residual"][i] = r.residual
-    rows["n_dofs"][i] = r.n_dofs
-    rows["Q"][i] = r.Q
-    rows["stick_width"][i] = r.stick_width
-    rows["slip_state"][i] = r.slip_state
+        rows.surf_sx_min[i] = r.sx.min()
+        rows.surf_sx_max[i] = r.sx.max()
+        rows.surf_sz_min[i] = r.sz.min()
+        rows.surf_txz_absmax[i] = np.abs(r.txz).max()
+    rows.iterations[i] = r.iterations
+    rows.residual[i] = r.residual
+    rows.n_dofs[i] = r.n_dofs
+    rows.Q[i] = r.Q
+    rows.stick_width[i] = r.stick_width
+    rows.slip_state[i] = r.slip_state
     return edge_flags(r)
 
 
@@ -86,7 +86,7 @@ def hertz_stress(rows, idx, cp, p0, a, ratio=None) -> None:
 
     Parameters
     ----------
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table (SI columns, modified in place).
     idx : array_like of int, shape (m,)
         Row indices.
@@ -113,14 +113,14 @@ def hertz_stress(rows, idx, cp, p0, a, ratio=None) -> None:
         j, p, b = idx[sel], p0[sel], a[sel]
         # the ratio on the grid mu k_step / RATIO_STEPS: at most RATIO_STEPS + 1 cached maximisations
         k = shape_factors(float(cp.mu) * (int(k_step) / RATIO_STEPS), float(cp.cam.nu), cp.plane)
-        rows["vm_max"][j] = k["von_mises"][0] * p
-        rows["vm_depth"][j] = k["von_mises"][1] * b
-        rows["tau1_max"][j] = k["tau1"][0] * p
-        rows["tau1_depth"][j] = k["tau1"][1] * b
-        rows["txz_range_max"][j] = k["txz_range"][0] * p
-        rows["txz_range_depth"][j] = k["txz_range"][1] * b
+        rows.vm_max[j] = k["von_mises"][0] * p
+        rows.vm_depth[j] = k["von_mises"][1] * b
+        rows.tau1_max[j] = k["tau1"][0] * p
+        rows.tau1_depth[j] = k["tau1"][1] * b
+        rows.txz_range_max[j] = k["txz_range"][0] * p
+        rows.txz_range_depth[j] = k["txz_range"][1] * b
         for name in ("surf_sx_min", "surf_sx_max", "surf_sz_min", "surf_txz_absmax"):
-            rows[name][j] = k[name] * p
+            getattr(rows, name)[j] = k[name] * p
 
 
 def hertz_row_traction(rows, i: int, cp) -> tuple[float, int]:
@@ -128,7 +128,7 @@ def hertz_row_traction(rows, i: int, cp) -> tuple[float, int]:
 
     Parameters
     ----------
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table (``Q`` [N], ``Fc`` [N]).
     i : int
         Row index.
@@ -142,7 +142,7 @@ def hertz_row_traction(rows, i: int, cp) -> tuple[float, int]:
     direction : int
         Sign of ``Q`` on the cam along x (``cp.sliding`` when ``Q`` is 0 or missing).
     """
-    Q, F = float(rows["Q"][i]), float(rows["Fc"][i])
+    Q, F = float(rows.Q[i]), float(rows.Fc[i])
     if not math.isfinite(Q):
         return cp.mu, cp.sliding
     ratio = abs(Q) / F if F > 0 else 0.0
@@ -154,21 +154,21 @@ def fill_choice(rows, i, res) -> None:
 
     Parameters
     ----------
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table (SI columns, modified in place).
     i : int
         Row index.
     res : femcam.fe.choice.AngleResult
         The per-angle answer (errors in %, stored as fractions; Q in N; stick width in m).
     """
-    rows["model"][i] = res.model
-    rows["est_err_arc"][i] = res.est_err_arc_pct / 100.0
-    rows["est_err_hertz"][i] = res.est_err_hertz_pct / 100.0
-    rows["exact_vs_arc_p0"][i] = res.exact_vs_arc_p0_pct / 100.0
-    rows["Q"][i] = res.Q
-    rows["Q_over_muFc"][i] = res.Q_over_muFc
-    rows["stick_width"][i] = res.stick_width
-    rows["slip_state"][i] = res.slip_state
+    rows.model[i] = res.model
+    rows.est_err_arc[i] = res.est_err_arc_pct / 100.0
+    rows.est_err_hertz[i] = res.est_err_hertz_pct / 100.0
+    rows.exact_vs_arc_p0[i] = res.exact_vs_arc_p0_pct / 100.0
+    rows.Q[i] = res.Q
+    rows.Q_over_muFc[i] = res.Q_over_muFc
+    rows.stick_width[i] = res.stick_width
+    rows.slip_state[i] = res.slip_state
 
 
 def family_real_cam(scene, cp, model) -> RealCam:
@@ -242,7 +242,7 @@ def hertz_answer(rows, idx, cp, traction, flags) -> None:
 
     Parameters
     ----------
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table (SI columns, modified in place).
     idx : array_like of int
         Rows Hertz answers.
@@ -258,7 +258,7 @@ def hertz_answer(rows, idx, cp, traction, flags) -> None:
         return
     ratio = np.full(idx.size, cp.mu)
     for n, i in enumerate(idx):
-        F, a = float(rows["Fc"][i]), float(rows["a_hertz"][i])
+        F, a = float(rows.Fc[i]), float(rows.a_hertz[i])
         sl, Q, _ = traction_args(traction, int(i), cp.sliding)
         if Q is None:
             Q, f = sl * cp.mu * F, 1.0
@@ -269,14 +269,14 @@ def hertz_answer(rows, idx, cp, traction, flags) -> None:
             Q = math.copysign(min(abs(Q), cp.mu * F), Q)
             if f < 1:
                 ratio[n] = abs(Q) / F if F > 0 else 0.0
-        rows["Q"][i] = Q
-        rows["Q_over_muFc"][i] = Q / (cp.mu * F) if cp.mu > 0 else np.nan
-        rows["stick_width"][i] = 2 * a * math.sqrt(1 - f) if f < 1 else 0.0
-        rows["slip_state"][i] = "none" if Q == 0 else ("sliding" if f >= 1 else "partial slip")
-        rows["model"][i] = "hertz"
-        rows["p0_fit"][i] = np.nan
-        rows["status"][i] = "ok"
-    hertz_stress(rows, idx, cp, rows["p0_hertz"][idx], rows["a_hertz"][idx], ratio)
+        rows.Q[i] = Q
+        rows.Q_over_muFc[i] = Q / (cp.mu * F) if cp.mu > 0 else np.nan
+        rows.stick_width[i] = 2 * a * math.sqrt(1 - f) if f < 1 else 0.0
+        rows.slip_state[i] = "none" if Q == 0 else ("sliding" if f >= 1 else "partial slip")
+        rows.model[i] = "hertz"
+        rows.p0_fit[i] = np.nan
+        rows.status[i] = "ok"
+    hertz_stress(rows, idx, cp, rows.p0_hertz[idx], rows.a_hertz[idx], ratio)
 
 
 def flat_edge_rows(scene, cp, rows, good) -> np.ndarray:
@@ -289,7 +289,7 @@ def flat_edge_rows(scene, cp, rows, good) -> np.ndarray:
         The scene (cam program, flat-faced follower with offset ``e`` [m]).
     cp : ContactParams
         Contact parameters (``face_length`` [m], None: unlimited).
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table (SI columns, modified in place).
     good : array_like of int
         Contact rows to check.
@@ -302,17 +302,17 @@ def flat_edge_rows(scene, cp, rows, good) -> np.ndarray:
     good = np.asarray(good, int)
     if cp.face_length is None or good.size == 0:
         return good
-    th, a = rows["theta"][good], rows["a_hertz"][good]
+    th, a = rows.theta[good], rows.a_hertz[good]
     off = np.abs(scene.program.derivatives(th).s1 - scene.follower.e) + a
     edge = off > 0.5 * cp.face_length
     if np.any(edge):
         try:
             check_face(scene.program, scene.follower, cp.face_length, th, a)
         except PhysicsError as exc:
-            rows["message"][good[edge]] = str(exc)
-        rows["status"][good[edge]] = "edge_contact"
+            rows.message[good[edge]] = str(exc)
+        rows.status[good[edge]] = "edge_contact"
         for name in ("a_hertz", "p0_hertz"):
-            rows[name][good[edge]] = np.nan
+            getattr(rows, name)[good[edge]] = np.nan
     return good[~edge]
 
 
@@ -342,7 +342,7 @@ def flat_rows(task, cp, rows, good, cache, flags=None) -> dict:
         The chunk (scene, options, ``jump``, ``vtk_mask``).
     cp : ContactParams
         Contact parameters.
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table (SI columns, modified in place).
     good : array_like of int
         Rows the FE answers.
@@ -358,37 +358,37 @@ def flat_rows(task, cp, rows, good, cache, flags=None) -> dict:
     """
     vtk = {}
     tol_pct = 100.0 * task.options.tolerance
-    jump = task.jump if task.jump is not None else np.zeros(rows["theta"].size, bool)
+    jump = task.jump if task.jump is not None else np.zeros(rows.theta.size, bool)
     for i in good:
-        F, rho, th = float(rows["Fc"][i]), float(rows["rho"][i]), float(rows["theta"][i])
+        F, rho, th = float(rows.Fc[i]), float(rows.rho[i]), float(rows.theta[i])
         a = math.sqrt(4 * F * rho / (cp.length * math.pi * cp.E_star))
         b0 = cache.stats["build_time"]
         try:
             rc = _flat_model(cache, task.scene, cp, task.options, a, rho)
             res = solve_angle(rc, th, F, mu=cp.mu, curvature_jump=bool(jump[i]), tol_pct=tol_pct)
         except PhysicsError as exc:  # a cusp or undercut inside the contact zone, with the angle
-            rows["status"][i] = "undercut"
-            rows["message"][i] = str(exc)
+            rows.status[i] = "undercut"
+            rows.message[i] = str(exc)
             continue
         finally:
-            rows["build_time"][i] = cache.stats["build_time"] - b0
+            rows.build_time[i] = cache.stats["build_time"] - b0
         r = res.result
         if r is None:
-            hertz_stress(rows, [i], cp, res.p0_hertz, rows["a_hertz"][i])
-            rows["fe_time"][i] = 0.0
+            hertz_stress(rows, [i], cp, res.p0_hertz, rows.a_hertz[i])
+            rows.fe_time[i] = 0.0
         else:
             row_flags = fe_fill(rows, i, r)
             if flags is not None:
                 flags[i].extend(row_flags)
-            rows["fe_time"][i] = r.timings.get("contact", 0.0) + r.timings.get("recovery", 0.0)
+            rows.fe_time[i] = r.timings.get("contact", 0.0) + r.timings.get("recovery", 0.0)
             if task.vtk_mask is not None and task.vtk_mask[i]:
                 vtk[int(i)] = r
         fill_choice(rows, i, res)
-        rows["status"][i] = "ok" if (r is None or r.converged) else "failed"
+        rows.status[i] = "ok" if (r is None or r.converged) else "failed"
         if r is not None and not r.converged:
-            rows["message"][i] = r.message or "FE contact solve did not converge"
-    ok = (rows["status"] == "ok") & np.isfinite(rows["p0_fe"])
+            rows.message[i] = r.message or "FE contact solve did not converge"
+    ok = (rows.status == "ok") & np.isfinite(rows.p0_fe)
     with np.errstate(invalid="ignore", divide="ignore"):
-        rows["err_a"][:] = np.where(ok, rows["a_fe"] / rows["a_hertz"] - 1.0, np.nan)
-        rows["err_p0"][:] = np.where(ok, rows["p0_fe"] / rows["p0_hertz"] - 1.0, np.nan)
+        rows.err_a[:] = np.where(ok, rows.a_fe / rows.a_hertz - 1.0, np.nan)
+        rows.err_p0[:] = np.where(ok, rows.p0_fe / rows.p0_hertz - 1.0, np.nan)
     return vtk

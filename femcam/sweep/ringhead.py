@@ -65,7 +65,7 @@ from ..errors import FemcamError
 from ..materials import effective_modulus
 from ..mesh import MeshOptions
 from .estimate import QUANTITIES, RATES, FamilyEstimate, coarse_mesh
-from .providers import RING_ERROR, RING_ESTIMATES, RING_HEADLINE_KEYS, _cached, has_support, ring_model
+from .providers import RING_ESTIMATES, RING_HEADLINE_KEYS, _cached, has_support, ring_model
 
 #: elements per reference half-width of the ring model's contact mesh (``ring_model`` builds
 #: with the default MeshOptions, :func:`femcam.bodies.rows.build_for`)
@@ -155,7 +155,7 @@ def contact_rows(rows) -> np.ndarray:
 
     Parameters
     ----------
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table (``status``).
 
     Returns
@@ -163,7 +163,7 @@ def contact_rows(rows) -> np.ndarray:
     ndarray of bool, shape (n,)
         The rows the ring model solves.
     """
-    status = np.asarray(rows["status"]).astype(str)
+    status = np.asarray(rows.status).astype(str)
     return (status == "ok") | (status == "failed")
 
 
@@ -175,7 +175,7 @@ def ring_estimate(rows, i: int, est: FamilyEstimate | None, n_ring: float,
 
     Parameters
     ----------
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table with the solid row's ``err_est_*`` (relative) filled; modified in place.
     i : int
         Row index.
@@ -187,7 +187,7 @@ def ring_estimate(rows, i: int, est: FamilyEstimate | None, n_ring: float,
         The ring model's estimate (:func:`ring_level_estimate`); None: the solid family's
         estimate carried to ``n_ring`` (the rule before the ring's own estimate).
     """
-    rows["a_over_h_row"][i] = n_ring
+    rows.a_over_h_row[i] = n_ring
     if ring_est is not None:
         e = {q: ring_est[q] * (ring_est["a_over_h"] / n_ring) ** RING_RATES[q] for q in ("p0", "a")}
     elif est is not None:
@@ -196,11 +196,11 @@ def ring_estimate(rows, i: int, est: FamilyEstimate | None, n_ring: float,
         e = {"p0": np.nan, "a": np.nan}
     if est is None:
         for q in QUANTITIES:
-            rows[f"err_est_{q}"][i] = np.nan
-    p0_solid = rows["err_est_p0"][i]
+            getattr(rows, f"err_est_{q}")[i] = np.nan
+    p0_solid = rows.err_est_p0[i]
     for q in ("vm", "tau1"):   # the solid stress x p0_ring / p0_solid
-        rows[f"err_est_{q}"][i] = rows[f"err_est_{q}"][i] + e["p0"] + p0_solid
-    rows["err_est_p0"][i], rows["err_est_a"][i] = e["p0"], e["a"]
+        getattr(rows, f"err_est_{q}")[i] = getattr(rows, f"err_est_{q}")[i] + e["p0"] + p0_solid
+    rows.err_est_p0[i], rows.err_est_a[i] = e["p0"], e["a"]
 
 
 def ring_side_estimates(rows, ring_est: dict) -> None:
@@ -211,15 +211,15 @@ def ring_side_estimates(rows, ring_est: dict) -> None:
 
     Parameters
     ----------
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table with the ``ring_*`` side columns (SI); modified in place.
     ring_est : dict
         :func:`ring_level_estimate`.
     """
     for c in RING_ESTIMATES:
         q = c.si.removeprefix("err_est_")
-        value = np.asarray(rows[_RING_VALUE[q]], float)
-        rows[c.si] = np.where(np.isfinite(value), ring_est.get(q, np.nan), np.nan)
+        value = np.asarray(getattr(rows, _RING_VALUE[q]), float)
+        setattr(rows, c.si, np.where(np.isfinite(value), ring_est.get(q, np.nan), np.nan))
 
 
 #: estimated ring quantity -> the side column it estimates
@@ -235,48 +235,48 @@ def ring_headline(task, rows) -> np.ndarray:
     ----------
     task : femcam.sweep.pipeline.ChunkTask
         The chunk (``scene``, ``theta`` [rad]).
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table with the contact columns filled (SI; modified in place).
 
     Returns
     -------
     ndarray of bool, shape (n,)
         The rows the ring answered (all False for a solid roller, or when the ring model is
-        refused: the :class:`~femcam.errors.FemcamError` is kept under :data:`RING_ERROR` for
+        refused: the :class:`~femcam.errors.FemcamError` is kept in ``rows.ring_error`` for
         the ``bodies`` provider, which reports it, and the solid roller's answer stays).
     """
-    n = rows["theta"].size
+    n = rows.theta.size
     done = np.zeros(n, bool)
     if not has_support(task.scene):
         return done
-    Fc = np.where(contact_rows(rows), rows["Fc"], 0.0)   # ring_rows: Fc <= 0 -> NaN row
+    Fc = np.where(contact_rows(rows), rows.Fc, 0.0)   # ring_rows: Fc <= 0 -> NaN row
     try:
         model = ring_model(task.scene)
-        r = ring_rows(task.scene.bodies.roller, task.scene.pair, task.theta, Fc, rows["rho"],
+        r = ring_rows(task.scene.bodies.roller, task.scene.pair, task.theta, Fc, rows.rho,
                       model=model)
     except FemcamError as exc:   # the bodies provider reports it (extras_error, refusals)
-        rows[RING_ERROR] = exc
+        rows.ring_error = exc
         return done
     for k in SIDE_KEYS:
-        rows[f"ring_{k}"] = np.asarray(r[k], float)
+        setattr(rows, f"ring_{k}", np.asarray(r[k], float))
     # the ring model's two-level estimate, once per process (as the model)
     ring_est = _cached("ring_estimate", task.scene, lambda: ring_level_estimate(model))
     ring_side_estimates(rows, ring_est)
     peak, fit, a = (np.asarray(r[k], float) for k in ("p0_peak", "p0", "a"))
-    ok = (np.asarray(rows["status"]).astype(str) == "ok") & np.isfinite(peak)
+    ok = (np.asarray(rows.status).astype(str) == "ok") & np.isfinite(peak)
     for i in np.flatnonzero(ok):
-        p_s = rows["p0_fe"][i] if np.isfinite(rows["p0_fe"][i]) else rows["p0_hertz"][i]
-        a_s = rows["a_fe"][i] if np.isfinite(rows["a_fe"][i]) else rows["a_hertz"][i]
+        p_s = rows.p0_fe[i] if np.isfinite(rows.p0_fe[i]) else rows.p0_hertz[i]
+        a_s = rows.a_fe[i] if np.isfinite(rows.a_fe[i]) else rows.a_hertz[i]
         k_p, k_a = peak[i] / p_s, a[i] / a_s
-        fid = int(rows["family"][i]) if np.isfinite(rows["family"][i]) else -1
+        fid = int(rows.family[i]) if np.isfinite(rows.family[i]) else -1
         ring_estimate(rows, i, task.estimates.get(fid), RING_A_OVER_H * a[i] / model.a_ref, ring_est)
         for name in SCALED_BY_P0:
-            rows[name][i] *= k_p
+            getattr(rows, name)[i] *= k_p
         for name in SCALED_BY_A:
-            rows[name][i] *= k_a
-        rows["p0_fe"][i], rows["p0_fit"][i], rows["a_fe"][i] = peak[i], fit[i], a[i]
-        rows["err_p0"][i] = peak[i] / rows["p0_hertz"][i] - 1.0
-        rows["err_a"][i] = a[i] / rows["a_hertz"][i] - 1.0
-        rows["model"][i] = f"{rows['model'][i] or 'hertz'}+ring"
+            getattr(rows, name)[i] *= k_a
+        rows.p0_fe[i], rows.p0_fit[i], rows.a_fe[i] = peak[i], fit[i], a[i]
+        rows.err_p0[i] = peak[i] / rows.p0_hertz[i] - 1.0
+        rows.err_a[i] = a[i] / rows.a_hertz[i] - 1.0
+        rows.model[i] = f"{rows.model[i] or 'hertz'}+ring"
         done[i] = True
     return done

@@ -222,7 +222,7 @@ def _analytic(run: SweepRun) -> None:
     # only what the planning needs (no table of all angles: memory; the chunks fill theirs)
     st0 = _analyse_in_blocks(contact_scene(run.scene), run.angles)
     run.rows0 = {k: np.asarray(getattr(st0, k), dtype=float) for k in ("Fc", "rho")}
-    run.contact = contact_mask(run.rows0, st0)
+    run.contact = contact_mask(st0)
     if run.opts.method != "hertz":
         run.traction = scene_traction(run.scene, run.angles)
     run.wear = wear_setup(run.scene, run.angles, st0)

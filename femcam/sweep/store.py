@@ -33,7 +33,7 @@ except ImportError:  # pragma: no cover - Windows: no directory lock
 
 from ..errors import InputError
 from ..io import atomic_write_text, write_arrays
-from .table import NUMERIC, TEXT_COLUMNS, extra_keys
+from .chunk import ChunkRows
 
 MANIFEST = "manifest.json"
 PLAN = "plan.json"
@@ -195,16 +195,16 @@ class ChunkStore:
         except Exception:  # truncated/corrupt file (should not happen with atomic writes)
             return False
         start, stop = self.bounds[i]
-        return rows["theta"].shape == (stop - start,)
+        return rows.theta.shape == (stop - start,)
 
-    def write(self, i: int, rows: dict) -> Path:
+    def write(self, i: int, rows: ChunkRows) -> Path:
         """Write chunk ``i`` atomically.
 
         Parameters
         ----------
         i : int
             Chunk id.
-        rows : dict[str, ndarray]
+        rows : ChunkRows
             The chunk's table (SI numeric columns, text columns, extra provider columns).
 
         Returns
@@ -212,12 +212,10 @@ class ChunkStore:
         Path
             The file written.
         """
-        arrays = {name: np.asarray(rows[name], dtype=float) for name in NUMERIC}
-        for name in TEXT_COLUMNS:
-            arrays[name] = np.asarray(rows[name]).astype(str)
-        for name in extra_keys(rows):  # extra column providers: numbers as float, text as str
-            v = np.asarray(rows[name])
-            arrays[name] = v.astype(str) if v.dtype.kind in "OUS" else v.astype(float)
+        arrays = {}   # the chunk's columns in order: numbers as float, text as str
+        for name, v in rows.items():
+            v = np.asarray(v)
+            arrays[name] = v.astype(str) if rows.is_text(name) else v.astype(float)
         if self.key.get("scene_sha256") is not None:
             arrays[CHUNK_SCENE_KEY] = np.array(str(self.key["scene_sha256"]))
         return write_arrays(self.path(i), arrays)
@@ -232,7 +230,7 @@ class ChunkStore:
         """
         return StoredTable(self)
 
-    def load(self, i: int) -> dict:
+    def load(self, i: int) -> ChunkRows:
         """The table of chunk ``i``.
 
         Parameters
@@ -242,11 +240,11 @@ class ChunkStore:
 
         Returns
         -------
-        dict[str, ndarray]
-            Column name -> the chunk's array (SI numeric, text as ``str``).
+        ChunkRows
+            The chunk's columns (SI numeric, text as ``str``).
         """
         with np.load(self.path(i), allow_pickle=False) as z:
-            return {name: z[name] for name in z.files if name != CHUNK_SCENE_KEY}
+            return ChunkRows.from_arrays({name: z[name] for name in z.files if name != CHUNK_SCENE_KEY})
 
 
 class StoredTable(Mapping):

@@ -1,5 +1,5 @@
 """The sweep's result table: its columns, statuses and flags, and how it is filled chunk by
-chunk (:class:`TableBuilder`).
+chunk (:class:`TableBuilder`, from the typed chunk tables :class:`femcam.sweep.chunk.ChunkRows`).
 
 One row per cam angle. Inside the library every column is SI (rad, m, m/s, N, Pa, s); the
 CSV writer in :mod:`femcam.io` converts to the unit written in the column name through
@@ -108,8 +108,7 @@ import numpy as np
 from .._columns import Column
 
 __all__ = ["COLUMNS", "EXTRA_COLUMNS", "INTEGER_COLUMNS", "NUMERIC", "PROFILE_PREFIX", "STATUSES",
-           "TEXT_COLUMNS", "WALL_CLOCK", "TableBuilder", "concat_rows", "empty_rows", "extra_keys",
-           "worst_row"]
+           "TEXT_COLUMNS", "WALL_CLOCK", "TableBuilder", "worst_row"]
 
 #: prefix of the worst angle's surface-profile arrays in ``sweep.npz`` (for re-plotting)
 PROFILE_PREFIX = "profile__"
@@ -177,25 +176,6 @@ STATUSES = ("ok", "liftoff", "undercut", "failed", "edge_contact")
 WALL_CLOCK = ("fe_time", "build_time")
 
 
-def empty_rows(n: int) -> dict[str, np.ndarray]:
-    """A table of ``n`` rows: NaN numbers, empty strings.
-
-    Parameters
-    ----------
-    n : int
-        Rows.
-
-    Returns
-    -------
-    dict[str, ndarray]
-        Float arrays of shape (n,) for :data:`NUMERIC`, object arrays for :data:`TEXT_COLUMNS`.
-    """
-    rows = {name: np.full(n, np.nan) for name in NUMERIC}
-    for name in TEXT_COLUMNS:
-        rows[name] = np.full(n, "", dtype=object)
-    return rows
-
-
 def worst_row(table: dict, column: str = "p0_fe") -> int:
     """Row index of the largest ``column`` among ``ok`` rows (falls back to Hertz p0, then 0).
 
@@ -219,50 +199,6 @@ def worst_row(table: dict, column: str = "p0_fe") -> int:
     return int(np.nanargmax(vals))
 
 
-def concat_rows(parts: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
-    """Stack chunk tables (already in angle order).
-
-    Parameters
-    ----------
-    parts : list of dict[str, ndarray]
-        Chunk tables.
-
-    Returns
-    -------
-    dict[str, ndarray]
-        One table: float columns and ``str`` text columns.
-    """
-    if not parts:
-        return {k: np.asarray(v) for k, v in empty_rows(0).items()}
-    out = {}
-    for name in NUMERIC:
-        out[name] = np.concatenate([np.asarray(p[name], dtype=float) for p in parts])
-    for name in TEXT_COLUMNS:
-        out[name] = np.concatenate([np.asarray(p[name]).astype(str) for p in parts])
-    for name in extra_keys(parts[0]):  # extra column providers (femcam.sweep.extras)
-        cols = [np.asarray(p[name]) for p in parts]
-        text = cols[0].dtype.kind in "OUS"
-        out[name] = np.concatenate([c.astype(str) if text else c.astype(float) for c in cols])
-    return out
-
-
-def extra_keys(rows: dict) -> list[str]:
-    """Columns of ``rows`` beyond :data:`NUMERIC` and :data:`TEXT_COLUMNS` (added by the extra
-    column providers, :mod:`femcam.sweep.extras`), in their order.
-
-    Parameters
-    ----------
-    rows : dict[str, ndarray]
-        One chunk's rows (column name -> array).
-
-    Returns
-    -------
-    list of str
-        The extra column names.
-    """
-    return [k for k in rows if k not in NUMERIC and k not in TEXT_COLUMNS]
-
-
 class TableBuilder:
     """The sweep table filled chunk by chunk as chunks finish (any order), without keeping the
     chunks: one float array per numeric column, preallocated (memory ~ one copy of the table).
@@ -280,30 +216,28 @@ class TableBuilder:
         self.numeric = {name: np.full(n, np.nan) for name in NUMERIC}
         self.text = {name: [np.zeros(0, str)] * len(self.bounds) for name in TEXT_COLUMNS}
 
-    def put(self, c: int, rows: dict) -> None:
+    def put(self, c: int, rows) -> None:
         """Chunk ``c``'s rows into the table.
 
         Parameters
         ----------
         c : int
             Chunk index into ``bounds``.
-        rows : dict[str, ndarray]
-            The chunk's columns (SI numeric arrays and text arrays), each of the chunk's length.
+        rows : femcam.sweep.chunk.ChunkRows
+            The chunk's columns (SI numeric arrays and text arrays, each of the chunk's
+            length): :meth:`~femcam.sweep.chunk.ChunkRows.items`, the sweep's columns and then
+            the provider columns the chunk holds.
         """
         a, b = self.bounds[c]
-        for name in NUMERIC:
-            self.numeric[name][a:b] = np.asarray(rows[name], dtype=float)
-        for name in TEXT_COLUMNS:
-            self.text[name][c] = np.asarray(rows[name]).astype(str)
-        for name in extra_keys(rows):  # extra column providers (femcam.sweep.extras)
-            v = np.asarray(rows[name])
-            if v.dtype.kind in "OUS":
-                self.text.setdefault(name, [np.zeros(0, str)] * len(self.bounds))[c] = v.astype(str)
+        for name, v in rows.items():
+            if rows.is_text(name):
+                parts = self.text.setdefault(name, [np.zeros(0, str)] * len(self.bounds))
+                parts[c] = np.asarray(v).astype(str)
             else:
-                self.numeric.setdefault(name, np.full(self.n, np.nan))[a:b] = v.astype(float)
+                self.numeric.setdefault(name, np.full(self.n, np.nan))[a:b] = np.asarray(v, dtype=float)
 
     def table(self) -> dict:
-        """The whole table (as :func:`concat_rows`).
+        """The whole table: the chunks stacked in angle order.
 
         Returns
         -------

@@ -181,7 +181,7 @@ def fill_wear(rows, slip, k: float, method: str) -> None:
 
     Parameters
     ----------
-    rows : dict[str, ndarray]
+    rows : ChunkRows
         The chunk's table (modified in place).
     slip : femcam.wear.slip.SlipResult or None
         Slip at the chunk's angles.
@@ -190,24 +190,24 @@ def fill_wear(rows, slip, k: float, method: str) -> None:
     method : str
         ``"fe"`` or ``"hertz"``.
     """
-    n = rows["theta"].size
+    n = rows.theta.size
     src = np.full(n, "none", dtype=object)
     if slip is None:
-        rows["wear_source"] = src
+        rows.wear_source = src
         return
-    rows["v_slip"][:] = slip.v_slip
-    rows["V_cam"][:] = slip.V_cam
-    status = np.asarray(rows["status"]).astype(str)
-    fe_ok = (status == "ok") & np.isfinite(rows["p0_fit"]) & np.isfinite(rows["a_fe"]) \
+    rows.v_slip[:] = slip.v_slip
+    rows.V_cam[:] = slip.V_cam
+    status = np.asarray(rows.status).astype(str)
+    fe_ok = (status == "ok") & np.isfinite(rows.p0_fit) & np.isfinite(rows.a_fe) \
         if method == "fe" else np.zeros(n, bool)
     hz = (status == "ok") | (status == "failed")
-    hz &= ~fe_ok & np.isfinite(rows["p0_hertz"]) & np.isfinite(rows["a_hertz"]) & (rows["Fc"] > 0)
-    a = np.where(fe_ok, rows["a_fe"], np.where(hz, rows["a_hertz"], 0.0))
-    p0 = np.where(fe_ok, rows["p0_fit"], np.where(hz, rows["p0_hertz"], 0.0))  # the fit's pair
-    F = np.where(fe_ok | hz, rows["Fc"], 0.0)
-    depth = np.asarray(wear_depth_per_angle(rows["theta"], a, p0, F, slip, k), dtype=float)
+    hz &= ~fe_ok & np.isfinite(rows.p0_hertz) & np.isfinite(rows.a_hertz) & (rows.Fc > 0)
+    a = np.where(fe_ok, rows.a_fe, np.where(hz, rows.a_hertz, 0.0))
+    p0 = np.where(fe_ok, rows.p0_fit, np.where(hz, rows.p0_hertz, 0.0))  # the fit's pair
+    F = np.where(fe_ok | hz, rows.Fc, 0.0)
+    depth = np.asarray(wear_depth_per_angle(rows.theta, a, p0, F, slip, k), dtype=float)
     lost = ~(fe_ok | hz) & (status != "liftoff")  # contact but no pressure: unknown, not zero
-    rows["wear_depth"][:] = np.where(lost, np.nan, depth)
+    rows.wear_depth[:] = np.where(lost, np.nan, depth)
     src[fe_ok] = "fe"
     src[hz] = "hertz"
-    rows["wear_source"] = src
+    rows.wear_source = src
