@@ -47,8 +47,8 @@ Checked on the thick ring on a tight pin against Hertz and against a ring of 512
 
 Cost: the ring model built and solved for the bore and needle columns is the one the headline
 reads (the solid-roller families answer the stresses); the estimate adds one second ring model
-per process (its cost: docs/estimate.md). With ``--method auto`` the rows Hertz answers need no FE model at all, so a
-ring scene then costs the ring models alone.
+per process (its cost: docs/estimate.md). With ``--method auto`` the rows Hertz answers need
+no FE model at all, so a ring scene then costs the ring models alone.
 """
 
 from __future__ import annotations
