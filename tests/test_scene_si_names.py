@@ -72,7 +72,7 @@ def test_coating_wear_k_under_its_si_name(tmp_path):
                    "interface_shear_strength_MPa = 250.0\nwear_k_mm3_per_N_m = 2e-7\n"
                    "[wear]\nk_mm3_per_N_m = 1e-6")
     assert {b.body: b for b in scene.layers}["roller"].coating.wear_k == pytest.approx(2e-7 * 1e-9, rel=1e-12)
-    cw = coating_wear(scene)
+    cw = coating_wear(scene.layers, scene.wear, scene.cam.hardness)
     assert cw.k_coating == pytest.approx(2e-16, rel=1e-12)
     assert cw.thickness == pytest.approx(2.5e-6, rel=1e-12)
 
