@@ -59,6 +59,7 @@ def test_the_same_physics_written_differently_is_accepted(tmp_path, swept, capsy
     head = 'name = "renamed"\ndescription = "other words"\n\n[fe]\na_over_h = 14.0\n\n'   # free text, study
     same.write_text(head + body + "\n")
     assert physics_hash(load_scene(same)) == physics_hash(load_scene(EXAMPLE))
+    assert scene_digest(load_scene(same)).sha256 == physics_hash(load_scene(EXAMPLE))
     t = sweep_table(swept, scene_digest(load_scene(same)))
     np.testing.assert_array_equal(t["theta"], np.radians([0.0, 90.0]))
     rc, err = _assess(same, swept, tmp_path / "o", capsys)
@@ -101,6 +102,8 @@ def test_a_sweep_recorded_before_the_hash_is_checked_against_its_scene_copy(tmp_
     (old / "scene.toml").unlink()
     with pytest.raises(InputError, match="records no scene"):
         sweep_table(old, scene_digest(load_scene(EXAMPLE)))
+    with pytest.raises(InputError, match="digest = "):
+        sweep_table(swept, load_scene(EXAMPLE))                 # the digest record, not the scene
 
 
 @pytest.mark.parametrize("damage", ["truncated", "not_a_zip", "no_provenance"])
