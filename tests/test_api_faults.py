@@ -127,6 +127,12 @@ def _case_fields():
     return {f.name: getattr(c, f.name) for f in dataclasses.fields(c)}
 
 
+def _pair_fields():
+    """The fields of a valid ContactPair (the study model's ``Scene.pair``)."""
+    p = scene().pair
+    return {f.name: getattr(p, f.name) for f in dataclasses.fields(p)}
+
+
 def steel():
     from femcam.materials import STEEL
 
@@ -595,8 +601,8 @@ CASES: dict[str, Case] = {
     "femcam.scene.contact_case": Case(
         lazy(lambda: dict(scene=scene("seed003_knife_edge"), theta=TH, tip_radius=5e-4)),
         {"theta": opt(REAL), "tip_radius": opt(POS)}),
-    "femcam.scene.ContactCase": Case(lazy(_case_fields),
-                                     {"length": POS, "mu": NONNEG, "tip_radius": opt(POS)}),
+    "femcam.scene.ContactCase": Case(lazy(_case_fields), {"tip_radius": opt(POS)}),
+    "femcam.scene.ContactPair": Case(lazy(_pair_fields), {"length": POS, "mu": NONNEG}),
     "femcam.scene.LubricantData": Case(kw(), {
         "viscosity_Pa_s": opt(POS), "temperature_C": opt(REAL),
         "viscosity_temperature_coefficient_per_K": opt(NONNEG), "kinematic_viscosity_40C": opt(POS),
@@ -794,7 +800,7 @@ NOT_AN_INPUT: dict[str, str] = {
     "femcam.mesh.mesh_body": "takes an open gmsh session; its numbers are checked by body_layout",
     **{n: "a typed record the checked scene loader builds (load_scene checks its values)" for n in (
         "femcam.scene.BodyLayers", "femcam.scene.CamShaft", "femcam.scene.CaseSpec",
-        "femcam.scene.CoatingSpec", "femcam.scene.ContactPair", "femcam.scene.FiniteLength",
+        "femcam.scene.CoatingSpec", "femcam.scene.FiniteLength",
         "femcam.scene.RealBodies", "femcam.scene.RollerSupport")},
     "femcam.halfspace.has_finite_length": "takes the scene's FiniteLength record (None: not given) "
                                           "and its contact length, both made by the checked loader",

@@ -573,7 +573,7 @@ def coated_cam(scene) -> bool:
     bool
         The ``coating_wear`` provider applies.
     """
-    cw = coating_wear(scene)
+    cw = coating_wear(scene.layers, scene.wear, scene.cam.hardness)
     return cw is not None and cw.body == "cam"
 
 
@@ -594,7 +594,7 @@ def coating_wear_chunk(task, rows) -> dict:
         ``wear_depth`` [m per revolution] scaled by the coating/substrate k ratio
         where positive, and ``wear_source``.
     """
-    cw = coating_wear(task.scene)
+    cw = coating_wear(task.scene.layers, task.scene.wear, task.scene.cam.hardness)
     depth = np.asarray(rows.wear_depth, float)
     src = np.asarray(rows.wear_source).astype(str)
     on = np.isfinite(depth) & (depth > 0)

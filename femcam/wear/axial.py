@@ -137,7 +137,7 @@ def scene_wear_axial(scene, theta, *, cycles: float = 1e6, fe=None, k_factor=Non
     k, _where = wear_coefficient_info(scene.wear, scene.cam.hardness)
     wm = wear_map(table, slip, k=k, length=scene.length, cycles=cycles, pressure="axial_peak",
                   k_factor=k_factor, regime=regime)
-    return with_coating(wm, coating_wear(scene)), st, slip
+    return with_coating(wm, coating_wear(scene.layers, scene.wear, scene.cam.hardness)), st, slip
 
 
 def scene_wear_map(scene, theta, *, cycles: float = 1e6, tip_radius: float | None = None, fe=None,
@@ -174,4 +174,5 @@ def scene_wear_map(scene, theta, *, cycles: float = 1e6, tip_radius: float | Non
     if has_finite_length(scene.finite_length, scene.length):
         return scene_wear_axial(scene, theta, cycles=cycles, fe=fe, k_factor=k_factor, regime=regime)
     return scene_wear(contact_case(scene, theta, tip_radius=tip_radius), cycles=cycles, fe=fe,
-                      k_factor=k_factor, regime=regime, coating=coating_wear(scene))
+                      k_factor=k_factor, regime=regime,
+                      coating=coating_wear(scene.layers, scene.wear, scene.cam.hardness))
