@@ -21,10 +21,10 @@ from femcam.bodies.rows import CSV_COLUMNS as RING_COLUMNS
 from femcam.bodies.rows import build_for, ring_rows
 from femcam.errors import InputError
 from femcam.halfspace.rows import COLUMNS as HS_COLUMNS
-from femcam.halfspace.rows import finite_length_rows
+from femcam.halfspace.rows import anchor_angles, finite_length_rows
 from femcam.io import read_csv
 from femcam.layers import scene_layer_rows
-from femcam.scene import contact_case, load_scene
+from femcam.scene import contact_case, finite_case, load_scene
 from femcam.sweep import RunOptions, SweepOptions, extras, providers, sweep
 from femcam.sweep.chunk import ChunkRows
 from femcam.wear.options import wear_coefficient_info
@@ -110,7 +110,9 @@ def test_halfspace_columns_and_axial_peak_wear(tmp_path):
     scene = load_scene(EX + "seed002_crowned.toml")
     r, cols = _sweep_csv(scene, TH8, tmp_path)
     # every angle warm-started from its anchor angle, as the direct call with start="anchor"
-    direct = finite_length_rows(scene, TH8, start="anchor")
+    st, an = scene.analyse(TH8), scene.analyse(anchor_angles(TH8))
+    direct = finite_length_rows(finite_case(scene).strip(), TH8, st.Fc, st.rho, scene.follower.Rr,
+                                start="anchor", anchor_Fc=an.Fc, anchor_rho=an.rho)
     for k, c in HS_COLUMNS.items():
         _close(cols[c.csv], direct[k], c.factor)
     assert list(cols["hs_flags"]) == [";".join(f) for f in direct["flags"]]

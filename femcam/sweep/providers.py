@@ -27,11 +27,12 @@ from ..bodies.rows import CSV_COLUMNS as RING_COLUMNS
 from ..bodies.rows import build_for
 from ..errors import FemcamError
 from ..halfspace.rows import COLUMNS as HS_COLUMNS
-from ..halfspace.rows import finite_length_rows, strip_for_scene
+from ..halfspace.rows import anchor_angles, finite_length_rows
 from ..io import vtu_name, write_global_cam_vtu
 from ..layers import result_layer_row, scene_layer_rows, scene_layers
 from ..layers.from_scene import scene_coatings
 from ..scene.case import contact_case
+from ..scene.finite_case import finite_case
 from ..wear.coating import coating_wear
 from ..wear.map import wear_depth_per_angle
 from .cache import default_cache
@@ -99,8 +100,8 @@ def cam_disk_model(scene):
 
 
 def strip_model(scene):
-    """The scene's :class:`~femcam.halfspace.strip.FiniteLengthContact` (kernel FFTs), once per
-    process.
+    """The scene's finite-length contact (:func:`femcam.scene.finite_case`) and its
+    :class:`~femcam.halfspace.strip.FiniteLengthContact` (kernel FFTs), once per process.
 
     Parameters
     ----------
@@ -109,10 +110,15 @@ def strip_model(scene):
 
     Returns
     -------
-    femcam.halfspace.strip.FiniteLengthContact
+    finite : femcam.scene.FiniteCase
+        The roller's finite-length records (m, rad).
+    strip : femcam.halfspace.strip.FiniteLengthContact
         The finite-length contact of the scene's roller.
     """
-    return _cached("strip", scene, lambda: strip_for_scene(scene))
+    def build():
+        fc = finite_case(scene)
+        return fc, fc.strip()
+    return _cached("strip", scene, build)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -274,7 +280,11 @@ def halfspace_rows(scene, theta) -> dict:
         (Pa, m, N/m; counts and 0/1 flags as float), and ``hs_flags`` (object, the strip flags
         of each angle joined by ``;``).
     """
-    r = finite_length_rows(scene, np.asarray(theta, float), strip=strip_model(scene), start="anchor")
+    fc, strip = strip_model(scene)
+    th = np.asarray(theta, float)
+    st, anchors = scene.analyse(th), scene.analyse(anchor_angles(th))
+    r = finite_length_rows(strip, th, st.Fc, st.rho, fc.Rr, start="anchor", anchor_Fc=anchors.Fc,
+                           anchor_rho=anchors.rho)
     out = {f"hs_{k}": np.asarray(r[k], float) for k in HS_COLUMNS}
     out["hs_flags"] = np.array([";".join(f) for f in r["flags"]], dtype=object)
     return out
