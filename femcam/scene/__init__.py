@@ -58,12 +58,14 @@ table group (``program``, ``follower`` with ``[cam]``, ``dynamics``, ``materials
 with ``[lubricant]``/``[surface]``, ``layers`` for coatings and cases, ``bodies``, ``study`` for
 ``[fe]``/``[sweep]``, ``wear``), the typed records they hand on (``bodies``: ``RealBodies``;
 ``layers``: ``BodyLayers``; ``finite``: ``FiniteLength``; ``pair``: ``ContactPair``) and
-``state`` (:class:`Scene`, :class:`SceneState`, :meth:`Scene.analyse`, the undercut check).
+``state`` (:class:`Scene`, :class:`SceneState`, :meth:`Scene.analyse`, the undercut check);
+``camdisk`` (:class:`CamDiskCase`, :func:`cam_disk_case`: the cam on its shaft for femcam.bodies).
 
 Only numpy/scipy and the standard library (``tomllib``) are imported.
 """
 
 from .bodies import CamShaft, RealBodies, RollerSupport, roller_support_problems
+from .camdisk import CamDiskCase, cam_disk_case
 from .case import ContactCase, contact_case
 from .checker import MAX_PROBLEMS
 from .finite import FiniteLength
@@ -77,8 +79,9 @@ from .tribology import LubricantData, MaterialData, SurfaceRoughness, Tribology
 from .wear import WearSettings, wear_table
 
 __all__ = ["MAX_PROBLEMS", "METHODS", "STUDY_RANGES", "STUDY_WHOLE", "TOLERANCE_FLOOR",
-           "UNDERCUT_CHECK_N", "BodyLayers", "CamShaft", "CaseSpec", "CoatingSpec", "ContactCase",
+           "UNDERCUT_CHECK_N", "BodyLayers", "CamDiskCase", "CamShaft", "CaseSpec", "CoatingSpec",
+           "ContactCase",
            "ContactPair", "FiniteLength", "LubricantData", "MaterialData", "RealBodies",
            "RollerSupport", "Scene", "SceneState", "StudySettings", "SurfaceRoughness", "Tribology",
-           "WearSettings", "contact_case", "load_scene",
+           "WearSettings", "cam_disk_case", "contact_case", "load_scene",
            "roller_support_problems", "study_problem", "wear_table"]
