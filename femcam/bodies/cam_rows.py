@@ -1,7 +1,7 @@
 """Sweep-facing: the cam disk on its shaft per cam angle, from one global model per scene.
 
 ``cam_disk_rows(case, state, Fc)`` builds ONE :class:`~femcam.bodies.cam_global.CamGlobalModel`
-for the scene's cam (``[cam] bore_mm``; the record :class:`~femcam.scene.camdisk.CamDiskCase`)
+for the scene's cam (``[cam] bore_mm``; the record :class:`~femcam.scene.case.CamDiskCase`)
 and solves the shaft-bore contact at the angles of ``state`` (a ``Scene.analyse``)
 (global-local scheme: the cam-roller contact itself stays today's local body). It returns a
 dict of SI arrays; :data:`CAM_CSV_COLUMNS` gives the CSV name (unit in the name) and the factor
@@ -33,7 +33,7 @@ from .._columns import Column
 from ..errors import InputError
 from ..materials import effective_modulus
 from ..scene.bodies import RealBodies
-from ..scene.camdisk import CamDiskCase
+from ..scene.case import CamDiskCase
 from ..scene.pair import ContactPair
 from ..scene.state import SceneState
 from .cam_geometry import CamDisk, outline_from_state, require_roller
@@ -75,8 +75,8 @@ def disk_from_case(case: CamDiskCase, *, fit: str | None = None, Rb: float | Non
 
     Parameters
     ----------
-    case : femcam.scene.camdisk.CamDiskCase
-        The scene's cam on its shaft (:func:`femcam.scene.camdisk.cam_disk_case`; a roller
+    case : femcam.scene.case.CamDiskCase
+        The scene's cam on its shaft (:func:`femcam.scene.case.cam_disk_case`; a roller
         follower).
     fit : {"contact", "bonded"} or None, optional
         Shaft-bore fit; None: the scene's ``[cam] shaft_fit`` (default ``"contact"``).
@@ -94,7 +94,7 @@ def disk_from_case(case: CamDiskCase, *, fit: str | None = None, Rb: float | Non
         No ``Rb`` and no ``[cam] bore_mm``, a follower that is not a translating roller, or a
         disk that does not fit.
     """
-    _validate.instance("case", case, CamDiskCase, "a femcam.scene.camdisk.CamDiskCase")
+    _validate.instance("case", case, CamDiskCase, "a femcam.scene.case.CamDiskCase")
     g = case.shaft
     if Rb is None and g is None:
         raise InputError("scene has no [cam] bore_mm: the cam is today's local body (no disk model)")
@@ -166,7 +166,7 @@ def cam_disk_rows(case: CamDiskCase, state: SceneState, Fc, *, model: CamGlobalM
 
     Parameters
     ----------
-    case : femcam.scene.camdisk.CamDiskCase
+    case : femcam.scene.case.CamDiskCase
         The scene's cam on its shaft (a roller follower with ``[cam] bore_mm``).
     state : femcam.scene.SceneState
         The analytic chain at the cam angles ``theta`` of the rows (``Scene.analyse(theta)``,
@@ -191,7 +191,7 @@ def cam_disk_rows(case: CamDiskCase, state: SceneState, Fc, *, model: CamGlobalM
         Shapes that differ, no ``[cam] bore_mm``, or a web thinner than
         :data:`WEB_OVER_A_MIN` contact half-widths.
     """
-    _validate.instance("case", case, CamDiskCase, "a femcam.scene.camdisk.CamDiskCase")
+    _validate.instance("case", case, CamDiskCase, "a femcam.scene.case.CamDiskCase")
     _validate.instance("state", state, SceneState, "a femcam.scene.SceneState")
     theta = state.theta
     Fc = _validate.data_array("Fc", Fc, "N")  # NaN or <= 0: no contact at that angle

@@ -18,7 +18,7 @@ from ..errors import InputError
 from ..hertz.contact import effective_radius, half_width
 from ..materials import effective_modulus
 from ..mesh import surface_height
-from ..scene.camdisk import CamDiskCase
+from ..scene.case import CamDiskCase
 from ..scene.state import SceneState
 from .cam_geometry import contact_frame, require_roller
 from .cam_global import CamGlobalModel
@@ -39,7 +39,7 @@ def peak_angle(state: SceneState) -> float:
     ----------
     state : femcam.scene.SceneState
         The analytic chain at cam angles (rad; e.g. :attr:`CamDiskCase.revolution
-        <femcam.scene.camdisk.CamDiskCase.revolution>`, 720 uniform angles).
+        <femcam.scene.case.CamDiskCase.revolution>`, 720 uniform angles).
 
     Returns
     -------
@@ -64,7 +64,7 @@ def refined_at(case: CamDiskCase, disk, state: SceneState, **kw):
 
     Parameters
     ----------
-    case : femcam.scene.camdisk.CamDiskCase
+    case : femcam.scene.case.CamDiskCase
         The scene's cam on its shaft (a roller follower).
     disk : CamDisk
         The cam disk.
@@ -81,7 +81,7 @@ def refined_at(case: CamDiskCase, disk, state: SceneState, **kw):
     result : CamDiskResult
         Its solution.
     """
-    _validate.instance("case", case, CamDiskCase, "a femcam.scene.camdisk.CamDiskCase")
+    _validate.instance("case", case, CamDiskCase, "a femcam.scene.case.CamDiskCase")
     state = _one_angle(state)
     require_roller(case.follower)
     pair = case.pair
@@ -108,7 +108,7 @@ def check_local_body(case: CamDiskCase, state: SceneState, *, tolerance: float, 
 
     Parameters
     ----------
-    case : femcam.scene.camdisk.CamDiskCase
+    case : femcam.scene.case.CamDiskCase
         The scene's cam on its shaft (``[cam] bore_mm``).
     state : femcam.scene.SceneState
         The analytic chain at the one cam angle checked (``Scene.analyse([theta])``, rad); the
@@ -196,7 +196,7 @@ def web_study(case: CamDiskCase, bores, *, state: SceneState, revolution: SceneS
 
     Parameters
     ----------
-    case : femcam.scene.camdisk.CamDiskCase
+    case : femcam.scene.case.CamDiskCase
         The scene's cam on its shaft (a roller follower).
     bores : sequence of float
         Bore radii ``Rb`` [m].

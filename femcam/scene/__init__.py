@@ -58,15 +58,13 @@ table group (``program``, ``follower`` with ``[cam]``, ``dynamics``, ``materials
 with ``[lubricant]``/``[surface]``, ``layers`` for coatings and cases, ``bodies``, ``study`` for
 ``[fe]``/``[sweep]``, ``wear``), the typed records they hand on (``bodies``: ``RealBodies``;
 ``layers``: ``BodyLayers``; ``finite``: ``FiniteLength``; ``pair``: ``ContactPair``) and
-``state`` (:class:`Scene`, :class:`SceneState`, :meth:`Scene.analyse`, the undercut check);
-``camdisk`` (:class:`CamDiskCase`, :func:`cam_disk_case`: the cam on its shaft for femcam.bodies).
+``state`` (:class:`Scene`, :class:`SceneState`, :meth:`Scene.analyse`, the undercut check).
 
 Only numpy/scipy and the standard library (``tomllib``) are imported.
 """
 
 from .bodies import CamShaft, RealBodies, RollerSupport, roller_support_problems
-from .camdisk import CamDiskCase, cam_disk_case
-from .case import ContactCase, contact_case
+from .case import CamDiskCase, ContactCase, cam_disk_case, contact_case
 from .checker import MAX_PROBLEMS
 from .finite import FiniteLength
 from .layers import BodyLayers, CaseSpec, CoatingSpec

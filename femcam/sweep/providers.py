@@ -31,8 +31,7 @@ from ..halfspace.rows import finite_length_rows, strip_for_scene
 from ..io import vtu_name, write_global_cam_vtu
 from ..layers import result_layer_row, scene_layer_rows, scene_layers
 from ..layers.from_scene import scene_coatings
-from ..scene.camdisk import cam_disk_case
-from ..scene.case import contact_case
+from ..scene.case import cam_disk_case, contact_case
 from ..wear.coating import coating_wear
 from ..wear.map import wear_depth_per_angle
 from .cache import default_cache
@@ -100,7 +99,7 @@ def cam_disk_model(scene):
 
 
 def cam_disk_record(scene):
-    """The scene's :class:`~femcam.scene.camdisk.CamDiskCase` (its outline analysed over one
+    """The scene's :class:`~femcam.scene.case.CamDiskCase` (its outline analysed over one
     revolution), built once per process.
 
     Parameters
@@ -110,7 +109,7 @@ def cam_disk_record(scene):
 
     Returns
     -------
-    femcam.scene.camdisk.CamDiskCase
+    femcam.scene.case.CamDiskCase
         The cam on its shaft.
     """
     return _cached("cam_disk_case", scene, lambda: cam_disk_case(scene))
