@@ -78,8 +78,7 @@ from .wear import WearSettings, wear_table
 
 __all__ = ["MAX_PROBLEMS", "METHODS", "STUDY_RANGES", "STUDY_WHOLE", "TOLERANCE_FLOOR",
            "UNDERCUT_CHECK_N", "BodyLayers", "CamDiskCase", "CamShaft", "CaseSpec", "CoatingSpec",
-           "ContactCase",
-           "ContactPair", "FiniteLength", "LubricantData", "MaterialData", "RealBodies",
+           "ContactCase", "ContactPair", "FiniteLength", "LubricantData", "MaterialData", "RealBodies",
            "RollerSupport", "Scene", "SceneState", "StudySettings", "SurfaceRoughness", "Tribology",
            "WearSettings", "cam_disk_case", "contact_case", "load_scene",
            "roller_support_problems", "study_problem", "wear_table"]
