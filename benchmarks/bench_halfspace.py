@@ -30,9 +30,9 @@ import numpy as np
 
 from femcam.halfspace import HalfSpace
 from femcam.halfspace.crown import RollerProfile, log_drop
-from femcam.halfspace.rows import finite_length_rows, strip_for_scene
+from femcam.halfspace.rows import finite_length_rows
 from femcam.halfspace.strip import FiniteLengthContact
-from femcam.scene import load_scene
+from femcam.scene import finite_case, load_scene
 from femcam.scene.finite import FiniteLength
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -66,6 +66,12 @@ def crowned(sc, crown, drop=None, misalignment=None):
     return dataclasses.replace(sc, finite_length=fl)
 
 
+def rows_of(sc, th, *, tol=1e-5):
+    """The half-space rows of scene ``sc`` at ``th`` (rad): its roller's strip, its state."""
+    st = sc.analyse(th)
+    return finite_length_rows(finite_case(sc).strip(tol=tol), th, st.Fc, st.rho, sc.follower.Rr)
+
+
 def log_end_drop(sc) -> float:
     """End drop of the logarithmic crown designed for the cycle's peak force (for a circular
     crown of the same drop)."""
@@ -78,7 +84,7 @@ def log_end_drop(sc) -> float:
 
 def _half(args):
     sc, th = args
-    return finite_length_rows(sc, th)
+    return rows_of(sc, th)
 
 
 def sweep_two(sc, th):
@@ -97,7 +103,7 @@ def timing(sc, th, drop):
     for crown in ("none", "circular", "logarithmic"):
         s2 = crowned(sc, crown, drop if crown == "circular" else None)
         t = time.perf_counter()
-        rows = finite_length_rows(s2, th)
+        rows = rows_of(s2, th)
         t1 = time.perf_counter() - t
         t = time.perf_counter()
         two = sweep_two(s2, th)
@@ -111,7 +117,7 @@ def timing(sc, th, drop):
 
 
 def single(sc):
-    fl = strip_for_scene(crowned(sc, "logarithmic"))
+    fl = finite_case(crowned(sc, "logarithmic")).strip()
     t = time.perf_counter()
     r = fl.solve(2000.0, 0.006)
     cold = time.perf_counter() - t
@@ -130,7 +136,7 @@ def figures(sc, rows, drop, outdir: Path):
     th_w, F, R = rows["none"]["theta"][i], rows["none"]["Fc"][i], rows["none"]["R"][i]
     plot_peak_along_length({f"{c}": r for c, r in rows.items()}, outdir / "halfspace_peak_vs_angle.png",
                            p0_2d=p0, title="seed 002: peak pressure along the length (128 x 64 grid)")
-    strips = {c: strip_for_scene(crowned(sc, c, drop if c == "circular" else None)) for c in rows}
+    strips = {c: finite_case(crowned(sc, c, drop if c == "circular" else None)).strip() for c in rows}
     res = {c: fl.solve(F, R) for c, fl in strips.items()}
     plot_pressure_map(res["none"], outdir / "halfspace_map_worst.png",
                       title=f"straight roller, seed 002 worst angle {math.degrees(th_w):.0f} deg: "
@@ -141,7 +147,7 @@ def figures(sc, rows, drop, outdir: Path):
         pk = []
         for g in tilts:
             s2 = crowned(sc, c, drop if c == "circular" else None, math.radians(g))
-            pk.append(strip_for_scene(s2).solve(F, R).p_max)
+            pk.append(finite_case(s2).strip().solve(F, R).p_max)
         peaks[c] = np.array(pk)
     plot_crown_comparison(res["none"].y, {c: r.p_line for c, r in res.items()}, tilts, peaks,
                           outdir / "halfspace_crowns.png", p0_2d=p0[i],
@@ -164,7 +170,7 @@ def main(argv=None):
     single(sc)
     th = np.radians(np.arange(360.0))
     rows = timing(sc, th, drop)
-    fine = finite_length_rows(crowned(sc, "logarithmic"), th, tol=1e-7)
+    fine = rows_of(crowned(sc, "logarithmic"), th, tol=1e-7)
     dev = np.nanmax(np.abs(rows["logarithmic"]["p_axial_peak"] / fine["p_axial_peak"] - 1))
     print(f"\ntol 1e-5 vs 1e-7 (logarithmic sweep): max relative change of the axial peak {dev:.1e}")
     if args.figures:

@@ -29,13 +29,20 @@ from pathlib import Path
 
 import numpy as np
 
-from femcam.halfspace.rows import finite_length_rows, strip_for_scene
-from femcam.scene import load_scene
+from femcam.halfspace.rows import finite_length_rows
+from femcam.scene import finite_case, load_scene
 from femcam.sweep import RunOptions, SweepOptions, sweep
 
 ROOT = Path(__file__).resolve().parents[1]
 SCENE = ROOT / "examples" / "seed002_crowned.toml"
 TH = np.radians(np.arange(360.0))
+
+
+def rows_of(scene, th, strip=None):
+    """The half-space rows of ``scene`` at ``th`` (rad), warm-started angle to angle: ``strip``
+    (default: the scene's own) at the scene's state."""
+    st = scene.analyse(th)
+    return finite_length_rows(strip or finite_case(scene).strip(), th, st.Fc, st.rho, scene.follower.Rr)
 
 
 def check(scene) -> float:
@@ -44,7 +51,7 @@ def check(scene) -> float:
     r2 = sweep(scene, SweepOptions(angles=th, method="hertz", chunk_size=30), RunOptions(workers=2))
     for k in ("hs_p_axial_peak", "hs_w_max", "hs_y_centre", "hs_iterations"):
         assert np.array_equal(r1.table[k], r2.table[k], equal_nan=True), k
-    cold = [finite_length_rows(scene, [t]) for t in th]
+    cold = [rows_of(scene, [t]) for t in th]
     dev = 0.0
     for k in ("p_axial_peak", "w_max"):
         c = np.array([r[k][0] for r in cold])
@@ -71,16 +78,16 @@ def whole_process(workers: int, runs: int) -> tuple[float, float, float]:
 
 
 def per_angle(scene, runs: int) -> tuple[float, float, float, float]:
-    strip = strip_for_scene(scene)
-    finite_length_rows(scene, TH[:2], strip=strip)             # kernels built (as a warm process)
+    strip = finite_case(scene).strip()
+    rows_of(scene, TH[:2], strip)             # kernels built (as a warm process)
     warm, cold, it_w, it_c = [], [], [], []
     for _ in range(runs):
         t = time.perf_counter()
-        rows = [finite_length_rows(scene, TH[i:i + 30], strip=strip) for i in range(0, 360, 30)]
+        rows = [rows_of(scene, TH[i:i + 30], strip) for i in range(0, 360, 30)]
         warm.append((time.perf_counter() - t) / 360)
         it_w.append(np.mean(np.concatenate([r["iterations"] for r in rows])))
         t = time.perf_counter()
-        rows = [finite_length_rows(scene, [t_], strip=strip) for t_ in TH]
+        rows = [rows_of(scene, [t_], strip) for t_ in TH]
         cold.append((time.perf_counter() - t) / 360)
         it_c.append(np.mean([r["iterations"][0] for r in rows]))
     return float(np.median(warm)), float(np.median(cold)), float(np.mean(it_w)), float(np.mean(it_c))

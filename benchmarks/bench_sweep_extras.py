@@ -23,7 +23,7 @@ import numpy as np
 
 from femcam.assess import assess_rows
 from femcam.halfspace.rows import finite_length_rows
-from femcam.scene import contact_case, load_scene
+from femcam.scene import contact_case, finite_case, load_scene
 from femcam.sweep import RunOptions, SweepOptions, extras, sweep
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -42,8 +42,10 @@ def check(name, scene, theta, table):
         d = assess_rows(contact_case(scene, theta))
         assert np.allclose(table["assess_lam"], d["lam"], rtol=1e-12, equal_nan=True)
     if name == "halfspace":   # each angle alone (the provider's cold start), every 30th angle
+        strip = finite_case(scene).strip()
         for i in range(0, theta.size, 30):
-            d = finite_length_rows(scene, theta[i:i + 1])
+            st = scene.analyse(theta[i:i + 1])
+            d = finite_length_rows(strip, theta[i:i + 1], st.Fc, st.rho, scene.follower.Rr)
             assert np.allclose(table["hs_p_axial_peak"][i], d["p_axial_peak"][0], rtol=1e-12)
 
 

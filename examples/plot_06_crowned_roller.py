@@ -14,9 +14,11 @@ along the roller and the most loaded slice.
 # %%
 # Solve the contact at a few angles
 # ---------------------------------
-# ``finite_length_rows`` builds the half-space strip once (64 cells across the contact, 128
-# along the roller) and solves each angle by conjugate gradients, starting from the previous
-# angle's pressure. Every 30 deg keeps this to about a second; the sweep does every degree.
+# ``finite_case(sc).strip()`` builds the half-space strip of the scene's roller once (64 cells
+# across the contact, 128 along the roller; the logarithmic crown designed for the largest
+# contact force of the revolution). ``finite_length_rows`` solves it at each angle of the
+# analysed scene by conjugate gradients, starting from the previous angle's pressure. Every
+# 30 deg keeps this to about a second; the sweep does every degree.
 from pathlib import Path
 
 import matplotlib.pyplot as plt
@@ -24,11 +26,12 @@ import numpy as np
 
 from femcam.halfspace import finite_length_rows
 from femcam.hertz import LineContact
-from femcam.scene import load_scene
+from femcam.scene import finite_case, load_scene
 
 HERE = Path(__file__).parent if "__file__" in globals() else Path.cwd()  # sphinx-gallery: cwd
 sc = load_scene(HERE / "seed002_crowned.toml")
-rows = finite_length_rows(sc, np.radians(np.arange(0.0, 360.0, 30.0)))
+st = sc.analyse(np.radians(np.arange(0.0, 360.0, 30.0)))
+rows = finite_length_rows(finite_case(sc).strip(), st.theta, st.Fc, st.rho, sc.follower.Rr)
 deg = np.degrees(rows["theta"])
 y = rows["y"]                                  # slice centres along the roller axis (m)
 hz = LineContact(F=rows["Fc"], length=sc.length, R1=np.inf, R2=rows["R"], cam=sc.cam, roller=sc.roller)

@@ -133,12 +133,30 @@ def _cam_disk_fields():
     return {f.name: getattr(c, f.name) for f in dataclasses.fields(c)}
 
 
+def _hs_rows():
+    """A valid finite_length_rows call: the crowned example's strip (16 x 16 cells) at TH[:2]
+    with the anchor start."""
+    from femcam.halfspace import anchor_angles
+    from femcam.scene import finite_case
+
+    sc = scene("seed002_crowned")
+    st, an = sc.analyse(TH[:2]), sc.analyse(anchor_angles(TH[:2]))
+    return dict(strip=finite_case(sc).strip(nx=16, ny=16), theta=TH[:2], Fc=st.Fc, rho=st.rho,
+                Rr=sc.follower.Rr, start="anchor", anchor_Fc=an.Fc, anchor_rho=an.rho)
+
+
 def _case_fields():
     """The fields of a valid ContactCase (the study model's contact at TH)."""
     from femcam.scene import contact_case
 
     c = contact_case(scene(), TH)
     return {f.name: getattr(c, f.name) for f in dataclasses.fields(c)}
+
+
+def _pair_fields():
+    """The fields of a valid ContactPair (the study model's ``Scene.pair``)."""
+    p = scene().pair
+    return {f.name: getattr(p, f.name) for f in dataclasses.fields(p)}
 
 
 def steel():
@@ -369,12 +387,15 @@ CASES: dict[str, Case] = {
                                        {"y": REAL, "l": POS, "re": NONNEG}),
     "femcam.halfspace.log_drop": Case(kw(y=ARR, l=0.01, Q=1000.0, b=5e-5, E_star=1.15e11),
                                       {"y": REAL, "l": POS, "Q": POS, "b": POS, "E_star": POS}),
-    "femcam.halfspace.finite_length_rows": Case(
-        lazy(lambda: dict(scene=scene("seed002_crowned"), theta=TH[:2], nx=16, ny=16)),
-        {"theta": REAL, "nx": INT_POS, "ny": INT_POS, "tol": POS}),
-    "femcam.halfspace.strip_for_scene": Case(
-        lazy(lambda: dict(scene=scene("seed002_crowned"), nx=16, ny=16)),
-        {"nx": INT_POS, "ny": INT_POS, "tol": POS}),
+    "femcam.halfspace.anchor_angles": Case(kw(theta=TH), {"theta": REAL}),
+    "femcam.halfspace.finite_length_rows": Case(lazy(_hs_rows), {
+        "theta": REAL, "Fc": REAL, "rho": RADIUS, "Rr": POS, "anchor_Fc": opt(REAL),
+        "anchor_rho": opt(RADIUS)}),
+    # finite None: a straight roller as wide as the cam (None is valid, so not a record fault)
+    "femcam.halfspace.strip_for": Case(
+        lazy(lambda: dict(finite=None, pair=scene("seed002_crowned").pair, Rr=0.01,
+                          Fc=state().Fc, rho=state().rho, nx=16, ny=16)),
+        {"Rr": POS, "Fc": opt(REAL), "rho": opt(RADIUS), "nx": INT_POS, "ny": INT_POS, "tol": POS}),
     # femcam.hertz
     "femcam.hertz.LineContact": Case(
         lazy(lambda: dict(F=1500.0, length=0.01, R1=0.02, R2=0.01, cam=steel(),
@@ -613,8 +634,12 @@ CASES: dict[str, Case] = {
     "femcam.scene.contact_case": Case(
         lazy(lambda: dict(scene=scene("seed003_knife_edge"), theta=TH, tip_radius=5e-4)),
         {"theta": opt(REAL), "tip_radius": opt(POS)}),
-    "femcam.scene.ContactCase": Case(lazy(_case_fields),
-                                     {"length": POS, "mu": NONNEG, "tip_radius": opt(POS)}),
+    "femcam.scene.ContactCase": Case(lazy(_case_fields), {"tip_radius": opt(POS)}),
+    "femcam.scene.ContactPair": Case(lazy(_pair_fields), {"length": POS, "mu": NONNEG}),
+    "femcam.scene.finite_case": Case(lazy(lambda: dict(scene=scene("seed002_crowned"))), {}),
+    # finite and design None: a straight roller as wide as the cam, no logarithmic crown
+    "femcam.scene.FiniteCase": Case(lazy(lambda: dict(finite=None, pair=scene().pair, Rr=0.01, design=None)),
+                                    {"Rr": POS}),
     "femcam.scene.LubricantData": Case(kw(), {
         "viscosity_Pa_s": opt(POS), "temperature_C": opt(REAL),
         "viscosity_temperature_coefficient_per_K": opt(NONNEG), "kinematic_viscosity_40C": opt(POS),
@@ -812,7 +837,7 @@ NOT_AN_INPUT: dict[str, str] = {
     "femcam.mesh.mesh_body": "takes an open gmsh session; its numbers are checked by body_layout",
     **{n: "a typed record the checked scene loader builds (load_scene checks its values)" for n in (
         "femcam.scene.BodyLayers", "femcam.scene.CamShaft", "femcam.scene.CaseSpec",
-        "femcam.scene.CoatingSpec", "femcam.scene.ContactPair", "femcam.scene.FiniteLength",
+        "femcam.scene.CoatingSpec", "femcam.scene.FiniteLength",
         "femcam.scene.RealBodies", "femcam.scene.RollerSupport")},
     "femcam.halfspace.has_finite_length": "takes the scene's FiniteLength record (None: not given) "
                                           "and its contact length, both made by the checked loader",

@@ -17,6 +17,7 @@ from femcam.assess import assess, sweep_table
 from femcam.cli import main
 from femcam.errors import InputError
 from femcam.scene import contact_case, load_scene
+from femcam.scene.digest import scene_digest
 from femcam.sweep import RunOptions, SweepOptions, sweep
 
 EXAMPLE = Path("examples/seed002_assess.toml")
@@ -49,7 +50,7 @@ def _damaged(tmp_path, swept, edit) -> Path:
 def test_a_damaged_column_is_refused_with_one_line(tmp_path, swept, capsys, column, edit):
     bad = _damaged(tmp_path, swept, edit)
     with pytest.raises(InputError, match=f"column {column}"):
-        sweep_table(bad, load_scene(EXAMPLE))
+        sweep_table(bad, scene_digest(load_scene(EXAMPLE)))
     rc = main(["assess", str(EXAMPLE), "--sweep", str(bad), "--out", str(tmp_path / "o"), "--no-plots"])
     err = capsys.readouterr().err.strip().splitlines()
     assert rc == 1 and len(err) == 1 and column in err[0], err
@@ -63,7 +64,8 @@ def test_rows_that_fall_back_to_hertz_are_counted(tmp_path, swept, capsys):
         a["a_fe"][0], a["p0_fe"][0] = hertz.rows["a"][0], hertz.rows["p0"][0]
 
     part = _damaged(tmp_path, swept, one_fe_row)
-    res = assess(contact_case(scene, np.radians([60.0, 90.0])), table=sweep_table(part, scene))
+    res = assess(contact_case(scene, np.radians([60.0, 90.0])),
+                 table=sweep_table(part, scene_digest(scene)))
     assert list(res.rows["source"]) == ["fe", "hertz"]
     assert any(n.startswith("contact: 1 of 2 angles fall back to Hertz") for n in res.notes)
     out = tmp_path / "o"

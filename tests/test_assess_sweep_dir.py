@@ -19,7 +19,7 @@ from femcam.assess import sweep_table
 from femcam.cli import main
 from femcam.errors import InputError
 from femcam.scene import load_scene
-from femcam.scene.digest import physics_hash
+from femcam.scene.digest import physics_hash, scene_digest
 from femcam.sweep import RunOptions, SweepOptions, sweep
 
 EXAMPLE = Path("examples/seed002_assess.toml")
@@ -59,7 +59,8 @@ def test_the_same_physics_written_differently_is_accepted(tmp_path, swept, capsy
     head = 'name = "renamed"\ndescription = "other words"\n\n[fe]\na_over_h = 14.0\n\n'   # free text, study
     same.write_text(head + body + "\n")
     assert physics_hash(load_scene(same)) == physics_hash(load_scene(EXAMPLE))
-    t = sweep_table(swept, load_scene(same))
+    assert scene_digest(load_scene(same)).sha256 == physics_hash(load_scene(EXAMPLE))
+    t = sweep_table(swept, scene_digest(load_scene(same)))
     np.testing.assert_array_equal(t["theta"], np.radians([0.0, 90.0]))
     rc, err = _assess(same, swept, tmp_path / "o", capsys)
     assert rc == 0, err
@@ -72,7 +73,7 @@ def test_the_same_physics_written_differently_is_accepted(tmp_path, swept, capsy
 def test_a_sweep_of_another_scene_is_refused(tmp_path, swept, capsys, changes, part):
     other = _write(tmp_path, "other.toml", changes)
     with pytest.raises(InputError, match=f"they differ in {part}"):
-        sweep_table(swept, load_scene(other))
+        sweep_table(swept, scene_digest(load_scene(other)))
     rc, err = _assess(other, swept, tmp_path / "o", capsys)
     assert rc == 1
     lines = err.strip().splitlines()
@@ -94,13 +95,15 @@ def test_a_sweep_recorded_before_the_hash_is_checked_against_its_scene_copy(tmp_
     arrays["provenance_json"] = np.array(json.dumps(prov))
     np.savez(old / "sweep.npz", **arrays)
     (old / "scene.toml").write_text((swept / "scene.toml").read_text())
-    assert sweep_table(old, load_scene(EXAMPLE))["theta"].size == 2
+    assert sweep_table(old, scene_digest(load_scene(EXAMPLE)))["theta"].size == 2
     other = _write(tmp_path, "other.toml", (("roller_radius_mm = 10.0", "roller_radius_mm = 12.0"),))
     with pytest.raises(InputError, match="they differ in follower"):
-        sweep_table(old, load_scene(other))
+        sweep_table(old, scene_digest(load_scene(other)))
     (old / "scene.toml").unlink()
     with pytest.raises(InputError, match="records no scene"):
-        sweep_table(old, load_scene(EXAMPLE))
+        sweep_table(old, scene_digest(load_scene(EXAMPLE)))
+    with pytest.raises(InputError, match="digest = "):
+        sweep_table(swept, load_scene(EXAMPLE))                 # the digest record, not the scene
 
 
 @pytest.mark.parametrize("damage", ["truncated", "not_a_zip", "no_provenance"])

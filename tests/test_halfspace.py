@@ -19,9 +19,9 @@ from scipy import integrate, optimize, special
 from femcam.errors import InputError, SceneError
 from femcam.halfspace import HalfSpace, cell_influence
 from femcam.halfspace.crown import RollerProfile
-from femcam.halfspace.rows import COLUMNS, finite_length_rows, to_csv_columns
+from femcam.halfspace.rows import COLUMNS, anchor_angles, finite_length_rows, strip_for, to_csv_columns
 from femcam.halfspace.strip import FiniteLengthContact
-from femcam.scene import load_scene
+from femcam.scene import finite_case, load_scene
 
 E_STAR = 210e9 / (2.0 * (1.0 - 0.3**2))      # steel on steel, Johnson eq. 4.22 (Pa)
 R_REL, F, L = 0.005, 1500.0, 0.01             # seed 002 dwell: Rr = rho = 10 mm, preload, face width
@@ -297,8 +297,8 @@ def test_crowned_scene_bad_input(tmp_path, old, new, expect):
 def test_finite_length_rows_on_the_crowned_scene():
     sc = load_scene(CROWNED)
     th = np.radians([0.0, 40.0, 60.0, 140.0])
-    rows = finite_length_rows(sc, th, tol=1e-6)
     st = sc.analyse(th)
+    rows = finite_length_rows(finite_case(sc).strip(tol=1e-6), th, st.Fc, st.rho, sc.follower.Rr)
     R = 1.0 / (1.0 / st.rho + 1.0 / sc.follower.Rr)           # Johnson eq. 4.44
     np.testing.assert_allclose(rows["R"], R, rtol=1e-12)
     dy = rows["y"][1] - rows["y"][0]
@@ -315,7 +315,50 @@ def test_finite_length_rows_on_the_crowned_scene():
 def test_finite_length_rows_refuses_knife_edge():
     sc = load_scene(EXAMPLES / "seed003_knife_edge.toml")
     with pytest.raises(InputError, match="roller follower"):
-        finite_length_rows(sc, [0.0])
+        finite_case(sc)
+
+
+def test_logarithmic_crown_is_designed_for_the_largest_force_of_the_revolution():
+    """The design load of a logarithmic crown is the largest contact force of one revolution
+    (720 angles) at its relative radius (Johnson eq. 4.44), found here from the scene's state;
+    without the revolution the strip is refused."""
+    sc = load_scene(CROWNED)
+    fc = finite_case(sc)
+    st = sc.analyse(np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False))
+    i = int(np.argmax(st.Fc))
+    assert fc.design is not None and fc.applies
+    Rd = 1.0 / (1.0 / st.rho[i] + 1.0 / sc.follower.Rr)
+    ref = FiniteLengthContact(sc.finite_length.roller_profile(), cam_width=sc.finite_length.cam_width,
+                              E_star=E_STAR, design_load=float(st.Fc[i]), design_radius=float(Rd),
+                              nx=8, ny=16)
+    np.testing.assert_allclose(fc.strip(nx=8, ny=16).c, ref.c, rtol=1e-12, atol=1e-18)
+    with pytest.raises(InputError, match="logarithmic.*Fc"):
+        strip_for(fc.finite, fc.pair, fc.Rr, nx=8, ny=16)
+
+
+def test_anchor_start_depends_on_the_contact_not_on_the_strip_history():
+    """The anchor start is cached per strip on the anchor's contact force and curvature: the same
+    strip solving another contact (twice the force) gives bit for bit the rows of a fresh strip,
+    and the anchor start needs the contact at every anchor angle."""
+    sc = load_scene(CROWNED)
+    fc = finite_case(sc)
+    th = np.radians([3.0, 58.0, 61.0])
+    st, an = sc.analyse(th), sc.analyse(anchor_angles(th))
+    np.testing.assert_array_equal(np.degrees(anchor_angles(th)).round(9), [0.0, 60.0])
+    strip = fc.strip(nx=16, ny=32)
+
+    def rows(strip, k):
+        return finite_length_rows(strip, th, k * st.Fc, st.rho, fc.Rr, start="anchor",
+                                  anchor_Fc=k * an.Fc, anchor_rho=an.rho)
+    rows(strip, 1.0)
+    twice, fresh = rows(strip, 2.0), rows(fc.strip(nx=16, ny=32), 2.0)
+    for k in COLUMNS:
+        np.testing.assert_array_equal(twice[k], fresh[k])
+    with pytest.raises(InputError, match="anchor_Fc"):
+        finite_length_rows(strip, th, st.Fc, st.rho, fc.Rr, start="anchor")
+    with pytest.raises(InputError, match="anchor_angles"):
+        finite_length_rows(strip, th, st.Fc, st.rho, fc.Rr, start="anchor", anchor_Fc=an.Fc[:1],
+                           anchor_rho=an.rho[:1])
 
 
 # ---------------------------------------------------------------------------------------------

@@ -151,10 +151,11 @@ def test_wear_map_slip_stress_field_and_svaj_reprs():
     """The other result records print their scalars and the arrays' shapes, not the values."""
     from femcam.hertz import LineContact
     from femcam.materials import STEEL
+    from femcam.scene import contact_case
     from femcam.wear.axial import scene_wear_map
 
     sc = load_scene(STUDY)
-    wm, _st, slip = scene_wear_map(sc, np.radians(np.arange(0.0, 360.0, 10.0)), cycles=1000)
+    wm, _st, slip = scene_wear_map(contact_case(sc, np.radians(np.arange(0.0, 360.0, 10.0))), cycles=1000)
     _short(repr(wm), r"^WearMap\(36 angles", "nm", r"mm\^3", "1000 cycles")
     _short(repr(slip), r"^SlipResult\(", r"arrays \(36,\): theta v_slip V_cam")
     svaj = sc.program.svaj(np.radians(np.arange(0.0, 360.0, 0.01)), omega=sc.omega)

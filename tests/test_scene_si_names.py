@@ -11,6 +11,7 @@ import pathlib
 import pytest
 
 from femcam.assess import assessment_inputs
+from femcam.errors import InputError
 from femcam.layers import scene_layers
 from femcam.scene import load_scene
 from femcam.sweep import providers
@@ -72,9 +73,15 @@ def test_coating_wear_k_under_its_si_name(tmp_path):
                    "interface_shear_strength_MPa = 250.0\nwear_k_mm3_per_N_m = 2e-7\n"
                    "[wear]\nk_mm3_per_N_m = 1e-6")
     assert {b.body: b for b in scene.layers}["roller"].coating.wear_k == pytest.approx(2e-7 * 1e-9, rel=1e-12)
-    cw = coating_wear(scene)
+    cw = coating_wear(scene.layers, scene.wear, scene.cam.hardness)
     assert cw.k_coating == pytest.approx(2e-16, rel=1e-12)
     assert cw.thickness == pytest.approx(2.5e-6, rel=1e-12)
+    # the scene's [wear] k_mm3_per_N_m = 1e-6 is the substrate's k (1 mm^3 = 1e-9 m^3)
+    assert cw.k_substrate == pytest.approx(1e-15, rel=1e-12)
+    with pytest.raises(InputError, match="layers = "):
+        coating_wear(scene, scene.wear, scene.cam.hardness)        # the records, not the scene
+    with pytest.raises(InputError, match="wear = "):
+        coating_wear(scene.layers, {"k": 1e-15}, scene.cam.hardness)
 
 
 def test_tribology_holds_si_values_under_si_names(tmp_path):

@@ -21,10 +21,10 @@ from femcam.bodies.rows import CSV_COLUMNS as RING_COLUMNS
 from femcam.bodies.rows import build_for, ring_rows
 from femcam.errors import InputError
 from femcam.halfspace.rows import COLUMNS as HS_COLUMNS
-from femcam.halfspace.rows import finite_length_rows
+from femcam.halfspace.rows import anchor_angles, finite_length_rows
 from femcam.io import read_csv
 from femcam.layers import scene_layer_rows
-from femcam.scene import contact_case, load_scene
+from femcam.scene import contact_case, finite_case, load_scene
 from femcam.sweep import RunOptions, SweepOptions, extras, providers, sweep
 from femcam.sweep.chunk import ChunkRows
 from femcam.wear.options import wear_coefficient_info
@@ -110,7 +110,9 @@ def test_halfspace_columns_and_axial_peak_wear(tmp_path):
     scene = load_scene(EX + "seed002_crowned.toml")
     r, cols = _sweep_csv(scene, TH8, tmp_path)
     # every angle warm-started from its anchor angle, as the direct call with start="anchor"
-    direct = finite_length_rows(scene, TH8, start="anchor")
+    st, an = scene.analyse(TH8), scene.analyse(anchor_angles(TH8))
+    direct = finite_length_rows(finite_case(scene).strip(), TH8, st.Fc, st.rho, scene.follower.Rr,
+                                start="anchor", anchor_Fc=an.Fc, anchor_rho=an.rho)
     for k, c in HS_COLUMNS.items():
         _close(cols[c.csv], direct[k], c.factor)
     assert list(cols["hs_flags"]) == [";".join(f) for f in direct["flags"]]
@@ -292,42 +294,47 @@ def _layered(d_c, d_s, t, N):
     return np.array(out)
 
 
-def test_wear_map_uses_the_coating_k_until_worn_through(tmp_path):
+def _coating(scene):
+    """The scene's coating wear data (its layers, [wear] settings and cam hardness)."""
     from femcam.wear.coating import coating_wear
+
+    return coating_wear(scene.layers, scene.wear, scene.cam.hardness)
+
+
+def test_wear_map_uses_the_coating_k_until_worn_through(tmp_path):
     from femcam.wear.scene import scene_wear
     bare = load_scene(EX + "seed002_study_model.toml")
     scene = _coated_scene(tmp_path, t=2.0, wear="wear_K = 1e-9\nhardness_MPa = 18000.0")
     k_s = wear_coefficient_info(bare.wear, bare.cam.hardness)[0]
     k_c = 1e-9 / 18000e6                      # K / H, m^3/(N m)
     th = np.radians(np.arange(0.0, 360.0, 1.0))
-    ref, _, _ = scene_wear(contact_case(bare, th), cycles=1.0, coating=coating_wear(bare))
+    ref, _, _ = scene_wear(contact_case(bare, th), cycles=1.0, coating=_coating(bare))
     d_s = ref.depth_cam                       # m per revolution with the substrate k
     d_c = d_s * k_c / k_s
     N_t = 2e-6 / d_c.max()                    # revolutions to wear through at the deepest point
     N = 2e-6 / np.median(d_c)                 # half the points worn through, half not
-    wm, _, _ = scene_wear(contact_case(scene, th), cycles=N, coating=coating_wear(scene))
+    wm, _, _ = scene_wear(contact_case(scene, th), cycles=N, coating=_coating(scene))
     h_ref = _layered(d_c, d_s, 2e-6, N)
     np.testing.assert_allclose(wm.depth_cam_total, h_ref, rtol=1e-12, atol=1e-18)
     assert wm.max_depth == pytest.approx(2e-6 + (N - N_t) * d_s.max(), rel=1e-12)
     assert wm.coating["revolutions_through"] == pytest.approx(N_t, rel=1e-12)
     assert np.any(h_ref < 2e-6)               # the hard case: both branches are exercised
     # the roller keeps the substrate k (the coating is on the cam)
-    ref_n, _, _ = scene_wear(contact_case(bare, th), cycles=N, coating=coating_wear(bare))
+    ref_n, _, _ = scene_wear(contact_case(bare, th), cycles=N, coating=_coating(bare))
     np.testing.assert_allclose(wm.depth_follower_total, ref_n.depth_follower_total, rtol=1e-12)
 
 
 def test_wear_map_coated_roller_uses_the_drift_averaged_rate(tmp_path):
-    from femcam.wear.coating import coating_wear
     from femcam.wear.scene import scene_wear
     bare = load_scene(EX + "seed002_study_model.toml")
     scene = _coated_scene(tmp_path, body="roller", t=1.0, wear="wear_k_mm3_per_N_m = 1e-8")
     k_s = wear_coefficient_info(bare.wear, bare.cam.hardness)[0]
     th = np.radians(np.arange(0.0, 360.0, 1.0))
     N = 1e9
-    ref, _, _ = scene_wear(contact_case(bare, th), cycles=N, coating=coating_wear(bare))
+    ref, _, _ = scene_wear(contact_case(bare, th), cycles=N, coating=_coating(bare))
     d_s = ref.depth_follower_total / N
     d_c = d_s * 1e-17 / k_s
-    wm, _, _ = scene_wear(contact_case(scene, th), cycles=N, coating=coating_wear(scene))
+    wm, _, _ = scene_wear(contact_case(scene, th), cycles=N, coating=_coating(scene))
     np.testing.assert_allclose(wm.depth_follower_total, _layered(d_c, d_s, 1e-6, N), rtol=1e-12,
                                atol=1e-18)
     assert wm.coating["revolutions_through"] == pytest.approx(1e-6 / d_c.max(), rel=1e-12)

@@ -203,10 +203,8 @@ def test_flat_faced_sweep_and_edge_contact():
 def test_tip_radius_key_and_the_retired_alias(tmp_path):
     """[follower] tip_radius_mm is the key; the retired [wear] tip_radius_mm is refused in one
     line naming the key to use."""
-    from femcam.wear.options import follower_tip_radius
-
     sc = load_scene(EX / "seed003_knife_edge.toml")
-    assert follower_tip_radius(sc) == pytest.approx(2e-3)
+    assert sc.tip_radius == pytest.approx(2e-3)
     p = tmp_path / "old.toml"
     p.write_text((EX / "seed003_knife_edge.toml").read_text(encoding="utf-8")
                  + "\n[wear]\ntip_radius_mm = 1.5\n", encoding="utf-8")

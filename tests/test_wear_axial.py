@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from femcam.halfspace.rows import finite_length_rows
-from femcam.scene import contact_case, load_scene
+from femcam.scene import contact_case, finite_case, load_scene
 from femcam.wear.axial import scene_wear_axial
 from femcam.wear.options import wear_coefficient_info
 from femcam.wear.scene import scene_wear
@@ -35,6 +35,12 @@ def _wear_of(scene):
     return scene.wear, scene.cam.hardness
 
 
+def _rows(scene, theta):
+    """The half-space rows at ``theta`` (rad) with the default strip, warm-started angle to angle."""
+    st = scene.analyse(theta)
+    return finite_length_rows(finite_case(scene).strip(), theta, st.Fc, st.rho, scene.follower.Rr)
+
+
 def _csv(path):
     lines = [ln for ln in Path(path).read_text().splitlines() if not ln.startswith("#")]
     return list(csv.DictReader(lines))
@@ -45,9 +51,9 @@ def test_crowned_wear_scales_with_the_axial_peak_load():
     """Per pass the depth is k w v_slip / V_cam: the finite-length map over the 2D one is
     w_max l / Fc angle by angle, w_max from the half-space solution computed here."""
     scene = load_scene(CROWNED)
-    ax, st, slip = scene_wear_axial(scene, TH8, cycles=1.0)
+    ax, st, slip = scene_wear_axial(contact_case(scene, TH8), finite_case(scene), cycles=1.0)
     hz, _, _ = scene_wear(contact_case(scene, TH8), cycles=1.0)
-    r = finite_length_rows(scene, TH8)
+    r = _rows(scene, TH8)
     Fc = np.clip(st.Fc, 0.0, None)
     on = Fc > 0
     k = wear_coefficient_info(scene.wear, scene.cam.hardness)[0]
@@ -71,7 +77,7 @@ def test_cli_wear_map_of_a_crowned_roller_uses_the_axial_peak(tmp_path):
     assert summ["pressure"] == "axial_peak"
     rows = _csv(tmp_path / "wear_scene.csv")
     scene = load_scene(CROWNED)
-    r = finite_length_rows(scene, TH36)
+    r = _rows(scene, TH36)
     k = wear_coefficient_info(scene.wear, scene.cam.hardness)[0]
     ref = [k * w * float(x["v_slip_m_s"]) / float(x["V_cam_m_s"]) * 1e9 for w, x in zip(r["w_max"], rows,
                                                                                         strict=True)]

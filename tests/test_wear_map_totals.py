@@ -39,6 +39,11 @@ wear_k_mm3_per_N_m = {k_mm3}
 """
 
 
+def _coating(scene):
+    """The scene's coating wear data (its layers, [wear] settings and cam hardness)."""
+    return coating_wear(scene.layers, scene.wear, scene.cam.hardness)
+
+
 def _wear_of(scene):
     """The arguments of wear_coefficient_info: the scene's [wear] record and cam hardness (Pa)."""
     return scene.wear, scene.cam.hardness
@@ -68,7 +73,7 @@ def test_deepest_point_after_cycles_is_where_the_coating_wore_through():
     # the intact half's h <= N r d1 = 0.1 N d1 since d2 > d1 / 5.5 here)
     N, r = 1e9, 0.1
     plain = load_scene(SCENE)
-    bare, _, _ = scene_wear(contact_case(plain, TH), cycles=N, coating=coating_wear(plain))
+    bare, _, _ = scene_wear(contact_case(plain, TH), cycles=N, coating=_coating(plain))
     for x, d_s, period, field in (
             (bare.x_cam, bare.depth_cam, bare.perimeter, "depth_cam_cycles"),
             (bare.x_follower, bare.depth_follower_total / N, bare.follower_period, "depth_follower_cycles")):
@@ -101,9 +106,9 @@ def test_uniform_coating_keeps_the_deepest_point(tmp_path):
     scene = _coated(tmp_path, "cam", 2.0, 5e-10)
     r = 5e-19 / k_s
     plain = load_scene(SCENE)
-    one, _, _ = scene_wear(contact_case(plain, TH), cycles=1.0, coating=coating_wear(plain))
+    one, _, _ = scene_wear(contact_case(plain, TH), cycles=1.0, coating=_coating(plain))
     N = 2e-6 / (r * np.median(one.depth_cam))
-    wm, _, _ = scene_wear(contact_case(scene, TH), cycles=N, coating=coating_wear(scene))
+    wm, _, _ = scene_wear(contact_case(scene, TH), cycles=N, coating=_coating(scene))
     h = _layered(one.depth_cam, r, 2e-6, N)
     assert np.any(h < 2e-6) and np.any(h > 2e-6)
     assert wm.x_max == one.x_cam[np.argmax(h)] == one.x_cam[np.argmax(one.depth_cam)]
@@ -121,7 +126,7 @@ def test_summary_volume_after_cycles_uses_the_coating(tmp_path, body):
     r = 1e-17 / k_s
     scene = _coated(tmp_path, body, 1.0, 1e-8)
     for N in (1e7, 1e8):
-        wm, _, _ = scene_wear(contact_case(scene, TH), cycles=N, coating=coating_wear(scene))
+        wm, _, _ = scene_wear(contact_case(scene, TH), cycles=N, coating=_coating(scene))
         V_s = wm.volume_archard
         S = wm.perimeter if body == "cam" else wm.follower_period
         depth = wm.depth_cam_total if body == "cam" else wm.depth_follower_total

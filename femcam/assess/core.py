@@ -108,8 +108,9 @@ def _contact(case: ContactCase, st, R2, table, n):
     Fc = np.where(st.liftoff, 0.0, np.clip(st.Fc, 0.0, None))
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", HertzValidityWarning)   # reported per angle in flags
-        hc = LineContact(F=Fc, length=case.length, R1=st.rho, R2=R2, cam=case.cam, roller=case.roller,
-                         mu=case.mu, plane=case.plane)
+        pr = case.pair
+        hc = LineContact(F=Fc, length=pr.length, R1=st.rho, R2=R2, cam=pr.cam, roller=pr.roller, mu=pr.mu,
+                         plane=pr.plane)
     a, p0 = np.broadcast_to(hc.a, (n,)).copy(), np.broadcast_to(hc.p0, (n,)).copy()
     source = np.full(n, "hertz", dtype=object)
     if table is not None and "a_fe" in table and "p0_fe" in table:
@@ -117,7 +118,7 @@ def _contact(case: ContactCase, st, R2, table, n):
         use = np.isfinite(a_fe) & np.isfinite(p_fe) & (a_fe > 0)
         a, p0 = np.where(use, a_fe, a), np.where(use, p_fe, p0)
         source[use] = "fe"
-    w = Fc / case.length
+    w = Fc / case.pair.length
     return Fc, a, p0, w, np.broadcast_to(hc.R, (n,)), hc.E_star, np.broadcast_to(hc.valid, (n,)), source
 
 
@@ -125,7 +126,7 @@ def _speeds(case: ContactCase, st, theta, Fc, tip):
     """Surface speeds ``(V_cam, V_follower)`` at ``theta``. The inertia-limited roller model needs
     one whole revolution: for any other set of angles (a sweep chunk) it is solved on the case's
     ``revolution`` angles and interpolated (periodic, linear)."""
-    kw = slip_kwargs(case.wear, omega=case.omega, mu=case.mu, follower=case.follower)
+    kw = slip_kwargs(case.wear, omega=case.omega, mu=case.pair.mu, follower=case.follower)
     full = theta.size >= 4 and np.allclose(np.diff(theta), theta[1] - theta[0]) and \
         abs(theta[-1] - theta[0] + (theta[1] - theta[0]) - 2.0 * math.pi) < 1e-9
     if kw["roller_model"] != "inertia" or case.revolution is None or full:
@@ -267,7 +268,7 @@ def assess_rows(case: ContactCase, table=None, *, lubricated: bool = True,
     flags = [("liftoff", np.asarray(st.liftoff, bool)), ("hertz_validity", ~np.asarray(valid, bool))]
     if omitted_physics(coatings):
         flags.append(("omits_coating", Fc > 0))
-    k0 = wear_coefficient_info(case.wear, case.cam.hardness)[0]
+    k0 = wear_coefficient_info(case.wear, case.pair.cam.hardness)[0]
     regime = np.full(n, "dry", dtype=object)
     if inp.lubricant is not None:
         eta0 = float(inp.lubricant.viscosity(inp.T_oil))
@@ -279,8 +280,8 @@ def assess_rows(case: ContactCase, table=None, *, lubricated: bool = True,
         flags += [(nm, m & (Fc > 0)) for nm, m in f["flags"]]
     else:
         out["k_wear"] = np.full(n, k0)
-    _thermal(inp, case.mu, w, a, u1, u2, inp.T_oil, out, flags)
-    _strength(inp, case.mu, p0, out)
+    _thermal(inp, case.pair.mu, w, a, u1, u2, inp.T_oil, out, flags)
+    _strength(inp, case.pair.mu, p0, out)
     if table is not None:
         _fe_stresses(inp, table, source, out, flags)
     out["regime"] = np.where(Fc > 0, regime, "no contact")
@@ -496,7 +497,7 @@ def wear_factor(case: ContactCase, table=None):
         ``boundary`` / ``mixed`` / ``full`` per angle (``no contact`` where ``Fc = 0``).
     """
     case = _case(case)
-    k = wear_coefficient_info(case.wear, case.cam.hardness)[0]
+    k = wear_coefficient_info(case.wear, case.pair.cam.hardness)[0]
     if case.tribology.lubricant is None or not k > 0:
         return None, None
     r = assess_rows(case, table)

@@ -1,11 +1,12 @@
 """A finished sweep folder as the table of an assessment, checked to be a sweep of the same scene.
 
 An assessment fed by a sweep (``femcam assess SCENE.toml --sweep DIR``,
-``assess(scene, theta, table=sweep_table(DIR, scene))``) combines the scene's tribology with the
-sweep's contact; a sweep of another scene (another roller, another program) would mix two
-mechanisms in one report. :func:`sweep_table` therefore compares the physics hash of the scene
-(:func:`femcam.scene.digest.physics_hash`: comments, layout and free text do not count) with the
-one the sweep recorded, and refuses with one line naming both scenes. A folder whose
+``assess(contact_case(scene, theta), table=sweep_table(DIR, scene_digest(scene)))``) combines
+the scene's tribology with the sweep's contact; a sweep of another scene (another roller, another
+program) would mix two mechanisms in one report. :func:`sweep_table` therefore compares the
+physics hashes of the scene (its :class:`~femcam.scene.digest.SceneDigest`, from
+:func:`femcam.scene.digest.scene_digest`: comments, layout and free text do not count) with the
+ones the sweep recorded, and refuses with one line naming both scenes. A folder whose
 ``sweep.npz`` cannot be read (partial, truncated, not a sweep) is refused with one line too.
 """
 
@@ -19,10 +20,11 @@ from pathlib import Path
 
 import numpy as np
 
+from .. import _validate
 from .._files import check_regular
 from ..errors import FemcamError, InputError
 from ..scene import load_scene
-from ..scene.digest import differing_parts, physics_hash, physics_parts
+from ..scene.digest import SceneDigest, differing_parts, physics_parts
 
 #: what reading a damaged ``sweep.npz`` raises (numpy, zipfile, zlib, json)
 #: largest sweep.npz read (bytes): 360,000 angles of ~150 columns are ~0.4 GB
@@ -75,16 +77,18 @@ def _their_parts(directory: Path, prov: dict) -> dict | None:
         return None
 
 
-def sweep_table(directory, scene) -> dict[str, np.ndarray]:
+def sweep_table(directory, digest: SceneDigest) -> dict[str, np.ndarray]:
     """The per-angle columns of the finished sweep in ``directory`` (SI, the sweep's names:
-    ``theta``, ``a_fe``, ``p0_fe``, ...), after checking that it is a sweep of ``scene``.
+    ``theta``, ``a_fe``, ``p0_fe``, ...), after checking that it is a sweep of the scene whose
+    physics hashes are ``digest``.
 
     Parameters
     ----------
     directory : str or Path
         A finished sweep's output folder (``DIR/sweep.npz``).
-    scene : femcam.scene.Scene
-        The scene to assess.
+    digest : femcam.scene.digest.SceneDigest
+        The physics hashes, name and file of the scene to assess
+        (:func:`femcam.scene.digest.scene_digest`).
 
     Returns
     -------
@@ -95,25 +99,27 @@ def sweep_table(directory, scene) -> dict[str, np.ndarray]:
     ------
     InputError
         Not a folder, no ``sweep.npz``, a ``sweep.npz`` that cannot be read (corrupted or
-        partial), or a sweep of another scene: the physics hash it recorded differs from that of
-        ``scene`` (the line names both scenes and the fields that differ, and how to fix it).
+        partial), or a sweep of another scene: the physics hash it recorded differs from
+        ``digest`` (the line names both scenes and the fields that differ, and how to fix it).
     """
+    me = _validate.instance("digest", digest, SceneDigest, "a femcam.scene.digest.SceneDigest "
+                            "(femcam.scene.digest.scene_digest(scene))")
     d = Path(directory)
     arrays, prov = _read(d)
-    mine = physics_parts(scene)
+    mine = me.parts
     theirs = _their_parts(d, prov)
     if theirs is None:
         raise InputError(f"sweep folder = {d}: it records no scene (no scene_physics_sha256, no scene.toml), "
-                         f"so it cannot be checked against scene {scene.name!r}; sweep this scene again")
+                         f"so it cannot be checked against scene {me.name!r}; sweep this scene again")
     diff = differing_parts(mine, theirs)
     if diff:
         got = str(prov.get("scene_physics_sha256", ""))[:12] or "(from its scene.toml)"
         raise InputError(
             f"sweep folder = {d}: it was swept from scene {_their_name(arrays)!r} "
-            f"({prov.get('scene', '?')}), not from scene {scene.name!r} "
-            f"({scene.source_path or 'built in code'}): they differ in "
-            f"{', '.join(diff)} (physics sha256 {got} vs {physics_hash(scene)[:12]}); sweep this scene "
-            f"(femcam sweep {scene.source_path or 'SCENE.toml'} --out NEW_DIR) or assess the folder's own "
+            f"({prov.get('scene', '?')}), not from scene {me.name!r} "
+            f"({me.source_path or 'built in code'}): they differ in "
+            f"{', '.join(diff)} (physics sha256 {got} vs {me.sha256[:12]}); sweep this scene "
+            f"(femcam sweep {me.source_path or 'SCENE.toml'} --out NEW_DIR) or assess the folder's own "
             f"scene ({d / 'scene.toml'})")
     n = arrays["theta"].size
     _check_columns(d, arrays, n)

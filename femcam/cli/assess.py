@@ -23,6 +23,7 @@ from ..io import atomic_write_text, provenance, write_table
 from ..layers.from_scene import scene_coatings
 from ..scene import load_scene
 from ..scene.case import contact_case
+from ..scene.digest import scene_digest
 from ..viz.assess import plot_assessment, report_markdown
 from ..viz.html import markdown_page
 from ._common import add_no_plots, add_overwrite, add_scene_out, out_dir, plain, refuse_non_empty
@@ -57,18 +58,19 @@ _MEANING = {"film (lambda)": "(film parameter h_min/sigma: < 1 boundary, 1-3 mix
             "surface fatigue": "(safety factor)", "pitting life": "cycles"}
 
 
-def _sweep_table(path, scene):
+def _sweep_table(path, digest):
     """The sweep's columns the assessment uses (the subsurface ``txz_range_max``, never a
-    surface value); a sweep of another scene, a corrupted folder or a ``sweep.npz`` that is not
+    surface value); a sweep of another scene (``digest``: the scene's
+    :func:`~femcam.scene.digest.scene_digest`), a corrupted folder or a ``sweep.npz`` that is not
     a regular file is refused by the library (:func:`femcam.assess.sweep_table`)."""
-    z = sweep_table(path, scene)
+    z = sweep_table(path, digest)
     return {k: z[k] for k in ("theta", "a_fe", "p0_fe", "tau1_max", "txz_range_max") if k in z}
 
 
 def _run(args) -> int:
     out_dir(args.out, create=False)  # checked before any work, created below
     scene = load_scene(args.scene)
-    table = _sweep_table(args.sweep, scene) if args.sweep else None
+    table = _sweep_table(args.sweep, scene_digest(scene)) if args.sweep else None
     theta = table["theta"] if table is not None else _validate.angles_deg("--angles-deg", args.angles_deg)
     _validate.angle_count("--sweep" if table is not None else "--angles-deg",
                           args.sweep if table is not None else args.angles_deg, theta.size, 3600.0,

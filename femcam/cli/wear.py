@@ -37,9 +37,11 @@ from ..io import provenance, write_rows, write_table
 from ..kinematics import LAW_NAMES
 from ..scene import load_scene
 from ..scene.case import contact_case, tip_scene
+from ..scene.finite_case import finite_case
 from ..sweep import SweepOptions, sweep
 from ..viz.wear import plot_evolution, plot_wear_comparison, plot_wear_map, plot_wear_polar
 from ..wear.axial import scene_wear_map
+from ..wear.coating import coating_wear
 from ..wear.evolution import convergence_table, evolution_case, evolution_problem
 from ..wear.options import describe_k, wear_coefficient_info
 from ..wear.seed000 import PAPER_LAWS, format_table3, seed000_table, table_rows_for_csv
@@ -187,11 +189,13 @@ def _map(args) -> int:
         if args.source == "fe":  # the FE pressure: a sweep of the scene (a knife edge as itself)
             # the scene's [fe] settings apply as in femcam sweep; progress on a terminal
             fe = sweep(_fe_scene(sc, tip), SweepOptions(angles=theta, method="fe"))
-        k_factor, regime = wear_factor(contact_case(sc, theta, tip_radius=tip),
-                                       fe.table if fe is not None else None)
+        case = contact_case(sc, theta, tip_radius=tip)
+        k_factor, regime = wear_factor(case, fe.table if fe is not None else None)
         with phase(f"wear map: {label}"):
-            wm, st, slip = scene_wear_map(sc, theta, cycles=cycles, tip_radius=tip, fe=fe,
-                                          k_factor=k_factor, regime=regime)  # axial peak if crowned
+            finite = finite_case(sc) if has_finite_length(sc.finite_length, sc.length) else None
+            coating = coating_wear(sc.layers, sc.wear, sc.cam.hardness)
+            wm, st, slip = scene_wear_map(case, finite, cycles=cycles, fe=fe, k_factor=k_factor,
+                                          regime=regime, coating=coating)  # axial peak if crowned
         results[label] = (wm, st, slip)
         _write_angle_csv(out / f"wear_{label}.csv", head, theta, cycles, wm, st, slip)
         _write_surface_csv(out / f"wear_{label}_surface.csv", head, cycles, wm)

@@ -5,10 +5,10 @@ cam-roller strip (see ``docs/halfspace.md``). numpy/scipy only."""
 
 from .crown import CROWNS, RollerProfile, circular_drop, edge_drop, log_drop
 from .influence import cell_influence, dcfft_kernel
-from .rows import COLUMNS, finite_length_rows, has_finite_length, strip_for_scene, to_csv_columns
+from .rows import COLUMNS, anchor_angles, finite_length_rows, has_finite_length, strip_for, to_csv_columns
 from .solver import ContactSolution, HalfSpace
 from .strip import FiniteLengthContact, StripResult
 
 __all__ = ["COLUMNS", "CROWNS", "ContactSolution", "FiniteLengthContact", "HalfSpace", "RollerProfile",
-           "StripResult", "cell_influence", "circular_drop", "dcfft_kernel", "edge_drop",
-           "finite_length_rows", "has_finite_length", "log_drop", "strip_for_scene", "to_csv_columns"]
+           "StripResult", "anchor_angles", "cell_influence", "circular_drop", "dcfft_kernel", "edge_drop",
+           "finite_length_rows", "has_finite_length", "log_drop", "strip_for", "to_csv_columns"]

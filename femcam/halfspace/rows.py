@@ -1,10 +1,13 @@
 r"""Finite-length contact over cam angles: the columns the sweep writes.
 
 :func:`finite_length_rows` solves the half-space strip (:mod:`femcam.halfspace.strip`) at each
-cam angle of a scene, reusing the kernel FFTs across angles and warm-starting the conjugate
-gradients (from the previous angle's pressure, or from the cold solution at the nearest anchor
-angle so that a row depends on its own angle alone: ``start``), and returns one SI array per
-column (:data:`COLUMNS` gives the CSV name with its unit and the factor from SI).
+cam angle, reusing the kernel FFTs across angles and warm-starting the conjugate gradients (from
+the previous angle's pressure, or from the cold solution at the nearest anchor angle so that a
+row depends on its own angle alone: ``start``), and returns one SI array per column
+(:data:`COLUMNS` gives the CSV name with its unit and the factor from SI). It takes the contact
+at the angles (force, cam curvature) and the roller radius, and :func:`strip_for` the roller's
+finite-length record and the contact pair: the scene is analysed by the caller
+(``femcam.scene.finite_case`` bundles the records; this package is below ``femcam.scene``).
 
 The relative radius in the rolling direction is ``1/R = 1/rho + 1/Rr`` (Johnson 1985 eq. 4.44;
 ``rho < 0`` on a concave flank) and ``E*`` is the three-dimensional contact modulus
@@ -53,32 +56,65 @@ _ANCHORS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 _ANCHOR_LOCK = threading.Lock()
 
 
-def _anchor_start(fl: FiniteLengthContact, scene, theta: float):
-    """The cold solution's pressure at the anchor angle nearest ``theta`` (cached per strip and
-    scene), or None where the anchor has no Hertzian contact (the angle then starts cold)."""
-    j = round(theta / ANCHOR_STEP)
-    key = (repr(scene), j)
+def anchor_angles(theta) -> np.ndarray:
+    """The anchor angles of ``start="anchor"``: the multiples of :data:`ANCHOR_STEP` nearest the
+    cam angles ``theta``, each once, ascending (rad).
+
+    Parameters
+    ----------
+    theta : float or array_like
+        Cam angles [rad].
+
+    Returns
+    -------
+    ndarray, shape (n_anchor,)
+        ``j * ANCHOR_STEP`` [rad] for each ``j = round(theta / ANCHOR_STEP)``.
+
+    Examples
+    --------
+    >>> np.degrees(anchor_angles(np.radians([3.0, 7.0, 12.0]))).round(6)
+    array([ 0., 10.])
+    """
+    th = _validate.finite_array("theta", np.atleast_1d(theta), "rad").ravel()
+    return np.array([j * ANCHOR_STEP for j in sorted({round(float(t) / ANCHOR_STEP) for t in th})])
+
+
+def _anchor_start(fl: FiniteLengthContact, F: float, rho: float, Rr: float):
+    """The cold solution's pressure at an anchor angle's contact force ``F`` (N) and cam radius
+    of curvature ``rho`` (m) with a roller of radius ``Rr`` (m), cached per strip on those three
+    values (all the solution depends on besides the strip), or None where the anchor has no
+    Hertzian contact (the angle then starts cold)."""
+    key = (F, rho, Rr)
     with _ANCHOR_LOCK:
         cache = _ANCHORS.setdefault(fl, {})
         if key in cache:
             return cache[key]
-    st = scene.analyse(np.array([j * ANCHOR_STEP]))
-    F, rho = float(st.Fc[0]), float(st.rho[0])
-    inv = 1.0 / rho + 1.0 / scene.follower.Rr
+    inv = 1.0 / rho + 1.0 / Rr
     p = fl.solve(F, 1.0 / inv).p if (F > 0.0 and inv > 0.0) else None
     with _ANCHOR_LOCK:
         cache[key] = p
     return p
 
 
-def strip_for_scene(scene, *, nx: int = 64, ny: int = 128, tol: float = 1e-5) -> FiniteLengthContact:
-    """The :class:`~femcam.halfspace.strip.FiniteLengthContact` of a roller scene's
-    ``finite_length`` keys (defaults: roller width = cam face width = ``follower.face_width_mm``).
+def strip_for(finite, pair, Rr: float, *, Fc=None, rho=None, nx: int = 64, ny: int = 128,
+              tol: float = 1e-5) -> FiniteLengthContact:
+    """The :class:`~femcam.halfspace.strip.FiniteLengthContact` of a roller's finite-length keys
+    (defaults: roller width = cam face width = the contact length).
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A scene with a roller follower; its ``finite_length`` record (SI) sets the roller profile.
+    finite : femcam.scene.FiniteLength or None
+        The roller's finite-length record (m, rad; ``Scene.finite_length``): its roller profile
+        and cam face width. None: a straight roller as wide as the cam, ``pair.length``.
+    pair : femcam.scene.ContactPair
+        The contact pair: ``cam`` and ``roller`` materials (Pa) and ``length`` (m).
+    Rr : float
+        Roller radius [m].
+    Fc, rho : array_like, optional
+        Contact force [N] and cam radius of curvature [m] over one revolution
+        (``femcam.scene.finite_case`` analyses 720 angles): a logarithmic crown is designed for
+        the largest ``Fc`` at its relative radius ``1/R = 1/rho + 1/Rr``. Needed for a
+        logarithmic crown only (ignored otherwise).
     nx, ny : int
         Cells across the contact (rolling direction) and along the axis [-].
     tol : float
@@ -87,51 +123,49 @@ def strip_for_scene(scene, *, nx: int = 64, ny: int = 128, tol: float = 1e-5) ->
     Returns
     -------
     FiniteLengthContact
-        The strip; a logarithmic crown is designed for the largest contact force [N] of the
-        revolution (720 angles) at its relative radius [m].
+        The strip.
 
     Raises
     ------
     InputError
-        If the follower is not a roller (``Rr`` not > 0).
+        A logarithmic crown without ``Fc`` and ``rho``.
     """
-    _validate.positive("tol", tol, "")  # checked before the 720-angle design-load analysis
-    _validate.record("scene", scene, "a femcam.scene.Scene", "follower", "analyse")
-    Rr = getattr(scene.follower, "Rr", 0.0)
-    if not Rr > 0.0:
-        raise InputError(f"follower = {type(scene.follower).__name__}: the finite-length half-space "
-                         "contact needs a roller follower (a knife edge or flat face is not a line contact "
-                         "of two cylinders)")
-    fl = scene.finite_length
-    prof = fl.roller_profile() if fl is not None else RollerProfile(width=scene.length)
-    E_star = effective_modulus(scene.cam, scene.roller, "strain")
+    _validate.positive("tol", tol, "")
+    Rr = _validate.positive("Rr", Rr, "m")
+    _validate.record("pair", pair, "a femcam.scene.ContactPair", "cam", "roller", "length")
+    Fc = _validate.optional(_validate.finite_array, "Fc", Fc, "N")
+    rho = _validate.optional(_validate.radius_array, "rho", rho, "m")
+    prof = finite.roller_profile() if finite is not None else RollerProfile(width=pair.length)
+    E_star = effective_modulus(pair.cam, pair.roller, "strain")
     Q = Rd = None
     if prof.crown == "logarithmic":
-        st = scene.analyse(np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False))
-        i = int(np.argmax(st.Fc))
-        Q, Rd = float(st.Fc[i]), float(1.0 / (1.0 / st.rho[i] + 1.0 / Rr))
-    cam_width = scene.length if fl is None else fl.cam_width
+        if Fc is None or rho is None:
+            raise InputError("crown = logarithmic: the crown is designed for the largest contact force "
+                             "of the revolution; give Fc (N) and rho (m) over one revolution")
+        Fc, rho = _validate.broadcast(Fc=Fc, rho=rho)
+        i = int(np.argmax(Fc))
+        Q, Rd = float(Fc[i]), float(1.0 / (1.0 / rho[i] + 1.0 / Rr))
+    cam_width = pair.length if finite is None else finite.cam_width
     return FiniteLengthContact(prof, cam_width=cam_width, E_star=E_star, design_load=Q,
                                design_radius=Rd, nx=nx, ny=ny, tol=tol)
 
 
-def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float = 1e-5,
-                       strip: FiniteLengthContact | None = None, start: str = "previous") -> dict:
-    """Finite-length contact at cam angles ``theta`` (rad) of a roller ``scene``.
+def finite_length_rows(strip: FiniteLengthContact, theta, Fc, rho, Rr: float, *, start: str = "previous",
+                       anchor_Fc=None, anchor_rho=None) -> dict:
+    """Finite-length contact of a roller at cam angles ``theta`` (rad).
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A scene with a roller follower.
+    strip : FiniteLengthContact
+        The strip (e.g. :func:`strip_for`; built once, it reuses its kernel FFTs).
     theta : float or array_like, shape (n_theta,)
         Cam angles [rad].
-    nx, ny : int
-        Cells across the contact and along the axis [-]; ignored when ``strip`` is given.
-    tol : float
-        Relative pressure-change tolerance of the conjugate gradients [-]; ignored when
-        ``strip`` is given.
-    strip : FiniteLengthContact, optional
-        A strip built beforehand (e.g. by :func:`strip_for_scene`) to reuse its kernel FFTs.
+    Fc : float or array_like, shape (n_theta,)
+        Contact force at ``theta`` [N] (``<= 0``: lift-off).
+    rho : float or array_like, shape (n_theta,)
+        Cam radius of curvature at the contact [m] (< 0 concave, inf flat).
+    Rr : float
+        Roller radius [m].
     start : {"previous", "anchor", "cold"}, optional
         Where the conjugate gradients of each angle start: the previous angle's pressure
         (default; fewest iterations, but a row then depends on the angles before it); the cold
@@ -139,6 +173,9 @@ def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float 
         on its own angle alone: bit-identical whatever other angles are solved with it, the
         sweep's choice); or cold at every angle. The starts agree within the solver tolerance
         (measured: at most 4.4e-5 relative on ``p_axial_peak`` of the crowned example).
+    anchor_Fc, anchor_rho : array_like, shape (n_anchor,), optional
+        Contact force [N] and cam radius of curvature [m] at :func:`anchor_angles` of ``theta``
+        (``start="anchor"`` only, where they are needed).
 
     Returns
     -------
@@ -153,28 +190,30 @@ def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float 
     th = _validate.finite_array("theta", np.atleast_1d(theta), "rad").ravel()
     if start not in STARTS:
         raise _validate.fail("start", start, "", f"must be one of {', '.join(STARTS)}")
-    _validate.record("scene", scene, "a femcam.scene.Scene", "follower", "analyse")
-    fl = strip or strip_for_scene(scene, nx=nx, ny=ny, tol=tol)   # refuses a non-roller follower
-    st = scene.analyse(th)
-    Rr = scene.follower.Rr
+    fl = _validate.instance("strip", strip, FiniteLengthContact, "a femcam.halfspace.FiniteLengthContact "
+                            "(femcam.halfspace.strip_for)")
+    Rr = _validate.positive("Rr", Rr, "m")
+    Fc, rho = _validate.broadcast(theta=th, Fc=_validate.finite_array("Fc", Fc, "N"),
+                                  rho=_validate.radius_array("rho", rho, "m"))[1:]
+    anchors = _anchors(th, anchor_Fc, anchor_rho) if start == "anchor" else None
     with np.errstate(divide="ignore"):
-        inv = 1.0 / st.rho + 1.0 / Rr
+        inv = 1.0 / rho + 1.0 / Rr
     n = th.size
     out = {k: np.full(n, np.nan) for k in COLUMNS}
     R = np.where(inv > 0, 1.0 / np.where(inv > 0, inv, 1.0), np.nan)   # nan: concave-conformal
-    out.update(theta=th, Fc=np.asarray(st.Fc, float), R=R)
+    out.update(theta=th, Fc=np.array(Fc, float), R=R)
     out["p_line"] = np.full((n, fl.ny), np.nan)
     out["w"] = np.full((n, fl.ny), np.nan)
     out["y"] = fl.y.copy()
     flags = []
     p_prev = None
     for i in range(n):
-        F, R = float(st.Fc[i]), float(out["R"][i])
+        F, R = float(Fc[i]), float(out["R"][i])
         if not F > 0.0 or not math.isfinite(R):
             flags.append(("no_contact",) if not F > 0.0 else ("non_hertzian",))
             continue
         p_start = (p_prev if start == "previous" else None) if start != "anchor" else \
-            _anchor_start(fl, scene, float(th[i]))
+            _anchor_start(fl, *anchors[round(float(th[i]) / ANCHOR_STEP)], Rr)
         r = fl.solve(F, R, p_start=p_start)
         p_prev = r.p
         p0 = math.sqrt(F / fl.L * fl.E_star / (math.pi * R))
@@ -188,6 +227,22 @@ def finite_length_rows(scene, theta, *, nx: int = 64, ny: int = 128, tol: float 
         flags.append(r.flags)
     out["flags"] = tuple(flags)
     return out
+
+
+def _anchors(th: np.ndarray, Fc, rho) -> dict:
+    """``round(angle / ANCHOR_STEP) -> (Fc, rho)`` (N, m) of the anchors of ``th`` (rad) from
+    the arrays given at :func:`anchor_angles` ``(th)``."""
+    angles = anchor_angles(th)
+    if Fc is None or rho is None:
+        raise InputError('start = "anchor": give anchor_Fc (N) and anchor_rho (m), the contact at '
+                         "anchor_angles(theta)")
+    Fc = _validate.finite_array("anchor_Fc", np.atleast_1d(Fc), "N").ravel()
+    rho = _validate.radius_array("anchor_rho", np.atleast_1d(rho), "m").ravel()
+    if Fc.shape != angles.shape or rho.shape != angles.shape:
+        raise InputError(f"anchor_Fc has shape {Fc.shape}, anchor_rho {rho.shape}: give one value at each "
+                         f"of the {angles.size} anchor_angles(theta)")
+    return {round(float(a) / ANCHOR_STEP): (float(f), float(r))
+            for a, f, r in zip(angles, Fc, rho, strict=True)}
 
 
 def to_csv_columns(rows: dict) -> dict:

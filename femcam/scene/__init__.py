@@ -57,7 +57,8 @@ problem collector, did-you-mean), ``load`` (TOML reading, :func:`load_scene`), o
 table group (``program``, ``follower`` with ``[cam]``, ``dynamics``, ``materials``, ``contact``
 with ``[lubricant]``/``[surface]``, ``layers`` for coatings and cases, ``bodies``, ``study`` for
 ``[fe]``/``[sweep]``, ``wear``), the typed records they hand on (``bodies``: ``RealBodies``;
-``layers``: ``BodyLayers``; ``finite``: ``FiniteLength``; ``pair``: ``ContactPair``) and
+``layers``: ``BodyLayers``; ``finite``: ``FiniteLength``; ``pair``: ``ContactPair``;
+``finite_case``: ``FiniteCase``, the finite-length contact femcam.halfspace takes) and
 ``state`` (:class:`Scene`, :class:`SceneState`, :meth:`Scene.analyse`, the undercut check).
 
 Only numpy/scipy and the standard library (``tomllib``) are imported.
@@ -67,6 +68,7 @@ from .bodies import CamShaft, RealBodies, RollerSupport, roller_support_problems
 from .case import CamDiskCase, ContactCase, cam_disk_case, contact_case
 from .checker import MAX_PROBLEMS
 from .finite import FiniteLength
+from .finite_case import FiniteCase, finite_case
 from .layers import BodyLayers, CaseSpec, CoatingSpec
 from .load import load_scene
 from .pair import ContactPair
@@ -78,7 +80,7 @@ from .wear import WearSettings, wear_table
 
 __all__ = ["MAX_PROBLEMS", "METHODS", "STUDY_RANGES", "STUDY_WHOLE", "TOLERANCE_FLOOR",
            "UNDERCUT_CHECK_N", "BodyLayers", "CamDiskCase", "CamShaft", "CaseSpec", "CoatingSpec",
-           "ContactCase", "ContactPair", "FiniteLength", "LubricantData", "MaterialData", "RealBodies",
-           "RollerSupport", "Scene", "SceneState", "StudySettings", "SurfaceRoughness", "Tribology",
-           "WearSettings", "cam_disk_case", "contact_case", "load_scene",
+           "ContactCase", "ContactPair", "FiniteCase", "FiniteLength", "LubricantData", "MaterialData",
+           "RealBodies", "RollerSupport", "Scene", "SceneState", "StudySettings", "SurfaceRoughness",
+           "Tribology", "WearSettings", "cam_disk_case", "contact_case", "finite_case", "load_scene",
            "roller_support_problems", "study_problem", "wear_table"]

@@ -17,7 +17,6 @@ import numpy as np
 from .. import _validate
 from ..errors import InputError
 from ..loads import ArmDynamics, FollowerDynamics
-from ..materials import Material
 from ..profile import RollerFollower
 from .bodies import CamShaft
 from .pair import ContactPair
@@ -44,14 +43,9 @@ class ContactCase:
         The scene as errors name it (its file, or its name).
     follower : object
         The scene's follower (m; a knife edge stays a knife edge, see ``state``).
-    cam, roller : femcam.materials.Material
-        Cam and follower materials (Pa).
-    length : float
-        Axial contact length (m).
-    mu : float
-        Friction coefficient (dimensionless).
-    plane : str
-        ``"strain"`` or ``"stress"``.
+    pair : femcam.scene.pair.ContactPair
+        The contact pair (``Scene.pair``: cam and follower materials in Pa, axial contact length
+        in m, plane model, friction coefficient, sliding direction).
     omega : float
         Cam speed (rad/s).
     dynamics : femcam.loads.FollowerDynamics or femcam.loads.ArmDynamics
@@ -74,11 +68,7 @@ class ContactCase:
     name: str
     where: str
     follower: object
-    cam: Material
-    roller: Material
-    length: float
-    mu: float
-    plane: str
+    pair: ContactPair
     omega: float
     dynamics: FollowerDynamics | ArmDynamics
     tip_radius: float | None
@@ -93,13 +83,10 @@ class ContactCase:
         _validate.instance("state", self.state, SceneState, "a femcam.scene.SceneState")
         _validate.optional(_validate.instance, "revolution", self.revolution, SceneState,
                            "a femcam.scene.SceneState or None")
-        _validate.instance("cam", self.cam, Material, "a femcam.materials.Material")
-        _validate.instance("roller", self.roller, Material, "a femcam.materials.Material")
+        _validate.instance("pair", self.pair, ContactPair, "a femcam.scene.pair.ContactPair (Scene.pair)")
         _validate.instance("dynamics", self.dynamics, FollowerDynamics | ArmDynamics,
                            "a femcam.loads.FollowerDynamics or ArmDynamics")
         _validate.record("follower", self.follower, "a femcam follower (femcam.profile)", "kind", "Rb")
-        _validate.positive("length", self.length, "m")
-        _validate.nonnegative("mu", self.mu)
         _validate.optional(_validate.positive, "tip_radius", self.tip_radius, "m")
 
     def __repr__(self) -> str:
@@ -184,8 +171,7 @@ def contact_case(scene: Scene, theta=None, *, tip_radius: float | None = None) -
     revolution = None
     if scene.wear.roller_model == "inertia" and getattr(f, "translating_roller", False):
         revolution = geo.analyse(np.linspace(0.0, 2.0 * math.pi, REVOLUTION_N, endpoint=False))
-    return ContactCase(name=scene.name, where=scene.source_path or scene.name, follower=f, cam=scene.cam,
-                       roller=scene.roller, length=scene.length, mu=scene.mu, plane=scene.plane,
+    return ContactCase(name=scene.name, where=scene.source_path or scene.name, follower=f, pair=scene.pair,
                        omega=scene.omega, dynamics=scene.dynamics, tip_radius=tip if f.needs_tip else None,
                        tribology=scene.tribology, wear=scene.wear, state=geo.analyse(theta),
                        revolution=revolution)

@@ -7,6 +7,10 @@ scene (SI values), not the file: comments, whitespace, key order, units written 
 (``E_GPa = 210`` or ``210.0``), the free text (``name``, ``description``, ``source``, material
 names) and the study settings of ``[fe]`` and ``[sweep]`` (how finely or over which angles it is
 computed, not what is computed) leave it unchanged; any physical value changes it.
+
+:class:`SceneDigest` (built by :func:`scene_digest`) is what a check against a recorded result
+needs of a scene: its name, file and per-part hashes, so that the check takes the record, not the
+scene.
 """
 
 from __future__ import annotations
@@ -14,8 +18,11 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
+from dataclasses import dataclass
 
 import numpy as np
+
+from .. import _validate
 
 #: fields that do not change what is computed: free text, the file, the TOML as written (its
 #: physics is in the typed fields), study settings
@@ -102,3 +109,46 @@ def differing_parts(a: dict[str, str], b: dict[str, str]) -> list[str]:
     ['follower']
     """
     return sorted(k for k in set(a) | set(b) if a.get(k) != b.get(k))
+
+
+@dataclass(frozen=True, kw_only=True)
+class SceneDigest:
+    """A scene's physics hashes with its name and file (built by :func:`scene_digest`).
+
+    Parameters
+    ----------
+    name : str
+        The scene's name.
+    source_path : str
+        The scene file ("" for a scene built in code).
+    parts : dict[str, str]
+        :func:`physics_parts` of the scene: field name -> hex digest.
+    """
+
+    name: str
+    source_path: str
+    parts: dict
+
+    def __post_init__(self):
+        _validate.instance("parts", self.parts, dict, "a dict of field name -> sha256 hex digest")
+
+    @property
+    def sha256(self) -> str:
+        """:func:`physics_hash` of the scene (hex digest)."""
+        return hashlib.sha256(json.dumps(self.parts, sort_keys=True).encode()).hexdigest()
+
+
+def scene_digest(scene) -> SceneDigest:
+    """The :class:`SceneDigest` of ``scene``.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        A loaded scene.
+
+    Returns
+    -------
+    SceneDigest
+        Its name, file and :func:`physics_parts`.
+    """
+    return SceneDigest(name=scene.name, source_path=scene.source_path or "", parts=physics_parts(scene))

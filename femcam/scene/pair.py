@@ -1,12 +1,14 @@
 """The contact pair a physics package needs from a scene: :class:`ContactPair` (the two
 materials, the contact length, the plane model, the friction), built by :attr:`Scene.pair`, so
-that femcam.bodies and femcam.layers take it instead of the whole scene.
+that femcam.bodies, femcam.layers and the contact record :class:`femcam.scene.case.ContactCase`
+take it instead of the whole scene.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .. import _validate
 from ..materials import Material
 
 
@@ -35,3 +37,9 @@ class ContactPair:
     plane: str = "strain"
     mu: float = 0.0
     sliding: str | None = None
+
+    def __post_init__(self):
+        _validate.instance("cam", self.cam, Material, "a femcam.materials.Material")
+        _validate.instance("roller", self.roller, Material, "a femcam.materials.Material")
+        _validate.positive("length", self.length, "m")
+        _validate.nonnegative("mu", self.mu)

@@ -135,7 +135,8 @@ def _jump(scene, factor_hi: float) -> tuple:
 def _wear(scene, theta) -> tuple:
     """(largest cam wear depth after one revolution in m, note) of the Archard map."""
     try:
-        wm = scene_wear(contact_case(scene, theta), cycles=1.0, coating=coating_wear(scene))[0]
+        coating = coating_wear(scene.layers, scene.wear, scene.cam.hardness)
+        wm = scene_wear(contact_case(scene, theta), cycles=1.0, coating=coating)[0]
     except FemcamError as exc:
         return math.nan, f"wear not computed: {exc}".replace("\n", " ")
     return float(wm.max_depth), ""

@@ -173,7 +173,7 @@ class ModelCache:
         its entry ``disk_key`` (loading it where it is wanted costs milliseconds). gmsh is
         initialised for the background builds here, in the submitting (main) thread, on the
         first build queued (:func:`femcam.mesh.session.gmsh_kept`): a run that only loads
-        from the disk cache never imports gmsh (~0.1 s).
+        from the disk cache never imports gmsh.
 
         Parameters
         ----------

@@ -5,14 +5,13 @@ the contact DOFs, stress operators of the window) and a few fresh "check" models
 verification (:mod:`femcam.sweep.verify`). A repeated run of the same scene, a resumed run or a
 design-study variant with the same bodies would build them all again. This module stores them.
 
-What is stored (measured on the seed 002 study model, a_over_h = 10, 2 cores; docs/sweep.md)
---------------------------------------------------------------------------------------------
+What is stored (sizes and load/build times: docs/sweep.md and docs/performance.md)
+----------------------------------------------------------------------------------
 * a family model without its factorised bodies (:func:`strip_model`): the meshes, the condensed
   compliances ``An, At, Ctt, Ctn``, the load operators and the stress operators of the window
-  (~13 MB, 5 ms to load against ~0.5 s to build: mesh 0.12 s, assembly 0.06 s, factorisation
-  0.08 s, condensation 0.23 s). A SuperLU factor cannot be pickled; the bodies are assembled and
-  factorised again from the stored meshes only when a full field is asked for (a ``.vtu``:
-  ~0.07 s per body, :class:`LazyBodies`), bit-identical to the original ones;
+  (loading one is about a hundred times faster than building it). A SuperLU factor cannot be
+  pickled; the bodies are assembled and factorised again from the stored meshes only when a
+  full field is asked for (a ``.vtu``, :class:`LazyBodies`), bit-identical to the original ones;
 * the p0 of each fresh check model (a float: the check models themselves are never reused).
 
 Key

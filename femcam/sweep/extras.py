@@ -383,7 +383,7 @@ def extras_provenance(scene, table, tolerance: float | None = None, method: str 
         out["layers"] = {"interface_utilisation_max": _peak(table, "layer_interface_utilisation", ok),
                          "case_margin_min": _peak(table, "layer_case_margin", ok, np.nanmin)}
     if "coating_wear" in names:
-        cw = coating_wear(scene)
+        cw = coating_wear(scene.layers, scene.wear, scene.cam.hardness)
         d = _peak(table, "wear_depth", ok)
         out["coating_wear"] = {"k_coating_m3_per_N_m": cw.k_coating, "k_substrate_m3_per_N_m": cw.k_substrate,
                                "thickness_m": cw.thickness, "source": cw.source,

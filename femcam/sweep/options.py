@@ -19,7 +19,6 @@ from .. import _validate
 from ..errors import InputError
 from ..materials import Material, effective_modulus
 from ..scene.schema import METHODS, RTOL_ON, STUDY_UNITS, STUDY_WHOLE, TOLERANCE_FLOOR, study_problem
-from ..wear.options import follower_tip_radius
 
 #: accepted ``rtol`` (relative p0 error): 0.02 % (the reuse tolerance floor 1e-4 is half of it)
 #: to 10 %
@@ -423,7 +422,7 @@ def contact_params(scene) -> ContactParams:
     """
     kind = scene.follower.kind
     sliding = -1 if str(scene.sliding or "+x").strip() == "-x" else 1
-    tip = follower_tip_radius(scene) if scene.follower.needs_tip else None
+    tip = scene.tip_radius if scene.follower.needs_tip else None
     if scene.follower.needs_tip and tip is None:
         raise InputError("follower.type = knife_edge: a sharp tip has no contact width, so the "
                          "contact stresses are undefined; add the tip radius to the scene: "

@@ -52,7 +52,7 @@ def _cpu_count() -> int:
 
 #: ``workers="auto"``: estimated time to write one FE ``.vtu`` at a_over_h = 10 (s; full-field
 #: back-solves of both bodies with the cached stress operator, ~10 ms, and an uncompressed
-#: ~1.7 MB file, ~4 ms; was 0.09 s with zlib and a rebuilt operator), scaled with (a_over_h/10)^2
+#: ~1.7 MB file, ~4 ms), scaled with (a_over_h/10)^2
 AUTO_VTU_S = 0.015
 
 

@@ -27,11 +27,12 @@ from ..bodies.rows import CSV_COLUMNS as RING_COLUMNS
 from ..bodies.rows import build_for
 from ..errors import FemcamError
 from ..halfspace.rows import COLUMNS as HS_COLUMNS
-from ..halfspace.rows import finite_length_rows, strip_for_scene
+from ..halfspace.rows import anchor_angles, finite_length_rows
 from ..io import vtu_name, write_global_cam_vtu
 from ..layers import result_layer_row, scene_layer_rows, scene_layers
 from ..layers.from_scene import scene_coatings
 from ..scene.case import cam_disk_case, contact_case
+from ..scene.finite_case import finite_case
 from ..wear.coating import coating_wear
 from ..wear.map import wear_depth_per_angle
 from .cache import default_cache
@@ -116,8 +117,8 @@ def cam_disk_record(scene):
 
 
 def strip_model(scene):
-    """The scene's :class:`~femcam.halfspace.strip.FiniteLengthContact` (kernel FFTs), once per
-    process.
+    """The scene's finite-length contact (:func:`femcam.scene.finite_case`) and its
+    :class:`~femcam.halfspace.strip.FiniteLengthContact` (kernel FFTs), once per process.
 
     Parameters
     ----------
@@ -126,10 +127,15 @@ def strip_model(scene):
 
     Returns
     -------
-    femcam.halfspace.strip.FiniteLengthContact
+    finite : femcam.scene.FiniteCase
+        The roller's finite-length records (m, rad).
+    strip : femcam.halfspace.strip.FiniteLengthContact
         The finite-length contact of the scene's roller.
     """
-    return _cached("strip", scene, lambda: strip_for_scene(scene))
+    def build():
+        fc = finite_case(scene)
+        return fc, fc.strip()
+    return _cached("strip", scene, build)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -291,7 +297,11 @@ def halfspace_rows(scene, theta) -> dict:
         (Pa, m, N/m; counts and 0/1 flags as float), and ``hs_flags`` (object, the strip flags
         of each angle joined by ``;``).
     """
-    r = finite_length_rows(scene, np.asarray(theta, float), strip=strip_model(scene), start="anchor")
+    fc, strip = strip_model(scene)
+    th = np.asarray(theta, float)
+    st, anchors = scene.analyse(th), scene.analyse(anchor_angles(th))
+    r = finite_length_rows(strip, th, st.Fc, st.rho, fc.Rr, start="anchor", anchor_Fc=anchors.Fc,
+                           anchor_rho=anchors.rho)
     out = {f"hs_{k}": np.asarray(r[k], float) for k in HS_COLUMNS}
     out["hs_flags"] = np.array([";".join(f) for f in r["flags"]], dtype=object)
     return out
@@ -592,7 +602,7 @@ def coated_cam(scene) -> bool:
     bool
         The ``coating_wear`` provider applies.
     """
-    cw = coating_wear(scene)
+    cw = coating_wear(scene.layers, scene.wear, scene.cam.hardness)
     return cw is not None and cw.body == "cam"
 
 
@@ -613,7 +623,7 @@ def coating_wear_chunk(task, rows) -> dict:
         ``wear_depth`` [m per revolution] scaled by the coating/substrate k ratio
         where positive, and ``wear_source``.
     """
-    cw = coating_wear(task.scene)
+    cw = coating_wear(task.scene.layers, task.scene.wear, task.scene.cam.hardness)
     depth = np.asarray(rows.wear_depth, float)
     src = np.asarray(rows.wear_source).astype(str)
     on = np.isfinite(depth) & (depth > 0)

@@ -56,7 +56,7 @@ from ..profile import (
     cam_profile,
 )
 from ..scene.case import tip_scene
-from ..wear.options import follower_tip_radius, slip_kwargs
+from ..wear.options import slip_kwargs
 from ..wear.slip import roller_inertia
 
 #: angles inserted per side of a curvature jump (over the straddle span)
@@ -89,7 +89,7 @@ def contact_scene(scene):
     """
     if not scene.follower.needs_tip:
         return scene
-    tip = follower_tip_radius(scene)
+    tip = scene.tip_radius
     if tip is None:
         raise InputError("follower.type = knife_edge: a sharp tip has no contact width, so the contact "
                          "stresses are undefined; add the tip radius to the scene: [follower] "
@@ -98,7 +98,7 @@ def contact_scene(scene):
 
 
 def _tip(scene):
-    return follower_tip_radius(scene) if scene.follower.needs_tip else None
+    return scene.tip_radius if scene.follower.needs_tip else None
 
 
 def _a_at(scene, jump, F) -> float:

@@ -45,11 +45,10 @@ whose stresses are Hertz's shape factors). The ring's own stresses get ``err_est
 Checked on the thick ring on a tight pin against Hertz and against a ring of 512 bore vertices
 (``tests/test_sweep_ring.py``).
 
-Cost: the ring model was already built and solved for its bore and needle columns; those solves
-are now read by the headline as well (the solid-roller families still answer the stresses); the
-estimate adds one second ring model per process (+1.3 s CPU on a 36-angle needle sweep,
-docs/estimate.md). With ``--method auto`` the rows Hertz answers need no FE model at all, so a
-ring scene then costs the ring models alone.
+Cost: the ring model built and solved for the bore and needle columns is the one the headline
+reads (the solid-roller families answer the stresses); the estimate adds one second ring model
+per process (its cost: docs/estimate.md). With ``--method auto`` the rows Hertz answers need
+no FE model at all, so a ring scene then costs the ring models alone.
 """
 
 from __future__ import annotations

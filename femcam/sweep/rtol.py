@@ -182,8 +182,8 @@ def rtol_settings(a_over_h, rtol, method: str, tolerance: float) -> tuple:
         The sweep method (``"hertz"`` is refused with ``rtol``).
     tolerance : float or None
         The reuse tolerance as given [-]; None: :data:`DEFAULT_TOLERANCE`, or ``rtol / 2`` with
-        ``rtol`` (measured on the seed 002 study model at rtol 1 %: 2 families and 2.9 s instead
-        of 6 families and 13.5 s with 0.2 %, load 3.9).
+        ``rtol`` (a looser reuse bound means fewer families; the cost of each tolerance is in
+        docs/performance.md).
 
     Returns
     -------

@@ -28,9 +28,11 @@ import math
 
 import numpy as np
 
-from ..halfspace.rows import finite_length_rows, has_finite_length
-from ..scene.case import contact_case
-from .coating import coating_wear
+from .. import _validate
+from ..halfspace.rows import finite_length_rows
+from ..scene.case import ContactCase
+from ..scene.finite_case import FiniteCase
+from .coating import CoatingWear
 from .map import WearMap, wear_map
 from .options import slip_kwargs, wear_coefficient_info
 from .scene import scene_wear, with_coating
@@ -69,109 +71,129 @@ def axial_pressure(p_peak, w_max) -> tuple[np.ndarray, np.ndarray]:
     return a, np.where(ok, p, np.nan)
 
 
-def axial_table(scene, theta, fe=None) -> dict:
+def axial_table(case: ContactCase, finite: FiniteCase | None = None, fe=None) -> dict:
     """Per-angle table for :func:`femcam.wear.map.wear_map` with ``pressure="axial_peak"``.
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A roller scene with finite-length keys.
-    theta : ndarray, shape (n,)
-        Cam angles (rad).
+    case : femcam.scene.case.ContactCase
+        A roller scene's contact at cam angles ``theta`` (rad): ``contact_case(scene, theta)``.
+    finite : femcam.scene.FiniteCase, optional
+        The roller's finite-length contact (``finite_case(scene)``; m, rad): the strip solved at
+        ``case.theta`` by :func:`femcam.halfspace.finite_length_rows`. Needed without ``fe``.
     fe : femcam.sweep.SweepResult, optional
-        A sweep of ``scene`` at ``theta``: its ``hs_p_axial_peak``/``hs_w_max`` columns are used.
-        Default: :func:`femcam.halfspace.rows.finite_length_rows` at ``theta``.
+        A sweep of the scene at ``case.theta``: its ``hs_p_axial_peak``/``hs_w_max`` columns are
+        used instead.
 
     Returns
     -------
     dict
         ``theta`` (rad), ``a_axial`` (m), ``p0_axial`` (Pa), ``Fc`` (N), ``w_max`` (N/m).
+
+    Raises
+    ------
+    InputError
+        Neither ``finite`` nor ``fe`` given.
     """
-    theta = np.asarray(theta, float)
+    case = _validate.instance("case", case, ContactCase, "a femcam.scene.case.ContactCase "
+                              "(femcam.scene.case.contact_case(scene, theta))")
+    theta = np.asarray(case.theta, float)
     if fe is not None:
         tab = fe.table
         p, w, Fc = (np.asarray(tab[k], float) for k in ("hs_p_axial_peak", "hs_w_max", "Fc"))
     else:
-        r = finite_length_rows(scene, theta)
+        finite = _validate.instance("finite", finite, FiniteCase, "a femcam.scene.FiniteCase "
+                                    "(femcam.scene.finite_case(scene)) when fe is not given")
+        st = case.state
+        r = finite_length_rows(finite.strip(), theta, st.Fc, st.rho, finite.Rr)
         p, w, Fc = r["p_axial_peak"], r["w_max"], r["Fc"]
     a, p0 = axial_pressure(p, w)
     return {"theta": theta, "a_axial": a, "p0_axial": p0, "Fc": np.clip(Fc, 0.0, None), "w_max": w}
 
 
-def scene_wear_axial(scene, theta, *, cycles: float = 1e6, fe=None, k_factor=None,
-                     regime=None) -> tuple[WearMap, object, SlipResult]:
-    """Archard wear map of a finite-length roller scene from its most loaded slice.
+def scene_wear_axial(case: ContactCase, finite: FiniteCase | None = None, *, cycles: float = 1e6, fe=None,
+                     k_factor=None, regime=None, coating: CoatingWear | None = None
+                     ) -> tuple[WearMap, object, SlipResult]:
+    """Archard wear map of a finite-length roller from its most loaded slice.
 
     The same steps as :func:`femcam.wear.scene.scene_wear` (kinematics, slip, k, coating) with
     the pressure of :func:`axial_table`.
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A roller scene with finite-length keys.
-    theta : ndarray, shape (n,)
-        Cam angles [rad], uniform over one revolution, endpoint excluded.
+    case : femcam.scene.case.ContactCase
+        A roller scene's contact at cam angles ``theta`` [rad], uniform over one revolution,
+        endpoint excluded: ``contact_case(scene, theta)``.
+    finite : femcam.scene.FiniteCase, optional
+        The roller's finite-length contact (``finite_case(scene)``); needed without ``fe``.
     cycles : float
         Number of cam revolutions [-].
     fe : femcam.sweep.SweepResult, optional
-        A sweep of ``scene`` at ``theta`` whose half-space columns are used (see
+        A sweep of the scene at ``theta`` whose half-space columns are used (see
         :func:`axial_table`); default: solve the strip here.
     k_factor, regime : ndarray, shape (n,), optional
         The wear coefficient's factor k(lambda)/k [-] and the lubrication regime per angle;
         default: the dry k.
+    coating : femcam.wear.coating.CoatingWear, optional
+        The coated body's wear data (thickness [m], k [m^3/(N m)];
+        :func:`femcam.wear.coating.coating_wear`); None: uncoated.
 
     Returns
     -------
     wear_map : femcam.wear.map.WearMap
         ``pressure = "axial_peak"``; its ``load_error`` is 0 (``pi a p0 / 2 = w_max`` exactly).
     state : femcam.scene.SceneState
-        ``scene.analyse(theta)``.
+        ``case.state``.
     slip : femcam.wear.slip.SlipResult
         Sliding and transport speeds [m/s] at ``theta``.
     """
-    st = scene.analyse(theta)
+    table = axial_table(case, finite, fe)
+    theta, st = case.theta, case.state
     Fc = np.clip(st.Fc, 0.0, None)
-    table = axial_table(scene, theta, fe)
-    kw = slip_kwargs(scene.wear, omega=scene.omega, mu=scene.mu, follower=scene.follower)
-    slip = follower_slip(scene.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **kw)
-    k, _where = wear_coefficient_info(scene.wear, scene.cam.hardness)
-    wm = wear_map(table, slip, k=k, length=scene.length, cycles=cycles, pressure="axial_peak",
+    kw = slip_kwargs(case.wear, omega=case.omega, mu=case.pair.mu, follower=case.follower)
+    slip = follower_slip(case.follower, theta, st.s, st.s1, st.s2, Fc=Fc, **kw)
+    k, _where = wear_coefficient_info(case.wear, case.pair.cam.hardness)
+    wm = wear_map(table, slip, k=k, length=case.pair.length, cycles=cycles, pressure="axial_peak",
                   k_factor=k_factor, regime=regime)
-    return with_coating(wm, coating_wear(scene)), st, slip
+    return with_coating(wm, coating), st, slip
 
 
-def scene_wear_map(scene, theta, *, cycles: float = 1e6, tip_radius: float | None = None, fe=None,
-                   k_factor=None, regime=None) -> tuple[WearMap, object, SlipResult]:
-    """Archard wear map of a scene with the pressure its geometry asks for: the most loaded
-    slice (:func:`scene_wear_axial`) for a crowned, tilted or narrower roller
-    (:func:`femcam.halfspace.rows.has_finite_length`), the 2D contact
+def scene_wear_map(case: ContactCase, finite: FiniteCase | None = None, *, cycles: float = 1e6, fe=None,
+                   k_factor=None, regime=None, coating: CoatingWear | None = None
+                   ) -> tuple[WearMap, object, SlipResult]:
+    """Archard wear map of a scene's contact with the pressure its geometry asks for: the most
+    loaded slice (:func:`scene_wear_axial`) for a crowned, tilted or narrower roller
+    (``finite.applies``: :func:`femcam.halfspace.rows.has_finite_length`), the 2D contact
     (:func:`femcam.wear.scene.scene_wear`) otherwise.
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        The scene.
-    theta : ndarray, shape (n,)
-        Cam angles [rad], uniform over one revolution, endpoint excluded.
+    case : femcam.scene.case.ContactCase
+        The contact at cam angles ``theta`` [rad], uniform over one revolution, endpoint
+        excluded (``contact_case(scene, theta, tip_radius=...)``; a knife edge's tip radius [m]
+        for the 2D contact).
+    finite : femcam.scene.FiniteCase or None, optional
+        A roller's finite-length contact (``finite_case(scene)``); None: the 2D contact.
     cycles : float
         Number of cam revolutions [-].
-    tip_radius : float or None, optional
-        Knife-edge tip radius [m] (2D contact only).
     fe : femcam.sweep.SweepResult, optional
-        A sweep of ``scene`` at ``theta`` giving the pressure.
+        A sweep of the scene at ``theta`` giving the pressure.
     k_factor, regime : ndarray, shape (n,), optional
         The wear coefficient's factor k(lambda)/k [-] and the lubrication regime per angle.
+    coating : femcam.wear.coating.CoatingWear, optional
+        The coated body's wear data (thickness [m], k [m^3/(N m)]); None: uncoated.
 
     Returns
     -------
     wear_map : femcam.wear.map.WearMap
-        The map (the most loaded slice's when ``has_finite_length(scene.finite_length, scene.length)``).
+        The map (the most loaded slice's when ``finite.applies``).
     state : femcam.scene.SceneState
-        ``scene.analyse(theta)``.
+        ``case.state``.
     slip : femcam.wear.slip.SlipResult
         Sliding and transport speeds [m/s] at ``theta``.
     """
-    if has_finite_length(scene.finite_length, scene.length):
-        return scene_wear_axial(scene, theta, cycles=cycles, fe=fe, k_factor=k_factor, regime=regime)
-    return scene_wear(contact_case(scene, theta, tip_radius=tip_radius), cycles=cycles, fe=fe,
-                      k_factor=k_factor, regime=regime, coating=coating_wear(scene))
+    if finite is not None and _validate.instance("finite", finite, FiniteCase, "a femcam.scene.FiniteCase "
+                                                 "or None").applies:
+        return scene_wear_axial(case, finite, cycles=cycles, fe=fe, k_factor=k_factor, regime=regime,
+                                coating=coating)
+    return scene_wear(case, cycles=cycles, fe=fe, k_factor=k_factor, regime=regime, coating=coating)

@@ -35,6 +35,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _validate
+from ..scene.layers import BodyLayers
+from ..scene.wear import WearSettings
 from .options import wear_coefficient_info
 
 
@@ -157,22 +159,38 @@ def layered_depth(d_coating, d_substrate, thickness: float, cycles: float) -> np
     return np.minimum(cycles * d_c, thickness) + np.maximum(cycles - n_through, 0.0) * d_s
 
 
-def coating_wear(scene) -> CoatingWear | None:
-    """The :class:`CoatingWear` of the scene's coated body, or None (no coating, or a coating
-    without ``wear_k_mm3_per_N_m`` / ``wear_K``). The substrate's ``k`` is the scene's ``[wear]``
-    coefficient (:func:`femcam.wear.options.wear_coefficient_info`).
+def coating_wear(layers, wear: WearSettings, hardness: float | None) -> CoatingWear | None:
+    """The :class:`CoatingWear` of the first coated body in ``layers``, or None (no coating, or
+    a coating without ``wear_k_mm3_per_N_m`` / ``wear_K``). The substrate's ``k`` is the scene's
+    ``[wear]`` coefficient (:func:`femcam.wear.options.wear_coefficient_info` of ``wear`` and
+    the cam ``hardness``).
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        Scene whose ``layers`` may hold a coating with wear data.
+    layers : tuple of femcam.scene.layers.BodyLayers
+        The coated and case-hardened bodies (``Scene.layers``).
+    wear : femcam.scene.wear.WearSettings
+        The ``[wear]`` settings in SI (``Scene.wear``).
+    hardness : float or None
+        Cam hardness [Pa] (``Scene.cam.hardness``); None: not given.
 
     Returns
     -------
     CoatingWear or None
         The first coated body's wear data (SI), or None.
+
+    Raises
+    ------
+    InputError
+        ``layers`` not a tuple of BodyLayers, ``wear`` not a WearSettings, a hardness that is not
+        > 0.
     """
-    for body, c in ((b.body, b.coating) for b in scene.layers if b.coating is not None):
+    wear = _validate.instance("wear", wear, WearSettings, "a femcam.scene.wear.WearSettings")
+    hardness = _validate.optional(_validate.positive, "hardness", hardness, "Pa")
+    if not isinstance(layers, tuple) or not all(isinstance(b, BodyLayers) for b in layers):
+        raise _validate.fail("layers", type(layers).__name__, "", "must be a tuple of "
+                             "femcam.scene.layers.BodyLayers (Scene.layers)")
+    for body, c in ((b.body, b.coating) for b in layers if b.coating is not None):
         if c.wear_k is None and c.wear_K is None:
             continue
         if c.wear_k is not None:  # SI: m^3/(N m), Pa, m
@@ -183,5 +201,5 @@ def coating_wear(scene) -> CoatingWear | None:
             src = (f"[materials.{body}.coating] wear_K = {c.wear_K:g} / hardness_MPa = "
                    f"{c.hardness / 1e6:g}")
         return CoatingWear(body=body, thickness=c.thickness, k_coating=k,
-                           k_substrate=wear_coefficient_info(scene.wear, scene.cam.hardness)[0], source=src)
+                           k_substrate=wear_coefficient_info(wear, hardness)[0], source=src)
     return None

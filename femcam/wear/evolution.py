@@ -238,15 +238,15 @@ def evolution_case(contact: ContactCase, *, k: float | None = None) -> Evolution
                       "knife-edge tip wears to a conformal flat that Hertz does not describe; a "
                       "flat face is not modelled); run without --evolve-blocks")
     if k is None:
-        k = wear_coefficient_info(c.wear, c.cam.hardness)[0]
+        k = wear_coefficient_info(c.wear, c.pair.cam.hardness)[0]
     k = _validate.nonnegative("k", k, "m^3/(N m)")
     st = c.state
     Fc = np.clip(st.Fc, 0.0, None)
-    kw = slip_kwargs(c.wear, omega=c.omega, mu=c.mu, follower=c.follower)
+    kw = slip_kwargs(c.wear, omega=c.omega, mu=c.pair.mu, follower=c.follower)
     slip = follower_slip(c.follower, st.theta, st.s, st.s1, st.s2, Fc=Fc, **kw)
     return EvolutionCase(theta=np.asarray(st.theta, float), s=st.s, s1=st.s1, s2=st.s2, phi=st.phi,
                          rho=st.rho, slip=slip, dynamics=c.dynamics, omega=c.omega,
-                         Rr=c.follower.Rr, length=c.length, cam=c.cam, roller=c.roller,
+                         Rr=c.follower.Rr, length=c.pair.length, cam=c.pair.cam, roller=c.pair.roller,
                          k=k, name=c.name)
 
 

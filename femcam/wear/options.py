@@ -142,19 +142,3 @@ def describe_k(k: float, where: str) -> str:
     """
     return f"k = {k:.4g} m^3/(N m) = {k * 1e9:.4g} mm^3/(N m) ({where})"
 
-
-def follower_tip_radius(scene) -> float | None:
-    """Knife-edge tip radius (m) of a scene: ``[follower] tip_radius_mm`` (``Scene.tip_radius``);
-    None if not given (the former ``[wear] tip_radius_mm`` is refused by the scene loader).
-
-    Parameters
-    ----------
-    scene : femcam.scene.Scene
-        The scene (its ``wear`` table, cam hardness [Pa], source path).
-
-    Returns
-    -------
-    float or None
-        Tip radius [m], or None.
-    """
-    return getattr(scene, "tip_radius", None)

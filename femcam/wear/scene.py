@@ -73,12 +73,13 @@ def scene_wear(case: ContactCase, *, cycles: float = 1e6, fe=None, k_factor=None
     else:
         # a roller, the tip's roller, or the roller or pad on an arm: the follower circle's radius
         R2 = case.tip_radius if f.needs_tip else (f.Rr if f.draws_circle else math.inf)
-        hc = LineContact(F=Fc, length=case.length, R1=st.rho, R2=R2, cam=case.cam, roller=case.roller)
+        pr = case.pair
+        hc = LineContact(F=Fc, length=pr.length, R1=st.rho, R2=R2, cam=pr.cam, roller=pr.roller)
         table, pressure = {"theta": theta, "a": hc.a, "p0": hc.p0, "Fc": Fc}, "hertz"
-    kw = slip_kwargs(case.wear, omega=case.omega, mu=case.mu, follower=f)
+    kw = slip_kwargs(case.wear, omega=case.omega, mu=case.pair.mu, follower=f)
     slip = follower_slip(f, theta, st.s, st.s1, st.s2, Fc=Fc, **kw, tip_radius=case.tip_radius)
-    k, _where = wear_coefficient_info(case.wear, case.cam.hardness)
-    wm = wear_map(table, slip, k=k, length=case.length, cycles=cycles, pressure=pressure,
+    k, _where = wear_coefficient_info(case.wear, case.pair.cam.hardness)
+    wm = wear_map(table, slip, k=k, length=case.pair.length, cycles=cycles, pressure=pressure,
                   k_factor=k_factor, regime=regime)
     return with_coating(wm, coating), st, slip
 
