@@ -29,13 +29,13 @@ sys.path.insert(0, str(ROOT))
 from femcam.bodies.cam_global import CamGlobalModel  # noqa: E402
 from femcam.bodies.cam_mesh import mesh_cam_disk  # noqa: E402
 from femcam.bodies.cam_model import floating_supports  # noqa: E402
-from femcam.bodies.cam_rows import cam_disk_rows, disk_from_scene, solve_global  # noqa: E402
+from femcam.bodies.cam_rows import cam_disk_rows, disk_from_case, solve_global  # noqa: E402
 from femcam.bodies.cam_study import _contact_at, peak_angle, refined_at  # noqa: E402
 from femcam.bodies.contact import arc_load_matrix  # noqa: E402
 from femcam.bodies.model import _hoop_rows  # noqa: E402
 from femcam.fe.elasticity import assemble_body  # noqa: E402
 from femcam.materials import STEEL  # noqa: E402
-from femcam.scene import load_scene  # noqa: E402
+from femcam.scene import cam_disk_case, load_scene  # noqa: E402
 
 
 def load() -> str:
@@ -84,24 +84,25 @@ def main() -> int:
           f"{time.perf_counter() - t0:.2f} |")
     assert e < 0.02
     sc = load_scene(ROOT / "examples" / "seed002_cam_on_shaft.toml")
-    disk = disk_from_scene(sc)
+    case = cam_disk_case(sc)
+    disk = disk_from_case(case)
     t0 = time.perf_counter()
     g = CamGlobalModel.build(disk=disk, length=sc.length, plane=sc.plane)
     t_build = time.perf_counter() - t0
-    th_pk = peak_angle(sc)
+    at = sc.analyse(np.array([peak_angle(case.revolution)]))
     t0 = time.perf_counter()
-    m, r = refined_at(sc, disk, th_pk)
+    m, r = refined_at(case, disk, at)
     t_ref = time.perf_counter() - t0
-    rg = solve_global(g, *_contact_at(sc, th_pk), np.array([r.F]))
+    rg = solve_global(g, *_contact_at(at), np.array([r.F]))
     e_h = rg["hoop_max"][0] / r.hoop_max - 1
     e_s = rg["shaft_p0"][0] / r.shaft_p0 - 1
     print(f"| seed002_cam_on_shaft at the peak force | fully refined model | hoop {e_h:+.2%}, "
           f"shaft p0 {e_s:+.2%} | {t_ref:.2f} |")
     assert abs(e_h) < 0.02 and abs(e_s) < 0.02
     theta = np.radians(np.arange(0.0, 360.0, 1.0))
-    Fc = sc.analyse(theta).Fc
+    st = sc.analyse(theta)
     t0 = time.perf_counter()
-    rows = cam_disk_rows(sc, theta, Fc, model=g)
+    rows = cam_disk_rows(case, st, st.Fc, model=g)
     t_rows = time.perf_counter() - t0
     print(f"\n{load()}")
     print("| model | DOFs | mesh (s) | assembly (s) | factorisation (s) | condensation (s) | total build (s) "

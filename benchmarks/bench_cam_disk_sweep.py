@@ -72,12 +72,12 @@ def vtu_time(n: int = 10) -> float:
     """Mean time (s) of one global-model VTU of the example (model built first, not timed)."""
     from femcam.bodies.cam_geometry import contact_frame
     from femcam.bodies.cam_global import CamGlobalModel
-    from femcam.bodies.cam_rows import disk_from_scene
+    from femcam.bodies.cam_rows import disk_from_case
     from femcam.io import write_global_cam_vtu
-    from femcam.scene import load_scene
+    from femcam.scene import cam_disk_case, load_scene
 
     sc = load_scene(EXAMPLE)
-    g = CamGlobalModel.build(disk=disk_from_scene(sc), length=sc.length, plane=sc.plane)
+    g = CamGlobalModel.build(disk=disk_from_case(cam_disk_case(sc)), length=sc.length, plane=sc.plane)
     with tempfile.TemporaryDirectory() as d:
         C, nn, _, F = contact_frame(sc.analyse(np.array([0.0])))
         write_global_cam_vtu(Path(d) / "w.vtu", g, C, nn, F)  # builds the cached stress operator

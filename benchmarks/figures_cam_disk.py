@@ -26,10 +26,10 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from femcam.bodies.cam_rows import disk_from_scene  # noqa: E402
+from femcam.bodies.cam_rows import disk_from_case  # noqa: E402
 from femcam.bodies.cam_study import peak_angle, refined_at, web_study  # noqa: E402
 from femcam.io import write_cam_vtu  # noqa: E402
-from femcam.scene import load_scene  # noqa: E402
+from femcam.scene import cam_disk_case, load_scene  # noqa: E402
 
 BORES_MM = (2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 8.5)
 
@@ -88,9 +88,12 @@ def plot_cam_hoop(vtu: Path, path: Path) -> Path:
 def main() -> int:
     img = ROOT / "docs" / "img"
     sc = load_scene(ROOT / "examples" / "seed002_cam_on_shaft.toml")
-    r = web_study(sc, [b * 1e-3 for b in BORES_MM])
+    case = cam_disk_case(sc)                              # the outline over 720 angles
+    at = sc.analyse(np.array([peak_angle(case.revolution)]))   # the refined model's angle
+    rev = sc.analyse(np.linspace(0.0, 2 * math.pi, 360, endpoint=False))  # the global model's
+    r = web_study(case, [b * 1e-3 for b in BORES_MM], state=at, revolution=rev)
     th = r["theta"]
-    r["F"] = float(sc.analyse(np.array([th])).Fc[0])
+    r["F"] = float(at.Fc[0])
     print(f"load average {os.getloadavg()} (shared machine); peak force {r['F']:.1f} N at "
           f"{math.degrees(th):.1f} deg")
     print("| bore (mm) | web (mm) | p0 (MPa) | dp0 vs local (%) | a (um) | da (%) | approach / local (um) "
@@ -107,8 +110,7 @@ def main() -> int:
               f"{math.degrees(r['shaft_arc'][i]):.0f} | {r['t_refined'][i]:.2f} / {r['t_global'][i]:.2f} / "
               f"{r['t_rev'][i]:.2f} |")
     print("wrote", plot_web(r, img / "cam_disk_web.png"))
-    disk = disk_from_scene(sc)
-    m, res = refined_at(sc, disk, peak_angle(sc))
+    m, res = refined_at(case, disk_from_case(case), at)
     with tempfile.TemporaryDirectory() as tmp:
         vtu = write_cam_vtu(Path(tmp) / "cam_disk.vtu", m, res)
         print("wrote", plot_cam_hoop(vtu, img / "cam_disk_hoop.png"))

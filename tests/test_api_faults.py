@@ -119,6 +119,20 @@ def _contact_case():
     return contact_case(scene(), np.radians(np.arange(0.0, 360.0, 5.0)))
 
 
+@functools.cache
+def _cam_disk_case(name="seed002_study_model"):
+    """The cam-on-shaft record of a scene (its outline analysed over one revolution)."""
+    from femcam.scene import cam_disk_case
+
+    return cam_disk_case(scene(name))
+
+
+def _cam_disk_fields():
+    """The fields of a valid CamDiskCase (the study model: a roller, no bore)."""
+    c = _cam_disk_case()
+    return {f.name: getattr(c, f.name) for f in dataclasses.fields(c)}
+
+
 def _hs_rows():
     """A valid finite_length_rows call: the crowned example's strip (16 x 16 cells) at TH[:2]
     with the anchor start."""
@@ -290,8 +304,9 @@ CASES: dict[str, Case] = {
                           pair=scene("seed002_needle_roller").pair, Fc=1500.0, rho=0.02)),
         {"Fc": MISSING, "rho": RADIUS}, slow=True),
     "femcam.bodies.cam_disk_rows": Case(
-        lazy(lambda: dict(scene=scene("seed002_cam_on_shaft"), theta=TH[:1], Fc=F12[:1])),
-        {"theta": REAL, "Fc": MISSING}, slow=True),
+        lazy(lambda: dict(case=_cam_disk_case("seed002_cam_on_shaft"),
+                          state=scene("seed002_cam_on_shaft").analyse(TH[:1]), Fc=F12[:1])),
+        {"Fc": MISSING}, slow=True),
     "femcam.bodies.needle_approach": Case(kw(Q=150e3, length=0.01), {"Q": REAL, "length": POS}),
     "femcam.bodies.ring_rows": Case(
         lazy(lambda: dict(support=scene("seed002_needle_roller").bodies.roller,
@@ -523,6 +538,9 @@ CASES: dict[str, Case] = {
     "femcam.sweep.ModelCache": Case(kw(max_models=4), {"max_models": INT_POS}),
     "femcam.sweep.Progress": Case(kw(total=10, enabled=False), {"total": INT_NONNEG,
                                                                "delay_s": NONNEG}),
+    "femcam.scene.cam_disk_case": Case(lazy(lambda: dict(scene=scene("seed002_cam_on_shaft"))),
+                                       {"n_outline": INT_POS}),
+    "femcam.scene.CamDiskCase": Case(lazy(_cam_disk_fields), {"cam_yield": opt(POS)}),
     "femcam.scene.StudySettings": Case(kw(), {"a_over_h": opt(POS), "tolerance": opt(POS),
                                               "rtol": opt(POS), "chunk_size": opt(INT_POS),
                                               "vtk_every": opt(INT_NONNEG)}),

@@ -174,7 +174,7 @@ def test_a_web_within_ten_contact_half_widths_is_refused(tmp_path):
     """Seed 002 cam (base radius 10 mm) with a 9.5 mm bore: web 0.5 mm; its largest Hertz
     half-width is ~0.1 mm (Johnson eq. 4.45 at ~1.6 kN), so the web is < 10 a."""
     from femcam.bodies.cam_rows import cam_disk_rows
-    from femcam.scene import load_scene
+    from femcam.scene import cam_disk_case, load_scene
 
     ex = Path(__file__).resolve().parents[1] / "examples" / "seed002_cam_on_shaft.toml"
     text = ex.read_text().replace("bore_mm = 6.0", "bore_mm = 9.5")
@@ -183,7 +183,8 @@ def test_a_web_within_ten_contact_half_widths_is_refused(tmp_path):
     th = np.radians(np.arange(0.0, 360.0, 10.0))
     with pytest.raises(InputError, match=r"bore_mm = 9.5 mm: the web r_min - Rb = 0.5 mm is less than 10 "
                                          r"contact half-widths \(a = \d+"):
-        cam_disk_rows(sc, th, sc.analyse(th).Fc)
+        st = sc.analyse(th)
+        cam_disk_rows(cam_disk_case(sc), st, st.Fc)
 
 
 @pytest.mark.slow
@@ -274,16 +275,17 @@ def test_global_model_over_a_thin_web_hard_case():
     hence the 3 % tolerance and the refusal of webs below 10 a. The contact itself still does not
     see the disk (p0, a within 0.05 % of the local body)."""
     from femcam.bodies.cam_model import bore_vertices_for
-    from femcam.bodies.cam_rows import disk_from_scene
+    from femcam.bodies.cam_rows import disk_from_case
     from femcam.bodies.cam_study import _contact_at, refined_at
-    from femcam.scene import load_scene
+    from femcam.scene import cam_disk_case, load_scene
 
     sc = load_scene(Path(__file__).resolve().parents[1] / "examples" / "seed002_cam_on_shaft.toml")
     th = math.radians(300.0)
-    d = disk_from_scene(sc, Rb=0.0085)
-    m, r = refined_at(sc, d, th, cam_mesh=CamMeshOptions(arc_over_xf=1.5, n_bore=bore_vertices_for(d)))
+    case, at = cam_disk_case(sc), sc.analyse(np.array([th]))
+    d = disk_from_case(case, Rb=0.0085)
+    m, r = refined_at(case, d, at, cam_mesh=CamMeshOptions(arc_over_xf=1.5, n_bore=bore_vertices_for(d)))
     g = CamGlobalModel.build(disk=d, length=sc.length)
-    rg = solve_global(g, *_contact_at(sc, th), np.array([r.F]))
+    rg = solve_global(g, *_contact_at(at), np.array([r.F]))
     assert rg["hoop_max"][0] == pytest.approx(r.hoop_max, rel=0.03)
     assert rg["shaft_p0"][0] == pytest.approx(r.shaft_p0, rel=0.03)
     # 5e-4 is taken from runs (README web table: dp0 -0.007 %, da +0.008 % at this web), 6x their

@@ -11,9 +11,9 @@ from pathlib import Path
 
 import pytest
 
-from femcam.bodies.cam_rows import disk_from_scene
+from femcam.bodies.cam_rows import disk_from_case
 from femcam.errors import SceneError
-from femcam.scene import load_scene
+from femcam.scene import cam_disk_case, load_scene
 
 EXAMPLE = Path(__file__).resolve().parent.parent / "examples" / "seed002_cam_on_shaft.toml"
 BORE = "bore_mm = 6.0 "
@@ -30,16 +30,17 @@ def _scene(tmp_path, cam_lines: str, bore: str = BORE):
 def test_default_fit_is_unilateral_contact_line_to_line(tmp_path):
     sc = load_scene(EXAMPLE)
     assert sc.bodies.cam.fit == "contact" and sc.bodies.cam.clearance == 0.0
-    d = disk_from_scene(sc)
+    d = disk_from_case(cam_disk_case(sc))
     assert d.fit == "contact" and d.Rs == d.Rb == pytest.approx(6e-3, rel=1e-12)
 
 
 def test_fit_and_clearance_reach_the_disk(tmp_path):
-    d = disk_from_scene(load_scene(_scene(tmp_path, "shaft_clearance_um = 20.0")))
+    d = disk_from_case(cam_disk_case(load_scene(_scene(tmp_path, "shaft_clearance_um = 20.0"))))
     assert d.fit == "contact"
     assert d.Rs == pytest.approx(6e-3 - 20e-6, rel=1e-12)   # shaft radius = bore - clearance
     assert d.c == pytest.approx(20e-6, rel=1e-9)
-    d = disk_from_scene(load_scene(_scene(tmp_path, 'shaft_fit = "bonded"\nshaft_clearance_um = 0.0')))
+    d = disk_from_case(cam_disk_case(load_scene(_scene(tmp_path, 'shaft_fit = "bonded"\n'
+                                                       'shaft_clearance_um = 0.0'))))
     assert d.fit == "bonded" and d.Rs == d.Rb
 
 

@@ -102,13 +102,14 @@ def test_a_small_bore_moves_the_contact_by_the_hub_twist_and_is_not_flagged_for_
     -0.43 % at h = a/10, -0.27 % at a/20, +0.003 % at a/40). With the same move applied to the
     local body, the disk's own effect is below (a / web)^2 and the check does not flag."""
     from femcam.bodies.cam_geometry import contact_frame
-    from femcam.bodies.cam_rows import disk_from_scene
+    from femcam.bodies.cam_rows import disk_from_case
     from femcam.bodies.cam_study import check_local_body, peak_angle
-    from femcam.scene import load_scene
+    from femcam.scene import cam_disk_case, load_scene
 
     sc = load_scene(EXAMPLE)
-    th = peak_angle(sc)
-    c = check_local_body(sc, th, tolerance=2e-3, disk=disk_from_scene(sc, Rb=2e-3))
+    case = cam_disk_case(sc)
+    th = peak_angle(case.revolution)
+    c = check_local_body(case, sc.analyse(np.array([th])), tolerance=2e-3, disk=disk_from_case(case, Rb=2e-3))
     C, n, rho, F = contact_frame(sc.analyse(np.array([th])))
     T = F * abs(C[0] * n[1] - C[1] * n[0])
     mu = 210e9 / (2 * 1.3)

@@ -104,8 +104,8 @@ def test_disk_estimate_brackets_gmsh():
     estimate (measured); the band [0.5, 1] keeps the estimate an upper bound within 2x."""
     import femcam.bodies.cam_global as cg
     from femcam.bodies.cam_mesh import estimate_disk_elements
-    from femcam.bodies.cam_rows import disk_from_scene
-    from femcam.scene import load_scene
+    from femcam.bodies.cam_rows import disk_from_case
+    from femcam.scene import cam_disk_case, load_scene
 
     sc = load_scene(EX + "seed002_cam_on_shaft.toml")
     seen = []
@@ -120,7 +120,8 @@ def test_disk_estimate_brackets_gmsh():
     cg.mesh_cam_disk = spy
     try:
         for bore_mm in (6.0, 3.0):
-            cg.CamGlobalModel.build(disk=disk_from_scene(sc, Rb=bore_mm * 1e-3), length=sc.length)
+            cg.CamGlobalModel.build(disk=disk_from_case(cam_disk_case(sc), Rb=bore_mm * 1e-3),
+                                   length=sc.length)
     finally:
         cg.mesh_cam_disk = orig
     assert len(seen) == 2 and all(0.5 <= r <= 1.0 for r in seen), seen
@@ -180,10 +181,10 @@ def test_thin_web_refused_before_gmsh(monkeypatch):
     (the bore spacing must be <= web / 4, which needs more bore vertices than the model takes).
     A regression guard: this refusal already stood on this branch's base."""
     from femcam.bodies.cam_global import CamGlobalModel
-    from femcam.bodies.cam_rows import disk_from_scene
-    from femcam.scene import load_scene
+    from femcam.bodies.cam_rows import disk_from_case
+    from femcam.scene import cam_disk_case, load_scene
 
     _no_gmsh(monkeypatch)
     sc = load_scene(EX + "seed002_cam_on_shaft.toml")
     with pytest.raises(InputError, match=r"web r_min - Rb = 0\.01 mm is too thin"):
-        CamGlobalModel.build(disk=disk_from_scene(sc, Rb=9.99e-3), length=sc.length)
+        CamGlobalModel.build(disk=disk_from_case(cam_disk_case(sc), Rb=9.99e-3), length=sc.length)

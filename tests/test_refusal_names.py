@@ -11,11 +11,11 @@ from pathlib import Path
 import pytest
 
 from femcam.bodies.cam_global import global_mesh_for
-from femcam.bodies.cam_rows import disk_from_scene
+from femcam.bodies.cam_rows import disk_from_case
 from femcam.errors import InputError
 from femcam.mesh import MeshOptions
 from femcam.mesh.geometry import body_layout
-from femcam.scene import load_scene
+from femcam.scene import cam_disk_case, load_scene
 
 EX = Path(__file__).resolve().parents[1] / "examples"
 INTERNAL = ("Rb (", "a_ref", "fine_half_width =", "domain_over_a", "in code:")
@@ -24,7 +24,7 @@ INTERNAL = ("Rb (", "a_ref", "fine_half_width =", "domain_over_a", "in code:")
 def test_a_bore_leaving_a_10_um_web_is_named_by_its_scene_key():
     sc = load_scene(EX / "seed002_cam_on_shaft.toml")
     with pytest.raises(InputError) as e:
-        global_mesh_for(disk_from_scene(sc, Rb=9.99e-3))
+        global_mesh_for(disk_from_case(cam_disk_case(sc), Rb=9.99e-3))
     msg = str(e.value)
     assert msg.startswith("[cam] bore_mm = 9.99 mm: "), msg
     assert not any(w in msg for w in INTERNAL), msg

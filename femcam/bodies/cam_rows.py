@@ -1,7 +1,8 @@
 """Sweep-facing: the cam disk on its shaft per cam angle, from one global model per scene.
 
-``cam_disk_rows(scene, theta, Fc)`` builds ONE :class:`~femcam.bodies.cam_global.CamGlobalModel`
-for the scene's cam (``[cam] bore_mm``) and solves the shaft-bore contact at every angle
+``cam_disk_rows(case, state, Fc)`` builds ONE :class:`~femcam.bodies.cam_global.CamGlobalModel`
+for the scene's cam (``[cam] bore_mm``; the record :class:`~femcam.scene.case.CamDiskCase`)
+and solves the shaft-bore contact at the angles of ``state`` (a ``Scene.analyse``)
 (global-local scheme: the cam-roller contact itself stays today's local body). It returns a
 dict of SI arrays; :data:`CAM_CSV_COLUMNS` gives the CSV name (unit in the name) and the factor
 from SI. Angles where ``Fc <= 0`` (lift-off) give NaN.
@@ -32,7 +33,9 @@ from .._columns import Column
 from ..errors import InputError
 from ..materials import effective_modulus
 from ..scene.bodies import RealBodies
+from ..scene.case import CamDiskCase
 from ..scene.pair import ContactPair
+from ..scene.state import SceneState
 from .cam_geometry import CamDisk, outline_from_state, require_roller
 from .cam_global import CamGlobalModel
 from .cam_model import CamMeshOptions
@@ -64,24 +67,17 @@ def has_cam_bore(bodies: RealBodies) -> bool:
     return bodies.cam is not None
 
 
-def _cam_yield(scene):
-    """The cam's yield strength (Pa, ``[materials.cam] yield_strength_MPa``), or None."""
-    return scene.tribology.cam.yield_strength
-
-
-def disk_from_scene(scene, *, n_outline: int = 720, fit: str | None = None,
-                    Rb: float | None = None) -> CamDisk:
-    """The scene's :class:`CamDisk`: outline from its profile, ``[cam] bore_mm`` (or ``Rb``, m),
-    shaft material ``[materials.shaft]`` (default: the cam's), the fit ``[cam] shaft_fit`` (or
-    ``fit``; default ``"contact"``) and the shaft radius ``Rs = Rb - [cam] shaft_clearance_um``
-    (default 0: a line-to-line fit).
+def disk_from_case(case: CamDiskCase, *, fit: str | None = None, Rb: float | None = None) -> CamDisk:
+    """The scene's :class:`CamDisk`: outline from the case's revolution, ``[cam] bore_mm`` (or
+    ``Rb``, m), shaft material ``[materials.shaft]`` (default: the cam's), the fit
+    ``[cam] shaft_fit`` (or ``fit``; default ``"contact"``) and the shaft radius
+    ``Rs = Rb - [cam] shaft_clearance_um`` (default 0: a line-to-line fit).
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A roller-follower scene.
-    n_outline : int, optional
-        Outline points over one revolution.
+    case : femcam.scene.case.CamDiskCase
+        The scene's cam on its shaft (:func:`femcam.scene.case.cam_disk_case`; a roller
+        follower).
     fit : {"contact", "bonded"} or None, optional
         Shaft-bore fit; None: the scene's ``[cam] shaft_fit`` (default ``"contact"``).
     Rb : float or None, optional
@@ -95,24 +91,20 @@ def disk_from_scene(scene, *, n_outline: int = 720, fit: str | None = None,
     Raises
     ------
     InputError
-        No ``Rb`` and no ``[cam] bore_mm``, or a disk that does not fit.
+        No ``Rb`` and no ``[cam] bore_mm``, a follower that is not a translating roller, or a
+        disk that does not fit.
     """
-    g = scene.bodies.cam
+    _validate.instance("case", case, CamDiskCase, "a femcam.scene.case.CamDiskCase")
+    g = case.shaft
     if Rb is None and g is None:
         raise InputError("scene has no [cam] bore_mm: the cam is today's local body (no disk model)")
     Rb = g.bore if Rb is None else Rb
     fit = (g.fit if g is not None else "contact") if fit is None else fit
     clearance = g.clearance if g is not None else 0.0
-    shaft = g.shaft if g is not None and g.shaft is not None else scene.cam
-    return CamDisk(outline=_outline(scene, n_outline), Rb=Rb, Rs=Rb - clearance,
-                   fit=fit, cam=scene.cam, shaft=shaft, cam_yield=_cam_yield(scene))
-
-
-def _outline(scene, n: int) -> np.ndarray:
-    """The scene's cam outline at ``n`` equally spaced angles over one revolution (m; a roller
-    follower only)."""
-    require_roller(scene.follower)
-    return outline_from_state(scene.analyse(np.linspace(0.0, 2 * math.pi, int(n), endpoint=False)))
+    shaft = g.shaft if g is not None and g.shaft is not None else case.pair.cam
+    require_roller(case.follower)
+    return CamDisk(outline=outline_from_state(case.revolution), Rb=Rb, Rs=Rb - clearance,
+                   fit=fit, cam=case.pair.cam, shaft=shaft, cam_yield=case.cam_yield)
 
 
 def solve_global(model: CamGlobalModel, C: np.ndarray, n: np.ndarray, F: np.ndarray) -> dict:
@@ -168,18 +160,19 @@ def solve_global(model: CamGlobalModel, C: np.ndarray, n: np.ndarray, F: np.ndar
             "hoop": hoop, "bore_p": lam}
 
 
-def cam_disk_rows(scene, theta, Fc, *, model: CamGlobalModel | None = None,
+def cam_disk_rows(case: CamDiskCase, state: SceneState, Fc, *, model: CamGlobalModel | None = None,
                   cam_mesh: CamMeshOptions | None = None) -> dict:
     """Per-angle cam-disk results from the global model (one per scene).
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A roller-follower scene with ``[cam] bore_mm``.
-    theta : array_like of float
-        Cam angles (rad).
+    case : femcam.scene.case.CamDiskCase
+        The scene's cam on its shaft (a roller follower with ``[cam] bore_mm``).
+    state : femcam.scene.SceneState
+        The analytic chain at the cam angles ``theta`` of the rows (``Scene.analyse(theta)``,
+        rad).
     Fc : array_like of float
-        Contact force at ``theta`` (N); ``<= 0`` or NaN gives a NaN row (lift-off).
+        Contact force at ``state.theta`` (N); ``<= 0`` or NaN gives a NaN row (lift-off).
     model : CamGlobalModel, optional
         A built model to reuse (it holds SuperLU factors and does not pickle).
     cam_mesh : CamMeshOptions, optional
@@ -188,9 +181,9 @@ def cam_disk_rows(scene, theta, Fc, *, model: CamGlobalModel | None = None,
     Returns
     -------
     dict
-        SI arrays shaped like ``theta`` under the keys of :data:`CAM_CSV_COLUMNS` (``hoop_max``
-        Pa, ``hoop_angle`` rad, ``shaft_p0`` Pa, ``shaft_arc`` rad, ``web`` m) and ``flags``
-        (text).
+        SI arrays shaped like ``state.theta`` under the keys of :data:`CAM_CSV_COLUMNS`
+        (``hoop_max`` Pa, ``hoop_angle`` rad, ``shaft_p0`` Pa, ``shaft_arc`` rad, ``web`` m) and
+        ``flags`` (text).
 
     Raises
     ------
@@ -198,24 +191,25 @@ def cam_disk_rows(scene, theta, Fc, *, model: CamGlobalModel | None = None,
         Shapes that differ, no ``[cam] bore_mm``, or a web thinner than
         :data:`WEB_OVER_A_MIN` contact half-widths.
     """
-    theta = _validate.finite_array("theta", theta, "rad")
+    _validate.instance("case", case, CamDiskCase, "a femcam.scene.case.CamDiskCase")
+    _validate.instance("state", state, SceneState, "a femcam.scene.SceneState")
+    theta = state.theta
     Fc = _validate.data_array("Fc", Fc, "N")  # NaN or <= 0: no contact at that angle
     if theta.shape != Fc.shape:
-        raise InputError(f"theta, Fc: shapes {theta.shape}, {Fc.shape} must match")
+        raise InputError(f"state.theta, Fc: shapes {theta.shape}, {Fc.shape} must match")
     on = np.flatnonzero(np.isfinite(Fc) & (Fc > 0))
-    st = scene.analyse(theta[on]) if on.size else None
-    disk = model.disk if model is not None else disk_from_scene(scene)
+    disk = model.disk if model is not None else disk_from_case(case)
     if on.size:
-        check_web_against_contact(disk, scene.pair, scene.follower.Rr, Fc[on], st.rho)
-    model = model or CamGlobalModel.build(disk=disk, length=scene.length, cam_mesh=cam_mesh,
-                                          plane=scene.plane)
+        check_web_against_contact(disk, case.pair, case.follower.Rr, Fc[on], state.rho[on])
+    model = model or CamGlobalModel.build(disk=disk, length=case.pair.length, cam_mesh=cam_mesh,
+                                          plane=case.pair.plane)
     out = {k: np.full(theta.shape, np.nan) for k in CAM_CSV_COLUMNS}
     out["web"][:] = model.disk.web
     out["flags"] = np.full(theta.shape, "", dtype=object)
     if on.size:
-        p = st.profile
-        C = np.stack([p.x, p.y])
-        nn = np.stack([p.pitch_x, p.pitch_y]) - C
+        p = state.profile
+        C = np.stack([p.x[on], p.y[on]])
+        nn = np.stack([p.pitch_x[on], p.pitch_y[on]]) - C
         nn = nn / np.hypot(*nn)
         r = solve_global(model, C, nn, Fc[on])
         for k in ("hoop_max", "hoop_angle", "shaft_p0", "shaft_arc"):

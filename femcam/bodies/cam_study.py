@@ -13,13 +13,17 @@ import time
 
 import numpy as np
 
+from .. import _validate
+from ..errors import InputError
 from ..hertz.contact import effective_radius, half_width
 from ..materials import effective_modulus
 from ..mesh import surface_height
+from ..scene.case import CamDiskCase
+from ..scene.state import SceneState
 from .cam_geometry import contact_frame, require_roller
 from .cam_global import CamGlobalModel
 from .cam_model import CamDiskModel
-from .cam_rows import disk_from_scene, solve_global
+from .cam_rows import disk_from_case, solve_global
 from .cam_solve import _local, solve_cam_disk
 
 KEYS = ("Rb", "web", "p0", "a", "p0_local", "a_local", "dp0", "da", "delta", "delta_local",
@@ -28,36 +32,44 @@ KEYS = ("Rb", "web", "p0", "a", "p0_local", "a_local", "dp0", "da", "delta", "de
         "t_refined", "t_global", "t_rev", "n_dofs_refined", "n_dofs_global")
 
 
-def peak_angle(scene, n: int = 720) -> float:
-    """Cam angle of the largest contact force over one revolution.
+def peak_angle(state: SceneState) -> float:
+    """Cam angle of the largest contact force of an analysed state (a revolution: the peak).
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        The scene.
-    n : int, optional
-        Equally spaced cam angles over [0, 2 pi).
+    state : femcam.scene.SceneState
+        The analytic chain at cam angles (rad; e.g. :attr:`CamDiskCase.revolution
+        <femcam.scene.case.CamDiskCase.revolution>`, 720 uniform angles).
 
     Returns
     -------
     float
         The cam angle [rad].
     """
-    th = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
-    return float(th[int(np.nanargmax(scene.analyse(th).Fc))])
+    _validate.instance("state", state, SceneState, "a femcam.scene.SceneState")
+    return float(state.theta[int(np.nanargmax(state.Fc))])
 
 
-def refined_at(scene, disk, theta: float, **kw):
+def _one_angle(state) -> SceneState:
+    """``state`` if it is a :class:`SceneState` at exactly one cam angle, else an InputError."""
+    _validate.instance("state", state, SceneState, "a femcam.scene.SceneState")
+    if state.theta.size != 1:
+        raise InputError(f"state: {state.theta.size} cam angles: must be the analytic chain at one "
+                         "cam angle (Scene.analyse([theta]))")
+    return state
+
+
+def refined_at(case: CamDiskCase, disk, state: SceneState, **kw):
     """The fully refined model of ``disk`` at one cam angle, solved for the scene's force there.
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A roller-follower scene.
+    case : femcam.scene.case.CamDiskCase
+        The scene's cam on its shaft (a roller follower).
     disk : CamDisk
         The cam disk.
-    theta : float
-        Cam angle [rad].
+    state : femcam.scene.SceneState
+        The analytic chain at the one cam angle (``Scene.analyse([theta])``, rad).
     **kw
         Passed to :meth:`~femcam.bodies.cam_model.CamDiskModel.build` (``mesh``, ``cam_mesh``,
         ``element``, ``local``).
@@ -69,16 +81,19 @@ def refined_at(scene, disk, theta: float, **kw):
     result : CamDiskResult
         Its solution.
     """
-    require_roller(scene.follower)
-    C, n, rho, F = contact_frame(scene.analyse(np.array([float(theta)])))
-    a_ref = float(half_width(F / scene.length, effective_radius(scene.follower.Rr, rho),
-                             effective_modulus(scene.cam, scene.roller, scene.plane)))
-    m = CamDiskModel.build(disk=disk, C=C, n=n, rho=rho, Rr=scene.follower.Rr, roller=scene.roller,
-                           a_ref=a_ref, length=scene.length, plane=scene.plane, **kw)
+    _validate.instance("case", case, CamDiskCase, "a femcam.scene.case.CamDiskCase")
+    state = _one_angle(state)
+    require_roller(case.follower)
+    pair = case.pair
+    C, n, rho, F = contact_frame(state)
+    a_ref = float(half_width(F / pair.length, effective_radius(case.follower.Rr, rho),
+                             effective_modulus(pair.cam, pair.roller, pair.plane)))
+    m = CamDiskModel.build(disk=disk, C=C, n=n, rho=rho, Rr=case.follower.Rr, roller=pair.roller,
+                           a_ref=a_ref, length=pair.length, plane=pair.plane, **kw)
     return m, solve_cam_disk(m, F=F)
 
 
-def check_local_body(scene, theta: float, *, tolerance: float, disk=None) -> dict:
+def check_local_body(case: CamDiskCase, state: SceneState, *, tolerance: float, disk=None) -> dict:
     """Verify, at one cam angle, that today's local cam body gives the contact's p0 and a: one
     fully refined model of the whole disk on its shaft (:func:`refined_at`) against the local
     body at the same contact vertices, with the same roller (frictionless both).
@@ -93,14 +108,15 @@ def check_local_body(scene, theta: float, *, tolerance: float, disk=None) -> dic
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A scene with ``[cam] bore_mm``.
-    theta : float
-        Cam angle (rad); the sweep uses the angle of its largest contact force.
+    case : femcam.scene.case.CamDiskCase
+        The scene's cam on its shaft (``[cam] bore_mm``).
+    state : femcam.scene.SceneState
+        The analytic chain at the one cam angle checked (``Scene.analyse([theta])``, rad); the
+        sweep uses the angle of its largest contact force.
     tolerance : float
         The sweep's tolerance (relative): a larger ``|dp0_moved|`` or ``|da_moved|`` is flagged.
     disk : CamDisk, optional
-        Default :func:`~femcam.bodies.cam_rows.disk_from_scene`.
+        Default :func:`~femcam.bodies.cam_rows.disk_from_case`.
 
     Returns
     -------
@@ -112,8 +128,9 @@ def check_local_body(scene, theta: float, *, tolerance: float, disk=None) -> dic
         the numbers) and ``flag`` (the sentence when it exceeds the tolerance, else "").
     """
     t0 = time.perf_counter()
-    disk = disk_from_scene(scene) if disk is None else disk
-    m, r = refined_at(scene, disk, float(theta))
+    theta = float(_one_angle(state).theta[0])
+    disk = disk_from_case(case) if disk is None else disk
+    m, r = refined_at(case, disk, state)
     inv_R = 1 / m.Rr + (0.0 if math.isinf(m.rho) else 1 / m.rho)
     h0 = surface_height(m.x, m.Rr) + surface_height(m.x, m.rho) - (r.x0 * inv_R) * m.x
     a_m, p0_m, _ = _local(m, h0, r.F / m.length, np.abs(m.x - r.x0) < r.a)
@@ -168,51 +185,55 @@ def check_sentence(c: dict) -> tuple[str, bool]:
     return line, exceeds
 
 
-def _contact_at(scene, theta):
-    C, n, _, _ = contact_frame(scene.analyse(np.array([float(theta)])))
+def _contact_at(state: SceneState):
+    """Contact point and normal of a one-angle state as (2, 1) columns (:func:`solve_global`)."""
+    C, n, _, _ = contact_frame(_one_angle(state))
     return C[:, None], n[:, None]
 
 
-def web_study(scene, bores, *, theta: float | None = None, n_rev: int = 360) -> dict:
+def web_study(case: CamDiskCase, bores, *, state: SceneState, revolution: SceneState) -> dict:
     """The refined model at one angle and the global model over a revolution, per bore radius.
 
     Parameters
     ----------
-    scene : femcam.scene.Scene
-        A roller-follower scene.
+    case : femcam.scene.case.CamDiskCase
+        The scene's cam on its shaft (a roller follower).
     bores : sequence of float
         Bore radii ``Rb`` [m].
-    theta : float or None, optional
-        Cam angle of the refined model [rad]; None: :func:`peak_angle`.
-    n_rev : int, optional
-        Equally spaced cam angles of the global model over one revolution.
+    state : femcam.scene.SceneState
+        The analytic chain at the refined model's cam angle (``Scene.analyse([theta])``, rad;
+        e.g. :func:`peak_angle` of ``case.revolution``).
+    revolution : femcam.scene.SceneState
+        The analytic chain at the global model's cam angles (``Scene.analyse`` at uniform angles
+        over one revolution, rad).
 
     Returns
     -------
     dict
         Float arrays over ``bores`` under :data:`KEYS`, SI: lengths [m], stresses and pressures
         [Pa], angles [rad], ``dp0``/``da`` relative [-], times ``t_*`` [s], ``n_dofs_*``
-        counts; ``*_rev``: the global model over ``n_rev`` angles; plus ``theta`` [rad].
+        counts; ``*_rev``: the global model over the angles of ``revolution``; plus ``theta``
+        [rad].
     """
-    theta = peak_angle(scene) if theta is None else float(theta)
-    th = np.linspace(0.0, 2 * math.pi, n_rev, endpoint=False)
-    st = scene.analyse(th)
+    theta = float(_one_angle(state).theta[0])
+    st = _validate.instance("revolution", revolution, SceneState, "a femcam.scene.SceneState")
+    th = st.theta
     on = st.Fc > 0
     C = np.stack([st.profile.x, st.profile.y])[:, on]
     nn = np.stack([st.profile.pitch_x, st.profile.pitch_y])[:, on] - C
     nn = nn / np.hypot(*nn)
     out = {k: [] for k in KEYS}
     for Rb in bores:
-        disk = disk_from_scene(scene, Rb=float(Rb))
+        disk = disk_from_case(case, Rb=float(Rb))
         t0 = time.perf_counter()
-        m, r = refined_at(scene, disk, theta)
+        m, r = refined_at(case, disk, state)
         t1 = time.perf_counter()
-        g = CamGlobalModel.build(disk=disk, length=scene.length, plane=scene.plane)
+        g = CamGlobalModel.build(disk=disk, length=case.pair.length, plane=case.pair.plane)
         t2 = time.perf_counter()
         rg = solve_global(g, C, nn, st.Fc[on])
         t3 = time.perf_counter()
         k = int(np.argmax(rg["hoop_max"]))
-        r1 = solve_global(g, *_contact_at(scene, theta), np.array([r.F]))
+        r1 = solve_global(g, *_contact_at(state), np.array([r.F]))
         vals = dict(Rb=Rb, web=disk.web, p0=r.p0, a=r.a, p0_local=r.p0_local, a_local=r.a_local, dp0=r.dp0,
                     da=r.da, delta=r.delta, delta_local=r.delta_local, hoop_refined=r.hoop_max,
                     hoop_angle_refined=r.hoop_theta, shaft_p0=r.shaft_p0, shaft_arc=r.shaft_arc,

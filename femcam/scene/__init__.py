@@ -65,7 +65,7 @@ Only numpy/scipy and the standard library (``tomllib``) are imported.
 """
 
 from .bodies import CamShaft, RealBodies, RollerSupport, roller_support_problems
-from .case import ContactCase, contact_case
+from .case import CamDiskCase, ContactCase, cam_disk_case, contact_case
 from .checker import MAX_PROBLEMS
 from .finite import FiniteLength
 from .finite_case import FiniteCase, finite_case
@@ -79,8 +79,8 @@ from .tribology import LubricantData, MaterialData, SurfaceRoughness, Tribology
 from .wear import WearSettings, wear_table
 
 __all__ = ["MAX_PROBLEMS", "METHODS", "STUDY_RANGES", "STUDY_WHOLE", "TOLERANCE_FLOOR",
-           "UNDERCUT_CHECK_N", "BodyLayers", "CamShaft", "CaseSpec", "CoatingSpec", "ContactCase",
-           "ContactPair", "FiniteCase", "FiniteLength", "LubricantData", "MaterialData", "RealBodies",
-           "RollerSupport", "Scene", "SceneState", "StudySettings", "SurfaceRoughness", "Tribology",
-           "WearSettings", "contact_case", "finite_case", "load_scene",
+           "UNDERCUT_CHECK_N", "BodyLayers", "CamDiskCase", "CamShaft", "CaseSpec", "CoatingSpec",
+           "ContactCase", "ContactPair", "FiniteCase", "FiniteLength", "LubricantData", "MaterialData",
+           "RealBodies", "RollerSupport", "Scene", "SceneState", "StudySettings", "SurfaceRoughness",
+           "Tribology", "WearSettings", "cam_disk_case", "contact_case", "finite_case", "load_scene",
            "roller_support_problems", "study_problem", "wear_table"]

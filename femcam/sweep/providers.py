@@ -21,7 +21,7 @@ from ..assess import COLUMNS as ASSESS_COLUMNS
 from ..assess import assess_rows
 from ..bodies.cam_geometry import contact_frame
 from ..bodies.cam_global import CamGlobalModel
-from ..bodies.cam_rows import CAM_CSV_COLUMNS, cam_disk_rows, disk_from_scene
+from ..bodies.cam_rows import CAM_CSV_COLUMNS, cam_disk_rows, disk_from_case
 from ..bodies.cam_study import check_local_body
 from ..bodies.rows import CSV_COLUMNS as RING_COLUMNS
 from ..bodies.rows import build_for
@@ -31,7 +31,7 @@ from ..halfspace.rows import anchor_angles, finite_length_rows
 from ..io import vtu_name, write_global_cam_vtu
 from ..layers import result_layer_row, scene_layer_rows, scene_layers
 from ..layers.from_scene import scene_coatings
-from ..scene.case import contact_case
+from ..scene.case import cam_disk_case, contact_case
 from ..scene.finite_case import finite_case
 from ..wear.coating import coating_wear
 from ..wear.map import wear_depth_per_angle
@@ -96,7 +96,24 @@ def cam_disk_model(scene):
         The cam disk model.
     """
     return _cached("cam_disk", scene, lambda: CamGlobalModel.build(
-        disk=disk_from_scene(scene), length=scene.length, plane=scene.plane))
+        disk=disk_from_case(cam_disk_record(scene)), length=scene.length, plane=scene.plane))
+
+
+def cam_disk_record(scene):
+    """The scene's :class:`~femcam.scene.case.CamDiskCase` (its outline analysed over one
+    revolution), built once per process.
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept.
+
+    Returns
+    -------
+    femcam.scene.case.CamDiskCase
+        The cam on its shaft.
+    """
+    return _cached("cam_disk_case", scene, lambda: cam_disk_case(scene))
 
 
 def strip_model(scene):
@@ -418,7 +435,7 @@ def cam_disk_chunk(task, rows) -> dict:
     """
     Fc = np.where(_contact_rows(rows), rows.Fc, 0.0)   # cam_disk_rows: Fc <= 0 -> NaN row
     model = cam_disk_model(task.scene)
-    r = cam_disk_rows(task.scene, task.theta, Fc, model=model)
+    r = cam_disk_rows(cam_disk_record(task.scene), task.scene.analyse(task.theta), Fc, model=model)
     out = {f"camdisk_{k}": np.asarray(r[k], float) for k in CAM_CSV_COLUMNS}
     out["camdisk_flags"] = r["flags"]
     if task.vtk_dir is not None and task.vtk_mask is not None:
@@ -452,7 +469,9 @@ def cam_disk_check(scene, table, tolerance: float) -> dict:
         return {}
     theta = float(np.asarray(table["theta"], float)[int(np.nanargmax(Fc))])
     try:
-        return check_local_body(scene, theta, tolerance=tolerance, disk=disk_from_scene(scene))
+        case = cam_disk_record(scene)
+        return check_local_body(case, scene.analyse(np.array([theta])), tolerance=tolerance,
+                                disk=disk_from_case(case))
     except FemcamError as exc:
         return {"theta_deg": math.degrees(theta), "refused": f"{type(exc).__name__}: {exc}",
                 "line": f"cam disk check at {math.degrees(theta):.1f} deg refused: {exc}", "flag": ""}
