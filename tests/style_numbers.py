@@ -128,6 +128,19 @@ def scene_files(root: Path) -> list[str]:
     return out
 
 
+#: the packages below the sweep that compute physics (the layer order of docs/architecture.md
+#: below ``sweep``, without ``scene``, the edge adapter that builds the records they take)
+PHYSICS = ("materials", "kinematics", "profile", "loads", "dynamics", "halfspace", "hertz",
+           "tribology", "mesh", "fe", "layers", "bodies", "wear", "assess", "synthesis", "io", "viz")
+
+
+def physics_scene_files(root: Path) -> list[str]:
+    """Files of the physics packages (:data:`PHYSICS`) with a function taking the scene (issue
+    24 item 1: they take the scene's typed records, never ``Scene``)."""
+    return [rel for rel in scene_files(root)
+            if Path(rel).parts[1].removesuffix(".py") in PHYSICS]
+
+
 def sweep_package(root: Path) -> tuple[int, int]:
     """``(modules, import depth)`` of ``femcam/sweep``: depth = the longest chain of
     module-level imports between its modules (1 for a module importing no sibling)."""
@@ -248,6 +261,7 @@ def numbers(root: Path) -> dict[str, int]:
             "compat aliases and re-exports": len(compat_aliases(root)),
             "follower dispatch sites outside the follower classes": len(follower_dispatch(root)),
             "files with a function taking the scene": len(set(scene_files(root))),
+            "physics-package files taking the scene": len(set(physics_scene_files(root))),
             "sweep package modules": n_mod, "sweep import depth": depth,
             "column declarations as bare tuples": len(bare_columns(root)),
             "string-keyed chunk-table writes": len(chunk_table_writes(root))}

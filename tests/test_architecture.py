@@ -212,3 +212,16 @@ def test_chunk_table_written_by_attribute():
     from style_numbers import chunk_table_writes
 
     assert chunk_table_writes(ROOT) == []
+
+
+def test_physics_packages_take_records_not_the_scene():
+    """Issue 24 item 1: the physics packages (every layer below the sweep but the scene, the
+    edge adapter) take the scene's typed records (``ContactPair``, ``ContactCase``,
+    ``FiniteCase``, ``CamDiskCase``, ``BodyLayers``, ``SceneState``, ...), never the ``Scene``
+    (tests/style_numbers.py, docs/architecture.md)."""
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from style_numbers import physics_scene_files
+
+    assert physics_scene_files(ROOT) == []
