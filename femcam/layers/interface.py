@@ -27,6 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _validate
+from .._columns import Column
 from .._repr import compact_repr
 from ..errors import InputError
 from .case import Case, case_margin
@@ -198,6 +199,29 @@ def layer_rows(model, F, rho, mu, *, coating: Coating | None = None, coat_body: 
 LAYER_COLUMNS = ("interface_tau_max_MPa", "interface_sn_min_MPa", "interface_sn_max_MPa",
                  "interface_utilisation", "coating_sx_max_MPa", "coating_sx_utilisation",
                  "case_utilisation_max", "case_z_at_max_mm", "case_margin")
+
+#: the same checks as sweep columns, declared here by the package that computes them: SI names
+#: (``layer_interface_tau_max`` in Pa, ``layer_case_z_at_max`` in m), the CSV names of
+#: :data:`LAYER_COLUMNS` with their factors from SI (:mod:`femcam.sweep.extras`, provider
+#: ``layers``)
+SWEEP_COLUMNS = (Column("layer_interface_tau_max", "interface_tau_max_MPa", 1e-6,
+                        "largest |shear| along the coating-substrate interface"),
+                 Column("layer_interface_sn_min", "interface_sn_min_MPa", 1e-6,
+                        "most compressive normal stress on the interface"),
+                 Column("layer_interface_sn_max", "interface_sn_max_MPa", 1e-6,
+                        "most tensile normal stress on the interface"),
+                 Column("layer_interface_utilisation", "interface_utilisation", 1.0,
+                        "interface shear / interface_shear_strength"),
+                 Column("layer_coating_sx_max", "coating_sx_max_MPa", 1e-6,
+                        "largest surface sx of the coated body"),
+                 Column("layer_coating_sx_utilisation", "coating_sx_utilisation", 1.0,
+                        "coating tension / (hardness / 3)"),
+                 Column("layer_case_utilisation_max", "case_utilisation_max", 1.0,
+                        "largest tau_1 / k(z) (shear strength at depth) through the case"),
+                 Column("layer_case_z_at_max", "case_z_at_max_mm", 1e3,
+                        "depth of that largest utilisation"),
+                 Column("layer_case_margin", "case_margin", 1.0,
+                        "case-core margin 1 / max_z U (femcam.layers.case_margin)"))
 
 
 def result_layer_row(result, *, coating: Coating | None = None, coat_body: str = "roller",

@@ -29,7 +29,7 @@ from ..errors import FemcamError
 from ..halfspace.rows import COLUMNS as HS_COLUMNS
 from ..halfspace.rows import anchor_angles, finite_length_rows
 from ..io import vtu_name, write_global_cam_vtu
-from ..layers import result_layer_row, scene_layer_rows, scene_layers
+from ..layers import SWEEP_COLUMNS, result_layer_row, scene_layer_rows, scene_layers
 from ..layers.from_scene import scene_coatings
 from ..scene.case import cam_disk_case, contact_case
 from ..scene.finite_case import finite_case
@@ -185,17 +185,8 @@ RING_ESTIMATES = (Column("err_est_bore_hoop", "err_est_bore_hoop_pct", 100.0,
 RING = tuple(Column(f"ring_{c.si}", c.csv, c.factor, c.description) for c in RING_COLUMNS.values()
              if c.si not in RING_HEADLINE_KEYS) + RING_ESTIMATES
 CAM_DISK = tuple(Column(f"camdisk_{c.si}", c.csv, c.factor, c.description) for c in CAM_CSV_COLUMNS.values())
-#: internal names are SI (``layer_interface_tau_max`` in Pa, ``layer_case_z_at_max`` in m); the
-#: CSV name carries the unit
-LAYERS = (Column("layer_interface_tau_max", "interface_tau_max_MPa", 1e-6),
-          Column("layer_interface_sn_min", "interface_sn_min_MPa", 1e-6),
-          Column("layer_interface_sn_max", "interface_sn_max_MPa", 1e-6),
-          Column("layer_interface_utilisation", "interface_utilisation", 1.0),
-          Column("layer_coating_sx_max", "coating_sx_max_MPa", 1e-6),
-          Column("layer_coating_sx_utilisation", "coating_sx_utilisation", 1.0),
-          Column("layer_case_utilisation_max", "case_utilisation_max", 1.0),
-          Column("layer_case_z_at_max", "case_z_at_max_mm", 1e3),
-          Column("layer_case_margin", "case_margin", 1.0))
+#: the layer checks' columns, declared by femcam.layers (SI names, Pa and m; CSV names with units)
+LAYERS = SWEEP_COLUMNS
 #: two-level error estimates of the interface stresses of a coated FE row (relative; the CSV in
 #: percent of the row's own value; :data:`femcam.sweep.estimate.LAYER_QUANTITIES`)
 LAYER_ESTIMATES = (Column("err_est_interface_tau", "err_est_interface_tau_pct", 100.0,
