@@ -108,8 +108,8 @@ def ring_level_estimate(model: RingModel, mesh: MeshOptions | None = None,
     hoop stress moves by 0.02 % from contact a/h 6 to 10, the ring's p0 by 2e-8 from 128 to 256
     bore vertices), so each quantity takes the level that changed its own mesh:
 
-    .. math:: e_{contact} = rac{|q_h - q_H|}{|q_h| (2^p - 1)}, \qquad
-              e_{ring} = rac{|q_h - q_{h/2}|\, 2^p}{|q_h| (2^p - 1)}
+    .. math:: e_{contact} = \frac{|q_h - q_H|}{|q_h| (2^p - 1)}, \qquad
+              e_{ring} = \frac{|q_h - q_{h/2}|\, 2^p}{|q_h| (2^p - 1)}
 
     Parameters
     ----------
