@@ -56,6 +56,11 @@ def _canon(x):
                                              if not callable(v)}}
 
 
+def _sha256(x) -> str:
+    """Hex SHA-256 of the canonical JSON of ``x`` (keys sorted)."""
+    return hashlib.sha256(json.dumps(x, sort_keys=True).encode()).hexdigest()
+
+
 def physics_parts(scene) -> dict[str, str]:
     """SHA-256 of each physics field of ``scene`` (``program``, ``follower``, ``cam``, ...).
 
@@ -71,8 +76,7 @@ def physics_parts(scene) -> dict[str, str]:
         :data:`NOT_PHYSICS` left out).
     """
     c = _canon(scene)
-    return {k: hashlib.sha256(json.dumps(v, sort_keys=True).encode()).hexdigest()
-            for k, v in c.items() if k != "__type__"}
+    return {k: _sha256(v) for k, v in c.items() if k != "__type__"}
 
 
 def physics_hash(scene) -> str:
@@ -89,7 +93,7 @@ def physics_hash(scene) -> str:
         Hex digest; equal for two scenes that differ only in comments, layout, free text or
         study settings.
     """
-    return hashlib.sha256(json.dumps(physics_parts(scene), sort_keys=True).encode()).hexdigest()
+    return _sha256(physics_parts(scene))
 
 
 def differing_parts(a: dict[str, str], b: dict[str, str]) -> list[str]:
@@ -135,7 +139,7 @@ class SceneDigest:
     @property
     def sha256(self) -> str:
         """:func:`physics_hash` of the scene (hex digest)."""
-        return hashlib.sha256(json.dumps(self.parts, sort_keys=True).encode()).hexdigest()
+        return _sha256(self.parts)
 
 
 def scene_digest(scene) -> SceneDigest:
