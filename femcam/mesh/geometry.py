@@ -196,7 +196,7 @@ def size_field(gmsh, fine_curve: int, lay: BodyLayout, opts: MeshOptions) -> Non
     override the field). The curves' nodes are placed by integrating the field to gmsh's
     ``Mesh.LcIntegrationPrecision`` 1e-6: the default 1e-9 costs ~10 ms a body and places them
     within 0.2 % of ``h`` of where 1e-6 does (the triangles inside then differ as after any
-    perturbation, with the same node count and angles).
+    perturbation, with the same node count, to one node, and angles).
 
     Parameters
     ----------
