@@ -77,3 +77,4 @@ Mesh.MeshSizeFromPoints = 0;
 Mesh.MeshSizeFromCurvature = 0;
 Mesh.MeshSizeExtendFromBoundary = 0;
 Mesh.Algorithm = 6;
+Mesh.LcIntegrationPrecision = 1e-7;   // as femcam.mesh

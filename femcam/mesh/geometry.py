@@ -193,7 +193,11 @@ def size_field(gmsh, fine_curve: int, lay: BodyLayout, opts: MeshOptions) -> Non
 
     The size is ``h`` within ``fine_depth * a_ref`` of the fine curve and grows with slope
     ``growth`` up to ``lc``; size-from-points/curvature/boundary are switched off (they
-    override the field).
+    override the field). The curves' nodes are placed by integrating the field to gmsh's
+    ``Mesh.LcIntegrationPrecision`` 1e-7 (the default 1e-9 costs ~10 ms more a body): against
+    1e-9 a node moves by ~1e-4 ``h``, or a curve whose integrated size lies near a rounding
+    point gains or loses a node; the triangles inside then differ as after any perturbation
+    (node count within 0.3 %, the same angles).
 
     Parameters
     ----------
@@ -222,4 +226,5 @@ def size_field(gmsh, fine_curve: int, lay: BodyLayout, opts: MeshOptions) -> Non
     gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
     gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
     gmsh.option.setNumber("Mesh.Algorithm", 6)  # Frontal-Delaunay: good quality graded meshes
+    gmsh.option.setNumber("Mesh.LcIntegrationPrecision", 1e-7)
     gmsh.option.setNumber("Mesh.ElementOrder", 1)

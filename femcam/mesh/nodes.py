@@ -40,17 +40,25 @@ def gmsh_nodes(gmsh, surface):
     return pts, index, tri
 
 
-def _physical_groups(gmsh, index) -> dict:
-    """``{name: (dim, tag, elements (n, k))}`` of the meshed model's physical groups."""
+def _physical_groups(gmsh, index, known: dict) -> dict:
+    """``{name: (dim, tag, elements (n, k))}`` of the meshed model's physical groups.
+
+    ``known`` maps ``(dim, entity)`` to that entity's elements read already (the surface's
+    triangles): a group of that one entity takes the same array, not a second copy.
+    """
     groups = {}
     for gdim, gtag in gmsh.model.getPhysicalGroups():
         blocks = []
         for ent in gmsh.model.getEntitiesForPhysicalGroup(gdim, gtag):
+            if (gdim, int(ent)) in known:
+                blocks.append(known[gdim, int(ent)])
+                continue
             types, _, ntags = gmsh.model.mesh.getElements(gdim, int(ent))
             for et, nt in zip(types, ntags, strict=True):
                 nn = gmsh.model.mesh.getElementProperties(et)[3]
                 blocks.append(index[np.asarray(nt, dtype=np.int64)].reshape(-1, nn))
-        groups[gmsh.model.getPhysicalName(gdim, gtag)] = (gdim, int(gtag), np.concatenate(blocks))
+        elements = blocks[0] if len(blocks) == 1 else np.concatenate(blocks)
+        groups[gmsh.model.getPhysicalName(gdim, gtag)] = (gdim, int(gtag), elements)
     return groups
 
 
@@ -82,9 +90,10 @@ def extract(gmsh, surface, arcs, bottom):
         for cv in curves:
             nt = gmsh.model.mesh.getNodes(1, cv, includeBoundary=True)[0]
             out.append(index[nt.astype(np.int64)])
-        return np.unique(np.concatenate(out))
+        return _unique(np.concatenate(out), pts.shape[0])
 
-    groups = _physical_groups(gmsh, index)
+    # one surface: its physical group is the triangles read above (one getElements, one array)
+    groups = _physical_groups(gmsh, index, {(2, int(surface)): tri} if surface > 0 else {})
     return pts, tri, curve_nodes([arcs[1]]), curve_nodes(arcs), curve_nodes([bottom]), groups
 
 
@@ -113,13 +122,14 @@ def finish_body(lay: BodyLayout, pts, tri, fine, surf, fixed, groups) -> BodyMes
         gmsh returned another number of fine-zone nodes than ``n_fine + 1``.
     """
     # drop unreferenced nodes (arc centres, geometry-only points)
-    used = np.unique(tri)
+    used = _unique(tri, pts.shape[0])
     renum = np.full(pts.shape[0], -1, dtype=np.int64)
     renum[used] = np.arange(used.size)
     pts = pts[used]
-    tri = renum[tri]
+    tri_in, tri = tri, renum[tri]
     fine, surf, fixed = renum[fine], renum[surf], renum[fixed]
-    groups = {k: (d, t, renum[e]) for k, (d, t, e) in groups.items()}
+    # a group holding the triangles array itself (extract's one surface) shares its result
+    groups = {k: (d, t, tri if e is tri_in else renum[e]) for k, (d, t, e) in groups.items()}
     # snap fine-zone vertices to the uniform abscissae on the exact arc
     n_fine = lay.n_fine
     order = np.argsort(pts[fine, 0])
@@ -130,12 +140,19 @@ def finish_body(lay: BodyLayout, pts, tri, fine, surf, fixed, groups) -> BodyMes
     pts[fine, 0] = xs
     pts[fine, 1] = -surface_height(xs, lay.R)
     # counter-clockwise triangles
-    tri = ccw(pts, tri)
-    phys = {k: PhysicalGroup(name=k, dim=d, tag=t, elements=(ccw(pts, e) if d == 2 else e).T.copy())
+    tri_r, tri = tri, ccw(pts, tri)
+    phys = {k: PhysicalGroup(name=k, dim=d, tag=t,
+                             elements=(tri if e is tri_r else ccw(pts, e) if d == 2 else e).T.copy())
             for k, (d, t, e) in groups.items()}
     return BodyMesh(name=lay.name, points=pts.T.copy(), triangles=tri.T.copy(), fixed=fixed,
                     contact=fine, contact_x=xs, surface=surf, L=float(lay.L), R=float(lay.R),
                     groups=phys)
+
+
+def _unique(idx: np.ndarray, n: int) -> np.ndarray:
+    """``np.unique(idx)`` for node indices in ``[0, n)``: a counting pass (the same sorted
+    int64 array; numpy's hash-based unique took milliseconds on a body's triangles)."""
+    return np.flatnonzero(np.bincount(np.asarray(idx, dtype=np.int64).ravel(), minlength=n))
 
 
 def ccw(pts: np.ndarray, tri: np.ndarray) -> np.ndarray:
