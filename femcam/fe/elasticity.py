@@ -31,13 +31,17 @@ from .._threads import single_threaded_blas
 from ..errors import FemcamError
 from ..materials import Material, lame_parameters
 from ..mesh import BodyMesh
-from .assembly import contact_last_order, elasticity_stiffness
+from .assembly import contact_last_order, elasticity_stiffness, triangle_edges
 from .contact import edge_midside_dofs
 
 ELEMENTS = ("P1", "P2")
 ORDERINGS = ("MMD_AT_PLUS_A", "MMD_ATA", "COLAMD", "NATURAL")
 #: right-hand sides per SuperLU triangular solve (see Body.solve)
 CHUNK = 20
+#: the quadrature of ``Body.basis``: one point. The basis carries the DOF numbering and the node
+#: locations; ``K`` is assembled by :mod:`femcam.fe.assembly`, which never integrates with it
+#: (scikit-fem's default rule would evaluate every basis function at 6 points per element)
+_DOF_QUADRATURE = (np.array([[1.0 / 3.0], [1.0 / 3.0]]), np.array([0.5]))
 
 
 @dataclass(frozen=True, eq=False)
@@ -59,7 +63,9 @@ class Body:
     mesh : skfem.MeshTri
         The scikit-fem mesh [m].
     basis : skfem.Basis
-        The vector basis (DOFs interleaved ``(u_x, u_y)`` per node).
+        The vector basis (DOFs interleaved ``(u_x, u_y)`` per node): its DOF numbering and node
+        locations. Built with a one-point quadrature, so not for integration
+        (``skfem.Basis(body.mesh, body.basis.elem)`` is).
     K : scipy.sparse.csr_matrix, shape (n_dofs, n_dofs)
         Full stiffness [N/m per unit thickness].
     free : ndarray of int, shape (n_free,)
@@ -326,7 +332,9 @@ def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strai
 
     t0 = time.perf_counter()
     mesh = MeshTri(geometry.points, geometry.triangles, validate=False, sort_t=False)
-    basis = Basis(mesh, _element(element))
+    # scikit-fem's own edge table (its cached ``facets``, ``t2f``), built faster, same arrays
+    mesh._facets, mesh._t2f = triangle_edges(mesh.t, mesh.p.shape[1])
+    basis = Basis(mesh, _element(element), quadrature=_DOF_QUADRATURE)
     lam, mu_L = lame_parameters(material.E, material.nu, plane)
     lam_e, mu_e = _coating_lame(geometry, material, plane, lam, mu_L)
     K = elasticity_stiffness(mesh.p, mesh.t, basis.element_dofs, basis.elem.elem, basis.N,
@@ -338,7 +346,9 @@ def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strai
     fixed = basis.get_dofs(fac).all()
     if supports is not None:
         fixed = np.array([basis.nodal_dofs[c, n] for n, c in supports], dtype=np.int64)
-    free = np.setdiff1d(np.arange(basis.N), fixed)
+    is_free = np.ones(basis.N, dtype=bool)
+    is_free[fixed] = False
+    free = np.flatnonzero(is_free)     # sorted, as np.setdiff1d(np.arange(N), fixed)
     t1 = time.perf_counter()
     perm = last = None
     try:
@@ -488,29 +498,32 @@ def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matri
     """
     dphi, sdofs, edofs, lam, mu, cnt = element_gradients(body, nodes)
     b, nscal, nloc = body.basis, body.basis.N // 2, dphi.shape[0]
-    rows, cols, vals = [], [], []
-    for k in range(nloc):  # node at which stress is evaluated
-        node = sdofs[k]
-        w = 1.0 / cnt[node]
-        for j in range(nloc):
-            dx = dphi[j, 0, :, k]
-            dy = dphi[j, 1, :, k]
-            ux = edofs[2 * j]
-            uy = edofs[2 * j + 1]
-            # sxx = (lam+2mu) du/dx + lam dv/dy ; syy = lam du/dx + (lam+2mu) dv/dy ; sxy = mu(du/dy+dv/dx)
-            for comp, cu, cv in ((0, (lam + 2 * mu) * dx, lam * dy),
-                                 (1, lam * dx, (lam + 2 * mu) * dy),
-                                 (2, mu * dy, mu * dx)):
-                r = comp * nscal + node
-                rows += [r, r]
-                cols += [ux, uy]
-                vals += [w * cu, w * cv]
-    S = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
-                      shape=(3 * nscal, b.N))
-    if nodes is not None:
-        nodes = np.asarray(nodes)
-        S = S[np.concatenate([nodes, nodes + nscal, nodes + 2 * nscal])]
-    return S
+    # entry (k, j, comp, c, e): node k of element e (the row), function j's DOF c (the column);
+    # sxx = (lam+2mu) du/dx + lam dv/dy ; syy = lam du/dx + (lam+2mu) dv/dy ; sxy = mu(du/dy+dv/dx)
+    dx = dphi[:, 0].transpose(2, 0, 1)   # (k, j, e): d phi_j / dx at node k
+    dy = dphi[:, 1].transpose(2, 0, 1)
+    lam2 = lam + 2 * mu
+    w = (1.0 / cnt[sdofs])[:, None, None, None, :]   # average over the elements at the node
+    vals = w * np.stack([np.stack([lam2 * dx, lam * dy], axis=2),
+                         np.stack([lam * dx, lam2 * dy], axis=2),
+                         np.stack([mu * dy, mu * dx], axis=2)], axis=2)
+    shape = vals.shape
+    comp = np.arange(3)[None, None, :, None, None]
+    cols = np.broadcast_to(edofs.reshape(nloc, 2, -1)[None, :, None], shape)
+    node = np.broadcast_to(sdofs[:, None, None, None, :], shape)
+    nodes = None if nodes is None else np.asarray(nodes)
+    if nodes is None or np.unique(nodes).size != nodes.size:
+        S = sp.csr_matrix((vals.ravel(), ((comp * nscal + node).ravel(), cols.ravel())),
+                          shape=(3 * nscal, b.N))
+        return S if nodes is None else S[np.concatenate([nodes, nodes + nscal, nodes + 2 * nscal])]
+    # only the rows of ``nodes``: every row gets the entries it gets in the full operator, in
+    # the same order, so the summed duplicates (the element average) are the same bits
+    pos = np.full(nscal, -1)
+    pos[nodes] = np.arange(nodes.size)
+    row = pos[node]
+    keep = row >= 0
+    return sp.csr_matrix((vals[keep], ((comp * nodes.size + row)[keep], cols[keep])),
+                         shape=(3 * nodes.size, b.N))
 
 
 def scalar_node_coordinates(body: Body) -> np.ndarray:
