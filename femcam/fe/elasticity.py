@@ -498,32 +498,29 @@ def stress_operator(body: Body, nodes: np.ndarray | None = None) -> sp.csr_matri
     """
     dphi, sdofs, edofs, lam, mu, cnt = element_gradients(body, nodes)
     b, nscal, nloc = body.basis, body.basis.N // 2, dphi.shape[0]
-    # entry (k, j, comp, c, e): node k of element e (the row), function j's DOF c (the column);
-    # sxx = (lam+2mu) du/dx + lam dv/dy ; syy = lam du/dx + (lam+2mu) dv/dy ; sxy = mu(du/dy+dv/dx)
-    dx = dphi[:, 0].transpose(2, 0, 1)   # (k, j, e): d phi_j / dx at node k
-    dy = dphi[:, 1].transpose(2, 0, 1)
-    lam2 = lam + 2 * mu
-    w = (1.0 / cnt[sdofs])[:, None, None, None, :]   # average over the elements at the node
-    vals = w * np.stack([np.stack([lam2 * dx, lam * dy], axis=2),
-                         np.stack([lam * dx, lam2 * dy], axis=2),
-                         np.stack([mu * dy, mu * dx], axis=2)], axis=2)
-    shape = vals.shape
-    comp = np.arange(3)[None, None, :, None, None]
-    cols = np.broadcast_to(edofs.reshape(nloc, 2, -1)[None, :, None], shape)
-    node = np.broadcast_to(sdofs[:, None, None, None, :], shape)
-    nodes = None if nodes is None else np.asarray(nodes)
-    if nodes is None or np.unique(nodes).size != nodes.size:
-        S = sp.csr_matrix((vals.ravel(), ((comp * nscal + node).ravel(), cols.ravel())),
-                          shape=(3 * nscal, b.N))
-        return S if nodes is None else S[np.concatenate([nodes, nodes + nscal, nodes + 2 * nscal])]
-    # only the rows of ``nodes``: every row gets the entries it gets in the full operator, in
-    # the same order, so the summed duplicates (the element average) are the same bits
-    pos = np.full(nscal, -1)
-    pos[nodes] = np.arange(nodes.size)
-    row = pos[node]
-    keep = row >= 0
-    return sp.csr_matrix((vals[keep], ((comp * nodes.size + row)[keep], cols[keep])),
-                         shape=(3 * nodes.size, b.N))
+    rows, cols, vals = [], [], []
+    for k in range(nloc):  # node at which stress is evaluated
+        node = sdofs[k]
+        w = 1.0 / cnt[node]
+        for j in range(nloc):
+            dx = dphi[j, 0, :, k]
+            dy = dphi[j, 1, :, k]
+            ux = edofs[2 * j]
+            uy = edofs[2 * j + 1]
+            # sxx = (lam+2mu) du/dx + lam dv/dy ; syy = lam du/dx + (lam+2mu) dv/dy ; sxy = mu(du/dy+dv/dx)
+            for comp, cu, cv in ((0, (lam + 2 * mu) * dx, lam * dy),
+                                 (1, lam * dx, (lam + 2 * mu) * dy),
+                                 (2, mu * dy, mu * dx)):
+                r = comp * nscal + node
+                rows += [r, r]
+                cols += [ux, uy]
+                vals += [w * cu, w * cv]
+    S = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
+                      shape=(3 * nscal, b.N))
+    if nodes is not None:
+        nodes = np.asarray(nodes)
+        S = S[np.concatenate([nodes, nodes + nscal, nodes + 2 * nscal])]
+    return S
 
 
 def scalar_node_coordinates(body: Body) -> np.ndarray:
