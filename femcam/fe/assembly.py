@@ -95,9 +95,9 @@ def triangle_edges(triangles: np.ndarray, n_nodes: int) -> tuple[np.ndarray, np.
 
     scikit-fem builds its edge table with ``np.unique`` over the columns of the sorted vertex
     pairs (``Mesh.build_entities``); with each pair packed in one integer key
-    ``lo * n_nodes + hi`` a one-dimensional ``np.unique`` gives the same lexicographic order, the
-    same arrays (``tests/test_fe_assembly.py``), at a tenth of the time. The edge numbering sets
-    the P2 midside DOFs, so the arrays must match exactly.
+    ``lo * n_nodes + hi`` a one-dimensional ``np.unique`` gives the same lexicographic order and
+    the same arrays (``tests/test_fe_assembly.py``) in far less time (docs/performance.md). The
+    edge numbering sets the P2 midside DOFs, so the arrays must match exactly.
 
     Parameters
     ----------
