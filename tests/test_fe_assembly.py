@@ -9,7 +9,7 @@ import pytest
 from skfem import Basis, ElementTriP1, ElementTriP2, ElementVector, MeshTri, asm
 from skfem.models.elasticity import linear_elasticity
 
-from femcam.fe.assembly import contact_last_order, elasticity_stiffness
+from femcam.fe.assembly import contact_last_order, elasticity_stiffness, triangle_edges
 from femcam.fe.elasticity import assemble_body, contact_surface_dofs
 from femcam.materials import STEEL
 from femcam.mesh import MeshOptions, build_contact_mesh
@@ -72,3 +72,25 @@ def test_contact_last_order_is_a_permutation_with_contact_last():
     order = contact_last_order(b.K, b.free, last, "MMD_AT_PLUS_A")
     assert np.array_equal(np.sort(order), np.arange(b.free.size))
     assert set(b.free[order[-last.size:]]) == set(last)
+
+
+def test_triangle_edges_are_scikit_fems(mesh):
+    """The edge table assemble_body hands scikit-fem is the one scikit-fem builds itself
+    (``Mesh.build_entities``): same arrays, same dtypes (the P2 midside DOFs follow it)."""
+    for m in (mesh, MeshTri.init_circle(3)):
+        facets, t2f = triangle_edges(m.t, m.p.shape[1])
+        ref_f, ref_t2f = MeshTri.build_entities(m.t, m.elem.refdom.facets)
+        assert facets.dtype == ref_f.dtype and t2f.dtype == ref_t2f.dtype
+        np.testing.assert_array_equal(facets, ref_f)
+        np.testing.assert_array_equal(t2f, ref_t2f)
+
+
+def test_body_dofs_are_scikit_fems():
+    """A body's DOF numbering is scikit-fem's default Basis's: the edge table and the one-point
+    quadrature change no DOF."""
+    cm = build_contact_mesh(Rr=0.01, rho=0.02, a_ref=1.6e-4,
+                            options=MeshOptions(a_over_h=2, growth=1.0, fine_depth=0.0))
+    b = assemble_body(cm.cam, STEEL)
+    ref = Basis(MeshTri(cm.cam.points, cm.cam.triangles, sort_t=False), ElementVector(ElementTriP2()))
+    for name in ("element_dofs", "nodal_dofs", "facet_dofs", "doflocs"):
+        np.testing.assert_array_equal(getattr(b.basis, name), getattr(ref, name), err_msg=name)

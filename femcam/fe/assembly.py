@@ -90,6 +90,37 @@ def elasticity_stiffness(points: np.ndarray, triangles: np.ndarray, element_dofs
     return K.tocsr()
 
 
+def triangle_edges(triangles: np.ndarray, n_nodes: int) -> tuple[np.ndarray, np.ndarray]:
+    """The edges of a triangle mesh as scikit-fem numbers them (``Mesh.facets``, ``Mesh.t2f``).
+
+    scikit-fem builds its edge table with ``np.unique`` over the columns of the sorted vertex
+    pairs (``Mesh.build_entities``); with each pair packed in one integer key
+    ``lo * n_nodes + hi`` a one-dimensional ``np.unique`` gives the same lexicographic order and
+    the same arrays (``tests/test_fe_assembly.py``) in far less time (docs/performance.md). The
+    edge numbering sets the P2 midside DOFs, so the arrays must match exactly.
+
+    Parameters
+    ----------
+    triangles : ndarray of int, shape (3, n_el)
+        Vertex indices of each triangle (scikit-fem's ``mesh.t``).
+    n_nodes : int
+        Number of vertices.
+
+    Returns
+    -------
+    facets : ndarray of int, shape (2, n_edges)
+        Vertex pairs ``(lo, hi)`` of the edges, sorted lexicographically (dtype of ``triangles``).
+    t2f : ndarray of int, shape (3, n_el)
+        Edges of each triangle: local edges (0, 1), (1, 2), (0, 2).
+    """
+    t = triangles
+    a = np.concatenate([t[0], t[1], t[0]]).astype(np.int64)
+    b = np.concatenate([t[1], t[2], t[2]]).astype(np.int64)
+    keys, t2f = np.unique(np.minimum(a, b) * n_nodes + np.maximum(a, b), return_inverse=True)
+    facets = np.ascontiguousarray(np.stack([keys // n_nodes, keys % n_nodes]).astype(t.dtype))
+    return facets, t2f.reshape(3, t.shape[1])
+
+
 def contact_last_order(K: sp.csr_matrix, free: np.ndarray, last: np.ndarray,
                        ordering: str) -> np.ndarray:
     """Factor order (positions in ``free``) with the DOFs ``last`` (global indices) at the end.

@@ -31,13 +31,17 @@ from .._threads import single_threaded_blas
 from ..errors import FemcamError
 from ..materials import Material, lame_parameters
 from ..mesh import BodyMesh
-from .assembly import contact_last_order, elasticity_stiffness
+from .assembly import contact_last_order, elasticity_stiffness, triangle_edges
 from .contact import edge_midside_dofs
 
 ELEMENTS = ("P1", "P2")
 ORDERINGS = ("MMD_AT_PLUS_A", "MMD_ATA", "COLAMD", "NATURAL")
 #: right-hand sides per SuperLU triangular solve (see Body.solve)
 CHUNK = 20
+#: the quadrature of ``Body.basis``: one point. The basis carries the DOF numbering and the node
+#: locations; ``K`` is assembled by :mod:`femcam.fe.assembly`, which never integrates with it
+#: (scikit-fem's default rule would evaluate every basis function at 6 points per element)
+_DOF_QUADRATURE = (np.array([[1.0 / 3.0], [1.0 / 3.0]]), np.array([0.5]))
 
 
 @dataclass(frozen=True, eq=False)
@@ -59,7 +63,9 @@ class Body:
     mesh : skfem.MeshTri
         The scikit-fem mesh [m].
     basis : skfem.Basis
-        The vector basis (DOFs interleaved ``(u_x, u_y)`` per node).
+        The vector basis (DOFs interleaved ``(u_x, u_y)`` per node): its DOF numbering and node
+        locations. Built with a one-point quadrature, so not for integration
+        (``skfem.Basis(body.mesh, body.basis.elem)`` is).
     K : scipy.sparse.csr_matrix, shape (n_dofs, n_dofs)
         Full stiffness [N/m per unit thickness].
     free : ndarray of int, shape (n_free,)
@@ -326,7 +332,9 @@ def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strai
 
     t0 = time.perf_counter()
     mesh = MeshTri(geometry.points, geometry.triangles, validate=False, sort_t=False)
-    basis = Basis(mesh, _element(element))
+    # scikit-fem's own edge table (its cached ``facets``, ``t2f``), built faster, same arrays
+    mesh._facets, mesh._t2f = triangle_edges(mesh.t, mesh.p.shape[1])
+    basis = Basis(mesh, _element(element), quadrature=_DOF_QUADRATURE)
     lam, mu_L = lame_parameters(material.E, material.nu, plane)
     lam_e, mu_e = _coating_lame(geometry, material, plane, lam, mu_L)
     K = elasticity_stiffness(mesh.p, mesh.t, basis.element_dofs, basis.elem.elem, basis.N,
@@ -338,7 +346,9 @@ def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strai
     fixed = basis.get_dofs(fac).all()
     if supports is not None:
         fixed = np.array([basis.nodal_dofs[c, n] for n, c in supports], dtype=np.int64)
-    free = np.setdiff1d(np.arange(basis.N), fixed)
+    is_free = np.ones(basis.N, dtype=bool)
+    is_free[fixed] = False
+    free = np.flatnonzero(is_free)     # sorted, as np.setdiff1d(np.arange(N), fixed)
     t1 = time.perf_counter()
     perm = last = None
     try:

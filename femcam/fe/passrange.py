@@ -123,10 +123,12 @@ def pass_grid(body: Body, nodes: np.ndarray, x: np.ndarray, z: np.ndarray, surfa
     px = xs[ix]
     ys = surface_height(px, body.geometry.R)
     py = (-ys - zs[iz]) if body.name == "cam" else (ys + zs[iz])
-    v0, v1, v2 = (p[:, t[j, e]] for j in range(3))           # affine map x = v0 + A (xi, eta)
+    v0, v1, v2 = (p[:, t[j]] for j in range(3))              # affine map x = v0 + A (xi, eta)
+    # the map per element, then taken at each candidate's element (the same numbers)
     a11, a21, a12, a22 = v1[0] - v0[0], v1[1] - v0[1], v2[0] - v0[0], v2[1] - v0[1]
-    det = a11 * a22 - a12 * a21
-    dx, dy = px - v0[0], py - v0[1]
+    det = (a11 * a22 - a12 * a21)[e]
+    a11, a21, a12, a22 = a11[e], a21[e], a12[e], a22[e]
+    dx, dy = px - v0[0, e], py - v0[1, e]
     xi, eta = (a22 * dx - a12 * dy) / det, (a11 * dy - a21 * dx) / det
     tol = 1e-9
     inside = (xi >= -tol) & (eta >= -tol) & (xi + eta <= 1.0 + tol)
