@@ -28,7 +28,7 @@ from .diskcache import DiskCache, usage
 from .estimate import estimate_run, prefetch_estimate
 from .extras import extras_provenance
 from .options import ResolvedOptions, RunOptions, SweepOptions, contact_params
-from .outputs import SweepRun, scene_hash, scene_source, write_outputs
+from .outputs import SweepRun, early_plots, scene_hash, scene_source, write_outputs
 from .parallel import AUTO_VTU_S, _cpu_count, auto_workers, run_tasks
 from .pipeline import ChunkTask, contact_mask, run_chunk
 from .realcam import auto_hertz_rows, contact_scene, jump_angles, real_cam_summary, scene_traction
@@ -154,6 +154,7 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
         with talk.phase(f"mesh for rtol {100 * run.opts.rtol:g} %: a pilot estimate and a mesh per family"):
             choose_mesh(run, _fit_rows, default_cache())
     _open_store(run)
+    early_plots(run)  # svaj_loads.png: drawn by the plot process while the families are built
     with talk.phase("model families: build, verify, estimate the error (a coarse model each)"):
         _plan(run)
         estimate_run(run, default_cache())
