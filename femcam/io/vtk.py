@@ -89,8 +89,7 @@ def write_vtu(path, points, cells, point_data: dict, field_data: dict | None = N
     parts = _vtu_parts(pts, blocks, pdata, cdata, field_data)
     if parts is not None:
         def write(tmp):
-            with open(tmp, "wb") as f:
-                f.writelines(parts)
+            _write_parts(tmp, parts)
     else:  # a cell type or dtype the direct writer does not know: meshio's writer
         mesh = _mesh(pts, cells, point_data=pdata, cell_data=cell_data or {})
 
@@ -156,6 +155,12 @@ def _vtu_parts(points, blocks, point_data, cell_data, field_data) -> list | None
             out.append(f"</{tag}>\n".encode())
     out.append(b"</Piece>\n</UnstructuredGrid>\n</VTKFile>\n")
     return out
+
+
+def _write_parts(path, parts: list) -> None:
+    """Write the byte strings ``parts`` to the file ``path``, one after the other."""
+    with open(path, "wb") as f:
+        f.writelines(parts)
 
 
 def _data_array(name: str, a: np.ndarray) -> list:
