@@ -252,8 +252,10 @@ def early_plots(run: SweepRun) -> None:
     if run.plotter is None or run.out is None or run.scene.follower.flat_face:
         return
     cols = svaj_columns(run.scene, run.angles)
+    # weight 0: drawn long before the table is complete, it must not steer the later plots
+    # away from its lane
     lane = run.plotter.submit(named_plot, "plot_svaj", plot_svaj_loads, _Columns(cols),
-                              run.out / "plots" / "svaj_loads.png", weight=PLOT_CPU_S["plot_svaj"])
+                              run.out / "plots" / "svaj_loads.png", weight=0.0)
     run.early["plot_svaj"] = (cols, lane)
 
 
