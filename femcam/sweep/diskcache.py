@@ -374,7 +374,7 @@ def store_fields(model: ContactModel, disk: DiskCache | None) -> None:
     disk : DiskCache or None
         The sweep's cache (None or disabled: nothing changes).
     """
-    if disk is None or not disk.enabled:
+    if disk is None or not disk.enabled or not isinstance(model, ContactModel):
         return
     bodies = model.bodies
     if isinstance(bodies, LazyBodies):
