@@ -158,7 +158,7 @@ class SweepRun:
     plotter : femcam.viz.process.PlotProcess, optional
         The process drawing the plots (started with the sweep; None: drawn here).
     early : dict
-        Plots sent to ``plotter`` before the solves (:func:`early_plots`): name -> (the
+        Plots sent to ``plotter`` before the chunk solves (:func:`early_plots`): name -> (the
         columns drawn, the lane).
     """
 
@@ -239,10 +239,11 @@ def svaj_columns(scene, theta) -> dict:
 
 def early_plots(run: SweepRun) -> None:
     """Send ``svaj_loads.png`` (kinematics, geometry, load and Hertz p0: the analytic chain's
-    columns) to the plot process before the FE solves, so that the plot process, otherwise idle
-    until the table is complete, draws it meanwhile. :func:`with_plot_data` checks the finished
-    table's columns against those drawn and has the plot drawn again from the table when any
-    value differs (e.g. a follower whose rows the chunks fill otherwise).
+    columns) to the plot process before the chunk solves, so that the plot process, otherwise
+    idle until the table is complete, draws it on the core the serial solves leave free.
+    :func:`with_plot_data` checks the finished table's columns against those drawn and has the
+    plot drawn again from the table when any value differs (e.g. a follower whose rows the
+    chunks fill otherwise).
 
     Parameters
     ----------

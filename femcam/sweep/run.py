@@ -154,11 +154,13 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
         with talk.phase(f"mesh for rtol {100 * run.opts.rtol:g} %: a pilot estimate and a mesh per family"):
             choose_mesh(run, _fit_rows, default_cache())
     _open_store(run)
-    early_plots(run)  # svaj_loads.png: drawn by the plot process while the families are built
     with talk.phase("model families: build, verify, estimate the error (a coarse model each)"):
         _plan(run)
         estimate_run(run, default_cache())
     t_verify = time.perf_counter() - t0
+    # svaj_loads.png: drawn by the plot process during the chunk solves (after the family
+    # phase, whose background builds use the second core on a cold run)
+    early_plots(run)
     tasks, task_chunk = _tasks(run)
     workers, workers_note = _choose_workers(run, tasks, task_chunk, scheduler, client)
     t0 = time.perf_counter()
