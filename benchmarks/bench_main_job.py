@@ -27,7 +27,8 @@ the study model's FE p0 within 0.3 % of Hertz at every angle answered with the a
 Breakdown (one extra run of the default job in a driver process, ``--workers 1`` so that every
 phase runs in that process and can be timed; ``--breakdown-workers auto`` times the default, whose
 family phase builds in a background thread as well): interpreter start, imports (femcam.cli and the
-heavy libraries the sweep imports lazily: scikit-fem, gmsh, meshio, matplotlib), scene,
+heavy libraries the sweep imports lazily: scikit-fem, gmsh, matplotlib; meshio only for
+cell types femcam.io does not write itself), scene,
 analytic chain, families + verification (``SweepResult.timings["verify"]``), chunk solves
 (``timings["compute"]`` minus VTU), VTU writing (``femcam.io.write_fe_vtu`` calls),
 CSV/NPZ/PVD, and each plot (``femcam.viz.sweep``), the worst-angle surface plot separately
@@ -61,7 +62,7 @@ import json, sys, time
 t_start = time.perf_counter()
 T = {}
 t = time.perf_counter(); import femcam.cli; T["import femcam.cli"] = time.perf_counter() - t
-for mod in ("skfem", "gmsh", "meshio", "femcam.fe", "femcam.sweep"):  # matplotlib: the plot process
+for mod in ("skfem", "gmsh", "femcam.fe", "femcam.sweep"):  # matplotlib: the plot process
     t = time.perf_counter(); __import__(mod); T["import " + mod] = time.perf_counter() - t
 import importlib, femcam.scene, femcam.viz.sweep as vs
 from femcam.sweep import pipeline as sw_pipeline, run as sw_run
@@ -250,13 +251,13 @@ def print_breakdown(b: dict) -> None:
     plots = {k: v for k, v in ph.items() if k.startswith("plot ")}
     outputs = ph.get("outputs (CSV, NPZ, PVD, plots)", 0.0)
     rows = [("interpreter start (python -c pass)", b["python start"]),
-            ("imports (femcam.cli + skfem, gmsh, meshio)", imports),
+            ("imports (femcam.cli + skfem, gmsh)", imports),
             ("scene (load_scene)", ph.get("scene", 0.0)),
             ("analytic chain (kinematics, loads, Hertz)", sw.get("analytic", 0.0)),
             ("families + verification (model builds, scans, fresh checks)", sw.get("verify", 0.0)),
             ("chunk solves (compute minus VTU)", sw.get("compute", 0.0) - vtu),
             (f"VTU files ({int(ph.get('VTU (n)', 0))}): fields (femcam.fe full_field)", fields),
-            ("VTU files: arrays + meshio write (femcam.io)", vtu - fields),
+            ("VTU files: arrays + write (femcam.io)", vtu - fields),
             ("CSV + NPZ + PVD" if plots else "CSV + NPZ + PVD + reports, and the wait for the plot process",
              outputs - sum(plots.values()))]
     rows += [(f"{k} (PNG)", v) for k, v in plots.items()]

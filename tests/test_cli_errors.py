@@ -111,8 +111,10 @@ def test_full_disk_is_one_line(tmp_path, capsys, monkeypatch):
     assert f"'{out / 'analytic.csv'}'" in err
 
 
-def test_full_disk_in_vtu_writer_is_one_line(tmp_path, capsys, monkeypatch):
-    """ENOSPC inside meshio while a sweep writes its VTU files: one line, exit 1."""
+def _full_vtu_writer(monkeypatch):
+    """The VTU writer (femcam.io.vtk's one-pass writer, and meshio's for other cells) hits a
+    full disk: a partial file, then ENOSPC."""
+    import femcam.io.vtk as vtk
     meshio = pytest.importorskip("meshio")
 
     def full(path, *a, **k):
@@ -120,6 +122,12 @@ def test_full_disk_in_vtu_writer_is_one_line(tmp_path, capsys, monkeypatch):
         raise OSError(errno.ENOSPC, "No space left on device", str(path))
 
     monkeypatch.setattr(meshio, "write", full)
+    monkeypatch.setattr(vtk, "_write_parts", full)
+
+
+def test_full_disk_in_vtu_writer_is_one_line(tmp_path, capsys, monkeypatch):
+    """ENOSPC inside the VTU writer while a sweep writes its VTU files: one line, exit 1."""
+    _full_vtu_writer(monkeypatch)
     out = tmp_path / "o"
     rc = main(["sweep", SCENE, "--out", str(out), "--method", "hertz", "--angles-deg", "0:20:10",
                "--vtk-every", "1", "--no-plots", "--workers", "1", "--progress", "off"])
@@ -128,13 +136,7 @@ def test_full_disk_in_vtu_writer_is_one_line(tmp_path, capsys, monkeypatch):
 
 
 def test_full_disk_leaves_no_part_file(tmp_path, monkeypatch):
-    meshio = pytest.importorskip("meshio")
-
-    def full(path, *a, **k):
-        open(path, "wb").write(b"<VTKFile")
-        raise OSError(errno.ENOSPC, "No space left on device", str(path))
-
-    monkeypatch.setattr(meshio, "write", full)
+    _full_vtu_writer(monkeypatch)
     out = tmp_path / "o"
     main(["sweep", SCENE, "--out", str(out), "--method", "hertz", "--angles-deg", "0:20:10",
           "--vtk-every", "1", "--no-plots", "--workers", "1", "--progress", "off"])

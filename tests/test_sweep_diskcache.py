@@ -92,6 +92,47 @@ def test_warm_model_is_the_cold_model_bit_for_bit(cp, disk):
     np.testing.assert_array_equal(fw["von_mises"], fc["von_mises"])
 
 
+def test_vtu_fields_of_a_warm_model_are_read_back_without_a_factor(cp, disk):
+    """A model built here stores the back-solves of its full fields (a sweep's ``.vtu``,
+    ``store_fields``); the same model loaded from the cache reads them back and never
+    assembles or factorises a body, with the cold fields bit for bit. A load that was not
+    stored factorises the body from the stored mesh: the cold numbers again."""
+    from femcam.fe.export import scene_arrays
+    from femcam.sweep.diskcache import StoredBody, store_fields
+
+    cold, _ = _model(disk, cp)
+    store_fields(cold, disk)
+    rc = cold.solve(F=F, rho=RHO, mu=0.1)
+    cold_arrays = scene_arrays(rc)
+    n_entries = len(list(disk.directory.glob("*.pkl")))
+    assert n_entries == 3, "the model and one displacement entry per body"
+    warm, _ = _model(disk, cp)
+    store_fields(warm, disk)
+    rw = warm.solve(F=F, rho=RHO, mu=0.1)
+    warm_arrays = scene_arrays(rw)
+    for name in ("cam", "roller"):
+        b = warm.bodies[name]
+        assert isinstance(b, StoredBody) and b._full is None, f"{name} was factorised"
+    np.testing.assert_array_equal(warm_arrays[0], cold_arrays[0])
+    np.testing.assert_array_equal(warm_arrays[1], cold_arrays[1])
+    for k, v in cold_arrays[3].items():
+        np.testing.assert_array_equal(warm_arrays[3][k], v, err_msg=k)
+    # another load: not stored, so the body is factorised (and that field is stored in turn)
+    rc2, rw2 = (m.solve(F=1.2 * F, rho=RHO, mu=0.1) for m in (cold, warm))
+    uw, fw = warm.full_field(rw2, "cam")
+    uc, fc = cold.full_field(rc2, "cam")
+    assert warm.bodies["cam"]._full is not None
+    np.testing.assert_array_equal(uw, uc)
+    np.testing.assert_array_equal(fw["von_mises"], fc["von_mises"])
+    # a damaged displacement entry is a miss (removed, solved again), never a wrong field
+    m3, _ = _model(disk, cp)
+    store_fields(m3, disk)
+    for p in disk.directory.glob("*.pkl"):       # (m3 is loaded already)
+        p.write_bytes(p.read_bytes()[:100])
+    u3, _ = m3.full_field(m3.solve(F=F, rho=RHO, mu=0.1), "roller")
+    np.testing.assert_array_equal(u3, cold.full_field(rc, "roller")[0])
+
+
 @dataclasses.dataclass(frozen=True)
 class _Coated(ContactParams):
     """A field added to ContactParams later (a coating, another helper's a_over_h choice)."""

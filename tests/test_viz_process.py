@@ -102,3 +102,26 @@ def test_killed_plot_process_loses_no_other_output(tmp_path, monkeypatch):
     assert kept == sorted(os.path.basename(v) for k, v in r.paths.items() if k.startswith("plot_"))
     html = (tmp_path / "o" / "report.html").read_text()
     assert all(name in html for name in kept) and "maxima_vs_angle.png" not in html
+
+
+def test_early_svaj_plot_is_drawn_again_when_the_table_differs(tmp_path, monkeypatch):
+    """svaj_loads.png is sent to the plot process before the solves (from the analytic chain's
+    columns); if the finished table's columns differ, it is drawn again from the table: the
+    PNG equals the one plot_sweep draws in this process from the result."""
+    import numpy as np
+
+    from femcam.sweep import outputs
+
+    real = outputs.svaj_columns
+
+    def off(scene, theta):   # columns unlike the table's: the early plot must not stand
+        cols = real(scene, theta)
+        return {**cols, "s": 2.0 * cols["s"] + 1e-3}
+
+    monkeypatch.setattr(outputs, "svaj_columns", off)
+    r = sweep(load_scene(SCENE), HERTZ, RunOptions(out=tmp_path / "a", progress=False))
+    again = plot_sweep(r, tmp_path / "b")
+    got = open(r.paths["plot_svaj"], "rb").read()
+    assert got == open(again["plot_svaj"], "rb").read()
+    assert list(k for k in r.paths if k.startswith("plot_")) == list(again)   # the report's order
+    assert np.array_equal(real(load_scene(SCENE), r.table["theta"])["s"], r.table["s"])

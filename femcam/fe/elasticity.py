@@ -328,15 +328,8 @@ def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strai
     FemcamError
         The stiffness of the free block is singular (support missing).
     """
-    from skfem import Basis, MeshTri  # skfem: kept out of ``import femcam`` (tests/test_imports.py)
-
     t0 = time.perf_counter()
-    mesh = MeshTri(geometry.points, geometry.triangles, validate=False, sort_t=False)
-    # scikit-fem's own edge table (its cached ``facets``, ``t2f``), built faster, same arrays
-    mesh._facets, mesh._t2f = triangle_edges(mesh.t, mesh.p.shape[1])
-    basis = Basis(mesh, _element(element), quadrature=_DOF_QUADRATURE)
-    lam, mu_L = lame_parameters(material.E, material.nu, plane)
-    lam_e, mu_e = _coating_lame(geometry, material, plane, lam, mu_L)
+    mesh, basis, lam, mu_L, lam_e, mu_e = _discretise(geometry, material, plane, element)
     K = elasticity_stiffness(mesh.p, mesh.t, basis.element_dofs, basis.elem.elem, basis.N,
                              float(lam) if lam_e is None else lam_e,
                              float(mu_L) if mu_e is None else mu_e)
@@ -369,6 +362,52 @@ def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strai
                 element=element, mesh=mesh, basis=basis, K=K, free=free, lu=lu, lam=float(lam),
                 mu_L=float(mu_L), t_assembly=t1 - t0, t_factor=t2 - t1, lam_e=lam_e, mu_e=mu_e,
                 perm=perm, last=last)
+
+
+def _discretise(geometry: BodyMesh, material: Material, plane: str, element: str) -> tuple:
+    """``(mesh, basis, lam, mu_L, lam_e, mu_e)`` of one body (no stiffness, no factor)."""
+    from skfem import Basis, MeshTri  # skfem: kept out of ``import femcam`` (tests/test_imports.py)
+
+    mesh = MeshTri(geometry.points, geometry.triangles, validate=False, sort_t=False)
+    # scikit-fem's own edge table (its cached ``facets``, ``t2f``), built faster, same arrays
+    mesh._facets, mesh._t2f = triangle_edges(mesh.t, mesh.p.shape[1])
+    basis = Basis(mesh, _element(element), quadrature=_DOF_QUADRATURE)
+    lam, mu_L = lame_parameters(material.E, material.nu, plane)
+    lam_e, mu_e = _coating_lame(geometry, material, plane, lam, mu_L)
+    return mesh, basis, lam, mu_L, lam_e, mu_e
+
+
+def mesh_body(geometry: BodyMesh, material: Material, *, plane: str = "strain",
+              element: str = "P2") -> Body:
+    """A body's mesh, basis and Lamé parameters without its stiffness and factor.
+
+    What the full-field recovery needs (:func:`stress_operator`, :func:`element_gradients`,
+    :func:`scalar_node_coordinates`, :func:`probe_matrix`) for displacements obtained
+    elsewhere (stored by :mod:`femcam.sweep.diskcache`), at a few per cent of the cost of
+    :func:`assemble_body`: the same mesh, basis and parameters as the body :func:`assemble_body`
+    builds from the same arguments, with ``K``, ``free`` and ``lu`` None (no :meth:`Body.solve`).
+
+    Parameters
+    ----------
+    geometry : femcam.mesh.BodyMesh
+        The meshed body [m].
+    material : femcam.materials.Material
+        Its material (a :class:`femcam.layers.CoatedMaterial` gives the coating band its own).
+    plane : {"strain", "stress"}, optional
+        Plane-elasticity assumption.
+    element : {"P1", "P2"}, optional
+        Triangle element.
+
+    Returns
+    -------
+    Body
+        The body without ``K``, ``free``, ``lu``, ``perm`` and ``last``.
+    """
+    mesh, basis, lam, mu_L, lam_e, mu_e = _discretise(geometry, material, plane, element)
+    return Body(name=geometry.name, geometry=geometry, material=material, plane=plane,
+                element=element, mesh=mesh, basis=basis, K=None, free=None, lu=None,
+                lam=float(lam), mu_L=float(mu_L), t_assembly=0.0, t_factor=0.0, lam_e=lam_e,
+                mu_e=mu_e)
 
 
 def _coating_lame(geometry: BodyMesh, material: Material, plane, lam, mu_L):

@@ -31,7 +31,7 @@ from .elasticity import element_gradients
 __all__ = ["zz_indicator"]
 
 
-def zz_indicator(body, u: np.ndarray) -> np.ndarray:
+def zz_indicator(body, u: np.ndarray, gradients: tuple | None = None) -> np.ndarray:
     """The recovery indicator ``eta`` at every scalar node of one body.
 
     Parameters
@@ -40,20 +40,22 @@ def zz_indicator(body, u: np.ndarray) -> np.ndarray:
         The assembled body.
     u : ndarray of float, shape (2, n)
         Nodal displacements ``(u_x, u_y)`` [m] (:meth:`femcam.fe.ContactModel.full_field`).
+    gradients : tuple, optional
+        ``element_gradients(body)`` (:func:`femcam.fe.elasticity.element_gradients`), when the
+        caller keeps it for several displacement fields of the body (a sweep's ``.vtu``
+        files); default computed here.
 
     Returns
     -------
     ndarray of float, shape (n,)
         ``eta`` [Pa] (0 where all elements around a node agree).
     """
-    dphi, sdofs, edofs, lam, mu, cnt = element_gradients(body)
+    dphi, sdofs, edofs, lam, mu, cnt = element_gradients(body) if gradients is None else gradients
     flat = np.empty(2 * u.shape[1])
     flat[0::2], flat[1::2] = u[0], u[1]
-    ux, uy = flat[edofs[0::2]], flat[edofs[1::2]]          # (nloc, nel)
-    dudx = np.einsum("jek,je->ke", dphi[:, 0], ux)
-    dudy = np.einsum("jek,je->ke", dphi[:, 1], ux)
-    dvdx = np.einsum("jek,je->ke", dphi[:, 0], uy)
-    dvdy = np.einsum("jek,je->ke", dphi[:, 1], uy)
+    uv = np.stack([flat[edofs[0::2]], flat[edofs[1::2]]])   # (2 [u, v], nloc, nel)
+    g = np.einsum("jiek,cje->cike", dphi, uv)               # g[c, i]: d(u_c)/dx_i, (nloc, nel)
+    (dudx, dudy), (dvdx, dvdy) = g
     s = np.stack([(lam + 2 * mu) * dudx + lam * dvdy,     # (3, nloc, nel) element stresses
                   lam * dudx + (lam + 2 * mu) * dvdy,
                   mu * (dudy + dvdx)])

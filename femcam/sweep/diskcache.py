@@ -10,8 +10,15 @@ What is stored (sizes and load/build times: docs/sweep.md and docs/performance.m
 * a family model without its factorised bodies (:func:`strip_model`): the meshes, the condensed
   compliances ``An, At, Ctt, Ctn``, the load operators and the stress operators of the window
   (loading one is about a hundred times faster than building it). A SuperLU factor cannot be
-  pickled; the bodies are assembled and factorised again from the stored meshes only when a
-  full field is asked for (a ``.vtu``, :class:`LazyBodies`), bit-identical to the original ones;
+  pickled: a loaded model's bodies (:class:`LazyBodies`) are made from the stored meshes, with
+  the mesh and basis only, and assembled and factorised again (bit-identical to the original
+  ones) only when a load that was not stored needs a back-solve;
+* the displacements of the full fields a sweep writes (its ``.vtu`` files): one entry per body
+  and load vector, keyed by the body (mesh, material, element, factor options) and the load
+  vector's bytes (:class:`StoredBody`, :func:`store_fields`; 67 KB per body of the study
+  model at ``--a-over-h 10``, 4.8 MB for the 36 files of README command 1). A run that writes
+  the same ``.vtu`` again reads them back and factorises no body: its fields are the cold
+  run's, bit for bit;
 * the p0 of each fresh check model (a float: the check models themselves are never reused).
 
 Key
@@ -58,7 +65,7 @@ import numpy as np
 
 from .. import _validate
 from ..fe import ContactModel
-from ..fe.elasticity import assemble_body
+from ..fe.elasticity import assemble_body, mesh_body
 
 #: environment variable naming the cache directory
 ENV_DIR = "FEMCAM_CACHE_DIR"
@@ -177,14 +184,160 @@ def content_key(kind: str, *parts) -> str:
     return hashlib.sha256(text.encode()).hexdigest()
 
 
+#: attributes of a :class:`~femcam.fe.elasticity.Body` that need its stiffness and factor (the
+#: others come from the mesh alone, :func:`~femcam.fe.elasticity.mesh_body`)
+_FACTORED = frozenset({"K", "free", "lu", "perm", "last", "t_assembly", "t_factor", "solve_apply",
+                       "schur_solve", "schur_inverse"})
+
+
+class StoredBody:
+    """One body of a model whose full-field displacements go through the disk cache.
+
+    A ``.vtu`` needs the displacements of both bodies under the solved contact loads, a
+    back-solve with the body's factor; a model loaded from the cache has no factor (a SuperLU
+    factor cannot be stored). :meth:`solve` of one load vector stores the displacements under
+    the key of the body and the load (:func:`content_key` of the mesh, material, plane,
+    element, factor options and the load vector's bytes), so a run of the same scene reads them
+    back and never assembles or factorises the body: the mesh, basis and Lamé parameters
+    (:func:`~femcam.fe.elasticity.mesh_body`) are all the stresses, the error indicator and the
+    coordinates of a ``.vtu`` need. Any other load, or any use of the factor (``K``, ``lu``,
+    :meth:`~femcam.fe.elasticity.Body.solve_apply`, ...), assembles and factorises the body
+    from the stored mesh once, bit-identical to the original (same code, same inputs).
+
+    Attribute access is forwarded to that body (the mesh-only one until the factor is needed).
+
+    Parameters
+    ----------
+    spec : tuple
+        ``(geometry, material, plane, element, ordering, contact_last)`` of
+        :func:`~femcam.fe.elasticity.assemble_body`.
+    body : femcam.fe.elasticity.Body, optional
+        The factorised body, when it exists already (a model built in this process).
+    disk : DiskCache, optional
+        Where the displacements are read and stored (None: never).
+    """
+
+    def __init__(self, spec: tuple, body=None, disk: DiskCache | None = None):
+        self._spec = spec
+        self._full = body
+        self._mesh_only = None
+        self._key = None
+        self._lock = threading.Lock()
+        self.disk = disk
+
+    @classmethod
+    def of(cls, body, ordering: str, contact_last: bool, disk: DiskCache | None = None) -> StoredBody:
+        """A factorised body whose displacements are stored.
+
+        Parameters
+        ----------
+        body : femcam.fe.elasticity.Body
+            The factorised body.
+        ordering : str
+            Its SuperLU ordering.
+        contact_last : bool
+            Its contact DOFs were ordered last.
+        disk : DiskCache, optional
+            Where its displacements are stored.
+
+        Returns
+        -------
+        StoredBody
+        """
+        spec = (body.geometry, body.material, body.plane, body.element, ordering, contact_last)
+        return cls(spec, body, disk)
+
+    def __getattr__(self, name):  # called only for names not set on the proxy itself
+        if name.startswith("__") or name in ("_spec", "_full", "_mesh_only", "_key", "_lock"):
+            raise AttributeError(name)
+        if self._full is None and name not in _FACTORED:
+            return getattr(self.mesh_only(), name)
+        return getattr(self.factorised(), name)
+
+    def __repr__(self) -> str:
+        return f"StoredBody({self._spec[0].name}, factorised={self._full is not None})"
+
+    def mesh_only(self):
+        """The body without its factor (built on first use).
+
+        Returns
+        -------
+        femcam.fe.elasticity.Body
+        """
+        if self._full is not None:
+            return self._full
+        with self._lock:
+            if self._mesh_only is None:
+                geometry, material, plane, element, _, _ = self._spec
+                self._mesh_only = mesh_body(geometry, material, plane=plane, element=element)
+            return self._mesh_only
+
+    def factorised(self):
+        """The assembled, factorised body (built from the stored mesh on first use).
+
+        Returns
+        -------
+        femcam.fe.elasticity.Body
+        """
+        with self._lock:
+            if self._full is None:
+                geometry, material, plane, element, ordering, contact_last = self._spec
+                self._full = assemble_body(geometry, material, plane=plane, element=element,
+                                           ordering=ordering, contact_last=contact_last)
+                self._mesh_only = None
+            return self._full
+
+    def _disp_key(self, f: np.ndarray) -> str | None:
+        if self._key is None:
+            try:
+                self._key = canonical(self._spec)
+            except TypeError:  # a part that cannot be keyed: never stored
+                self._key = ""
+        return content_key("body_displacement", self._key, f) if self._key else None
+
+    def solve(self, f) -> np.ndarray:
+        """Displacements for nodal forces ``f`` (:meth:`femcam.fe.elasticity.Body.solve`):
+        read from the disk cache for one stored load vector, else solved (and stored).
+
+        Parameters
+        ----------
+        f : ndarray of float, shape (n_dofs,) or (n_dofs, k)
+            Nodal forces [N per unit thickness].
+
+        Returns
+        -------
+        ndarray of float, same shape as ``f``
+            Nodal displacements [m].
+        """
+        f = np.asarray(f, dtype=float)
+        disk = self.disk
+        key = self._disp_key(f) if (f.ndim == 1 and disk is not None and disk.enabled) else None
+        if key is None:
+            return self.factorised().solve(f)
+        if self._full is None:
+            u = disk.get(key)
+            if isinstance(u, np.ndarray) and u.dtype == f.dtype and u.shape == f.shape:
+                return u
+        u = self.factorised().solve(f)
+        if not disk.has(key):
+            disk.put(key, u)
+        return u
+
+
 class LazyBodies(dict):
-    """The ``bodies`` of a model loaded from the cache: each body is assembled and factorised
-    again from the model's stored mesh on first use (a full field, a ``.vtu``).
+    """The ``bodies`` of a model loaded from the cache: a :class:`StoredBody` per body, made on
+    first use (mesh and basis; assembled and factorised again from the stored mesh only when
+    the factor is needed).
 
     Parameters
     ----------
     model : femcam.fe.ContactModel
         The loaded model (its ``mesh``, materials, plane, element and solver options).
+
+    Attributes
+    ----------
+    disk : DiskCache or None
+        Where the bodies' displacements are read and stored (:func:`store_fields`).
     """
 
     def __init__(self, model: ContactModel):
@@ -192,6 +345,7 @@ class LazyBodies(dict):
         self._spec = (model.mesh, {"cam": model.cam, "roller": model.roller}, model.plane,
                       model.element, model.options)
         self._lock = threading.Lock()
+        self.disk = None
 
     def __missing__(self, name: str):
         mesh, materials, plane, element, solver = self._spec
@@ -199,13 +353,41 @@ class LazyBodies(dict):
             raise KeyError(name)
         with self._lock:
             if name not in self:
-                self[name] = assemble_body(getattr(mesh, name), materials[name], plane=plane,
-                                           element=element, ordering=solver.ordering,
-                                           contact_last=solver.stress_operators == "per_solve")
+                self[name] = StoredBody((getattr(mesh, name), materials[name], plane, element,
+                                         solver.ordering, solver.stress_operators == "per_solve"),
+                                        disk=self.disk)
             return dict.__getitem__(self, name)
 
     def __reduce__(self):  # pickles as a plain empty dict (no SuperLU factors)
         return (dict, ())
+
+
+def store_fields(model: ContactModel, disk: DiskCache | None) -> None:
+    """Route the full-field back-solves of ``model`` (its ``.vtu`` files) through ``disk``
+    (:class:`StoredBody`): a model built here stores them, a model loaded from the cache
+    reads them. Idempotent; ``model.bodies`` is changed in place.
+
+    Parameters
+    ----------
+    model : femcam.fe.ContactModel
+        A family model.
+    disk : DiskCache or None
+        The sweep's cache (None or disabled: nothing changes).
+    """
+    if disk is None or not disk.enabled or not isinstance(model, ContactModel):
+        return
+    bodies = model.bodies
+    if isinstance(bodies, LazyBodies):
+        bodies.disk = disk
+        for b in bodies.values():
+            b.disk = disk
+        return
+    for name, b in list(bodies.items()):
+        if isinstance(b, StoredBody):
+            b.disk = disk
+        elif b is not None:
+            bodies[name] = StoredBody.of(b, model.options.ordering,
+                                         model.options.stress_operators == "per_solve", disk)
 
 
 def strip_model(model: ContactModel) -> ContactModel:

@@ -12,17 +12,18 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import FemcamError, InputError
-from ..hertz.conformity import shape_factors
+from ..hertz.conformity import roller_does_not_fit, shape_factors
 from ..io import atomic_write_text, vtu_name, write_csv, write_npz, write_pvd
 from ..scene import Scene
 from ..scene.origin import thaw
 from ..scene.override import with_overrides
 from ..viz.animate import animate_pvd
 from ..viz.process import PlotProcess, warn_missing
-from ..viz.sweep import plot_surface_sweep, plot_sweep, sweep_plot_calls
+from ..viz.sweep import named_plot, plot_surface_sweep, plot_svaj_loads, plot_sweep, sweep_plot_calls
 from .cache import default_cache
-from .extras import extra_columns, extras_files, plot_extras
+from .extras import extra_columns, extras_files, plot_extras, providers_for
 from .options import ResolvedOptions, contact_params
+from .pipeline import analytic_rows, contact_mask, line_contact
 from .profile import worst_surface_profile
 from .report import report_html
 from .result import SweepResult, plot_data_arrays, report_markdown
@@ -30,7 +31,8 @@ from .store import ChunkStore, DirLock
 from .table import COLUMNS, INTEGER_COLUMNS, NUMERIC, TEXT_COLUMNS
 from .wear import WearSetup
 
-__all__ = ["SweepRun", "check_vtus", "scene_hash", "scene_source", "with_plot_data", "write_outputs"]
+__all__ = ["SweepRun", "check_vtus", "early_plots", "scene_hash", "scene_source", "with_plot_data",
+           "write_outputs"]
 
 
 def scene_hash(scene, scene_path) -> str:
@@ -155,6 +157,9 @@ class SweepRun:
         The resolved settings and the source of each (argument, scene, default).
     plotter : femcam.viz.process.PlotProcess, optional
         The process drawing the plots (started with the sweep; None: drawn here).
+    early : dict
+        Plots sent to ``plotter`` before the chunk solves (:func:`early_plots`): name -> (the
+        columns drawn, the lane).
     """
 
     scene: Scene
@@ -188,6 +193,7 @@ class SweepRun:
     disk: object = None
     settings: object = None
     plotter: object = None
+    early: dict = field(default_factory=dict)
 
 
 
@@ -195,6 +201,81 @@ class SweepRun:
 #: share the plots between the plot process's two lanes (:class:`PlotProcess`)
 PLOT_CPU_S = {"plot_p0": 0.17, "plot_maxima": 0.15, "plot_svaj": 0.38, "plot_wear": 0.20,
               "plot_junction": 0.20, "plot_surface": 0.23}
+
+
+#: the order of the sweep's plots in ``SweepResult.paths`` and the report (that of
+#: :func:`femcam.viz.sweep.plot_sweep`); the extra providers' plots follow
+PLOT_ORDER = ("plot_p0", "plot_maxima", "plot_svaj", "plot_wear", "plot_junction", "plot_surface")
+#: the table columns ``svaj_loads.png`` draws (all known after the analytic chain)
+SVAJ_COLUMNS = ("theta", "s", "v", "a", "j", "phi", "rho", "Fc", "p0_hertz")
+
+
+def svaj_columns(scene, theta) -> dict:
+    """The columns of ``svaj_loads.png`` for the angles ``theta`` (rad), as the chunks fill them
+    (:func:`femcam.sweep.pipeline.analytic_rows`; Hertz ``p0`` of the rows in contact where the
+    roller fits, 0 at lift-off, NaN otherwise).
+
+    Parameters
+    ----------
+    scene : femcam.scene.Scene
+        The scene swept.
+    theta : ndarray of float, shape (n,)
+        Cam angles [rad].
+
+    Returns
+    -------
+    dict of str to ndarray, shape (n,)
+        :data:`SVAJ_COLUMNS` (SI).
+    """
+    rows, st = analytic_rows(scene, theta)
+    cp = contact_params(scene)
+    contact = contact_mask(st)
+    good = np.flatnonzero(contact & ~roller_does_not_fit(rows.rho, cp.Rr))
+    if good.size:
+        rows.p0_hertz[good] = line_contact(cp, rows.Fc[good], rows.rho[good]).p0
+    rows.p0_hertz[~contact] = 0.0
+    return {c: np.array(getattr(rows, c), dtype=float) for c in SVAJ_COLUMNS}
+
+
+def early_plots(run: SweepRun) -> None:
+    """Send ``svaj_loads.png`` (kinematics, geometry, load and Hertz p0: the analytic chain's
+    columns) to the plot process before the chunk solves, so that the plot process, otherwise
+    idle until the table is complete, draws it on the core the serial solves leave free.
+    :func:`with_plot_data` checks the finished table's columns against those drawn and has the
+    plot drawn again from the table when any value differs (e.g. a follower whose rows the
+    chunks fill otherwise).
+
+    Parameters
+    ----------
+    run : SweepRun
+        The sweep (``plotter`` and ``out`` set; else nothing is sent).
+    """
+    if run.plotter is None or run.out is None or run.scene.follower.flat_face:
+        return
+    cols = svaj_columns(run.scene, run.angles)
+    # weight 0: drawn long before the table is complete, it must not steer the later plots
+    # away from its lane
+    lane = run.plotter.submit(named_plot, "plot_svaj", plot_svaj_loads, _Columns(cols),
+                              run.out / "plots" / "svaj_loads.png", weight=0.0)
+    run.early["plot_svaj"] = (cols, lane)
+
+
+@dataclass(frozen=True)
+class _Columns:
+    """What a plot function of :mod:`femcam.viz.sweep` reads of a result drawn early: its table."""
+
+    table: dict
+
+
+def _drawn_early(run: SweepRun, name: str, table):
+    """The lane of plot ``name`` sent by :func:`early_plots` and whether the columns it drew equal
+    ``table``'s (bit for bit, NaN in the same places); ``(None, False)`` if not sent early."""
+    if name not in run.early:
+        return None, False
+    cols, lane = run.early[name]
+    same = all(np.array_equal(np.asarray(table[c], dtype=float), v, equal_nan=True)
+               for c, v in cols.items())
+    return lane, same
 
 
 def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None,
@@ -255,7 +336,9 @@ def write_outputs(result: SweepResult, run: SweepRun, plots: bool, src_path=None
         drawn, error = child.collect()
         if ": ImportError: " in error:  # pragma: no cover - matplotlib missing
             raise InputError(f"plots = True: {error.split(': ', 2)[-1]}")
-        paths.update(drawn)
+        # in the order plot_sweep draws them (the report lists them so), whatever was sent first
+        paths.update(sorted(drawn.items(), key=lambda kv: PLOT_ORDER.index(kv[0])
+                            if kv[0] in PLOT_ORDER else len(PLOT_ORDER)))
         if error:
             warn_missing(error, out)
     elif plots:
@@ -324,7 +407,9 @@ def with_plot_data(result: SweepResult, run: SweepRun, child: PlotProcess | None
     result = replace(result, hertz_factors=shape_factors(cp.mu, cp.cam.nu, cp.plane))
     if child is not None:
         for function, args in sweep_plot_calls(replace(result, surface_profile=None), run.out):
-            child.submit(function, *args, weight=PLOT_CPU_S.get(str(args[0]), 0.2))
+            lane, same = _drawn_early(run, args[0], result.table)
+            if not same:  # not drawn early, or from other numbers: (again) from the table
+                child.submit(function, *args, weight=PLOT_CPU_S.get(str(args[0]), 0.2), lane=lane)
     profile = None
     if np.any(result.ok):
         fe = "hertz" if (result.method == "hertz" or run.scene.follower.flat_face) else "fe"
@@ -334,5 +419,6 @@ def with_plot_data(result: SweepResult, run: SweepRun, child: PlotProcess | None
     if child is not None:
         if profile is not None and "x_hertz" in profile:
             child.submit(plot_surface_sweep, profile, run.out, weight=PLOT_CPU_S["plot_surface"])
-        child.submit(plot_extras, run.scene, result.table, run.out, weight=0.2)
+        if any(p.panels for p in providers_for(run.scene)):
+            child.submit(plot_extras, run.scene, result.table, run.out, weight=0.2)
     return result

@@ -49,7 +49,7 @@ from ..io import vtu_name, write_fe_vtu, write_hertz_vtu
 from ..wear.slip import SlipResult
 from .cache import ModelCache, default_cache
 from .chunk import ChunkRows
-from .diskcache import attach
+from .diskcache import attach, store_fields
 from .estimate import fill_row_estimate
 from .extras import fill_extras
 from .headline import COATED, omitted_physics
@@ -401,7 +401,10 @@ def _write_vtus(task: ChunkTask, cp: ContactParams, rows, vtk_fe: dict) -> None:
     answered (method hertz, and method auto's Hertz rows), so the series is complete."""
     if task.vtk_dir is None or task.vtk_mask is None:
         return
+    disk = default_cache().disk
     for i, r in vtk_fe.items():
+        if r.model is not None:  # the back-solves of the fields: stored, or read back (warm)
+            store_fields(r.model, disk)
         write_fe_vtu(Path(task.vtk_dir) / vtu_name(task.theta[i]), r, wear=_vtu_wear(task, rows, i))
     analytic = (rows.status == "ok") & np.isin(rows.model, ("hertz", "hertz+ring"))
     if task.options.method == "hertz":

@@ -28,7 +28,7 @@ from .diskcache import DiskCache, usage
 from .estimate import estimate_run, prefetch_estimate
 from .extras import extras_provenance
 from .options import ResolvedOptions, RunOptions, SweepOptions, contact_params
-from .outputs import SweepRun, scene_hash, scene_source, write_outputs
+from .outputs import SweepRun, early_plots, scene_hash, scene_source, write_outputs
 from .parallel import AUTO_VTU_S, _cpu_count, auto_workers, run_tasks
 from .pipeline import ChunkTask, contact_mask, run_chunk
 from .realcam import auto_hertz_rows, contact_scene, jump_angles, real_cam_summary, scene_traction
@@ -158,6 +158,9 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
         _plan(run)
         estimate_run(run, default_cache())
     t_verify = time.perf_counter() - t0
+    # svaj_loads.png: drawn by the plot process during the chunk solves (after the family
+    # phase, whose background builds use the second core on a cold run)
+    early_plots(run)
     tasks, task_chunk = _tasks(run)
     workers, workers_note = _choose_workers(run, tasks, task_chunk, scheduler, client)
     t0 = time.perf_counter()

@@ -20,10 +20,13 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+import queue
 import signal
 import sys
+import threading
 import time
 import warnings
+from multiprocessing.reduction import ForkingPickler
 
 from ._mpl import pyplot
 
@@ -78,9 +81,19 @@ class PlotProcess:
             theirs.close()
         self._jobs = []   # lane of each call, in the order submitted
         self._load = [0.0] * lanes
+        # one sender thread per lane: a call's arguments (the sweep table, ~0.3 MB pickled) do
+        # not fit in a pipe's buffer, so a send waits until the lane has drawn its earlier
+        # calls; the threads wait instead, and the sweep writes its tables meanwhile
+        self._queues = [queue.SimpleQueue() for _ in range(lanes)]
+        self._senders = [threading.Thread(target=_feed, args=(conn, q), daemon=True,
+                                          name="femcam-plots-send")
+                         for conn, q in zip(self._conns, self._queues, strict=True)]
+        for t in self._senders:
+            t.start()
 
-    def submit(self, function, *args, weight: float = 1.0) -> None:
-        """Have a lane call ``function(*args)`` (a module-level plot function).
+    def submit(self, function, *args, weight: float = 1.0, lane: int | None = None) -> int:
+        """Have a lane call ``function(*args)`` (a module-level plot function); returns at once
+        (the arguments are pickled here and sent by the lane's sender thread).
 
         Parameters
         ----------
@@ -91,14 +104,21 @@ class PlotProcess:
         weight : float
             Its expected cost relative to the others (e.g. its number of axes): the call goes
             to the lane with the least queued weight.
+        lane : int, optional
+            The lane instead (e.g. the one that drew an earlier version of the same file: a
+            lane calls in the order sent, so the later version is written last).
+
+        Returns
+        -------
+        int
+            The lane that draws it.
         """
-        lane = min(range(len(self._load)), key=self._load.__getitem__)
+        if lane is None:
+            lane = min(range(len(self._load)), key=self._load.__getitem__)
         self._load[lane] += weight
-        try:
-            self._conns[lane].send((function, args))
-            self._jobs.append(lane)
-        except (OSError, ValueError):  # the lane is gone: collect() says so
-            self._jobs.append(lane)
+        self._jobs.append(lane)
+        self._queues[lane].put(ForkingPickler.dumps((function, args)))
+        return lane
 
     def collect(self, timeout_s: float = WAIT_S) -> tuple[dict, str]:
         """Wait for the answers to every :meth:`submit` and end the lanes.
@@ -148,13 +168,31 @@ class PlotProcess:
         return self._proc.exitcode
 
     def close(self) -> None:
-        """End the lanes (idempotent): close the pipes, which the lanes read as the end."""
+        """End the lanes (idempotent): stop the sender threads, close the pipes, which the
+        lanes read as the end."""
+        for q in self._queues:
+            q.put(None)
+        for t in self._senders:
+            t.join(2.0)
         for conn in self._conns:
             conn.close()
         self._proc.join(2.0)
         if self._proc.is_alive():  # pragma: no cover - a stuck child
             self._proc.kill()
             self._proc.join()
+
+
+def _feed(conn, q) -> None:
+    """A lane's sender thread: send each pickled call of ``q`` until the None that ends it; a
+    lane that is gone ends the sending (its :meth:`PlotProcess.collect` says so)."""
+    while True:
+        data = q.get()
+        if data is None:
+            return
+        try:
+            conn.send_bytes(data)
+        except (OSError, ValueError):  # the lane ended (or the pipe was closed)
+            return
 
 
 def _serve(conns, parent_ends) -> None:
