@@ -197,9 +197,10 @@ class Background:
         if pool is not None:
             pool.shutdown(wait=True)
 
-    def submit(self, key, fn) -> None:
+    def submit(self, key, fn, priority: int = 0) -> None:
         """Queue ``fn()`` under ``key`` (hashable) unless it is queued already or there are no
-        threads."""
+        threads. Jobs start in the order submitted (``priority`` is accepted for the interface
+        of :class:`femcam.sweep.lane.ForkLane`, which orders by it)."""
         with self._lock:
             if self._pool is not None and key not in self._jobs:
                 self._jobs[key] = (self._pool.submit(fn), fn)

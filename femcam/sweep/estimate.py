@@ -41,6 +41,7 @@ below 0.002 % for p0 and a but +1.1 % for tau1 max (docs/estimate.md).
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -294,20 +295,26 @@ def _coarse_job(cp, rho_ref, a_ref, options, mesh2, F, cache) -> tuple:
     disk = getattr(cache, "disk", None)
     load = (F, cp.mu, cp.sliding, mesh2.a_over_h, mesh2.fine_half_width)
     dk = _disk_key("estimate_coarse", cp, rho_ref, a_ref, options, solver, load) if disk is not None else None
-
-    def job() -> dict:
-        qH = disk.get(dk) if dk is not None else None
-        if isinstance(qH, dict) and set(qH) == set(estimated(cp)) and all(map(math.isfinite, qH.values())):
-            return qH
-        coarse_model = build_model(cp, rho_ref, a_ref, options, solver, mesh=mesh2)
-        rH = coarse_model.solve(F=F, rho=rho_ref, mu=cp.mu, sliding=cp.sliding, check=False)
-        qH = {**_quantities(rH), **layer_quantities(rH, cp)}
-        if dk is not None and all(map(math.isfinite, qH.values())):
-            disk.put(dk, {k: float(v) for k, v in qH.items()})
-        return qH
-
+    # a partial of a module-level function: it pickles, so the sweep's helper process
+    # (femcam.sweep.lane.ForkLane) can build it
+    job = functools.partial(_coarse_level, cp, rho_ref, a_ref, options, solver, mesh2, F,
+                            disk if dk is not None else None, dk)
     job.disk_key = dk
     return ("estimate_coarse", _key(cp, rho_ref, a_ref, options), load), job
+
+
+def _coarse_level(cp, rho_ref, a_ref, options, solver, mesh2, F, disk, dk) -> dict:
+    """The coarse level's quantities (:func:`_coarse_job`): loaded from ``disk`` under ``dk``, or
+    built, solved and stored."""
+    qH = disk.get(dk) if dk is not None else None
+    if isinstance(qH, dict) and set(qH) == set(estimated(cp)) and all(map(math.isfinite, qH.values())):
+        return qH
+    coarse_model = build_model(cp, rho_ref, a_ref, options, solver, mesh=mesh2)
+    rH = coarse_model.solve(F=F, rho=rho_ref, mu=cp.mu, sliding=cp.sliding, check=False)
+    qH = {**_quantities(rH), **layer_quantities(rH, cp)}
+    if dk is not None and all(map(math.isfinite, qH.values())):
+        disk.put(dk, {k: float(v) for k, v in qH.items()})
+    return qH
 
 
 def prefetch_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: ResolvedOptions,
@@ -337,7 +344,7 @@ def prefetch_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: 
     except (FemcamError, ValueError, ArithmeticError):
         return   # family_estimate says NaN for it
     key, job = _coarse_job(cp, rho_ref, a_ref, options, mesh2, F, cache)
-    cache.submit_build(key, job, job.disk_key)
+    cache.submit_build(key, job, job.disk_key, priority=1)  # wanted after the verification
 
 
 def row_estimate(est: FamilyEstimate, a_row: float, a_model: float | None = None) -> dict:

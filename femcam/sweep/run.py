@@ -293,9 +293,10 @@ def _plan(run: SweepRun) -> None:
     if not run.preplanned:
         cache = default_cache()
         # the models of the families, their fresh checks and their coarse estimate models are
-        # independent builds: a background thread builds ahead on a second core (--workers 1:
-        # none, everything in this thread), same rows (docs/performance.md)
-        with cache.building_in_background(_background_threads(run)):
+        # independent builds: a forked helper process (a background thread where fork is not
+        # available) builds ahead on a second core (--workers 1: none, everything in this
+        # process and thread), same rows (docs/performance.md)
+        with cache.building_in_background(_background_threads(run), process=True):
             run.family, _, run.records = verify_families(
                 run.rows0["Fc"], run.rows0["rho"], run.angles, cp, run.opts, fit, cache=cache,
                 traction=run.traction, prefetch=lambda r, a: prefetch_estimate(cp, r, a, run.opts, cache))
