@@ -59,7 +59,7 @@ def fork_available() -> bool:
     return sys.platform.startswith("linux") and "fork" in multiprocessing.get_all_start_methods()
 
 
-class _Lost(Exception):
+class _LostError(Exception):
     """The lane could not compute a job (child gone, a job or result that does not pickle, a
     job that failed there): the caller computes it."""
 
@@ -179,7 +179,7 @@ class ForkLane:
             pass
         try:
             value = fut.result()
-        except _Lost:
+        except _LostError:
             return fn()
         if entry[2] == "local":
             return value
@@ -215,13 +215,13 @@ class ForkLane:
                 self._jobs_w.send_bytes(pickle.dumps(entry[0], protocol=5))
                 ok, value = pickle.loads(self._results_r.recv_bytes())
             except Exception:  # noqa: BLE001 - the child is gone (EOF, broken pipe) or closed
-                entry[1].set_exception(_Lost())
+                entry[1].set_exception(_LostError())
                 self._lost()
                 return
             if ok:
                 entry[1].set_result(value)
             else:
-                entry[1].set_exception(_Lost())
+                entry[1].set_exception(_LostError())
 
     def _lost(self) -> None:
         """The child is gone: no more jobs for it; queued ones stay for their takers."""
@@ -247,7 +247,7 @@ class ForkLane:
             self.threads = 0
             for entry in self._queue.values():
                 if entry[2] == "queued":
-                    entry[1].set_exception(_Lost())
+                    entry[1].set_exception(_LostError())
                 kill = kill or entry[2] == "sent"
             self._queue = {}
             self._cond.notify_all()
