@@ -42,8 +42,9 @@ class ModelCache:
     Thread-safe: Dask runs tasks in worker threads of one process; every change of the tables
     holds one lock, the builds of :meth:`model_for` another (a key is built once), and gmsh
     (not thread-safe) is used under :data:`femcam.mesh.GMSH_LOCK`. Builds may run ahead in a
-    background thread (:meth:`building_in_background`, :meth:`prefetch_model`,
-    :meth:`prefetch_fresh`): the sweep's family phase uses both cores that way.
+    forked helper process or a background thread (:meth:`building_in_background`,
+    :meth:`prefetch_model`, :meth:`prefetch_fresh`): the sweep's family phase uses both cores
+    that way.
 
     Parameters
     ----------
@@ -164,7 +165,7 @@ class ModelCache:
     def prefetch_model(self, cp: ContactParams, rho_ref: float, a_ref: float,
                        options: ResolvedOptions, scan=None) -> None:
         """Start building (or loading) the model :meth:`model_for` will be asked for, in the
-        background thread of :meth:`building_in_background` (nothing outside it).
+        helper process or thread of :meth:`building_in_background` (nothing outside it).
 
         Parameters
         ----------

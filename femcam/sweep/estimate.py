@@ -319,8 +319,8 @@ def _coarse_level(cp, rho_ref, a_ref, options, solver, mesh2, F, disk, dk) -> di
 
 def prefetch_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: ResolvedOptions,
                       cache: ModelCache | None = None) -> None:
-    """Start the coarse level of :func:`family_estimate` (same arguments) in the background
-    thread of ``cache`` (:meth:`~femcam.sweep.cache.ModelCache.building_in_background`;
+    """Start the coarse level of :func:`family_estimate` (same arguments) in the helper process
+    or thread of ``cache`` (:meth:`~femcam.sweep.cache.ModelCache.building_in_background`;
     nothing outside it): the sweep's family phase builds it while the family models are built
     and scanned.
 
@@ -333,7 +333,7 @@ def prefetch_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: 
     options : ResolvedOptions
         ``a_over_h`` of the family model (below 4: no estimate, nothing started).
     cache : ModelCache, optional
-        Its background thread (default: the process's cache).
+        Its helper process or thread (default: the process's cache).
     """
     cache = cache or default_cache()
     if options.a_over_h < 4.0 or not cache.background.threads:

@@ -308,10 +308,11 @@ def _plan(run: SweepRun) -> None:
 
 
 def _background_threads(run: SweepRun) -> int:
-    """Background build threads of the family phase: 1 with two or more usable cores, unless
-    the sweep was asked to stay in one process and thread (``workers=1``); with ``"auto"`` only
-    while a core is idle (1-minute load average below cores - 0.5): on busy cores the two
-    threads only take turns, at ~5-10 % more CPU (docs/performance.md)."""
+    """Helpers of the family phase (a forked process, or a thread without fork): 1 with two or
+    more usable cores, unless the sweep was asked to stay in one process and thread
+    (``workers=1``); with ``"auto"`` only while a core is idle (1-minute load average below
+    cores - 0.5): on busy cores the two would only take turns, and the helper's overhead would
+    be paid for nothing (docs/performance.md)."""
     cores = _cpu_count()
     if run.workers == 1 or cores < 2:
         return 0

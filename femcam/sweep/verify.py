@@ -243,8 +243,9 @@ def verify_families(F, rho, theta, cp: ContactParams, options: ResolvedOptions,
     :func:`default_cache`; forked workers inherit it). The groups are verified in waves (the
     initial groups, then the halves of those that failed): each wave's models are built, scanned
     and their first candidates' fresh checks started before any verdict, so that with the
-    cache's background thread on (:meth:`ModelCache.building_in_background`) the builds of
-    one wave run on both cores; the records do not depend on it.
+    cache's helper process or thread on (:meth:`ModelCache.building_in_background`) the builds
+    of one wave run on both cores (a helper process also solves the scans of the models it
+    builds); the records do not depend on it.
 
     Parameters
     ----------
