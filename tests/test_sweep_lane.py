@@ -65,8 +65,9 @@ def _wait_sent_and_done(lane, key, timeout=30.0):
 
 def test_child_computes_a_job_and_the_caller_gets_its_result():
     with ForkLane() as lane:
-        assert lane.pid in _children()
+        assert lane.pid is None and lane.threads == 1   # forked on the first job only
         lane.submit("pid", functools.partial(os.getpid))
+        assert lane.pid in _children()
         _wait_sent_and_done(lane, "pid")
         assert lane.take("pid", os.getpid) == lane.pid != os.getpid()
         # never queued, or not picklable (a closure): computed here
@@ -144,11 +145,20 @@ def test_ctrl_c_in_the_parent_ends_the_child():
 
 def test_the_child_ignores_sigint():
     with ForkLane() as lane:
-        time.sleep(0.2)  # the child has set its handlers
+        lane.submit("first", functools.partial(os.getpid))
+        _wait_sent_and_done(lane, "first")  # the child has set its handlers
         os.kill(lane.pid, signal.SIGINT)
         lane.submit("pid", functools.partial(os.getpid))
         _wait_sent_and_done(lane, "pid")
         assert lane.take("pid", os.getpid) == lane.pid
+
+
+def test_a_lane_without_jobs_forks_nothing():
+    before = set(_children())
+    with ForkLane() as lane:
+        assert lane.take("x", lambda: 1) == 1
+        lane.submit("closure", lambda: 2)   # not picklable: not a reason to fork
+    assert lane.pid is None and set(_children()) <= before
 
 
 def test_no_orphan_when_the_parent_is_killed(tmp_path):
@@ -173,6 +183,18 @@ def test_no_orphan_when_the_parent_is_killed(tmp_path):
     while _alive(child) and time.monotonic() < end:
         time.sleep(0.05)
     assert not _alive(child), "the helper process outlived its killed parent"
+
+
+def test_no_helper_process_from_a_worker_thread():
+    """A sweep run in a worker thread (Dask, a threaded study) does not fork: another thread
+    might hold a lock the child needs."""
+    import threading
+
+    seen = []
+    t = threading.Thread(target=lambda: seen.append(fork_available()))
+    t.start()
+    t.join()
+    assert seen == [False] and fork_available()
 
 
 def test_without_fork_the_family_phase_uses_a_thread(monkeypatch):

@@ -244,10 +244,7 @@ class ModelCache:
             return
         lane = None
         if process and fork_available():
-            try:
-                lane = ForkLane()
-            except OSError:  # no process could be started (limits): threads, as without fork
-                lane = None
+            lane = ForkLane(prepare=_build_imports)
         with ExitStack() as kept:
             bg = kept.enter_context(lane if lane is not None else Background(threads))
             old, self.background = self.background, bg
@@ -496,6 +493,12 @@ class _ModelJob:
 
 def _now(fn) -> None:
     fn()
+
+
+def _build_imports() -> None:
+    """Import what a model build imports lazily, before a helper process is forked (it then
+    inherits it instead of importing it again)."""
+    import skfem  # noqa: F401 - lazy: scikit-fem stays out of ``import femcam.sweep`` (tests/test_imports.py)
 
 
 def _case_key(F, rho, mu, sliding, Q, rolling) -> tuple:

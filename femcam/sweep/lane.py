@@ -49,14 +49,20 @@ END_WAIT_S = 5.0
 
 
 def fork_available() -> bool:
-    """Whether a :class:`ForkLane` can be started here (Linux with the ``fork`` start method).
+    """Whether a :class:`ForkLane` can be started here and now: Linux with the ``fork`` start
+    method, called from the main thread of a process that may have children.
 
     Returns
     -------
     bool
-        False elsewhere (macOS's and Windows' default ``spawn`` would import everything again).
+        False elsewhere: macOS's and Windows' default ``spawn`` would import everything again;
+        a sweep run in a worker thread (Dask, a threaded study) might fork while another thread
+        holds a lock the child needs (gmsh's, BLAS's); a daemonic process (a
+        :mod:`multiprocessing` pool's worker) may not start one.
     """
-    return sys.platform.startswith("linux") and "fork" in multiprocessing.get_all_start_methods()
+    return (sys.platform.startswith("linux") and "fork" in multiprocessing.get_all_start_methods()
+            and threading.current_thread() is threading.main_thread()
+            and not multiprocessing.current_process().daemon)
 
 
 class _LostError(Exception):
@@ -67,16 +73,22 @@ class _LostError(Exception):
 class ForkLane:
     """One forked child computing queued jobs (module docstring), taken back by key.
 
-    Use as a context manager, started in the main thread with no other thread building (the
-    child keeps only the forking thread).
+    Use as a context manager, in the main thread with no other thread building (the child
+    keeps only the forking thread). The child is forked when the first job is submitted (a run
+    whose models all come from the persistent cache forks none).
+
+    Parameters
+    ----------
+    prepare : callable, optional
+        Called once before the fork (e.g. the imports the jobs need: done once, here).
 
     Attributes
     ----------
     threads : int
-        1 while the child serves jobs (the "background capacity" :class:`ModelCache` reads), 0
-        once it is gone.
+        1 while the child serves jobs or can be started (the "background capacity"
+        :class:`ModelCache` reads), 0 once it is gone or could not be started.
     pid : int or None
-        The child's process id.
+        The child's process id (None before the first job).
 
     >>> import functools, operator
     >>> with ForkLane() as lane:                       # doctest: +SKIP
@@ -85,25 +97,41 @@ class ForkLane:
     4
     """
 
-    def __init__(self):
+    def __init__(self, prepare=None):
+        self._prepare = prepare
+        self._proc = None          # forked on the first job submitted (a warm run forks none)
+        self.pid = None
+        self.threads = 1
+        self._cond = threading.Condition()
+        self._queue: dict = {}     # key -> [fn, Future, state, priority]; state "queued",
+        self._closed = False       # "sent" (to the child) or "local" (computed here)
+        self._deferred = None
+
+    def _start(self) -> bool:
+        """Fork the child (once; ``prepare()`` first, e.g. imports the jobs need, so that the
+        child does not repeat them); False when it cannot be started."""
+        if self._proc is not None:
+            return True
+        if self._prepare is not None:
+            self._prepare()
         ctx = multiprocessing.get_context("fork")
-        jobs_r, self._jobs_w = ctx.Pipe(duplex=False)
-        self._results_r, results_w = ctx.Pipe(duplex=False)
-        self._proc = ctx.Process(target=_serve, args=(jobs_r, results_w, self._jobs_w,
-                                                      self._results_r, os.getpid()),
-                                 daemon=True, name="femcam-lane")
-        self._proc.start()
+        try:
+            jobs_r, self._jobs_w = ctx.Pipe(duplex=False)
+            self._results_r, results_w = ctx.Pipe(duplex=False)
+            self._proc = ctx.Process(target=_serve, args=(jobs_r, results_w, self._jobs_w,
+                                                          self._results_r, os.getpid()),
+                                     daemon=True, name="femcam-lane")
+            self._proc.start()
+        except OSError:  # no process could be started (limits): the caller computes everything
+            self._proc, self.threads = None, 0
+            return False
         jobs_r.close()
         results_w.close()
         self.pid = self._proc.pid
-        self.threads = 1
-        self._cond = threading.Condition()
-        self._queue: dict = {}     # key -> [fn, Future, state]: "queued", "sent", "local"
-        self._closed = False
-        self._deferred = ThreadPoolExecutor(1, thread_name_prefix="femcam-lane-defer")
         self._dispatcher = threading.Thread(target=self._dispatch, daemon=True,
                                             name="femcam-lane-dispatch")
         self._dispatcher.start()
+        return True
 
     def __enter__(self):
         return self
@@ -129,6 +157,8 @@ class ForkLane:
             pickle.dumps(fn, protocol=5)
         except Exception:  # noqa: BLE001 - a closure: computed where it is taken
             return
+        if not self.threads or self._closed or not self._start():
+            return
         with self._cond:
             if self.threads and not self._closed and key not in self._queue:
                 self._queue[key] = [fn, Future(), "queued", int(priority)]
@@ -150,6 +180,8 @@ class ForkLane:
         """
         with self._cond:
             if not self._closed:
+                if self._deferred is None:
+                    self._deferred = ThreadPoolExecutor(1, thread_name_prefix="femcam-lane-defer")
                 self._deferred.submit(fn)
                 return
         fn()
@@ -251,16 +283,18 @@ class ForkLane:
                 kill = kill or entry[2] == "sent"
             self._queue = {}
             self._cond.notify_all()
-        if kill:
-            self._proc.kill()
-        self._jobs_w.close()   # the child reads the end of its jobs
-        self._proc.join(END_WAIT_S)
-        if self._proc.is_alive():  # pragma: no cover - a job far longer than expected
-            self._proc.kill()
-            self._proc.join()
-        self._dispatcher.join()
-        self._results_r.close()
-        self._deferred.shutdown(wait=True)
+        if self._proc is not None:
+            if kill:
+                self._proc.kill()
+            self._jobs_w.close()   # the child reads the end of its jobs
+            self._proc.join(END_WAIT_S)
+            if self._proc.is_alive():  # pragma: no cover - a job far longer than expected
+                self._proc.kill()
+                self._proc.join()
+            self._dispatcher.join()
+            self._results_r.close()
+        if self._deferred is not None:
+            self._deferred.shutdown(wait=True)
 
 
 def _serve(jobs, results, parent_jobs, parent_results, parent_pid: int) -> None:
