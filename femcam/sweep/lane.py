@@ -24,9 +24,9 @@ do not depend on which process built what.
 Faults: a child that cannot be started, dies (killed, out of memory) or fails a job costs only
 time: the jobs it had are computed again in the parent, and the lane takes no more. The child
 ignores Ctrl-C (the parent's to handle: it ends the child), ends when the parent's pipe closes
-or the parent is gone (:func:`femcam.sweep.parallel._exit_with_parent`), and is ended and reaped
+or the parent is gone (:func:`_exit_with_parent`), and is ended and reaped
 by :meth:`ForkLane.close`: no orphan, no zombie. Where ``fork`` is not available, there is no
-lane (:func:`fork_available`) and the sweep builds in a background thread as before.
+lane (:func:`fork_available`) and the sweep builds in a background thread instead.
 """
 
 from __future__ import annotations
@@ -37,10 +37,10 @@ import pickle
 import signal
 import sys
 import threading
+import time
 from concurrent.futures import Future, ThreadPoolExecutor
 
 from .._threads import limit_blas_threads
-from .parallel import _exit_with_parent
 
 __all__ = ["ForkLane", "fork_available"]
 
@@ -295,6 +295,20 @@ class ForkLane:
             self._results_r.close()
         if self._deferred is not None:
             self._deferred.shutdown(wait=True)
+
+
+def _exit_with_parent(parent_pid: int, period: float = 0.5) -> None:
+    """End this process (a pool worker, or a :class:`ForkLane`'s child) when the sweep process
+    that started it is gone.
+
+    A pool worker blocks on its task queue, whose pipe it holds open itself, so it never sees
+    an EOF when the parent is killed (SIGKILL, OOM killer, a closed terminal): without this
+    watch it would stay orphaned for ever, holding memory and the parent's stdout. The chunks it
+    finished are already on disk (atomic writes), and ``--resume`` recomputes the rest."""
+    while True:
+        time.sleep(period)
+        if os.getppid() != parent_pid:
+            os._exit(1)
 
 
 def _serve(jobs, results, parent_jobs, parent_results, parent_pid: int) -> None:
