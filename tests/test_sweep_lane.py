@@ -255,3 +255,27 @@ def test_a_sweep_whose_helper_dies_at_once_gives_the_same_rows(monkeypatch, one_
               RunOptions(workers="auto", model_cache=False))
     _same_sweeps(one_process, r)
     assert set(_children()) <= before
+
+
+def test_what_the_helper_builds_is_stored_by_this_process(monkeypatch, tmp_path):
+    """A cold sweep with the helper process fills the persistent cache (the helper writes
+    nothing: this process stores what it receives), so that a warm sweep builds nothing."""
+    from femcam.sweep import run as run_module
+
+    th = np.radians([30.0, 60.0, 90.0, 120.0, 200.0, 250.0])
+    opts = SweepOptions(angles=th, a_over_h=4)
+    run = RunOptions(cache_dir=tmp_path / "c", workers="auto")
+    with monkeypatch.context() as mp:
+        mp.setattr(run_module, "_background_threads", lambda run: 1)
+        default_cache().clear()
+        cold = sweep(STUDY, opts, run)
+    default_cache().clear()
+    warm = sweep(STUDY, opts, RunOptions(cache_dir=tmp_path / "c", workers=1))
+    mc = [r.provenance["options"]["model_cache"] for r in (cold, warm)]
+    assert mc[0]["built"] >= 1 and mc[1]["built"] == 0 and mc[1]["loaded"] == mc[0]["built"]
+    assert mc[1]["checks_built"] == 0 and mc[1]["checks_loaded"] == mc[0]["checks_built"]
+    assert warm.provenance["estimates"] == cold.provenance["estimates"]
+    for k in cold.table:
+        if k not in WALL_CLOCK:
+            x, y = np.asarray(cold.table[k]), np.asarray(warm.table[k])
+            assert np.array_equal(x, y, equal_nan=x.dtype.kind == "f"), k

@@ -89,9 +89,10 @@ def test_background_builds_equal_one_thread(monkeypatch, helper):
         pytest.skip("no fork on this platform")
     else:
         class Counted(cache_module.ForkLane):
-            def __init__(self):
-                super().__init__()
-                started.append(self.pid)
+            def _start(self):
+                if self._proc is None:
+                    started.append(1)
+                return super()._start()
 
         monkeypatch.setattr(cache_module, "ForkLane", Counted)
     th = parse_angles_deg("0:360:15")

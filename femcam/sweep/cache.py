@@ -370,10 +370,8 @@ class ModelCache:
         key = (_key(cp, rho, a, options), F, cp.mu, sliding, Q, rolling)
         dk = (_disk_key("fresh_p0", cp, rho, a, options, _FRESH_SOLVER, (F, sliding, Q, rolling))
               if self.disk is not None else None)
-        # a partial of a module-level function: it pickles, so a ForkLane's child can run it
-        job = functools.partial(_fresh_p0, cp, rho, a, options, F, (sliding, Q, rolling),
-                                self.disk if dk is not None else None, dk)
-        job.disk_key = dk
+        job = _DiskJob(functools.partial(_fresh_p0, cp, rho, a, options, F, (sliding, Q, rolling)),
+                      self.disk if dk is not None else None, dk, _fresh_stored)
         return key, job
 
     def real_cam(self, key: tuple, build):
@@ -416,6 +414,51 @@ class ModelCache:
             self._models.clear()
             self._results.clear()
             self._fresh_p0.clear()
+
+
+@dataclass(frozen=True)
+class _DiskJob:
+    """A job whose result the persistent cache keeps: ``fn(disk, disk_key)`` loads it or
+    computes and stores it. Picklable (``fn`` a :func:`functools.partial` of a module-level
+    function): in a :class:`~femcam.sweep.lane.ForkLane`'s child it only computes
+    (:meth:`in_child`), and the parent stores ``stored(result)`` (:meth:`in_parent`; None:
+    nothing), so that one process writes the cache.
+
+    Attributes
+    ----------
+    fn : callable
+        ``fn(disk, disk_key) -> result`` (``disk`` None: computes, reads and stores nothing).
+    disk : DiskCache or None
+        The persistent cache.
+    disk_key : str or None
+        The entry's key (None: not stored).
+    stored : callable
+        ``stored(result)``: what to store, or None.
+    """
+
+    fn: object
+    disk: DiskCache | None
+    disk_key: str | None
+    stored: object
+
+    def __call__(self):
+        return self.fn(self.disk, self.disk_key)
+
+    def in_child(self):
+        return self.fn(None, None)
+
+    def in_parent(self, value, defer=None):
+        obj = self.stored(value) if self.disk_key is not None else None
+        if obj is not None:
+            disk, dk = self.disk, self.disk_key
+            (defer or _now)(lambda: disk.put(dk, obj))
+        return value
+
+
+def _fresh_stored(result: tuple):
+    """What the persistent cache keeps of a fresh check's ``(p0, how)``: a built finite p0."""
+    p0, how = result
+    return p0 if how == "built" and finite_p0(p0) else None
 
 
 def _fresh_p0(cp, rho, a, options, F, load, disk, dk) -> tuple:
@@ -468,23 +511,29 @@ class _ModelJob:
         return m, dt
 
     def in_child(self) -> tuple:
-        """In a ForkLane's child: build, solve the ``scan`` load cases, and return the model
+        """In a ForkLane's child: build (nothing read or written in the persistent cache: the
+        parent looked and stores it), solve the ``scan`` load cases, and return the model
         without its factorised bodies and the solved cases (their model reference is dropped by
-        pickling), and the persistent cache's write to do after sending."""
-        later = []
-        m, dt = self(later.append)
+        pickling)."""
+        t0 = time.perf_counter()
+        m = build_model(self.cp, self.rho_ref, self.a_ref, self.options)
+        dt = time.perf_counter() - t0
         solved = {}
         for key in (self.scan(m) if self.scan is not None else ()):
             try:
                 solved[key] = _solve(m, key, check=True)
             except (FemcamError, ValueError, ArithmeticError):  # the parent's scan stops here too
                 break
-        return (strip_model(m), dt, solved), (later[0] if later else None)
+        return strip_model(m), dt, solved
 
-    def in_parent(self, value: tuple) -> tuple:
+    def in_parent(self, value: tuple, defer=None) -> tuple:
         """The child's :meth:`in_child` value: ``(model with bodies refactorised on first use,
-        build time in s, {load-case key: ContactResult of that model})``."""
+        build time in s, {load-case key: ContactResult of that model})``; the model stored in
+        the persistent cache through ``defer`` (default: now)."""
         m, dt, solved = value
+        if self.disk_key is not None:
+            disk, dk, stripped = self.disk, self.disk_key, m
+            (defer or _now)(lambda: disk.put(dk, stripped))
         m = restore_model(m)
         for r in solved.values():  # a pickled result drops its model (ContactResult.__getstate__)
             object.__setattr__(r, "model", m)

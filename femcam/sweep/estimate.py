@@ -52,7 +52,7 @@ from ..errors import FemcamError
 from ..fe import SolverOptions
 from ..layers.interface import interface_stress
 from ..mesh import MeshOptions
-from .cache import ModelCache, _disk_key, _key, build_model, default_cache, model_args
+from .cache import ModelCache, _disk_key, _DiskJob, _key, build_model, default_cache, model_args
 from .options import ContactParams, ResolvedOptions, contact_params
 
 __all__ = ["LAYER_QUANTITIES", "QUANTITIES", "RATES", "FamilyEstimate", "coarse_mesh", "estimated",
@@ -295,12 +295,15 @@ def _coarse_job(cp, rho_ref, a_ref, options, mesh2, F, cache) -> tuple:
     disk = getattr(cache, "disk", None)
     load = (F, cp.mu, cp.sliding, mesh2.a_over_h, mesh2.fine_half_width)
     dk = _disk_key("estimate_coarse", cp, rho_ref, a_ref, options, solver, load) if disk is not None else None
-    # a partial of a module-level function: it pickles, so the sweep's helper process
-    # (femcam.sweep.lane.ForkLane) can build it
-    job = functools.partial(_coarse_level, cp, rho_ref, a_ref, options, solver, mesh2, F,
-                            disk if dk is not None else None, dk)
-    job.disk_key = dk
+    # picklable: the sweep's helper process (femcam.sweep.lane.ForkLane) can build it
+    job = _DiskJob(functools.partial(_coarse_level, cp, rho_ref, a_ref, options, solver, mesh2, F),
+                  disk if dk is not None else None, dk, _coarse_stored)
     return ("estimate_coarse", _key(cp, rho_ref, a_ref, options), load), job
+
+
+def _coarse_stored(qH: dict) -> dict | None:
+    """What the persistent cache keeps of a coarse level's quantities (all finite), or None."""
+    return {k: float(v) for k, v in qH.items()} if all(map(math.isfinite, qH.values())) else None
 
 
 def _coarse_level(cp, rho_ref, a_ref, options, solver, mesh2, F, disk, dk) -> dict:
@@ -312,8 +315,8 @@ def _coarse_level(cp, rho_ref, a_ref, options, solver, mesh2, F, disk, dk) -> di
     coarse_model = build_model(cp, rho_ref, a_ref, options, solver, mesh=mesh2)
     rH = coarse_model.solve(F=F, rho=rho_ref, mu=cp.mu, sliding=cp.sliding, check=False)
     qH = {**_quantities(rH), **layer_quantities(rH, cp)}
-    if dk is not None and all(map(math.isfinite, qH.values())):
-        disk.put(dk, {k: float(v) for k, v in qH.items()})
+    if dk is not None and _coarse_stored(qH) is not None:
+        disk.put(dk, _coarse_stored(qH))
     return qH
 
 

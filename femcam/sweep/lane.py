@@ -11,8 +11,10 @@ sends back their results: a fresh check's p0 (a float), a coarse model's quantit
 a family model without its factorised bodies (:func:`femcam.sweep.diskcache.strip_model`, which
 the parent restores with bodies refactorised on first use, as a model from the persistent
 cache). A job is a picklable callable (a :func:`functools.partial` of a module-level function),
-or an object whose ``in_child()`` returns what is sent and a function to run after sending (or
-None), and whose ``in_parent(value)`` returns what the parent keeps.
+or an object whose ``in_child()`` returns what is sent and whose ``in_parent(value, defer)``
+returns what the parent keeps (``defer``: :meth:`ForkLane.defer`, for work such as a cache file
+written in the parent: the child writes nothing, so one process writes the persistent cache and
+says once when it cannot).
 
 The interface is that of :class:`femcam._threads.Background` (``submit``, ``take``, ``defer``,
 ``close``), with the same rule: a job not yet sent to the child when its result is wanted is
@@ -216,7 +218,7 @@ class ForkLane:
         if entry[2] == "local":
             return value
         in_parent = getattr(job, "in_parent", None)
-        return value if in_parent is None else in_parent(value)
+        return value if in_parent is None else in_parent(value, self.defer)
 
     def _help(self) -> bool:
         """Compute the oldest queued job here (its result kept for its own :meth:`take`); False
@@ -326,12 +328,8 @@ def _serve(jobs, results, parent_jobs, parent_results, parent_pid: int) -> None:
             job = pickle.loads(jobs.recv_bytes())
         except (EOFError, OSError):
             break
-        later = None
         try:
-            if hasattr(job, "in_child"):
-                value, later = job.in_child()
-            else:
-                value = job()
+            value = job.in_child() if hasattr(job, "in_child") else job()
             data = pickle.dumps((True, value), protocol=5)
         except Exception:  # noqa: BLE001 - the parent computes it again (and raises there)
             data = pickle.dumps((False, None))
@@ -339,9 +337,4 @@ def _serve(jobs, results, parent_jobs, parent_results, parent_pid: int) -> None:
             results.send_bytes(data)
         except OSError:
             break
-        if later is not None:  # e.g. the persistent cache's copy, after the parent has its own
-            try:
-                later()
-            except Exception:  # noqa: BLE001 - a cache write that failed costs a later rebuild
-                pass
     os._exit(0)  # no cleanups of the parent's state (its atexit functions are the parent's)
