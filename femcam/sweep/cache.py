@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+import importlib
 import math
 import threading
 import time
@@ -546,8 +547,9 @@ def _now(fn) -> None:
 
 def _build_imports() -> None:
     """Import what a model build imports lazily, before a helper process is forked (it then
-    inherits it instead of importing it again)."""
-    import skfem  # noqa: F401 - lazy: scikit-fem stays out of ``import femcam.sweep`` (tests/test_imports.py)
+    inherits it instead of importing it again): scikit-fem, kept out of ``import femcam.sweep``
+    (tests/test_imports.py)."""
+    importlib.import_module("skfem")
 
 
 def _case_key(F, rho, mu, sliding, Q, rolling) -> tuple:
