@@ -265,10 +265,12 @@ def test_what_the_helper_builds_is_stored_by_this_process(monkeypatch, tmp_path)
     th = np.radians([30.0, 60.0, 90.0, 120.0, 200.0, 250.0])
     opts = SweepOptions(angles=th, a_over_h=4)
     run = RunOptions(cache_dir=tmp_path / "c", workers="auto")
+    before = set(_children())
     with monkeypatch.context() as mp:
         mp.setattr(run_module, "_background_threads", lambda run: 1)
         default_cache().clear()
         cold = sweep(STUDY, opts, run)
+    assert set(_children()) <= before, "the helper process was not reaped"
     default_cache().clear()
     warm = sweep(STUDY, opts, RunOptions(cache_dir=tmp_path / "c", workers=1))
     mc = [r.provenance["options"]["model_cache"] for r in (cold, warm)]
@@ -279,3 +281,35 @@ def test_what_the_helper_builds_is_stored_by_this_process(monkeypatch, tmp_path)
         if k not in WALL_CLOCK:
             x, y = np.asarray(cold.table[k]), np.asarray(warm.table[k])
             assert np.array_equal(x, y, equal_nan=x.dtype.kind == "f"), k
+
+
+def test_ctrl_c_in_the_family_phase_leaves_no_helper(monkeypatch):
+    """Ctrl-C while the helper builds: the sweep says it was interrupted, the helper is ended
+    and reaped."""
+    from femcam.sweep import run as run_module
+    from femcam.sweep import verify as verify_module
+    from femcam.sweep.run import SweepInterrupted
+
+    def interrupted(*a, **k):
+        raise KeyboardInterrupt
+
+    from femcam.sweep import cache as cache_module
+
+    started = []
+
+    class Counted(cache_module.ForkLane):
+        def _start(self):
+            ok = super()._start()
+            started.append(self.pid)
+            return ok
+
+    monkeypatch.setattr(cache_module, "ForkLane", Counted)
+    monkeypatch.setattr(run_module, "_background_threads", lambda run: 1)
+    monkeypatch.setattr(verify_module, "_finish_group", interrupted)
+    before = set(_children())
+    default_cache().clear()
+    with pytest.raises(SweepInterrupted):
+        sweep(STUDY, SweepOptions(angles=parse_angles_deg("0:360:30")),
+              RunOptions(workers="auto", model_cache=False))
+    assert started and started[0] is not None   # the helper was running
+    assert set(_children()) <= before and not _alive(started[0])
