@@ -1,7 +1,6 @@
 """BLAS thread control without extra dependencies (used by ``femcam.fe`` and ``femcam.sweep``),
 and :class:`Background`, jobs run ahead in background threads and taken back by key (the sweep's
-family phase builds its independent FE models on a second core with it where ``fork`` is not
-available).
+family phase builds its independent FE models on a second core with it).
 
 OpenBLAS reads ``OPENBLAS_NUM_THREADS`` only when it loads, so the running libraries are told
 directly through ``ctypes`` (the ``openblas_set_num_threads`` calls that threadpoolctl makes;
@@ -157,11 +156,11 @@ class Background:
     queued jobs are cancelled, the running ones and the deferred work waited for (a job is one
     model build, a fraction of a second at the default mesh).
 
-    The sweep's family phase uses it where ``fork`` is not available; elsewhere a forked
-    helper process with the same interface does the builds (:class:`femcam.sweep.lane.ForkLane`):
-    in threads, the builds' SuperLU solves and numpy kernels release the GIL and overlap, their
-    meshing (one gmsh at a time), factorisations (scipy runs one at a time) and sparse
-    conversions do not, which bounds the gain (docs/performance.md).
+    Why threads and not processes: the jobs are FE model builds, whose results (factorised
+    bodies) cannot be pickled to another process; their SuperLU solves and numpy kernels
+    release the GIL and overlap, their meshing (one gmsh at a time), factorisations (scipy
+    runs one at a time) and sparse conversions do not, which bounds the gain
+    (docs/performance.md).
 
     Parameters
     ----------
@@ -198,10 +197,9 @@ class Background:
         if pool is not None:
             pool.shutdown(wait=True)
 
-    def submit(self, key, fn, priority: int = 0) -> None:
+    def submit(self, key, fn) -> None:
         """Queue ``fn()`` under ``key`` (hashable) unless it is queued already or there are no
-        threads. Jobs start in the order submitted (``priority`` is accepted for the interface
-        of :class:`femcam.sweep.lane.ForkLane`, which orders by it)."""
+        threads."""
         with self._lock:
             if self._pool is not None and key not in self._jobs:
                 self._jobs[key] = (self._pool.submit(fn), fn)

@@ -72,29 +72,12 @@ def test_process_pool_equals_serial(serial, tmp_path):
 
 
 @pytest.mark.slow  # two cold family phases: ~3-6 s on 2 shared cores
-@pytest.mark.parametrize("helper", ["process", "thread"])
-def test_background_builds_equal_one_thread(monkeypatch, helper):
-    """The family phase with its helper (workers "auto", the helper forced on whatever the
-    machine's load): a forked helper process (femcam.sweep.lane.ForkLane: the other family's
-    model and scan, fresh checks and coarse models built there), or a background thread where
-    fork is not available, against one process and thread (workers=1): the same families,
-    records and rows, bit for bit."""
-    from femcam.sweep import cache as cache_module
+def test_background_builds_equal_one_thread(monkeypatch):
+    """The family phase with its background build thread (workers "auto", the thread forced on
+    whatever the machine's load) against one thread (workers=1): the same families, records
+    and rows, bit for bit (same process, same models)."""
     from femcam.sweep import run as run_module
 
-    started = []
-    if helper == "thread":
-        monkeypatch.setattr(cache_module, "fork_available", lambda: False)
-    elif not cache_module.fork_available():
-        pytest.skip("no fork on this platform")
-    else:
-        class Counted(cache_module.ForkLane):
-            def _start(self):
-                if self._proc is None:
-                    started.append(1)
-                return super()._start()
-
-        monkeypatch.setattr(cache_module, "ForkLane", Counted)
     th = parse_angles_deg("0:360:15")
     out = {}
     for workers in (1, "auto"):
@@ -105,7 +88,6 @@ def test_background_builds_equal_one_thread(monkeypatch, helper):
                   SweepOptions(angles=th, chunk_size=8),
                   RunOptions(workers=workers, model_cache=False))
         out[workers] = r
-    assert len(started) == (1 if helper == "process" else 0)
     a, b = out[1], out["auto"]
     for k in a.table:
         if k not in SKIP:

@@ -4,15 +4,11 @@ the fresh check models (:class:`ModelCache`), plus how a model is built (:func:`
 
 from __future__ import annotations
 
-import dataclasses
-import functools
-import importlib
 import math
 import threading
 import time
 from collections import OrderedDict
 from contextlib import ExitStack, contextmanager
-from dataclasses import dataclass
 
 from .. import _validate
 from .._threads import Background
@@ -23,7 +19,6 @@ from ..materials import effective_modulus
 from ..mesh import MeshOptions
 from ..mesh.session import gmsh_kept
 from .diskcache import DiskCache, content_key, finite_p0, restore_model, strip_model
-from .lane import ForkLane, fork_available
 from .options import ContactParams, ResolvedOptions
 
 #: fresh checks: one load case, only its p0 read: no stress operators, and a stress window of
@@ -43,9 +38,8 @@ class ModelCache:
     Thread-safe: Dask runs tasks in worker threads of one process; every change of the tables
     holds one lock, the builds of :meth:`model_for` another (a key is built once), and gmsh
     (not thread-safe) is used under :data:`femcam.mesh.GMSH_LOCK`. Builds may run ahead in a
-    forked helper process or a background thread (:meth:`building_in_background`,
-    :meth:`prefetch_model`, :meth:`prefetch_fresh`): the sweep's family phase uses both cores
-    that way.
+    background thread (:meth:`building_in_background`, :meth:`prefetch_model`,
+    :meth:`prefetch_fresh`): the sweep's family phase uses both cores that way.
 
     Parameters
     ----------
@@ -98,21 +92,11 @@ class ModelCache:
             The model of this key: the cached one (now the most recently used), or one built
             now by :func:`build_model` and counted in :attr:`stats`.
         """
-        key = _key(cp, rho_ref, a_ref, options)
-        with self._lock:
-            m = self._lookup(key)
-        if m is not None:
-            return m
-        job = self._model_job(cp, rho_ref, a_ref, options)
-        return self._get_or_build(key, None, memo=True,
-                                  job=lambda: job(self.background.defer))
+        return self._get_or_build(_key(cp, rho_ref, a_ref, options),
+                                  lambda: build_model(cp, rho_ref, a_ref, options), memo=True,
+                                  disk_key=lambda: _disk_key("family_model", cp, rho_ref, a_ref, options))
 
-    def _model_job(self, cp, rho_ref, a_ref, options) -> _ModelJob:
-        """The build (or load) of one family model, as a picklable job."""
-        dk = _disk_key("family_model", cp, rho_ref, a_ref, options) if self.disk is not None else None
-        return _ModelJob(cp, rho_ref, a_ref, options, self.disk if dk is not None else None, dk)
-
-    def _get_or_build(self, key: tuple, build, memo: bool = False, disk_key=None, job=None):
+    def _get_or_build(self, key: tuple, build, memo: bool = False, disk_key=None):
         """The model under ``key`` (LRU: most recently used last), else from :attr:`disk` under
         ``disk_key()`` (counted as loaded), else ``build()`` now or taken from the background
         build :meth:`prefetch_model` started (counted in :attr:`stats`, and stored); ``memo``:
@@ -128,14 +112,13 @@ class ModelCache:
                 m = self._lookup(key)
             if m is not None:
                 return m
-            got = self.background.take(("model", key), job or (lambda: self._load_or_build(build, disk_key)))
-        m, dt = got[:2]
+            m, dt = self.background.take(("model", key), lambda: self._load_or_build(build, disk_key))
         with self._lock:
             self.stats["loaded" if dt is None else "built"] += 1
             self.stats["build_time"] += dt or 0.0
             self._models[key] = m
-            if memo:  # with the load cases a helper process solved after building it
-                self._results[id(m)] = dict(got[2]) if len(got) > 2 else {}
+            if memo:
+                self._results[id(m)] = {}
             while len(self._models) > self.max_models:
                 _, old = self._models.popitem(last=False)
                 self._results.pop(id(old), None)
@@ -164,9 +147,9 @@ class ModelCache:
         return m, dt
 
     def prefetch_model(self, cp: ContactParams, rho_ref: float, a_ref: float,
-                       options: ResolvedOptions, scan=None) -> None:
+                       options: ResolvedOptions) -> None:
         """Start building (or loading) the model :meth:`model_for` will be asked for, in the
-        helper process or thread of :meth:`building_in_background` (nothing outside it).
+        background thread of :meth:`building_in_background` (nothing outside it).
 
         Parameters
         ----------
@@ -176,20 +159,16 @@ class ModelCache:
             Reference cam radius and half-width (m).
         options : ResolvedOptions
             ``a_over_h``.
-        scan : callable, optional
-            ``scan(model)``: the load cases (:meth:`solve`'s keys) to solve right after the
-            build where it runs in a helper process (:class:`femcam.sweep.lane.ForkLane`), which
-            sends them back with the model (picklable; threads ignore it: their solves are
-            this process's).
         """
         key = _key(cp, rho_ref, a_ref, options)
         with self._lock:
             if key in self._models:
                 return
-        job = dataclasses.replace(self._model_job(cp, rho_ref, a_ref, options), scan=scan)
-        self.submit_build(("model", key), job, job.disk_key)
+        dk = _disk_key("family_model", cp, rho_ref, a_ref, options) if self.disk is not None else None
+        self.submit_build(("model", key), lambda: self._load_or_build(
+            lambda: build_model(cp, rho_ref, a_ref, options), lambda: dk), dk)
 
-    def submit_build(self, key, job, disk_key: str | None = None, priority: int = 0) -> None:
+    def submit_build(self, key, job, disk_key: str | None = None) -> None:
         """Queue ``job`` (a build) in the background under ``key``, unless :attr:`disk` holds
         its entry ``disk_key`` (loading it where it is wanted costs milliseconds). gmsh is
         initialised for the background builds here, in the submitting (main) thread, on the
@@ -204,54 +183,39 @@ class ModelCache:
             ``job()`` builds (or loads) and returns the result.
         disk_key : str, optional
             Its entry in :attr:`disk` (None: not stored, always queued).
-        priority : int
-            Jobs of a lower value are started first (0: wanted soon, e.g. a fresh check; 1:
-            wanted only after the verification, an estimate's coarse level).
         """
         if not self.background.threads:
             return
         if disk_key is not None and self.disk is not None and self.disk.has(disk_key):
             return
-        if self._kept is not None and not self._kept_entered:  # threads of this process only
+        if self._kept is not None and not self._kept_entered:
             self._kept.enter_context(gmsh_kept())
             self._kept_entered = True
-        self.background.submit(key, job, priority)
+        self.background.submit(key, job)
 
     @contextmanager
-    def building_in_background(self, threads: int = 1, process: bool = False):
+    def building_in_background(self, threads: int = 1):
         """Let :meth:`prefetch_model`, :meth:`prefetch_fresh` and :meth:`submit_build` run
-        builds ahead while the caller works: in a forked helper process
-        (:class:`femcam.sweep.lane.ForkLane`) with ``process`` where ``fork`` is available (and
-        it starts), else in ``threads`` background threads (0: none; from the first build
-        queued on, gmsh stays initialised, :func:`femcam.mesh.session.gmsh_kept`). On exit the
-        builds not started are dropped; a running one is waited for (a thread) or ended (the
-        helper process: nobody takes its result).
+        builds in ``threads`` background threads while the caller works (0: none; from the first
+        build queued on, gmsh stays initialised, :func:`femcam.mesh.session.gmsh_kept`). On
+        exit the builds not started are dropped and a running one is waited for.
 
         Parameters
         ----------
         threads : int
-            Background threads (0 or 1 on the 2-core machines femcam is measured on; 0: no
-            helper process either).
-        process : bool
-            One helper process instead of the threads, where possible.
+            Background threads (0 or 1 on the 2-core machines femcam is measured on).
 
         Yields
         ------
-        femcam._threads.Background or femcam.sweep.lane.ForkLane
+        femcam._threads.Background
             The background jobs (also :attr:`background` meanwhile).
         """
         if threads < 1:
             yield self.background
             return
-        lane = None
-        if process and fork_available():
-            lane = ForkLane(prepare=_build_imports)
-        with ExitStack() as kept:
-            bg = kept.enter_context(lane if lane is not None else Background(threads))
+        with ExitStack() as kept, Background(threads) as bg:  # bg closes first, then gmsh
             old, self.background = self.background, bg
-            # gmsh kept initialised for the background threads only (the lane's child has its
-            # own gmsh); registered after bg, so bg closes first, then gmsh
-            self._kept, self._kept_entered = (kept if lane is None else None), False
+            self._kept, self._kept_entered = kept, False
             try:
                 yield bg
             finally:
@@ -289,12 +253,13 @@ class ModelCache:
         -------
         femcam.fe.ContactResult
         """
-        key = _case_key(F, rho, mu, sliding, Q, rolling)
+        key = (float(F), float(rho), float(mu), int(sliding), None if Q is None else float(Q), int(rolling))
         with self._lock:
             memo = self._results.get(id(model))
             if memo is not None and key in memo:
                 return memo[key]
-        r = _solve(model, key, check)
+        r = model.solve(F=float(F), rho=float(rho), mu=mu, sliding=sliding, check=check, Q=Q,
+                        rolling=rolling if Q is not None else 0)
         with self._lock:
             if memo is not None and id(model) in self._results:
                 memo[key] = r
@@ -369,10 +334,24 @@ class ModelCache:
         sliding, Q, rolling = load
         sliding = cp.sliding if sliding is None else sliding
         key = (_key(cp, rho, a, options), F, cp.mu, sliding, Q, rolling)
-        dk = (_disk_key("fresh_p0", cp, rho, a, options, _FRESH_SOLVER, (F, sliding, Q, rolling))
-              if self.disk is not None else None)
-        job = _DiskJob(functools.partial(_fresh_p0, cp, rho, a, options, F, (sliding, Q, rolling)),
-                      self.disk if dk is not None else None, dk, _fresh_stored)
+
+        def job():
+            solver, dk = _FRESH_SOLVER, job.disk_key
+            p0 = self.disk.get(dk) if dk is not None else None
+            if finite_p0(p0):
+                return p0, "loaded"
+            try:
+                fresh = build_model(cp, rho, a, options, solver)
+                p0 = float(fresh.solve(F=F, rho=rho, mu=cp.mu, sliding=sliding, check=False, Q=Q,
+                                       rolling=rolling if Q is not None else 0).p0_nodal)
+            except (FemcamError, ValueError, ArithmeticError):
+                return math.nan, None
+            if dk is not None and finite_p0(p0):
+                self.disk.put(dk, p0)
+            return p0, "built"
+
+        job.disk_key = (_disk_key("fresh_p0", cp, rho, a, options, _FRESH_SOLVER, (F, sliding, Q, rolling))
+                        if self.disk is not None else None)
         return key, job
 
     def real_cam(self, key: tuple, build):
@@ -415,153 +394,6 @@ class ModelCache:
             self._models.clear()
             self._results.clear()
             self._fresh_p0.clear()
-
-
-@dataclass(frozen=True)
-class _DiskJob:
-    """A job whose result the persistent cache keeps: ``fn(disk, disk_key)`` loads it or
-    computes and stores it. Picklable (``fn`` a :func:`functools.partial` of a module-level
-    function): in a :class:`~femcam.sweep.lane.ForkLane`'s child it only computes
-    (:meth:`in_child`), and the parent stores ``stored(result)`` (:meth:`in_parent`; None:
-    nothing), so that one process writes the cache.
-
-    Attributes
-    ----------
-    fn : callable
-        ``fn(disk, disk_key) -> result`` (``disk`` None: computes, reads and stores nothing).
-    disk : DiskCache or None
-        The persistent cache.
-    disk_key : str or None
-        The entry's key (None: not stored).
-    stored : callable
-        ``stored(result)``: what to store, or None.
-    """
-
-    fn: object
-    disk: DiskCache | None
-    disk_key: str | None
-    stored: object
-
-    def __call__(self):
-        return self.fn(self.disk, self.disk_key)
-
-    def in_child(self):
-        return self.fn(None, None)
-
-    def in_parent(self, value, defer=None):
-        obj = self.stored(value) if self.disk_key is not None else None
-        if obj is not None:
-            disk, dk = self.disk, self.disk_key
-            (defer or _now)(lambda: disk.put(dk, obj))
-        return value
-
-
-def _fresh_stored(result: tuple):
-    """What the persistent cache keeps of a fresh check's ``(p0, how)``: a built finite p0."""
-    p0, how = result
-    return p0 if how == "built" and finite_p0(p0) else None
-
-
-def _fresh_p0(cp, rho, a, options, F, load, disk, dk) -> tuple:
-    """``(p0, how)`` of a fresh check model (:meth:`ModelCache._fresh_job`): loaded from
-    ``disk`` under ``dk``, or built, solved and stored."""
-    sliding, Q, rolling = load
-    p0 = disk.get(dk) if dk is not None else None
-    if finite_p0(p0):
-        return p0, "loaded"
-    try:
-        fresh = build_model(cp, rho, a, options, _FRESH_SOLVER)
-        p0 = float(fresh.solve(F=F, rho=rho, mu=cp.mu, sliding=sliding, check=False, Q=Q,
-                               rolling=rolling if Q is not None else 0).p0_nodal)
-    except (FemcamError, ValueError, ArithmeticError):
-        return math.nan, None
-    if dk is not None and finite_p0(p0):
-        disk.put(dk, p0)
-    return p0, "built"
-
-
-@dataclass(frozen=True)
-class _ModelJob:
-    """The build (or load from ``disk`` under ``disk_key``) of one family model: ``(model,
-    build time in s)``, the time None for a loaded model. Picklable: a
-    :class:`~femcam.sweep.lane.ForkLane` child builds it (:meth:`in_child`) and sends it
-    without its factorised bodies, which the parent refactorises on first use (:meth:`in_parent`,
-    as for a model of the persistent cache)."""
-
-    cp: ContactParams
-    rho_ref: float
-    a_ref: float
-    options: ResolvedOptions
-    disk: DiskCache | None
-    disk_key: str | None
-
-    #: ``scan(model)``: the load-case keys (:func:`_case_key`) the child solves after the build
-    #: (:meth:`in_child`; the parent's :meth:`ModelCache.solve` then finds them solved)
-    scan: object = None
-
-    def __call__(self, defer=None) -> tuple:
-        m = self.disk.get(self.disk_key) if self.disk_key is not None else None
-        if isinstance(m, ContactModel):
-            return restore_model(m), None
-        t0 = time.perf_counter()
-        m = build_model(self.cp, self.rho_ref, self.a_ref, self.options)
-        dt = time.perf_counter() - t0
-        if self.disk_key is not None:  # pickled and hashed in the background when a thread is on
-            disk, dk = self.disk, self.disk_key
-            (defer or _now)(lambda: disk.put(dk, strip_model(m)))
-        return m, dt
-
-    def in_child(self) -> tuple:
-        """In a ForkLane's child: build (nothing read or written in the persistent cache: the
-        parent looked and stores it), solve the ``scan`` load cases, and return the model
-        without its factorised bodies and the solved cases (their model reference is dropped by
-        pickling)."""
-        t0 = time.perf_counter()
-        m = build_model(self.cp, self.rho_ref, self.a_ref, self.options)
-        dt = time.perf_counter() - t0
-        solved = {}
-        for key in (self.scan(m) if self.scan is not None else ()):
-            try:
-                solved[key] = _solve(m, key, check=True)
-            except (FemcamError, ValueError, ArithmeticError):  # the parent's scan stops here too
-                break
-        return strip_model(m), dt, solved
-
-    def in_parent(self, value: tuple, defer=None) -> tuple:
-        """The child's :meth:`in_child` value: ``(model with bodies refactorised on first use,
-        build time in s, {load-case key: ContactResult of that model})``; the model stored in
-        the persistent cache through ``defer`` (default: now)."""
-        m, dt, solved = value
-        if self.disk_key is not None:
-            disk, dk, stripped = self.disk, self.disk_key, m
-            (defer or _now)(lambda: disk.put(dk, stripped))
-        m = restore_model(m)
-        for r in solved.values():  # a pickled result drops its model (ContactResult.__getstate__)
-            object.__setattr__(r, "model", m)
-        return m, dt, solved
-
-
-def _now(fn) -> None:
-    fn()
-
-
-def _build_imports() -> None:
-    """Import what a model build imports lazily, before a helper process is forked (it then
-    inherits it instead of importing it again): scikit-fem, kept out of ``import femcam.sweep``
-    (tests/test_imports.py)."""
-    importlib.import_module("skfem")
-
-
-def _case_key(F, rho, mu, sliding, Q, rolling) -> tuple:
-    """The key of a solved load case in :meth:`ModelCache.solve`'s table."""
-    return (float(F), float(rho), float(mu), int(sliding), None if Q is None else float(Q), int(rolling))
-
-
-def _solve(model: ContactModel, key: tuple, check: bool = True) -> ContactResult:
-    """``model.solve`` of the load case ``key`` (:func:`_case_key`)."""
-    F, rho, mu, sliding, Q, rolling = key
-    return model.solve(F=F, rho=rho, mu=mu, sliding=sliding, check=check, Q=Q,
-                       rolling=rolling if Q is not None else 0)
 
 
 _PROCESS_CACHE = ModelCache()

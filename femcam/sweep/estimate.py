@@ -41,7 +41,6 @@ below 0.002 % for p0 and a but +1.1 % for tau1 max (docs/estimate.md).
 
 from __future__ import annotations
 
-import functools
 import math
 from dataclasses import dataclass
 
@@ -52,7 +51,7 @@ from ..errors import FemcamError
 from ..fe import SolverOptions
 from ..layers.interface import interface_stress
 from ..mesh import MeshOptions
-from .cache import ModelCache, _disk_key, _DiskJob, _key, build_model, default_cache, model_args
+from .cache import ModelCache, _disk_key, _key, build_model, default_cache, model_args
 from .options import ContactParams, ResolvedOptions, contact_params
 
 __all__ = ["LAYER_QUANTITIES", "QUANTITIES", "RATES", "FamilyEstimate", "coarse_mesh", "estimated",
@@ -295,35 +294,26 @@ def _coarse_job(cp, rho_ref, a_ref, options, mesh2, F, cache) -> tuple:
     disk = getattr(cache, "disk", None)
     load = (F, cp.mu, cp.sliding, mesh2.a_over_h, mesh2.fine_half_width)
     dk = _disk_key("estimate_coarse", cp, rho_ref, a_ref, options, solver, load) if disk is not None else None
-    # picklable: the sweep's helper process (femcam.sweep.lane.ForkLane) can build it
-    job = _DiskJob(functools.partial(_coarse_level, cp, rho_ref, a_ref, options, solver, mesh2, F),
-                  disk if dk is not None else None, dk, _coarse_stored)
-    return ("estimate_coarse", _key(cp, rho_ref, a_ref, options), load), job
 
-
-def _coarse_stored(qH: dict) -> dict | None:
-    """What the persistent cache keeps of a coarse level's quantities (all finite), or None."""
-    return {k: float(v) for k, v in qH.items()} if all(map(math.isfinite, qH.values())) else None
-
-
-def _coarse_level(cp, rho_ref, a_ref, options, solver, mesh2, F, disk, dk) -> dict:
-    """The coarse level's quantities (:func:`_coarse_job`): loaded from ``disk`` under ``dk``, or
-    built, solved and stored."""
-    qH = disk.get(dk) if dk is not None else None
-    if isinstance(qH, dict) and set(qH) == set(estimated(cp)) and all(map(math.isfinite, qH.values())):
+    def job() -> dict:
+        qH = disk.get(dk) if dk is not None else None
+        if isinstance(qH, dict) and set(qH) == set(estimated(cp)) and all(map(math.isfinite, qH.values())):
+            return qH
+        coarse_model = build_model(cp, rho_ref, a_ref, options, solver, mesh=mesh2)
+        rH = coarse_model.solve(F=F, rho=rho_ref, mu=cp.mu, sliding=cp.sliding, check=False)
+        qH = {**_quantities(rH), **layer_quantities(rH, cp)}
+        if dk is not None and all(map(math.isfinite, qH.values())):
+            disk.put(dk, {k: float(v) for k, v in qH.items()})
         return qH
-    coarse_model = build_model(cp, rho_ref, a_ref, options, solver, mesh=mesh2)
-    rH = coarse_model.solve(F=F, rho=rho_ref, mu=cp.mu, sliding=cp.sliding, check=False)
-    qH = {**_quantities(rH), **layer_quantities(rH, cp)}
-    if dk is not None and _coarse_stored(qH) is not None:
-        disk.put(dk, _coarse_stored(qH))
-    return qH
+
+    job.disk_key = dk
+    return ("estimate_coarse", _key(cp, rho_ref, a_ref, options), load), job
 
 
 def prefetch_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: ResolvedOptions,
                       cache: ModelCache | None = None) -> None:
-    """Start the coarse level of :func:`family_estimate` (same arguments) in the helper process
-    or thread of ``cache`` (:meth:`~femcam.sweep.cache.ModelCache.building_in_background`;
+    """Start the coarse level of :func:`family_estimate` (same arguments) in the background
+    thread of ``cache`` (:meth:`~femcam.sweep.cache.ModelCache.building_in_background`;
     nothing outside it): the sweep's family phase builds it while the family models are built
     and scanned.
 
@@ -336,7 +326,7 @@ def prefetch_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: 
     options : ResolvedOptions
         ``a_over_h`` of the family model (below 4: no estimate, nothing started).
     cache : ModelCache, optional
-        Its helper process or thread (default: the process's cache).
+        Its background thread (default: the process's cache).
     """
     cache = cache or default_cache()
     if options.a_over_h < 4.0 or not cache.background.threads:
@@ -347,7 +337,7 @@ def prefetch_estimate(cp: ContactParams, rho_ref: float, a_ref: float, options: 
     except (FemcamError, ValueError, ArithmeticError):
         return   # family_estimate says NaN for it
     key, job = _coarse_job(cp, rho_ref, a_ref, options, mesh2, F, cache)
-    cache.submit_build(key, job, job.disk_key, priority=1)  # wanted after the verification
+    cache.submit_build(key, job, job.disk_key)
 
 
 def row_estimate(est: FamilyEstimate, a_row: float, a_model: float | None = None) -> dict:

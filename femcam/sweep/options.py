@@ -155,8 +155,8 @@ class RunOptions:
         Local worker processes [processes] for the chunks, or ``"auto"`` (default): processes
         only when the expected saving is worth it (:func:`femcam.sweep.auto_workers`); ignored
         with ``scheduler`` / ``client``. 1: the whole sweep in this process and thread (no
-        worker pool, and no helper process or thread building the family phase's models ahead,
-        which ``"auto"`` uses while a core is idle and N >= 2 always: docs/sweep.md "Parallel
+        worker pool, and no background thread building the family phase's models ahead, which
+        ``"auto"`` uses while a core is idle and N >= 2 always: docs/sweep.md "Parallel
         runs").
     scheduler : str or None
         Dask scheduler address (``tcp://host:8786``).

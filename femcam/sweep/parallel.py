@@ -36,7 +36,6 @@ from .._threads import limit_blas_threads
 from ..errors import InputError
 from ..io import TEMP_SUFFIX, atomic_write_bytes
 from .diskcache import read_only
-from .lane import _exit_with_parent
 
 #: ``workers="auto"``: use processes only if they are expected to save at least this fraction
 AUTO_MIN_SAVING = 0.25
@@ -168,6 +167,19 @@ def _worker_init(parent_pid: int | None = None):
     if parent_pid is not None:
         threading.Thread(target=_exit_with_parent, args=(parent_pid,), daemon=True,
                          name="femcam-parent-watch").start()
+
+
+def _exit_with_parent(parent_pid: int, period: float = 0.5) -> None:
+    """End this worker when the sweep process that started it is gone.
+
+    A pool worker blocks on its task queue, whose pipe it holds open itself, so it never sees
+    an EOF when the parent is killed (SIGKILL, OOM killer, a closed terminal): without this
+    watch it would stay orphaned for ever, holding memory and the parent's stdout. The chunks it
+    finished are already on disk (atomic writes), and ``--resume`` recomputes the rest."""
+    while True:
+        time.sleep(period)
+        if os.getppid() != parent_pid:
+            os._exit(1)
 
 
 def _run_pool(fn, tasks, workers):

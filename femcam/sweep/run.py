@@ -293,10 +293,9 @@ def _plan(run: SweepRun) -> None:
     if not run.preplanned:
         cache = default_cache()
         # the models of the families, their fresh checks and their coarse estimate models are
-        # independent builds: a forked helper process (a background thread where fork is not
-        # available) builds ahead on a second core (--workers 1: none, everything in this
-        # process and thread), same rows (docs/performance.md)
-        with cache.building_in_background(_background_threads(run), process=True):
+        # independent builds: a background thread builds ahead on a second core (--workers 1:
+        # none, everything in this thread), same rows (docs/performance.md)
+        with cache.building_in_background(_background_threads(run)):
             run.family, _, run.records = verify_families(
                 run.rows0["Fc"], run.rows0["rho"], run.angles, cp, run.opts, fit, cache=cache,
                 traction=run.traction, prefetch=lambda r, a: prefetch_estimate(cp, r, a, run.opts, cache))
@@ -308,11 +307,10 @@ def _plan(run: SweepRun) -> None:
 
 
 def _background_threads(run: SweepRun) -> int:
-    """Helpers of the family phase (a forked process, or a thread without fork): 1 with two or
-    more usable cores, unless the sweep was asked to stay in one process and thread
-    (``workers=1``); with ``"auto"`` only while a core is idle (1-minute load average below
-    cores - 0.5): on busy cores the two would only take turns, and the helper's overhead would
-    be paid for nothing (docs/performance.md)."""
+    """Background build threads of the family phase: 1 with two or more usable cores, unless
+    the sweep was asked to stay in one process and thread (``workers=1``); with ``"auto"`` only
+    while a core is idle (1-minute load average below cores - 0.5): on busy cores the two
+    threads only take turns, at ~5-10 % more CPU (docs/performance.md)."""
     cores = _cpu_count()
     if run.workers == 1 or cores < 2:
         return 0

@@ -26,7 +26,6 @@ largest of the fresh-checked and the estimated errors.
 
 from __future__ import annotations
 
-import functools
 import math
 import time
 from dataclasses import dataclass, field
@@ -36,7 +35,7 @@ import numpy as np
 
 from .. import _validate
 from ..errors import FemcamError
-from .cache import ModelCache, _case_key, default_cache
+from .cache import ModelCache, default_cache
 from .options import ContactParams, ResolvedOptions
 from .plan import contact_rows, curvature_ratio, family_reference, hertz_half_width, initial_groups
 from .realcam import traction_args
@@ -243,9 +242,8 @@ def verify_families(F, rho, theta, cp: ContactParams, options: ResolvedOptions,
     :func:`default_cache`; forked workers inherit it). The groups are verified in waves (the
     initial groups, then the halves of those that failed): each wave's models are built, scanned
     and their first candidates' fresh checks started before any verdict, so that with the
-    cache's helper process or thread on (:meth:`ModelCache.building_in_background`) the builds
-    of one wave run on both cores (a helper process also solves the scans of the models it
-    builds); the records do not depend on it.
+    cache's background thread on (:meth:`ModelCache.building_in_background`) the builds of
+    one wave run on both cores; the records do not depend on it.
 
     Parameters
     ----------
@@ -292,10 +290,8 @@ def verify_families(F, rho, theta, cp: ContactParams, options: ResolvedOptions,
     while queue:  # in waves: a wave's models, scans and first checks, then its verdicts
         wave, queue = queue, []
         refs = [family_reference(a_all[g], k_all[g], rho[idx[g]], cp.Rr) for g in wave]
-        for g, ref in zip(wave[1:], refs[1:], strict=True):  # the first is built here now; the
-            # others meanwhile, if a helper process or thread is on (else nothing); a helper
-            # process also solves the scan's load cases (the scan below then finds them solved)
-            cache.prefetch_model(cp, *ref, options, scan=_scan_cases_job(case, idx[g], a_all[g], k_all[g]))
+        for ref in refs[1:]:  # the first is built here now; the others meanwhile, if a
+            cache.prefetch_model(cp, *ref, options)  # background thread is on (else nothing)
         for ref in refs if prefetch is not None else ():
             prefetch(*ref)
         staged = [_scan_group(case, n_checks, idx[g], a_all[g], k_all[g]) for g in wave]
@@ -404,21 +400,6 @@ def _check(case: _Case, rec: FamilyRecord, model, rows, a, kap, e_h, picks) -> f
         if math.isnan(c_fresh) and math.isfinite(err) and math.isfinite(e_h[j]):
             c_fresh = (1.0 + e_h[j]) / (1.0 + err) - 1.0
     return worst
-
-
-def _scan_cases_job(case: _Case, rows, a, kap) -> functools.partial:
-    """``scan(model)`` of a group (picklable, :meth:`ModelCache.prefetch_model`): the load-case
-    keys :func:`_scan_group` and :func:`_scan_family` will solve with its model."""
-    loads = [traction_args(case.traction, int(i), case.cp.sliding) for i in rows]
-    return functools.partial(_scan_cases, case.F[rows], case.rho[rows], a, kap, loads, case.cp.mu)
-
-
-def _scan_cases(F, rho, a, kap, loads, mu, model) -> list[tuple]:
-    """The load-case keys (:func:`femcam.sweep.cache._case_key`) the scan of a group solves with
-    ``model``: its covered rows (:func:`_scan_group`), then :func:`_scan_subset`."""
-    cov = np.flatnonzero(np.array([model.covers(f, r) for f, r in zip(F, rho, strict=True)], bool))
-    return [_case_key(float(F[cov[j]]), float(rho[cov[j]]), mu, *loads[cov[j]])
-            for j in _scan_subset(a[cov], kap[cov], F[cov], rho[cov])]
 
 
 def _scan_family(cache, model, cp, rec, rows, a, kap, F, rho, traction=None) -> tuple[np.ndarray, bool]:
