@@ -152,9 +152,12 @@ class RunOptions:
     overwrite : bool
         Allow a fresh sweep into a non-empty ``out`` (its earlier results are replaced).
     workers : int or str
-        Local worker processes [processes] (1: serial in this process), or ``"auto"``
-        (default): processes only when the expected saving is worth it
-        (:func:`femcam.sweep.auto_workers`); ignored with ``scheduler`` / ``client``.
+        Local worker processes [processes] for the chunks, or ``"auto"`` (default): processes
+        only when the expected saving is worth it (:func:`femcam.sweep.auto_workers`); ignored
+        with ``scheduler`` / ``client``. 1: the whole sweep in this process and thread (no
+        worker pool, and no background thread building the family phase's models ahead, which
+        ``"auto"`` uses while a core is idle and N >= 2 always: docs/sweep.md "Parallel
+        runs").
     scheduler : str or None
         Dask scheduler address (``tcp://host:8786``).
     client : dask.distributed.Client or None
