@@ -51,7 +51,15 @@ import numpy as np
 from .. import _validate
 from ..mesh import MeshOptions
 from ..mesh.estimate import check_contact_elements
-from .estimate import LAYER_QUANTITIES, RATES, FamilyEstimate, family_estimate, predict_a_over_h, row_estimate
+from .estimate import (
+    LAYER_QUANTITIES,
+    RATES,
+    FamilyEstimate,
+    family_estimate,
+    predict_a_over_h,
+    prefetch_estimate,
+    row_estimate,
+)
 from .options import RTOL_RANGE, ContactParams, contact_params
 from .plan import hertz_half_width, plan_families
 from .verify import verify_families
@@ -290,6 +298,12 @@ def _pilot_estimates(cp: ContactParams, refs: dict, options, cache, on=("p0",)) 
         return {}
     picks = sorted({min(kap, key=kap.get), max(kap, key=kap.get)}, key=kap.get)
     pilot_opts = options.for_family(PILOT_A_OVER_H)
+    # the builds the first estimate does not wait for: in the background thread, if the caller
+    # started one (ModelCache.building_in_background; else nothing)
+    for i, f in enumerate(picks if cache is not None else ()):
+        if i:
+            cache.prefetch_model(cp, *refs[f], pilot_opts)
+        prefetch_estimate(cp, *refs[f], pilot_opts, cache)
     solved = {f: family_estimate(cp, *refs[f], pilot_opts, cache) for f in picks}
     k = [kap[f] for f in picks]
     keys = dict.fromkeys(("p0", "a", "vm", "tau1", *on))
@@ -310,7 +324,8 @@ def _verified(run, cp: ContactParams, rows, n: float, cache) -> list:
     opts = run.opts.for_family(n)
     check_contact_elements(MeshOptions(a_over_h=n), "a_over_h (chosen for rtol)")
     fam, _, recs = verify_families(run.rows0["Fc"], run.rows0["rho"], run.angles, cp, opts, rows,
-                                   cache=cache, traction=run.traction)
+                                   cache=cache, traction=run.traction,
+                                   prefetch=lambda r, a: prefetch_estimate(cp, r, a, opts, cache))
     out = []
     for rec in recs:
         reuse = rec.reuse_error if np.isfinite(rec.reuse_error) else math.nan

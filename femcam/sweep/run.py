@@ -152,7 +152,8 @@ def _sweep(run: SweepRun, scheduler, client, progress, plots, command, t_start) 
     before = dict(cache.stats)
     if run.opts.rtol is not None:
         with talk.phase(f"mesh for rtol {100 * run.opts.rtol:g} %: a pilot estimate and a mesh per family"):
-            choose_mesh(run, _fit_rows, default_cache())
+            with cache.building_in_background(_background_threads(run)):  # as _plan's builds
+                choose_mesh(run, _fit_rows, cache)
     _open_store(run)
     with talk.phase("model families: build, verify, estimate the error (a coarse model each)"):
         _plan(run)
