@@ -125,3 +125,25 @@ def test_early_svaj_plot_is_drawn_again_when_the_table_differs(tmp_path, monkeyp
     assert got == open(again["plot_svaj"], "rb").read()
     assert list(k for k in r.paths if k.startswith("plot_")) == list(again)   # the report's order
     assert np.array_equal(real(load_scene(SCENE), r.table["theta"])["s"], r.table["s"])
+
+
+def test_long_sweep_sends_no_early_svaj_plot(tmp_path):
+    """From STREAM_ANGLES angles on the analytic chain is computed in blocks (memory bound):
+    early_plots computes no whole-sweep columns and sends nothing; below it, the plot is sent."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from femcam.sweep import outputs
+    from femcam.sweep.store import STREAM_ANGLES
+
+    sent = []
+    plotter = SimpleNamespace(submit=lambda *a, **k: sent.append(a[1]) or 0)
+    scene = load_scene(SCENE)
+    long_run = SimpleNamespace(plotter=plotter, out=tmp_path, scene=scene, early={},
+                               angles=np.linspace(0.0, 2 * np.pi, STREAM_ANGLES, endpoint=False))
+    outputs.early_plots(long_run)
+    assert sent == [] and long_run.early == {}
+    short_run = SimpleNamespace(**{**vars(long_run), "angles": np.linspace(0.0, 1.0, 4), "early": {}})
+    outputs.early_plots(short_run)
+    assert sent == ["plot_svaj"] and set(short_run.early) == {"plot_svaj"}

@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from .elasticity import element_gradients
 from .estimate import zz_indicator
 from .recovery import surface_nodes
 
@@ -117,10 +116,8 @@ def scene_arrays(result, model=None):
                                             -1.0 if name == "cam" else 1.0))
         data["displacement"].append(np.column_stack([u.T, np.zeros(n)]))
         data["depth"].append(fld["z"])
-        grads = model._field_ops.get(("gradients", name))  # kept for the body's next .vtu
-        if grads is None:
-            grads = model._field_ops.setdefault(("gradients", name), element_gradients(b))
-        data["err_est_stress"].append(zz_indicator(b, u, grads))  # recovery (ZZ) indicator, Pa
+        # recovery (ZZ) indicator, Pa
+        data["err_est_stress"].append(zz_indicator(b, u, model.field_gradients(name)))
         # the fine-zone contact curve: vertices and P2 midside nodes (on the chords, so not
         # exactly at depth 0); the pressure is zero beyond it
         on = np.zeros(n, dtype=bool)

@@ -42,6 +42,7 @@ from .elasticity import (
     ORDERINGS,
     Body,
     assemble_body,
+    element_gradients,
     probe_matrix,
     scalar_node_coordinates,
     stress_operator,
@@ -585,6 +586,26 @@ class ContactModel:
         return np.stack([u[0::2], u[1::2]]), {
             "sx": sx, "sz": sz, "txz": txz, "sy": sy, "tau1": tau1, "von_mises": vm,
             "xy": xy, "z": depth(b, xy)}
+
+    def field_gradients(self, body: str = "cam") -> tuple:
+        """:func:`~femcam.fe.elasticity.element_gradients` of one body, built once per model
+        (the recovery indicator of each of the body's ``.vtu`` files reads it).
+
+        Parameters
+        ----------
+        body : {"cam", "roller"}, optional
+            The body.
+
+        Returns
+        -------
+        tuple
+            ``(dphi, sdofs, edofs, lam, mu, cnt)`` of :func:`~femcam.fe.elasticity.element_gradients`.
+        """
+        _validate.choice("body", body, ("cam", "roller"))
+        key = ("gradients", body)
+        if key not in self._field_ops:
+            self._field_ops[key] = element_gradients(self.bodies[body])
+        return self._field_ops[key]
 
     def stress_at(self, r: ContactResult, x, z, body: str = "cam"):
         """Stresses interpolated (nodal field) at points of ``body``.

@@ -226,17 +226,15 @@ class StoredBody:
         self.disk = disk
 
     @classmethod
-    def of(cls, body, ordering: str, contact_last: bool, disk: DiskCache | None = None) -> StoredBody:
+    def of(cls, body, solver, disk: DiskCache | None = None) -> StoredBody:
         """A factorised body whose displacements are stored.
 
         Parameters
         ----------
         body : femcam.fe.elasticity.Body
             The factorised body.
-        ordering : str
-            Its SuperLU ordering.
-        contact_last : bool
-            Its contact DOFs were ordered last.
+        solver : femcam.fe.SolverOptions
+            The options its model was built with (:func:`_factor_args`).
         disk : DiskCache, optional
             Where its displacements are stored.
 
@@ -244,7 +242,7 @@ class StoredBody:
         -------
         StoredBody
         """
-        spec = (body.geometry, body.material, body.plane, body.element, ordering, contact_last)
+        spec = (body.geometry, body.material, body.plane, body.element, *_factor_args(solver))
         return cls(spec, body, disk)
 
     def __getattr__(self, name):  # called only for names not set on the proxy itself
@@ -324,6 +322,13 @@ class StoredBody:
         return u
 
 
+def _factor_args(solver) -> tuple[str, bool]:
+    """``(ordering, contact_last)`` of :func:`~femcam.fe.elasticity.assemble_body` for a body of
+    a model built with ``solver`` (as :meth:`femcam.fe.ContactModel.build` builds it: contact
+    DOFs last for ``per_solve`` models)."""
+    return solver.ordering, solver.stress_operators == "per_solve"
+
+
 class LazyBodies(dict):
     """The ``bodies`` of a model loaded from the cache: a :class:`StoredBody` per body, made on
     first use (mesh and basis; assembled and factorised again from the stored mesh only when
@@ -354,8 +359,7 @@ class LazyBodies(dict):
         with self._lock:
             if name not in self:
                 self[name] = StoredBody((getattr(mesh, name), materials[name], plane, element,
-                                         solver.ordering, solver.stress_operators == "per_solve"),
-                                        disk=self.disk)
+                                         *_factor_args(solver)), disk=self.disk)
             return dict.__getitem__(self, name)
 
     def __reduce__(self):  # pickles as a plain empty dict (no SuperLU factors)
@@ -386,8 +390,7 @@ def store_fields(model: ContactModel, disk: DiskCache | None) -> None:
         if isinstance(b, StoredBody):
             b.disk = disk
         elif b is not None:
-            bodies[name] = StoredBody.of(b, model.options.ordering,
-                                         model.options.stress_operators == "per_solve", disk)
+            bodies[name] = StoredBody.of(b, model.options, disk)
 
 
 def strip_model(model: ContactModel) -> ContactModel:

@@ -27,7 +27,7 @@ from .pipeline import analytic_rows, contact_mask, line_contact
 from .profile import worst_surface_profile
 from .report import report_html
 from .result import SweepResult, plot_data_arrays, report_markdown
-from .store import ChunkStore, DirLock
+from .store import STREAM_ANGLES, ChunkStore, DirLock
 from .table import COLUMNS, INTEGER_COLUMNS, NUMERIC, TEXT_COLUMNS
 from .wear import WearSetup
 
@@ -248,10 +248,12 @@ def early_plots(run: SweepRun) -> None:
     Parameters
     ----------
     run : SweepRun
-        The sweep (``plotter`` and ``out`` set; else nothing is sent).
+        The sweep (``plotter`` and ``out`` set, fewer than
+        :data:`~femcam.sweep.store.STREAM_ANGLES` angles; else nothing is sent).
     """
-    if run.plotter is None or run.out is None or run.scene.follower.flat_face:
-        return
+    if (run.plotter is None or run.out is None or run.scene.follower.flat_face
+            or run.angles.size >= STREAM_ANGLES):  # a long sweep's analytic chain is computed in
+        return                                       # blocks (memory): drawn from its table
     cols = svaj_columns(run.scene, run.angles)
     # weight 0: drawn long before the table is complete, it must not steer the later plots
     # away from its lane
