@@ -27,6 +27,7 @@ from .errors import (
     PhysicsError,
     SceneError,
     UndercutError,
+    WorkerLostError,
 )
 from .materials import STEEL, Material, effective_modulus
 
@@ -46,6 +47,7 @@ __all__ = [
     "PhysicsError",
     "SceneError",
     "UndercutError",
+    "WorkerLostError",
     "Material",
     "STEEL",
     "effective_modulus",

@@ -303,6 +303,40 @@ def angle_count(name: str, value, n: int, bytes_per_angle: float, what: str,
     return n
 
 
+def radians_hint(name: str, spec) -> str:
+    """A note when a ``start:stop:step`` spec in degrees spans 2 pi or pi (within 1 %): most
+    likely radians typed into a degree flag (``--angles-deg 0:6.28:0.1``); "" otherwise and for
+    a spec :func:`angles_deg` refuses (its error says that).
+
+    Parameters
+    ----------
+    name : str
+        The flag or key (``"--angles-deg"``).
+    spec : str
+        ``start:stop:step`` [deg].
+
+    Returns
+    -------
+    str
+        One line, or "".
+
+    >>> radians_hint("--angles-deg", "0:360:1")
+    ''
+    >>> radians_hint("--angles-deg", "0:6.28:0.1")[:44]
+    "--angles-deg = '0:6.28:0.1' spans 6.28 deg ="
+    """
+    try:
+        start, stop, _ = (float(p) for p in str(spec).split(":"))
+    except ValueError:
+        return ""
+    span = stop - start
+    for turn, word in ((2.0 * np.pi, "2 pi"), (np.pi, "pi")):
+        if abs(span / turn - 1.0) <= 0.01:
+            return (f"{name} = {spec!r} spans {span:g} deg = {word} as a number: the angles are "
+                    "degrees (radians? a whole turn is 0:360:STEP); running what was asked")
+    return ""
+
+
 def angles_deg(name: str, spec, max_angles: int = 10_000_000) -> np.ndarray:
     """``"start:stop:step"`` in degrees -> radians; the stop is included when it falls on the
     grid (to 1e-9 of a step), except that a range of whole turns (``stop - start`` a multiple

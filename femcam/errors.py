@@ -10,6 +10,8 @@ gmsh or scipy:
   (subclasses say why: Hertz validity, undercut cam, follower lift-off).
 * :class:`ConvergenceError`: a nonlinear or contact solve did not converge; carries the
   residual history so the caller can see how it failed.
+* :class:`WorkerLostError`: a worker process of a parallel sweep ended without its result
+  (killed by the system or a signal); the message says what was saved and how to resume.
 """
 
 from __future__ import annotations
@@ -58,3 +60,8 @@ class ConvergenceError(FemcamError):
     def __init__(self, message: str, history=None):
         super().__init__(message)
         self.history = list(history) if history is not None else []
+
+
+class WorkerLostError(FemcamError):
+    """A worker process of a parallel run ended without returning its result (the out-of-memory
+    killer, ``kill -9``, a crash in a native library); the message says what was saved."""

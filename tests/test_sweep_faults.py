@@ -233,7 +233,7 @@ def _interrupt(tmp_path, *extra):
 def test_ctrl_c_before_any_gmsh_mesh_one_line_and_130(tmp_path):
     """Hertz method: gmsh is never initialised."""
     rc, err, out = _interrupt(tmp_path, "--method", "hertz")
-    assert rc == 130
+    assert rc == 130, err  # the one line (or the traceback) says why
     assert len(err.splitlines()) == 1 and "Traceback" not in err, err
     n = len(list((out / "chunks").glob("chunk_*.npz")))
     assert f"{n} of 6 chunks saved" in err and "--resume" in err
@@ -243,7 +243,7 @@ def test_ctrl_c_before_any_gmsh_mesh_one_line_and_130(tmp_path):
 def test_ctrl_c_after_gmsh_meshed_one_line_and_130(tmp_path):
     """FE method: the families were meshed (gmsh initialised and finalised) before the chunks."""
     rc, err, out = _interrupt(tmp_path, "--method", "fe")
-    assert rc == 130
+    assert rc == 130, err  # the one line (or the traceback) says why
     assert len(err.splitlines()) == 1 and "Traceback" not in err, err
     assert "--resume" in err
 
@@ -394,6 +394,52 @@ def test_ctrl_c_with_a_process_pool_one_line_and_130(tmp_path):
     """Pool workers ignore SIGINT (the parent stops the pool): still one line, exit 130, and no
     worker left behind (their stdout pipe reaches EOF: communicate returned)."""
     rc, err, out = _interrupt(tmp_path, "--method", "fe", "--workers", "2")
-    assert rc == 130
+    assert rc == 130, err  # the one line (or the traceback) says why
     assert len(err.splitlines()) == 1 and "Traceback" not in err, err
     assert "--resume" in err
+
+
+def _children(pid: int) -> list[int]:
+    """The child processes of ``pid`` (Linux ``/proc``; none elsewhere)."""
+    kids = []
+    for task in Path(f"/proc/{pid}/task").glob("*"):
+        try:
+            kids += [int(k) for k in (task / "children").read_text().split()]
+        except OSError:
+            pass
+    return kids
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(not Path("/proc/self/task").exists(), reason="needs Linux /proc")
+def test_a_pool_worker_killed_one_line_the_saved_chunks_and_resume(tmp_path):
+    """A worker killed mid-sweep (the OOM killer, ``kill -9``): one line naming what happened,
+    how many chunks are saved and how to resume, exit 1, never Python's BrokenProcessPool
+    traceback; ``--resume`` then completes the sweep (all 6 chunk files of 18 angles)."""
+    out = tmp_path / "run"
+    cmd = [sys.executable, "-m", "femcam", "sweep", str(STUDY), "--out", str(out),
+           "--angles-deg", "0:360:20", "--chunk-size", "3", "--no-plots", "--progress", "off",
+           "--vtk-every", "0", "--chunk-delay-s", "1.0", "--method", "hertz", "--workers", "2"]
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+    try:
+        t0 = time.monotonic()
+        while not list((out / "chunks").glob("chunk_*.npz")):
+            assert proc.poll() is None, proc.communicate(timeout=60)
+            assert time.monotonic() - t0 < 120, "no chunk appeared"
+            time.sleep(0.02)
+        kids = _children(proc.pid)
+        assert kids, "no worker process found"
+        os.kill(kids[0], signal.SIGKILL)
+        _, err = proc.communicate(timeout=60)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.communicate(timeout=60)
+    err = err.decode().strip()
+    assert proc.returncode == 1, err
+    assert len(err.splitlines()) == 1 and "Traceback" not in err, err
+    assert "worker process" in err and "chunks saved" in err and "--resume" in err, err
+    res = subprocess.run(cmd + ["--resume"], capture_output=True, env=env, timeout=300)
+    assert res.returncode == 0, res.stderr.decode()
+    assert len(list((out / "chunks").glob("chunk_*.npz"))) == 6

@@ -75,6 +75,8 @@ def _run(args) -> int:
     _validate.angle_count("--sweep" if table is not None else "--angles-deg",
                           args.sweep if table is not None else args.angles_deg, theta.size, 3600.0,
                           "femcam assess", _validate.MAX_ASSESS_ANGLES)
+    if table is None and (hint := _validate.radians_hint("--angles-deg", args.angles_deg)):
+        print(f"femcam assess: note: {hint}", file=sys.stderr)
     refuse_non_empty(args.out, args.overwrite)  # the rule of every subcommand, before the work
     res = assess(contact_case(scene, theta), table=table, coatings=scene_coatings(scene.layers))
     out = out_dir(args.out)

@@ -194,6 +194,8 @@ def _run(args) -> int:
         check_law("--law", args.law)
     theta = _validate.angles_deg("--angles-deg", args.angles_deg)
     _validate.angle_count("--angles-deg", args.angles_deg, theta.size, 800.0, "femcam run")
+    if hint := _validate.radians_hint("--angles-deg", args.angles_deg):
+        print(f"femcam run: note: {hint}", file=sys.stderr)
     scene = load_scene(args.scene)
     if args.law is not None:
         scene = scene.with_law(args.law)

@@ -302,6 +302,9 @@ def _run(args) -> int:
         print("femcam sweep: settings from the scene file: " + ", ".join(from_scene))
     if note:
         print(f"femcam sweep: note: {note}", file=sys.stderr)
+    if hint := _validate.radians_hint("--angles-deg" if given["angles_deg"] is not None
+                                      else "[sweep] angles_deg", args.angles_deg):
+        print(f"femcam sweep: note: {hint}", file=sys.stderr)
     if args.law is not None:
         scene = scene.with_law(args.law)
     progress = {"auto": None, "on": True, "off": False}[args.progress]

@@ -29,11 +29,12 @@ import threading
 import time
 from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures.process import BrokenProcessPool
 from pathlib import Path
 
 from .. import _validate
 from .._threads import limit_blas_threads
-from ..errors import InputError
+from ..errors import InputError, WorkerLostError
 from ..io import TEMP_SUFFIX, atomic_write_bytes
 from .diskcache import read_only
 
@@ -141,6 +142,12 @@ def run_tasks(fn: Callable, tasks: Iterable, *, workers: int = 1, scheduler=None
     ------
     tuple[int, object]
         ``(index in tasks, fn(task))`` in completion order.
+
+    Raises
+    ------
+    femcam.errors.WorkerLostError
+        A process of the pool ended without its result (killed: out of memory, a signal);
+        the pool's other workers are stopped.
     """
     if not callable(fn):
         raise _validate.fail("fn", fn, "", "must be a module-level function of one task")
@@ -191,7 +198,13 @@ def _run_pool(fn, tasks, workers):
         futs = {ex.submit(fn, t): i for i, t in enumerate(tasks)}
         try:
             for f in as_completed(futs):
-                yield futs[f], f.result()
+                try:
+                    rows = f.result()
+                except BrokenProcessPool:  # a worker died: the pool cannot go on
+                    raise WorkerLostError(
+                        "a worker process ended without its result (killed by the system, "
+                        "e.g. out of memory, or by a signal)") from None
+                yield futs[f], rows
         except BaseException:
             for f in futs:
                 f.cancel()

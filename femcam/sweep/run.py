@@ -16,6 +16,7 @@ import numpy as np
 
 from .. import _validate
 from .._progress import Progress
+from ..errors import WorkerLostError
 from ..hertz.conformity import roller_does_not_fit
 from ..io import provenance
 from ..mesh import MeshOptions
@@ -98,6 +99,9 @@ def sweep(scene, options: SweepOptions | None = None, run: RunOptions | None = N
         with ``a_over_h``, ``animate`` without VTK output).
     SweepInterrupted
         On Ctrl-C (a ``KeyboardInterrupt`` saying what was saved and how to resume).
+    WorkerLostError
+        A worker process ended without its result (killed by the system or a signal); the
+        message says what was saved and how to resume, as for Ctrl-C.
 
     Examples
     --------
@@ -121,6 +125,8 @@ def sweep(scene, options: SweepOptions | None = None, run: RunOptions | None = N
         return _sweep(run, ro.scheduler, ro.client, ro.progress, plots, ro.command, t_start)
     except KeyboardInterrupt:
         raise SweepInterrupted(_interrupt_message(run)) from None
+    except WorkerLostError as exc:  # what was saved, as for Ctrl-C
+        raise WorkerLostError(f"{exc}; {_saved_message(run)}") from None
     finally:
         if run.plotter is not None:
             run.plotter.close()
@@ -133,11 +139,16 @@ class SweepInterrupted(KeyboardInterrupt):
 
 
 def _interrupt_message(run: SweepRun) -> str:
+    return "interrupted; " + _saved_message(run)
+
+
+def _saved_message(run: SweepRun) -> str:
+    """How many chunks are saved and how to go on (a run without an output directory: none)."""
     if run.store is None or run.out is None:
-        return "interrupted; nothing was saved" + ("" if run.out is None else
-                                                   f" in {run.out} (rerun the same command)")
+        return "nothing was saved" + ("" if run.out is None else
+                                      f" in {run.out} (rerun the same command)")
     saved = sum(1 for i in range(len(run.bounds)) if run.store.path(i).exists())
-    return (f"interrupted; {saved} of {len(run.bounds)} chunks saved in {run.out / 'chunks'}; "
+    return (f"{saved} of {len(run.bounds)} chunks saved in {run.out / 'chunks'}; "
             "rerun the same command with --resume to compute the rest")
 
 
