@@ -214,3 +214,40 @@ def test_ring_model_estimate_against_the_solid_roller_and_a_finer_ring(tmp_path)
     for k in ("bore_hoop", "pin_p0"):
         change = abs(q20[k] / qf[k] - 1)
         assert 1.0 <= est[20.0][k] / change <= 6.0, (k, est[20.0][k], change)
+
+
+@pytest.mark.slow
+def test_needle_bore_hoop_estimate_is_of_the_reported_cage_and_against_a_finer_ring():
+    """The needle example's bore hoop stress (``bore_hoop_max_MPa``: the cage position with the
+    larger bore stress, here the load line between two needles) on the default ring (128 bore
+    vertices) against a ring built here with 1024 bore vertices uniform in angle (8 times finer),
+    at the peak contact force (44 deg). Measured (docs/bodies.md, "Bore hoop stress under the
+    needles"): 125.72 MPa against 129.08 MPa (-2.6 %); the sequence 128..2048 is 125.72, 127.30,
+    128.24, 129.08, 130.12 MPa: it creeps by ~0.7 % per halving because the needle spread narrows
+    with the bore spacing, so the 5 % tolerance (the target for the default mesh) holds the
+    default within reach of every mesh to 4096 vertices, not a fitted margin.
+
+    The two-level estimate (``err_est_bore_hoop_pct``, femcam.sweep.ringhead.ring_level_estimate)
+    now estimates the reported cage's value, not the hoop beside a needle on the load line
+    (92.6 .. 127.0 MPa from 128 to 2048: 40 % before): it must be at most 5 % and within 0.5-3
+    times the change to the finer ring (measured 2.63 % against 2.60 %: effectivity 1.01)."""
+    from femcam.bodies.rows import build_for, ring_rows
+    from femcam.sweep.providers import _GRID, ring_model
+    from femcam.sweep.ringhead import ring_level_estimate
+
+    sc = load_scene(EX / "seed002_needle_roller.toml")
+    st = sc.analyse(_GRID)
+    Fc = np.where(np.asarray(st.Fc) > 0, st.Fc, np.nan)
+    rho = np.asarray(st.rho, float)
+    k = int(np.nanargmax(Fc))
+    assert abs(math.degrees(_GRID[k]) - THETA_DEG) < 1.0
+    model = ring_model(sc)
+    fine = build_for(sc.bodies.roller, sc.pair, Fc, rho, ring_mesh=RingMeshOptions(n_bore=1024))
+    assert model.theta.size == 128 and fine.theta.size == 1024
+    args = (sc.bodies.roller, sc.pair, _GRID[k:k + 1], Fc[k:k + 1], rho[k:k + 1])
+    h = ring_rows(*args, model=model)["hoop_max"][0]
+    h_ref = ring_rows(*args, model=fine)["hoop_max"][0]
+    change = abs(h / h_ref - 1)
+    assert change <= 0.05, (h, h_ref)
+    est = ring_level_estimate(model)["bore_hoop"]
+    assert est <= 0.05 and 0.5 <= est / change <= 3.0, (est, change)
