@@ -94,3 +94,23 @@ def test_body_dofs_are_scikit_fems():
     ref = Basis(MeshTri(cm.cam.points, cm.cam.triangles, sort_t=False), ElementVector(ElementTriP2()))
     for name in ("element_dofs", "nodal_dofs", "facet_dofs", "doflocs"):
         np.testing.assert_array_equal(getattr(b.basis, name), getattr(ref, name), err_msg=name)
+
+
+def test_an_unchecked_scikit_fem_builds_its_own_edge_table(monkeypatch):
+    """Under a scikit-fem major version the edge table was not checked against, femcam leaves
+    the private ``_facets``/``_t2f`` alone: scikit-fem builds them, and the body's DOFs are the
+    ones of the default ``Basis`` (the reference, built by scikit-fem alone)."""
+    import skfem
+
+    cm = build_contact_mesh(Rr=0.01, rho=0.02, a_ref=1.6e-4,
+                            options=MeshOptions(a_over_h=2, growth=1.0, fine_depth=0.0))
+    monkeypatch.setattr(skfem, "__version__", "99.0.0")
+
+    def not_called(*args):
+        raise AssertionError("femcam's edge table used under an unchecked scikit-fem")
+
+    monkeypatch.setattr("femcam.fe.elasticity.triangle_edges", not_called)
+    b = assemble_body(cm.cam, STEEL)
+    ref = Basis(MeshTri(cm.cam.points, cm.cam.triangles, sort_t=False), ElementVector(ElementTriP2()))
+    np.testing.assert_array_equal(b.basis.element_dofs, ref.element_dofs)
+    np.testing.assert_array_equal(b.mesh.facets, ref.mesh.facets)

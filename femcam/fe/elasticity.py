@@ -43,6 +43,21 @@ CHUNK = 20
 #: (scikit-fem's default rule would evaluate every basis function at 6 points per element)
 _DOF_QUADRATURE = (np.array([[1.0 / 3.0], [1.0 / 3.0]]), np.array([0.5]))
 
+#: the scikit-fem major versions whose cached edge table (the private ``Mesh._facets``,
+#: ``Mesh._t2f``) :func:`~femcam.fe.assembly.triangle_edges` was checked to reproduce
+#: (tests/test_fe_assembly.py); under any other, scikit-fem builds its own (slower, never wrong)
+EDGE_TABLE_SKFEM_MAJORS = (10, 11, 12)
+
+
+def _edge_table_checked(version: str) -> bool:
+    """Whether scikit-fem ``version`` is one :data:`EDGE_TABLE_SKFEM_MAJORS` names.
+
+    >>> _edge_table_checked("12.0.2"), _edge_table_checked("13.0"), _edge_table_checked("dev")
+    (True, False, False)
+    """
+    head = str(version).split(".")[0]
+    return head.isdigit() and int(head) in EDGE_TABLE_SKFEM_MAJORS
+
 
 @dataclass(frozen=True, eq=False)
 class Body:
@@ -366,11 +381,14 @@ def assemble_body(geometry: BodyMesh, material: Material, *, plane: str = "strai
 
 def _discretise(geometry: BodyMesh, material: Material, plane: str, element: str) -> tuple:
     """``(mesh, basis, lam, mu_L, lam_e, mu_e)`` of one body (no stiffness, no factor)."""
-    from skfem import Basis, MeshTri  # skfem: kept out of ``import femcam`` (tests/test_imports.py)
+    import skfem  # kept out of ``import femcam`` (tests/test_imports.py)
+    from skfem import Basis, MeshTri
 
     mesh = MeshTri(geometry.points, geometry.triangles, validate=False, sort_t=False)
-    # scikit-fem's own edge table (its cached ``facets``, ``t2f``), built faster, same arrays
-    mesh._facets, mesh._t2f = triangle_edges(mesh.t, mesh.p.shape[1])
+    # scikit-fem's own edge table (its cached ``facets``, ``t2f``), built faster, same arrays;
+    # only under the scikit-fem versions it was checked against (private attributes)
+    if _edge_table_checked(skfem.__version__):
+        mesh._facets, mesh._t2f = triangle_edges(mesh.t, mesh.p.shape[1])
     basis = Basis(mesh, _element(element), quadrature=_DOF_QUADRATURE)
     lam, mu_L = lame_parameters(material.E, material.nu, plane)
     lam_e, mu_e = _coating_lame(geometry, material, plane, lam, mu_L)
