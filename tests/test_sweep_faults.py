@@ -207,6 +207,15 @@ def test_dask_threaded_worker_relative_out_files_come_back(tmp_path, monkeypatch
 
 
 # -- 5. Ctrl-C -----------------------------------------------------------------------------------
+def _wait_for_a_chunk(proc, out: Path) -> None:
+    """Until the sweep ``proc`` writing into ``out`` has saved its first chunk (120 s at most)."""
+    t0 = time.monotonic()
+    while not list((out / "chunks").glob("chunk_*.npz")):
+        assert proc.poll() is None, proc.communicate(timeout=60)
+        assert time.monotonic() - t0 < 120, "no chunk appeared"
+        time.sleep(0.02)
+
+
 def _interrupt(tmp_path, *extra):
     out = tmp_path / "run"
     cmd = [sys.executable, "-m", "femcam", "sweep", str(STUDY), "--out", str(out),
@@ -214,12 +223,8 @@ def _interrupt(tmp_path, *extra):
            "--workers", "1", "--vtk-every", "0", "--chunk-delay-s", "0.5", *extra]
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             env={**os.environ, "PYTHONPATH": str(ROOT)})
-    t0 = time.monotonic()
     try:
-        while not list((out / "chunks").glob("chunk_*.npz")):
-            assert proc.poll() is None, proc.communicate(timeout=60)
-            assert time.monotonic() - t0 < 120, "no chunk appeared"
-            time.sleep(0.02)
+        _wait_for_a_chunk(proc, out)
         proc.send_signal(signal.SIGINT)
         _, err = proc.communicate(timeout=60)
     finally:
@@ -423,11 +428,7 @@ def test_a_pool_worker_killed_one_line_the_saved_chunks_and_resume(tmp_path):
     env = {**os.environ, "PYTHONPATH": str(ROOT)}
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
     try:
-        t0 = time.monotonic()
-        while not list((out / "chunks").glob("chunk_*.npz")):
-            assert proc.poll() is None, proc.communicate(timeout=60)
-            assert time.monotonic() - t0 < 120, "no chunk appeared"
-            time.sleep(0.02)
+        _wait_for_a_chunk(proc, out)
         kids = _children(proc.pid)
         assert kids, "no worker process found"
         os.kill(kids[0], signal.SIGKILL)

@@ -51,7 +51,7 @@ from ..scene.bodies import RollerSupport
 from ..scene.pair import ContactPair
 from .geometry import RollerBearing
 from .model import RingMeshOptions, RingModel
-from .solve import solve_ring
+from .solve import RingResult, solve_ring
 
 #: key -> its :class:`femcam._columns.Column` (CSV name, factor from SI)
 CSV_COLUMNS = {c.si: c for c in (
@@ -136,11 +136,38 @@ def build_for(support: RollerSupport, pair: ContactPair, Fc, rho, *, mesh: MeshO
                            mesh=mesh, ring_mesh=ring_mesh, plane=pair.plane)
 
 
-def _one(model, F, r, needles, Z):
+def cage_solves(model: RingModel, F: float, rho: float) -> tuple[list[RingResult], RingResult]:
+    """The ring solves of one angle and the one its row reports.
+
+    On needles the two extreme cage positions (``cage = 0``: a needle on the load line;
+    ``cage = pi / Z``: the load line between two needles), on a pin the one solve; the row
+    reports the contact and bore stress of the solve with the larger bore hoop stress.
+
+    Parameters
+    ----------
+    model : RingModel
+        The ring model.
+    F : float
+        Contact force [N].
+    rho : float
+        Cam radius of curvature [m].
+
+    Returns
+    -------
+    solves : list of femcam.bodies.solve.RingResult
+        ``[cage 0, cage pi / Z]`` on needles, ``[cage 0]`` on a pin.
+    reported : femcam.bodies.solve.RingResult
+        The solve the row reports.
+    """
+    b = model.bearing
+    cages = (0.0, math.pi / b.Z) if b.support == "needles" else (0.0,)
+    res = [solve_ring(model, F=F, rho=rho, cage=c) for c in cages]
+    return res, max(res, key=lambda x: x.hoop_max)
+
+
+def _one(model, F, r, needles):
     """Row values of one angle (see CSV_COLUMNS)."""
-    cages = (0.0, math.pi / Z) if needles else (0.0,)
-    res = [solve_ring(model, F=F, rho=r, cage=c) for c in cages]
-    best = max(res, key=lambda x: x.hoop_max)
+    res, best = cage_solves(model, F, r)
     ang = math.remainder(best.hoop_theta + 0.5 * math.pi, 2 * math.pi)
     dist = {"needle_loads_on": res[0].needle_Q, "needle_loads_between": res[-1].needle_Q,
             "bore_pressure": best.bore_p}
@@ -204,7 +231,7 @@ def ring_rows(support: RollerSupport, pair: ContactPair, theta, Fc, rho, *, mode
     else:
         out["bore_pressure"] = np.full(theta.shape + (model.theta.size,), np.nan)
     for i in np.nonzero(Fc > 0)[0]:
-        dist, row = _one(model, float(Fc[i]), float(rho[i]), needles, max(b.Z, 1))
+        dist, row = _one(model, float(Fc[i]), float(rho[i]), needles)
         for k, v in row.items():
             out[k][i] = v
         for k in dist:

@@ -198,13 +198,10 @@ def _run_pool(fn, tasks, workers):
         futs = {ex.submit(fn, t): i for i, t in enumerate(tasks)}
         try:
             for f in as_completed(futs):
-                try:
-                    rows = f.result()
-                except BrokenProcessPool:  # a worker died: the pool cannot go on
-                    raise WorkerLostError(
-                        "a worker process ended without its result (killed by the system, "
-                        "e.g. out of memory, or by a signal)") from None
-                yield futs[f], rows
+                yield futs[f], f.result()
+        except BrokenProcessPool:  # a worker died: the pool has failed every future already
+            raise WorkerLostError("a worker process ended without its result (killed by the "
+                                  "system, e.g. out of memory, or by a signal)") from None
         except BaseException:
             for f in futs:
                 f.cancel()

@@ -57,9 +57,9 @@ import math
 
 import numpy as np
 
-from ..bodies import RingMeshOptions, RingModel, solve_ring
+from ..bodies import RingMeshOptions, RingModel
 from ..bodies.rows import CSV_COLUMNS as RING_COLUMNS
-from ..bodies.rows import ring_rows
+from ..bodies.rows import cage_solves, ring_rows
 from ..errors import FemcamError
 from ..materials import effective_modulus
 from ..mesh import MeshOptions
@@ -92,18 +92,13 @@ RING_SIDE = ("bore_hoop", "pin_p0", "needle_Q")
 
 def _ring_quantities(model: RingModel, F: float) -> dict:
     """The ring model's estimated quantities at force ``F`` (N) on its reference curvature, as
-    the row reports them (:func:`femcam.bodies.rows.ring_rows`): on needles the contact and the
-    bore hoop stress of the cage position with the larger bore stress (a needle on the load line,
-    cage 0, or the load line between two needles, cage ``pi / Z``), the needle load with a needle
-    on the load line (``needle_Qmax_on_N``)."""
-    b = model.bearing
-    cages = (0.0, math.pi / b.Z) if b.support == "needles" else (0.0,)
-    res = [solve_ring(model, F=F, rho=model.rho_ref, cage=c) for c in cages]
-    # the cage position the row reports: on examples/seed002_needle_roller.toml the hoop beside
-    # a needle on the load line moves 92.6 -> 112 MPa from 128 to 256 bore vertices (the spread
-    # narrows with the mesh; estimated 40 %), the row's, between two needles, 125.7 -> 127.3
-    # (docs/bodies.md, "Bore hoop stress under the needles: convergence")
-    best = max(res, key=lambda r: r.hoop_max)
+    the row reports them (:func:`femcam.bodies.rows.cage_solves`: on needles the contact and
+    bore hoop stress of the cage position with the larger bore stress), the needle load with a
+    needle on the load line (``needle_Qmax_on_N``)."""
+    # the reported cage matters: on examples/seed002_needle_roller.toml the hoop beside a needle
+    # on the load line moves 92.6 -> 112 MPa from 128 to 256 bore vertices (the spread narrows
+    # with the mesh), the row's, between two needles, 125.7 -> 127.3 (docs/bodies.md)
+    res, best = cage_solves(model, F, model.rho_ref)
     return {"p0": float(np.max(best.p)), "a": best.a, "bore_hoop": best.hoop_max, "pin_p0": best.pin_p0,
             "needle_Q": float(np.max(res[0].needle_Q)) if np.size(res[0].needle_Q) else math.nan}
 
